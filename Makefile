@@ -1,0 +1,84 @@
+# Top-level build. `make run` and `make test` install what is missing first (tools/setup.sh).
+# Every other target is listed in README.md.
+
+BUILD       ?= build
+OUT         ?= out
+FRAMES      ?= 24
+SCENE       ?= tetra
+HOST_CC     ?= gcc
+HOST_CFLAGS ?= -std=c11 -O2 -g -Wall -Wextra -Werror
+PYTHON      ?= python3
+VERILATOR   ?= verilator
+
+# Firmware (FW_ELF, fw_unit) and golden model (GPU_MODEL_SRC, model_unit) rules.
+include firmware/firmware.mk
+include gpu_model/model.mk
+
+RTL_V      := $(sort $(wildcard gpu_rtl/*.v))
+RTL_LINT   := gpu_rtl/lint.vlt
+COSIM_CPP  := $(sort $(wildcard cosim/*.cpp))
+HOST_C     := cosim/vga_monitor.c cosim/png_write.c $(GPU_MODEL_SRC)
+HOST_LIB   := $(BUILD)/host/libcosim.a
+GPUSIM     := $(BUILD)/sim/gpusim
+HOST_INC   := -Icosim -Igpu_model -Ifirmware/include -Ibsp/qemu_virt
+
+.PHONY: all setup run run-headless test test-quick lint check-contract contract random-long clean help
+
+all: $(FW_ELF) $(GPUSIM)
+
+setup:
+	@bash tools/setup.sh
+
+# ---- run: the default scene, headless, frames as PNG files ----
+run: setup
+	@$(MAKE) --no-print-directory run-headless
+
+run-headless: $(FW_ELF) $(GPUSIM)
+	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
+	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log
+
+# ---- test: everything, with a summary line ----
+test: setup
+	@$(MAKE) --no-print-directory test-quick
+
+test-quick: $(FW_ELF) $(GPUSIM) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit
+	@GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) bash tests/run_all.sh
+
+# ---- the contract: regenerate, or check that the generated files are current ----
+contract:
+	$(PYTHON) tools/gen_contract.py
+
+check-contract:
+	$(PYTHON) tools/gen_contract.py --check
+
+lint:
+	$(VERILATOR) --lint-only -Wall --top-module gpu_top -Igpu_rtl $(RTL_LINT) $(RTL_V)
+
+# ---- longer randomized RTL-vs-model run ----
+random-long: $(GPUSIM)
+	for seed in 101 102 103 104 105 106 107 108; do $(GPUSIM) random --seed $$seed --batches 200 || exit 1; done
+
+# ---- host-side simulator: Verilated GPU + co-simulation bridge + golden model ----
+HOST_OBJ := $(patsubst %.c,$(BUILD)/host/%.o,$(HOST_C))
+
+$(BUILD)/host/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(HOST_CC) $(HOST_CFLAGS) -MMD -MP $(HOST_INC) $$(pkg-config --cflags libpng) -c $< -o $@
+
+$(HOST_LIB): $(HOST_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(GPUSIM): $(RTL_V) gpu_rtl/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) $(HOST_LIB)
+	@mkdir -p $(BUILD)/sim
+	$(VERILATOR) --cc --exe --build -j 2 --assert -O3 --x-assign fast --x-initial fast \
+	  --top-module gpu_top -Igpu_rtl $(RTL_V) $(abspath $(COSIM_CPP)) \
+	  -CFLAGS "-O2 -std=c++17 $(addprefix -I$(CURDIR)/,$(patsubst -I%,%,$(HOST_INC)))" \
+	  -LDFLAGS "$(abspath $(HOST_LIB)) $$(pkg-config --libs libpng)" \
+	  --Mdir $(BUILD)/verilator -o $(abspath $(GPUSIM)) >$(BUILD)/sim/verilator.log 2>&1 \
+	  || { tail -40 $(BUILD)/sim/verilator.log; exit 1; }
+
+clean:
+	rm -rf $(BUILD) $(OUT)
+
+-include $(HOST_OBJ:.o=.d)

@@ -1,0 +1,409 @@
+// cosim_run: the co-simulation bridge. QEMU runs the firmware with its RAM in a shared-memory file;
+// this process maps the same file, and whenever the firmware rings the GPU's DOORBELL it forwards the
+// firmware's stores to the Verilated GPU through the GPU's own bus port, runs the GPU, captures the
+// frame from the VGA pins, checks it against the golden model, writes it as a PNG, and copies the
+// read-only registers back so the firmware sees DONE_SEQ.
+//
+// Determinism: simulated time advances only while a batch is serviced, so the same firmware gives
+// the same frames byte for byte whatever the host's timing. Robustness: the shared-memory file is
+// unlinked as soon as it is created (QEMU opens it through /proc/self/fd), QEMU dies with this process
+// (PR_SET_PDEATHSIG), and this process notices QEMU's death, signals and a silent firmware.
+#include <cerrno>
+#include <cstdarg>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/prctl.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "gpu_sim.h"
+#include "model_check.h"
+
+extern "C" {
+#include "gpu_regs.h"
+#include "platform.h"
+#include "png_write.h"
+}
+
+namespace {
+
+volatile sig_atomic_t g_signal = 0;
+void on_signal(int sig) { g_signal = sig; }
+
+struct Options {
+    std::string firmware;
+    std::string frames_dir = "out/frames";
+    std::string qemu = "qemu-system-riscv32";
+    std::string uart_log;
+    double idle_timeout_s = 60.0;
+    uint64_t max_batch_cycles = 100000000;  // 1 s of GPU time at 100 MHz
+    bool check_model = true;
+};
+
+double now_s()
+{
+    timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+int usage()
+{
+    std::fprintf(stderr,
+                 "usage: gpusim cosim --fw FIRMWARE.elf [--frames DIR] [--qemu PATH] [--uart-log FILE]\n"
+                 "                    [--idle-timeout SECONDS] [--max-batch-cycles N] [--no-model-check]\n");
+    return 2;
+}
+
+bool parse(int argc, char **argv, Options &o)
+{
+    for (int i = 0; i < argc; i++) {
+        const std::string a = argv[i];
+        const bool has_value = i + 1 < argc;
+        if (a == "--fw" && has_value) {
+            o.firmware = argv[++i];
+        } else if (a == "--frames" && has_value) {
+            o.frames_dir = argv[++i];
+        } else if (a == "--qemu" && has_value) {
+            o.qemu = argv[++i];
+        } else if (a == "--uart-log" && has_value) {
+            o.uart_log = argv[++i];
+        } else if (a == "--idle-timeout" && has_value) {
+            o.idle_timeout_s = std::atof(argv[++i]);
+        } else if (a == "--max-batch-cycles" && has_value) {
+            o.max_batch_cycles = std::strtoull(argv[++i], nullptr, 0);
+        } else if (a == "--no-model-check") {
+            o.check_model = false;
+        } else {
+            std::fprintf(stderr, "cosim: unknown or incomplete option '%s'\n", a.c_str());
+            return false;
+        }
+    }
+    return !o.firmware.empty();
+}
+
+class Bridge {
+public:
+    explicit Bridge(const Options &o) : opt_(o) {}
+    ~Bridge() { shutdown(); }
+    int run();
+
+private:
+    bool create_shared_ram();
+    bool start_qemu();
+    void pump_uart(bool final);
+    bool service_batch(uint32_t tag);
+    void publish_registers();
+    int fail(const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+    void shutdown();
+
+    volatile uint32_t *aperture() const
+    {
+        return reinterpret_cast<volatile uint32_t *>(ram_ + (PLATFORM_GPU_BASE - PLATFORM_RAM_BASE));
+    }
+
+    const Options &opt_;
+    GpuSim sim_;
+    ModelCheck model_;
+    int ram_fd_ = -1;
+    uint8_t *ram_ = nullptr;
+    pid_t qemu_pid_ = -1;
+    int uart_fd_ = -1;
+    FILE *uart_log_ = nullptr;
+    std::string uart_line_;
+    std::vector<uint32_t> shadow_ = std::vector<uint32_t>(GPU_APERTURE_BYTES / 4, 0);
+    uint32_t frames_written_ = 0;
+    uint32_t batches_ = 0;
+};
+
+int Bridge::fail(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    std::fputs("cosim: error: ", stderr);
+    std::vfprintf(stderr, fmt, ap);
+    std::fputc('\n', stderr);
+    va_end(ap);
+    shutdown();
+    return 1;
+}
+
+bool Bridge::create_shared_ram()
+{
+    char name[96];
+    unsigned nonce = static_cast<unsigned>(now_s() * 1e6) ^ static_cast<unsigned>(getpid() << 12);
+    std::snprintf(name, sizeof name, "/dev/shm/gpu-cosim-%d-%08x", static_cast<int>(getpid()), nonce);
+    ram_fd_ = open(name, O_RDWR | O_CREAT | O_EXCL, 0600);
+    if (ram_fd_ < 0) {
+        std::fprintf(stderr, "cosim: error: cannot create %s: %s\n", name, std::strerror(errno));
+        return false;
+    }
+    // Unlink at once: QEMU reaches the file through our inherited descriptor, and nothing is left
+    // behind however either process ends.
+    unlink(name);
+    if (ftruncate(ram_fd_, PLATFORM_RAM_BYTES) != 0) {
+        std::fprintf(stderr, "cosim: error: cannot size shared RAM: %s\n", std::strerror(errno));
+        return false;
+    }
+    void *p = mmap(nullptr, PLATFORM_RAM_BYTES, PROT_READ | PROT_WRITE, MAP_SHARED, ram_fd_, 0);
+    if (p == MAP_FAILED) {
+        std::fprintf(stderr, "cosim: error: cannot map shared RAM: %s\n", std::strerror(errno));
+        return false;
+    }
+    ram_ = static_cast<uint8_t *>(p);
+    return true;
+}
+
+bool Bridge::start_qemu()
+{
+    int pipe_fds[2];
+    if (pipe2(pipe_fds, O_CLOEXEC) != 0) {
+        return false;
+    }
+    const pid_t parent = getpid();
+    char ram_size[32], backend[160];
+    std::snprintf(ram_size, sizeof ram_size, "%uM", PLATFORM_RAM_BYTES >> 20);
+    std::snprintf(backend, sizeof backend,
+                  "memory-backend-file,id=mem,size=%uM,mem-path=/proc/self/fd/%d,share=on",
+                  PLATFORM_RAM_BYTES >> 20, ram_fd_);
+    std::vector<const char *> args = {
+        opt_.qemu.c_str(), "-machine", "virt,memory-backend=mem", "-m", ram_size, "-object", backend,
+        "-bios", "none", "-kernel", opt_.firmware.c_str(), "-display", "none", "-serial", "stdio",
+        "-monitor", "none", "-icount", "shift=0", "-no-reboot", nullptr};
+
+    qemu_pid_ = fork();
+    if (qemu_pid_ < 0) {
+        return false;
+    }
+    if (qemu_pid_ == 0) {
+        prctl(PR_SET_PDEATHSIG, SIGKILL);  // the GPU side died: so does the CPU side
+        if (getppid() != parent) {
+            _exit(127);
+        }
+        dup2(pipe_fds[1], STDOUT_FILENO);
+        if (!isatty(STDIN_FILENO)) {
+            int null_fd = open("/dev/null", O_RDONLY);
+            dup2(null_fd, STDIN_FILENO);
+        }
+        execvp(args[0], const_cast<char *const *>(args.data()));
+        std::fprintf(stderr, "cosim: error: cannot run %s: %s\n", args[0], std::strerror(errno));
+        _exit(127);
+    }
+    close(pipe_fds[1]);
+    uart_fd_ = pipe_fds[0];
+    fcntl(uart_fd_, F_SETFL, O_NONBLOCK);
+    return true;
+}
+
+void Bridge::pump_uart(bool final)
+{
+    char buf[4096];
+    for (;;) {
+        ssize_t n = read(uart_fd_, buf, sizeof buf);
+        if (n <= 0) {
+            break;
+        }
+        for (ssize_t i = 0; i < n; i++) {
+            if (buf[i] == '\r') {
+                continue;
+            }
+            uart_line_ += buf[i];
+            if (buf[i] == '\n') {
+                std::fputs(uart_line_.c_str(), stdout);
+                if (uart_log_) {
+                    std::fputs(uart_line_.c_str(), uart_log_);
+                }
+                uart_line_.clear();
+            }
+        }
+    }
+    if (final && !uart_line_.empty()) {
+        std::printf("%s\n", uart_line_.c_str());
+        uart_line_.clear();
+    }
+    std::fflush(stdout);
+}
+
+// Copy the GPU's read-only registers into the shared window, DONE_SEQ last (kReadOnlyRegs order).
+void Bridge::publish_registers()
+{
+    volatile uint32_t *ap = aperture();
+    for (int i = 0; i < kReadOnlyRegCount; i++) {
+        const uint32_t offset = kReadOnlyRegs[i];
+        const uint32_t value = sim_.read(offset);
+        if (offset == GPU_REG_DONE_SEQ) {
+            __atomic_thread_fence(__ATOMIC_RELEASE);
+        }
+        ap[offset / 4] = value;
+        shadow_[offset / 4] = value;
+    }
+}
+
+bool Bridge::service_batch(uint32_t tag)
+{
+    __atomic_thread_fence(__ATOMIC_ACQUIRE);
+    volatile uint32_t *ap = aperture();
+    const uint32_t doorbell_word = GPU_REG_DOORBELL / 4;
+    // Replay the firmware's stores: every word that changed since the last batch, DOORBELL last.
+    for (uint32_t w = 0; w < shadow_.size(); w++) {
+        const uint32_t value = ap[w];
+        if (value != shadow_[w] && w != doorbell_word) {
+            sim_.write(w * 4, value);
+            if (opt_.check_model) {
+                model_.write(w * 4, value);
+            }
+            shadow_[w] = value;
+        }
+    }
+    const uint32_t frames_before = sim_.read(GPU_REG_FRAME_COUNT);
+    sim_.write(GPU_REG_DOORBELL, tag);
+    if (opt_.check_model) {
+        model_.write(GPU_REG_DOORBELL, tag);
+    }
+    shadow_[doorbell_word] = tag;
+    batches_++;
+
+    if (!sim_.wait_done(tag, opt_.max_batch_cycles)) {
+        fail("GPU timeout: batch %u (tag %u) did not finish within %llu cycles", batches_, tag,
+             static_cast<unsigned long long>(opt_.max_batch_cycles));
+        return false;
+    }
+    if (opt_.check_model) {
+        const std::string diff = model_.compare_registers(sim_);
+        if (!diff.empty()) {
+            fail("batch %u: RTL and golden model disagree: %s", batches_, diff.c_str());
+            return false;
+        }
+    }
+    if (sim_.read(GPU_REG_FRAME_COUNT) != frames_before) {
+        const uint64_t frame_cycles = 800ull * 525 * 4;
+        if (!sim_.capture_frame(3 * frame_cycles)) {
+            fail("no frame captured from the VGA pins: %s", sim_.vga_error()[0] ? sim_.vga_error() : "timeout");
+            return false;
+        }
+        if (opt_.check_model) {
+            const std::string diff = model_.compare_frame(sim_.frame_rgb());
+            if (!diff.empty()) {
+                fail("frame %u: VGA output differs from the golden model: %s", frames_written_, diff.c_str());
+                return false;
+            }
+        }
+        char path[512];
+        std::snprintf(path, sizeof path, "%s/%04u.png", opt_.frames_dir.c_str(), frames_written_);
+        if (png_write_rgb(path, sim_.frame_rgb(), VGA_W, VGA_H) != 0) {
+            fail("cannot write %s", path);
+            return false;
+        }
+        std::printf("cosim: frame %04u -> %s | gpu busy %u cycles | simulated %llu cycles%s\n", frames_written_,
+                    path, sim_.read(GPU_REG_PERF_BUSY_CYCLES), static_cast<unsigned long long>(sim_.cycles()),
+                    opt_.check_model ? " | equals golden model" : "");
+        frames_written_++;
+    }
+    publish_registers();
+    return true;
+}
+
+int Bridge::run()
+{
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGTERM, on_signal);
+    std::signal(SIGHUP, on_signal);
+    std::signal(SIGPIPE, SIG_IGN);
+
+    if (mkdir(opt_.frames_dir.c_str(), 0755) != 0 && errno != EEXIST) {
+        return fail("cannot create %s: %s", opt_.frames_dir.c_str(), std::strerror(errno));
+    }
+    if (!opt_.uart_log.empty() && (uart_log_ = std::fopen(opt_.uart_log.c_str(), "w")) == nullptr) {
+        return fail("cannot create %s: %s", opt_.uart_log.c_str(), std::strerror(errno));
+    }
+    if (!create_shared_ram()) {
+        return fail("shared RAM setup failed");
+    }
+    publish_registers();  // ID, VERSION, CAPS ... are readable before the first doorbell
+    if (!start_qemu()) {
+        return fail("cannot start QEMU: %s", std::strerror(errno));
+    }
+
+    double last_activity = now_s();
+    for (;;) {
+        if (g_signal) {
+            return fail("stopped by signal %d", static_cast<int>(g_signal));
+        }
+        int status = 0;
+        pid_t done = waitpid(qemu_pid_, &status, WNOHANG);
+        if (done == qemu_pid_) {
+            qemu_pid_ = -1;
+            pump_uart(true);
+            if (WIFSIGNALED(status)) {
+                return fail("QEMU was killed by signal %d", WTERMSIG(status));
+            }
+            if (WEXITSTATUS(status) != 0) {
+                return fail("firmware ended with exit status %d", WEXITSTATUS(status));
+            }
+            std::printf("cosim: firmware finished: %u batches, %u frames, %llu GPU cycles simulated\n", batches_,
+                        frames_written_, static_cast<unsigned long long>(sim_.cycles()));
+            shutdown();
+            return 0;
+        }
+        pump_uart(false);
+        const uint32_t tag = __atomic_load_n(&aperture()[GPU_REG_DOORBELL / 4], __ATOMIC_ACQUIRE);
+        if (tag != shadow_[GPU_REG_DOORBELL / 4]) {
+            if (!service_batch(tag)) {
+                return 1;
+            }
+            last_activity = now_s();
+        } else {
+            if (now_s() - last_activity > opt_.idle_timeout_s) {
+                return fail("the firmware rang no doorbell for %.0f s: giving up", opt_.idle_timeout_s);
+            }
+            usleep(20);
+        }
+    }
+}
+
+void Bridge::shutdown()
+{
+    if (qemu_pid_ > 0) {
+        kill(qemu_pid_, SIGKILL);
+        waitpid(qemu_pid_, nullptr, 0);
+        qemu_pid_ = -1;
+    }
+    if (uart_fd_ >= 0) {
+        pump_uart(true);
+        close(uart_fd_);
+        uart_fd_ = -1;
+    }
+    if (uart_log_) {
+        std::fclose(uart_log_);
+        uart_log_ = nullptr;
+    }
+    if (ram_) {
+        munmap(ram_, PLATFORM_RAM_BYTES);
+        ram_ = nullptr;
+    }
+    if (ram_fd_ >= 0) {
+        close(ram_fd_);
+        ram_fd_ = -1;
+    }
+}
+
+}  // namespace
+
+int cosim_main(int argc, char **argv)
+{
+    Options o;
+    if (!parse(argc, argv, o)) {
+        return usage();
+    }
+    Bridge bridge(o);
+    return bridge.run();
+}

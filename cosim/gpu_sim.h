@@ -1,0 +1,43 @@
+// gpu_sim: drives the Verilated GPU (gpu_top) through its own ports — bus writes and reads, the
+// clock — and watches its VGA pins with a monitor model. Nothing here peeks inside the RTL.
+#ifndef GPU_SIM_H
+#define GPU_SIM_H
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+extern "C" {
+#include "vga_monitor.h"
+}
+
+class Vgpu_top;
+class VerilatedContext;
+
+class GpuSim {
+public:
+    GpuSim();
+    ~GpuSim();
+
+    void reset();
+    void tick();                                   // one system clock
+    void write(uint32_t offset, uint32_t value);   // one bus write (1 cycle)
+    uint32_t read(uint32_t offset);                // one bus read (1 cycle; data sampled after the edge)
+
+    // Run until DONE_SEQ == tag and STATUS.BUSY is clear. False if max_cycles pass first.
+    bool wait_done(uint32_t tag, uint64_t max_cycles);
+    // Capture the next complete frame from the VGA pins. False on timeout or a timing error.
+    bool capture_frame(uint64_t max_cycles);
+
+    const uint8_t *frame_rgb() const { return monitor_.rgb; }
+    const char *vga_error() const { return monitor_.error; }
+    uint64_t cycles() const { return cycles_; }
+
+private:
+    std::unique_ptr<VerilatedContext> context_;
+    std::unique_ptr<Vgpu_top> top_;
+    vga_monitor monitor_;
+    uint64_t cycles_ = 0;
+};
+
+#endif

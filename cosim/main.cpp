@@ -1,0 +1,23 @@
+// gpusim: host tools around the Verilated GPU.
+//   gpusim cosim ...   run firmware in QEMU against the RTL (cosim_run.cpp)
+//   gpusim random ...  seeded random batches, RTL against the golden model (rtl_check.cpp)
+#include <cstdio>
+#include <cstring>
+
+#include "verilated.h"
+
+int cosim_main(int argc, char **argv);
+int rtl_check_main(int argc, char **argv);
+
+int main(int argc, char **argv)
+{
+    Verilated::commandArgs(1, argv);
+    if (argc >= 2 && std::strcmp(argv[1], "cosim") == 0) {
+        return cosim_main(argc - 2, argv + 2);
+    }
+    if (argc >= 2 && std::strcmp(argv[1], "random") == 0) {
+        return rtl_check_main(argc - 2, argv + 2);
+    }
+    std::fprintf(stderr, "usage: gpusim cosim|random [options]   (see README.md)\n");
+    return 2;
+}

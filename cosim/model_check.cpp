@@ -1,0 +1,73 @@
+// model_check: see model_check.h.
+#include "model_check.h"
+
+#include <cstdio>
+
+#include "gpu_sim.h"
+
+extern "C" {
+#include "gpu_regs.h"
+}
+
+const uint32_t kReadOnlyRegs[] = {
+    GPU_REG_ID, GPU_REG_VERSION, GPU_REG_CAPS, GPU_REG_VTX_CAP, GPU_REG_TRI_CAP, GPU_REG_FB_SIZE,
+    GPU_REG_STATUS, GPU_REG_FRAME_COUNT, GPU_REG_ERRORS, GPU_REG_PERF_BUSY_CYCLES,
+    GPU_REG_PERF_TRIS_IN, GPU_REG_PERF_TRIS_DRAWN, GPU_REG_PERF_TRIS_REJECTED, GPU_REG_PERF_PIXELS,
+    GPU_REG_PERF_SAMPLES, GPU_REG_DONE_SEQ,
+};
+const int kReadOnlyRegCount = sizeof kReadOnlyRegs / sizeof kReadOnlyRegs[0];
+
+ModelCheck::ModelCheck() : model_(new gpu_model), expected_(640 * 480 * 3)
+{
+    gpu_model_reset(model_);
+}
+
+ModelCheck::~ModelCheck()
+{
+    delete model_;
+}
+
+std::string ModelCheck::compare_registers(GpuSim &sim)
+{
+    for (int i = 0; i < kReadOnlyRegCount; i++) {
+        const uint32_t offset = kReadOnlyRegs[i];
+        if (offset == GPU_REG_PERF_BUSY_CYCLES) {
+            continue;  // the model has no time
+        }
+        const uint32_t rtl = sim.read(offset);
+        const uint32_t model = gpu_model_read(model_, offset);
+        if (rtl != model) {
+            char text[120];
+            std::snprintf(text, sizeof text, "register 0x%03X: RTL 0x%08X, model 0x%08X", offset, rtl, model);
+            return text;
+        }
+    }
+    return "";
+}
+
+std::string ModelCheck::compare_frame(const uint8_t *rgb)
+{
+    gpu_model_scanout(model_, expected_.data());
+    long mismatches = 0;
+    long first = -1;
+    for (long i = 0; i < 640L * 480; i++) {
+        const uint8_t *a = &rgb[i * 3];
+        const uint8_t *b = &expected_[i * 3];
+        if (a[0] != b[0] || a[1] != b[1] || a[2] != b[2]) {
+            if (first < 0) {
+                first = i;
+            }
+            mismatches++;
+        }
+    }
+    if (mismatches == 0) {
+        return "";
+    }
+    char text[200];
+    const long x = first % 640, y = first / 640;
+    std::snprintf(text, sizeof text,
+                  "%ld pixels differ; first at screen (%ld,%ld) = fb (%ld,%ld): VGA %02x%02x%02x, model %02x%02x%02x",
+                  mismatches, x, y, x / 2, y / 2, rgb[first * 3], rgb[first * 3 + 1], rgb[first * 3 + 2],
+                  expected_[first * 3], expected_[first * 3 + 1], expected_[first * 3 + 2]);
+    return text;
+}

@@ -1,0 +1,37 @@
+// model_check: runs the golden C model beside the RTL on the same bus writes and compares what
+// software can observe — every read-only register except the cycle counter, and every pixel of each
+// frame the VGA pins show. Any difference is an RTL or model bug.
+#ifndef MODEL_CHECK_H
+#define MODEL_CHECK_H
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+extern "C" {
+#include "gpu_model.h"
+}
+
+class GpuSim;
+
+class ModelCheck {
+public:
+    ModelCheck();
+    ~ModelCheck();
+    void write(uint32_t offset, uint32_t value) { gpu_model_write(model_, offset, value); }
+    // Compare the read-only registers; returns "" when equal, else a description.
+    std::string compare_registers(GpuSim &sim);
+    // Compare a captured 640x480 RGB frame with the model's front buffer through its palette.
+    std::string compare_frame(const uint8_t *rgb);
+    const gpu_model *model() const { return model_; }
+
+private:
+    gpu_model *model_;
+    std::vector<uint8_t> expected_;
+};
+
+// Read-only registers copied back to the firmware after a batch, DONE_SEQ last.
+extern const uint32_t kReadOnlyRegs[];
+extern const int kReadOnlyRegCount;
+
+#endif

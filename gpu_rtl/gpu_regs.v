@@ -1,0 +1,172 @@
+// gpu_regs: the GPU's bus slave — register file, window decode and buffer write routing.
+//
+// Contract (docs/gpu-contract.md, offsets from gpu_regs.vh): aligned 32-bit accesses. A write is taken
+// in the cycle bus_valid && bus_write is high (no wait states). A read returns bus_rdata with
+// bus_rvalid one cycle after bus_valid && !bus_write. Writes to the palette, the buffers and the batch
+// registers while busy are dropped and flag ERR_WRITE_BUSY; a DOORBELL write while idle latches its tag
+// and pulses start for one cycle. The batch registers hold still while busy, so the rasterizer reads
+// them directly.
+`default_nettype none
+
+module gpu_regs #(
+    parameter integer VTX_CAP = 1024,  // vertices; the vertex RAM holds 2 words per vertex
+    parameter integer TRI_CAP = 1024,  // primitives; the index RAM holds 2 words per primitive
+    parameter [31:0]  CAPS = 32'h0,    // value of the CAPS register, set by gpu_top from its parameters
+    localparam integer VTX_AW = $clog2(VTX_CAP * 2),
+    localparam integer IDX_AW = $clog2(TRI_CAP * 2)
+) (
+    input  wire              clk,
+    input  wire              rst,
+    // bus slave
+    input  wire              bus_valid,
+    input  wire              bus_write,
+    input  wire [16:2]       bus_addr,     // word address within the 128 KiB aperture
+    input  wire [31:0]       bus_wdata,
+    output reg  [31:0]       bus_rdata,
+    output reg               bus_rvalid,
+    // batch description, stable while busy
+    output reg               ctrl_clear,
+    output reg               ctrl_swap,
+    output reg  [31:0]       vtx_base,
+    output reg  [31:0]       vtx_count,
+    output reg  [31:0]       tri_base,
+    output reg  [31:0]       tri_count,
+    output reg  [7:0]        clear_color,
+    output reg  [31:0]       doorbell_tag,
+    output reg               start,        // one-cycle pulse: run the batch
+    // buffer writes (data is bus_wdata)
+    output wire              vtx_wr_en,
+    output wire [VTX_AW-1:0] vtx_wr_addr,
+    output wire              idx_wr_en,
+    output wire [IDX_AW-1:0] idx_wr_addr,
+    output wire              pal_wr_en,
+    output wire [7:0]        pal_wr_addr,
+    // state reported by the rasterizer
+    input  wire              busy,
+    input  wire              front,
+    input  wire [31:0]       done_seq,
+    input  wire [31:0]       frame_count,
+    input  wire [2:0]        raster_errors,  // {ERR_KIND, ERR_COUNT, ERR_VTX_INDEX}
+    input  wire [31:0]       perf_busy_cycles,
+    input  wire [31:0]       perf_tris_in,
+    input  wire [31:0]       perf_tris_drawn,
+    input  wire [31:0]       perf_tris_rejected,
+    input  wire [31:0]       perf_pixels,
+    input  wire [31:0]       perf_samples
+);
+`include "gpu_regs.vh"
+
+    wire [16:0] byte_addr = {bus_addr, 2'b00};
+    wire is_write = bus_valid && bus_write;
+
+    // Window decode. Buffer offsets beyond the RAM's capacity are unmapped.
+    wire in_regs = byte_addr < GPU_WIN_REGS + GPU_WIN_REGS_BYTES;
+    wire in_pal  = byte_addr >= GPU_WIN_PALETTE && byte_addr < GPU_WIN_PALETTE + GPU_WIN_PALETTE_BYTES;
+    wire [16:0] vtx_offset = byte_addr - GPU_WIN_VTX;
+    wire [16:0] idx_offset = byte_addr - GPU_WIN_IDX;
+    wire in_vtx = byte_addr >= GPU_WIN_VTX && vtx_offset < 17'(VTX_CAP * 8);
+    wire in_idx = byte_addr >= GPU_WIN_IDX && idx_offset < 17'(TRI_CAP * 8);
+    wire [7:0] reg_offset = byte_addr[7:0];
+    wire is_batch_reg = in_regs && (reg_offset == GPU_REG_CTRL || reg_offset == GPU_REG_VTX_BASE
+        || reg_offset == GPU_REG_VTX_COUNT || reg_offset == GPU_REG_TRI_BASE
+        || reg_offset == GPU_REG_TRI_COUNT || reg_offset == GPU_REG_CLEAR_COLOR
+        || reg_offset == GPU_REG_DOORBELL);
+    wire write_dropped = is_write && busy && (in_pal || in_vtx || in_idx || is_batch_reg);
+    wire write_ok = is_write && !busy;
+
+    assign vtx_wr_en   = write_ok && in_vtx;
+    assign vtx_wr_addr = vtx_offset[VTX_AW+1:2];
+    assign idx_wr_en   = write_ok && in_idx;
+    assign idx_wr_addr = idx_offset[IDX_AW+1:2];
+    assign pal_wr_en   = write_ok && in_pal;
+    assign pal_wr_addr = byte_addr[9:2];
+
+    reg err_write_busy_q;
+
+    always @(posedge clk) begin
+        if (rst) begin
+            ctrl_clear <= 1'b0;
+            ctrl_swap <= 1'b0;
+            vtx_base <= 32'd0;
+            vtx_count <= 32'd0;
+            tri_base <= 32'd0;
+            tri_count <= 32'd0;
+            clear_color <= 8'd0;
+            doorbell_tag <= 32'd0;
+            start <= 1'b0;
+            err_write_busy_q <= 1'b0;
+        end else begin
+            start <= 1'b0;
+            if (write_ok && in_regs) begin
+                case (reg_offset)
+                    GPU_REG_CTRL: begin
+                        ctrl_clear <= bus_wdata[GPU_CTRL_CLEAR_LSB];
+                        ctrl_swap <= bus_wdata[GPU_CTRL_SWAP_LSB];
+                    end
+                    GPU_REG_VTX_BASE:    vtx_base <= bus_wdata;
+                    GPU_REG_VTX_COUNT:   vtx_count <= bus_wdata;
+                    GPU_REG_TRI_BASE:    tri_base <= bus_wdata;
+                    GPU_REG_TRI_COUNT:   tri_count <= bus_wdata;
+                    GPU_REG_CLEAR_COLOR: clear_color <= bus_wdata[7:0];
+                    GPU_REG_DOORBELL: begin
+                        doorbell_tag <= bus_wdata;
+                        start <= 1'b1;
+                        err_write_busy_q <= 1'b0;  // errors are per batch
+                    end
+                    default: ;
+                endcase
+            end
+            if (write_dropped) begin
+                err_write_busy_q <= 1'b1;
+            end
+        end
+    end
+
+    // Read mux, registered: one cycle of latency.
+    reg [31:0] reg_value;
+    always @(*) begin
+        case (reg_offset)
+            GPU_REG_ID:                 reg_value = GPU_ID_VALUE;
+            GPU_REG_VERSION:            reg_value = GPU_VERSION_VALUE;
+            GPU_REG_CAPS:               reg_value = CAPS;
+            GPU_REG_VTX_CAP:            reg_value = 32'(VTX_CAP);
+            GPU_REG_TRI_CAP:            reg_value = 32'(TRI_CAP);
+            GPU_REG_FB_SIZE:            reg_value = {GPU_FB_HEIGHT[15:0], GPU_FB_WIDTH[15:0]};
+            GPU_REG_CTRL:               reg_value = (32'(ctrl_clear) << GPU_CTRL_CLEAR_LSB)
+                                                  | (32'(ctrl_swap) << GPU_CTRL_SWAP_LSB);
+            GPU_REG_VTX_BASE:           reg_value = vtx_base;
+            GPU_REG_VTX_COUNT:          reg_value = vtx_count;
+            GPU_REG_TRI_BASE:           reg_value = tri_base;
+            GPU_REG_TRI_COUNT:          reg_value = tri_count;
+            GPU_REG_CLEAR_COLOR:        reg_value = {24'd0, clear_color};
+            GPU_REG_DOORBELL:           reg_value = doorbell_tag;
+            GPU_REG_STATUS:             reg_value = (32'(busy) << GPU_STATUS_BUSY_LSB)
+                                                  | (32'(front) << GPU_STATUS_FRONT_LSB);
+            GPU_REG_DONE_SEQ:           reg_value = done_seq;
+            GPU_REG_FRAME_COUNT:        reg_value = frame_count;
+            GPU_REG_ERRORS:             reg_value = (32'(raster_errors[0]) << GPU_ERR_VTX_INDEX_LSB)
+                                                  | (32'(raster_errors[1]) << GPU_ERR_COUNT_LSB)
+                                                  | (32'(raster_errors[2]) << GPU_ERR_KIND_LSB)
+                                                  | (32'(err_write_busy_q) << GPU_ERR_WRITE_BUSY_LSB);
+            GPU_REG_PERF_BUSY_CYCLES:   reg_value = perf_busy_cycles;
+            GPU_REG_PERF_TRIS_IN:       reg_value = perf_tris_in;
+            GPU_REG_PERF_TRIS_DRAWN:    reg_value = perf_tris_drawn;
+            GPU_REG_PERF_TRIS_REJECTED: reg_value = perf_tris_rejected;
+            GPU_REG_PERF_PIXELS:        reg_value = perf_pixels;
+            GPU_REG_PERF_SAMPLES:       reg_value = perf_samples;
+            default:                    reg_value = 32'd0;
+        endcase
+    end
+
+    always @(posedge clk) begin
+        if (rst) begin
+            bus_rvalid <= 1'b0;
+            bus_rdata <= 32'd0;
+        end else begin
+            bus_rvalid <= bus_valid && !bus_write;
+            bus_rdata <= (bus_valid && !bus_write && in_regs) ? reg_value : 32'd0;
+        end
+    end
+endmodule
+
+`default_nettype wire

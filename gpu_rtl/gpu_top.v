@@ -1,0 +1,125 @@
+// gpu_top: the GPU — bus slave, vertex/index/palette RAMs, rasterizer, double framebuffer, VGA out.
+//
+// Contract: docs/gpu-contract.md. The CPU writes buffers and registers over the bus and rings
+// DOORBELL; the GPU clears and draws into the back buffer, swaps at vertical blank when asked, and
+// reports DONE_SEQ. Data path: bus -> gpu_regs -> vertex/index RAM -> gpu_raster -> gpu_framebuffer
+// (back) ... (front) -> gpu_vga -> palette -> VGA pins. One clock domain; the VGA pixel rate is clk/PIX_DIV.
+`default_nettype none
+
+module gpu_top #(
+    parameter integer VTX_CAP = 1024,  // vertex buffer capacity (contract default)
+    parameter integer TRI_CAP = 1024,  // index buffer capacity (contract default)
+    parameter integer PIX_DIV = 4,     // system clocks per VGA pixel (100 MHz / 4 = 25 MHz)
+    localparam integer VTX_AW = $clog2(VTX_CAP * 2),
+    localparam integer IDX_AW = $clog2(TRI_CAP * 2),
+    localparam integer FB_AW = $clog2(320 * 240)
+) (
+    input  wire        clk,
+    input  wire        rst,           // synchronous, active high
+    // bus slave (see gpu_regs)
+    input  wire        bus_valid,
+    input  wire        bus_write,
+    input  wire [16:2] bus_addr,
+    input  wire [31:0] bus_wdata,
+    output wire [31:0] bus_rdata,
+    output wire        bus_rvalid,
+    // VGA connector
+    output wire        vga_pix_stb,   // outputs change on the clk edge where this is high
+    output wire        vga_hsync_n,
+    output wire        vga_vsync_n,
+    output wire [3:0]  vga_r,
+    output wire [3:0]  vga_g,
+    output wire [3:0]  vga_b
+);
+`include "gpu_regs.vh"
+
+    localparam [31:0] CAPS = 32'(1) << GPU_CAPS_SPAN_W_LSB;  // 1 pixel per clock; no lines, no depth
+
+    // Batch description and status between the register block and the rasterizer.
+    wire        ctrl_clear, ctrl_swap, start, busy, front, swap, vblank_start;
+    wire [31:0] vtx_base, vtx_count, tri_base, tri_count, doorbell_tag, done_seq, frame_count;
+    wire [7:0]  clear_color;
+    wire [2:0]  raster_errors;
+    wire [31:0] perf_busy_cycles, perf_tris_in, perf_tris_drawn, perf_tris_rejected;
+    wire [31:0] perf_pixels, perf_samples;
+
+    // RAM ports.
+    wire              vtx_wr_en, idx_wr_en, pal_wr_en;
+    wire [VTX_AW-1:0] vtx_wr_addr;
+    wire [IDX_AW-1:0] idx_wr_addr;
+    wire [7:0]        pal_wr_addr;
+    wire              vtx_rd_en, idx_rd_en, pal_rd_en, fb_rd_en, fb_wr_en;
+    wire [VTX_AW-1:0] vtx_rd_addr;
+    wire [IDX_AW-1:0] idx_rd_addr;
+    wire [31:0]       vtx_rd_data, idx_rd_data;
+    wire [7:0]        pal_rd_addr, fb_rd_data, fb_wr_data;
+    wire [11:0]       pal_rd_data;
+    wire [FB_AW-1:0]  fb_rd_addr, fb_wr_addr;
+
+    gpu_regs #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .CAPS(CAPS)) u_regs (
+        .clk(clk), .rst(rst),
+        .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr), .bus_wdata(bus_wdata),
+        .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid),
+        .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .vtx_base(vtx_base), .vtx_count(vtx_count),
+        .tri_base(tri_base), .tri_count(tri_count), .clear_color(clear_color),
+        .doorbell_tag(doorbell_tag), .start(start),
+        .vtx_wr_en(vtx_wr_en), .vtx_wr_addr(vtx_wr_addr), .idx_wr_en(idx_wr_en),
+        .idx_wr_addr(idx_wr_addr), .pal_wr_en(pal_wr_en), .pal_wr_addr(pal_wr_addr),
+        .busy(busy), .front(front), .done_seq(done_seq), .frame_count(frame_count),
+        .raster_errors(raster_errors), .perf_busy_cycles(perf_busy_cycles),
+        .perf_tris_in(perf_tris_in), .perf_tris_drawn(perf_tris_drawn),
+        .perf_tris_rejected(perf_tris_rejected), .perf_pixels(perf_pixels),
+        .perf_samples(perf_samples)
+    );
+
+    gpu_ram #(.DEPTH(VTX_CAP * 2), .WIDTH(32)) u_vtx_ram (
+        .clk(clk),
+        .wr_en(vtx_wr_en), .wr_addr(vtx_wr_addr), .wr_data(bus_wdata),
+        .rd_en(vtx_rd_en), .rd_addr(vtx_rd_addr), .rd_data(vtx_rd_data)
+    );
+
+    gpu_ram #(.DEPTH(TRI_CAP * 2), .WIDTH(32)) u_idx_ram (
+        .clk(clk),
+        .wr_en(idx_wr_en), .wr_addr(idx_wr_addr), .wr_data(bus_wdata),
+        .rd_en(idx_rd_en), .rd_addr(idx_rd_addr), .rd_data(idx_rd_data)
+    );
+
+    gpu_ram #(.DEPTH(256), .WIDTH(12)) u_palette (
+        .clk(clk),
+        .wr_en(pal_wr_en), .wr_addr(pal_wr_addr), .wr_data(bus_wdata[11:0]),
+        .rd_en(pal_rd_en), .rd_addr(pal_rd_addr), .rd_data(pal_rd_data)
+    );
+
+    gpu_raster #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP)) u_raster (
+        .clk(clk), .rst(rst),
+        .start(start), .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap),
+        .vtx_base(vtx_base), .vtx_count(vtx_count), .tri_base(tri_base), .tri_count(tri_count),
+        .clear_color(clear_color), .doorbell_tag(doorbell_tag),
+        .busy(busy), .done_seq(done_seq), .frame_count(frame_count), .errors(raster_errors),
+        .perf_busy_cycles(perf_busy_cycles), .perf_tris_in(perf_tris_in),
+        .perf_tris_drawn(perf_tris_drawn), .perf_tris_rejected(perf_tris_rejected),
+        .perf_pixels(perf_pixels), .perf_samples(perf_samples),
+        .idx_rd_en(idx_rd_en), .idx_rd_addr(idx_rd_addr), .idx_rd_data(idx_rd_data),
+        .vtx_rd_en(vtx_rd_en), .vtx_rd_addr(vtx_rd_addr), .vtx_rd_data(vtx_rd_data),
+        .fb_wr_en(fb_wr_en), .fb_wr_addr(fb_wr_addr), .fb_wr_data(fb_wr_data),
+        .vblank_start(vblank_start), .swap(swap)
+    );
+
+    gpu_framebuffer u_framebuffer (
+        .clk(clk), .rst(rst),
+        .swap(swap), .front(front),
+        .wr_en(fb_wr_en), .wr_addr(fb_wr_addr), .wr_data(fb_wr_data),
+        .rd_en(fb_rd_en), .rd_addr(fb_rd_addr), .rd_data(fb_rd_data)
+    );
+
+    gpu_vga #(.PIX_DIV(PIX_DIV)) u_vga (
+        .clk(clk), .rst(rst),
+        .fb_rd_en(fb_rd_en), .fb_rd_addr(fb_rd_addr), .fb_rd_data(fb_rd_data),
+        .pal_rd_en(pal_rd_en), .pal_rd_addr(pal_rd_addr), .pal_rd_data(pal_rd_data),
+        .vblank_start(vblank_start),
+        .vga_pix_stb(vga_pix_stb), .vga_hsync_n(vga_hsync_n), .vga_vsync_n(vga_vsync_n),
+        .vga_r(vga_r), .vga_g(vga_g), .vga_b(vga_b)
+    );
+endmodule
+
+`default_nettype wire

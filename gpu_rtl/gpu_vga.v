@@ -1,0 +1,109 @@
+// gpu_vga: 640x480@60 VGA scan-out of the front framebuffer through the palette.
+//
+// Contract: standard 800x525 timing (h: 640 visible, 16 front porch, 96 sync, 48 back porch;
+// v: 480, 10, 2, 33; both syncs active low). One pixel every PIX_DIV system clocks; vga_pix_stb is high
+// in the cycle whose clock edge updates the outputs, so a DAC clocked by clk with vga_pix_stb as enable
+// (or a monitor model sampling when vga_pix_stb is high) sees each pixel exactly once. Each framebuffer
+// pixel covers 2x2 screen pixels. RGB is 0 outside the visible area. vblank_start pulses for one cycle
+// when the last visible pixel has been read, the moment a buffer swap becomes invisible.
+// Latency: the read pipeline (framebuffer, palette, output register) advances only on pixel strobes,
+// so outputs trail the counters by two pixels with the syncs delayed to match, for any PIX_DIV >= 1.
+`default_nettype none
+
+module gpu_vga #(
+    parameter integer PIX_DIV = 4,  // system clocks per pixel: 4 for 100 MHz, 1 with a 25 MHz clock
+    localparam integer FB_W = 320,
+    localparam integer FB_H = 240,
+    localparam integer FB_AW = $clog2(FB_W * FB_H)
+) (
+    input  wire             clk,
+    input  wire             rst,
+    // framebuffer read port (front bank, one-cycle latency)
+    output wire             fb_rd_en,
+    output wire [FB_AW-1:0] fb_rd_addr,
+    input  wire [7:0]       fb_rd_data,
+    // palette read port (one-cycle latency)
+    output wire             pal_rd_en,
+    output wire [7:0]       pal_rd_addr,
+    input  wire [11:0]      pal_rd_data,
+    // frame timing for the swap
+    output wire             vblank_start,
+    // VGA connector
+    output wire             vga_pix_stb,
+    output reg              vga_hsync_n,
+    output reg              vga_vsync_n,
+    output reg  [3:0]       vga_r,
+    output reg  [3:0]       vga_g,
+    output reg  [3:0]       vga_b
+);
+    localparam integer H_VISIBLE = 640, H_FRONT = 16, H_SYNC = 96, H_BACK = 48;
+    localparam integer V_VISIBLE = 480, V_FRONT = 10, V_SYNC = 2, V_BACK = 33;
+    localparam integer H_TOTAL = H_VISIBLE + H_FRONT + H_SYNC + H_BACK;  // 800
+    localparam integer V_TOTAL = V_VISIBLE + V_FRONT + V_SYNC + V_BACK;  // 525
+    localparam integer DIV_W = (PIX_DIV > 1) ? $clog2(PIX_DIV) : 1;
+
+    reg [DIV_W-1:0] div_q;
+    reg [9:0] h_q;
+    reg [9:0] v_q;
+    wire stb = (PIX_DIV == 1) ? 1'b1 : (div_q == DIV_W'(PIX_DIV - 1));
+
+    always @(posedge clk) begin
+        if (rst) begin
+            div_q <= {DIV_W{1'b0}};
+            h_q <= 10'd0;
+            v_q <= 10'd0;
+        end else begin
+            div_q <= stb ? {DIV_W{1'b0}} : div_q + 1'b1;
+            if (stb) begin
+                if (h_q == 10'(H_TOTAL - 1)) begin
+                    h_q <= 10'd0;
+                    v_q <= (v_q == 10'(V_TOTAL - 1)) ? 10'd0 : v_q + 10'd1;
+                end else begin
+                    h_q <= h_q + 10'd1;
+                end
+            end
+        end
+    end
+
+    // Stage 0: position -> framebuffer address. 320 = 256 + 64, a shift-add.
+    wire visible = (h_q < 10'(H_VISIBLE)) && (v_q < 10'(V_VISIBLE));
+    wire hsync = (h_q >= 10'(H_VISIBLE + H_FRONT)) && (h_q < 10'(H_VISIBLE + H_FRONT + H_SYNC));
+    wire vsync = (v_q >= 10'(V_VISIBLE + V_FRONT)) && (v_q < 10'(V_VISIBLE + V_FRONT + V_SYNC));
+    wire [8:0] fb_x = h_q[9:1];
+    wire [7:0] fb_y = v_q[8:1];
+    assign fb_rd_en   = stb;
+    assign fb_rd_addr = FB_AW'({fb_y, 8'd0}) + FB_AW'({fb_y, 6'd0}) + FB_AW'(fb_x);
+
+    // Stage 1: framebuffer data -> palette address. Stage 2: palette data -> output register.
+    assign pal_rd_en   = stb;
+    assign pal_rd_addr = fb_rd_data;
+
+    reg [1:0] visible_pipe_q, hsync_pipe_q, vsync_pipe_q;
+    always @(posedge clk) begin
+        if (rst) begin
+            visible_pipe_q <= 2'b00;
+            hsync_pipe_q <= 2'b00;
+            vsync_pipe_q <= 2'b00;
+            vga_hsync_n <= 1'b1;
+            vga_vsync_n <= 1'b1;
+            vga_r <= 4'd0;
+            vga_g <= 4'd0;
+            vga_b <= 4'd0;
+        end else if (stb) begin
+            visible_pipe_q <= {visible_pipe_q[0], visible};
+            hsync_pipe_q <= {hsync_pipe_q[0], hsync};
+            vsync_pipe_q <= {vsync_pipe_q[0], vsync};
+            // pal_rd_data belongs to the pixel two strobes back, as does index [1] of the pipes.
+            vga_hsync_n <= ~hsync_pipe_q[1];
+            vga_vsync_n <= ~vsync_pipe_q[1];
+            vga_r <= visible_pipe_q[1] ? pal_rd_data[11:8] : 4'd0;
+            vga_g <= visible_pipe_q[1] ? pal_rd_data[7:4] : 4'd0;
+            vga_b <= visible_pipe_q[1] ? pal_rd_data[3:0] : 4'd0;
+        end
+    end
+
+    assign vga_pix_stb  = stb;
+    assign vblank_start = stb && (h_q == 10'(H_TOTAL - 1)) && (v_q == 10'(V_VISIBLE - 1));
+endmodule
+
+`default_nettype wire
