@@ -357,6 +357,7 @@ int Bridge::run()
         pump_uart(false);
         const uint32_t tag = __atomic_load_n(&aperture()[GPU_REG_DOORBELL / 4], __ATOMIC_ACQUIRE);
         if (tag != shadow_[GPU_REG_DOORBELL / 4]) {
+            pump_uart(false);  // what the firmware printed before ringing comes first
             if (!service_batch(tag)) {
                 return 1;
             }

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Runs every test suite, prints one line per suite (with the log's tail on failure) and ends with
+# the summary line "N passed, N failed". Called by `make test` with GPUSIM, FW_ELF, BUILD, PYTHON set.
+set -u
+cd "$(dirname "$0")/.."
+: "${GPUSIM:?}" "${FW_ELF:?}" "${BUILD:?}" "${PYTHON:=python3}"
+export GPUSIM FW_ELF BUILD PYTHON
+logs="$BUILD/test-logs"
+mkdir -p "$logs"
+passed=0
+failed=0
+
+suite() {
+    local name="$1"
+    shift
+    local start=$SECONDS
+    if "$@" >"$logs/$name.log" 2>&1; then
+        passed=$((passed + 1))
+        printf 'PASS  %-28s %4ss  %s\n' "$name" $((SECONDS - start)) "$(tail -n 1 "$logs/$name.log")"
+    else
+        failed=$((failed + 1))
+        printf 'FAIL  %-28s %4ss  (log: %s)\n' "$name" $((SECONDS - start)) "$logs/$name.log"
+        tail -n 15 "$logs/$name.log" | sed 's/^/      | /'
+    fi
+}
+
+suite contract-generated     "$PYTHON" tools/gen_contract.py --check
+suite rtl-lint               verilator --lint-only -Wall --top-module gpu_top -Igpu_rtl gpu_rtl/lint.vlt gpu_rtl/*.v
+suite firmware-unit          "$BUILD/tests/fw_unit"
+suite model-unit             "$BUILD/tests/model_unit"
+suite rtl-vs-model-seed1     "$GPUSIM" random --seed 1 --batches 40
+suite rtl-vs-model-seed2     "$GPUSIM" random --seed 2 --batches 40
+suite rtl-vs-model-seed3     "$GPUSIM" random --seed 3 --batches 40 --tris 200
+suite cosim-end-to-end       bash tests/cosim/end_to_end.sh
+suite cosim-kill-qemu        bash tests/cosim/kill.sh qemu
+suite cosim-kill-harness     bash tests/cosim/kill.sh harness
+suite cosim-stop-signal      bash tests/cosim/kill.sh sigterm
+suite cosim-gpu-timeout      bash tests/cosim/gpu_timeout.sh
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
