@@ -75,7 +75,7 @@ $(GPUSIM): $(RTL_V) gpu_rtl/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) $(HOS
 	  --top-module gpu_top -Igpu_rtl $(RTL_V) $(abspath $(COSIM_CPP)) \
 	  -CFLAGS "-O2 -std=c++17 $(addprefix -I$(CURDIR)/,$(patsubst -I%,%,$(HOST_INC)))" \
 	  -LDFLAGS "$(abspath $(HOST_LIB)) $$(pkg-config --libs libpng)" \
-	  --Mdir $(BUILD)/verilator -o $(abspath $(GPUSIM)) >$(BUILD)/sim/verilator.log 2>&1 \
+	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(BUILD)/verilator -o $(abspath $(GPUSIM)) >$(BUILD)/sim/verilator.log 2>&1 \
 	  || { tail -40 $(BUILD)/sim/verilator.log; exit 1; }
 
 clean:

@@ -27,6 +27,7 @@ suite() {
 suite contract-generated     "$PYTHON" tools/gen_contract.py --check
 suite rtl-lint               verilator --lint-only -Wall --top-module gpu_top -Igpu_rtl gpu_rtl/lint.vlt gpu_rtl/*.v
 suite firmware-unit          "$BUILD/tests/fw_unit"
+suite firmware-no-gpu         bash tests/firmware/no_gpu.sh
 suite model-unit             "$BUILD/tests/model_unit"
 suite rtl-vs-model-seed1     "$GPUSIM" random --seed 1 --batches 40
 suite rtl-vs-model-seed2     "$GPUSIM" random --seed 2 --batches 40

@@ -1,0 +1,66 @@
+/*
+ * bsp.h — board support for QEMU `virt` (riscv32, rv32im, machine mode, no OS).
+ *
+ * This is the whole platform interface the firmware uses. Render code never includes it; only
+ * firmware/src/main.c and the GPU driver edge (firmware/src/gpu.c) do. Another platform (an FPGA
+ * SoC, a MicroBlaze) is a sibling folder bsp/<platform>/ with its own bsp.h providing the same
+ * names with the same meaning; see bsp/README.md.
+ *
+ * Memory map used here (QEMU 7.2 `virt`):
+ *   0x0010_0000  sifive_test   (exit QEMU with a status)
+ *   0x1000_0000  NS16550 UART  (stdin/stdout/stderr)
+ *   0x8000_0000  RAM, 128 MiB; the firmware uses 0x8000_0000 .. 0x807F_FFFF (linker/qemu_virt.ld)
+ *   0x8700_0000  GPU aperture, 128 KiB (guest RAM shared with the Verilator GPU in co-simulation)
+ */
+#ifndef BSP_H
+#define BSP_H
+
+#include <stdint.h>
+
+#include "platform.h"  /* the memory map as numbers, shared with the co-simulation harness */
+
+#define BSP_NAME      "qemu_virt"
+
+/* Base address of the GPU's bus window (docs/gpu-contract.md, "Platforms"): 0x8700_0000. */
+#define BSP_GPU_BASE  PLATFORM_GPU_BASE
+
+/* Exit status used when a CPU trap (exception or unexpected interrupt) ends the program. */
+#define BSP_EXIT_TRAP 126
+
+/* Set up the trap vector and the UART. Call first thing in main(). Idempotent. */
+void bsp_init(void);
+
+/* End the program: status 0 = success, anything else = failure with that status (the QEMU
+ * process exits with status & 0xFF; a non-zero status that would read as 0 becomes 1). */
+void bsp_exit(int code) __attribute__((noreturn));
+
+/* One byte from the UART, or -1 when none is waiting. Never blocks. */
+int bsp_uart_getc_nonblock(void);
+
+/* Write one byte to the UART (blocking until the transmitter has room). */
+void bsp_uart_putc(char c);
+
+/* Retired-instruction counter, 64 bits. minstreth is re-read to detect a carry out of minstret
+ * between the two reads, so the pair is consistent. Exact and reproducible under -icount. */
+static inline uint64_t bsp_instret(void)
+{
+    uint32_t hi;
+    uint32_t lo;
+    uint32_t hi2;
+
+    do {
+        __asm__ volatile("csrr %0, minstreth" : "=r"(hi));
+        __asm__ volatile("csrr %0, minstret" : "=r"(lo));
+        __asm__ volatile("csrr %0, minstreth" : "=r"(hi2));
+    } while (hi != hi2);
+    return ((uint64_t)hi << 32) | lo;
+}
+
+/* Full memory barrier (fence rw,rw): every earlier load/store is ordered before every later one.
+ * The GPU driver uses it before ringing DOORBELL and after seeing DONE_SEQ. */
+static inline void bsp_fence(void)
+{
+    __asm__ volatile("fence rw, rw" ::: "memory");
+}
+
+#endif /* BSP_H */

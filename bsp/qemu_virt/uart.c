@@ -1,0 +1,77 @@
+/*
+ * uart.c — NS16550 UART at 0x1000_0000 on QEMU `virt`, and picolibc's stdin/stdout/stderr on it.
+ *
+ * picolibc does not define the standard streams; a BSP must. Output is unbuffered and '\n' is
+ * sent as is (no CR added) so a captured log compares byte for byte with a golden file.
+ */
+#include <stdint.h>
+#include <stdio.h>
+
+#include "bsp.h"
+#include "bsp_internal.h"
+
+#define UART_BASE     PLATFORM_UART_BASE
+#define UART_RBR      0u  /* receive buffer (read, DLAB=0) */
+#define UART_THR      0u  /* transmit holding (write, DLAB=0) */
+#define UART_IER      1u  /* interrupt enable */
+#define UART_LCR      3u  /* line control */
+#define UART_LSR      5u  /* line status */
+#define UART_LSR_DR   0x01u  /* data ready */
+#define UART_LSR_THRE 0x20u  /* transmit holding register empty */
+
+static inline void uart_write(uint32_t reg, uint8_t v)
+{
+    *(volatile uint8_t *)(UART_BASE + reg) = v;
+}
+
+static inline uint8_t uart_read(uint32_t reg)
+{
+    return *(volatile uint8_t *)(UART_BASE + reg);
+}
+
+void bsp_uart_init(void)
+{
+    uart_write(UART_IER, 0x00u);  /* polled: no interrupts */
+    uart_write(UART_LCR, 0x03u);  /* 8 data bits, no parity, 1 stop bit, DLAB=0 */
+    /* FCR is left alone: enabling the FIFOs flushes them, which would drop input that a host
+     * already sent (QEMU holds further input back while the one-byte receiver is full). */
+}
+
+void bsp_uart_putc(char c)
+{
+    while ((uart_read(UART_LSR) & UART_LSR_THRE) == 0u) {
+    }
+    uart_write(UART_THR, (uint8_t)c);
+}
+
+int bsp_uart_getc_nonblock(void)
+{
+    if ((uart_read(UART_LSR) & UART_LSR_DR) == 0u) {
+        return -1;
+    }
+    return uart_read(UART_RBR);
+}
+
+static int uart_stream_put(char c, FILE *stream)
+{
+    (void)stream;
+    bsp_uart_putc(c);
+    return (unsigned char)c;
+}
+
+static int uart_stream_get(FILE *stream)
+{
+    int c;
+
+    (void)stream;
+    do {
+        c = bsp_uart_getc_nonblock();
+    } while (c < 0);
+    return c;
+}
+
+static FILE uart_stream = FDEV_SETUP_STREAM(uart_stream_put, uart_stream_get, NULL, _FDEV_SETUP_RW);
+
+FILE *const stdin = &uart_stream;
+FILE *const stdout = &uart_stream;
+FILE *const stderr = &uart_stream;

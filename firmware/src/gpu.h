@@ -1,0 +1,124 @@
+/*
+ * gpu.h — driver for the memory-mapped GPU of docs/gpu-contract.md.
+ *
+ * Two layers:
+ *   - a pure core (static inline, below): packs vertex and primitive words exactly as the
+ *     contract's field macros in gpu_regs.h say. No hardware access; render code and host tests
+ *     use it.
+ *   - a thin edge (gpu.c): every access to the device goes through one accessor pair,
+ *     gpu_write(offset, value) / gpu_read(offset), at BSP_GPU_BASE from the platform's bsp.h.
+ *
+ * The driver keeps its state in a gpu_dev the caller owns; there are no globals.
+ */
+#ifndef GPU_H
+#define GPU_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "gpu_regs.h"
+
+/* ---- pure core: buffer word formats -------------------------------------------------------- */
+
+#define GPU_FIELD(name, v) ((((uint32_t)(v)) & GPU_##name##_MASK) << GPU_##name##_LSB)
+
+/* Vertex: x, y signed Q12.4 screen coordinates (1/16 px), z unsigned depth (0 = near).
+ * Writes GPU_VTX_WORDS words to out. */
+static inline void gpu_pack_vertex(uint32_t out[GPU_VTX_WORDS], int16_t x_q4, int16_t y_q4,
+                                   uint16_t z)
+{
+    out[0] = GPU_FIELD(VTX_X, (uint16_t)x_q4) | GPU_FIELD(VTX_Y, (uint16_t)y_q4);
+    out[1] = GPU_FIELD(VTX_Z, z);
+}
+
+/* Primitive: three vertex indices relative to VTX_BASE, a palette colour, a GPU_PRIM_KIND_*.
+ * Writes GPU_PRIM_WORDS words to out. */
+static inline void gpu_pack_prim(uint32_t out[GPU_PRIM_WORDS], uint16_t i0, uint16_t i1,
+                                 uint16_t i2, uint8_t color, uint8_t kind)
+{
+    out[0] = GPU_FIELD(PRIM_I0, i0) | GPU_FIELD(PRIM_I1, i1);
+    out[1] = GPU_FIELD(PRIM_I2, i2) | GPU_FIELD(PRIM_COLOR, color) | GPU_FIELD(PRIM_KIND, kind);
+}
+
+/* RGB444 palette word from 4-bit channels. */
+#define GPU_RGB444(r, g, b) ((((uint32_t)(r) & 0xFu) << 8) | (((uint32_t)(g) & 0xFu) << 4) | \
+                             ((uint32_t)(b) & 0xFu))
+
+/* ---- edge: the device ---------------------------------------------------------------------- */
+
+/* Driver results. 0 is success; every failure is negative. */
+enum gpu_result {
+    GPU_OK = 0,
+    GPU_E_NOT_FOUND = -1,  /* ID register is not GPU_ID_VALUE */
+    GPU_E_VERSION = -2,    /* contract major version differs, or minor is older than ours */
+    GPU_E_GEOMETRY = -3,   /* FB_SIZE is not GPU_FB_WIDTH x GPU_FB_HEIGHT */
+    GPU_E_CAPACITY = -4,   /* the batch does not fit VTX_CAP / TRI_CAP */
+    GPU_E_PENDING = -5,    /* a batch was submitted and not yet waited for */
+    GPU_E_TIMEOUT = -6,    /* DONE_SEQ did not reach the tag within max_polls reads */
+    GPU_E_ARG = -7,        /* bad argument (e.g. palette larger than the palette window) */
+};
+
+/* What the device reports about itself (read by gpu_init). */
+struct gpu_info {
+    uint32_t id;
+    uint32_t version;
+    uint32_t caps;
+    uint32_t vtx_cap;
+    uint32_t tri_cap;
+    uint32_t fb_size;
+};
+
+struct gpu_dev {
+    struct gpu_info info;
+    uint32_t next_tag;  /* tag of the next doorbell: never 0, +1 per batch (skipping 0) */
+    bool pending;       /* a batch is in flight: submitted, not yet seen done */
+    uint32_t last_done_seq;  /* DONE_SEQ at the last gpu_wait return (for error messages) */
+};
+
+/* One batch (docs/gpu-contract.md, "A batch, and the frame handshake"). The driver copies
+ * vtx_count vertices to the vertex buffer starting at vtx_base and prim_count primitives to the
+ * index buffer starting at tri_base, then programs the batch registers with the same values. */
+struct gpu_batch {
+    const uint32_t *vtx_words;   /* vtx_count * GPU_VTX_WORDS words */
+    uint32_t vtx_base;
+    uint32_t vtx_count;
+    const uint32_t *prim_words;  /* prim_count * GPU_PRIM_WORDS words */
+    uint32_t tri_base;
+    uint32_t prim_count;
+    uint32_t ctrl;               /* GPU_CTRL_*_MASK bits */
+    uint8_t clear_color;         /* palette index used when ctrl has GPU_CTRL_CLEAR_MASK */
+};
+
+/* Counters and flags of the last finished batch. */
+struct gpu_stats {
+    uint32_t errors;        /* GPU_ERR_*_MASK bits */
+    uint32_t busy_cycles;
+    uint32_t tris_in;
+    uint32_t tris_drawn;
+    uint32_t tris_rejected;
+    uint32_t pixels;
+    uint32_t samples;
+};
+
+/* Read ID/VERSION/CAPS/capacities into dev->info (always, so a caller can report them), then
+ * check them: GPU_E_NOT_FOUND, GPU_E_VERSION or GPU_E_GEOMETRY on a mismatch. On success load
+ * palette[0 .. n-1] (RGB444 words) into the palette window and pick a first tag that differs from
+ * the current DOORBELL and DONE_SEQ values. */
+int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n);
+
+/* Copy the batch's buffers, program the batch registers, fence, ring DOORBELL with a fresh
+ * non-zero tag. The tag is returned in *tag for gpu_wait. Fails without touching the device when
+ * a batch is still pending or the batch does not fit the capacities the device reported. */
+int gpu_submit_batch(struct gpu_dev *dev, const struct gpu_batch *batch, uint32_t *tag);
+
+/* Poll DONE_SEQ until it equals tag, at most max_polls reads. GPU_OK or GPU_E_TIMEOUT (the last
+ * value read is left in dev->last_done_seq). */
+int gpu_wait(struct gpu_dev *dev, uint32_t tag, uint32_t max_polls);
+
+/* Read ERRORS and the PERF_* counters of the last finished batch. */
+void gpu_read_stats(const struct gpu_dev *dev, struct gpu_stats *stats);
+
+/* Short English text for a gpu_result. */
+const char *gpu_strerror(int result);
+
+#endif /* GPU_H */

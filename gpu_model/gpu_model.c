@@ -1,0 +1,422 @@
+/*
+ * gpu_model.c - bit-exact golden C model of the GPU (see gpu_model.h).
+ *
+ * Every rule here is a transcription of docs/gpu-contract.md; the comments
+ * quote the step they implement.  The rasterizer is deliberately the plainest
+ * possible reading of the "Triangle rule (exact)": for every pixel centre of
+ * the clamped bounding box it evaluates the three edge functions from scratch
+ * in 64-bit arithmetic.  A hardware rasterizer steps the edge values
+ * incrementally; keeping the model direct means the two do not share the
+ * stepping logic, so a stepping bug shows up as a mismatch.
+ */
+#include "gpu_model.h"
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <string.h>
+
+/* Q12.4: one pixel is 16 units, a pixel centre is at 16*n + 8. */
+#define SUBPIXEL_ONE  ((int64_t)1 << GPU_SUBPIXEL_BITS)
+#define SUBPIXEL_HALF ((int64_t)1 << (GPU_SUBPIXEL_BITS - 1))
+
+/* Extract field NAME (GPU_<NAME>_WORD/_LSB/_MASK) from a buffer entry. */
+#define GPU_MODEL_FIELD(words, NAME) \
+    (((words)[GPU_##NAME##_WORD] >> GPU_##NAME##_LSB) & GPU_##NAME##_MASK)
+
+/* Words backing each buffer window.  The windows are larger than the buffers
+ * (e.g. VTX is 0x8000 bytes, the buffer 1024 * 2 words = 0x2000 bytes); the
+ * rest of a window is treated as unmapped. */
+#define VTX_WORDS_TOTAL (GPU_VTX_CAP * GPU_VTX_WORDS)
+#define IDX_WORDS_TOTAL (GPU_TRI_CAP * GPU_PRIM_WORDS)
+
+/* A vertex position in Q12.4, widened so every later product is exact. */
+typedef struct {
+    int64_t x;
+    int64_t y;
+} gpu_model_pt;
+
+/* Outcome of one primitive, for the PERF_* counters. */
+typedef enum {
+    PRIM_REJECTED,
+    PRIM_DRAWN,
+} prim_result;
+
+/* ---------------------------------------------------------------- helpers */
+
+/* Sign-extend a field whose mask is a run of ones from bit 0 (e.g. 0xFFFF).
+ * Done arithmetically so it does not rely on implementation-defined
+ * conversions to a narrower signed type. */
+static int64_t sign_extend(uint32_t raw, uint32_t mask)
+{
+    int64_t sign = ((int64_t)mask + 1) / 2;
+    return (int64_t)(raw & mask) - (((int64_t)raw & sign) ? 2 * sign : 0);
+}
+
+/* floor(a / b) and ceil(a / b) for b > 0; C division truncates toward zero,
+ * which is wrong for negative a (guard-band vertices). */
+static int64_t floor_div(int64_t a, int64_t b)
+{
+    int64_t q = a / b;
+    return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+
+static int64_t ceil_div(int64_t a, int64_t b)
+{
+    int64_t q = a / b;
+    return (a % b != 0 && a > 0) ? q + 1 : q;
+}
+
+static int64_t min3(int64_t a, int64_t b, int64_t c)
+{
+    int64_t m = a < b ? a : b;
+    return m < c ? m : c;
+}
+
+static int64_t max3(int64_t a, int64_t b, int64_t c)
+{
+    int64_t m = a > b ? a : b;
+    return m > c ? m : c;
+}
+
+static uint8_t *back_buffer(gpu_model *m)
+{
+    return m->fb[(m->front & 1u) ^ 1u];
+}
+
+/* ------------------------------------------------------------- rasterizer */
+
+/* E_ab(p) = (b.x - a.x)(p.y - a.y) - (b.y - a.y)(p.x - a.x), exactly as the
+ * contract writes it.  Operands are at most 17 bits, the result 34 bits
+ * (contract, "Widths"), far inside int64_t. */
+static int64_t edge_fn(gpu_model_pt a, gpu_model_pt b, gpu_model_pt p)
+{
+    return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
+
+/* An edge is top-left when dy < 0, or dy = 0 and dx > 0 (y points down and
+ * the interior is where E > 0). */
+static bool edge_is_top_left(gpu_model_pt a, gpu_model_pt b)
+{
+    int64_t dx = b.x - a.x;
+    int64_t dy = b.y - a.y;
+    return dy < 0 || (dy == 0 && dx > 0);
+}
+
+/* The fill rule for one edge: strictly inside, or exactly on a top-left edge.
+ * This is what makes triangles sharing an edge cover each centre once. */
+static bool edge_covers(int64_t e, bool top_left)
+{
+    return e > 0 || (e == 0 && top_left);
+}
+
+/* Draw one triangle into `fb` following "Triangle rule (exact)".  Adds its
+ * samples and pixels to the counters and reports drawn / rejected. */
+static prim_result draw_triangle(gpu_model *m, uint8_t *fb,
+                                 gpu_model_pt v0, gpu_model_pt v1,
+                                 gpu_model_pt v2, uint8_t color)
+{
+    /* area = E_v0v1(v2); zero area is rejected, negative area swaps v1/v2 so
+     * both windings rasterize identically. */
+    int64_t area = edge_fn(v0, v1, v2);
+    if (area == 0) {
+        return PRIM_REJECTED;
+    }
+    if (area < 0) {
+        gpu_model_pt t = v1;
+        v1 = v2;
+        v2 = t;
+    }
+
+    /* Clamped bounding box: exactly the pixels whose centres 16*p + 8 lie in
+     * [min, max] of the vertex coordinates, clipped to the screen. */
+    int64_t minx = min3(v0.x, v1.x, v2.x);
+    int64_t maxx = max3(v0.x, v1.x, v2.x);
+    int64_t miny = min3(v0.y, v1.y, v2.y);
+    int64_t maxy = max3(v0.y, v1.y, v2.y);
+    int64_t px0 = ceil_div(minx - SUBPIXEL_HALF, SUBPIXEL_ONE);
+    int64_t px1 = floor_div(maxx - SUBPIXEL_HALF, SUBPIXEL_ONE);
+    int64_t py0 = ceil_div(miny - SUBPIXEL_HALF, SUBPIXEL_ONE);
+    int64_t py1 = floor_div(maxy - SUBPIXEL_HALF, SUBPIXEL_ONE);
+    if (px0 < 0) {
+        px0 = 0;
+    }
+    if (py0 < 0) {
+        py0 = 0;
+    }
+    if (px1 > (int64_t)GPU_FB_WIDTH - 1) {
+        px1 = (int64_t)GPU_FB_WIDTH - 1;
+    }
+    if (py1 > (int64_t)GPU_FB_HEIGHT - 1) {
+        py1 = (int64_t)GPU_FB_HEIGHT - 1;
+    }
+    if (px0 > px1 || py0 > py1) {
+        return PRIM_REJECTED; /* off screen, or too thin for any centre */
+    }
+
+    /* Edges v0->v1, v1->v2, v2->v0 and their fill-rule class. */
+    bool tl01 = edge_is_top_left(v0, v1);
+    bool tl12 = edge_is_top_left(v1, v2);
+    bool tl20 = edge_is_top_left(v2, v0);
+
+    m->perf.samples += (uint32_t)((px1 - px0 + 1) * (py1 - py0 + 1));
+
+    for (int64_t py = py0; py <= py1; py++) {
+        for (int64_t px = px0; px <= px1; px++) {
+            gpu_model_pt p = { SUBPIXEL_ONE * px + SUBPIXEL_HALF,
+                               SUBPIXEL_ONE * py + SUBPIXEL_HALF };
+            if (edge_covers(edge_fn(v0, v1, p), tl01) &&
+                edge_covers(edge_fn(v1, v2, p), tl12) &&
+                edge_covers(edge_fn(v2, v0, p), tl20)) {
+                fb[(size_t)py * GPU_FB_WIDTH + (size_t)px] = color;
+                m->perf.pixels++;
+            }
+        }
+    }
+    return PRIM_DRAWN;
+}
+
+/* Position of vertex `index` of the vertex buffer (absolute index). */
+static gpu_model_pt vertex_pos(const gpu_model *m, uint32_t index)
+{
+    const uint32_t *w = &m->vtx[(size_t)index * GPU_VTX_WORDS];
+    gpu_model_pt p = { sign_extend(GPU_MODEL_FIELD(w, VTX_X), GPU_VTX_X_MASK),
+                       sign_extend(GPU_MODEL_FIELD(w, VTX_Y), GPU_VTX_Y_MASK) };
+    return p;
+}
+
+/* One primitive, contract "Primitives" steps 2-4 (step 1, the TRIS_IN count,
+ * is done by the caller). */
+static prim_result run_primitive(gpu_model *m, uint32_t prim)
+{
+    const uint32_t *w = &m->idx[(size_t)prim * GPU_PRIM_WORDS];
+    uint32_t kind = GPU_MODEL_FIELD(w, PRIM_KIND);
+    uint32_t i0 = GPU_MODEL_FIELD(w, PRIM_I0);
+    uint32_t i1 = GPU_MODEL_FIELD(w, PRIM_I1);
+    uint32_t i2 = GPU_MODEL_FIELD(w, PRIM_I2);
+    uint8_t color = (uint8_t)GPU_MODEL_FIELD(w, PRIM_COLOR);
+
+    /* 2. Kind: the model supports triangles only (CAPS_LINES = 0), so a line
+     *    or an unknown kind is skipped with ERR_KIND. */
+    if (kind != GPU_PRIM_KIND_TRI) {
+        m->errors |= GPU_ERR_KIND_MASK;
+        return PRIM_REJECTED;
+    }
+
+    /* 3. Indices are relative to VTX_BASE and must be < VTX_COUNT; the batch
+     *    check already guaranteed VTX_BASE + VTX_COUNT <= VTX_CAP, so an
+     *    accepted index never reads outside the vertex buffer. */
+    uint32_t count = m->regs.vtx_count;
+    if (i0 >= count || i1 >= count || i2 >= count) {
+        m->errors |= GPU_ERR_VTX_INDEX_MASK;
+        return PRIM_REJECTED;
+    }
+
+    /* 4. Triangle rule. */
+    uint32_t base = m->regs.vtx_base;
+    return draw_triangle(m, back_buffer(m), vertex_pos(m, base + i0),
+                         vertex_pos(m, base + i1), vertex_pos(m, base + i2),
+                         color);
+}
+
+/* A batch, contract "A batch, and the frame handshake" steps 1-6, run to
+ * completion (the model has no time, so BUSY is never observable). */
+static void run_batch(gpu_model *m, uint32_t tag)
+{
+    uint32_t ctrl = m->regs.ctrl; /* CTRL is sampled at the doorbell */
+
+    /* 1. Clear ERRORS and the PERF_* counters. */
+    m->errors = 0;
+    memset(&m->perf, 0, sizeof m->perf);
+
+    /* 2. Range check in 64 bits so a huge BASE + COUNT cannot wrap. */
+    bool count_bad =
+        (uint64_t)m->regs.vtx_base + m->regs.vtx_count > GPU_VTX_CAP ||
+        (uint64_t)m->regs.tri_base + m->regs.tri_count > GPU_TRI_CAP;
+
+    if (count_bad) {
+        m->errors |= GPU_ERR_COUNT_MASK; /* skip clear and draw */
+    } else {
+        /* 3. Clear the back buffer to CLEAR_COLOR[7:0]. */
+        if (ctrl & GPU_CTRL_CLEAR_MASK) {
+            memset(back_buffer(m), (int)(m->regs.clear_color & 0xFFu),
+                   GPU_MODEL_FB_PIXELS);
+        }
+        /* 4. Primitives in order; later ones overwrite earlier ones. */
+        for (uint32_t i = 0; i < m->regs.tri_count; i++) {
+            m->perf.tris_in++;
+            if (run_primitive(m, m->regs.tri_base + i) == PRIM_DRAWN) {
+                m->perf.tris_drawn++;
+            } else {
+                m->perf.tris_rejected++;
+            }
+        }
+    }
+
+    /* 5. Swap, also after ERR_COUNT ("a requested swap still happens").
+     *    Nothing is copied: the new back buffer keeps the old front's pixels. */
+    if (ctrl & GPU_CTRL_SWAP_MASK) {
+        m->front ^= 1u;
+        m->frame_count++;
+    }
+
+    /* 6. Done. */
+    m->done_seq = tag;
+}
+
+/* -------------------------------------------------------------------- bus */
+
+void gpu_model_reset(gpu_model *m)
+{
+    /* Everything is zero at power-on: registers, counters, front = 0,
+     * palette black, both framebuffers palette index 0. */
+    memset(m, 0, sizeof *m);
+}
+
+void gpu_model_write(gpu_model *m, uint32_t offset, uint32_t value)
+{
+    if (offset & 3u) {
+        return; /* only aligned words exist on the bus */
+    }
+
+    if (offset >= GPU_WIN_PALETTE &&
+        offset - GPU_WIN_PALETTE < GPU_WIN_PALETTE_BYTES) {
+        uint32_t i = (offset - GPU_WIN_PALETTE) / 4u;
+        if (i < GPU_PALETTE_ENTRIES) {
+            m->palette[i] = (uint16_t)(value & 0xFFFu); /* RGB444 in [11:0] */
+        }
+        return;
+    }
+    if (offset >= GPU_WIN_VTX && offset - GPU_WIN_VTX < GPU_WIN_VTX_BYTES) {
+        uint32_t i = (offset - GPU_WIN_VTX) / 4u;
+        if (i < VTX_WORDS_TOTAL) {
+            m->vtx[i] = value;
+        }
+        return;
+    }
+    if (offset >= GPU_WIN_IDX && offset - GPU_WIN_IDX < GPU_WIN_IDX_BYTES) {
+        uint32_t i = (offset - GPU_WIN_IDX) / 4u;
+        if (i < IDX_WORDS_TOTAL) {
+            m->idx[i] = value;
+        }
+        return;
+    }
+
+    /* Registers: only the rw batch registers take writes; writes to the
+     * read-only registers and to holes are ignored. */
+    switch (offset) {
+    case GPU_REG_CTRL:
+        m->regs.ctrl = value;
+        break;
+    case GPU_REG_VTX_BASE:
+        m->regs.vtx_base = value;
+        break;
+    case GPU_REG_VTX_COUNT:
+        m->regs.vtx_count = value;
+        break;
+    case GPU_REG_TRI_BASE:
+        m->regs.tri_base = value;
+        break;
+    case GPU_REG_TRI_COUNT:
+        m->regs.tri_count = value;
+        break;
+    case GPU_REG_CLEAR_COLOR:
+        m->regs.clear_color = value;
+        break;
+    case GPU_REG_DOORBELL:
+        /* Any write starts a batch, whatever the value (the contract asks the
+         * firmware for fresh non-zero tags but the device does not check). */
+        m->regs.doorbell = value;
+        run_batch(m, value);
+        break;
+    default:
+        break;
+    }
+}
+
+uint32_t gpu_model_read(const gpu_model *m, uint32_t offset)
+{
+    if (offset & 3u) {
+        return 0;
+    }
+    /* The palette, vertex and index windows are write-only: they read 0, as
+     * does everything outside the register window, via the default case. */
+    switch (offset) {
+    case GPU_REG_ID:
+        return GPU_ID_VALUE;
+    case GPU_REG_VERSION:
+        return GPU_VERSION_VALUE;
+    case GPU_REG_CAPS:
+        return GPU_MODEL_CAPS;
+    case GPU_REG_VTX_CAP:
+        return GPU_VTX_CAP;
+    case GPU_REG_TRI_CAP:
+        return GPU_TRI_CAP;
+    case GPU_REG_FB_SIZE:
+        return GPU_FB_WIDTH | (GPU_FB_HEIGHT << 16);
+    case GPU_REG_CTRL:
+        return m->regs.ctrl;
+    case GPU_REG_VTX_BASE:
+        return m->regs.vtx_base;
+    case GPU_REG_VTX_COUNT:
+        return m->regs.vtx_count;
+    case GPU_REG_TRI_BASE:
+        return m->regs.tri_base;
+    case GPU_REG_TRI_COUNT:
+        return m->regs.tri_count;
+    case GPU_REG_CLEAR_COLOR:
+        return m->regs.clear_color;
+    case GPU_REG_DOORBELL:
+        return m->regs.doorbell;
+    case GPU_REG_STATUS:
+        /* BUSY is always 0 between calls: batches complete inside write. */
+        return (m->front << GPU_STATUS_FRONT_LSB) & GPU_STATUS_FRONT_MASK;
+    case GPU_REG_DONE_SEQ:
+        return m->done_seq;
+    case GPU_REG_FRAME_COUNT:
+        return m->frame_count;
+    case GPU_REG_ERRORS:
+        return m->errors;
+    case GPU_REG_PERF_BUSY_CYCLES:
+        return 0; /* cycles are not modelled */
+    case GPU_REG_PERF_TRIS_IN:
+        return m->perf.tris_in;
+    case GPU_REG_PERF_TRIS_DRAWN:
+        return m->perf.tris_drawn;
+    case GPU_REG_PERF_TRIS_REJECTED:
+        return m->perf.tris_rejected;
+    case GPU_REG_PERF_PIXELS:
+        return m->perf.pixels;
+    case GPU_REG_PERF_SAMPLES:
+        return m->perf.samples;
+    default:
+        return 0;
+    }
+}
+
+/* ---------------------------------------------------------------- outputs */
+
+const uint8_t *gpu_model_front(const gpu_model *m)
+{
+    return m->fb[m->front & 1u];
+}
+
+const uint8_t *gpu_model_back(const gpu_model *m)
+{
+    return m->fb[(m->front & 1u) ^ 1u];
+}
+
+void gpu_model_scanout(const gpu_model *m, uint8_t *rgb)
+{
+    const uint8_t *fb = gpu_model_front(m);
+    for (uint32_t y = 0; y < GPU_MODEL_SCREEN_H; y++) {
+        for (uint32_t x = 0; x < GPU_MODEL_SCREEN_W; x++) {
+            /* Each framebuffer pixel covers a 2 x 2 block of the screen. */
+            uint16_t c = m->palette[fb[(y / 2u) * GPU_FB_WIDTH + x / 2u]];
+            uint8_t *out = &rgb[((size_t)y * GPU_MODEL_SCREEN_W + x) * 3u];
+            /* n * 17 maps a 4-bit channel onto 0..255 exactly (0xF -> 0xFF). */
+            out[0] = (uint8_t)(((c >> 8) & 0xFu) * 17u);
+            out[1] = (uint8_t)(((c >> 4) & 0xFu) * 17u);
+            out[2] = (uint8_t)((c & 0xFu) * 17u);
+        }
+    }
+}

@@ -1,0 +1,217 @@
+/*
+ * test_fixed.c — q16_16 arithmetic, saturation and overflow detection, sine/cosine, angles.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+#include "fixed.h"
+#include "unit.h"
+
+#define PI 3.14159265358979323846
+
+void test_fx_mul_basic(void)
+{
+    CHECK_EQ(fx_mul(FX_CONST(1.5), FX_CONST(2.0)), FX_CONST(3.0));
+    CHECK_EQ(fx_mul(FX_CONST(-1.5), FX_CONST(2.0)), FX_CONST(-3.0));
+    CHECK_EQ(fx_mul(FX_CONST(-1.5), FX_CONST(-2.0)), FX_CONST(3.0));
+    CHECK_EQ(fx_mul(FX_CONST(0.5), FX_CONST(0.5)), FX_CONST(0.25));
+    CHECK_EQ(fx_mul(FX_ONE, 12345), 12345);
+    CHECK_EQ(fx_mul(0, FX_MAX), 0);
+    /* Smallest steps: 2^-16 * 0.5 = 2^-17 is a tie and rounds up; 2^-16 * 0.25 rounds to 0. */
+    CHECK_EQ(fx_mul(1, FX_HALF), 1);
+    CHECK_EQ(fx_mul(1, FX_CONST(0.25)), 0);
+    CHECK_EQ(fx_mul(-1, FX_CONST(0.25)), 0);
+    CHECK_EQ(fx_overflow_count(), 0);
+}
+
+/* Every in-range result is the nearest q16_16 to the exact product: |a*b - r*2^16| <= 2^15. */
+void test_fx_mul_rounding_random(void)
+{
+    for (int i = 0; i < 200000; i++) {
+        const q16_16 a = (q16_16)unit_rand() >> (unit_rand() % 24u);
+        const q16_16 b = (q16_16)unit_rand() >> (unit_rand() % 24u);
+        const int64_t exact = (int64_t)a * b;  /* |.| <= 2^62 */
+        q16_16 r;
+
+        if (exact / 65536 > INT32_MAX - 1 || exact / 65536 < INT32_MIN + 1) {
+            continue;  /* out of range: covered by the saturation test */
+        }
+        r = fx_mul(a, b);
+        if (llabs(exact - (int64_t)r * 65536) > 32768) {
+            CHECK_EQ(r, exact / 65536);
+            break;
+        }
+    }
+    CHECK_EQ(fx_overflow_count(), 0);
+}
+
+void test_fx_mul_saturation(void)
+{
+    /* At the range ends. */
+    CHECK_EQ(fx_mul(FX_MAX, FX_ONE), FX_MAX);
+    CHECK_EQ(fx_mul(FX_MIN, FX_ONE), FX_MIN);
+    CHECK_EQ(fx_overflow_count(), 0);
+    CHECK_EQ(fx_mul(FX_MAX, FX_MAX), FX_MAX);
+    CHECK_EQ(fx_overflow_count(), 1);
+    CHECK_EQ(fx_mul(FX_MIN, FX_MAX), FX_MIN);
+    CHECK_EQ(fx_overflow_count(), 2);
+    CHECK_EQ(fx_mul(FX_MIN, FX_MIN), FX_MAX);
+    CHECK_EQ(fx_overflow_count(), 3);
+    /* -32768 * -1 = +32768 is one step beyond FX_MAX. */
+    CHECK_EQ(fx_mul(FX_MIN, -FX_ONE), FX_MAX);
+    CHECK_EQ(fx_overflow_count(), 4);
+    /* Just inside and just outside: 181^2 = 32761 fits, 182 * 181 = 32942 does not. */
+    CHECK_EQ(fx_mul(FX_FROM_INT(181), FX_FROM_INT(181)), FX_FROM_INT(32761));
+    CHECK_EQ(fx_overflow_count(), 4);
+    CHECK_EQ(fx_mul(FX_FROM_INT(182), FX_FROM_INT(181)), FX_MAX);
+    CHECK_EQ(fx_mul(FX_FROM_INT(-182), FX_FROM_INT(181)), FX_MIN);
+    CHECK_EQ(fx_overflow_count(), 6);
+    /* Near the top without overflow: (2^31 - 1) * (1 - 2^-16) = 2^31 - 2^15 - 1 + 2^-16. */
+    CHECK_EQ(fx_mul(FX_MAX, FX_ONE - 1), FX_MAX - 32768);
+    CHECK_EQ(fx_overflow_count(), 6);
+}
+
+void test_fx_overflow_sticky(void)
+{
+    CHECK_EQ(fx_overflow_count(), 0);
+    (void)fx_mul(FX_MAX, FX_FROM_INT(2));
+    CHECK_EQ(fx_overflow_count(), 1);
+    (void)fx_mul(FX_ONE, FX_ONE);  /* a good result does not clear it */
+    CHECK_EQ(fx_overflow_count(), 1);
+    (void)fx_add(FX_MAX, 1);
+    CHECK_EQ(fx_overflow_count(), 2);
+    fx_overflow_clear();
+    CHECK_EQ(fx_overflow_count(), 0);
+}
+
+void test_fx_add_sub_saturation(void)
+{
+    CHECK_EQ(fx_add(FX_CONST(1.25), FX_CONST(-3.5)), FX_CONST(-2.25));
+    CHECK_EQ(fx_sub(FX_CONST(1.25), FX_CONST(-3.5)), FX_CONST(4.75));
+    CHECK_EQ(fx_add(FX_MAX, 0), FX_MAX);
+    CHECK_EQ(fx_add(FX_MIN, 0), FX_MIN);
+    CHECK_EQ(fx_overflow_count(), 0);
+    CHECK_EQ(fx_add(FX_MAX, 1), FX_MAX);
+    CHECK_EQ(fx_add(FX_MIN, -1), FX_MIN);
+    CHECK_EQ(fx_sub(FX_MIN, 1), FX_MIN);
+    CHECK_EQ(fx_sub(0, FX_MIN), FX_MAX);
+    CHECK_EQ(fx_overflow_count(), 4);
+}
+
+void test_fx_div(void)
+{
+    CHECK_EQ(fx_div(FX_CONST(7.0), FX_CONST(2.0)), FX_CONST(3.5));
+    CHECK_EQ(fx_div(FX_CONST(-7.0), FX_CONST(2.0)), FX_CONST(-3.5));
+    CHECK_EQ(fx_div(FX_CONST(7.0), FX_CONST(-2.0)), FX_CONST(-3.5));
+    CHECK_EQ(fx_div(FX_ONE, FX_CONST(3.0)), 21845);   /* 65536 / 3 = 21845.33 */
+    CHECK_EQ(fx_div(FX_CONST(2.0), FX_CONST(3.0)), 43691);  /* 43690.67 */
+    CHECK_EQ(fx_div(-FX_CONST(2.0), FX_CONST(3.0)), -43691);
+    CHECK_EQ(fx_recip(FX_CONST(0.25)), FX_CONST(4.0));
+    CHECK_EQ(fx_recip(FX_CONST(-8.0)), FX_CONST(-0.125));
+    /* Ties go away from zero: 1 raw / 2 = 0.5 raw -> 1, -1 raw / 2 -> -1. */
+    CHECK_EQ(fx_div(1, FX_CONST(2.0)), 1);
+    CHECK_EQ(fx_div(-1, FX_CONST(2.0)), -1);
+    CHECK_EQ(fx_overflow_count(), 0);
+
+    /* Random: the quotient q is the nearest: |a*2^16 - q*b| <= |b|/2. */
+    for (int i = 0; i < 200000; i++) {
+        const q16_16 a = (q16_16)unit_rand() >> (unit_rand() % 31u);
+        const q16_16 b = (q16_16)unit_rand() >> (unit_rand() % 31u);
+        const int64_t num = (int64_t)a * 65536;
+        int64_t q;
+        q16_16 r;
+
+        if (b == 0) {
+            continue;
+        }
+        q = num / b;
+        if (q > INT32_MAX - 1 || q < INT32_MIN + 1) {
+            continue;
+        }
+        r = fx_div(a, b);
+        if (llabs(num - (int64_t)r * b) * 2 > llabs((int64_t)b)) {
+            CHECK_EQ(r, q);
+            break;
+        }
+    }
+    CHECK_EQ(fx_overflow_count(), 0);
+}
+
+void test_fx_div_saturation(void)
+{
+    CHECK_EQ(fx_div(FX_ONE, 0), FX_MAX);
+    CHECK_EQ(fx_div(-FX_ONE, 0), FX_MIN);
+    CHECK_EQ(fx_overflow_count(), 2);
+    CHECK_EQ(fx_div(FX_FROM_INT(20000), FX_CONST(0.5)), FX_MAX);  /* 40000 > 32768 */
+    CHECK_EQ(fx_div(FX_FROM_INT(-20000), FX_CONST(0.5)), FX_MIN);
+    CHECK_EQ(fx_div(FX_MAX, 1), FX_MAX);  /* quotient 2^47 */
+    CHECK_EQ(fx_overflow_count(), 5);
+    CHECK_EQ(fx_div(FX_MAX, FX_ONE), FX_MAX);  /* exact, no overflow */
+    CHECK_EQ(fx_div(FX_MIN, FX_ONE), FX_MIN);
+    CHECK_EQ(fx_div(FX_MIN, -FX_ONE), FX_MAX);  /* +32768: one step too far */
+    CHECK_EQ(fx_overflow_count(), 6);
+}
+
+void test_fx_round_to_int(void)
+{
+    CHECK_EQ(fx_round_to_int(FX_CONST(2.49)), 2);
+    CHECK_EQ(fx_round_to_int(FX_CONST(2.5)), 3);
+    CHECK_EQ(fx_round_to_int(FX_CONST(-2.5)), -2);  /* ties up */
+    CHECK_EQ(fx_round_to_int(FX_CONST(-2.51)), -3);
+    CHECK_EQ(fx_round_to_int(FX_MAX), 32768);
+    CHECK_EQ(fx_round_to_int(FX_MIN), -32768);
+}
+
+void test_fx_sin_cos_exact_points(void)
+{
+    CHECK_EQ(fx_sin(0), 0);
+    CHECK_EQ(fx_sin(16384), FX_ONE);
+    CHECK_EQ(fx_sin(32768), 0);
+    CHECK_EQ(fx_sin(49152), -FX_ONE);
+    CHECK_EQ(fx_cos(0), FX_ONE);
+    CHECK_EQ(fx_cos(16384), 0);
+    CHECK_EQ(fx_cos(32768), -FX_ONE);
+    CHECK_EQ(fx_cos(49152), 0);
+    CHECK_EQ(fx_sin(FX_ANGLE_DEG(30)), fx_sin(5461));  /* 65536 / 12 = 5461.33 */
+}
+
+/* Stated bound (fixed.h): |error| < 1e-4 over every one of the 65536 angles. */
+void test_fx_sin_cos_vs_libm(void)
+{
+    double max_err = 0.0;
+
+    for (uint32_t a = 0; a < FX_TURN; a++) {
+        const double t = 2.0 * PI * (double)a / 65536.0;
+        const double es = fabs((double)fx_sin((fx_angle)a) / 65536.0 - sin(t));
+        const double ec = fabs((double)fx_cos((fx_angle)a) / 65536.0 - cos(t));
+
+        max_err = fmax(max_err, fmax(es, ec));
+        CHECK(fx_sin((fx_angle)a) <= FX_ONE && fx_sin((fx_angle)a) >= -FX_ONE);
+    }
+    if (!(max_err < 1e-4)) {
+        unit_fail(__FILE__, __LINE__, "max sin/cos error %.3g >= 1e-4", max_err);
+    }
+    CHECK(max_err > 1e-6);  /* sanity: the comparison really ran */
+}
+
+void test_fx_angle_wrap(void)
+{
+    fx_angle a = 65000;
+    fx_angle b = 0;
+
+    a = (fx_angle)(a + 1000u);
+    CHECK_EQ(a, 464);
+    CHECK_EQ(fx_sin(a), fx_sin(464));
+    CHECK_EQ((fx_angle)-16384, 49152);
+    CHECK_EQ(fx_sin((fx_angle)-16384), -FX_ONE);
+    CHECK_EQ(FX_ANGLE_DEG(360), 0);
+    CHECK_EQ(FX_ANGLE_DEG(90), 16384);
+    /* Any step size: after 65536 steps the angle is back exactly where it started. */
+    for (uint32_t i = 0; i < 65536u; i++) {
+        b = (fx_angle)(b + 683u);
+    }
+    CHECK_EQ(b, 0);
+    /* cos(a) = sin(a + quarter turn) across the wrap. */
+    CHECK_EQ(fx_cos(60000), fx_sin((fx_angle)(60000u + 16384u)));
+}
