@@ -2,9 +2,9 @@
 // Included inside module bodies. Not every module uses every constant:
 /* verilator lint_off UNUSEDPARAM */
 localparam [31:0] GPU_ID_VALUE                 = 32'h47505530;
-localparam [31:0] GPU_VERSION_VALUE            = 32'h10000;
+localparam [31:0] GPU_VERSION_VALUE            = 32'h10001;
 localparam [31:0] GPU_VTX_CAP                  = 32'h400;
-localparam [31:0] GPU_TRI_CAP                  = 32'h400;
+localparam [31:0] GPU_TRI_CAP                  = 32'h200;
 localparam [31:0] GPU_FB_WIDTH                 = 32'h140;
 localparam [31:0] GPU_FB_HEIGHT                = 32'hF0;
 localparam [31:0] GPU_PALETTE_ENTRIES          = 32'h100;
@@ -30,6 +30,7 @@ localparam [7:0] GPU_REG_TRI_BASE             = 8'h2C;  // rw
 localparam [7:0] GPU_REG_TRI_COUNT            = 8'h30;  // rw
 localparam [7:0] GPU_REG_CLEAR_COLOR          = 8'h34;  // rw
 localparam [7:0] GPU_REG_DOORBELL             = 8'h38;  // rw
+localparam [7:0] GPU_REG_RESET                = 8'h3C;  // rw
 localparam [7:0] GPU_REG_STATUS               = 8'h40;  // ro
 localparam [7:0] GPU_REG_DONE_SEQ             = 8'h44;  // ro
 localparam [7:0] GPU_REG_FRAME_COUNT          = 8'h48;  // ro
@@ -40,10 +41,16 @@ localparam [7:0] GPU_REG_PERF_TRIS_DRAWN      = 8'h68;  // ro
 localparam [7:0] GPU_REG_PERF_TRIS_REJECTED   = 8'h6C;  // ro
 localparam [7:0] GPU_REG_PERF_PIXELS          = 8'h70;  // ro
 localparam [7:0] GPU_REG_PERF_SAMPLES         = 8'h74;  // ro
+localparam [7:0] GPU_REG_PERF_SPANS_WRITTEN   = 8'h78;  // ro
+localparam [7:0] GPU_REG_PERF_SPANS_VISITED   = 8'h7C;  // ro
 localparam integer GPU_CTRL_CLEAR_LSB           = 0;  // in CTRL
 localparam integer GPU_CTRL_CLEAR_WIDTH         = 1;
 localparam integer GPU_CTRL_SWAP_LSB            = 1;  // in CTRL
 localparam integer GPU_CTRL_SWAP_WIDTH          = 1;
+localparam integer GPU_CTRL_ZTEST_LSB           = 2;  // in CTRL
+localparam integer GPU_CTRL_ZTEST_WIDTH         = 1;
+localparam integer GPU_CTRL_ZCLEAR_LSB          = 3;  // in CTRL
+localparam integer GPU_CTRL_ZCLEAR_WIDTH        = 1;
 localparam integer GPU_STATUS_BUSY_LSB          = 0;  // in STATUS
 localparam integer GPU_STATUS_BUSY_WIDTH        = 1;
 localparam integer GPU_STATUS_FRONT_LSB         = 1;  // in STATUS

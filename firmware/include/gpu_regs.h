@@ -3,11 +3,11 @@
 #define GPU_REGS_H
 
 #define GPU_ID_VALUE                 0x47505530u
-#define GPU_VERSION_VALUE            0x00010000u
+#define GPU_VERSION_VALUE            0x00010001u
 #define GPU_APERTURE_BYTES           0x20000u
 
 #define GPU_VTX_CAP                  1024u
-#define GPU_TRI_CAP                  1024u
+#define GPU_TRI_CAP                  512u
 #define GPU_FB_WIDTH                 320u
 #define GPU_FB_HEIGHT                240u
 #define GPU_PALETTE_ENTRIES          256u
@@ -37,6 +37,7 @@
 #define GPU_REG_TRI_COUNT            0x030u  /* rw: Primitives in the batch. */
 #define GPU_REG_CLEAR_COLOR          0x034u  /* rw: Palette index [7:0] written to every back-buffer pixel when CTRL_CLEAR is set. */
 #define GPU_REG_DOORBELL             0x038u  /* rw: Writing a value starts a batch tagged with it; the value reads back. Use a new non-zero value each time. */
+#define GPU_REG_RESET                0x03Cu  /* rw: Writing a new value aborts the running batch (if any) and returns the GPU to idle; buffers, palette, framebuffers and FRAME_COUNT are kept. The value reads back. For a firmware watchdog. */
 #define GPU_REG_STATUS               0x040u  /* ro: Bit fields STATUS_*. */
 #define GPU_REG_DONE_SEQ             0x044u  /* ro: DOORBELL value of the last finished batch (after its swap, if CTRL_SWAP was set). */
 #define GPU_REG_FRAME_COUNT          0x048u  /* ro: Buffer swaps since reset. */
@@ -47,12 +48,18 @@
 #define GPU_REG_PERF_TRIS_REJECTED   0x06Cu  /* ro: Primitives skipped: bad vertex index, unsupported kind, zero area or off screen. */
 #define GPU_REG_PERF_PIXELS          0x070u  /* ro: Pixels written by primitives in the last batch (the clear is not counted). */
 #define GPU_REG_PERF_SAMPLES         0x074u  /* ro: Pixel centres tested by primitives (bounding-box area) in the last batch. */
+#define GPU_REG_PERF_SPANS_WRITTEN   0x078u  /* ro: Aligned spans (CAPS_SPAN_W pixels of one row, first pixel a multiple of the width) with at least one covered pixel, over the batch's triangles. */
+#define GPU_REG_PERF_SPANS_VISITED   0x07Cu  /* ro: Span evaluations the rasterizer made, covered or not (implementation-specific, like PERF_BUSY_CYCLES; not modelled). */
 
 /* Register bit fields. */
 #define GPU_CTRL_CLEAR_LSB           0u  /* in CTRL: Fill the back buffer with CLEAR_COLOR before drawing. */
 #define GPU_CTRL_CLEAR_MASK          0x00000001u
 #define GPU_CTRL_SWAP_LSB            1u  /* in CTRL: After drawing, swap front and back buffers at the next vertical blank, then finish. */
 #define GPU_CTRL_SWAP_MASK           0x00000002u
+#define GPU_CTRL_ZTEST_LSB           2u  /* in CTRL: Depth-test triangles against the depth buffer and update it (needs CAPS_ZBUF; ignored without). */
+#define GPU_CTRL_ZTEST_MASK          0x00000004u
+#define GPU_CTRL_ZCLEAR_LSB          3u  /* in CTRL: Fill the depth buffer with 0xFFFF before drawing (needs CAPS_ZBUF; ignored without). */
+#define GPU_CTRL_ZCLEAR_MASK         0x00000008u
 #define GPU_STATUS_BUSY_LSB          0u  /* in STATUS: A batch is running (drawing or waiting for vsync). */
 #define GPU_STATUS_BUSY_MASK         0x00000001u
 #define GPU_STATUS_FRONT_LSB         1u  /* in STATUS: Which framebuffer (0/1) is scanned out. */
