@@ -10,6 +10,8 @@ HOST_CFLAGS ?= -std=c11 -O2 -g -Wall -Wextra -Werror
 PYTHON      ?= python3
 VERILATOR   ?= verilator
 
+GPUSIM      := $(BUILD)/sim/gpusim
+
 # Firmware (FW_ELF, fw_unit) and golden model (GPU_MODEL_SRC, model_unit) rules.
 include firmware/firmware.mk
 include gpu_model/model.mk
@@ -19,7 +21,6 @@ RTL_LINT   := gpu_rtl/lint.vlt
 COSIM_CPP  := $(sort $(wildcard cosim/*.cpp))
 HOST_C     := cosim/vga_monitor.c cosim/png_write.c $(GPU_MODEL_SRC)
 HOST_LIB   := $(BUILD)/host/libcosim.a
-GPUSIM     := $(BUILD)/sim/gpusim
 HOST_INC   := -Icosim -Igpu_model -Ifirmware/include -Ibsp/qemu_virt
 
 .PHONY: all setup run run-headless test test-quick lint check-contract contract random-long clean help

@@ -19,10 +19,12 @@
 #include <vector>
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/mman.h>
 #include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <termios.h>
 #include <unistd.h>
 
 #include "gpu_sim.h"
@@ -47,6 +49,8 @@ struct Options {
     double idle_timeout_s = 60.0;
     uint64_t max_batch_cycles = 100000000;  // 1 s of GPU time at 100 MHz
     bool check_model = true;
+    std::vector<std::pair<uint32_t, std::string>> keys_at;  // (batch number, text) to type
+    uint32_t drop_doorbell = 0;                              // batch number never serviced (0: none)
 };
 
 double now_s()
@@ -60,7 +64,11 @@ int usage()
 {
     std::fprintf(stderr,
                  "usage: gpusim cosim --fw FIRMWARE.elf [--frames DIR] [--qemu PATH] [--uart-log FILE]\n"
-                 "                    [--idle-timeout SECONDS] [--max-batch-cycles N] [--no-model-check]\n");
+                 "                    [--idle-timeout SECONDS] [--max-batch-cycles N] [--no-model-check]\n"
+                 "                    [--keys-at N:TEXT]... [--drop-doorbell N]\n"
+                 "  --keys-at N:TEXT   type TEXT into the firmware's UART just before servicing doorbell N (from 1)\n"
+                 "  --drop-doorbell N  ignore doorbell N, as a hung GPU would (the firmware's watchdog must RESET)\n"
+                 "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n");
     return 2;
 }
 
@@ -81,6 +89,16 @@ bool parse(int argc, char **argv, Options &o)
             o.idle_timeout_s = std::atof(argv[++i]);
         } else if (a == "--max-batch-cycles" && has_value) {
             o.max_batch_cycles = std::strtoull(argv[++i], nullptr, 0);
+        } else if (a == "--keys-at" && has_value) {
+            const std::string spec = argv[++i];
+            const size_t colon = spec.find(':');
+            if (colon == std::string::npos || colon == 0) {
+                std::fprintf(stderr, "cosim: --keys-at wants N:TEXT, got '%s'\n", spec.c_str());
+                return false;
+            }
+            o.keys_at.emplace_back(static_cast<uint32_t>(std::strtoul(spec.c_str(), nullptr, 10)), spec.substr(colon + 1));
+        } else if (a == "--drop-doorbell" && has_value) {
+            o.drop_doorbell = static_cast<uint32_t>(std::strtoul(argv[++i], nullptr, 10));
         } else if (a == "--no-model-check") {
             o.check_model = false;
         } else {
@@ -101,6 +119,9 @@ private:
     bool create_shared_ram();
     bool start_qemu();
     void pump_uart(bool final);
+    void forward_keyboard();
+    void type_keys(const std::string &text);
+    void service_reset(uint32_t value);
     bool service_batch(uint32_t tag);
     void publish_registers();
     int fail(const char *fmt, ...) __attribute__((format(printf, 2, 3)));
@@ -117,7 +138,10 @@ private:
     int ram_fd_ = -1;
     uint8_t *ram_ = nullptr;
     pid_t qemu_pid_ = -1;
-    int uart_fd_ = -1;
+    int uart_fd_ = -1;     // firmware -> us (QEMU's stdout)
+    int uart_in_fd_ = -1;  // us -> firmware (QEMU's stdin)
+    bool raw_tty_ = false;
+    termios saved_tty_{};
     FILE *uart_log_ = nullptr;
     std::string uart_line_;
     std::vector<uint32_t> shadow_ = std::vector<uint32_t>(GPU_APERTURE_BYTES / 4, 0);
@@ -166,7 +190,8 @@ bool Bridge::create_shared_ram()
 bool Bridge::start_qemu()
 {
     int pipe_fds[2];
-    if (pipe2(pipe_fds, O_CLOEXEC) != 0) {
+    int in_fds[2];
+    if (pipe2(pipe_fds, O_CLOEXEC) != 0 || pipe2(in_fds, O_CLOEXEC) != 0) {
         return false;
     }
     const pid_t parent = getpid();
@@ -190,17 +215,23 @@ bool Bridge::start_qemu()
             _exit(127);
         }
         dup2(pipe_fds[1], STDOUT_FILENO);
-        if (!isatty(STDIN_FILENO)) {
-            int null_fd = open("/dev/null", O_RDONLY);
-            dup2(null_fd, STDIN_FILENO);
-        }
+        dup2(in_fds[0], STDIN_FILENO);  // the UART's receive side: scripted or forwarded keys
         execvp(args[0], const_cast<char *const *>(args.data()));
         std::fprintf(stderr, "cosim: error: cannot run %s: %s\n", args[0], std::strerror(errno));
         _exit(127);
     }
     close(pipe_fds[1]);
+    close(in_fds[0]);
     uart_fd_ = pipe_fds[0];
+    uart_in_fd_ = in_fds[1];
     fcntl(uart_fd_, F_SETFL, O_NONBLOCK);
+    if (isatty(STDIN_FILENO) && tcgetattr(STDIN_FILENO, &saved_tty_) == 0) {
+        termios raw = saved_tty_;
+        raw.c_lflag &= ~static_cast<tcflag_t>(ICANON | ECHO | ISIG);
+        raw.c_cc[VMIN] = 0;
+        raw.c_cc[VTIME] = 0;
+        raw_tty_ = tcsetattr(STDIN_FILENO, TCSANOW, &raw) == 0;
+    }
     return true;
 }
 
@@ -233,6 +264,49 @@ void Bridge::pump_uart(bool final)
     std::fflush(stdout);
 }
 
+void Bridge::type_keys(const std::string &text)
+{
+    if (uart_in_fd_ >= 0 && !text.empty() && write(uart_in_fd_, text.data(), text.size()) < 0) {
+        std::fprintf(stderr, "cosim: warning: cannot type keys: %s\n", std::strerror(errno));
+    }
+}
+
+// Interactive run: keystrokes go to the firmware; Ctrl-C (raw mode delivers it as a byte) ends the run.
+void Bridge::forward_keyboard()
+{
+    if (!raw_tty_) {
+        return;
+    }
+    pollfd p = {STDIN_FILENO, POLLIN, 0};
+    if (poll(&p, 1, 0) <= 0) {
+        return;
+    }
+    char buf[64];
+    const ssize_t n = read(STDIN_FILENO, buf, sizeof buf);
+    for (ssize_t i = 0; i < n; i++) {
+        if (buf[i] == 0x03) {
+            g_signal = SIGINT;
+            return;
+        }
+    }
+    if (n > 0) {
+        type_keys(std::string(buf, static_cast<size_t>(n)));
+    }
+}
+
+// A new RESET value: forward it at once (a watchdog gave up on a batch), then report the new state.
+void Bridge::service_reset(uint32_t value)
+{
+    __atomic_thread_fence(__ATOMIC_ACQUIRE);
+    sim_.write(GPU_REG_RESET, value);
+    if (opt_.check_model) {
+        model_.write(GPU_REG_RESET, value);
+    }
+    shadow_[GPU_REG_RESET / 4] = value;
+    std::printf("cosim: GPU reset by the firmware (RESET = %u)\n", value);
+    publish_registers();
+}
+
 // Copy the GPU's read-only registers into the shared window, DONE_SEQ last (kReadOnlyRegs order).
 void Bridge::publish_registers()
 {
@@ -263,6 +337,12 @@ bool Bridge::service_batch(uint32_t tag)
             }
             shadow_[w] = value;
         }
+    }
+    if (batches_ + 1 == opt_.drop_doorbell) {
+        batches_++;
+        shadow_[doorbell_word] = tag;
+        std::printf("cosim: doorbell %u (tag %u) dropped on purpose (--drop-doorbell)\n", batches_, tag);
+        return true;
     }
     const uint32_t frames_before = sim_.read(GPU_REG_FRAME_COUNT);
     sim_.write(GPU_REG_DOORBELL, tag);
@@ -355,9 +435,20 @@ int Bridge::run()
             return 0;
         }
         pump_uart(false);
+        forward_keyboard();
+        const uint32_t reset = __atomic_load_n(&aperture()[GPU_REG_RESET / 4], __ATOMIC_ACQUIRE);
+        if (reset != shadow_[GPU_REG_RESET / 4]) {
+            service_reset(reset);
+            last_activity = now_s();
+        }
         const uint32_t tag = __atomic_load_n(&aperture()[GPU_REG_DOORBELL / 4], __ATOMIC_ACQUIRE);
         if (tag != shadow_[GPU_REG_DOORBELL / 4]) {
             pump_uart(false);  // what the firmware printed before ringing comes first
+            for (const auto &k : opt_.keys_at) {
+                if (k.first == batches_ + 1) {
+                    type_keys(k.second);
+                }
+            }
             if (!service_batch(tag)) {
                 return 1;
             }
@@ -377,6 +468,14 @@ void Bridge::shutdown()
         kill(qemu_pid_, SIGKILL);
         waitpid(qemu_pid_, nullptr, 0);
         qemu_pid_ = -1;
+    }
+    if (raw_tty_) {
+        tcsetattr(STDIN_FILENO, TCSANOW, &saved_tty_);
+        raw_tty_ = false;
+    }
+    if (uart_in_fd_ >= 0) {
+        close(uart_in_fd_);
+        uart_in_fd_ = -1;
     }
     if (uart_fd_ >= 0) {
         pump_uart(true);
