@@ -10,7 +10,8 @@ HOST_CFLAGS ?= -std=c11 -O2 -g -Wall -Wextra -Werror
 PYTHON      ?= python3
 VERILATOR   ?= verilator
 
-GPUSIM      := $(BUILD)/sim/gpusim
+SPAN_W      ?= 8
+GPUSIM      := $(BUILD)/sim-w$(SPAN_W)/gpusim
 
 # Firmware (FW_ELF, fw_unit) and golden model (GPU_MODEL_SRC, model_unit) rules.
 include firmware/firmware.mk
@@ -70,14 +71,15 @@ $(HOST_LIB): $(HOST_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
-$(GPUSIM): $(RTL_V) gpu_rtl/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) $(HOST_LIB)
-	@mkdir -p $(BUILD)/sim
+# One simulator per span width: $(BUILD)/sim-w<SPAN_W>/gpusim, the RTL built with -GSPAN_W=<SPAN_W>.
+$(BUILD)/sim-w%/gpusim: $(RTL_V) gpu_rtl/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) $(HOST_LIB)
+	@mkdir -p $(@D)
 	$(VERILATOR) --cc --exe --build -j 2 --assert -O3 --x-assign fast --x-initial fast \
-	  --top-module gpu_top -Igpu_rtl $(RTL_V) $(abspath $(COSIM_CPP)) \
+	  --top-module gpu_top -GSPAN_W=$* -Igpu_rtl $(RTL_V) $(abspath $(COSIM_CPP)) \
 	  -CFLAGS "-O2 -std=c++17 $(addprefix -I$(CURDIR)/,$(patsubst -I%,%,$(HOST_INC)))" \
 	  -LDFLAGS "$(abspath $(HOST_LIB)) $$(pkg-config --libs libpng)" \
-	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(BUILD)/verilator -o $(abspath $(GPUSIM)) >$(BUILD)/sim/verilator.log 2>&1 \
-	  || { tail -40 $(BUILD)/sim/verilator.log; exit 1; }
+	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(@D)/obj -o $(abspath $@) >$(@D)/verilator.log 2>&1 \
+	  || { tail -40 $(@D)/verilator.log; exit 1; }
 
 clean:
 	rm -rf $(BUILD) $(OUT)

@@ -111,7 +111,7 @@ bool parse(int argc, char **argv, Options &o)
 
 class Bridge {
 public:
-    explicit Bridge(const Options &o) : opt_(o) {}
+    explicit Bridge(const Options &o) : opt_(o), model_(sim_.read(GPU_REG_CAPS)) {}
     ~Bridge() { shutdown(); }
     int run();
 

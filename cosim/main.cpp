@@ -1,6 +1,7 @@
 // gpusim: host tools around the Verilated GPU.
 //   gpusim cosim ...   run firmware in QEMU against the RTL (cosim_run.cpp)
 //   gpusim random ...  seeded random batches, RTL against the golden model (rtl_check.cpp)
+//   gpusim raster ...  a primitive list through RTL and model, to files (raster_run.cpp)
 #include <cstdio>
 #include <cstring>
 
@@ -8,6 +9,7 @@
 
 int cosim_main(int argc, char **argv);
 int rtl_check_main(int argc, char **argv);
+int raster_main(int argc, char **argv);
 
 int main(int argc, char **argv)
 {
@@ -18,6 +20,9 @@ int main(int argc, char **argv)
     if (argc >= 2 && std::strcmp(argv[1], "random") == 0) {
         return rtl_check_main(argc - 2, argv + 2);
     }
-    std::fprintf(stderr, "usage: gpusim cosim|random [options]   (see README.md)\n");
+    if (argc >= 2 && std::strcmp(argv[1], "raster") == 0) {
+        return raster_main(argc - 2, argv + 2);
+    }
+    std::fprintf(stderr, "usage: gpusim cosim|random|raster [options]   (see README.md)\n");
     return 2;
 }

@@ -13,13 +13,18 @@ const uint32_t kReadOnlyRegs[] = {
     GPU_REG_ID, GPU_REG_VERSION, GPU_REG_CAPS, GPU_REG_VTX_CAP, GPU_REG_TRI_CAP, GPU_REG_FB_SIZE,
     GPU_REG_STATUS, GPU_REG_FRAME_COUNT, GPU_REG_ERRORS, GPU_REG_PERF_BUSY_CYCLES,
     GPU_REG_PERF_TRIS_IN, GPU_REG_PERF_TRIS_DRAWN, GPU_REG_PERF_TRIS_REJECTED, GPU_REG_PERF_PIXELS,
-    GPU_REG_PERF_SAMPLES, GPU_REG_DONE_SEQ,
+    GPU_REG_PERF_SAMPLES, GPU_REG_PERF_SPANS_WRITTEN, GPU_REG_PERF_SPANS_VISITED,
+    GPU_REG_DONE_SEQ,
 };
 const int kReadOnlyRegCount = sizeof kReadOnlyRegs / sizeof kReadOnlyRegs[0];
 
-ModelCheck::ModelCheck() : model_(new gpu_model), expected_(640 * 480 * 3)
+ModelCheck::ModelCheck(uint32_t caps) : model_(new gpu_model), expected_(640 * 480 * 3)
 {
-    gpu_model_reset(model_);
+    gpu_model_config cfg;
+    cfg.span_w = (caps & GPU_CAPS_SPAN_W_MASK) >> GPU_CAPS_SPAN_W_LSB;
+    cfg.lines = (caps & GPU_CAPS_LINES_MASK) != 0;
+    cfg.zbuf = (caps & GPU_CAPS_ZBUF_MASK) != 0;
+    gpu_model_reset_config(model_, &cfg);
 }
 
 ModelCheck::~ModelCheck()
@@ -31,8 +36,8 @@ std::string ModelCheck::compare_registers(GpuSim &sim)
 {
     for (int i = 0; i < kReadOnlyRegCount; i++) {
         const uint32_t offset = kReadOnlyRegs[i];
-        if (offset == GPU_REG_PERF_BUSY_CYCLES) {
-            continue;  // the model has no time
+        if (offset == GPU_REG_PERF_BUSY_CYCLES || offset == GPU_REG_PERF_SPANS_VISITED) {
+            continue;  // implementation-specific: the model has no time and no traversal order
         }
         const uint32_t rtl = sim.read(offset);
         const uint32_t model = gpu_model_read(model_, offset);

@@ -16,7 +16,8 @@ class GpuSim;
 
 class ModelCheck {
 public:
-    ModelCheck();
+    // The model is configured like the RTL: span width, lines and depth buffer from its CAPS.
+    explicit ModelCheck(uint32_t caps);
     ~ModelCheck();
     void write(uint32_t offset, uint32_t value) { gpu_model_write(model_, offset, value); }
     // Compare the read-only registers; returns "" when equal, else a description.

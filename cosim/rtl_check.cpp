@@ -88,9 +88,10 @@ int rtl_check_main(int argc, char **argv)
 
     Rng r{seed};
     GpuSim sim;
-    ModelCheck model;
+    ModelCheck model(sim.read(GPU_REG_CAPS));
     Writer write{sim, model};
-    uint64_t tris = 0, pixels = 0, frames = 0;
+    uint64_t tris = 0, pixels = 0, frames = 0, resets = 0;
+    bool must_clear = false;
 
     for (int p = 0; p < 256; p++) {
         write(GPU_WIN_PALETTE + 4 * p, r.below(4096));
@@ -118,22 +119,44 @@ int rtl_check_main(int argc, char **argv)
                 i1 = nv + r.below(65536 - nv);  // beyond VTX_COUNT
             }
             uint32_t kind = GPU_PRIM_KIND_TRI;
-            if (r.chance(3)) {
-                kind = r.chance(50) ? GPU_PRIM_KIND_LINE : r.below(256);
+            if (r.chance(12)) {
+                kind = r.chance(85) ? GPU_PRIM_KIND_LINE : r.below(256);
             }
             write(GPU_WIN_IDX + 8 * (tbase + t), i0 | i1 << 16);
             write(GPU_WIN_IDX + 8 * (tbase + t) + 4, i2 | r.below(256) << 16 | kind << 24);
         }
-        const bool over_capacity = r.chance(4);
-        const bool swap = r.chance(80) || b == batches - 1;
+        const bool over_capacity = !must_clear && r.chance(4);  // it would skip the clear
+        // Now and then a watchdog's RESET lands in the middle of a batch that does not swap; the
+        // next batch then clears, which makes RTL and model agree again (the model has no "middle").
+        const bool reset_probe = !over_capacity && r.chance(5) && b != batches - 1;
+        const bool swap = !reset_probe && (r.chance(80) || b == batches - 1);
+        const bool clear = r.chance(50) || b == 0 || must_clear;
+        must_clear = reset_probe;
         write(GPU_WIN_REGS + GPU_REG_VTX_BASE, vbase);
         write(GPU_WIN_REGS + GPU_REG_VTX_COUNT, over_capacity ? GPU_VTX_CAP : nv);
         write(GPU_WIN_REGS + GPU_REG_TRI_BASE, tbase);
         write(GPU_WIN_REGS + GPU_REG_TRI_COUNT, nt);
         write(GPU_WIN_REGS + GPU_REG_CLEAR_COLOR, r.below(256));
-        write(GPU_WIN_REGS + GPU_REG_CTRL, (r.chance(50) || b == 0 ? GPU_CTRL_CLEAR_MASK : 0) | (swap ? GPU_CTRL_SWAP_MASK : 0));
+        write(GPU_WIN_REGS + GPU_REG_CTRL, (clear ? GPU_CTRL_CLEAR_MASK : 0) | (swap ? GPU_CTRL_SWAP_MASK : 0));
         const uint32_t tag = static_cast<uint32_t>(b + 1);
         write(GPU_WIN_REGS + GPU_REG_DOORBELL, tag);
+
+        if (reset_probe) {
+            const uint32_t done_before = sim.read(GPU_REG_DONE_SEQ);
+            for (uint32_t i = 0; i < 50 + r.below(20000); i++) {
+                sim.tick();
+            }
+            write(GPU_WIN_REGS + GPU_REG_RESET, tag);
+            sim.tick();
+            const uint32_t status = sim.read(GPU_REG_STATUS);
+            if ((status & GPU_STATUS_BUSY_MASK) || sim.read(GPU_REG_DONE_SEQ) != done_before) {
+                std::printf("random: seed %llu batch %d: RESET left STATUS 0x%x, DONE_SEQ %u (was %u)\n",
+                            static_cast<unsigned long long>(seed), b, status, sim.read(GPU_REG_DONE_SEQ), done_before);
+                return 1;
+            }
+            resets++;
+            continue;
+        }
 
         if (!sim.wait_done(tag, 50000000)) {
             std::printf("random: seed %llu batch %d: GPU timeout (STATUS 0x%x DONE_SEQ %u ERRORS 0x%x TRIS_IN %u)\n", static_cast<unsigned long long>(seed), b, sim.read(GPU_REG_STATUS), sim.read(GPU_REG_DONE_SEQ), sim.read(GPU_REG_ERRORS), sim.read(GPU_REG_PERF_TRIS_IN));
@@ -156,8 +179,9 @@ int rtl_check_main(int argc, char **argv)
         tris += sim.read(GPU_REG_PERF_TRIS_IN);
         pixels += sim.read(GPU_REG_PERF_PIXELS);
     }
-    std::printf("random: seed %llu: %d batches, %llu primitives, %llu pixels, %llu frames: RTL equals model\n",
+    std::printf("random: seed %llu: %d batches, %llu primitives, %llu pixels, %llu frames, %llu resets: RTL equals model\n",
                 static_cast<unsigned long long>(seed), batches, static_cast<unsigned long long>(tris),
-                static_cast<unsigned long long>(pixels), static_cast<unsigned long long>(frames));
+                static_cast<unsigned long long>(pixels), static_cast<unsigned long long>(frames),
+                static_cast<unsigned long long>(resets));
     return 0;
 }

@@ -1,22 +1,27 @@
-// gpu_ram: simple dual-port synchronous RAM, one write port and one read port.
+// gpu_ram: simple dual-port synchronous RAM, one write port with lane enables and one read port.
 //
-// Contract: a write with wr_en stores wr_data at wr_addr on the clock edge. A read with rd_en
-// presents mem[rd_addr] on rd_data after that edge (one cycle latency) and holds it while rd_en is low.
-// Reading and writing the same address in one cycle returns the old data. Power-on contents are zero
-// (initial values are honoured by FPGA block RAM; there is no reset port, as block RAM has none).
-// Written in the template that yosys and Vivado map to block RAM.
+// Contract: a write with wr_en stores the lanes of wr_data whose wr_mask bit is set (lane i is bits
+// [i*WIDTH/LANES +: WIDTH/LANES]) at wr_addr on the clock edge; the other lanes keep their contents, so
+// a span of pixels is written without reading it first. A read with rd_en presents mem[rd_addr] on
+// rd_data after that edge (one cycle latency) and holds it while rd_en is low. Reading and writing
+// the same address in one cycle returns the old data. Power-on contents are zero (FPGA block RAM
+// honours initial values; it has no reset, so neither does this). Written in the template that yosys
+// and Vivado map to block RAM with byte-write enables.
 `default_nettype none
 
 module gpu_ram #(
     parameter integer DEPTH = 1024,  // words
     parameter integer WIDTH = 32,    // bits per word
-    localparam integer AW = (DEPTH > 1) ? $clog2(DEPTH) : 1
+    parameter integer LANES = 1,     // independently writable lanes per word (WIDTH % LANES == 0)
+    localparam integer AW = (DEPTH > 1) ? $clog2(DEPTH) : 1,
+    localparam integer LANE_W = WIDTH / LANES
 ) (
     input  wire             clk,
     // write port
     input  wire             wr_en,
     input  wire [AW-1:0]    wr_addr,
     input  wire [WIDTH-1:0] wr_data,
+    input  wire [LANES-1:0] wr_mask,
     // read port
     input  wire             rd_en,
     input  wire [AW-1:0]    rd_addr,
@@ -33,8 +38,10 @@ module gpu_ram #(
     end
 
     always @(posedge clk) begin
-        if (wr_en) begin
-            mem[wr_addr] <= wr_data;
+        for (i = 0; i < LANES; i = i + 1) begin
+            if (wr_en && wr_mask[i]) begin
+                mem[wr_addr][i*LANE_W +: LANE_W] <= wr_data[i*LANE_W +: LANE_W];
+            end
         end
     end
 

@@ -4,13 +4,14 @@
 // in the cycle bus_valid && bus_write is high (no wait states). A read returns bus_rdata with
 // bus_rvalid one cycle after bus_valid && !bus_write. Writes to the palette, the buffers and the batch
 // registers while busy are dropped and flag ERR_WRITE_BUSY; a DOORBELL write while idle latches its tag
-// and pulses start for one cycle. The batch registers hold still while busy, so the rasterizer reads
+// and pulses start for one cycle; a RESET write (busy or not) pulses soft_reset. The batch registers
+// hold still while busy, so the rasterizer reads
 // them directly.
 `default_nettype none
 
 module gpu_regs #(
     parameter integer VTX_CAP = 1024,  // vertices; the vertex RAM holds 2 words per vertex
-    parameter integer TRI_CAP = 1024,  // primitives; the index RAM holds 2 words per primitive
+    parameter integer TRI_CAP = 512,   // primitives; the index RAM holds 2 words per primitive
     parameter [31:0]  CAPS = 32'h0,    // value of the CAPS register, set by gpu_top from its parameters
     localparam integer VTX_AW = $clog2(VTX_CAP * 2),
     localparam integer IDX_AW = $clog2(TRI_CAP * 2)
@@ -27,6 +28,8 @@ module gpu_regs #(
     // batch description, stable while busy
     output reg               ctrl_clear,
     output reg               ctrl_swap,
+    output reg               ctrl_ztest,
+    output reg               ctrl_zclear,
     output reg  [31:0]       vtx_base,
     output reg  [31:0]       vtx_count,
     output reg  [31:0]       tri_base,
@@ -34,6 +37,7 @@ module gpu_regs #(
     output reg  [7:0]        clear_color,
     output reg  [31:0]       doorbell_tag,
     output reg               start,        // one-cycle pulse: run the batch
+    output reg               soft_reset,   // one-cycle pulse: RESET was written
     // buffer writes (data is bus_wdata)
     output wire              vtx_wr_en,
     output wire [VTX_AW-1:0] vtx_wr_addr,
@@ -52,7 +56,9 @@ module gpu_regs #(
     input  wire [31:0]       perf_tris_drawn,
     input  wire [31:0]       perf_tris_rejected,
     input  wire [31:0]       perf_pixels,
-    input  wire [31:0]       perf_samples
+    input  wire [31:0]       perf_samples,
+    input  wire [31:0]       perf_spans_written,
+    input  wire [31:0]       perf_spans_visited
 );
 `include "gpu_regs.vh"
 
@@ -82,11 +88,16 @@ module gpu_regs #(
     assign pal_wr_addr = byte_addr[9:2];
 
     reg err_write_busy_q;
+    reg [31:0] reset_value_q;
 
     always @(posedge clk) begin
         if (rst) begin
             ctrl_clear <= 1'b0;
             ctrl_swap <= 1'b0;
+            ctrl_ztest <= 1'b0;
+            ctrl_zclear <= 1'b0;
+            soft_reset <= 1'b0;
+            reset_value_q <= 32'd0;
             vtx_base <= 32'd0;
             vtx_count <= 32'd0;
             tri_base <= 32'd0;
@@ -97,11 +108,19 @@ module gpu_regs #(
             err_write_busy_q <= 1'b0;
         end else begin
             start <= 1'b0;
+            soft_reset <= 1'b0;
+            // RESET is taken even while busy: it is how a watchdog recovers a stuck batch.
+            if (is_write && in_regs && reg_offset == GPU_REG_RESET) begin
+                reset_value_q <= bus_wdata;
+                soft_reset <= 1'b1;
+            end
             if (write_ok && in_regs) begin
                 case (reg_offset)
                     GPU_REG_CTRL: begin
                         ctrl_clear <= bus_wdata[GPU_CTRL_CLEAR_LSB];
                         ctrl_swap <= bus_wdata[GPU_CTRL_SWAP_LSB];
+                        ctrl_ztest <= bus_wdata[GPU_CTRL_ZTEST_LSB];
+                        ctrl_zclear <= bus_wdata[GPU_CTRL_ZCLEAR_LSB];
                     end
                     GPU_REG_VTX_BASE:    vtx_base <= bus_wdata;
                     GPU_REG_VTX_COUNT:   vtx_count <= bus_wdata;
@@ -133,13 +152,16 @@ module gpu_regs #(
             GPU_REG_TRI_CAP:            reg_value = 32'(TRI_CAP);
             GPU_REG_FB_SIZE:            reg_value = {GPU_FB_HEIGHT[15:0], GPU_FB_WIDTH[15:0]};
             GPU_REG_CTRL:               reg_value = (32'(ctrl_clear) << GPU_CTRL_CLEAR_LSB)
-                                                  | (32'(ctrl_swap) << GPU_CTRL_SWAP_LSB);
+                                                  | (32'(ctrl_swap) << GPU_CTRL_SWAP_LSB)
+                                                  | (32'(ctrl_ztest) << GPU_CTRL_ZTEST_LSB)
+                                                  | (32'(ctrl_zclear) << GPU_CTRL_ZCLEAR_LSB);
             GPU_REG_VTX_BASE:           reg_value = vtx_base;
             GPU_REG_VTX_COUNT:          reg_value = vtx_count;
             GPU_REG_TRI_BASE:           reg_value = tri_base;
             GPU_REG_TRI_COUNT:          reg_value = tri_count;
             GPU_REG_CLEAR_COLOR:        reg_value = {24'd0, clear_color};
             GPU_REG_DOORBELL:           reg_value = doorbell_tag;
+            GPU_REG_RESET:              reg_value = reset_value_q;
             GPU_REG_STATUS:             reg_value = (32'(busy) << GPU_STATUS_BUSY_LSB)
                                                   | (32'(front) << GPU_STATUS_FRONT_LSB);
             GPU_REG_DONE_SEQ:           reg_value = done_seq;
@@ -154,6 +176,8 @@ module gpu_regs #(
             GPU_REG_PERF_TRIS_REJECTED: reg_value = perf_tris_rejected;
             GPU_REG_PERF_PIXELS:        reg_value = perf_pixels;
             GPU_REG_PERF_SAMPLES:       reg_value = perf_samples;
+            GPU_REG_PERF_SPANS_WRITTEN: reg_value = perf_spans_written;
+            GPU_REG_PERF_SPANS_VISITED: reg_value = perf_spans_visited;
             default:                    reg_value = 32'd0;
         endcase
     end

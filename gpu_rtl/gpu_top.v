@@ -2,17 +2,24 @@
 //
 // Contract: docs/gpu-contract.md. The CPU writes buffers and registers over the bus and rings
 // DOORBELL; the GPU clears and draws into the back buffer, swaps at vertical blank when asked, and
-// reports DONE_SEQ. Data path: bus -> gpu_regs -> vertex/index RAM -> gpu_raster -> gpu_framebuffer
-// (back) ... (front) -> gpu_vga -> palette -> VGA pins. One clock domain; the VGA pixel rate is clk/PIX_DIV.
+// reports DONE_SEQ. Data path: bus -> gpu_regs -> vertex/index RAM -> gpu_raster (gpu_prim_setup ->
+// gpu_span_walker) -> gpu_framebuffer (back) ... (front) -> gpu_vga -> palette -> VGA pins. One clock
+// domain; the VGA pixel rate is clk/PIX_DIV. Build options leave out what a scene does not need and
+// are reported in CAPS.
 `default_nettype none
 
 module gpu_top #(
-    parameter integer VTX_CAP = 1024,  // vertex buffer capacity (contract default)
-    parameter integer TRI_CAP = 1024,  // index buffer capacity (contract default)
-    parameter integer PIX_DIV = 4,     // system clocks per VGA pixel (100 MHz / 4 = 25 MHz)
+    parameter integer VTX_CAP = 1024,    // vertex buffer capacity (contract default)
+    parameter integer TRI_CAP = 512,     // index buffer capacity (contract default)
+    parameter integer SPAN_W = 8,        // pixels rasterized per clock: 1, 4, 8 or 16
+    parameter integer ENABLE_LINES = 1,  // line primitives (CAPS_LINES)
+    parameter integer PIX_DIV = 4,       // system clocks per VGA pixel (100 MHz / 4 = 25 MHz)
+    localparam integer VI_W = $clog2(VTX_CAP),
+    localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer VTX_AW = $clog2(VTX_CAP * 2),
     localparam integer IDX_AW = $clog2(TRI_CAP * 2),
-    localparam integer FB_AW = $clog2(320 * 240)
+    localparam integer FB_WAW = $clog2(320 * 240 / SPAN_W),
+    localparam integer FB_PAW = $clog2(320 * 240)
 ) (
     input  wire        clk,
     input  wire        rst,           // synchronous, active high
@@ -33,15 +40,17 @@ module gpu_top #(
 );
 `include "gpu_regs.vh"
 
-    localparam [31:0] CAPS = 32'(1) << GPU_CAPS_SPAN_W_LSB;  // 1 pixel per clock; no lines, no depth
+    localparam [31:0] CAPS = (32'(SPAN_W) << GPU_CAPS_SPAN_W_LSB)
+                           | (32'(ENABLE_LINES != 0) << GPU_CAPS_LINES_LSB);
 
     // Batch description and status between the register block and the rasterizer.
-    wire        ctrl_clear, ctrl_swap, start, busy, front, swap, vblank_start;
+    wire        ctrl_clear, ctrl_swap, ctrl_ztest, ctrl_zclear, start, soft_reset;
+    wire        busy, front, swap, vblank_start;
     wire [31:0] vtx_base, vtx_count, tri_base, tri_count, doorbell_tag, done_seq, frame_count;
     wire [7:0]  clear_color;
     wire [2:0]  raster_errors;
     wire [31:0] perf_busy_cycles, perf_tris_in, perf_tris_drawn, perf_tris_rejected;
-    wire [31:0] perf_pixels, perf_samples;
+    wire [31:0] perf_pixels, perf_samples, perf_spans_written, perf_spans_visited;
 
     // RAM ports.
     wire              vtx_wr_en, idx_wr_en, pal_wr_en;
@@ -49,49 +58,60 @@ module gpu_top #(
     wire [IDX_AW-1:0] idx_wr_addr;
     wire [7:0]        pal_wr_addr;
     wire              vtx_rd_en, idx_rd_en, pal_rd_en, fb_rd_en, fb_wr_en;
-    wire [VTX_AW-1:0] vtx_rd_addr;
-    wire [IDX_AW-1:0] idx_rd_addr;
-    wire [31:0]       vtx_rd_data, idx_rd_data;
-    wire [7:0]        pal_rd_addr, fb_rd_data, fb_wr_data;
+    wire [VI_W-1:0]   vtx_rd_addr;
+    wire [TI_W-1:0]   idx_rd_addr;
+    wire [31:0]       vtx_rd_data;
+    wire [63:0]       idx_rd_data;
+    wire [7:0]        pal_rd_addr, fb_rd_data;
     wire [11:0]       pal_rd_data;
-    wire [FB_AW-1:0]  fb_rd_addr, fb_wr_addr;
+    wire [FB_PAW-1:0] fb_rd_addr;
+    wire [FB_WAW-1:0] fb_wr_addr;
+    wire [SPAN_W*8-1:0] fb_wr_data;
+    wire [SPAN_W-1:0] fb_wr_mask;
 
     gpu_regs #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .CAPS(CAPS)) u_regs (
         .clk(clk), .rst(rst),
         .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr), .bus_wdata(bus_wdata),
         .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid),
-        .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .vtx_base(vtx_base), .vtx_count(vtx_count),
+        .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .ctrl_ztest(ctrl_ztest),
+        .ctrl_zclear(ctrl_zclear), .vtx_base(vtx_base), .vtx_count(vtx_count),
         .tri_base(tri_base), .tri_count(tri_count), .clear_color(clear_color),
-        .doorbell_tag(doorbell_tag), .start(start),
+        .doorbell_tag(doorbell_tag), .start(start), .soft_reset(soft_reset),
         .vtx_wr_en(vtx_wr_en), .vtx_wr_addr(vtx_wr_addr), .idx_wr_en(idx_wr_en),
         .idx_wr_addr(idx_wr_addr), .pal_wr_en(pal_wr_en), .pal_wr_addr(pal_wr_addr),
         .busy(busy), .front(front), .done_seq(done_seq), .frame_count(frame_count),
         .raster_errors(raster_errors), .perf_busy_cycles(perf_busy_cycles),
         .perf_tris_in(perf_tris_in), .perf_tris_drawn(perf_tris_drawn),
         .perf_tris_rejected(perf_tris_rejected), .perf_pixels(perf_pixels),
-        .perf_samples(perf_samples)
+        .perf_samples(perf_samples), .perf_spans_written(perf_spans_written),
+        .perf_spans_visited(perf_spans_visited)
     );
 
-    gpu_ram #(.DEPTH(VTX_CAP * 2), .WIDTH(32)) u_vtx_ram (
+    // Vertex word 0 (x, y) is all the rasterizer reads; word 1 (z) has no use without a depth buffer.
+    gpu_ram #(.DEPTH(VTX_CAP), .WIDTH(32)) u_vtx_xy_ram (
         .clk(clk),
-        .wr_en(vtx_wr_en), .wr_addr(vtx_wr_addr), .wr_data(bus_wdata),
+        .wr_en(vtx_wr_en && vtx_wr_addr[0] == 1'b0), .wr_addr(vtx_wr_addr[VTX_AW-1:1]),
+        .wr_data(bus_wdata), .wr_mask(1'b1),
         .rd_en(vtx_rd_en), .rd_addr(vtx_rd_addr), .rd_data(vtx_rd_data)
     );
 
-    gpu_ram #(.DEPTH(TRI_CAP * 2), .WIDTH(32)) u_idx_ram (
+    // The two words of a primitive sit side by side so that one read returns both.
+    gpu_ram #(.DEPTH(TRI_CAP), .WIDTH(64), .LANES(2)) u_idx_ram (
         .clk(clk),
-        .wr_en(idx_wr_en), .wr_addr(idx_wr_addr), .wr_data(bus_wdata),
+        .wr_en(idx_wr_en), .wr_addr(idx_wr_addr[IDX_AW-1:1]), .wr_data({bus_wdata, bus_wdata}),
+        .wr_mask({idx_wr_addr[0], !idx_wr_addr[0]}),
         .rd_en(idx_rd_en), .rd_addr(idx_rd_addr), .rd_data(idx_rd_data)
     );
 
     gpu_ram #(.DEPTH(256), .WIDTH(12)) u_palette (
         .clk(clk),
-        .wr_en(pal_wr_en), .wr_addr(pal_wr_addr), .wr_data(bus_wdata[11:0]),
+        .wr_en(pal_wr_en), .wr_addr(pal_wr_addr), .wr_data(bus_wdata[11:0]), .wr_mask(1'b1),
         .rd_en(pal_rd_en), .rd_addr(pal_rd_addr), .rd_data(pal_rd_data)
     );
 
-    gpu_raster #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP)) u_raster (
-        .clk(clk), .rst(rst),
+    gpu_raster #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .SPAN_W(SPAN_W),
+                 .ENABLE_LINES(ENABLE_LINES)) u_raster (
+        .clk(clk), .rst(rst), .soft_reset(soft_reset),
         .start(start), .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap),
         .vtx_base(vtx_base), .vtx_count(vtx_count), .tri_base(tri_base), .tri_count(tri_count),
         .clear_color(clear_color), .doorbell_tag(doorbell_tag),
@@ -99,16 +119,17 @@ module gpu_top #(
         .perf_busy_cycles(perf_busy_cycles), .perf_tris_in(perf_tris_in),
         .perf_tris_drawn(perf_tris_drawn), .perf_tris_rejected(perf_tris_rejected),
         .perf_pixels(perf_pixels), .perf_samples(perf_samples),
+        .perf_spans_written(perf_spans_written), .perf_spans_visited(perf_spans_visited),
         .idx_rd_en(idx_rd_en), .idx_rd_addr(idx_rd_addr), .idx_rd_data(idx_rd_data),
         .vtx_rd_en(vtx_rd_en), .vtx_rd_addr(vtx_rd_addr), .vtx_rd_data(vtx_rd_data),
         .fb_wr_en(fb_wr_en), .fb_wr_addr(fb_wr_addr), .fb_wr_data(fb_wr_data),
-        .vblank_start(vblank_start), .swap(swap)
+        .fb_wr_mask(fb_wr_mask), .vblank_start(vblank_start), .swap(swap)
     );
 
-    gpu_framebuffer u_framebuffer (
+    gpu_framebuffer #(.SPAN_W(SPAN_W)) u_framebuffer (
         .clk(clk), .rst(rst),
         .swap(swap), .front(front),
-        .wr_en(fb_wr_en), .wr_addr(fb_wr_addr), .wr_data(fb_wr_data),
+        .wr_en(fb_wr_en), .wr_addr(fb_wr_addr), .wr_data(fb_wr_data), .wr_mask(fb_wr_mask),
         .rd_en(fb_rd_en), .rd_addr(fb_rd_addr), .rd_data(fb_rd_data)
     );
 

@@ -40,24 +40,48 @@ bool test_check_eq(long long got, long long want, const char *file, int line,
 
 /* ------------------------------------------------------------ bus helpers */
 
-gpu_model *test_new_model(void)
+static gpu_model *alloc_model(void)
 {
     gpu_model *m = malloc(sizeof *m);
     if (m == NULL) {
         fprintf(stderr, "out of memory\n");
         exit(2);
     }
+    /* Garbage, so a reset that forgets a field shows up. */
+    memset(m, 0xA5, sizeof *m);
+    return m;
+}
+
+gpu_model *test_new_model(void)
+{
+    gpu_model *m = alloc_model();
     gpu_model_reset(m);
     return m;
 }
 
+gpu_model *test_new_model_cfg(unsigned span_w, bool lines, bool zbuf)
+{
+    gpu_model *m = alloc_model();
+    gpu_model_config cfg = { span_w, lines, zbuf };
+    gpu_model_reset_config(m, &cfg);
+    return m;
+}
+
+void test_set_vtxz(gpu_model *m, uint32_t i, int32_t x, int32_t y,
+                   uint32_t z)
+{
+    uint32_t w[GPU_VTX_WORDS] = { 0 };
+    w[GPU_VTX_X_WORD] |= ((uint32_t)x & GPU_VTX_X_MASK) << GPU_VTX_X_LSB;
+    w[GPU_VTX_Y_WORD] |= ((uint32_t)y & GPU_VTX_Y_MASK) << GPU_VTX_Y_LSB;
+    w[GPU_VTX_Z_WORD] |= (z & GPU_VTX_Z_MASK) << GPU_VTX_Z_LSB;
+    for (uint32_t k = 0; k < GPU_VTX_WORDS; k++) {
+        gpu_model_write(m, GPU_WIN_VTX + (i * GPU_VTX_WORDS + k) * 4u, w[k]);
+    }
+}
+
 void test_set_vtx(gpu_model *m, uint32_t i, int32_t x, int32_t y)
 {
-    uint32_t w0 = (((uint32_t)x & GPU_VTX_X_MASK) << GPU_VTX_X_LSB) |
-                  (((uint32_t)y & GPU_VTX_Y_MASK) << GPU_VTX_Y_LSB);
-    uint32_t base = GPU_WIN_VTX + i * GPU_VTX_WORDS * 4u;
-    gpu_model_write(m, base + 4u * GPU_VTX_X_WORD, w0);
-    gpu_model_write(m, base + 4u * GPU_VTX_Z_WORD, 0);
+    test_set_vtxz(m, i, x, y, 0);
 }
 
 void test_set_prim(gpu_model *m, uint32_t i, uint32_t i0, uint32_t i1,
@@ -104,6 +128,61 @@ uint8_t test_back_px(const gpu_model *m, int px, int py)
     return gpu_model_back(m)[py * (int)GPU_FB_WIDTH + px];
 }
 
+uint16_t test_z(const gpu_model *m, int px, int py)
+{
+    return m->zbuf[py * (int)GPU_FB_WIDTH + px];
+}
+
+bool test_check_pixels(const gpu_model *m, const int (*pix)[2], int n,
+                       uint8_t color, uint8_t other, const char *file,
+                       int line)
+{
+    uint8_t *want = malloc(GPU_MODEL_FB_PIXELS);
+    if (want == NULL) {
+        exit(2);
+    }
+    memset(want, other, GPU_MODEL_FB_PIXELS);
+    for (int i = 0; i < n; i++) {
+        want[pix[i][1] * (int)GPU_FB_WIDTH + pix[i][0]] = color;
+    }
+    const uint8_t *fb = gpu_model_back(m);
+    int bad = 0;
+    for (int i = 0; i < (int)GPU_MODEL_FB_PIXELS; i++) {
+        if (fb[i] != want[i]) {
+            if (bad < 8) {
+                printf("  pixel (%d,%d): got %u want %u\n",
+                       i % (int)GPU_FB_WIDTH, i / (int)GPU_FB_WIDTH, fb[i],
+                       want[i]);
+            }
+            bad++;
+        }
+    }
+    free(want);
+    return test_check_eq(bad, 0, file, line, "pixels match the hand list");
+}
+
+void test_check_perf(const gpu_model *m, uint32_t in, uint32_t drawn,
+                     uint32_t rejected, uint32_t pixels, uint32_t samples,
+                     uint32_t spans, const char *file, int line)
+{
+    test_check_eq(gpu_model_read(m, GPU_REG_PERF_TRIS_IN), in, file, line,
+                  "PERF_TRIS_IN");
+    test_check_eq(gpu_model_read(m, GPU_REG_PERF_TRIS_DRAWN), drawn, file,
+                  line, "PERF_TRIS_DRAWN");
+    test_check_eq(gpu_model_read(m, GPU_REG_PERF_TRIS_REJECTED), rejected,
+                  file, line, "PERF_TRIS_REJECTED");
+    test_check_eq(gpu_model_read(m, GPU_REG_PERF_PIXELS), pixels, file, line,
+                  "PERF_PIXELS");
+    test_check_eq(gpu_model_read(m, GPU_REG_PERF_SAMPLES), samples, file,
+                  line, "PERF_SAMPLES");
+    test_check_eq(gpu_model_read(m, GPU_REG_PERF_SPANS_WRITTEN), spans, file,
+                  line, "PERF_SPANS_WRITTEN");
+    test_check_eq(gpu_model_read(m, GPU_REG_PERF_BUSY_CYCLES), 0, file, line,
+                  "PERF_BUSY_CYCLES");
+    test_check_eq(gpu_model_read(m, GPU_REG_PERF_SPANS_VISITED), 0, file,
+                  line, "PERF_SPANS_VISITED");
+}
+
 static uint32_t rng_state = 0x12345678u;
 
 void test_srand(uint32_t seed)
@@ -147,26 +226,38 @@ void test_bus(void)
     /* Identity. */
     CHECK_EQ(gpu_model_read(m, GPU_REG_ID), GPU_ID_VALUE);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VERSION), GPU_VERSION_VALUE);
+    /* Default build options (the RTL defaults): SPAN_W 8, lines, no zbuf. */
     uint32_t caps = gpu_model_read(m, GPU_REG_CAPS);
-    CHECK_EQ(caps & GPU_CAPS_LINES_MASK, 0);
+    CHECK_EQ(caps & GPU_CAPS_LINES_MASK, GPU_CAPS_LINES_MASK);
     CHECK_EQ(caps & GPU_CAPS_ZBUF_MASK, 0);
-    CHECK_EQ((caps & GPU_CAPS_SPAN_W_MASK) >> GPU_CAPS_SPAN_W_LSB, 1);
+    CHECK_EQ((caps & GPU_CAPS_SPAN_W_MASK) >> GPU_CAPS_SPAN_W_LSB, 8);
+    CHECK_EQ(caps, 0x801u);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), GPU_TRI_CAP);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), 512);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), 1024);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_VERSION), 0x00010001u);
     CHECK_EQ(gpu_model_read(m, GPU_REG_FB_SIZE), 320u | (240u << 16));
 
     /* Power-on state: everything else zero, palette black, fbs 0. */
     const uint32_t zero_regs[] = {
         GPU_REG_CTRL, GPU_REG_VTX_BASE, GPU_REG_VTX_COUNT, GPU_REG_TRI_BASE,
         GPU_REG_TRI_COUNT, GPU_REG_CLEAR_COLOR, GPU_REG_DOORBELL,
-        GPU_REG_STATUS, GPU_REG_DONE_SEQ, GPU_REG_FRAME_COUNT, GPU_REG_ERRORS,
-        GPU_REG_PERF_BUSY_CYCLES, GPU_REG_PERF_TRIS_IN,
+        GPU_REG_RESET, GPU_REG_STATUS, GPU_REG_DONE_SEQ, GPU_REG_FRAME_COUNT,
+        GPU_REG_ERRORS, GPU_REG_PERF_BUSY_CYCLES, GPU_REG_PERF_TRIS_IN,
         GPU_REG_PERF_TRIS_DRAWN, GPU_REG_PERF_TRIS_REJECTED,
-        GPU_REG_PERF_PIXELS, GPU_REG_PERF_SAMPLES,
+        GPU_REG_PERF_PIXELS, GPU_REG_PERF_SAMPLES, GPU_REG_PERF_SPANS_WRITTEN,
+        GPU_REG_PERF_SPANS_VISITED,
     };
     for (size_t i = 0; i < sizeof zero_regs / sizeof zero_regs[0]; i++) {
         CHECK_EQ(gpu_model_read(m, zero_regs[i]), 0);
     }
+    /* The depth buffer powers on 0, like the framebuffers. */
+    bool zero_z = true;
+    for (uint32_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
+        zero_z = zero_z && m->zbuf[i] == 0;
+    }
+    CHECK(zero_z);
     CHECK(buffer_all(gpu_model_front(m), 0));
     CHECK(buffer_all(gpu_model_back(m), 0));
     CHECK(gpu_model_front(m) != gpu_model_back(m));
@@ -183,6 +274,7 @@ void test_bus(void)
         GPU_REG_FRAME_COUNT, GPU_REG_ERRORS, GPU_REG_PERF_BUSY_CYCLES,
         GPU_REG_PERF_TRIS_IN, GPU_REG_PERF_TRIS_DRAWN,
         GPU_REG_PERF_TRIS_REJECTED, GPU_REG_PERF_PIXELS, GPU_REG_PERF_SAMPLES,
+        GPU_REG_PERF_SPANS_WRITTEN, GPU_REG_PERF_SPANS_VISITED,
     };
     uint32_t before[sizeof ro_regs / sizeof ro_regs[0]];
     for (size_t i = 0; i < sizeof ro_regs / sizeof ro_regs[0]; i++) {
@@ -193,15 +285,18 @@ void test_bus(void)
         CHECK_EQ(gpu_model_read(m, ro_regs[i]), before[i]);
     }
 
-    /* Batch registers read back what was written (all 32 bits). */
+    /* Batch registers and RESET read back what was written (all 32 bits);
+     * CTRL keeps its four defined bits (see test_config.c). */
     const uint32_t rw_regs[] = {
-        GPU_REG_CTRL, GPU_REG_VTX_BASE, GPU_REG_VTX_COUNT, GPU_REG_TRI_BASE,
-        GPU_REG_TRI_COUNT, GPU_REG_CLEAR_COLOR,
+        GPU_REG_VTX_BASE, GPU_REG_VTX_COUNT, GPU_REG_TRI_BASE,
+        GPU_REG_TRI_COUNT, GPU_REG_CLEAR_COLOR, GPU_REG_RESET,
     };
     for (size_t i = 0; i < sizeof rw_regs / sizeof rw_regs[0]; i++) {
-        gpu_model_write(m, rw_regs[i], 0x10u + (uint32_t)i);
-        CHECK_EQ(gpu_model_read(m, rw_regs[i]), 0x10u + i);
+        gpu_model_write(m, rw_regs[i], 0x80000010u + (uint32_t)i);
+        CHECK_EQ(gpu_model_read(m, rw_regs[i]), 0x80000010u + i);
     }
+    gpu_model_write(m, GPU_REG_CTRL, 0x0000000Fu);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0xF);
 
     /* Unaligned and unmapped accesses: writes ignored, reads 0. */
     gpu_model_reset(m);
@@ -214,6 +309,8 @@ void test_bus(void)
     gpu_model_write(m, 0x018u, 5);       /* hole in the register window */
     CHECK_EQ(gpu_model_read(m, 0x018u), 0);
     CHECK_EQ(gpu_model_read(m, 0x0FCu), 0);
+    gpu_model_write(m, 0x080u, 5); /* just past PERF_SPANS_VISITED */
+    CHECK_EQ(gpu_model_read(m, 0x080u), 0);
     CHECK_EQ(gpu_model_read(m, 0x200u), 0); /* between REGS and PALETTE */
     gpu_model_write(m, GPU_APERTURE_BYTES, 1);
     CHECK_EQ(gpu_model_read(m, GPU_APERTURE_BYTES), 0);
@@ -253,26 +350,12 @@ void test_bus(void)
 
 /* ------------------------------------------------------------ batch tests */
 
-static void check_perf(const gpu_model *m, uint32_t in, uint32_t drawn,
-                       uint32_t rejected, uint32_t pixels, uint32_t samples,
-                       int line)
-{
-    test_check_eq(gpu_model_read(m, GPU_REG_PERF_TRIS_IN), in, __FILE__, line,
-                  "PERF_TRIS_IN");
-    test_check_eq(gpu_model_read(m, GPU_REG_PERF_TRIS_DRAWN), drawn, __FILE__,
-                  line, "PERF_TRIS_DRAWN");
-    test_check_eq(gpu_model_read(m, GPU_REG_PERF_TRIS_REJECTED), rejected,
-                  __FILE__, line, "PERF_TRIS_REJECTED");
-    test_check_eq(gpu_model_read(m, GPU_REG_PERF_PIXELS), pixels, __FILE__,
-                  line, "PERF_PIXELS");
-    test_check_eq(gpu_model_read(m, GPU_REG_PERF_SAMPLES), samples, __FILE__,
-                  line, "PERF_SAMPLES");
-    test_check_eq(gpu_model_read(m, GPU_REG_PERF_BUSY_CYCLES), 0, __FILE__,
-                  line, "PERF_BUSY_CYCLES");
-}
-
+/* The small triangle below covers 6 pixels in rows 1..3, all in span 0 of
+ * their row for SPAN_W 8 (pixels (1..3,1), (1..2,2), (1,3)): 3 spans per
+ * drawing (the default build options). */
 #define CHECK_PERF(m, in, drawn, rej, pix, smp) \
-    check_perf((m), (in), (drawn), (rej), (pix), (smp), __LINE__)
+    test_check_perf((m), (in), (drawn), (rej), (pix), (smp), \
+                    (pix) / 6u * 3u, __FILE__, __LINE__)
 
 /* The 6-pixel triangle of test_raster.c's first hand test (pixels (1,1)..),
  * its vertices at vbase..vbase+2 and its primitive at index prim. */
@@ -320,14 +403,29 @@ static void test_errors(void)
     CHECK_PERF(m, 1, 1, 0, 6, 16);
     CHECK_EQ(count_px(gpu_model_back(m), 9), 6);
 
-    /* ERR_KIND: a line (CAPS_LINES = 0) and unknown kinds are skipped; a
-     * line with a bad index reports only ERR_KIND (kind comes first). */
+    /* ERR_KIND: on a GPU built without lines a line is skipped, as are
+     * unknown kinds; a line with a bad index reports only ERR_KIND (kind
+     * comes first). */
+    gpu_model *nl = test_new_model_cfg(8, false, false);
+    put_small_tri(nl, 0, 0, 5);
+    test_set_prim(nl, 1, 0, 1, 2, 6, GPU_PRIM_KIND_LINE);
+    test_set_prim(nl, 2, 0, 1, 2, 7, 0x7Fu);
+    test_set_prim(nl, 3, 0, 1, 2, 8, 0xFFu);
+    test_set_prim(nl, 4, 0, 9, 2, 8, GPU_PRIM_KIND_LINE);
+    test_batch(nl, 0, 0, 3, 1, 4, 0, 0x13);
+    CHECK_EQ(gpu_model_read(nl, GPU_REG_ERRORS), GPU_ERR_KIND_MASK);
+    CHECK_PERF(nl, 4, 0, 4, 0, 0);
+    CHECK(buffer_all(gpu_model_back(nl), 0));
+    free(nl);
+
+    /* With lines (the default), unknown kinds (2, 0x7F, 0xFF) are still
+     * ERR_KIND; kind 2 with a bad index too (kind first). */
     gpu_model_reset(m);
     put_small_tri(m, 0, 0, 5);
-    test_set_prim(m, 1, 0, 1, 2, 6, GPU_PRIM_KIND_LINE);
+    test_set_prim(m, 1, 0, 1, 2, 6, 2u);
     test_set_prim(m, 2, 0, 1, 2, 7, 0x7Fu);
     test_set_prim(m, 3, 0, 1, 2, 8, 0xFFu);
-    test_set_prim(m, 4, 0, 9, 2, 8, GPU_PRIM_KIND_LINE);
+    test_set_prim(m, 4, 0, 9, 2, 8, 2u);
     test_batch(m, 0, 0, 3, 1, 4, 0, 0x13);
     CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_KIND_MASK);
     CHECK_PERF(m, 4, 0, 4, 0, 0);
@@ -423,7 +521,9 @@ static void test_clear_swap(void)
     CHECK_EQ(gpu_model_read(m, GPU_REG_DOORBELL), 1);
 
     /* Without CTRL_CLEAR the back buffer keeps its pixels; a triangle
-     * draws over them; CTRL bits other than CLEAR/SWAP change nothing. */
+     * draws over them; CTRL bits other than CLEAR/SWAP change nothing here
+     * (ZTEST/ZCLEAR are ignored without a depth buffer, the others are not
+     * even stored). */
     put_small_tri(m, 0, 0, 5);
     test_batch(m, 0xFFFFFFFCu, 0, 3, 0, 1, 0x00, 2);
     CHECK_EQ(count_px(gpu_model_back(m), 0xAB), GPU_MODEL_FB_PIXELS - 6u);
@@ -564,6 +664,9 @@ int main(void)
     test_bus();
     test_batch_rules();
     test_raster();
+    test_config();
+    test_lines();
+    test_depth();
     printf("%u passed, %u failed\n", test_passed, test_failed);
     return test_failed ? 1 : 0;
 }

@@ -766,7 +766,7 @@ static void test_translation(void)
     free(a);
 }
 
-/* 10^5 triangles through the bus in full batches, shaped like a scene: a
+/* 51200 triangles (100 full batches of TRI_CAP) through the bus in full batches, shaped like a scene: a
  * strip over a random walk of vertices (small triangles, steps up to 24 px,
  * some degenerate) with an occasional jump anywhere in the Q12.4 range
  * (huge triangles).  The counters stay consistent; this also shows the
@@ -776,7 +776,7 @@ static void test_bulk(void)
     gpu_model *m = test_new_model();
     test_srand(0xB01Cu);
     uint32_t in = 0, drawn = 0, rejected = 0, bad_pixels = 0;
-    const uint32_t per_batch = 1000;
+    const uint32_t per_batch = GPU_TRI_CAP; /* 512 */
     for (uint32_t b = 0; b < 100; b++) {
         int32_t x = 16 * 160, y = 16 * 120;
         for (uint32_t v = 0; v < GPU_VTX_CAP; v++) {

@@ -1,0 +1,105 @@
+// prim_list: see prim_list.h.
+#include "prim_list.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <sstream>
+
+extern "C" {
+#include "gpu_regs.h"
+}
+
+bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops, std::string &error)
+{
+    std::istringstream in(text);
+    std::string line;
+    int number = 0;
+    while (std::getline(in, line)) {
+        number++;
+        const size_t hash = line.find('#');
+        if (hash != std::string::npos) {
+            line.resize(hash);
+        }
+        std::istringstream words(line);
+        std::string word;
+        if (!(words >> word)) {
+            continue;
+        }
+        ListOp op{};
+        int count;
+        if (word == "clear") {
+            op.kind = ListOp::Clear;
+            count = 0;
+        } else if (word == "tri") {
+            op.kind = ListOp::Tri;
+            count = 6;
+        } else if (word == "line") {
+            op.kind = ListOp::Line;
+            count = 4;
+        } else {
+            error = std::to_string(number) + ": unknown primitive '" + word + "' (clear, tri, line)";
+            return false;
+        }
+        std::vector<long> values;
+        std::string token;
+        while (words >> token) {
+            char *end = nullptr;
+            errno = 0;
+            const long value = std::strtol(token.c_str(), &end, 10);
+            if (*end != '\0' || errno != 0) {
+                error = std::to_string(number) + ": '" + token + "' is not an integer";
+                return false;
+            }
+            values.push_back(value);
+        }
+        if (values.size() != static_cast<size_t>(count + 1)) {
+            error = std::to_string(number) + ": " + word + " takes " + std::to_string(count + 1) + " integers, got " +
+                    std::to_string(values.size());
+            return false;
+        }
+        for (int i = 0; i < count; i++) {
+            if (values[i] < -32768 || values[i] > 32767) {
+                error = std::to_string(number) + ": coordinate " + std::to_string(values[i]) +
+                        " is outside Q12.4 (-32768..32767)";
+                return false;
+            }
+            op.v[i] = static_cast<int32_t>(values[i]);
+        }
+        if (values[count] < 0 || values[count] > 255) {
+            error = std::to_string(number) + ": colour " + std::to_string(values[count]) + " is not a palette index (0..255)";
+            return false;
+        }
+        op.color = static_cast<uint32_t>(values[count]);
+        ops.push_back(op);
+    }
+    return true;
+}
+
+std::vector<Batch> prim_list_batches(const std::vector<ListOp> &ops, uint32_t vtx_cap, uint32_t tri_cap)
+{
+    std::vector<Batch> batches(1);
+    for (const ListOp &op : ops) {
+        if (op.kind == ListOp::Clear) {
+            batches.emplace_back();
+            batches.back().clear = true;
+            batches.back().clear_color = op.color;
+            continue;
+        }
+        const uint32_t nv = op.kind == ListOp::Tri ? 3 : 2;
+        Batch *b = &batches.back();
+        if (b->vtx.size() / 2 + nv > vtx_cap || b->idx.size() / 2 + 1 > tri_cap) {
+            batches.emplace_back();
+            b = &batches.back();
+        }
+        const uint32_t first = static_cast<uint32_t>(b->vtx.size() / 2);
+        for (uint32_t i = 0; i < nv; i++) {
+            b->vtx.push_back(static_cast<uint16_t>(op.v[2 * i]) | static_cast<uint32_t>(static_cast<uint16_t>(op.v[2 * i + 1])) << 16);
+            b->vtx.push_back(0);
+        }
+        const uint32_t kind = op.kind == ListOp::Tri ? GPU_PRIM_KIND_TRI : GPU_PRIM_KIND_LINE;
+        const uint32_t i2 = op.kind == ListOp::Tri ? first + 2 : 0;
+        b->idx.push_back(first | (first + 1) << 16);
+        b->idx.push_back(i2 | op.color << GPU_PRIM_COLOR_LSB | kind << GPU_PRIM_KIND_LSB);
+    }
+    return batches;
+}

@@ -1,0 +1,33 @@
+// prim_list: the primitive-list text format of `make raster`, and the batches it becomes.
+//
+// One primitive per line, integers: `clear C`, `tri X0 Y0 X1 Y1 X2 Y2 C`, `line X0 Y0 X1 Y1 C`
+// (coordinates Q12.4, -32768..32767; C a palette index 0..255); `#` starts a comment; blank lines
+// are ignored. Primitives are drawn in list order, later over earlier.
+#ifndef PRIM_LIST_H
+#define PRIM_LIST_H
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+struct ListOp {
+    enum Kind { Clear, Tri, Line } kind;
+    int32_t v[6];   // x0 y0 x1 y1 x2 y2 (unused ones 0)
+    uint32_t color;
+};
+
+// Parses text; on error returns false and sets error to "LINE: what is wrong".
+bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops, std::string &error);
+
+// One GPU batch: its vertex and index words, whether it clears first, and with what colour.
+struct Batch {
+    bool clear = false;
+    uint32_t clear_color = 0;
+    std::vector<uint32_t> vtx;   // 2 words per vertex
+    std::vector<uint32_t> idx;   // 2 words per primitive
+};
+
+// Splits ops into batches that fit the capacities; a `clear` starts a new batch.
+std::vector<Batch> prim_list_batches(const std::vector<ListOp> &ops, uint32_t vtx_cap, uint32_t tri_cap);
+
+#endif

@@ -1,0 +1,392 @@
+// gpu_prim_setup: the rasterizer's front end — fetches primitives and their vertices, rejects the
+// invalid and the empty, and turns each survivor into a descriptor for gpu_span_walker.
+//
+// Contract: start (one-cycle pulse) begins at primitive 0 of the batch described by the batch inputs,
+// which hold still until idle. Descriptors leave in primitive order through out_valid/out_ready.
+// Checks and arithmetic follow docs/gpu-contract.md exactly: kind, then vertex indices (no vertex
+// outside the batch is ever read), then the triangle rule (area, winding swap, clamped bounding box of
+// pixel centres, top-left edges) or the line rule. Throughput: one primitive per 3 clocks (the vertex
+// RAM has one read port and a primitive needs three vertices); the index read of the next primitive
+// and the setup arithmetic overlap with the vertex reads, so the walker is fed while it draws.
+// Latency from a primitive's index read to its descriptor: 6 clocks. Rejected primitives take 1-2.
+//
+// Pipeline: fetch FSM -> stage A (vertices) -> stage B (area, box, line endpoints) -> stage C
+// (the descriptor: edge values at the first span, steps, line Bresenham state). A stage loads when it
+// is empty or the stage after it moves; a full descriptor with out_ready low stalls everything behind.
+//
+// Widths: see gpu_raster.v for the edge-function range argument (34 bits needed, EDGE_W = 36).
+`default_nettype none
+
+module gpu_prim_setup #(
+    parameter integer VTX_CAP = 1024,
+    parameter integer TRI_CAP = 512,
+    parameter integer SPAN_W = 8,
+    parameter integer ENABLE_LINES = 1,
+    localparam integer VI_W = $clog2(VTX_CAP),
+    localparam integer TI_W = $clog2(TRI_CAP),
+    localparam integer PRIM_W = $clog2(TRI_CAP + 1),
+    localparam integer COL_W = $clog2(320 / SPAN_W),
+    localparam integer EDGE_W = 36
+) (
+    input  wire                     clk,
+    input  wire                     rst,
+    // batch
+    input  wire                     start,
+    input  wire [31:0]              vtx_base,
+    input  wire [31:0]              vtx_count,
+    input  wire [31:0]              tri_base,
+    input  wire [31:0]              tri_count,
+    output wire                     idle,          // nothing fetched or in flight
+    // index RAM (both words of a primitive at once)
+    output wire                     idx_rd_en,
+    output wire [TI_W-1:0]          idx_rd_addr,
+    input  wire [63:0]              idx_rd_data,
+    // vertex RAM (word 0: x, y)
+    output wire                     vtx_rd_en,
+    output wire [VI_W-1:0]          vtx_rd_addr,
+    input  wire [31:0]              vtx_rd_data,
+    // descriptor to the walker
+    output reg                      out_valid,
+    input  wire                     out_ready,
+    output reg                      out_is_line,
+    output reg  [7:0]               out_color,
+    output reg  signed [EDGE_W-1:0] out_e0, out_e1, out_e2,         // edges at the first span, lane 0
+    output reg  signed [EDGE_W-1:0] out_sx0, out_sx1, out_sx2,      // per pixel right
+    output reg  signed [EDGE_W-1:0] out_sy0, out_sy1, out_sy2,      // per row down
+    output reg  [2:0]               out_top_left,
+    output reg  [COL_W-1:0]         out_col_lo, out_col_hi,         // span columns of the box
+    output reg  [7:0]               out_row_lo, out_row_hi,
+    output reg  signed [11:0]       out_line_x, out_line_y,         // first endpoint pixel
+    output reg  [11:0]              out_line_n,                     // steps
+    output reg                      out_line_xmajor,
+    output reg                      out_line_xneg, out_line_yneg,
+    output reg  [12:0]              out_line_two_a_major,           // 2 * |major delta|
+    output reg  [12:0]              out_line_two_a_minor,           // 2 * |minor delta|
+    output reg  signed [14:0]       out_line_err,
+    // events for the counters
+    output reg                      ev_prim_in,
+    output reg  [1:0]               ev_rejected,   // the fetch and stage B may both reject in one clock
+    output reg                      ev_drawn,
+    output reg  [17:0]              ev_samples,
+    output reg                      ev_err_kind,
+    output reg                      ev_err_index
+);
+`include "gpu_regs.vh"
+
+    // ------------------------------------------------------------------ fetch
+    localparam [2:0] F_IDLE = 3'd0, F_ISSUE = 3'd1, F_CHECK = 3'd2, F_V1 = 3'd3, F_V2 = 3'd4,
+                     F_DRAIN = 3'd5;
+    reg [2:0] fstate_q;
+    reg [PRIM_W-1:0] prim_q;           // next primitive whose index words are read
+    reg [15:0] i1_q, i2_q;
+    reg [7:0] color_q;
+    reg is_line_q;
+    reg signed [15:0] fx0_q, fy0_q, fx1_q, fy1_q;
+    reg v2_pending_q;                  // vertex 2 (or a line's end) is on the RAM output for stage A
+    reg v2_is_line_q;
+    reg idx_was_read_q;                // F_V1 read the next primitive's index words
+
+    wire more_prims = 32'(prim_q) < tri_count;
+    wire [15:0] w_i0 = idx_rd_data[GPU_PRIM_I0_LSB +: GPU_PRIM_I0_WIDTH];
+    wire [15:0] w_i1 = idx_rd_data[GPU_PRIM_I1_LSB +: GPU_PRIM_I1_WIDTH];
+    wire [15:0] w_i2 = idx_rd_data[32 + GPU_PRIM_I2_LSB +: GPU_PRIM_I2_WIDTH];
+    wire [7:0]  w_color = idx_rd_data[32 + GPU_PRIM_COLOR_LSB +: GPU_PRIM_COLOR_WIDTH];
+    wire [7:0]  w_kind = idx_rd_data[32 + GPU_PRIM_KIND_LSB +: GPU_PRIM_KIND_WIDTH];
+    wire w_is_line = (w_kind == GPU_PRIM_KIND_LINE);
+    wire w_kind_ok = (w_kind == GPU_PRIM_KIND_TRI) || (w_is_line && ENABLE_LINES != 0);
+    wire w_index_ok = (32'(w_i0) < vtx_count) && (32'(w_i1) < vtx_count)
+                   && (w_is_line || 32'(w_i2) < vtx_count);
+
+    wire stage_a_free;                 // stage A can take the pending vertex set this cycle
+    wire check_stall = (fstate_q == F_CHECK || fstate_q == F_DRAIN) && v2_pending_q && !stage_a_free;
+    wire handoff = v2_pending_q && stage_a_free && (fstate_q == F_CHECK || fstate_q == F_DRAIN);
+    wire decode = (fstate_q == F_CHECK) && !check_stall;
+    wire reject_now = decode && !(w_kind_ok && w_index_ok);
+
+    assign idx_rd_en = (fstate_q == F_ISSUE && more_prims) || (reject_now && more_prims)
+                    || (fstate_q == F_V1 && more_prims);
+    assign idx_rd_addr = tri_base[TI_W-1:0] + TI_W'(prim_q);
+
+    wire [15:0] vtx_index = (fstate_q == F_CHECK) ? w_i0 : (fstate_q == F_V1) ? i1_q : i2_q;
+    assign vtx_rd_en = (decode && !reject_now) || fstate_q == F_V1 || (fstate_q == F_V2 && !is_line_q);
+    assign vtx_rd_addr = vtx_base[VI_W-1:0] + vtx_index[VI_W-1:0];
+
+    wire signed [15:0] vx = vtx_rd_data[GPU_VTX_X_LSB +: GPU_VTX_X_WIDTH];
+    wire signed [15:0] vy = vtx_rd_data[GPU_VTX_Y_LSB +: GPU_VTX_Y_WIDTH];
+
+    always @(posedge clk) begin
+        if (rst) begin
+            fstate_q <= F_IDLE;
+            v2_pending_q <= 1'b0;
+        end else begin
+            if (handoff) begin
+                v2_pending_q <= 1'b0;
+            end
+            case (fstate_q)
+                F_IDLE: if (start) begin
+                    prim_q <= {PRIM_W{1'b0}};
+                    fstate_q <= F_ISSUE;
+                end
+                F_ISSUE: begin
+                    if (more_prims) begin
+                        prim_q <= prim_q + 1'b1;
+                        fstate_q <= F_CHECK;
+                    end else begin
+                        fstate_q <= F_DRAIN;
+                    end
+                end
+                F_CHECK: if (!check_stall) begin
+                    if (reject_now) begin
+                        if (more_prims) begin
+                            prim_q <= prim_q + 1'b1;
+                        end else begin
+                            fstate_q <= F_DRAIN;
+                        end
+                    end else begin
+                        i1_q <= w_i1;
+                        i2_q <= w_i2;
+                        color_q <= w_color;
+                        is_line_q <= w_is_line;
+                        fstate_q <= F_V1;
+                    end
+                end
+                F_V1: begin
+                    fx0_q <= vx;
+                    fy0_q <= vy;
+                    if (more_prims) begin
+                        prim_q <= prim_q + 1'b1;
+                    end
+                    fstate_q <= F_V2;
+                end
+                F_V2: begin
+                    fx1_q <= vx;
+                    fy1_q <= vy;
+                    v2_pending_q <= 1'b1;
+                    v2_is_line_q <= is_line_q;
+                    // The next primitive's index words were read in F_V1 if there was one.
+                    fstate_q <= idx_was_read_q ? F_CHECK : F_DRAIN;
+                end
+                F_DRAIN: if (!v2_pending_q || handoff) begin
+                    fstate_q <= F_IDLE;
+                end
+                default: fstate_q <= F_IDLE;
+            endcase
+        end
+    end
+
+    // Whether F_V1 issued an index read (so F_CHECK follows F_V2).
+    always @(posedge clk) begin
+        if (fstate_q == F_V1) begin
+            idx_was_read_q <= more_prims;
+        end
+    end
+
+    // Events of the fetch stage.
+    wire fetch_ev_in = decode;
+    wire fetch_ev_reject = reject_now;
+
+    // ------------------------------------------------------------------ stage A: three vertices
+    reg a_valid_q;
+    reg a_is_line_q;
+    reg [7:0] a_color_q;
+    reg signed [15:0] ax0_q, ay0_q, ax1_q, ay1_q, ax2_q, ay2_q;
+    wire b_free;
+
+    assign stage_a_free = !a_valid_q || b_free;
+
+    always @(posedge clk) begin
+        if (rst) begin
+            a_valid_q <= 1'b0;
+        end else if (stage_a_free) begin
+            a_valid_q <= handoff;
+            if (handoff) begin
+                a_is_line_q <= v2_is_line_q;
+                a_color_q <= color_q;
+                ax0_q <= fx0_q;
+                ay0_q <= fy0_q;
+                ax1_q <= fx1_q;
+                ay1_q <= fy1_q;
+                ax2_q <= v2_is_line_q ? fx1_q : vx;
+                ay2_q <= v2_is_line_q ? fy1_q : vy;
+            end
+        end
+    end
+
+    // ------------------------------------------------------------------ stage B: area, box, endpoints
+    function automatic signed [15:0] min3(input signed [15:0] a, input signed [15:0] b, input signed [15:0] c);
+        min3 = (a < b) ? ((a < c) ? a : c) : ((b < c) ? b : c);
+    endfunction
+    function automatic signed [15:0] max3(input signed [15:0] a, input signed [15:0] b, input signed [15:0] c);
+        max3 = (a > b) ? ((a > c) ? a : c) : ((b > c) ? b : c);
+    endfunction
+    // First pixel whose centre (16p + 8) is >= v: floor((v + 7) / 16). Last one <= v: floor((v - 8) / 16).
+    function automatic signed [12:0] first_centre(input signed [15:0] v);
+        reg signed [16:0] t;
+        begin
+            t = 17'(v) + 17'sd7;
+            first_centre = 13'(t >>> 4);
+        end
+    endfunction
+    function automatic signed [12:0] last_centre(input signed [15:0] v);
+        reg signed [16:0] t;
+        begin
+            t = 17'(v) - 17'sd8;
+            last_centre = 13'(t >>> 4);
+        end
+    endfunction
+    function automatic signed [12:0] clamp(input signed [12:0] v, input signed [12:0] hi);
+        clamp = (v < 13'sd0) ? 13'sd0 : ((v > hi) ? hi : v);
+    endfunction
+
+    wire signed [16:0] d01x = 17'(ax1_q) - 17'(ax0_q);
+    wire signed [16:0] d01y = 17'(ay1_q) - 17'(ay0_q);
+    wire signed [16:0] d02x = 17'(ax2_q) - 17'(ax0_q);
+    wire signed [16:0] d02y = 17'(ay2_q) - 17'(ay0_q);
+    wire signed [34:0] area_w = d01x * d02y - d01y * d02x;  // operands widen to 35 bits first
+
+    reg b_valid_q;
+    reg b_is_line_q;
+    reg [7:0] b_color_q;
+    reg signed [15:0] bx0_q, by0_q, bx1_q, by1_q, bx2_q, by2_q;
+    reg signed [34:0] b_area_q;
+    reg signed [12:0] b_rpx0_q, b_rpx1_q, b_rpy0_q, b_rpy1_q;  // box of pixel centres, unclamped
+    wire c_free;
+
+    assign b_free = !b_valid_q || c_free;
+
+    always @(posedge clk) begin
+        if (rst) begin
+            b_valid_q <= 1'b0;
+        end else if (b_free) begin
+            b_valid_q <= a_valid_q;
+            if (a_valid_q) begin
+                b_is_line_q <= a_is_line_q;
+                b_color_q <= a_color_q;
+                bx0_q <= ax0_q;
+                by0_q <= ay0_q;
+                bx1_q <= ax1_q;
+                by1_q <= ay1_q;
+                bx2_q <= ax2_q;
+                by2_q <= ay2_q;
+                b_area_q <= area_w;
+                b_rpx0_q <= first_centre(min3(ax0_q, ax1_q, ax2_q));
+                b_rpx1_q <= last_centre(max3(ax0_q, ax1_q, ax2_q));
+                b_rpy0_q <= first_centre(min3(ay0_q, ay1_q, ay2_q));
+                b_rpy1_q <= last_centre(max3(ay0_q, ay1_q, ay2_q));
+            end
+        end
+    end
+
+    // Clamped to the screen: px0 = max(0, raw), px1 = min(319, raw). Empty when px0 > px1, i.e. when
+    // the raw box is empty or lies wholly off one side.
+    wire signed [12:0] b_px0 = clamp(b_rpx0_q, 13'sd319), b_px1 = clamp(b_rpx1_q, 13'sd319);
+    wire signed [12:0] b_py0 = clamp(b_rpy0_q, 13'sd239), b_py1 = clamp(b_rpy1_q, 13'sd239);
+    wire box_empty = b_rpx0_q > b_rpx1_q || b_rpy0_q > b_rpy1_q || b_rpx1_q < 13'sd0
+                  || b_rpy1_q < 13'sd0 || b_rpx0_q > 13'sd319 || b_rpy0_q > 13'sd239;
+
+    // ------------------------------------------------------------------ stage C: the descriptor
+    // Winding: with area < 0, v1 and v2 trade places so that the interior is where every E > 0.
+    wire flip = b_area_q < 0;
+    wire signed [15:0] tx0 = bx0_q, ty0 = by0_q;
+    wire signed [15:0] tx1 = flip ? bx2_q : bx1_q, ty1 = flip ? by2_q : by1_q;
+    wire signed [15:0] tx2 = flip ? bx1_q : bx2_q, ty2 = flip ? by1_q : by2_q;
+
+    wire [COL_W-1:0] col_lo = COL_W'(b_px0[8:0] / 9'(SPAN_W));
+    wire [COL_W-1:0] col_hi = COL_W'(b_px1[8:0] / 9'(SPAN_W));
+    // Centre of lane 0 of the first span, Q12.4: 16 * (col_lo * SPAN_W) + 8.
+    wire signed [17:0] pcx = 18'(32'(col_lo) * SPAN_W * 16 + 8);
+    wire signed [17:0] pcy = 18'({b_py0[7:0], 4'd8});
+
+    function automatic signed [EDGE_W-1:0] edge_at(input signed [15:0] ax, input signed [15:0] ay,
+                                                   input signed [15:0] bx, input signed [15:0] by,
+                                                   input signed [17:0] px, input signed [17:0] py);
+        reg signed [17:0] dx, dy, ox, oy;
+        begin
+            dx = 18'(bx) - 18'(ax);
+            dy = 18'(by) - 18'(ay);
+            ox = px - 18'(ax);
+            oy = py - 18'(ay);
+            edge_at = dx * oy - dy * ox;  // operands widen to EDGE_W bits first
+        end
+    endfunction
+    function automatic top_left(input signed [15:0] ax, input signed [15:0] ay,
+                                input signed [15:0] bx, input signed [15:0] by);
+        top_left = (by < ay) || ((by == ay) && (bx > ax));
+    endfunction
+    function automatic signed [EDGE_W-1:0] step_right(input signed [15:0] ay, input signed [15:0] by);
+        step_right = (EDGE_W'(ay) - EDGE_W'(by)) <<< 4;
+    endfunction
+    function automatic signed [EDGE_W-1:0] step_down(input signed [15:0] ax, input signed [15:0] bx);
+        step_down = (EDGE_W'(bx) - EDGE_W'(ax)) <<< 4;
+    endfunction
+
+    // Lines: endpoint pixels by arithmetic shift, Bresenham set-up per the contract.
+    wire signed [11:0] lx0 = 12'(bx0_q >>> 4), ly0 = 12'(by0_q >>> 4);
+    wire signed [11:0] lx1 = 12'(bx1_q >>> 4), ly1 = 12'(by1_q >>> 4);
+    wire signed [12:0] ldx = 13'(lx1) - 13'(lx0);
+    wire signed [12:0] ldy = 13'(ly1) - 13'(ly0);
+    wire [11:0] lax = 12'(ldx < 0 ? -ldx : ldx);
+    wire [11:0] lay = 12'(ldy < 0 ? -ldy : ldy);
+    wire lxmajor = lax >= lay;
+    wire [11:0] lmaj = lxmajor ? lax : lay;
+    wire [11:0] lmin = lxmajor ? lay : lax;
+    wire line_empty = (lmaj == 12'd0);
+
+    wire c_load_valid = b_valid_q && (b_is_line_q ? !line_empty : (b_area_q != 0 && !box_empty));
+    assign c_free = !out_valid || out_ready;
+
+    wire [8:0] box_w = 9'(b_px1 - b_px0 + 13'sd1);
+    wire [7:0] box_h = 8'(b_py1 - b_py0 + 13'sd1);
+
+    always @(posedge clk) begin
+        if (rst) begin
+            out_valid <= 1'b0;
+        end else if (c_free) begin
+            out_valid <= c_load_valid;
+            if (c_load_valid) begin
+                out_is_line <= b_is_line_q;
+                out_color <= b_color_q;
+                out_e0 <= edge_at(tx0, ty0, tx1, ty1, pcx, pcy);
+                out_e1 <= edge_at(tx1, ty1, tx2, ty2, pcx, pcy);
+                out_e2 <= edge_at(tx2, ty2, tx0, ty0, pcx, pcy);
+                out_sx0 <= step_right(ty0, ty1);
+                out_sx1 <= step_right(ty1, ty2);
+                out_sx2 <= step_right(ty2, ty0);
+                out_sy0 <= step_down(tx0, tx1);
+                out_sy1 <= step_down(tx1, tx2);
+                out_sy2 <= step_down(tx2, tx0);
+                out_top_left <= {top_left(tx2, ty2, tx0, ty0), top_left(tx1, ty1, tx2, ty2),
+                                 top_left(tx0, ty0, tx1, ty1)};
+                out_col_lo <= col_lo;
+                out_col_hi <= col_hi;
+                out_row_lo <= b_py0[7:0];
+                out_row_hi <= b_py1[7:0];
+                out_line_x <= lx0;
+                out_line_y <= ly0;
+                out_line_n <= lmaj;
+                out_line_xmajor <= lxmajor;
+                out_line_xneg <= ldx < 0;
+                out_line_yneg <= ldy < 0;
+                out_line_two_a_major <= {lmaj, 1'b0};
+                out_line_two_a_minor <= {lmin, 1'b0};
+                out_line_err <= 15'({lmin, 1'b0}) - 15'(lmaj);
+            end
+        end
+    end
+
+    // ------------------------------------------------------------------ events
+    always @(posedge clk) begin
+        ev_prim_in <= !rst && fetch_ev_in;
+        ev_err_kind <= !rst && fetch_ev_reject && !w_kind_ok;
+        ev_err_index <= !rst && fetch_ev_reject && w_kind_ok;
+        ev_rejected <= (!rst && fetch_ev_reject ? 2'd1 : 2'd0)
+                     + (!rst && b_valid_q && c_free && !c_load_valid ? 2'd1 : 2'd0);
+        ev_drawn <= !rst && c_free && c_load_valid;
+        ev_samples <= (!rst && c_free && c_load_valid)
+                    ? (b_is_line_q ? 18'(lmaj) : 18'(box_w) * 18'(box_h)) : 18'd0;
+    end
+
+    assign idle = (fstate_q == F_IDLE) && !a_valid_q && !b_valid_q && !out_valid;
+endmodule
+
+`default_nettype wire

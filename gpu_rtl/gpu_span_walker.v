@@ -1,0 +1,259 @@
+// gpu_span_walker: the rasterizer's back end — walks each triangle span by span (SPAN_W pixels of a
+// row per clock) and each line pixel by pixel, and writes the back framebuffer with a pixel mask.
+//
+// Contract: takes a descriptor from gpu_prim_setup when in_ready is high (while idle). Triangles:
+// every pixel whose centre passes all three edge tests (E > 0, or E = 0 on a top-left edge) is written
+// with the colour, exactly once, nothing else is. Lines: the contract's Bresenham steps, on-screen
+// plots only. Writes leave on fb_wr_* one clock after the span is evaluated.
+//
+// Traversal (why it is fast and still exact): a row of a triangle is one interval of pixels. Edges
+// whose value grows to the right (step > 0) bound it on the left, those that shrink bound it on the
+// right, flat ones pass or fail the whole row. From the column where the previous row started, the
+// walker moves right over spans that fail a left-bounding edge in every pixel, moves left while the
+// pixel just left of the span passes every left-bounding edge, and then scans right, writing, until
+// the first pixel of the next span fails a right-bounding edge. Each test is monotonic along the row,
+// so no covered pixel is skipped, no span is written twice, and a triangle costs about one clock per
+// covered span plus one per row and per span the boundary moves. Bounding-box limits (col_lo..col_hi,
+// row_lo..row_hi) stop the walk at the screen edge.
+//
+// Widths: edge values at lanes -1 .. SPAN_W of any on-screen span are values at pixel centres within
+// one pixel of the screen, inside the 34-bit bound argued in gpu_raster.v; EDGE_W = 36.
+`default_nettype none
+
+module gpu_span_walker #(
+    parameter integer SPAN_W = 8,
+    localparam integer COL_W = $clog2(320 / SPAN_W),
+    localparam integer WORDS_PER_ROW = 320 / SPAN_W,
+    localparam integer WAW = $clog2(320 * 240 / SPAN_W),
+    localparam integer LANE_AW = (SPAN_W > 1) ? $clog2(SPAN_W) : 1,
+    localparam integer CNT_W = $clog2(SPAN_W + 1),
+    localparam integer EDGE_W = 36,
+    localparam signed [EDGE_W-1:0] LANES = EDGE_W'(SPAN_W),  // as edge-width constants
+    localparam signed [EDGE_W-1:0] LAST_LANE = EDGE_W'(SPAN_W) - EDGE_W'(1)
+) (
+    input  wire                     clk,
+    input  wire                     rst,
+    // descriptor (see gpu_prim_setup)
+    input  wire                     in_valid,
+    output wire                     in_ready,
+    input  wire                     in_is_line,
+    input  wire [7:0]               in_color,
+    input  wire signed [EDGE_W-1:0] in_e0, in_e1, in_e2,
+    input  wire signed [EDGE_W-1:0] in_sx0, in_sx1, in_sx2,
+    input  wire signed [EDGE_W-1:0] in_sy0, in_sy1, in_sy2,
+    input  wire [2:0]               in_top_left,
+    input  wire [COL_W-1:0]         in_col_lo, in_col_hi,
+    input  wire [7:0]               in_row_lo, in_row_hi,
+    input  wire signed [11:0]       in_line_x, in_line_y,
+    input  wire [11:0]              in_line_n,
+    input  wire                     in_line_xmajor,
+    input  wire                     in_line_xneg, in_line_yneg,
+    input  wire [12:0]              in_line_two_a_major,
+    input  wire [12:0]              in_line_two_a_minor,
+    input  wire signed [14:0]       in_line_err,
+    // framebuffer write port (back bank)
+    output reg                      fb_wr_en,
+    output reg  [WAW-1:0]           fb_wr_addr,
+    output reg  [SPAN_W*8-1:0]      fb_wr_data,
+    output reg  [SPAN_W-1:0]        fb_wr_mask,
+    // status and events
+    output wire                     idle,
+    output reg                      ev_span_visit,
+    output reg                      ev_span_written,
+    output reg  [CNT_W-1:0]         ev_pixels
+);
+    localparam [1:0] S_IDLE = 2'd0, S_SEEK = 2'd1, S_SCAN = 2'd2, S_LINE = 2'd3;
+    reg [1:0] state_q;
+
+    reg [7:0] color_q;
+    reg signed [EDGE_W-1:0] e_q [0:2];       // edges at lane 0 of the current span
+    reg signed [EDGE_W-1:0] efirst_q [0:2];  // edges at lane 0 of the row's starting span
+    reg signed [EDGE_W-1:0] sx_q [0:2];
+    reg signed [EDGE_W-1:0] sy_q [0:2];
+    reg [2:0] tl_q;
+    reg [COL_W-1:0] col_q, col_first_q, col_lo_q, col_hi_q;
+    reg [7:0] row_q, row_hi_q;
+    reg [WAW-1:0] row_addr_q;                // word address of (col 0, row_q)
+
+    // ---- lane evaluation: edge k at lane l is e + l * step (l = -1 .. SPAN_W) ----
+    function automatic covered(input signed [EDGE_W-1:0] e, input tl);
+        covered = (e > 0) || (tl && (e == 0));
+    endfunction
+
+    reg [SPAN_W-1:0] lane_cov;              // pixels of this span inside the triangle
+    reg [2:0] pass_left, pass_last, pass_next, pass_first;  // per edge: at lane -1, SPAN_W-1, SPAN_W, 0
+    integer k, l;
+    always @(*) begin
+        lane_cov = {SPAN_W{1'b1}};
+        for (k = 0; k < 3; k = k + 1) begin
+            for (l = 0; l < SPAN_W; l = l + 1) begin
+                if (!covered(e_q[k] + EDGE_W'(l) * sx_q[k], tl_q[k])) begin
+                    lane_cov[l] = 1'b0;
+                end
+            end
+            pass_left[k]  = covered(e_q[k] - sx_q[k], tl_q[k]);
+            pass_first[k] = covered(e_q[k], tl_q[k]);
+            pass_last[k]  = covered(e_q[k] + LAST_LANE * sx_q[k], tl_q[k]);
+            pass_next[k]  = covered(e_q[k] + LANES * sx_q[k], tl_q[k]);
+        end
+    end
+
+    reg flat_fail, left_rejected, left_possible, right_done;
+    always @(*) begin
+        flat_fail = 1'b0;
+        left_rejected = 1'b0;
+        left_possible = col_q > col_lo_q;
+        right_done = col_q == col_hi_q;
+        for (k = 0; k < 3; k = k + 1) begin
+            if (sx_q[k] == 0 && !pass_first[k]) begin
+                flat_fail = 1'b1;
+            end
+            if (sx_q[k] > 0) begin  // bounds the row on the left
+                if (!pass_last[k]) left_rejected = 1'b1;
+                if (!pass_left[k]) left_possible = 1'b0;
+            end
+            if (sx_q[k] < 0 && !pass_next[k]) begin  // bounds it on the right
+                right_done = 1'b1;
+            end
+        end
+    end
+
+    wire seek = state_q == S_SEEK;
+    wire scan = state_q == S_SCAN;
+    wire row_empty = seek && (flat_fail || (left_rejected && col_q == col_hi_q));
+    wire go_left = seek && !flat_fail && !left_rejected && left_possible;
+    wire first_span = seek && !flat_fail && !left_rejected && !left_possible;
+    wire draw_span = first_span || scan;
+    wire row_end = row_empty || (draw_span && right_done);
+
+    // ---- lines ----
+    reg signed [11:0] lx_q, ly_q;
+    reg [11:0] ln_q;
+    reg lxmajor_q, lxneg_q, lyneg_q;
+    reg [12:0] l2maj_q, l2min_q;
+    reg signed [14:0] lerr_q;
+    wire line_on_screen = lx_q >= 0 && lx_q < 320 && ly_q >= 0 && ly_q < 240;
+    wire [8:0] line_px = lx_q[8:0];
+    wire [7:0] line_py = ly_q[7:0];
+    wire [WAW-1:0] line_addr = WAW'(32'(line_py) * WORDS_PER_ROW + 32'(line_px) / SPAN_W);
+    wire [LANE_AW-1:0] line_lane = (SPAN_W > 1) ? LANE_AW'(line_px % 9'(SPAN_W)) : {LANE_AW{1'b0}};
+
+    assign in_ready = state_q == S_IDLE;
+    assign idle = state_q == S_IDLE && !in_valid;
+
+    always @(posedge clk) begin
+        if (rst) begin
+            state_q <= S_IDLE;
+            fb_wr_en <= 1'b0;
+            ev_span_visit <= 1'b0;
+            ev_span_written <= 1'b0;
+            ev_pixels <= {CNT_W{1'b0}};
+        end else begin
+            fb_wr_en <= 1'b0;
+            ev_span_visit <= seek || scan;
+            ev_span_written <= 1'b0;
+            ev_pixels <= {CNT_W{1'b0}};
+            case (state_q)
+                S_IDLE: if (in_valid) begin
+                    color_q <= in_color;
+                    if (in_is_line) begin
+                        lx_q <= in_line_x;
+                        ly_q <= in_line_y;
+                        ln_q <= in_line_n;
+                        lxmajor_q <= in_line_xmajor;
+                        lxneg_q <= in_line_xneg;
+                        lyneg_q <= in_line_yneg;
+                        l2maj_q <= in_line_two_a_major;
+                        l2min_q <= in_line_two_a_minor;
+                        lerr_q <= in_line_err;
+                        state_q <= S_LINE;
+                    end else begin
+                        e_q[0] <= in_e0;
+                        e_q[1] <= in_e1;
+                        e_q[2] <= in_e2;
+                        efirst_q[0] <= in_e0;
+                        efirst_q[1] <= in_e1;
+                        efirst_q[2] <= in_e2;
+                        sx_q[0] <= in_sx0;
+                        sx_q[1] <= in_sx1;
+                        sx_q[2] <= in_sx2;
+                        sy_q[0] <= in_sy0;
+                        sy_q[1] <= in_sy1;
+                        sy_q[2] <= in_sy2;
+                        tl_q <= in_top_left;
+                        col_q <= in_col_lo;
+                        col_first_q <= in_col_lo;
+                        col_lo_q <= in_col_lo;
+                        col_hi_q <= in_col_hi;
+                        row_q <= in_row_lo;
+                        row_hi_q <= in_row_hi;
+                        row_addr_q <= WAW'(32'(in_row_lo) * WORDS_PER_ROW);
+                        state_q <= S_SEEK;
+                    end
+                end
+                S_SEEK, S_SCAN: begin
+                    if (draw_span && lane_cov != {SPAN_W{1'b0}}) begin
+                        fb_wr_en <= 1'b1;
+                        fb_wr_addr <= row_addr_q + WAW'(col_q);
+                        fb_wr_data <= {SPAN_W{color_q}};
+                        fb_wr_mask <= lane_cov;
+                        ev_span_written <= 1'b1;
+                        ev_pixels <= CNT_W'($countones(lane_cov));
+                    end
+                    if (first_span) begin
+                        col_first_q <= col_q;
+                        for (k = 0; k < 3; k = k + 1) efirst_q[k] <= e_q[k];
+                    end
+                    if (row_end) begin
+                        if (row_q == row_hi_q) begin
+                            state_q <= S_IDLE;
+                        end else begin
+                            // The next row starts where this one's coverage started.
+                            row_q <= row_q + 8'd1;
+                            row_addr_q <= row_addr_q + WAW'(WORDS_PER_ROW);
+                            col_q <= first_span ? col_q : col_first_q;
+                            for (k = 0; k < 3; k = k + 1) begin
+                                efirst_q[k] <= (first_span ? e_q[k] : efirst_q[k]) + sy_q[k];
+                                e_q[k] <= (first_span ? e_q[k] : efirst_q[k]) + sy_q[k];
+                            end
+                            state_q <= S_SEEK;
+                        end
+                    end else if (go_left) begin
+                        col_q <= col_q - 1'b1;
+                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] - LANES * sx_q[k];
+                    end else begin  // seeking right past a rejected span, or the scan's next span
+                        col_q <= col_q + 1'b1;
+                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] + LANES * sx_q[k];
+                        if (draw_span) begin
+                            state_q <= S_SCAN;
+                        end
+                    end
+                end
+                S_LINE: begin
+                    if (line_on_screen) begin
+                        fb_wr_en <= 1'b1;
+                        fb_wr_addr <= line_addr;
+                        fb_wr_data <= {SPAN_W{color_q}};
+                        fb_wr_mask <= SPAN_W'(1) << line_lane;
+                        ev_pixels <= CNT_W'(1);
+                    end
+                    // Bresenham: step the minor axis when the error is positive, then the major one.
+                    if (lerr_q > 0) begin
+                        if (lxmajor_q) ly_q <= lyneg_q ? ly_q - 12'sd1 : ly_q + 12'sd1;
+                        else lx_q <= lxneg_q ? lx_q - 12'sd1 : lx_q + 12'sd1;
+                    end
+                    lerr_q <= lerr_q - ((lerr_q > 0) ? 15'(l2maj_q) : 15'd0) + 15'(l2min_q);
+                    if (lxmajor_q) lx_q <= lxneg_q ? lx_q - 12'sd1 : lx_q + 12'sd1;
+                    else ly_q <= lyneg_q ? ly_q - 12'sd1 : ly_q + 12'sd1;
+                    ln_q <= ln_q - 12'd1;
+                    if (ln_q == 12'd1) begin
+                        state_q <= S_IDLE;
+                    end
+                end
+                default: state_q <= S_IDLE;
+            endcase
+        end
+    end
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,337 @@
+/*
+ * test_config.c - unit tests of the model's build options and the contract
+ * 1.1 register additions: CAPS per configuration, CTRL keeping its four
+ * defined bits, the RESET register, and PERF_SPANS_WRITTEN (triangle rule,
+ * "Spans") for every span width.
+ *
+ * Expected values come from docs/gpu-contract.md, computed by hand (the
+ * arithmetic is in the comments).
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "model_test.h"
+
+/* ------------------------------------------------------------- CAPS */
+
+static uint32_t caps_of(unsigned span_w, bool lines, bool zbuf)
+{
+    gpu_model *m = test_new_model_cfg(span_w, lines, zbuf);
+    uint32_t caps = gpu_model_read(m, GPU_REG_CAPS);
+    CHECK_EQ(caps, gpu_model_caps(m));
+    free(m);
+    return caps;
+}
+
+static void test_caps(void)
+{
+    /* CAPS = LINES [0] | ZBUF [1] | SPAN_W [15:8]. */
+    CHECK_EQ(caps_of(1, false, false), 0x0100u);
+    CHECK_EQ(caps_of(4, true, false), 0x0401u);
+    CHECK_EQ(caps_of(8, true, false), 0x0801u); /* the RTL defaults */
+    CHECK_EQ(caps_of(8, false, true), 0x0802u);
+    CHECK_EQ(caps_of(16, true, true), 0x1003u);
+    CHECK_EQ(caps_of(16, false, false), 0x1000u);
+    /* Field by field through the generated masks. */
+    uint32_t c = caps_of(4, false, true);
+    CHECK_EQ((c & GPU_CAPS_SPAN_W_MASK) >> GPU_CAPS_SPAN_W_LSB, 4);
+    CHECK_EQ(c & GPU_CAPS_LINES_MASK, 0);
+    CHECK_EQ(c & GPU_CAPS_ZBUF_MASK, GPU_CAPS_ZBUF_MASK);
+
+    /* An unsupported span width falls back to the default 8. */
+    CHECK_EQ(caps_of(3, false, false), 0x0800u);
+    CHECK_EQ(caps_of(0, true, false), 0x0801u);
+    CHECK_EQ(caps_of(32, false, true), 0x0802u);
+    CHECK_EQ(caps_of(256 + 4, false, false), 0x0800u);
+
+    gpu_model *m = test_new_model_cfg(16, false, true);
+    CHECK_EQ(m->cfg.span_w, 16);
+    CHECK(!m->cfg.lines);
+    CHECK(m->cfg.zbuf);
+    /* NULL: the defaults; gpu_model_reset: the defaults again. */
+    gpu_model_reset_config(m, NULL);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0801u);
+    gpu_model_config cfg = { 1, false, true };
+    gpu_model_reset_config(m, &cfg);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0102u);
+    gpu_model_reset(m);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0801u);
+    CHECK_EQ(m->cfg.span_w, 8);
+    CHECK(m->cfg.lines);
+    CHECK(!m->cfg.zbuf);
+
+    /* reset_config is a power-on reset like gpu_model_reset: state from a
+     * previous run is gone (zbuf, framebuffers, registers, counters). */
+    cfg.span_w = 4;
+    cfg.lines = true;
+    cfg.zbuf = true;
+    gpu_model_reset_config(m, &cfg);
+    test_set_vtxz(m, 0, 0, 0, 7);
+    test_set_vtxz(m, 1, 800, 0, 7);
+    test_set_vtxz(m, 2, 0, 800, 7);
+    test_set_prim(m, 0, 0, 1, 2, 9, GPU_PRIM_KIND_TRI);
+    test_batch(m, GPU_CTRL_CLEAR_MASK | GPU_CTRL_ZCLEAR_MASK |
+                      GPU_CTRL_ZTEST_MASK,
+               0, 3, 0, 1, 3, 0x77);
+    gpu_model_write(m, GPU_REG_RESET, 5);
+    CHECK_EQ(test_z(m, 0, 0), 7);
+    CHECK_EQ(test_z(m, 319, 239), 0xFFFF);
+    gpu_model_reset_config(m, &cfg);
+    bool clean = true;
+    for (uint32_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
+        clean = clean && m->zbuf[i] == 0 && m->fb[0][i] == 0 &&
+                m->fb[1][i] == 0;
+    }
+    CHECK(clean);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_RESET), 0);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_DONE_SEQ), 0);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_PIXELS), 0);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_SPANS_WRITTEN), 0);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0403u);
+    free(m);
+}
+
+/* ------------------------------------------------------------- CTRL */
+
+static void test_ctrl(void)
+{
+    /* CTRL keeps CLEAR [0], SWAP [1], ZTEST [2], ZCLEAR [3]; other bits are
+     * not stored.  Same with and without the depth buffer (without it
+     * ZTEST/ZCLEAR are stored but ignored, see test_depth.c). */
+    for (int z = 0; z < 2; z++) {
+        gpu_model *m = test_new_model_cfg(8, true, z != 0);
+        gpu_model_write(m, GPU_REG_CTRL, 0xFFFFFFFFu);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0xF);
+        gpu_model_write(m, GPU_REG_CTRL, GPU_CTRL_ZTEST_MASK);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x4);
+        gpu_model_write(m, GPU_REG_CTRL, GPU_CTRL_ZCLEAR_MASK | 0x10u);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x8);
+        gpu_model_write(m, GPU_REG_CTRL, 0xFFFFFFF0u);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0);
+        gpu_model_write(m, GPU_REG_CTRL, 0x5u);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x5);
+        /* A batch does not change it. */
+        gpu_model_write(m, GPU_REG_DOORBELL, 1);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x5);
+        free(m);
+    }
+}
+
+/* ------------------------------------------------------------ RESET */
+
+static void test_reset_reg(void)
+{
+    gpu_model *m = test_new_model();
+
+    /* A batch that leaves visible state everywhere: clear, a triangle, a
+     * swap, an error flag. */
+    gpu_model_write(m, GPU_WIN_PALETTE + 4u * 3u, 0x123u);
+    test_set_vtx(m, 0, 16, 16);
+    test_set_vtx(m, 1, 80, 16);
+    test_set_vtx(m, 2, 16, 80);
+    test_set_prim(m, 0, 0, 1, 2, 5, GPU_PRIM_KIND_TRI);
+    test_set_prim(m, 1, 0, 1, 7, 5, GPU_PRIM_KIND_TRI); /* bad index */
+    test_batch(m, GPU_CTRL_CLEAR_MASK | GPU_CTRL_SWAP_MASK, 0, 3, 0, 2, 3,
+               0x42);
+    uint8_t *front = malloc(GPU_MODEL_FB_PIXELS);
+    uint8_t *back = malloc(GPU_MODEL_FB_PIXELS);
+    if (front == NULL || back == NULL) {
+        exit(2);
+    }
+    memcpy(front, gpu_model_front(m), GPU_MODEL_FB_PIXELS);
+    memcpy(back, gpu_model_back(m), GPU_MODEL_FB_PIXELS);
+    const uint32_t regs[] = {
+        GPU_REG_CTRL, GPU_REG_VTX_BASE, GPU_REG_VTX_COUNT, GPU_REG_TRI_BASE,
+        GPU_REG_TRI_COUNT, GPU_REG_CLEAR_COLOR, GPU_REG_DOORBELL,
+        GPU_REG_STATUS, GPU_REG_DONE_SEQ, GPU_REG_FRAME_COUNT,
+        GPU_REG_ERRORS, GPU_REG_PERF_TRIS_IN, GPU_REG_PERF_TRIS_DRAWN,
+        GPU_REG_PERF_TRIS_REJECTED, GPU_REG_PERF_PIXELS,
+        GPU_REG_PERF_SAMPLES, GPU_REG_PERF_SPANS_WRITTEN,
+    };
+    enum { NREGS = sizeof regs / sizeof regs[0] };
+    uint32_t before[NREGS];
+    for (int i = 0; i < NREGS; i++) {
+        before[i] = gpu_model_read(m, regs[i]);
+    }
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_VTX_INDEX_MASK);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_FRAME_COUNT), 1);
+
+    /* RESET reads back what was written and, with no batch running (the
+     * model never has one), changes nothing else: DONE_SEQ, ERRORS, the
+     * counters, the buffers, the palette, FRAME_COUNT, STATUS all stay. */
+    CHECK_EQ(gpu_model_read(m, GPU_REG_RESET), 0);
+    gpu_model_write(m, GPU_REG_RESET, 0xCAFEF00Du);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_RESET), 0xCAFEF00Du);
+    gpu_model_write(m, GPU_REG_RESET, 0xCAFEF00Du); /* same value again */
+    gpu_model_write(m, GPU_REG_RESET, 1);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_RESET), 1);
+    int changed = 0;
+    for (int i = 0; i < NREGS; i++) {
+        changed += gpu_model_read(m, regs[i]) != before[i];
+    }
+    CHECK_EQ(changed, 0);
+    CHECK(memcmp(front, gpu_model_front(m), GPU_MODEL_FB_PIXELS) == 0);
+    CHECK(memcmp(back, gpu_model_back(m), GPU_MODEL_FB_PIXELS) == 0);
+    CHECK_EQ(m->palette[3], 0x123u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ID), GPU_ID_VALUE);
+
+    /* The next doorbell starts normally; RESET keeps its value. */
+    test_batch(m, 0, 0, 3, 0, 1, 0, 0x43);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_DONE_SEQ), 0x43);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_PIXELS), 6);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_RESET), 1);
+    /* Unaligned writes do not reach it. */
+    gpu_model_write(m, GPU_REG_RESET + 1u, 0x99);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_RESET), 1);
+
+    free(front);
+    free(back);
+    free(m);
+}
+
+/* ------------------------------------------------------------ spans */
+
+/* Draw the primitives 0..n-1 (vertices 0..nv-1) with CLEAR and return
+ * PERF_SPANS_WRITTEN. */
+static uint32_t spans_of(gpu_model *m, uint32_t nv, uint32_t n)
+{
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, nv, 0, n, 0, 1);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_SPANS_VISITED), 0);
+    return gpu_model_read(m, GPU_REG_PERF_SPANS_WRITTEN);
+}
+
+static void test_spans(void)
+{
+    static const unsigned widths[4] = { 1, 4, 8, 16 };
+
+    /*
+     * Rectangle x 96..288, y 32..64 (pixels 6..17 x 2..3; no pixel centre
+     * on its border), split along its diagonal y = 32 + (x - 96) / 6 into
+     *   A = (96,32) (288,32) (288,64)  above the diagonal,
+     *   B = (96,32) (288,64) (96,64)   below it.
+     * The diagonal meets row 2's centres (y = 40) at x = 144 and row 3's
+     * (y = 56) at x = 240, between centres (136 | 152, 232 | 248), so
+     *   A: row 2 px 9..17,  row 3 px 15..17   (12 pixels)
+     *   B: row 2 px 6..8,   row 3 px 6..14    (12 pixels)
+     * Spans (floor(px / W), row), counted per triangle:
+     *   W=1:  A 9+3 = 12,                  B 3+9 = 12       -> 24
+     *   W=4:  A {2,3,4}+{3,4} = 5,         B {1,2}+{1,2,3} = 5 -> 10
+     *   W=8:  A {1,2}+{1,2} = 4,           B {0,1}+{0,1} = 4   -> 8
+     *   W=16: A {0,1}+{0,1} = 4,           B {0}+{0} = 2       -> 6
+     * (W=16 shows spans are counted per triangle: the union covers only 4.)
+     * Box of each: px ceil(88/16)=6 .. floor(280/16)=17, py 2..3 = 24.
+     */
+    static const uint32_t want_rect[4] = { 24, 10, 8, 6 };
+    static const uint32_t want_a[4] = { 12, 5, 4, 4 };
+
+    /*
+     * The off-grid triangle (20,4) (100,40) (30,90) of test_raster.c:
+     *   row 0: px 1   row 1: px 1..3   row 2: px 2..5   row 3: px 2..4
+     *   row 4: px 2
+     *   W=1: 12; W=4: 1+1+2+2+1 = 7; W=8: 5; W=16: 5.
+     */
+    static const uint32_t want_t2[4] = { 12, 7, 5, 5 };
+
+    /*
+     * Partly left of the screen: (-100,0) (40,8) (-100,100) covers the
+     * on-screen pixels (0,0), (1,0), (0,1) (centres (8,8), (24,8), (8,24)):
+     *   W=1: 3; W=4, 8, 16: 2 (one span in each of rows 0 and 1).
+     */
+    static const uint32_t want_left[4] = { 3, 2, 2, 2 };
+
+    /*
+     * Right edge: rectangle x 4960..5120, y 0..16 (pixels 310..319 of row
+     * 0), one triangle pair, A = top-right half, B = bottom-left half of a
+     * 160 x 16 box: the diagonal y = x'/10 (x' = x - 4960) meets the row's
+     * centre y = 8 at x' = 80 = the boundary between px 314 and 315
+     * (centres x' = 72 and 88): A covers px 315..319, B px 310..314.
+     *   W=1: 5+5 = 10
+     *   W=4: A {78, 79} (312..315 | 316..319) = 2, B {77, 78} = 2 -> 4
+     *   W=8: A {39} = 1, B {38, 39} (304..311 | 312..319) = 2      -> 3
+     *   W=16: A {19} = 1, B {19} = 1                              -> 2
+     */
+    static const uint32_t want_right[4] = { 10, 4, 3, 2 };
+
+    for (int k = 0; k < 4; k++) {
+        gpu_model *m = test_new_model_cfg(widths[k], true, false);
+
+        test_set_vtx(m, 0, 96, 32);
+        test_set_vtx(m, 1, 288, 32);
+        test_set_vtx(m, 2, 288, 64);
+        test_set_vtx(m, 3, 96, 64);
+        test_set_prim(m, 0, 0, 1, 2, 1, GPU_PRIM_KIND_TRI);
+        test_set_prim(m, 1, 0, 2, 3, 2, GPU_PRIM_KIND_TRI);
+        CHECK_EQ(spans_of(m, 4, 2), want_rect[k]);
+        CHECK_PERF6(m, 2, 2, 0, 24, 48, want_rect[k]);
+        /* Only the other winding of A: the same. */
+        test_set_prim(m, 0, 0, 2, 1, 1, GPU_PRIM_KIND_TRI);
+        CHECK_EQ(spans_of(m, 4, 1), want_a[k]);
+
+        test_set_vtx(m, 0, 20, 4);
+        test_set_vtx(m, 1, 100, 40);
+        test_set_vtx(m, 2, 30, 90);
+        test_set_prim(m, 0, 0, 1, 2, 1, GPU_PRIM_KIND_TRI);
+        CHECK_EQ(spans_of(m, 3, 1), want_t2[k]);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_PIXELS), 12);
+
+        test_set_vtx(m, 0, -100, 0);
+        test_set_vtx(m, 1, 40, 8);
+        test_set_vtx(m, 2, -100, 100);
+        CHECK_EQ(spans_of(m, 3, 1), want_left[k]);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_PIXELS), 3);
+
+        test_set_vtx(m, 0, 4960, 0);
+        test_set_vtx(m, 1, 5120, 0);
+        test_set_vtx(m, 2, 5120, 16);
+        test_set_vtx(m, 3, 4960, 16);
+        test_set_prim(m, 1, 0, 2, 3, 2, GPU_PRIM_KIND_TRI);
+        CHECK_EQ(spans_of(m, 4, 2), want_right[k]);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_PIXELS), 10);
+        CHECK_EQ(test_back_px(m, 314, 0), 2);
+        CHECK_EQ(test_back_px(m, 315, 0), 1);
+
+        /* A rejected (zero-area / off-screen) triangle and a line add no
+         * spans; a line after a triangle leaves the triangle's count. */
+        test_set_vtx(m, 0, 20, 4);
+        test_set_vtx(m, 1, 100, 40);
+        test_set_vtx(m, 2, 30, 90);
+        test_set_vtx(m, 3, -500, -500);
+        test_set_prim(m, 0, 0, 1, 2, 1, GPU_PRIM_KIND_TRI);
+        test_set_prim(m, 1, 0, 1, 1, 2, GPU_PRIM_KIND_TRI);  /* zero area */
+        test_set_prim(m, 2, 3, 3, 3, 2, GPU_PRIM_KIND_TRI);  /* zero area */
+        test_set_prim(m, 3, 0, 1, 0, 3, GPU_PRIM_KIND_LINE); /* 5 px line */
+        CHECK_EQ(spans_of(m, 4, 4), want_t2[k]);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_TRIS_DRAWN), 2);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_TRIS_REJECTED), 2);
+
+        /* The next batch starts the counter from 0; ERR_COUNT leaves 0. */
+        CHECK_EQ(spans_of(m, 4, 0), 0);
+        test_batch(m, 0, 0, 4, 0, GPU_TRI_CAP + 1u, 0, 2);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_COUNT_MASK);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_SPANS_WRITTEN), 0);
+
+        free(m);
+    }
+
+    /* A screen-filling triangle: every row has 320 / W spans, 240 rows. */
+    for (int k = 0; k < 4; k++) {
+        gpu_model *m = test_new_model_cfg(widths[k], false, false);
+        test_set_vtx(m, 0, -32768, -32768);
+        test_set_vtx(m, 1, 32767, -32768);
+        test_set_vtx(m, 2, 0, 32767);
+        test_set_prim(m, 0, 0, 1, 2, 1, GPU_PRIM_KIND_TRI);
+        CHECK_EQ(spans_of(m, 3, 1), 240u * (320u / widths[k]));
+        free(m);
+    }
+}
+
+void test_config(void)
+{
+    test_caps();
+    test_ctrl();
+    test_reset_reg();
+    test_spans();
+}
