@@ -12,6 +12,7 @@ VERILATOR   ?= verilator
 
 SPAN_W      ?= 8
 GPUSIM      := $(BUILD)/sim-w$(SPAN_W)/gpusim
+BENCH_SIMS  := $(foreach w,1 4 8 16,$(BUILD)/sim-w$(w)/gpusim)
 
 # Firmware (FW_ELF, fw_unit) and golden model (GPU_MODEL_SRC, model_unit) rules.
 include firmware/firmware.mk
@@ -24,7 +25,8 @@ HOST_C     := cosim/vga_monitor.c cosim/png_write.c $(GPU_MODEL_SRC)
 HOST_LIB   := $(BUILD)/host/libcosim.a
 HOST_INC   := -Icosim -Igpu_model -Ifirmware/include -Ibsp/qemu_virt
 
-.PHONY: all setup run run-headless test test-quick lint check-contract contract random-long clean help
+.PHONY: all setup run run-headless test test-quick lint check-contract contract random-long raster \
+        bench-gpu synth clean
 
 all: $(FW_ELF) $(GPUSIM)
 
@@ -43,7 +45,7 @@ run-headless: $(FW_ELF) $(GPUSIM)
 test: setup
 	@$(MAKE) --no-print-directory test-quick
 
-test-quick: $(FW_ELF) $(GPUSIM) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit
+test-quick: $(FW_ELF) $(BENCH_SIMS) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit
 	@GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) bash tests/run_all.sh
 
 # ---- the contract: regenerate, or check that the generated files are current ----
@@ -58,7 +60,25 @@ lint:
 
 # ---- longer randomized RTL-vs-model run ----
 random-long: $(GPUSIM)
-	for seed in 101 102 103 104 105 106 107 108; do $(GPUSIM) random --seed $$seed --batches 200 || exit 1; done
+	for seed in 101 102 103 104 105 106 107 108 109 110; do \
+	  $(GPUSIM) random --seed $$seed --batches 440 --tris 500 --swap-percent 10 --min-prims 100000 || exit 1; done
+
+# ---- the GPU without firmware: a primitive list through RTL and model ----
+raster: $(GPUSIM)
+	@test -n "$(IN)" -a -n "$(OUT)" || { echo "usage: make raster IN=<list> OUT=<dir>"; exit 2; }
+	$(GPUSIM) raster --in $(IN) --out $(OUT)
+
+# ---- GPU performance, counted in simulated cycles, for each span width ----
+bench-gpu: $(BENCH_SIMS) $(FW_ELF)
+	@rm -rf $(BUILD)/bench-gpu/scene-lists && mkdir -p $(BUILD)/bench-gpu/scene-lists
+	@$(GPUSIM) cosim --fw $(FW_ELF) --frames $(BUILD)/bench-gpu/scene-frames --no-model-check \
+	  --dump-lists $(BUILD)/bench-gpu/scene-lists >/dev/null
+	@$(PYTHON) tools/bench_gpu.py $(BUILD) $(BUILD)/bench-gpu/scene-lists
+
+# ---- synthesis: yosys for 7-series (resource counts) and iCE40 place-and-route (fmax) ----
+synth:
+	@bash tools/setup.sh packages-synth.txt
+	@bash synth/synth.sh $(BUILD)
 
 # ---- host-side simulator: Verilated GPU + co-simulation bridge + golden model ----
 HOST_OBJ := $(patsubst %.c,$(BUILD)/host/%.o,$(HOST_C))

@@ -51,6 +51,7 @@ struct Options {
     bool check_model = true;
     std::vector<std::pair<uint32_t, std::string>> keys_at;  // (batch number, text) to type
     uint32_t drop_doorbell = 0;                              // batch number never serviced (0: none)
+    std::string dump_lists;                                  // directory for each batch as a primitive list
 };
 
 double now_s()
@@ -65,9 +66,10 @@ int usage()
     std::fprintf(stderr,
                  "usage: gpusim cosim --fw FIRMWARE.elf [--frames DIR] [--qemu PATH] [--uart-log FILE]\n"
                  "                    [--idle-timeout SECONDS] [--max-batch-cycles N] [--no-model-check]\n"
-                 "                    [--keys-at N:TEXT]... [--drop-doorbell N]\n"
+                 "                    [--keys-at N:TEXT]... [--drop-doorbell N] [--dump-lists DIR]\n"
                  "  --keys-at N:TEXT   type TEXT into the firmware's UART just before servicing doorbell N (from 1)\n"
                  "  --drop-doorbell N  ignore doorbell N, as a hung GPU would (the firmware's watchdog must RESET)\n"
+                 "  --dump-lists DIR   write each batch as DIR/batchNNNN.txt in the `make raster` list format\n"
                  "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n");
     return 2;
 }
@@ -97,6 +99,8 @@ bool parse(int argc, char **argv, Options &o)
                 return false;
             }
             o.keys_at.emplace_back(static_cast<uint32_t>(std::strtoul(spec.c_str(), nullptr, 10)), spec.substr(colon + 1));
+        } else if (a == "--dump-lists" && has_value) {
+            o.dump_lists = argv[++i];
         } else if (a == "--drop-doorbell" && has_value) {
             o.drop_doorbell = static_cast<uint32_t>(std::strtoul(argv[++i], nullptr, 10));
         } else if (a == "--no-model-check") {
@@ -124,6 +128,7 @@ private:
     void service_reset(uint32_t value);
     bool service_batch(uint32_t tag);
     void publish_registers();
+    void dump_list();
     int fail(const char *fmt, ...) __attribute__((format(printf, 2, 3)));
     void shutdown();
 
@@ -307,6 +312,49 @@ void Bridge::service_reset(uint32_t value)
     publish_registers();
 }
 
+// The batch about to run, as a primitive list (vertices expanded; invalid primitives left out).
+void Bridge::dump_list()
+{
+    const auto reg = [&](uint32_t offset) { return shadow_[offset / 4]; };
+    char path[512];
+    std::snprintf(path, sizeof path, "%s/batch%04u.txt", opt_.dump_lists.c_str(), batches_);
+    FILE *f = std::fopen(path, "w");
+    if (f == nullptr) {
+        return;
+    }
+    if (reg(GPU_REG_CTRL) & GPU_CTRL_CLEAR_MASK) {
+        std::fprintf(f, "clear %u\n", reg(GPU_REG_CLEAR_COLOR) & 0xFFu);
+    }
+    const uint32_t vbase = reg(GPU_REG_VTX_BASE), vcount = reg(GPU_REG_VTX_COUNT);
+    const uint32_t tbase = reg(GPU_REG_TRI_BASE), tcount = reg(GPU_REG_TRI_COUNT);
+    const auto vertex = [&](uint32_t i, int &x, int &y) {
+        const uint32_t w = shadow_[(GPU_WIN_VTX + 8 * (vbase + i)) / 4];
+        x = static_cast<int16_t>(w >> GPU_VTX_X_LSB);
+        y = static_cast<int16_t>(w >> GPU_VTX_Y_LSB);
+    };
+    for (uint32_t t = 0; t < tcount && tbase + t < GPU_TRI_CAP && vbase + vcount <= GPU_VTX_CAP; t++) {
+        const uint32_t w0 = shadow_[(GPU_WIN_IDX + 8 * (tbase + t)) / 4];
+        const uint32_t w1 = shadow_[(GPU_WIN_IDX + 8 * (tbase + t) + 4) / 4];
+        const uint32_t i0 = (w0 >> GPU_PRIM_I0_LSB) & GPU_PRIM_I0_MASK, i1 = (w0 >> GPU_PRIM_I1_LSB) & GPU_PRIM_I1_MASK;
+        const uint32_t i2 = (w1 >> GPU_PRIM_I2_LSB) & GPU_PRIM_I2_MASK;
+        const uint32_t color = (w1 >> GPU_PRIM_COLOR_LSB) & GPU_PRIM_COLOR_MASK;
+        const uint32_t kind = (w1 >> GPU_PRIM_KIND_LSB) & GPU_PRIM_KIND_MASK;
+        int x0, y0, x1, y1, x2, y2;
+        if (i0 >= vcount || i1 >= vcount) {
+            continue;
+        }
+        vertex(i0, x0, y0);
+        vertex(i1, x1, y1);
+        if (kind == GPU_PRIM_KIND_LINE) {
+            std::fprintf(f, "line %d %d %d %d %u\n", x0, y0, x1, y1, color);
+        } else if (kind == GPU_PRIM_KIND_TRI && i2 < vcount) {
+            vertex(i2, x2, y2);
+            std::fprintf(f, "tri %d %d %d %d %d %d %u\n", x0, y0, x1, y1, x2, y2, color);
+        }
+    }
+    std::fclose(f);
+}
+
 // Copy the GPU's read-only registers into the shared window, DONE_SEQ last (kReadOnlyRegs order).
 void Bridge::publish_registers()
 {
@@ -343,6 +391,9 @@ bool Bridge::service_batch(uint32_t tag)
         shadow_[doorbell_word] = tag;
         std::printf("cosim: doorbell %u (tag %u) dropped on purpose (--drop-doorbell)\n", batches_, tag);
         return true;
+    }
+    if (!opt_.dump_lists.empty()) {
+        dump_list();
     }
     const uint32_t frames_before = sim_.read(GPU_REG_FRAME_COUNT);
     sim_.write(GPU_REG_DOORBELL, tag);

@@ -1,6 +1,7 @@
 // rtl_check: seeded random batches driven into the RTL and the golden model through the same bus
 // writes; every frame is captured from the VGA pins and must equal the model's, pixel for pixel, and
 // every read-only register except the cycle counter must agree. Prints a reproducer on failure.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -72,6 +73,8 @@ int rtl_check_main(int argc, char **argv)
     uint64_t seed = 1;
     int batches = 40;
     int max_tris = 48;
+    uint64_t min_prims = 0;     // fail unless at least this many primitives were checked
+    uint32_t swap_percent = 80;  // batches that end with a swap (and a frame captured from the VGA pins)
     for (int i = 0; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
         if (a == "--seed") {
@@ -80,8 +83,12 @@ int rtl_check_main(int argc, char **argv)
             batches = std::atoi(argv[i + 1]);
         } else if (a == "--tris") {
             max_tris = std::atoi(argv[i + 1]);
+        } else if (a == "--swap-percent") {
+            swap_percent = static_cast<uint32_t>(std::atoi(argv[i + 1]));
+        } else if (a == "--min-prims") {
+            min_prims = std::strtoull(argv[i + 1], nullptr, 0);
         } else {
-            std::fprintf(stderr, "usage: gpusim random [--seed N] [--batches N] [--tris N]\n");
+            std::fprintf(stderr, "usage: gpusim random [--seed N] [--batches N] [--tris N] [--min-prims N] [--swap-percent P]\n");
             return 2;
         }
     }
@@ -93,13 +100,24 @@ int rtl_check_main(int argc, char **argv)
     uint64_t tris = 0, pixels = 0, frames = 0, resets = 0;
     bool must_clear = false;
 
+    // Contract probes the random batches cannot reach: a write while busy is dropped and flagged,
+    // and the write-only windows read 0.
+    write(GPU_REG_CTRL, GPU_CTRL_CLEAR_MASK);
+    write(GPU_REG_DOORBELL, 0xB0B0);
+    sim.write(GPU_WIN_VTX, 0x12345678);  // during the clear: dropped (the model never sees it)
+    if (!sim.wait_done(0xB0B0, 1000000) || !(sim.read(GPU_REG_ERRORS) & GPU_ERR_WRITE_BUSY_MASK) ||
+        sim.read(GPU_WIN_VTX) != 0 || sim.read(GPU_WIN_PALETTE) != 0) {
+        std::printf("random: a write while busy was not flagged with ERR_WRITE_BUSY, or a write-only window read non-zero\n");
+        return 1;
+    }
+
     for (int p = 0; p < 256; p++) {
         write(GPU_WIN_PALETTE + 4 * p, r.below(4096));
     }
     for (int b = 0; b < batches; b++) {
         // Buffers at random places inside the capacity.
         const uint32_t nv = 3 + r.below(61);
-        const uint32_t nt = 1 + r.below(static_cast<uint32_t>(max_tris));
+        const uint32_t nt = 1 + r.below(std::min<uint32_t>(static_cast<uint32_t>(max_tris), GPU_TRI_CAP));
         const uint32_t vbase = r.below(GPU_VTX_CAP - nv + 1);
         const uint32_t tbase = r.below(GPU_TRI_CAP - nt + 1);
         const int family = static_cast<int>(r.below(5));
@@ -129,7 +147,7 @@ int rtl_check_main(int argc, char **argv)
         // Now and then a watchdog's RESET lands in the middle of a batch that does not swap; the
         // next batch then clears, which makes RTL and model agree again (the model has no "middle").
         const bool reset_probe = !over_capacity && r.chance(5) && b != batches - 1;
-        const bool swap = !reset_probe && (r.chance(80) || b == batches - 1);
+        const bool swap = !reset_probe && (r.chance(swap_percent) || b == batches - 1);
         const bool clear = r.chance(50) || b == 0 || must_clear;
         must_clear = reset_probe;
         write(GPU_WIN_REGS + GPU_REG_VTX_BASE, vbase);
@@ -178,6 +196,11 @@ int rtl_check_main(int argc, char **argv)
         }
         tris += sim.read(GPU_REG_PERF_TRIS_IN);
         pixels += sim.read(GPU_REG_PERF_PIXELS);
+    }
+    if (tris < min_prims) {
+        std::printf("random: only %llu primitives checked, fewer than the %llu asked for\n",
+                    static_cast<unsigned long long>(tris), static_cast<unsigned long long>(min_prims));
+        return 1;
     }
     std::printf("random: seed %llu: %d batches, %llu primitives, %llu pixels, %llu frames, %llu resets: RTL equals model\n",
                 static_cast<unsigned long long>(seed), batches, static_cast<unsigned long long>(tris),

@@ -1,13 +1,14 @@
 /*
  * gpu_model.c - bit-exact golden C model of the GPU (see gpu_model.h).
  *
- * Every rule here is a transcription of docs/gpu-contract.md; the comments
- * quote the step they implement.  The rasterizer is deliberately the plainest
- * possible reading of the "Triangle rule (exact)": for every pixel centre of
- * the clamped bounding box it evaluates the three edge functions from scratch
- * in 64-bit arithmetic.  A hardware rasterizer steps the edge values
- * incrementally; keeping the model direct means the two do not share the
- * stepping logic, so a stepping bug shows up as a mismatch.
+ * Every rule here is a transcription of docs/gpu-contract.md (version 1.1);
+ * the comments quote the step they implement.  The rasterizer is deliberately
+ * the plainest possible reading of the "Triangle rule (exact)": for every
+ * pixel centre of the clamped bounding box it evaluates the three edge
+ * functions, and for a covered pixel the depth plane, from scratch in 64-bit
+ * arithmetic.  A hardware rasterizer steps edge and depth values
+ * incrementally, W pixels at a time; keeping the model direct means the two
+ * do not share the stepping logic, so a stepping bug shows up as a mismatch.
  */
 #include "gpu_model.h"
 
@@ -29,11 +30,16 @@
 #define VTX_WORDS_TOTAL (GPU_VTX_CAP * GPU_VTX_WORDS)
 #define IDX_WORDS_TOTAL (GPU_TRI_CAP * GPU_PRIM_WORDS)
 
-/* A vertex position in Q12.4, widened so every later product is exact. */
+/* A vertex: position in Q12.4 and depth (VTX_Z, unsigned 16-bit), widened
+ * so every later product is exact. */
 typedef struct {
     int64_t x;
     int64_t y;
+    int64_t z;
 } gpu_model_pt;
+
+/* Q16 fixed point of the depth plane. */
+#define DEPTH_ONE ((int64_t)1 << 16)
 
 /* Outcome of one primitive, for the PERF_* counters. */
 typedef enum {
@@ -78,9 +84,33 @@ static int64_t max3(int64_t a, int64_t b, int64_t c)
     return m > c ? m : c;
 }
 
+/* trunc(a / b) for b > 0: C division already rounds toward zero. */
+static int64_t trunc_div(int64_t a, int64_t b)
+{
+    return a / b;
+}
+
+/* Saturate to a signed 32-bit value, -2^31 ... 2^31 - 1. */
+static int64_t sat32(int64_t v)
+{
+    if (v > INT32_MAX) {
+        return INT32_MAX;
+    }
+    if (v < INT32_MIN) {
+        return INT32_MIN;
+    }
+    return v;
+}
+
 static uint8_t *back_buffer(gpu_model *m)
 {
     return m->fb[(m->front & 1u) ^ 1u];
+}
+
+static bool on_screen(int64_t px, int64_t py)
+{
+    return px >= 0 && px < (int64_t)GPU_FB_WIDTH && py >= 0 &&
+           py < (int64_t)GPU_FB_HEIGHT;
 }
 
 /* ------------------------------------------------------------- rasterizer */
@@ -109,14 +139,57 @@ static bool edge_covers(int64_t e, bool top_left)
     return e > 0 || (e == 0 && top_left);
 }
 
-/* Draw one triangle into `fb` following "Triangle rule (exact)".  Adds its
- * samples and pixels to the counters and reports drawn / rejected. */
-static prim_result draw_triangle(gpu_model *m, uint8_t *fb,
-                                 gpu_model_pt v0, gpu_model_pt v1,
-                                 gpu_model_pt v2, uint8_t color)
+/* Depth plane of an oriented triangle (contract "Depth"):
+ *   ZA = sat32(trunc(2^16 (dz1 dy2 - dz2 dy1) / area))
+ *   ZB = sat32(trunc(2^16 (dz2 dx1 - dz1 dx2) / area))
+ * The numerators are below 2^33, times 2^16 below 2^49: exact in int64. */
+typedef struct {
+    int64_t za;
+    int64_t zb;
+} depth_plane;
+
+static depth_plane depth_setup(gpu_model_pt v0, gpu_model_pt v1,
+                               gpu_model_pt v2, int64_t area)
 {
-    /* area = E_v0v1(v2); zero area is rejected, negative area swaps v1/v2 so
-     * both windings rasterize identically. */
+    int64_t dx1 = v1.x - v0.x, dy1 = v1.y - v0.y, dz1 = v1.z - v0.z;
+    int64_t dx2 = v2.x - v0.x, dy2 = v2.y - v0.y, dz2 = v2.z - v0.z;
+    depth_plane d;
+    d.za = sat32(trunc_div(DEPTH_ONE * (dz1 * dy2 - dz2 * dy1), area));
+    d.zb = sat32(trunc_div(DEPTH_ONE * (dz2 * dx1 - dz1 * dx2), area));
+    return d;
+}
+
+/* z(p) = clamp(floor((2^16 z0 + ZA (p.x - x0) + ZB (p.y - y0)) / 2^16),
+ *              0, 65535), evaluated directly at p.  |ZA (p.x - x0)| < 2^48,
+ * the sum < 2^50: exact in int64. */
+static uint16_t depth_at(const depth_plane *d, gpu_model_pt v0,
+                         gpu_model_pt p)
+{
+    int64_t sum = DEPTH_ONE * v0.z + d->za * (p.x - v0.x) +
+                  d->zb * (p.y - v0.y);
+    int64_t z = floor_div(sum, DEPTH_ONE);
+    if (z < 0) {
+        z = 0;
+    }
+    if (z > 0xFFFF) {
+        z = 0xFFFF;
+    }
+    return (uint16_t)z;
+}
+
+/* Draw one triangle into the back buffer following "Triangle rule (exact)"
+ * and, with ztest (CTRL_ZTEST on a GPU built with the depth buffer),
+ * "Depth".  Adds its samples, spans and pixels to the counters and reports
+ * drawn / rejected. */
+static prim_result draw_triangle(gpu_model *m, gpu_model_pt v0,
+                                 gpu_model_pt v1, gpu_model_pt v2,
+                                 uint8_t color, bool ztest)
+{
+    uint8_t *fb = back_buffer(m);
+
+    /* area = E_v0v1(v2); zero area is rejected, negative area swaps v1/v2
+     * (position and depth: the vertices themselves) so both windings
+     * rasterize identically; area is then its absolute value. */
     int64_t area = edge_fn(v0, v1, v2);
     if (area == 0) {
         return PRIM_REJECTED;
@@ -125,6 +198,7 @@ static prim_result draw_triangle(gpu_model *m, uint8_t *fb,
         gpu_model_pt t = v1;
         v1 = v2;
         v2 = t;
+        area = -area;
     }
 
     /* Clamped bounding box: exactly the pixels whose centres 16*p + 8 lie in
@@ -158,18 +232,103 @@ static prim_result draw_triangle(gpu_model *m, uint8_t *fb,
     bool tl12 = edge_is_top_left(v1, v2);
     bool tl20 = edge_is_top_left(v2, v0);
 
+    depth_plane plane = { 0, 0 };
+    if (ztest) {
+        plane = depth_setup(v0, v1, v2, area);
+    }
+
     m->perf.samples += (uint32_t)((px1 - px0 + 1) * (py1 - py0 + 1));
 
+    /* Spans: pixel (px, py) is in span (floor(px / W), py); px >= 0 here, so
+     * C division is the floor. */
+    const int64_t span_w = (int64_t)m->cfg.span_w;
+
     for (int64_t py = py0; py <= py1; py++) {
+        int64_t last_span = -1; /* last span of this row already counted */
         for (int64_t px = px0; px <= px1; px++) {
             gpu_model_pt p = { SUBPIXEL_ONE * px + SUBPIXEL_HALF,
-                               SUBPIXEL_ONE * py + SUBPIXEL_HALF };
-            if (edge_covers(edge_fn(v0, v1, p), tl01) &&
-                edge_covers(edge_fn(v1, v2, p), tl12) &&
-                edge_covers(edge_fn(v2, v0, p), tl20)) {
-                fb[(size_t)py * GPU_FB_WIDTH + (size_t)px] = color;
+                               SUBPIXEL_ONE * py + SUBPIXEL_HALF, 0 };
+            if (!(edge_covers(edge_fn(v0, v1, p), tl01) &&
+                  edge_covers(edge_fn(v1, v2, p), tl12) &&
+                  edge_covers(edge_fn(v2, v0, p), tl20))) {
+                continue;
+            }
+            /* Covered (edge test only, before any depth test). */
+            if (px / span_w != last_span) {
+                last_span = px / span_w;
+                m->perf.spans_written++;
+            }
+            size_t i = (size_t)py * GPU_FB_WIDTH + (size_t)px;
+            if (ztest) {
+                /* Written only if strictly nearer; the depth then replaces
+                 * the stored one. */
+                uint16_t z = depth_at(&plane, v0, p);
+                if (!(z < m->zbuf[i])) {
+                    continue;
+                }
+                m->zbuf[i] = z;
+            }
+            fb[i] = color;
+            m->perf.pixels++;
+        }
+    }
+    return PRIM_DRAWN;
+}
+
+/* Draw one line following "Line rule (exact)": endpoints are the pixels
+ * holding the vertices (floor of Q12.4 / 16), Bresenham over n = max(ax, ay)
+ * steps, plotting before each step (first endpoint drawn, last not),
+ * off-screen plots skipped.  Lines neither test nor write depth and add
+ * nothing to PERF_SPANS_WRITTEN. */
+static prim_result draw_line(gpu_model *m, gpu_model_pt a, gpu_model_pt b,
+                             uint8_t color)
+{
+    uint8_t *fb = back_buffer(m);
+
+    /* X = x >> 4 (arithmetic shift = floor), written as a floor division so
+     * it does not rely on >> of negative numbers. */
+    int64_t x = floor_div(a.x, SUBPIXEL_ONE);
+    int64_t y = floor_div(a.y, SUBPIXEL_ONE);
+    int64_t dx = floor_div(b.x, SUBPIXEL_ONE) - x;
+    int64_t dy = floor_div(b.y, SUBPIXEL_ONE) - y;
+    int64_t sx = dx < 0 ? -1 : 1;
+    int64_t sy = dy < 0 ? -1 : 1;
+    int64_t ax = dx < 0 ? -dx : dx;
+    int64_t ay = dy < 0 ? -dy : dy;
+    int64_t n = ax > ay ? ax : ay;
+    if (n == 0) {
+        return PRIM_REJECTED; /* zero length: no error flag */
+    }
+
+    m->perf.samples += (uint32_t)n;
+
+    if (ax >= ay) {
+        int64_t e = 2 * ay - ax;
+        for (int64_t k = 0; k < n; k++) {
+            if (on_screen(x, y)) {
+                fb[(size_t)y * GPU_FB_WIDTH + (size_t)x] = color;
                 m->perf.pixels++;
             }
+            if (e > 0) {
+                y += sy;
+                e -= 2 * ax;
+            }
+            e += 2 * ay;
+            x += sx;
+        }
+    } else {
+        int64_t e = 2 * ax - ay;
+        for (int64_t k = 0; k < n; k++) {
+            if (on_screen(x, y)) {
+                fb[(size_t)y * GPU_FB_WIDTH + (size_t)x] = color;
+                m->perf.pixels++;
+            }
+            if (e > 0) {
+                x += sx;
+                e -= 2 * ay;
+            }
+            e += 2 * ax;
+            y += sy;
         }
     }
     return PRIM_DRAWN;
@@ -180,13 +339,14 @@ static gpu_model_pt vertex_pos(const gpu_model *m, uint32_t index)
 {
     const uint32_t *w = &m->vtx[(size_t)index * GPU_VTX_WORDS];
     gpu_model_pt p = { sign_extend(GPU_MODEL_FIELD(w, VTX_X), GPU_VTX_X_MASK),
-                       sign_extend(GPU_MODEL_FIELD(w, VTX_Y), GPU_VTX_Y_MASK) };
+                       sign_extend(GPU_MODEL_FIELD(w, VTX_Y), GPU_VTX_Y_MASK),
+                       (int64_t)GPU_MODEL_FIELD(w, VTX_Z) };
     return p;
 }
 
 /* One primitive, contract "Primitives" steps 2-4 (step 1, the TRIS_IN count,
- * is done by the caller). */
-static prim_result run_primitive(gpu_model *m, uint32_t prim)
+ * is done by the caller).  ztest: depth-test triangles. */
+static prim_result run_primitive(gpu_model *m, uint32_t prim, bool ztest)
 {
     const uint32_t *w = &m->idx[(size_t)prim * GPU_PRIM_WORDS];
     uint32_t kind = GPU_MODEL_FIELD(w, PRIM_KIND);
@@ -195,27 +355,33 @@ static prim_result run_primitive(gpu_model *m, uint32_t prim)
     uint32_t i2 = GPU_MODEL_FIELD(w, PRIM_I2);
     uint8_t color = (uint8_t)GPU_MODEL_FIELD(w, PRIM_COLOR);
 
-    /* 2. Kind: the model supports triangles only (CAPS_LINES = 0), so a line
-     *    or an unknown kind is skipped with ERR_KIND. */
-    if (kind != GPU_PRIM_KIND_TRI) {
+    bool is_line = kind == GPU_PRIM_KIND_LINE;
+
+    /* 2. Kind: triangles always, lines only when built with them; anything
+     *    else is skipped with ERR_KIND. */
+    if (!(kind == GPU_PRIM_KIND_TRI || (is_line && m->cfg.lines))) {
         m->errors |= GPU_ERR_KIND_MASK;
         return PRIM_REJECTED;
     }
 
-    /* 3. Indices are relative to VTX_BASE and must be < VTX_COUNT; the batch
-     *    check already guaranteed VTX_BASE + VTX_COUNT <= VTX_CAP, so an
-     *    accepted index never reads outside the vertex buffer. */
+    /* 3. The indices the primitive uses (I0, I1, I2 for a triangle; I0, I1
+     *    for a line) are relative to VTX_BASE and must be < VTX_COUNT; the
+     *    batch check already guaranteed VTX_BASE + VTX_COUNT <= VTX_CAP, so
+     *    an accepted index never reads outside the vertex buffer. */
     uint32_t count = m->regs.vtx_count;
-    if (i0 >= count || i1 >= count || i2 >= count) {
+    if (i0 >= count || i1 >= count || (!is_line && i2 >= count)) {
         m->errors |= GPU_ERR_VTX_INDEX_MASK;
         return PRIM_REJECTED;
     }
 
-    /* 4. Triangle rule. */
+    /* 4. Line rule or triangle rule. */
     uint32_t base = m->regs.vtx_base;
-    return draw_triangle(m, back_buffer(m), vertex_pos(m, base + i0),
-                         vertex_pos(m, base + i1), vertex_pos(m, base + i2),
+    if (is_line) {
+        return draw_line(m, vertex_pos(m, base + i0), vertex_pos(m, base + i1),
                          color);
+    }
+    return draw_triangle(m, vertex_pos(m, base + i0), vertex_pos(m, base + i1),
+                         vertex_pos(m, base + i2), color, ztest);
 }
 
 /* A batch, contract "A batch, and the frame handshake" steps 1-6, run to
@@ -223,6 +389,10 @@ static prim_result run_primitive(gpu_model *m, uint32_t prim)
 static void run_batch(gpu_model *m, uint32_t tag)
 {
     uint32_t ctrl = m->regs.ctrl; /* CTRL is sampled at the doorbell */
+    /* CTRL_ZTEST / CTRL_ZCLEAR only do something on a GPU built with the
+     * depth buffer; otherwise they are ignored. */
+    bool ztest = m->cfg.zbuf && (ctrl & GPU_CTRL_ZTEST_MASK) != 0;
+    bool zclear = m->cfg.zbuf && (ctrl & GPU_CTRL_ZCLEAR_MASK) != 0;
 
     /* 1. Clear ERRORS and the PERF_* counters. */
     m->errors = 0;
@@ -236,15 +406,22 @@ static void run_batch(gpu_model *m, uint32_t tag)
     if (count_bad) {
         m->errors |= GPU_ERR_COUNT_MASK; /* skip clear and draw */
     } else {
-        /* 3. Clear the back buffer to CLEAR_COLOR[7:0]. */
+        /* 3. Clear the back buffer to CLEAR_COLOR[7:0]; and, independently,
+         *    the depth buffer to 0xFFFF. */
         if (ctrl & GPU_CTRL_CLEAR_MASK) {
             memset(back_buffer(m), (int)(m->regs.clear_color & 0xFFu),
                    GPU_MODEL_FB_PIXELS);
         }
+        if (zclear) {
+            for (size_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
+                m->zbuf[i] = 0xFFFFu;
+            }
+        }
         /* 4. Primitives in order; later ones overwrite earlier ones. */
         for (uint32_t i = 0; i < m->regs.tri_count; i++) {
             m->perf.tris_in++;
-            if (run_primitive(m, m->regs.tri_base + i) == PRIM_DRAWN) {
+            if (run_primitive(m, m->regs.tri_base + i, ztest) ==
+                PRIM_DRAWN) {
                 m->perf.tris_drawn++;
             } else {
                 m->perf.tris_rejected++;
@@ -265,11 +442,44 @@ static void run_batch(gpu_model *m, uint32_t tag)
 
 /* -------------------------------------------------------------------- bus */
 
+static bool span_w_supported(unsigned w)
+{
+    return w == 1u || w == 4u || w == 8u || w == 16u;
+}
+
+void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
+{
+    gpu_model_config c = { GPU_MODEL_DEFAULT_SPAN_W, GPU_MODEL_DEFAULT_LINES,
+                           GPU_MODEL_DEFAULT_ZBUF };
+    if (cfg != NULL) {
+        c = *cfg;
+        if (!span_w_supported(c.span_w)) {
+            c.span_w = GPU_MODEL_DEFAULT_SPAN_W;
+        }
+    }
+    /* Everything is zero at power-on: registers (RESET included), counters,
+     * front = 0, palette black, both framebuffers palette index 0, depth
+     * buffer 0 (block RAM initial values). */
+    memset(m, 0, sizeof *m);
+    m->cfg = c;
+}
+
 void gpu_model_reset(gpu_model *m)
 {
-    /* Everything is zero at power-on: registers, counters, front = 0,
-     * palette black, both framebuffers palette index 0. */
-    memset(m, 0, sizeof *m);
+    gpu_model_reset_config(m, NULL);
+}
+
+uint32_t gpu_model_caps(const gpu_model *m)
+{
+    uint32_t caps = ((uint32_t)m->cfg.span_w << GPU_CAPS_SPAN_W_LSB) &
+                    GPU_CAPS_SPAN_W_MASK;
+    if (m->cfg.lines) {
+        caps |= GPU_CAPS_LINES_MASK;
+    }
+    if (m->cfg.zbuf) {
+        caps |= GPU_CAPS_ZBUF_MASK;
+    }
+    return caps;
 }
 
 void gpu_model_write(gpu_model *m, uint32_t offset, uint32_t value)
@@ -305,7 +515,7 @@ void gpu_model_write(gpu_model *m, uint32_t offset, uint32_t value)
      * read-only registers and to holes are ignored. */
     switch (offset) {
     case GPU_REG_CTRL:
-        m->regs.ctrl = value;
+        m->regs.ctrl = value & GPU_MODEL_CTRL_BITS; /* the 4 defined bits */
         break;
     case GPU_REG_VTX_BASE:
         m->regs.vtx_base = value;
@@ -328,6 +538,12 @@ void gpu_model_write(gpu_model *m, uint32_t offset, uint32_t value)
         m->regs.doorbell = value;
         run_batch(m, value);
         break;
+    case GPU_REG_RESET:
+        /* Aborts the running batch: there never is one in the model (a
+         * batch completes inside the DOORBELL write), so the value is only
+         * stored, to read back. */
+        m->regs.reset = value;
+        break;
     default:
         break;
     }
@@ -346,7 +562,7 @@ uint32_t gpu_model_read(const gpu_model *m, uint32_t offset)
     case GPU_REG_VERSION:
         return GPU_VERSION_VALUE;
     case GPU_REG_CAPS:
-        return GPU_MODEL_CAPS;
+        return gpu_model_caps(m);
     case GPU_REG_VTX_CAP:
         return GPU_VTX_CAP;
     case GPU_REG_TRI_CAP:
@@ -367,6 +583,8 @@ uint32_t gpu_model_read(const gpu_model *m, uint32_t offset)
         return m->regs.clear_color;
     case GPU_REG_DOORBELL:
         return m->regs.doorbell;
+    case GPU_REG_RESET:
+        return m->regs.reset;
     case GPU_REG_STATUS:
         /* BUSY is always 0 between calls: batches complete inside write. */
         return (m->front << GPU_STATUS_FRONT_LSB) & GPU_STATUS_FRONT_MASK;
@@ -388,6 +606,10 @@ uint32_t gpu_model_read(const gpu_model *m, uint32_t offset)
         return m->perf.pixels;
     case GPU_REG_PERF_SAMPLES:
         return m->perf.samples;
+    case GPU_REG_PERF_SPANS_WRITTEN:
+        return m->perf.spans_written;
+    case GPU_REG_PERF_SPANS_VISITED:
+        return 0; /* implementation-specific, not modelled */
     default:
         return 0;
     }

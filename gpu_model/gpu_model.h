@@ -1,22 +1,28 @@
 /*
- * gpu_model.h - bit-exact golden C model of the GPU.
+ * gpu_model.h - bit-exact golden C model of the GPU (contract 1.1).
  *
  * Written only from docs/gpu-contract.md and the generated register map
  * (firmware/include/gpu_regs.h), never from the RTL, so that the two readers of
  * the contract cannot share a bug by sharing code.  It must agree with the RTL
- * on every framebuffer pixel and every register except PERF_BUSY_CYCLES.
+ * on every framebuffer pixel and every register except PERF_BUSY_CYCLES and
+ * PERF_SPANS_VISITED (implementation-specific; both read 0 here).
  *
  * The model has no time: a DOORBELL write runs the whole batch (clear, draw,
  * swap) to completion inside gpu_model_write(), so STATUS.BUSY is never seen
- * set and ERR_WRITE_BUSY can never happen.
+ * set, ERR_WRITE_BUSY can never happen and a RESET write has nothing to abort.
  *
- * Host code, C11, no dependencies beyond the C library.  The state is one plain
- * struct (~160 KiB because of the two framebuffers): allocate it statically or
- * with malloc, then call gpu_model_reset() before use.
+ * Like the RTL, the model is built with three options (contract "Build
+ * options, reported in CAPS"): the span width, lines, and the depth buffer.
+ *
+ * Host C11 (and includable from C++), no dependencies beyond the C library.
+ * The state is one plain struct (~310 KiB because of the two framebuffers and
+ * the depth buffer): allocate it statically or with malloc, then call
+ * gpu_model_reset() or gpu_model_reset_config() before use.
  */
 #ifndef GPU_MODEL_H
 #define GPU_MODEL_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "gpu_regs.h"
@@ -25,13 +31,35 @@
 #define GPU_MODEL_SCREEN_W 640
 #define GPU_MODEL_SCREEN_H 480
 
-/* Pixels in one framebuffer (320 x 240). */
+/* Pixels in one framebuffer (320 x 240), also in the depth buffer. */
 #define GPU_MODEL_FB_PIXELS (GPU_FB_WIDTH * GPU_FB_HEIGHT)
 
-/* Capabilities this model implements: triangles only, no lines, no depth
- * buffer, and one pixel per "clock" (the model has no clock; SPAN_W is what
- * CAPS reports so the firmware sees a consistent value). */
-#define GPU_MODEL_CAPS ((1u << GPU_CAPS_SPAN_W_LSB) & GPU_CAPS_SPAN_W_MASK)
+/* Build-option defaults, the RTL's parameter defaults (contract table
+ * "Build options, reported in CAPS"). */
+#define GPU_MODEL_DEFAULT_SPAN_W 8u
+#define GPU_MODEL_DEFAULT_LINES  true
+#define GPU_MODEL_DEFAULT_ZBUF   false
+
+/* The bits of CTRL the contract defines; CTRL keeps (and reads back) only
+ * these, whatever the build options. */
+#define GPU_MODEL_CTRL_BITS \
+    (GPU_CTRL_CLEAR_MASK | GPU_CTRL_SWAP_MASK | GPU_CTRL_ZTEST_MASK | \
+     GPU_CTRL_ZCLEAR_MASK)
+
+/*
+ * The build options the modelled GPU was "built" with; CAPS reports them.
+ *   span_w: SPAN_W, 1, 4, 8 or 16 (any other value is replaced by the
+ *           default 8, so CAPS then disagrees with the RTL and co-simulation
+ *           reports it); the span size of PERF_SPANS_WRITTEN.
+ *   lines:  ENABLE_LINES; without it a line primitive sets ERR_KIND.
+ *   zbuf:   ENABLE_ZBUF; without it CTRL_ZTEST / CTRL_ZCLEAR have no effect
+ *           (they are still stored and read back) and zbuf[] is never touched.
+ */
+typedef struct gpu_model_config {
+    unsigned span_w;
+    bool lines;
+    bool zbuf;
+} gpu_model_config;
 
 /*
  * The whole device state.  Public so tests and the co-simulation harness can
@@ -39,9 +67,13 @@
  * if you want contract behaviour.
  */
 typedef struct gpu_model {
-    /* Batch registers (rw), holding the last 32-bit value the bus wrote.
-     * Only the meaningful bits are used when a batch runs: CTRL_CLEAR and
-     * CTRL_SWAP of ctrl, [7:0] of clear_color. */
+    /* The build options (set by gpu_model_reset_config(); read-only after). */
+    gpu_model_config cfg;
+
+    /* Batch registers (rw).  ctrl keeps the four defined CTRL bits
+     * (GPU_MODEL_CTRL_BITS), the others the whole 32-bit value written.  A
+     * batch uses CTRL_CLEAR, CTRL_SWAP, CTRL_ZTEST and CTRL_ZCLEAR (the last
+     * two only with cfg.zbuf) and CLEAR_COLOR[7:0]. */
     struct {
         uint32_t ctrl;
         uint32_t vtx_base;
@@ -50,6 +82,8 @@ typedef struct gpu_model {
         uint32_t tri_count;
         uint32_t clear_color;
         uint32_t doorbell;    /* reads back the last tag written */
+        uint32_t reset;       /* RESET: reads back the last value written; no
+                               * other effect, as no batch is ever running */
     } regs;
 
     /* Read-only status registers. */
@@ -58,15 +92,19 @@ typedef struct gpu_model {
     uint32_t errors;          /* ERRORS: GPU_ERR_* flags of the last batch */
     uint32_t front;           /* STATUS.FRONT: index (0/1) of the scanned-out fb */
 
-    /* PERF_* counters of the last batch (PERF_BUSY_CYCLES is not modelled
-     * and reads 0).  None can overflow 32 bits: at most TRI_CAP primitives
-     * of at most 320*240 samples each, 1024 * 76800 < 2^27. */
+    /* PERF_* counters of the last batch (PERF_BUSY_CYCLES and
+     * PERF_SPANS_VISITED are not modelled and read 0).  None can overflow 32
+     * bits: at most TRI_CAP = 512 primitives, each adding at most 320*240
+     * samples, pixels or spans (a line at most 4095 samples), 512 * 76800
+     * < 2^26. */
     struct {
         uint32_t tris_in;
         uint32_t tris_drawn;
         uint32_t tris_rejected;
-        uint32_t pixels;
-        uint32_t samples;
+        uint32_t pixels;        /* pixels written (after the depth test) */
+        uint32_t samples;       /* triangle box areas + line step counts */
+        uint32_t spans_written; /* per triangle: W-aligned spans with >= 1
+                                 * covered pixel (before the depth test) */
     } perf;
 
     /* Palette: RGB444, R in [11:8], G in [7:4], B in [3:0]. */
@@ -81,11 +119,26 @@ typedef struct gpu_model {
     /* The two framebuffers, palette indices, row-major, top row first.
      * fb[front] is scanned out, fb[front ^ 1] is drawn. */
     uint8_t fb[2][GPU_MODEL_FB_PIXELS];
+
+    /* The depth buffer (contract "Depth"), row-major like fb, one buffer, not
+     * swapped.  0 at power-on (block RAM initial value, like the
+     * framebuffers), 0xFFFF after a CTRL_ZCLEAR.  Only used with cfg.zbuf;
+     * without it, it stays 0. */
+    uint16_t zbuf[GPU_MODEL_FB_PIXELS];
 } gpu_model;
 
-/* Power-on state: all registers, counters and flags 0 (the identity registers
- * are constants), palette black, both framebuffers 0, front = 0. */
+/* Power-on state with the default build options (SPAN_W = 8, lines, no
+ * depth buffer): all registers, counters and flags 0 (the identity registers
+ * are constants), palette black, both framebuffers and the depth buffer 0,
+ * front = 0. */
 void gpu_model_reset(gpu_model *m);
+
+/* Power-on state with the given build options (NULL: the defaults).  An
+ * unsupported span_w (not 1, 4, 8 or 16) is replaced by 8. */
+void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg);
+
+/* The CAPS register for m's build options. */
+uint32_t gpu_model_caps(const gpu_model *m);
 
 /* A 32-bit bus write at byte `offset` from the GPU base.  Unaligned offsets,
  * unmapped offsets and read-only registers are ignored.  A DOORBELL write runs
@@ -94,7 +147,8 @@ void gpu_model_reset(gpu_model *m);
 void gpu_model_write(gpu_model *m, uint32_t offset, uint32_t value);
 
 /* A 32-bit bus read at byte `offset`.  Write-only windows (palette, vertex,
- * index), unmapped and unaligned offsets read 0; so does PERF_BUSY_CYCLES. */
+ * index), unmapped and unaligned offsets read 0; so do PERF_BUSY_CYCLES and
+ * PERF_SPANS_VISITED (not modelled). */
 uint32_t gpu_model_read(const gpu_model *m, uint32_t offset);
 
 /* The scanned-out framebuffer (320*240 palette indices). */

@@ -30,8 +30,13 @@ suite firmware-unit          "$BUILD/tests/fw_unit"
 suite firmware-no-gpu         bash tests/firmware/no_gpu.sh
 suite model-unit             "$BUILD/tests/model_unit"
 suite rtl-vs-model-seed1     "$GPUSIM" random --seed 1 --batches 40
-suite rtl-vs-model-seed2     "$GPUSIM" random --seed 2 --batches 40
-suite rtl-vs-model-seed3     "$GPUSIM" random --seed 3 --batches 40 --tris 200
+suite rtl-vs-model-seed2     "$GPUSIM" random --seed 2 --batches 40 --tris 200
+suite rtl-vs-model-100k      "$GPUSIM" random --seed 3 --batches 440 --tris 500 --swap-percent 10 --min-prims 100000
+suite rtl-vs-model-span1     "$BUILD/sim-w1/gpusim" random --seed 4 --batches 20 --tris 100
+suite rtl-vs-model-span4     "$BUILD/sim-w4/gpusim" random --seed 5 --batches 20 --tris 100
+suite rtl-vs-model-span16    "$BUILD/sim-w16/gpusim" random --seed 6 --batches 20 --tris 100
+suite rtl-mesh-exact-once    bash tests/raster/mesh.sh
+suite raster-bad-input       bash tests/raster/bad_input.sh
 suite cosim-end-to-end       bash tests/cosim/end_to_end.sh
 suite cosim-kill-qemu        bash tests/cosim/kill.sh qemu
 suite cosim-kill-harness     bash tests/cosim/kill.sh harness

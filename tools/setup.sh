@@ -1,16 +1,21 @@
 #!/usr/bin/env bash
-# Install the Debian packages listed in tools/packages.txt that are missing. Idempotent: when
-# everything is present it only checks (well under a second) and changes nothing.
+# Install the Debian packages listed in tools/packages.txt (or the list files given as arguments,
+# e.g. tools/packages-synth.txt) that are missing. Idempotent: when everything is present it only
+# checks (well under a second) and changes nothing.
 set -euo pipefail
 cd "$(dirname "$0")"
+lists=("$@")
+[ ${#lists[@]} -gt 0 ] || lists=(packages.txt)
 
 missing=()
-while read -r pkg; do
-    [[ -z "$pkg" || "$pkg" == \#* ]] && continue
-    if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
-        missing+=("$pkg")
-    fi
-done < packages.txt
+for list in "${lists[@]}"; do
+    while read -r pkg; do
+        [[ -z "$pkg" || "$pkg" == \#* ]] && continue
+        if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+            missing+=("$pkg")
+        fi
+    done < "$(basename "$list")"
+done
 
 if [ ${#missing[@]} -eq 0 ]; then
     exit 0

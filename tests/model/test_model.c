@@ -334,6 +334,12 @@ void test_bus(void)
     gpu_model_write(m, GPU_WIN_IDX + 4u * (GPU_TRI_CAP * GPU_PRIM_WORDS - 1u),
                     0xBBu);
     CHECK_EQ(m->idx[GPU_TRI_CAP * GPU_PRIM_WORDS - 1u], 0xBBu);
+    /* Just past the 512-primitive index buffer (0x1000 bytes into the
+     * window) and the vertex buffer: not aliased onto word 0. */
+    gpu_model_write(m, GPU_WIN_IDX + GPU_TRI_CAP * GPU_PRIM_WORDS * 4u, 0x77u);
+    gpu_model_write(m, GPU_WIN_VTX + GPU_VTX_CAP * GPU_VTX_WORDS * 4u, 0x77u);
+    CHECK_EQ(m->idx[0], 0);
+    CHECK_EQ(m->vtx[0], 0);
     gpu_model_write(m, GPU_WIN_VTX + GPU_WIN_VTX_BYTES - 4u, 1);
     gpu_model_write(m, GPU_WIN_IDX + GPU_WIN_IDX_BYTES - 4u, 1);
     gpu_model_write(m, GPU_WIN_PALETTE + GPU_WIN_PALETTE_BYTES, 1);

@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+"""`make bench-gpu`: covered pixels per clock and clocks per primitive of the RTL, counted by the
+Verilator simulation (PERF_BUSY_CYCLES: doorbell to last pixel written, clear included when the list
+clears), for each span width, on three workloads:
+  large  - 24 large random triangles over the screen (no clear)
+  scene  - the default scene's buffers, every frame, as the firmware submitted them (with clears)
+  tiny   - 10,000 random triangles of at most 2 px across (no clear)
+
+    bench_gpu.py BUILD SCENE_LISTS_DIR
+"""
+import json
+import os
+import random
+import subprocess
+import sys
+
+WIDTHS = [1, 4, 8, 16]
+
+
+def write_large(path, rng):
+    with open(path, "w") as f:
+        for _ in range(24):
+            pts = [(rng.randint(-40, 360) * 16, rng.randint(-40, 280) * 16) for _ in range(3)]
+            f.write("tri %d %d %d %d %d %d %d\n" % (*pts[0], *pts[1], *pts[2], rng.randint(1, 255)))
+
+
+def write_tiny(path, rng):
+    with open(path, "w") as f:
+        for _ in range(10000):
+            x, y = rng.randint(0, 319 * 16), rng.randint(0, 239 * 16)
+            pts = [(x + rng.randint(0, 32), y + rng.randint(0, 32)) for _ in range(3)]
+            f.write("tri %d %d %d %d %d %d %d\n" % (*pts[0], *pts[1], *pts[2], rng.randint(1, 255)))
+
+
+def write_scene(path, lists_dir):
+    with open(path, "w") as f:
+        for name in sorted(os.listdir(lists_dir)):
+            with open(os.path.join(lists_dir, name)) as batch:
+                f.write(batch.read())
+
+
+def main():
+    build, lists_dir = sys.argv[1], sys.argv[2]
+    work = os.path.join(build, "bench-gpu")
+    os.makedirs(work, exist_ok=True)
+    rng = random.Random(2026)
+    workloads = {"large": os.path.join(work, "large.txt"), "scene": os.path.join(work, "scene.txt"),
+                 "tiny": os.path.join(work, "tiny.txt")}
+    write_large(workloads["large"], rng)
+    write_scene(workloads["scene"], lists_dir)
+    write_tiny(workloads["tiny"], rng)
+
+    rows = []
+    for width in WIDTHS:
+        sim = os.path.join(build, "sim-w%d" % width, "gpusim")
+        for name, path in workloads.items():
+            out = os.path.join(work, "%s-w%d" % (name, width))
+            print("bench-gpu: %s, SPAN_W=%d ..." % (name, width), file=sys.stderr, flush=True)
+            subprocess.run([sim, "raster", "--in", path, "--out", out], check=True, stdout=subprocess.DEVNULL)
+            s = json.load(open(os.path.join(out, "stats.json")))
+            rows.append((name, width, s["prims_in"], s["pixels"], s["busy_cycles"], s["spans_visited"]))
+
+    print("| workload | SPAN_W | primitives | pixels written | busy cycles | covered px/clk | clk/primitive |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    for name, width, prims, pixels, cycles, _ in rows:
+        print("| %s | %d | %d | %d | %d | %.2f | %.2f |" % (name, width, prims, pixels, cycles,
+                                                          pixels / cycles, cycles / max(prims, 1)))
+
+
+if __name__ == "__main__":
+    main()
