@@ -13,6 +13,7 @@ VERILATOR   ?= verilator
 SPAN_W      ?= 8
 GPUSIM      := $(BUILD)/sim-w$(SPAN_W)/gpusim
 BENCH_SIMS  := $(foreach w,1 4 8 16,$(BUILD)/sim-w$(w)/gpusim)
+ZBUF_SIM    := $(BUILD)/sim-z-w8/gpusim
 
 # Firmware (FW_ELF, fw_unit) and golden model (GPU_MODEL_SRC, model_unit) rules.
 include firmware/firmware.mk
@@ -45,7 +46,7 @@ run-headless: $(FW_ELF) $(GPUSIM)
 test: setup
 	@$(MAKE) --no-print-directory test-quick
 
-test-quick: $(FW_ELF) $(BENCH_SIMS) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit
+test-quick: $(FW_ELF) $(BENCH_SIMS) $(ZBUF_SIM) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit
 	@GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) bash tests/run_all.sh
 
 # ---- the contract: regenerate, or check that the generated files are current ----
@@ -91,15 +92,24 @@ $(HOST_LIB): $(HOST_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
-# One simulator per span width: $(BUILD)/sim-w<SPAN_W>/gpusim, the RTL built with -GSPAN_W=<SPAN_W>.
-$(BUILD)/sim-w%/gpusim: $(RTL_V) gpu_rtl/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) $(HOST_LIB)
-	@mkdir -p $(@D)
+# One simulator per configuration: $(BUILD)/sim-w<SPAN_W>/gpusim, and sim-z-w<SPAN_W> with the depth
+# buffer built in. $(call verilate,OUTPUT,VERILATOR PARAMETER FLAGS)
+define verilate
+	@mkdir -p $(dir $(1))
 	$(VERILATOR) --cc --exe --build -j 2 --assert -O3 --x-assign fast --x-initial fast \
-	  --top-module gpu_top -GSPAN_W=$* -Igpu_rtl $(RTL_V) $(abspath $(COSIM_CPP)) \
+	  --top-module gpu_top $(2) -Igpu_rtl $(RTL_V) $(abspath $(COSIM_CPP)) \
 	  -CFLAGS "-O2 -std=c++17 $(addprefix -I$(CURDIR)/,$(patsubst -I%,%,$(HOST_INC)))" \
 	  -LDFLAGS "$(abspath $(HOST_LIB)) $$(pkg-config --libs libpng)" \
-	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(@D)/obj -o $(abspath $@) >$(@D)/verilator.log 2>&1 \
-	  || { tail -40 $(@D)/verilator.log; exit 1; }
+	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(dir $(1))obj -o $(abspath $(1)) \
+	  >$(dir $(1))verilator.log 2>&1 || { tail -40 $(dir $(1))verilator.log; exit 1; }
+endef
+SIM_DEPS := $(RTL_V) gpu_rtl/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) $(HOST_LIB)
+
+$(BUILD)/sim-w%/gpusim: $(SIM_DEPS)
+	$(call verilate,$@,-GSPAN_W=$*)
+
+$(BUILD)/sim-z-w%/gpusim: $(SIM_DEPS)
+	$(call verilate,$@,-GSPAN_W=$* -GENABLE_ZBUF=1)
 
 clean:
 	rm -rf $(BUILD) $(OUT)

@@ -148,6 +148,7 @@ int rtl_check_main(int argc, char **argv)
         // next batch then clears, which makes RTL and model agree again (the model has no "middle").
         const bool reset_probe = !over_capacity && r.chance(5) && b != batches - 1;
         const bool swap = !reset_probe && (r.chance(swap_percent) || b == batches - 1);
+        const bool clear_forced = must_clear;
         const bool clear = r.chance(50) || b == 0 || must_clear;
         must_clear = reset_probe;
         write(GPU_WIN_REGS + GPU_REG_VTX_BASE, vbase);
@@ -155,7 +156,14 @@ int rtl_check_main(int argc, char **argv)
         write(GPU_WIN_REGS + GPU_REG_TRI_BASE, tbase);
         write(GPU_WIN_REGS + GPU_REG_TRI_COUNT, nt);
         write(GPU_WIN_REGS + GPU_REG_CLEAR_COLOR, r.below(256));
-        write(GPU_WIN_REGS + GPU_REG_CTRL, (clear ? GPU_CTRL_CLEAR_MASK : 0) | (swap ? GPU_CTRL_SWAP_MASK : 0));
+        uint32_t ctrl = (clear ? GPU_CTRL_CLEAR_MASK : 0) | (swap ? GPU_CTRL_SWAP_MASK : 0);
+        if (r.chance(60)) {  // depth test (a no-op without CAPS_ZBUF: the bits are then ignored)
+            ctrl |= GPU_CTRL_ZTEST_MASK;
+        }
+        if (r.chance(30) || b == 0 || clear_forced) {  // a reset may also leave the depths half done
+            ctrl |= GPU_CTRL_ZCLEAR_MASK;
+        }
+        write(GPU_WIN_REGS + GPU_REG_CTRL, ctrl);
         const uint32_t tag = static_cast<uint32_t>(b + 1);
         write(GPU_WIN_REGS + GPU_REG_DOORBELL, tag);
 

@@ -6,12 +6,18 @@
 // bank; the read port takes a pixel index (y*320 + x) and returns that pixel one cycle later. swap
 // (one-cycle pulse) exchanges the banks on the clock edge; a read issued on that edge still comes from
 // the old front. front is the bank being shown (STATUS.FRONT).
+//
+// Block RAM economy: a bank of 76800/SPAN_W words is not a multiple of the 1024-word depth 36 Kb block
+// RAMs come in, and a tool that rounds it up wastes a whole column of them (20 instead of 19 per bank
+// at SPAN_W = 8). So each bank is a main part of whole 1024-word blocks plus a small tail RAM.
 `default_nettype none
 
 module gpu_framebuffer #(
     parameter integer SPAN_W = 8,    // pixels per word; divides 320
     localparam integer PIXELS = 320 * 240,
     localparam integer WORDS = PIXELS / SPAN_W,
+    localparam integer MAIN_WORDS = (WORDS / 1024) * 1024,
+    localparam integer TAIL_WORDS = WORDS - MAIN_WORDS,
     localparam integer WAW = $clog2(WORDS),
     localparam integer PAW = $clog2(PIXELS),
     localparam integer LANE_AW = (SPAN_W > 1) ? $clog2(SPAN_W) : 1
@@ -33,11 +39,12 @@ module gpu_framebuffer #(
 );
     reg front_q;
     reg rd_bank_q;                 // bank the pending read data comes from
+    reg rd_tail_q;                 // ... and whether from its tail part
     reg [LANE_AW-1:0] rd_lane_q;   // pixel of the word it is
-    wire [SPAN_W*8-1:0] bank0_rd_data;
-    wire [SPAN_W*8-1:0] bank1_rd_data;
     wire [WAW-1:0] rd_word = WAW'(rd_addr / PAW'(SPAN_W));
     wire [LANE_AW-1:0] rd_lane = (SPAN_W > 1) ? LANE_AW'(rd_addr % PAW'(SPAN_W)) : {LANE_AW{1'b0}};
+    wire rd_in_tail = rd_word >= WAW'(MAIN_WORDS);
+    wire wr_in_tail = wr_addr >= WAW'(MAIN_WORDS);
 
     always @(posedge clk) begin
         if (rst) begin
@@ -47,23 +54,43 @@ module gpu_framebuffer #(
         end
         if (rd_en) begin
             rd_bank_q <= front_q;
+            rd_tail_q <= rd_in_tail;
             rd_lane_q <= rd_lane;
         end
     end
 
-    gpu_ram #(.DEPTH(WORDS), .WIDTH(SPAN_W * 8), .LANES(SPAN_W)) u_bank0 (
-        .clk(clk),
-        .wr_en(wr_en && front_q), .wr_addr(wr_addr), .wr_data(wr_data), .wr_mask(wr_mask),
-        .rd_en(rd_en && !front_q), .rd_addr(rd_word), .rd_data(bank0_rd_data)
-    );
+    wire [SPAN_W*8-1:0] main_rd_data [0:1];
+    wire [SPAN_W*8-1:0] tail_rd_data [0:1];
 
-    gpu_ram #(.DEPTH(WORDS), .WIDTH(SPAN_W * 8), .LANES(SPAN_W)) u_bank1 (
-        .clk(clk),
-        .wr_en(wr_en && !front_q), .wr_addr(wr_addr), .wr_data(wr_data), .wr_mask(wr_mask),
-        .rd_en(rd_en && front_q), .rd_addr(rd_word), .rd_data(bank1_rd_data)
-    );
+    genvar bank;
+    generate
+        for (bank = 0; bank < 2; bank = bank + 1) begin : g_bank
+            // Bank b is the back bank (written) when front is !b, and the front bank (read) when b.
+            wire wr_this = wr_en && (front_q != bank[0]);
+            wire rd_this = rd_en && (front_q == bank[0]);
+            gpu_ram #(.DEPTH(MAIN_WORDS), .WIDTH(SPAN_W * 8), .LANES(SPAN_W)) u_main (
+                .clk(clk),
+                .wr_en(wr_this && !wr_in_tail), .wr_addr($clog2(MAIN_WORDS)'(wr_addr)),
+                .wr_data(wr_data), .wr_mask(wr_mask),
+                .rd_en(rd_this && !rd_in_tail), .rd_addr($clog2(MAIN_WORDS)'(rd_word)),
+                .rd_data(main_rd_data[bank])
+            );
+            if (TAIL_WORDS > 0) begin : g_tail
+                localparam integer TAW = (TAIL_WORDS > 1) ? $clog2(TAIL_WORDS) : 1;
+                gpu_ram #(.DEPTH(TAIL_WORDS), .WIDTH(SPAN_W * 8), .LANES(SPAN_W)) u_tail (
+                    .clk(clk),
+                    .wr_en(wr_this && wr_in_tail), .wr_addr(TAW'(wr_addr - WAW'(MAIN_WORDS))),
+                    .wr_data(wr_data), .wr_mask(wr_mask),
+                    .rd_en(rd_this && rd_in_tail), .rd_addr(TAW'(rd_word - WAW'(MAIN_WORDS))),
+                    .rd_data(tail_rd_data[bank])
+                );
+            end else begin : g_no_tail
+                assign tail_rd_data[bank] = {(SPAN_W * 8){1'b0}};
+            end
+        end
+    endgenerate
 
-    wire [SPAN_W*8-1:0] word = rd_bank_q ? bank1_rd_data : bank0_rd_data;
+    wire [SPAN_W*8-1:0] word = rd_tail_q ? tail_rd_data[rd_bank_q] : main_rd_data[rd_bank_q];
     assign front   = front_q;
     assign rd_data = word[rd_lane_q * 8 +: 8];
 endmodule

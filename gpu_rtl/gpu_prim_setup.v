@@ -22,11 +22,15 @@ module gpu_prim_setup #(
     parameter integer TRI_CAP = 512,
     parameter integer SPAN_W = 8,
     parameter integer ENABLE_LINES = 1,
+    parameter integer ENABLE_ZBUF = 0,   // depth-plane set-up (adds a 33-clock division per triangle
+                                         // while CTRL.ZTEST is on)
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer PRIM_W = $clog2(TRI_CAP + 1),
     localparam integer COL_W = $clog2(320 / SPAN_W),
-    localparam integer EDGE_W = 36
+    localparam integer EDGE_W = 36,
+    localparam integer Z_W = 52,           // Q16 depth accumulator: |value| < 2^50 (contract), signed
+    localparam integer ZSTEP_W = 40        // 16 * ZA: |value| <= 2^35, signed
 ) (
     input  wire                     clk,
     input  wire                     rst,
@@ -36,6 +40,7 @@ module gpu_prim_setup #(
     input  wire [31:0]              vtx_count,
     input  wire [31:0]              tri_base,
     input  wire [31:0]              tri_count,
+    input  wire                     ctrl_ztest,
     output wire                     idle,          // nothing fetched or in flight
     // index RAM (both words of a primitive at once)
     output wire                     idx_rd_en,
@@ -45,6 +50,7 @@ module gpu_prim_setup #(
     output wire                     vtx_rd_en,
     output wire [VI_W-1:0]          vtx_rd_addr,
     input  wire [31:0]              vtx_rd_data,
+    input  wire [15:0]              vz_rd_data,    // the vertex's depth, read with it (ENABLE_ZBUF)
     // descriptor to the walker
     output reg                      out_valid,
     input  wire                     out_ready,
@@ -63,6 +69,9 @@ module gpu_prim_setup #(
     output reg  [12:0]              out_line_two_a_major,           // 2 * |major delta|
     output reg  [12:0]              out_line_two_a_minor,           // 2 * |minor delta|
     output reg  signed [14:0]       out_line_err,
+    output reg  signed [Z_W-1:0]    out_z_start,                    // Q16 depth at the first span, lane 0
+    output reg  signed [ZSTEP_W-1:0] out_z_dx,                      // per pixel right (16 ZA)
+    output reg  signed [ZSTEP_W-1:0] out_z_dy,                      // per row down (16 ZB)
     // events for the counters
     output reg                      ev_prim_in,
     output reg  [1:0]               ev_rejected,   // the fetch and stage B may both reject in one clock
@@ -82,6 +91,7 @@ module gpu_prim_setup #(
     reg [7:0] color_q;
     reg is_line_q;
     reg signed [15:0] fx0_q, fy0_q, fx1_q, fy1_q;
+    reg [15:0] fz0_q, fz1_q;
     reg v2_pending_q;                  // vertex 2 (or a line's end) is on the RAM output for stage A
     reg v2_is_line_q;
     reg idx_was_read_q;                // F_V1 read the next primitive's index words
@@ -153,6 +163,7 @@ module gpu_prim_setup #(
                 F_V1: begin
                     fx0_q <= vx;
                     fy0_q <= vy;
+                    fz0_q <= vz_rd_data;
                     if (more_prims) begin
                         prim_q <= prim_q + 1'b1;
                     end
@@ -161,6 +172,7 @@ module gpu_prim_setup #(
                 F_V2: begin
                     fx1_q <= vx;
                     fy1_q <= vy;
+                    fz1_q <= vz_rd_data;
                     v2_pending_q <= 1'b1;
                     v2_is_line_q <= is_line_q;
                     // The next primitive's index words were read in F_V1 if there was one.
@@ -190,6 +202,7 @@ module gpu_prim_setup #(
     reg a_is_line_q;
     reg [7:0] a_color_q;
     reg signed [15:0] ax0_q, ay0_q, ax1_q, ay1_q, ax2_q, ay2_q;
+    reg [15:0] az0_q, az1_q, az2_q;
     wire b_free;
 
     assign stage_a_free = !a_valid_q || b_free;
@@ -208,6 +221,9 @@ module gpu_prim_setup #(
                 ay1_q <= fy1_q;
                 ax2_q <= v2_is_line_q ? fx1_q : vx;
                 ay2_q <= v2_is_line_q ? fy1_q : vy;
+                az0_q <= fz0_q;
+                az1_q <= fz1_q;
+                az2_q <= vz_rd_data;
             end
         end
     end
@@ -250,9 +266,11 @@ module gpu_prim_setup #(
     reg signed [15:0] bx0_q, by0_q, bx1_q, by1_q, bx2_q, by2_q;
     reg signed [34:0] b_area_q;
     reg signed [12:0] b_rpx0_q, b_rpx1_q, b_rpy0_q, b_rpy1_q;  // box of pixel centres, unclamped
+    reg [15:0] bz0_q, bz1_q, bz2_q;
     wire c_free;
+    wire b_z_ready;                    // the depth gradients are known (or not needed)
 
-    assign b_free = !b_valid_q || c_free;
+    assign b_free = !b_valid_q || (c_free && b_z_ready);
 
     always @(posedge clk) begin
         if (rst) begin
@@ -269,6 +287,9 @@ module gpu_prim_setup #(
                 bx2_q <= ax2_q;
                 by2_q <= ay2_q;
                 b_area_q <= area_w;
+                bz0_q <= az0_q;
+                bz1_q <= az1_q;
+                bz2_q <= az2_q;
                 b_rpx0_q <= first_centre(min3(ax0_q, ax1_q, ax2_q));
                 b_rpx1_q <= last_centre(max3(ax0_q, ax1_q, ax2_q));
                 b_rpy0_q <= first_centre(min3(ay0_q, ay1_q, ay2_q));
@@ -332,8 +353,62 @@ module gpu_prim_setup #(
     wire [11:0] lmin = lxmajor ? lay : lax;
     wire line_empty = (lmaj == 12'd0);
 
-    wire c_load_valid = b_valid_q && (b_is_line_q ? !line_empty : (b_area_q != 0 && !box_empty));
+    wire b_drawable = b_is_line_q ? !line_empty : (b_area_q != 0 && !box_empty);
+    wire c_load_valid = b_valid_q && b_drawable && b_z_ready;
+    wire b_leaves = b_valid_q && c_free && b_z_ready;   // stage B hands on (or drops) its primitive
     assign c_free = !out_valid || out_ready;
+
+    // ---- depth plane (ENABLE_ZBUF): ZA, ZB by two dividers while stage B holds the triangle ----
+    wire signed [Z_W-1:0] z_start_w;
+    wire signed [ZSTEP_W-1:0] z_dx_w, z_dy_w;
+    generate
+        if (ENABLE_ZBUF != 0) begin : g_z
+            wire signed [17:0] dz1 = 18'({2'b00, bz1_q}) - 18'({2'b00, bz0_q});
+            wire signed [17:0] dz2 = 18'({2'b00, bz2_q}) - 18'({2'b00, bz0_q});
+            wire signed [17:0] dx1 = 18'(bx1_q) - 18'(bx0_q), dy1 = 18'(by1_q) - 18'(by0_q);
+            wire signed [17:0] dx2 = 18'(bx2_q) - 18'(bx0_q), dy2 = 18'(by2_q) - 18'(by0_q);
+            // Numerators below 2^33 in magnitude; times 2^16 below 2^49 (contract, "Depth").
+            wire signed [50:0] num_a = 51'(dz1 * dy2 - dz2 * dy1) <<< 16;
+            wire signed [50:0] num_b = 51'(dz2 * dx1 - dz1 * dx2) <<< 16;
+            wire need = b_valid_q && !b_is_line_q && ctrl_ztest && b_drawable;
+            reg started_q, ready_q;
+            wire busy_a, busy_b, done_a, done_b;
+            wire signed [31:0] za, zb;
+            gpu_div u_div_a (.clk(clk), .rst(rst), .start(need && !started_q), .dividend(num_a),
+                             .divisor(b_area_q), .busy(busy_a), .done(done_a), .quotient(za));
+            gpu_div u_div_b (.clk(clk), .rst(rst), .start(need && !started_q), .dividend(num_b),
+                             .divisor(b_area_q), .busy(busy_b), .done(done_b), .quotient(zb));
+            reg signed [31:0] za_q, zb_q;
+            always @(posedge clk) begin
+                if (rst || b_leaves || !b_valid_q) begin
+                    started_q <= 1'b0;
+                    ready_q <= 1'b0;
+                end else begin
+                    if (need && !started_q) started_q <= 1'b1;
+                    if (done_a) begin  // both dividers take the same number of clocks
+                        ready_q <= 1'b1;
+                        za_q <= za;
+                        zb_q <= zb;
+                    end
+                end
+            end
+            assign b_z_ready = !need || ready_q;
+            // Depth at lane 0 of the first span: 2^16 z0 + ZA (pcx - x0) + ZB (pcy - y0).
+            wire signed [17:0] off_x = pcx - 18'(bx0_q);  // -32759 .. 37896: 17 bits
+            wire signed [17:0] off_y = pcy - 18'(by0_q);
+            assign z_start_w = (Z_W'($signed({1'b0, bz0_q})) <<< 16)
+                             + Z_W'(za_q) * Z_W'(off_x) + Z_W'(zb_q) * Z_W'(off_y);
+            assign z_dx_w = ZSTEP_W'(za_q) <<< 4;
+            assign z_dy_w = ZSTEP_W'(zb_q) <<< 4;
+            wire unused_div = busy_a | busy_b | done_b;
+        end else begin : g_no_z
+            assign b_z_ready = 1'b1;
+            assign z_start_w = {Z_W{1'b0}};
+            assign z_dx_w = {ZSTEP_W{1'b0}};
+            assign z_dy_w = {ZSTEP_W{1'b0}};
+            wire unused_z = ctrl_ztest | (|vz_rd_data) | (|bz0_q) | (|bz1_q) | (|bz2_q);
+        end
+    endgenerate
 
     wire [8:0] box_w = 9'(b_px1 - b_px0 + 13'sd1);
     wire [7:0] box_h = 8'(b_py1 - b_py0 + 13'sd1);
@@ -370,6 +445,9 @@ module gpu_prim_setup #(
                 out_line_two_a_major <= {lmaj, 1'b0};
                 out_line_two_a_minor <= {lmin, 1'b0};
                 out_line_err <= 15'({lmin, 1'b0}) - 15'(lmaj);
+                out_z_start <= z_start_w;
+                out_z_dx <= z_dx_w;
+                out_z_dy <= z_dy_w;
             end
         end
     end
@@ -380,7 +458,7 @@ module gpu_prim_setup #(
         ev_err_kind <= !rst && fetch_ev_reject && !w_kind_ok;
         ev_err_index <= !rst && fetch_ev_reject && w_kind_ok;
         ev_rejected <= (!rst && fetch_ev_reject ? 2'd1 : 2'd0)
-                     + (!rst && b_valid_q && c_free && !c_load_valid ? 2'd1 : 2'd0);
+                     + (!rst && b_leaves && !b_drawable ? 2'd1 : 2'd0);
         ev_drawn <= !rst && c_free && c_load_valid;
         ev_samples <= (!rst && c_free && c_load_valid)
                     ? (b_is_line_q ? 18'(lmaj) : 18'(box_w) * 18'(box_h)) : 18'd0;

@@ -4,15 +4,16 @@
 // [i*WIDTH/LANES +: WIDTH/LANES]) at wr_addr on the clock edge; the other lanes keep their contents, so
 // a span of pixels is written without reading it first. A read with rd_en presents mem[rd_addr] on
 // rd_data after that edge (one cycle latency) and holds it while rd_en is low. Reading and writing
-// the same address in one cycle returns the old data. Power-on contents are zero (FPGA block RAM
-// honours initial values; it has no reset, so neither does this). Written in the template that yosys
-// and Vivado map to block RAM with byte-write enables.
+// the same address in one cycle returns the old data. Power-on contents are zero (FPGA RAM honours
+// initial values; it has no reset, so neither does this). Written in the template that yosys and
+// Vivado map to block RAM with byte-write enables, or to LUT RAM when DISTRIBUTED is set.
 `default_nettype none
 
 module gpu_ram #(
-    parameter integer DEPTH = 1024,  // words
-    parameter integer WIDTH = 32,    // bits per word
-    parameter integer LANES = 1,     // independently writable lanes per word (WIDTH % LANES == 0)
+    parameter integer DEPTH = 1024,       // words
+    parameter integer WIDTH = 32,         // bits per word
+    parameter integer LANES = 1,          // independently writable lanes per word (WIDTH % LANES == 0)
+    parameter integer DISTRIBUTED = 0,    // 1: LUT RAM, for small tables that would waste a block RAM
     localparam integer AW = (DEPTH > 1) ? $clog2(DEPTH) : 1,
     localparam integer LANE_W = WIDTH / LANES
 ) (
@@ -27,29 +28,37 @@ module gpu_ram #(
     input  wire [AW-1:0]    rd_addr,
     output reg  [WIDTH-1:0] rd_data
 );
-    reg [WIDTH-1:0] mem [0:DEPTH-1];
-
     integer i;
     initial begin
-        for (i = 0; i < DEPTH; i = i + 1) begin
-            mem[i] = {WIDTH{1'b0}};
-        end
         rd_data = {WIDTH{1'b0}};
     end
 
-    always @(posedge clk) begin
-        for (i = 0; i < LANES; i = i + 1) begin
-            if (wr_en && wr_mask[i]) begin
-                mem[wr_addr][i*LANE_W +: LANE_W] <= wr_data[i*LANE_W +: LANE_W];
+    // Two copies of one template; only the ram_style attribute differs.
+    generate
+        if (DISTRIBUTED != 0) begin : g_lut
+            (* ram_style = "distributed" *) reg [WIDTH-1:0] mem [0:DEPTH-1];
+            initial begin
+                for (i = 0; i < DEPTH; i = i + 1) mem[i] = {WIDTH{1'b0}};
+            end
+            always @(posedge clk) begin
+                for (i = 0; i < LANES; i = i + 1) begin
+                    if (wr_en && wr_mask[i]) mem[wr_addr][i*LANE_W +: LANE_W] <= wr_data[i*LANE_W +: LANE_W];
+                end
+                if (rd_en) rd_data <= mem[rd_addr];
+            end
+        end else begin : g_block
+            (* ram_style = "block" *) reg [WIDTH-1:0] mem [0:DEPTH-1];
+            initial begin
+                for (i = 0; i < DEPTH; i = i + 1) mem[i] = {WIDTH{1'b0}};
+            end
+            always @(posedge clk) begin
+                for (i = 0; i < LANES; i = i + 1) begin
+                    if (wr_en && wr_mask[i]) mem[wr_addr][i*LANE_W +: LANE_W] <= wr_data[i*LANE_W +: LANE_W];
+                end
+                if (rd_en) rd_data <= mem[rd_addr];
             end
         end
-    end
-
-    always @(posedge clk) begin
-        if (rd_en) begin
-            rd_data <= mem[rd_addr];
-        end
-    end
+    endgenerate
 endmodule
 
 `default_nettype wire

@@ -19,13 +19,16 @@ module gpu_raster #(
     parameter integer TRI_CAP = 512,
     parameter integer SPAN_W = 8,
     parameter integer ENABLE_LINES = 1,
+    parameter integer ENABLE_ZBUF = 0,
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer WORDS = 320 * 240 / SPAN_W,
     localparam integer WAW = $clog2(WORDS),
     localparam integer COL_W = $clog2(320 / SPAN_W),
     localparam integer CNT_W = $clog2(SPAN_W + 1),
-    localparam integer EDGE_W = 36
+    localparam integer EDGE_W = 36,
+    localparam integer Z_W = 52,
+    localparam integer ZSTEP_W = 40
 ) (
     input  wire                clk,
     input  wire                rst,
@@ -34,6 +37,8 @@ module gpu_raster #(
     input  wire                start,
     input  wire                ctrl_clear,
     input  wire                ctrl_swap,
+    input  wire                ctrl_ztest,
+    input  wire                ctrl_zclear,
     input  wire [31:0]         vtx_base,
     input  wire [31:0]         vtx_count,
     input  wire [31:0]         tri_base,
@@ -61,6 +66,15 @@ module gpu_raster #(
     output wire                vtx_rd_en,
     output wire [VI_W-1:0]     vtx_rd_addr,
     input  wire [31:0]         vtx_rd_data,
+    input  wire [15:0]         vz_rd_data,   // the vertex's depth (ENABLE_ZBUF)
+    // depth buffer (ENABLE_ZBUF)
+    output wire                z_rd_en,
+    output wire [WAW-1:0]      z_rd_addr,
+    input  wire [SPAN_W*16-1:0] z_rd_data,
+    output wire                z_wr_en,
+    output wire [WAW-1:0]      z_wr_addr,
+    output wire [SPAN_W*16-1:0] z_wr_data,
+    output wire [SPAN_W-1:0]   z_wr_mask,
     // framebuffer write port (back bank, one span)
     output wire                fb_wr_en,
     output wire [WAW-1:0]      fb_wr_addr,
@@ -89,6 +103,14 @@ module gpu_raster #(
     wire [11:0] desc_line_n;
     wire [12:0] desc_two_a_major, desc_two_a_minor;
     wire signed [14:0] desc_line_err;
+    wire signed [Z_W-1:0] desc_z_start;
+    wire signed [ZSTEP_W-1:0] desc_z_dx, desc_z_dy;
+    wire walker_z_wr_en;
+    wire [WAW-1:0] walker_z_wr_addr;
+    wire [SPAN_W*16-1:0] walker_z_wr_data;
+    wire [SPAN_W-1:0] walker_z_wr_mask;
+    wire ztest = ENABLE_ZBUF != 0 && ctrl_ztest;
+    wire zclear = ENABLE_ZBUF != 0 && ctrl_zclear;
     wire ev_prim_in, ev_drawn, ev_err_kind, ev_err_index, ev_span_visit, ev_span_written;
     wire [1:0] ev_rejected;
     wire [17:0] ev_samples;
@@ -99,13 +121,13 @@ module gpu_raster #(
     wire [SPAN_W-1:0] walker_wr_mask;
 
     gpu_prim_setup #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .SPAN_W(SPAN_W),
-                     .ENABLE_LINES(ENABLE_LINES)) u_setup (
+                     .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF)) u_setup (
         .clk(clk), .rst(pipe_rst),
         .start(state_q == S_CHECK && !count_error), .vtx_base(vtx_base), .vtx_count(vtx_count),
-        .tri_base(tri_base), .tri_count(tri_count), .idle(setup_idle),
+        .tri_base(tri_base), .tri_count(tri_count), .ctrl_ztest(ztest), .idle(setup_idle),
         .idx_rd_en(idx_rd_en), .idx_rd_addr(idx_rd_addr), .idx_rd_data(idx_rd_data),
         .vtx_rd_en(vtx_rd_en), .vtx_rd_addr(vtx_rd_addr), .vtx_rd_data(vtx_rd_data),
-        .out_valid(desc_valid), .out_ready(desc_ready), .out_is_line(desc_is_line),
+        .vz_rd_data(vz_rd_data), .out_valid(desc_valid), .out_ready(desc_ready), .out_is_line(desc_is_line),
         .out_color(desc_color), .out_e0(desc_e0), .out_e1(desc_e1), .out_e2(desc_e2),
         .out_sx0(desc_sx0), .out_sx1(desc_sx1), .out_sx2(desc_sx2),
         .out_sy0(desc_sy0), .out_sy1(desc_sy1), .out_sy2(desc_sy2), .out_top_left(desc_top_left),
@@ -114,6 +136,7 @@ module gpu_raster #(
         .out_line_n(desc_line_n), .out_line_xmajor(desc_xmajor), .out_line_xneg(desc_xneg),
         .out_line_yneg(desc_yneg), .out_line_two_a_major(desc_two_a_major),
         .out_line_two_a_minor(desc_two_a_minor), .out_line_err(desc_line_err),
+        .out_z_start(desc_z_start), .out_z_dx(desc_z_dx), .out_z_dy(desc_z_dy),
         .ev_prim_in(ev_prim_in), .ev_rejected(ev_rejected), .ev_drawn(ev_drawn),
         .ev_samples(ev_samples), .ev_err_kind(ev_err_kind), .ev_err_index(ev_err_index)
     );
@@ -121,7 +144,7 @@ module gpu_raster #(
     // The walker does not start on a descriptor until the clear is over (the setup may run ahead).
     wire walk_enable = state_q == S_DRAW || state_q == S_DRAIN;
 
-    gpu_span_walker #(.SPAN_W(SPAN_W)) u_walker (
+    gpu_span_walker #(.SPAN_W(SPAN_W), .ENABLE_ZBUF(ENABLE_ZBUF)) u_walker (
         .clk(clk), .rst(pipe_rst),
         .in_valid(desc_valid && walk_enable), .in_ready(walker_ready), .in_is_line(desc_is_line),
         .in_color(desc_color), .in_e0(desc_e0), .in_e1(desc_e1), .in_e2(desc_e2),
@@ -132,6 +155,10 @@ module gpu_raster #(
         .in_line_n(desc_line_n), .in_line_xmajor(desc_xmajor), .in_line_xneg(desc_xneg),
         .in_line_yneg(desc_yneg), .in_line_two_a_major(desc_two_a_major),
         .in_line_two_a_minor(desc_two_a_minor), .in_line_err(desc_line_err),
+        .in_z_start(desc_z_start), .in_z_dx(desc_z_dx), .in_z_dy(desc_z_dy), .ztest(ztest),
+        .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data),
+        .z_wr_en(walker_z_wr_en), .z_wr_addr(walker_z_wr_addr), .z_wr_data(walker_z_wr_data),
+        .z_wr_mask(walker_z_wr_mask),
         .fb_wr_en(walker_wr_en), .fb_wr_addr(walker_wr_addr), .fb_wr_data(walker_wr_data),
         .fb_wr_mask(walker_wr_mask), .idle(walker_idle),
         .ev_span_visit(ev_span_visit), .ev_span_written(ev_span_written), .ev_pixels(ev_pixels)
@@ -141,10 +168,17 @@ module gpu_raster #(
 
     // ---- framebuffer port: the clear or the walker ----
     wire clearing = state_q == S_CLEAR;
-    assign fb_wr_en   = clearing || walker_wr_en;
+    wire fb_clearing = clearing && ctrl_clear;
+    assign fb_wr_en   = fb_clearing || walker_wr_en;
     assign fb_wr_addr = clearing ? clear_addr_q : walker_wr_addr;
     assign fb_wr_data = clearing ? {SPAN_W{clear_color}} : walker_wr_data;
     assign fb_wr_mask = clearing ? {SPAN_W{1'b1}} : walker_wr_mask;
+    // ... and the depth buffer: its clear (all 0xFFFF) runs beside the colour clear.
+    wire zclearing = clearing && zclear;
+    assign z_wr_en   = zclearing || walker_z_wr_en;
+    assign z_wr_addr = zclearing ? clear_addr_q : walker_z_wr_addr;
+    assign z_wr_data = zclearing ? {(SPAN_W * 16){1'b1}} : walker_z_wr_data;
+    assign z_wr_mask = zclearing ? {SPAN_W{1'b1}} : walker_z_wr_mask;
 
     // ---- batch sequencing ----
     wire [32:0] vtx_end = {1'b0, vtx_base} + {1'b0, vtx_count};
@@ -204,7 +238,7 @@ module gpu_raster #(
                         errors[1] <= 1'b1;
                         state_q <= ctrl_swap ? S_VBLANK : S_FINISH;
                     end else begin
-                        state_q <= ctrl_clear ? S_CLEAR : S_DRAW;
+                        state_q <= (ctrl_clear || zclear) ? S_CLEAR : S_DRAW;
                     end
                 end
                 S_CLEAR: begin

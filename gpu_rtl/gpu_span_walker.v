@@ -22,14 +22,15 @@
 
 module gpu_span_walker #(
     parameter integer SPAN_W = 8,
+    parameter integer ENABLE_ZBUF = 0,  // depth test stage and depth-buffer port
     localparam integer COL_W = $clog2(320 / SPAN_W),
     localparam integer WORDS_PER_ROW = 320 / SPAN_W,
     localparam integer WAW = $clog2(320 * 240 / SPAN_W),
     localparam integer LANE_AW = (SPAN_W > 1) ? $clog2(SPAN_W) : 1,
     localparam integer CNT_W = $clog2(SPAN_W + 1),
     localparam integer EDGE_W = 36,
-    localparam signed [EDGE_W-1:0] LANES = EDGE_W'(SPAN_W),  // as edge-width constants
-    localparam signed [EDGE_W-1:0] LAST_LANE = EDGE_W'(SPAN_W) - EDGE_W'(1)
+    localparam integer Z_W = 52,
+    localparam integer ZSTEP_W = 40
 ) (
     input  wire                     clk,
     input  wire                     rst,
@@ -51,16 +52,27 @@ module gpu_span_walker #(
     input  wire [12:0]              in_line_two_a_major,
     input  wire [12:0]              in_line_two_a_minor,
     input  wire signed [14:0]       in_line_err,
+    input  wire signed [Z_W-1:0]    in_z_start,
+    input  wire signed [ZSTEP_W-1:0] in_z_dx, in_z_dy,
+    input  wire                     ztest,        // CTRL.ZTEST of the batch
+    // depth buffer (ENABLE_ZBUF): read the span's depths, write the winners'
+    output wire                     z_rd_en,
+    output wire [WAW-1:0]           z_rd_addr,
+    input  wire [SPAN_W*16-1:0]     z_rd_data,
+    output wire                     z_wr_en,
+    output wire [WAW-1:0]           z_wr_addr,
+    output wire [SPAN_W*16-1:0]     z_wr_data,
+    output wire [SPAN_W-1:0]        z_wr_mask,
     // framebuffer write port (back bank)
-    output reg                      fb_wr_en,
-    output reg  [WAW-1:0]           fb_wr_addr,
-    output reg  [SPAN_W*8-1:0]      fb_wr_data,
-    output reg  [SPAN_W-1:0]        fb_wr_mask,
+    output wire                     fb_wr_en,
+    output wire [WAW-1:0]           fb_wr_addr,
+    output wire [SPAN_W*8-1:0]      fb_wr_data,
+    output wire [SPAN_W-1:0]        fb_wr_mask,
     // status and events
     output wire                     idle,
     output reg                      ev_span_visit,
     output reg                      ev_span_written,
-    output reg  [CNT_W-1:0]         ev_pixels
+    output wire [CNT_W-1:0]         ev_pixels
 );
     localparam [1:0] S_IDLE = 2'd0, S_SEEK = 2'd1, S_SCAN = 2'd2, S_LINE = 2'd3;
     reg [1:0] state_q;
@@ -79,6 +91,19 @@ module gpu_span_walker #(
     function automatic covered(input signed [EDGE_W-1:0] e, input tl);
         covered = (e > 0) || (tl && (e == 0));
     endfunction
+    // v * n for an elaboration-time constant n >= 0, as shifts and adds: a generic multiplier here
+    // would cost an FPGA a DSP (or, on an iCE40, hundreds of LUTs) per lane for nothing.
+    function automatic signed [EDGE_W-1:0] times(input signed [EDGE_W-1:0] v, input integer n);
+        integer b;
+        begin
+            times = {EDGE_W{1'b0}};
+            for (b = 0; b < 8; b = b + 1) begin
+                if (((n >> b) & 1) != 0) begin
+                    times = times + (v <<< b);
+                end
+            end
+        end
+    endfunction
 
     reg [SPAN_W-1:0] lane_cov;              // pixels of this span inside the triangle
     reg [2:0] pass_left, pass_last, pass_next, pass_first;  // per edge: at lane -1, SPAN_W-1, SPAN_W, 0
@@ -87,14 +112,14 @@ module gpu_span_walker #(
         lane_cov = {SPAN_W{1'b1}};
         for (k = 0; k < 3; k = k + 1) begin
             for (l = 0; l < SPAN_W; l = l + 1) begin
-                if (!covered(e_q[k] + EDGE_W'(l) * sx_q[k], tl_q[k])) begin
+                if (!covered(e_q[k] + times(sx_q[k], l), tl_q[k])) begin
                     lane_cov[l] = 1'b0;
                 end
             end
             pass_left[k]  = covered(e_q[k] - sx_q[k], tl_q[k]);
             pass_first[k] = covered(e_q[k], tl_q[k]);
-            pass_last[k]  = covered(e_q[k] + LAST_LANE * sx_q[k], tl_q[k]);
-            pass_next[k]  = covered(e_q[k] + LANES * sx_q[k], tl_q[k]);
+            pass_last[k]  = covered(e_q[k] + times(sx_q[k], SPAN_W - 1), tl_q[k]);
+            pass_next[k]  = covered(e_q[k] + times(sx_q[k], SPAN_W), tl_q[k]);
         end
     end
 
@@ -138,24 +163,64 @@ module gpu_span_walker #(
     wire [WAW-1:0] line_addr = WAW'(32'(line_py) * WORDS_PER_ROW + 32'(line_px) / SPAN_W);
     wire [LANE_AW-1:0] line_lane = (SPAN_W > 1) ? LANE_AW'(line_px % 9'(SPAN_W)) : {LANE_AW{1'b0}};
 
+    // ---- depth of each lane: clamp(floor(Zfix / 2^16), 0, 65535), Zfix stepped like the edges ----
+    reg signed [Z_W-1:0] z_q, zfirst_q;
+    reg signed [ZSTEP_W-1:0] zdx_q, zdy_q;
+    reg ztest_q;
+    function automatic signed [Z_W-1:0] ztimes(input signed [ZSTEP_W-1:0] v, input integer n);
+        integer b;
+        begin
+            ztimes = {Z_W{1'b0}};
+            for (b = 0; b < 8; b = b + 1) begin
+                if (((n >> b) & 1) != 0) begin
+                    ztimes = ztimes + (Z_W'(v) <<< b);
+                end
+            end
+        end
+    endfunction
+    function automatic [15:0] zclamp(input signed [Z_W-1:0] zfix);
+        reg signed [Z_W-1:0] whole;
+        begin
+            whole = zfix >>> 16;
+            zclamp = (whole < 0) ? 16'd0 : ((whole > 65535) ? 16'hFFFF : whole[15:0]);
+        end
+    endfunction
+    reg [SPAN_W*16-1:0] lane_z;
+    always @(*) begin
+        for (l = 0; l < SPAN_W; l = l + 1) begin
+            lane_z[l*16 +: 16] = zclamp(z_q + ztimes(zdx_q, l));
+        end
+    end
+
+    // ---- stage 2: the candidate span, written one clock after it was found ----
+    reg cand_valid_q, cand_depth_q;      // a span to write; whether it is depth-tested
+    reg [WAW-1:0] cand_addr_q;
+    reg [SPAN_W*8-1:0] cand_data_q;
+    reg [SPAN_W-1:0] cand_mask_q;
+    reg [SPAN_W*16-1:0] cand_z_q;
+    reg [SPAN_W-1:0] final_mask;
+
     assign in_ready = state_q == S_IDLE;
-    assign idle = state_q == S_IDLE && !in_valid;
+    assign idle = state_q == S_IDLE && !in_valid && !cand_valid_q;
 
     always @(posedge clk) begin
         if (rst) begin
             state_q <= S_IDLE;
-            fb_wr_en <= 1'b0;
+            cand_valid_q <= 1'b0;
             ev_span_visit <= 1'b0;
             ev_span_written <= 1'b0;
-            ev_pixels <= {CNT_W{1'b0}};
         end else begin
-            fb_wr_en <= 1'b0;
+            cand_valid_q <= 1'b0;
             ev_span_visit <= seek || scan;
             ev_span_written <= 1'b0;
-            ev_pixels <= {CNT_W{1'b0}};
             case (state_q)
                 S_IDLE: if (in_valid) begin
                     color_q <= in_color;
+                    z_q <= in_z_start;
+                    zfirst_q <= in_z_start;
+                    zdx_q <= in_z_dx;
+                    zdy_q <= in_z_dy;
+                    ztest_q <= ztest && !in_is_line;
                     if (in_is_line) begin
                         lx_q <= in_line_x;
                         ly_q <= in_line_y;
@@ -193,16 +258,18 @@ module gpu_span_walker #(
                 end
                 S_SEEK, S_SCAN: begin
                     if (draw_span && lane_cov != {SPAN_W{1'b0}}) begin
-                        fb_wr_en <= 1'b1;
-                        fb_wr_addr <= row_addr_q + WAW'(col_q);
-                        fb_wr_data <= {SPAN_W{color_q}};
-                        fb_wr_mask <= lane_cov;
+                        cand_valid_q <= 1'b1;
+                        cand_depth_q <= ztest_q;
+                        cand_addr_q <= row_addr_q + WAW'(col_q);
+                        cand_data_q <= {SPAN_W{color_q}};
+                        cand_mask_q <= lane_cov;
+                        cand_z_q <= lane_z;
                         ev_span_written <= 1'b1;
-                        ev_pixels <= CNT_W'($countones(lane_cov));
                     end
                     if (first_span) begin
                         col_first_q <= col_q;
                         for (k = 0; k < 3; k = k + 1) efirst_q[k] <= e_q[k];
+                        zfirst_q <= z_q;
                     end
                     if (row_end) begin
                         if (row_q == row_hi_q) begin
@@ -216,14 +283,18 @@ module gpu_span_walker #(
                                 efirst_q[k] <= (first_span ? e_q[k] : efirst_q[k]) + sy_q[k];
                                 e_q[k] <= (first_span ? e_q[k] : efirst_q[k]) + sy_q[k];
                             end
+                            zfirst_q <= (first_span ? z_q : zfirst_q) + Z_W'(zdy_q);
+                            z_q <= (first_span ? z_q : zfirst_q) + Z_W'(zdy_q);
                             state_q <= S_SEEK;
                         end
                     end else if (go_left) begin
                         col_q <= col_q - 1'b1;
-                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] - LANES * sx_q[k];
+                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] - times(sx_q[k], SPAN_W);
+                        z_q <= z_q - ztimes(zdx_q, SPAN_W);
                     end else begin  // seeking right past a rejected span, or the scan's next span
                         col_q <= col_q + 1'b1;
-                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] + LANES * sx_q[k];
+                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] + times(sx_q[k], SPAN_W);
+                        z_q <= z_q + ztimes(zdx_q, SPAN_W);
                         if (draw_span) begin
                             state_q <= S_SCAN;
                         end
@@ -231,11 +302,11 @@ module gpu_span_walker #(
                 end
                 S_LINE: begin
                     if (line_on_screen) begin
-                        fb_wr_en <= 1'b1;
-                        fb_wr_addr <= line_addr;
-                        fb_wr_data <= {SPAN_W{color_q}};
-                        fb_wr_mask <= SPAN_W'(1) << line_lane;
-                        ev_pixels <= CNT_W'(1);
+                        cand_valid_q <= 1'b1;
+                        cand_depth_q <= 1'b0;
+                        cand_addr_q <= line_addr;
+                        cand_data_q <= {SPAN_W{color_q}};
+                        cand_mask_q <= SPAN_W'(1) << line_lane;
                     end
                     // Bresenham: step the minor axis when the error is positive, then the major one.
                     if (lerr_q > 0) begin
@@ -254,6 +325,54 @@ module gpu_span_walker #(
             endcase
         end
     end
+
+    // ---- stage 2: depth test against what the buffer holds (and what stage 2 wrote a clock ago,
+    // which the RAM cannot return yet), then one masked write of colour and depth ----
+    generate
+        if (ENABLE_ZBUF != 0) begin : g_z
+            reg last_wr_q;
+            reg [WAW-1:0] last_addr_q;
+            reg [SPAN_W-1:0] last_mask_q;
+            reg [SPAN_W*16-1:0] last_z_q;
+            reg [SPAN_W*16-1:0] old_z;
+            always @(*) begin
+                for (l = 0; l < SPAN_W; l = l + 1) begin
+                    old_z[l*16 +: 16] = (last_wr_q && last_addr_q == cand_addr_q && last_mask_q[l])
+                                      ? last_z_q[l*16 +: 16] : z_rd_data[l*16 +: 16];
+                    final_mask[l] = cand_mask_q[l]
+                                 && (!cand_depth_q || cand_z_q[l*16 +: 16] < old_z[l*16 +: 16]);
+                end
+            end
+            always @(posedge clk) begin
+                last_wr_q <= !rst && z_wr_en;
+                last_addr_q <= cand_addr_q;
+                last_mask_q <= final_mask;
+                last_z_q <= cand_z_q;
+            end
+            // The read is issued with the span it belongs to, so its data meets the candidate.
+            assign z_rd_en = (seek || scan) && draw_span;
+            assign z_rd_addr = row_addr_q + WAW'(col_q);
+            assign z_wr_en = cand_valid_q && cand_depth_q && final_mask != {SPAN_W{1'b0}};
+            assign z_wr_addr = cand_addr_q;
+            assign z_wr_data = cand_z_q;
+            assign z_wr_mask = final_mask;
+        end else begin : g_no_z
+            always @(*) final_mask = cand_mask_q;
+            assign z_rd_en = 1'b0;
+            assign z_rd_addr = {WAW{1'b0}};
+            assign z_wr_en = 1'b0;
+            assign z_wr_addr = {WAW{1'b0}};
+            assign z_wr_data = {(SPAN_W * 16){1'b0}};
+            assign z_wr_mask = {SPAN_W{1'b0}};
+            wire unused_z = cand_depth_q | (|cand_z_q) | (|z_rd_data);
+        end
+    endgenerate
+
+    assign fb_wr_en = cand_valid_q && final_mask != {SPAN_W{1'b0}};
+    assign fb_wr_addr = cand_addr_q;
+    assign fb_wr_data = cand_data_q;
+    assign fb_wr_mask = final_mask;
+    assign ev_pixels = cand_valid_q ? CNT_W'($countones(final_mask)) : {CNT_W{1'b0}};
 endmodule
 
 `default_nettype wire

@@ -13,6 +13,7 @@ module gpu_top #(
     parameter integer TRI_CAP = 512,     // index buffer capacity (contract default)
     parameter integer SPAN_W = 8,        // pixels rasterized per clock: 1, 4, 8 or 16
     parameter integer ENABLE_LINES = 1,  // line primitives (CAPS_LINES)
+    parameter integer ENABLE_ZBUF = 0,   // 16-bit depth buffer (CAPS_ZBUF): 1.2 Mb more block RAM
     parameter integer PIX_DIV = 4,       // system clocks per VGA pixel (100 MHz / 4 = 25 MHz)
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
@@ -41,7 +42,8 @@ module gpu_top #(
 `include "gpu_regs.vh"
 
     localparam [31:0] CAPS = (32'(SPAN_W) << GPU_CAPS_SPAN_W_LSB)
-                           | (32'(ENABLE_LINES != 0) << GPU_CAPS_LINES_LSB);
+                           | (32'(ENABLE_LINES != 0) << GPU_CAPS_LINES_LSB)
+                           | (32'(ENABLE_ZBUF != 0) << GPU_CAPS_ZBUF_LSB);
 
     // Batch description and status between the register block and the rasterizer.
     wire        ctrl_clear, ctrl_swap, ctrl_ztest, ctrl_zclear, start, soft_reset;
@@ -87,7 +89,33 @@ module gpu_top #(
         .perf_spans_visited(perf_spans_visited)
     );
 
-    // Vertex word 0 (x, y) is all the rasterizer reads; word 1 (z) has no use without a depth buffer.
+    // Depth: the vertices' z (word 1) and the depth buffer exist only in a build that tests depth.
+    wire [15:0] vz_rd_data;
+    wire z_rd_en, z_wr_en;
+    wire [FB_WAW-1:0] z_rd_addr, z_wr_addr;
+    wire [SPAN_W*16-1:0] z_rd_data, z_wr_data;
+    wire [SPAN_W-1:0] z_wr_mask;
+    generate
+        if (ENABLE_ZBUF != 0) begin : g_zbuf
+            gpu_ram #(.DEPTH(VTX_CAP), .WIDTH(16)) u_vtx_z_ram (
+                .clk(clk),
+                .wr_en(vtx_wr_en && vtx_wr_addr[0] == 1'b1), .wr_addr(vtx_wr_addr[VTX_AW-1:1]),
+                .wr_data(bus_wdata[GPU_VTX_Z_LSB +: 16]), .wr_mask(1'b1),
+                .rd_en(vtx_rd_en), .rd_addr(vtx_rd_addr), .rd_data(vz_rd_data)
+            );
+            gpu_ram #(.DEPTH(320 * 240 / SPAN_W), .WIDTH(SPAN_W * 16), .LANES(SPAN_W)) u_depth (
+                .clk(clk),
+                .wr_en(z_wr_en), .wr_addr(z_wr_addr), .wr_data(z_wr_data), .wr_mask(z_wr_mask),
+                .rd_en(z_rd_en), .rd_addr(z_rd_addr), .rd_data(z_rd_data)
+            );
+        end else begin : g_no_zbuf
+            assign vz_rd_data = 16'd0;
+            assign z_rd_data = {(SPAN_W * 16){1'b0}};
+            wire unused_z = z_rd_en | z_wr_en | (|z_rd_addr) | (|z_wr_addr) | (|z_wr_data) | (|z_wr_mask);
+        end
+    endgenerate
+
+    // Vertex word 0 (x, y) is all the rasterizer reads for coverage.
     gpu_ram #(.DEPTH(VTX_CAP), .WIDTH(32)) u_vtx_xy_ram (
         .clk(clk),
         .wr_en(vtx_wr_en && vtx_wr_addr[0] == 1'b0), .wr_addr(vtx_wr_addr[VTX_AW-1:1]),
@@ -103,17 +131,17 @@ module gpu_top #(
         .rd_en(idx_rd_en), .rd_addr(idx_rd_addr), .rd_data(idx_rd_data)
     );
 
-    gpu_ram #(.DEPTH(256), .WIDTH(12)) u_palette (
+    gpu_ram #(.DEPTH(256), .WIDTH(12), .DISTRIBUTED(1)) u_palette (
         .clk(clk),
         .wr_en(pal_wr_en), .wr_addr(pal_wr_addr), .wr_data(bus_wdata[11:0]), .wr_mask(1'b1),
         .rd_en(pal_rd_en), .rd_addr(pal_rd_addr), .rd_data(pal_rd_data)
     );
 
     gpu_raster #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .SPAN_W(SPAN_W),
-                 .ENABLE_LINES(ENABLE_LINES)) u_raster (
+                 .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF)) u_raster (
         .clk(clk), .rst(rst), .soft_reset(soft_reset),
-        .start(start), .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap),
-        .vtx_base(vtx_base), .vtx_count(vtx_count), .tri_base(tri_base), .tri_count(tri_count),
+        .start(start), .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .ctrl_ztest(ctrl_ztest),
+        .ctrl_zclear(ctrl_zclear), .vtx_base(vtx_base), .vtx_count(vtx_count), .tri_base(tri_base), .tri_count(tri_count),
         .clear_color(clear_color), .doorbell_tag(doorbell_tag),
         .busy(busy), .done_seq(done_seq), .frame_count(frame_count), .errors(raster_errors),
         .perf_busy_cycles(perf_busy_cycles), .perf_tris_in(perf_tris_in),
@@ -122,6 +150,8 @@ module gpu_top #(
         .perf_spans_written(perf_spans_written), .perf_spans_visited(perf_spans_visited),
         .idx_rd_en(idx_rd_en), .idx_rd_addr(idx_rd_addr), .idx_rd_data(idx_rd_data),
         .vtx_rd_en(vtx_rd_en), .vtx_rd_addr(vtx_rd_addr), .vtx_rd_data(vtx_rd_data),
+        .vz_rd_data(vz_rd_data), .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data),
+        .z_wr_en(z_wr_en), .z_wr_addr(z_wr_addr), .z_wr_data(z_wr_data), .z_wr_mask(z_wr_mask),
         .fb_wr_en(fb_wr_en), .fb_wr_addr(fb_wr_addr), .fb_wr_data(fb_wr_data),
         .fb_wr_mask(fb_wr_mask), .vblank_start(vblank_start), .swap(swap)
     );

@@ -14,7 +14,7 @@ echo "synth: yosys synth_xilinx (xc7) on gpu_top ..." >&2
 yosys -q -l "$out/xc7.log" 2>"$out/xc7.warnings" -p "read_verilog -sv -Igpu_rtl $rtl gpu_rtl/gpu_top.v; \
     synth_xilinx -family xc7 -top gpu_top -flatten; tee -q -o $out/xc7_stat.txt stat" >/dev/null
 
-count() { awk -v pat="$1" '$1 ~ /^[0-9]+$/ && $2 ~ pat { n += $1 } END { print n + 0 }' "$out/xc7_stat.txt"; }
+count() { awk -v pat="$1" '$1 ~ pat && $2 ~ /^[0-9]+$/ { n += $2 } END { print n + 0 }' "$out/xc7_stat.txt"; }
 luts=$(count '^LUT[1-6]$')
 lutram=$(count '^RAM(32|64|128|256)')
 ffs=$(count '^FD[RSCP]E$')

@@ -35,6 +35,7 @@ suite rtl-vs-model-100k      "$GPUSIM" random --seed 3 --batches 440 --tris 500 
 suite rtl-vs-model-span1     "$BUILD/sim-w1/gpusim" random --seed 4 --batches 20 --tris 100
 suite rtl-vs-model-span4     "$BUILD/sim-w4/gpusim" random --seed 5 --batches 20 --tris 100
 suite rtl-vs-model-span16    "$BUILD/sim-w16/gpusim" random --seed 6 --batches 20 --tris 100
+suite rtl-vs-model-zbuf      "$BUILD/sim-z-w8/gpusim" random --seed 7 --batches 40 --tris 300
 suite rtl-mesh-exact-once    bash tests/raster/mesh.sh
 suite raster-bad-input       bash tests/raster/bad_input.sh
 suite cosim-end-to-end       bash tests/cosim/end_to_end.sh
