@@ -30,7 +30,7 @@
 #define GPU_REG_VTX_CAP              0x00Cu  /* ro: Vertex buffer capacity in vertices. */
 #define GPU_REG_TRI_CAP              0x010u  /* ro: Index buffer capacity in primitives. */
 #define GPU_REG_FB_SIZE              0x014u  /* ro: Framebuffer size: width in [15:0], height in [31:16]. */
-#define GPU_REG_CTRL                 0x020u  /* rw: Batch options, see field CTRL_*. Sampled when DOORBELL is written. */
+#define GPU_REG_CTRL                 0x020u  /* rw: Batch options, see field CTRL_* (the other bits read 0). Sampled when DOORBELL is written. */
 #define GPU_REG_VTX_BASE             0x024u  /* rw: First vertex of the batch: index i of a primitive addresses vertex VTX_BASE + i. */
 #define GPU_REG_VTX_COUNT            0x028u  /* rw: Vertices in the batch. A primitive index >= VTX_COUNT is an error (ERR_VTX_INDEX). */
 #define GPU_REG_TRI_BASE             0x02Cu  /* rw: First primitive of the batch in the index buffer. */
@@ -47,7 +47,7 @@
 #define GPU_REG_PERF_TRIS_DRAWN      0x068u  /* ro: Primitives rasterized: valid, non-zero area, bounding box on screen. */
 #define GPU_REG_PERF_TRIS_REJECTED   0x06Cu  /* ro: Primitives skipped: bad vertex index, unsupported kind, zero area or off screen. */
 #define GPU_REG_PERF_PIXELS          0x070u  /* ro: Pixels written by primitives in the last batch (the clear is not counted). */
-#define GPU_REG_PERF_SAMPLES         0x074u  /* ro: Pixel centres tested by primitives (bounding-box area) in the last batch. */
+#define GPU_REG_PERF_SAMPLES         0x074u  /* ro: Size of the drawn primitives: pixel centres in each triangle's clamped bounding box, steps of each line. */
 #define GPU_REG_PERF_SPANS_WRITTEN   0x078u  /* ro: Aligned spans (CAPS_SPAN_W pixels of one row, first pixel a multiple of the width) with at least one covered pixel, over the batch's triangles. */
 #define GPU_REG_PERF_SPANS_VISITED   0x07Cu  /* ro: Span evaluations the rasterizer made, covered or not (implementation-specific, like PERF_BUSY_CYCLES; not modelled). */
 
