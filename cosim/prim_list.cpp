@@ -36,8 +36,11 @@ bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops, std::str
         } else if (word == "line") {
             op.kind = ListOp::Line;
             count = 4;
+        } else if (word == "ztri") {
+            op.kind = ListOp::ZTri;
+            count = 9;
         } else {
-            error = std::to_string(number) + ": unknown primitive '" + word + "' (clear, tri, line)";
+            error = std::to_string(number) + ": unknown primitive '" + word + "' (clear, tri, line, ztri)";
             return false;
         }
         std::vector<long> values;
@@ -56,6 +59,18 @@ bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops, std::str
             error = std::to_string(number) + ": " + word + " takes " + std::to_string(count + 1) + " integers, got " +
                     std::to_string(values.size());
             return false;
+        }
+        if (op.kind == ListOp::ZTri) {  // x y z triples: move the depths aside
+            for (int i = 0; i < 3; i++) {
+                if (values[3 * i + 2] < 0 || values[3 * i + 2] > 65535) {
+                    error = std::to_string(number) + ": depth " + std::to_string(values[3 * i + 2]) +
+                            " is outside 0..65535";
+                    return false;
+                }
+                op.z[i] = static_cast<uint32_t>(values[3 * i + 2]);
+            }
+            values = {values[0], values[1], values[3], values[4], values[6], values[7], values[9]};
+            count = 6;
         }
         for (int i = 0; i < count; i++) {
             if (values[i] < -32768 || values[i] > 32767) {
@@ -77,27 +92,35 @@ bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops, std::str
 
 std::vector<Batch> prim_list_batches(const std::vector<ListOp> &ops, uint32_t vtx_cap, uint32_t tri_cap)
 {
+    bool depth = false;
+    for (const ListOp &op : ops) {
+        depth = depth || op.kind == ListOp::ZTri;
+    }
     std::vector<Batch> batches(1);
+    batches.back().depth = depth;
     for (const ListOp &op : ops) {
         if (op.kind == ListOp::Clear) {
             batches.emplace_back();
+            batches.back().depth = depth;
             batches.back().clear = true;
             batches.back().clear_color = op.color;
             continue;
         }
-        const uint32_t nv = op.kind == ListOp::Tri ? 3 : 2;
+        const bool tri = op.kind != ListOp::Line;
+        const uint32_t nv = tri ? 3 : 2;
         Batch *b = &batches.back();
         if (b->vtx.size() / 2 + nv > vtx_cap || b->idx.size() / 2 + 1 > tri_cap) {
             batches.emplace_back();
             b = &batches.back();
+            b->depth = depth;
         }
         const uint32_t first = static_cast<uint32_t>(b->vtx.size() / 2);
         for (uint32_t i = 0; i < nv; i++) {
             b->vtx.push_back(static_cast<uint16_t>(op.v[2 * i]) | static_cast<uint32_t>(static_cast<uint16_t>(op.v[2 * i + 1])) << 16);
-            b->vtx.push_back(0);
+            b->vtx.push_back(op.kind == ListOp::ZTri ? op.z[i] << GPU_VTX_Z_LSB : 0);
         }
-        const uint32_t kind = op.kind == ListOp::Tri ? GPU_PRIM_KIND_TRI : GPU_PRIM_KIND_LINE;
-        const uint32_t i2 = op.kind == ListOp::Tri ? first + 2 : 0;
+        const uint32_t kind = tri ? GPU_PRIM_KIND_TRI : GPU_PRIM_KIND_LINE;
+        const uint32_t i2 = tri ? first + 2 : 0;
         b->idx.push_back(first | (first + 1) << 16);
         b->idx.push_back(i2 | op.color << GPU_PRIM_COLOR_LSB | kind << GPU_PRIM_KIND_LSB);
     }

@@ -2,7 +2,9 @@
 //
 // One primitive per line, integers: `clear C`, `tri X0 Y0 X1 Y1 X2 Y2 C`, `line X0 Y0 X1 Y1 C`
 // (coordinates Q12.4, -32768..32767; C a palette index 0..255); `#` starts a comment; blank lines
-// are ignored. Primitives are drawn in list order, later over earlier.
+// are ignored. Primitives are drawn in list order, later over earlier. On a GPU built with the depth
+// buffer, `ztri X0 Y0 Z0 X1 Y1 Z1 X2 Y2 Z2 C` (Z 0..65535) draws a depth-tested triangle; a `clear`
+// also resets the depths when the list has any `ztri`.
 #ifndef PRIM_LIST_H
 #define PRIM_LIST_H
 
@@ -11,8 +13,9 @@
 #include <vector>
 
 struct ListOp {
-    enum Kind { Clear, Tri, Line } kind;
+    enum Kind { Clear, Tri, Line, ZTri } kind;
     int32_t v[6];   // x0 y0 x1 y1 x2 y2 (unused ones 0)
+    uint32_t z[3];  // depths of a ztri
     uint32_t color;
 };
 
@@ -22,6 +25,7 @@ bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops, std::str
 // One GPU batch: its vertex and index words, whether it clears first, and with what colour.
 struct Batch {
     bool clear = false;
+    bool depth = false;          // ZTEST (and ZCLEAR with the clear): the list has a ztri
     uint32_t clear_color = 0;
     std::vector<uint32_t> vtx;   // 2 words per vertex
     std::vector<uint32_t> idx;   // 2 words per primitive

@@ -107,7 +107,11 @@ int raster_main(int argc, char **argv)
         write(GPU_REG_TRI_BASE, 0);
         write(GPU_REG_TRI_COUNT, static_cast<uint32_t>(b.idx.size() / 2));
         write(GPU_REG_CLEAR_COLOR, b.clear_color);
-        write(GPU_REG_CTRL, (b.clear ? GPU_CTRL_CLEAR_MASK : 0) | (last ? GPU_CTRL_SWAP_MASK : 0));
+        uint32_t ctrl = (b.clear ? GPU_CTRL_CLEAR_MASK : 0) | (last ? GPU_CTRL_SWAP_MASK : 0);
+        if (b.depth) {
+            ctrl |= GPU_CTRL_ZTEST_MASK | ((b.clear || k == 0) ? GPU_CTRL_ZCLEAR_MASK : 0);
+        }
+        write(GPU_REG_CTRL, ctrl);
         const uint32_t tag = static_cast<uint32_t>(k + 1);
         write(GPU_REG_DOORBELL, tag);
         if (!sim.wait_done(tag, 2000000000ull)) {

@@ -198,8 +198,9 @@ int rtl_check_main(int argc, char **argv)
             }
         }
         if (!diff.empty()) {
-            std::printf("random: seed %llu batch %d (vertex family %d, %u prims): %s\n",
-                        static_cast<unsigned long long>(seed), b, family, nt, diff.c_str());
+            std::printf("random: seed %llu batch %d (vertex family %d, %u prims, CTRL 0x%x, %llu resets before): %s\n",
+                        static_cast<unsigned long long>(seed), b, family, nt, ctrl,
+                        static_cast<unsigned long long>(resets), diff.c_str());
             return 1;
         }
         tris += sim.read(GPU_REG_PERF_TRIS_IN);
