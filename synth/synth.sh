@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # `make synth`: yosys on the GPU.
 #  1. 7-series (synth_xilinx) of gpu_top in its default configuration: LUT, FF, BRAM36, DSP counts.
-#  2. iCE40 HX8K place-and-route (nextpnr-ice40) of the rasterizer core (synth/ice40_raster_core.v,
-#     SPAN_W=4): utilisation and fmax.
+#  2. iCE40 HX8K place-and-route (nextpnr-ice40) of the span walker (synth/ice40_walker_core.v,
+#     SPAN_W=4): utilisation and fmax. (The whole rasterizer needs ~12k LUT4 on an iCE40 for its
+#     set-up multipliers, measured, and does not fit the 7680 of the largest part.)
 # Usage: synth.sh BUILD_DIR. Prints a Markdown table; logs in BUILD_DIR/synth/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,11 +24,11 @@ bram18=$(count '^RAMB18E1$')
 dsps=$(count '^DSP48E1$')
 carry=$(count '^CARRY4$')
 
-echo "synth: yosys synth_ice40 + nextpnr-ice40 (hx8k) on the rasterizer core ..." >&2
-yosys -q -l "$out/ice40.log" 2>"$out/ice40.warnings" -p "read_verilog -sv -Igpu_rtl $rtl synth/ice40_raster_core.v; \
-    chparam -set SPAN_W 4 ice40_raster_core; synth_ice40 -top ice40_raster_core -json $out/ice40.json" >/dev/null
+echo "synth: yosys synth_ice40 + nextpnr-ice40 (hx8k) on the span walker ..." >&2
+yosys -q -l "$out/ice40.log" 2>"$out/ice40.warnings" -p "read_verilog -sv -Igpu_rtl $rtl synth/ice40_walker_core.v; \
+    synth_ice40 -top ice40_walker_core -json $out/ice40.json" >/dev/null
 nextpnr-ice40 --hx8k --package ct256 --json "$out/ice40.json" --freq 50 --seed 1 \
-    --report "$out/ice40_report.json" >"$out/nextpnr.log" 2>&1 || { tail -20 "$out/nextpnr.log"; exit 1; }
+    --timing-allow-fail --report "$out/ice40_report.json" >"$out/nextpnr.log" 2>&1 || { tail -20 "$out/nextpnr.log"; exit 1; }
 fmax=$(grep -o "Max frequency for clock[^:]*: [0-9.]* MHz" "$out/nextpnr.log" | tail -1 | grep -o "[0-9.]* MHz")
 lcs=$(grep -o "ICESTORM_LC: *[0-9]*/ *[0-9]*" "$out/nextpnr.log" | tail -1 | tr -s ' ')
 ebr=$(grep -o "ICESTORM_RAM: *[0-9]*/ *[0-9]*" "$out/nextpnr.log" | tail -1 | tr -s ' ')
@@ -35,4 +36,4 @@ ebr=$(grep -o "ICESTORM_RAM: *[0-9]*/ *[0-9]*" "$out/nextpnr.log" | tail -1 | tr
 echo "| target | design | LUT | FF | BRAM36 (+BRAM18) | LUTRAM | DSP | CARRY4 | fmax |"
 echo "|---|---|---:|---:|---:|---:|---:|---:|---:|"
 echo "| xc7 (synth_xilinx) | gpu_top, SPAN_W=8, lines, no z | $luts | $ffs | $bram36 (+$bram18) | $lutram | $dsps | $carry | (not placed) |"
-echo "| iCE40 HX8K (nextpnr) | rasterizer core, SPAN_W=4 | ${lcs#ICESTORM_LC: } LC | | ${ebr#ICESTORM_RAM: } EBR | | | | $fmax |"
+echo "| iCE40 HX8K (nextpnr) | span walker, SPAN_W=4 | ${lcs#ICESTORM_LC: } LC | | ${ebr#ICESTORM_RAM: } EBR | | | | $fmax |"
