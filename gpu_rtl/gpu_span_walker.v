@@ -368,6 +368,19 @@ module gpu_span_walker #(
         end
     endgenerate
 
+`ifndef SYNTHESIS
+    // The depth range argument (contract, "Depth"), checked: the Q16 accumulator stays below 2^50
+    // in magnitude at every lane of every span a depth-tested triangle writes.
+    always @(posedge clk) begin
+        if (!rst && ztest_q && (seek || scan) && draw_span) begin
+            for (k = 0; k < SPAN_W; k = k + 1) begin
+                assert ((z_q + ztimes(zdx_q, k)) < (52'sd1 <<< 50) && (z_q + ztimes(zdx_q, k)) > -(52'sd1 <<< 50))
+                    else $error("gpu_span_walker: depth accumulator exceeds 2^50");
+            end
+        end
+    end
+`endif
+
     assign fb_wr_en = cand_valid_q && final_mask != {SPAN_W{1'b0}};
     assign fb_wr_addr = cand_addr_q;
     assign fb_wr_data = cand_data_q;
