@@ -46,7 +46,7 @@ run-headless: $(FW_ELF) $(GPUSIM)
 test: setup
 	@$(MAKE) --no-print-directory test-quick
 
-test-quick: $(FW_ELF) $(BENCH_SIMS) $(ZBUF_SIM) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit
+test-quick: $(FW_ELF) $(BENCH_SIMS) $(ZBUF_SIM) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit fw-test-deps
 	@GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) bash tests/run_all.sh
 
 # ---- the contract: regenerate, or check that the generated files are current ----
@@ -62,7 +62,7 @@ lint:
 # ---- longer randomized RTL-vs-model run ----
 random-long: $(GPUSIM)
 	for seed in 101 102 103 104 105 106 107 108 109 110; do \
-	  $(GPUSIM) random --seed $$seed --batches 440 --tris 500 --swap-percent 10 --min-prims 100000 || exit 1; done
+	  $(GPUSIM) random --seed $$seed --batches 500 --tris 500 --swap-percent 10 --min-prims 100000 || exit 1; done
 
 # ---- the GPU without firmware: a primitive list through RTL and model ----
 raster: $(GPUSIM)

@@ -2,85 +2,230 @@
 # to the repository root, where that Makefile lives).
 #
 # Inputs (set before or on the command line):
-#   BUILD          output directory                       (default build)
-#   FRAMES         frames the firmware renders, -DFW_FRAMES (default 24)
+#   BUILD          output directory                                  (default build)
+#   SCENE          scene shown at boot: tetra cubes landscape voxel knot (default tetra)
+#   FW_BACKEND     arithmetic of the pipeline: fixed or float          (default fixed)
+#   FRAMES         frames the firmware renders, -DFW_FRAMES; 0 = until Q (default 24)
 #   RV_CC          cross compiler                         (default riscv64-unknown-elf-gcc)
-#   HOST_CC        host compiler for the unit tests       (default gcc)
+#   HOST_CC        host compiler for the host build and the unit tests (default gcc)
 #   HOST_CFLAGS    host flags, extended by the firmware's warnings and include paths
 #   FW_PLATFORM    bsp/<platform>/ to build for           (default qemu_virt)
-#   FW_MAX_POLLS   optional -DFW_GPU_MAX_POLLS override (DONE_SEQ reads before a timeout)
+#   FW_MAX_POLLS   optional -DFW_GPU_MAX_POLLS override (the watchdog: DONE_SEQ reads per batch)
+#   FW_PROFILE     1: every frame also prints where its instructions went (app.c)
+#   GPUSIM         the co-simulator (set by the top-level Makefile), for bench-fw
 #
 # Outputs:
-#   $(FW_ELF)                  = $(BUILD)/firmware/tetra.elf (+ .map, .lst next to it)
-#   $(FW_UNIT)                 = $(BUILD)/tests/fw_unit, host unit tests of the pure code
-# Convenience targets: fw (the ELF), fw-unit (build and run the unit tests), fw-smoke (boot the ELF
-# in QEMU without a GPU and check the two failure paths: "GPU not found", and a bounded timeout when
-# the GPU's ID registers are present but nothing answers the doorbell).
+#   $(FW_ELF)       = $(BUILD)/firmware/$(SCENE)[-float].elf (+ .map, .lst): what `make run` runs
+#   $(FW_HOST)      = $(BUILD)/fw-host/$(SCENE)[-float]: the same firmware on the host, rendering
+#                     through the golden model (bsp/host)
+#   $(FW_UNIT)      = $(BUILD)/tests/fw_unit, host unit tests of the pure code (fixed backend)
+#   $(FW_UNIT_FLOAT)= $(BUILD)/tests/fw_unit_float, the same tests on the float backend
+#   fw-test-deps    everything tests/scenes/*.sh needs (scene ELFs and host builds with
+#                   FW_TEST_FRAMES frames under $(BUILD)/fw-test, the watchdog test ELF)
+# Convenience targets: fw, fw-all (every scene, both backends), fw-host, fw-unit, fw-smoke,
+# bench-fw (the instruction-count table of every scene and backend, measured in co-simulation).
+#
+# Objects are shared per backend; only app.c, which carries the scene name, the frame count and
+# the watchdog bound, is compiled per ELF. A change of flags rebuilds by itself (cflags.txt).
 
 BUILD       ?= build
+SCENE       ?= tetra
+FW_BACKEND  ?= fixed
 FRAMES      ?= 24
 RV_CC       ?= riscv64-unknown-elf-gcc
 HOST_CC     ?= gcc
 HOST_CFLAGS ?= -std=c11 -O2 -g -Wall -Wextra -Werror
 FW_PLATFORM ?= qemu_virt
 FW_MAX_POLLS ?=
+FW_PROFILE  ?=
+GPUSIM      ?= $(BUILD)/sim/gpusim
 
 include bsp/$(FW_PLATFORM)/bsp.mk
 
-FW_ELF  := $(BUILD)/firmware/tetra.elf
-FW_UNIT := $(BUILD)/tests/fw_unit
-FW_OBJ  := $(BUILD)/firmware/obj
+FW_SCENES   := tetra cubes landscape voxel knot
+FW_BACKENDS := fixed float
 
-# Pure sources (no hardware access: built for the target and for the host tests), and the
-# hardware edge (target only).
-FW_PURE_SRCS := firmware/src/fixed.c firmware/src/xform.c firmware/src/render.c \
-                firmware/src/scene.c
-FW_EDGE_SRCS := firmware/src/gpu.c firmware/src/main.c
-FW_SRCS      := $(FW_PURE_SRCS) $(FW_EDGE_SRCS) $(FW_BSP_SRCS)
+ifeq ($(filter $(SCENE),$(FW_SCENES)),)
+$(error SCENE=$(SCENE) is not one of: $(FW_SCENES))
+endif
+ifeq ($(filter $(FW_BACKEND),$(FW_BACKENDS)),)
+$(error FW_BACKEND=$(FW_BACKEND) is not one of: $(FW_BACKENDS))
+endif
 
-FW_WARN   := -std=c11 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes
-FW_DEFS   := -DFW_FRAMES=$(FRAMES) $(if $(FW_MAX_POLLS),-DFW_GPU_MAX_POLLS=$(FW_MAX_POLLS))
-FW_CFLAGS := $(FW_ARCH_FLAGS) -O2 -g $(FW_WARN) -ffunction-sections -fdata-sections \
-             -Ibsp/$(FW_PLATFORM) -Ifirmware/include -Ifirmware/src $(FW_DEFS)
-FW_LDFLAGS := $(FW_ARCH_FLAGS) $(FW_BSP_LDFLAGS) -T$(FW_LDSCRIPT) -Wl,--gc-sections \
-              -Wl,-Map=$(FW_ELF:.elf=.map)
+# name of a (scene, backend) build: tetra, tetra-float
+fw_name = $(1)$(if $(filter float,$(2)),-float)
 
-FW_OBJS := $(patsubst %.c,$(FW_OBJ)/%.o,$(FW_SRCS))
+FW_ELF        := $(BUILD)/firmware/$(call fw_name,$(SCENE),$(FW_BACKEND)).elf
+FW_HOST       := $(BUILD)/fw-host/$(call fw_name,$(SCENE),$(FW_BACKEND))
+FW_UNIT       := $(BUILD)/tests/fw_unit
+FW_UNIT_FLOAT := $(BUILD)/tests/fw_unit_float
 
-# Rebuild when the flags change (FRAMES=…), not only when sources do.
-$(FW_OBJ)/cflags.txt: fw-force
-	@mkdir -p $(@D)
-	@echo '$(FW_CC) $(FW_CFLAGS)' | cmp -s - $@ || echo '$(FW_CC) $(FW_CFLAGS)' > $@
+# Pure sources (no hardware access: built for the target, the host build and the unit tests),
+# the driver edge, the frame loop (per ELF), the target's main.
+FW_PURE_SRCS := $(addprefix firmware/src/,fixed.c vec.c camera.c input.c palette.c mesh.c proj.c \
+                clip.c sort.c render.c batch.c voxel.c scene.c scene_tetra.c scene_cubes.c \
+                scene_landscape.c scene_voxel.c scene_knot.c)
+FW_DRIVER_SRC := firmware/src/gpu.c
+FW_APP_SRC    := firmware/src/app.c
+FW_MAIN_SRC   := firmware/src/main.c
+FW_HOST_SRCS  := bsp/host/bsp_host.c bsp/host/host_main.c gpu_model/gpu_model.c cosim/png_write.c
+# Other owners' sources in the host build (gpu_model/, cosim/) get the project's host flags, not
+# the firmware's stricter warning set (a new warning there must not break the firmware build).
 
-$(FW_OBJ)/%.o: %.c $(FW_OBJ)/cflags.txt
-	@mkdir -p $(@D)
-	$(FW_CC) $(FW_CFLAGS) -MMD -MP -c $< -o $@
+FW_PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
+FW_PNG_LIBS   := $(or $(shell pkg-config --libs libpng 2>/dev/null),-lpng)
 
-$(FW_ELF): $(FW_OBJS) $(FW_LDSCRIPT)
-	$(FW_CC) $(FW_LDFLAGS) -o $@ $(FW_OBJS)
-	$(FW_OBJDUMP) -d -S $@ > $(@:.elf=.lst)
+FW_WARN := -std=c11 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes
+FW_BACKEND_DEFS_fixed :=
+FW_BACKEND_DEFS_float := -DFW_BACKEND_FLOAT=1
+# -ffp-contract=off: no fused multiply-adds, so the float backend rounds identically on the host
+# and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
+FW_CFLAGS_BASE := $(FW_ARCH_FLAGS) -O2 -g $(FW_WARN) -ffp-contract=off -ffunction-sections \
+                  -fdata-sections -Ibsp/$(FW_PLATFORM) -Ifirmware/include -Ifirmware/src
+FW_HOST_CFLAGS_BASE = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Ibsp/host -Ifirmware/include \
+                      -Ifirmware/src -Igpu_model -Icosim
+FW_FOREIGN_CFLAGS = $(HOST_CFLAGS) -Ifirmware/include -Igpu_model -Icosim $(FW_PNG_CFLAGS)
+FW_LDFLAGS_BASE := $(FW_ARCH_FLAGS) $(FW_BSP_LDFLAGS) -T$(FW_LDSCRIPT) -Wl,--gc-sections
+
+# Record a command line in a file, rewriting it only when it changed: objects depend on it.
+# $(1) = file, $(2) = text
+define fw_flags_file
+	@mkdir -p $(dir $(1))
+	@echo '$(2)' | cmp -s - $(1) || echo '$(2)' > $(1)
+endef
+
+# ---- per backend: shared objects, target and host ----------------------------------------------
+# $(1) = backend
+define FW_BACKEND_RULES
+FW_OBJ_DIR_$(1)   := $(BUILD)/firmware/obj-$(1)
+FW_CFLAGS_$(1)    := $(FW_CFLAGS_BASE) $(FW_BACKEND_DEFS_$(1))
+FW_OBJS_$(1)      := $$(patsubst %.c,$$(FW_OBJ_DIR_$(1))/%.o,$(FW_PURE_SRCS) $(FW_DRIVER_SRC) \
+                     $(FW_MAIN_SRC) $(FW_BSP_SRCS))
+HOST_OBJ_DIR_$(1) := $(BUILD)/fw-host/obj-$(1)
+FW_HOST_CFLAGS_$(1) = $(FW_HOST_CFLAGS_BASE) $(FW_BACKEND_DEFS_$(1)) $(FW_PNG_CFLAGS)
+FW_HOST_OBJS_$(1) := $$(patsubst %.c,$$(HOST_OBJ_DIR_$(1))/%.o,$(FW_PURE_SRCS) $(FW_DRIVER_SRC) \
+                     $(FW_HOST_SRCS))
+
+$$(FW_OBJ_DIR_$(1))/cflags.txt: fw-force
+	$$(call fw_flags_file,$$@,$$(FW_CC) $$(FW_CFLAGS_$(1)))
+
+$$(FW_OBJ_DIR_$(1))/%.o: %.c $$(FW_OBJ_DIR_$(1))/cflags.txt
+	@mkdir -p $$(@D)
+	$$(FW_CC) $$(FW_CFLAGS_$(1)) -MMD -MP -c $$< -o $$@
+
+$$(HOST_OBJ_DIR_$(1))/cflags.txt: fw-force
+	$$(call fw_flags_file,$$@,$$(HOST_CC) $$(FW_HOST_CFLAGS_$(1)))
+
+$$(HOST_OBJ_DIR_$(1))/%.o: %.c $$(HOST_OBJ_DIR_$(1))/cflags.txt
+	@mkdir -p $$(@D)
+	$$(HOST_CC) $$(FW_HOST_CFLAGS_$(1)) -MMD -MP -c $$< -o $$@
+
+$$(HOST_OBJ_DIR_$(1))/gpu_model/%.o: gpu_model/%.c $$(HOST_OBJ_DIR_$(1))/cflags.txt
+	@mkdir -p $$(@D)
+	$$(HOST_CC) $$(FW_FOREIGN_CFLAGS) -MMD -MP -c $$< -o $$@
+
+$$(HOST_OBJ_DIR_$(1))/cosim/%.o: cosim/%.c $$(HOST_OBJ_DIR_$(1))/cflags.txt
+	@mkdir -p $$(@D)
+	$$(HOST_CC) $$(FW_FOREIGN_CFLAGS) -MMD -MP -c $$< -o $$@
+
+FW_DEP_FILES += $$(FW_OBJS_$(1):.o=.d) $$(FW_HOST_OBJS_$(1):.o=.d)
+endef
+
+# ---- per program: app.c with its settings, linked with a backend's objects ---------------------
+# $(1) = ELF path, $(2) = scene, $(3) = backend, $(4) = frames, $(5) = max polls (may be empty)
+define FW_ELF_RULES
+$(1:.elf=)/app.o: $(FW_APP_SRC) $(1:.elf=)/cflags.txt
+	$$(FW_CC) $$(FW_CFLAGS_$(3)) -DFW_SCENE='"$(2)"' -DFW_FRAMES=$(4) \
+	  $(if $(5),-DFW_GPU_MAX_POLLS=$(5)) $(if $(FW_PROFILE),-DFW_PROFILE=$(FW_PROFILE)) \
+	  -MMD -MP -c $$< -o $$@
+
+$(1:.elf=)/cflags.txt: fw-force
+	$$(call fw_flags_file,$$@,$$(FW_CC) $$(FW_CFLAGS_$(3)) $(2) $(4) $(5) $(FW_PROFILE))
+
+$(1): $$(FW_OBJS_$(3)) $(1:.elf=)/app.o $(FW_LDSCRIPT)
+	$$(FW_CC) $$(FW_LDFLAGS_BASE) -Wl,-Map=$(1:.elf=.map) -o $$@ $$(FW_OBJS_$(3)) \
+	  $(1:.elf=)/app.o -lm
+	$$(FW_OBJDUMP) -d -S $$@ > $(1:.elf=.lst)
+
+FW_DEP_FILES += $(1:.elf=)/app.d
+endef
+
+# $(1) = host program path, $(2) = scene, $(3) = backend, $(4) = frames
+define FW_HOST_RULES
+$(1).obj/app.o: $(FW_APP_SRC) $(1).obj/cflags.txt
+	@mkdir -p $$(@D)
+	$$(HOST_CC) $$(FW_HOST_CFLAGS_$(3)) -DFW_SCENE='"$(2)"' -DFW_FRAMES=$(4) -MMD -MP -c $$< -o $$@
+
+$(1).obj/cflags.txt: fw-force
+	$$(call fw_flags_file,$$@,$$(HOST_CC) $$(FW_HOST_CFLAGS_$(3)) $(2) $(4))
+
+$(1): $$(FW_HOST_OBJS_$(3)) $(1).obj/app.o
+	$$(HOST_CC) -o $$@ $$(FW_HOST_OBJS_$(3)) $(1).obj/app.o $(FW_PNG_LIBS) -lm
+
+FW_DEP_FILES += $(1).obj/app.d
+endef
+
+$(foreach b,$(FW_BACKENDS),$(eval $(call FW_BACKEND_RULES,$(b))))
+
+# What `make run`, `make fw-all` and `make fw-host` build: FRAMES frames.
+FW_ALL_ELFS :=
+FW_ALL_HOSTS :=
+$(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
+  $(eval $(call FW_ELF_RULES,$(BUILD)/firmware/$(call fw_name,$(s),$(b)).elf,$(s),$(b),$(FRAMES),$(FW_MAX_POLLS)))\
+  $(eval $(call FW_HOST_RULES,$(BUILD)/fw-host/$(call fw_name,$(s),$(b)),$(s),$(b),$(FRAMES)))\
+  $(eval FW_ALL_ELFS += $(BUILD)/firmware/$(call fw_name,$(s),$(b)).elf)\
+  $(eval FW_ALL_HOSTS += $(BUILD)/fw-host/$(call fw_name,$(s),$(b)))))
+
+# Test builds: few frames, independent of FRAMES, so `make test` does not depend on what the last
+# `make run` asked for. The watchdog test gets a short watchdog (2^28 polls, ~3 s under QEMU).
+FW_TEST_FRAMES := 4
+FW_TEST_DIR    := $(BUILD)/fw-test
+FW_TEST_DEPS   :=
+$(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
+  $(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/$(call fw_name,$(s),$(b)).elf,$(s),$(b),$(FW_TEST_FRAMES),))\
+  $(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-$(call fw_name,$(s),$(b)),$(s),$(b),$(FW_TEST_FRAMES)))\
+  $(eval FW_TEST_DEPS += $(FW_TEST_DIR)/$(call fw_name,$(s),$(b)).elf $(FW_TEST_DIR)/host-$(call fw_name,$(s),$(b)))))
+$(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/tetra-watchdog.elf,tetra,fixed,5,268435456))
+FW_TEST_DEPS += $(FW_TEST_DIR)/tetra-watchdog.elf $(FW_UNIT) $(FW_UNIT_FLOAT)
+
+# Benchmark builds: FW_BENCH_FRAMES frames of every scene, both backends.
+FW_BENCH_FRAMES := 8
+FW_BENCH_DIR    := $(BUILD)/fw-bench
+FW_BENCH_ELFS   :=
+$(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
+  $(eval $(call FW_ELF_RULES,$(FW_BENCH_DIR)/$(call fw_name,$(s),$(b)).elf,$(s),$(b),$(FW_BENCH_FRAMES),))\
+  $(eval FW_BENCH_ELFS += $(FW_BENCH_DIR)/$(call fw_name,$(s),$(b)).elf)))
 
 # ---- host unit tests -------------------------------------------------------------------------
-# gpu.c is built against tests/firmware/fake_bsp/bsp.h (the GPU aperture is an array).
+# The pure sources and gpu.c, built against tests/firmware/fake_bsp/bsp.h (the GPU aperture is an
+# array), once per backend. Test files that only make sense for one backend say so themselves.
 
-FW_UNIT_OBJ    := $(BUILD)/tests/fw_unit_obj
-FW_UNIT_SRCS   := $(wildcard tests/firmware/*.c) $(FW_PURE_SRCS) firmware/src/gpu.c
-FW_UNIT_CFLAGS  = $(HOST_CFLAGS) $(FW_WARN) -Itests/firmware/fake_bsp -Itests/firmware \
-                  -Ifirmware/include -Ifirmware/src
-FW_UNIT_OBJS   := $(patsubst %.c,$(FW_UNIT_OBJ)/%.o,$(FW_UNIT_SRCS))
+FW_UNIT_TEST_SRCS := $(wildcard tests/firmware/*.c)
+FW_UNIT_CFLAGS     = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Itests/firmware/fake_bsp \
+                     -Itests/firmware -Ifirmware/include -Ifirmware/src
 
-$(FW_UNIT_OBJ)/cflags.txt: fw-force
-	@mkdir -p $(@D)
-	@echo '$(HOST_CC) $(FW_UNIT_CFLAGS)' | cmp -s - $@ || echo '$(HOST_CC) $(FW_UNIT_CFLAGS)' > $@
+# $(1) = binary, $(2) = backend
+define FW_UNIT_RULES
+$(1)_OBJ  := $(1).obj
+$(1)_OBJS := $$(patsubst %.c,$$($(1)_OBJ)/%.o,$(FW_UNIT_TEST_SRCS) $(FW_PURE_SRCS) $(FW_DRIVER_SRC))
 
-$(FW_UNIT_OBJ)/%.o: %.c $(FW_UNIT_OBJ)/cflags.txt
-	@mkdir -p $(@D)
-	$(HOST_CC) $(FW_UNIT_CFLAGS) -MMD -MP -c $< -o $@
+$$($(1)_OBJ)/cflags.txt: fw-force
+	$$(call fw_flags_file,$$@,$$(HOST_CC) $$(FW_UNIT_CFLAGS) $$(FW_BACKEND_DEFS_$(2)))
 
-$(FW_UNIT): $(FW_UNIT_OBJS)
-	$(HOST_CC) -o $@ $(FW_UNIT_OBJS) -lm
+$$($(1)_OBJ)/%.o: %.c $$($(1)_OBJ)/cflags.txt
+	@mkdir -p $$(@D)
+	$$(HOST_CC) $$(FW_UNIT_CFLAGS) $$(FW_BACKEND_DEFS_$(2)) -MMD -MP -c $$< -o $$@
 
--include $(FW_OBJS:.o=.d) $(FW_UNIT_OBJS:.o=.d)
+$(1): $$($(1)_OBJS)
+	$$(HOST_CC) -o $$@ $$($(1)_OBJS) -lm
+
+FW_DEP_FILES += $$($(1)_OBJS:.o=.d)
+endef
+
+$(eval $(call FW_UNIT_RULES,$(FW_UNIT),fixed))
+$(eval $(call FW_UNIT_RULES,$(FW_UNIT_FLOAT),float))
+
+-include $(FW_DEP_FILES)
 
 # ---- convenience ----------------------------------------------------------------------------
 
@@ -88,29 +233,43 @@ $(FW_UNIT): $(FW_UNIT_OBJS)
 # preloaded by QEMU's generic loader; nothing answers DOORBELL, so frame 0 must time out.
 FW_FAKE_GPU_REGS := \
   -device loader,addr=0x87000000,data=0x47505530,data-len=4 \
-  -device loader,addr=0x87000004,data=0x00010000,data-len=4 \
+  -device loader,addr=0x87000004,data=0x00010001,data-len=4 \
   -device loader,addr=0x8700000c,data=1024,data-len=4 \
-  -device loader,addr=0x87000010,data=1024,data-len=4 \
+  -device loader,addr=0x87000010,data=512,data-len=4 \
   -device loader,addr=0x87000014,data=0x00f00140,data-len=4
 
-.PHONY: fw fw-unit fw-smoke fw-force
+.PHONY: fw fw-all fw-host fw-unit fw-smoke fw-test-deps bench-fw fw-force
 fw: $(FW_ELF)
 
-fw-unit: $(FW_UNIT)
-	$(FW_UNIT)
+fw-all: $(FW_ALL_ELFS) $(FW_ALL_HOSTS)
 
-fw-smoke: $(FW_ELF)
+fw-host: $(FW_HOST)
+
+fw-unit: $(FW_UNIT) $(FW_UNIT_FLOAT)
+	$(FW_UNIT)
+	$(FW_UNIT_FLOAT)
+
+fw-test-deps: $(FW_TEST_DEPS)
+
+# Boots the short-watchdog ELF without a GPU: "GPU not found" (status 2); then with the identity
+# registers preloaded and nothing answering: FW_WATCHDOG_GIVE_UP watchdog resets, then status 4.
+fw-smoke: $(FW_TEST_DIR)/tetra-watchdog.elf
 	@echo "fw-smoke: no GPU -> expect 'GPU not found' and exit status 2"
-	@timeout 20 $(FW_RUN) -kernel $(FW_ELF) > $(BUILD)/firmware/smoke-nogpu.log; rc=$$?; \
-	  cat $(BUILD)/firmware/smoke-nogpu.log; \
-	  grep -q '^tetra fw' $(BUILD)/firmware/smoke-nogpu.log && \
-	  grep -q 'GPU not found' $(BUILD)/firmware/smoke-nogpu.log && test $$rc -eq 2 || \
+	@timeout 20 $(FW_RUN) -kernel $< > $(BUILD)/fw-test/smoke-nogpu.log; rc=$$?; \
+	  cat $(BUILD)/fw-test/smoke-nogpu.log; \
+	  grep -q '^tetra fw' $(BUILD)/fw-test/smoke-nogpu.log && \
+	  grep -q 'GPU not found' $(BUILD)/fw-test/smoke-nogpu.log && test $$rc -eq 2 || \
 	  { echo "fw-smoke: FAILED (status $$rc)"; exit 1; }
-	@echo "fw-smoke: silent GPU -> expect a bounded timeout and exit status 4"
-	@timeout 60 $(FW_RUN) $(FW_FAKE_GPU_REGS) -kernel $(FW_ELF) > $(BUILD)/firmware/smoke-timeout.log; \
-	  rc=$$?; cat $(BUILD)/firmware/smoke-timeout.log; \
-	  grep -q 'GPU timeout' $(BUILD)/firmware/smoke-timeout.log && test $$rc -eq 4 || \
+	@echo "fw-smoke: silent GPU -> expect watchdog resets, then exit status 4"
+	@timeout 60 $(FW_RUN) $(FW_FAKE_GPU_REGS) -kernel $< > $(BUILD)/fw-test/smoke-timeout.log; \
+	  rc=$$?; cat $(BUILD)/fw-test/smoke-timeout.log; \
+	  test "$$(grep -c '^watchdog: frame' $(BUILD)/fw-test/smoke-timeout.log)" -eq 3 && \
+	  grep -q 'still hung' $(BUILD)/fw-test/smoke-timeout.log && test $$rc -eq 4 || \
 	  { echo "fw-smoke: FAILED (status $$rc)"; exit 1; }
 	@echo "fw-smoke: passed"
+
+# The instruction-count table of issue #4, measured in co-simulation (no model check: faster).
+bench-fw: $(FW_BENCH_ELFS) $(GPUSIM)
+	@GPUSIM=$(GPUSIM) BENCH_DIR=$(FW_BENCH_DIR) bash firmware/tools/bench_fw.sh $(FW_SCENES)
 
 fw-force:

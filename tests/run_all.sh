@@ -27,11 +27,12 @@ suite() {
 suite contract-generated     "$PYTHON" tools/gen_contract.py --check
 suite rtl-lint               verilator --lint-only -Wall --top-module gpu_top -Igpu_rtl gpu_rtl/lint.vlt gpu_rtl/*.v
 suite firmware-unit          "$BUILD/tests/fw_unit"
+suite firmware-unit-float    "$BUILD/tests/fw_unit_float"
 suite firmware-no-gpu         bash tests/firmware/no_gpu.sh
 suite model-unit             "$BUILD/tests/model_unit"
 suite rtl-vs-model-seed1     "$GPUSIM" random --seed 1 --batches 40
 suite rtl-vs-model-seed2     "$GPUSIM" random --seed 2 --batches 40 --tris 200
-suite rtl-vs-model-100k      "$GPUSIM" random --seed 3 --batches 440 --tris 500 --swap-percent 10 --min-prims 100000
+suite rtl-vs-model-100k      "$GPUSIM" random --seed 3 --batches 500 --tris 500 --swap-percent 10 --min-prims 100000
 suite rtl-vs-model-span1     "$BUILD/sim-w1/gpusim" random --seed 4 --batches 20 --tris 100
 suite rtl-vs-model-span4     "$BUILD/sim-w4/gpusim" random --seed 5 --batches 20 --tris 100
 suite rtl-vs-model-span16    "$BUILD/sim-w16/gpusim" random --seed 6 --batches 20 --tris 100
@@ -43,6 +44,10 @@ suite cosim-kill-qemu        bash tests/cosim/kill.sh qemu
 suite cosim-kill-harness     bash tests/cosim/kill.sh harness
 suite cosim-stop-signal      bash tests/cosim/kill.sh sigterm
 suite cosim-gpu-timeout      bash tests/cosim/gpu_timeout.sh
+suite fw-scenes-host-vs-cosim bash tests/scenes/host_vs_cosim.sh
+suite fw-watchdog            bash tests/scenes/watchdog.sh
+suite fw-keys-burst          bash tests/scenes/keys_burst.sh
+suite fw-host-features       bash tests/scenes/host_features.sh
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

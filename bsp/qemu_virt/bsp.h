@@ -2,7 +2,7 @@
  * bsp.h — board support for QEMU `virt` (riscv32, rv32im, machine mode, no OS).
  *
  * This is the whole platform interface the firmware uses. Render code never includes it; only
- * firmware/src/main.c and the GPU driver edge (firmware/src/gpu.c) do. Another platform (an FPGA
+ * the frame loop (firmware/src/app.c, main.c) and the GPU driver edge (firmware/src/gpu.c) do. Another platform (an FPGA
  * SoC, a MicroBlaze) is a sibling folder bsp/<platform>/ with its own bsp.h providing the same
  * names with the same meaning; see bsp/README.md.
  *
@@ -54,6 +54,41 @@ static inline uint64_t bsp_instret(void)
         __asm__ volatile("csrr %0, minstreth" : "=r"(hi2));
     } while (hi != hi2);
     return ((uint64_t)hi << 32) | lo;
+}
+
+/* The GPU's bus window: aligned 32-bit accesses at a byte offset from BSP_GPU_BASE (offsets from
+ * gpu_regs.h). Every device access of the driver goes through these three. */
+static inline void bsp_gpu_write(uint32_t offset, uint32_t value)
+{
+    *(volatile uint32_t *)(uintptr_t)(BSP_GPU_BASE + offset) = value;
+}
+
+static inline uint32_t bsp_gpu_read(uint32_t offset)
+{
+    return *(volatile uint32_t *)(uintptr_t)(BSP_GPU_BASE + offset);
+}
+
+/* Copy n words to consecutive GPU addresses from offset on (vertex and index buffers). Unrolled
+ * by four: the copy is a per-triangle cost of the frame loop. */
+static inline void bsp_gpu_write_words(uint32_t offset, const uint32_t *src, uint32_t n)
+{
+    volatile uint32_t *dst = (volatile uint32_t *)(uintptr_t)(BSP_GPU_BASE + offset);
+    uint32_t i = 0;
+
+    for (; i + 4u <= n; i += 4u) {
+        const uint32_t a = src[i];
+        const uint32_t b = src[i + 1u];
+        const uint32_t c = src[i + 2u];
+        const uint32_t d = src[i + 3u];
+
+        dst[i] = a;
+        dst[i + 1u] = b;
+        dst[i + 2u] = c;
+        dst[i + 3u] = d;
+    }
+    for (; i < n; i++) {
+        dst[i] = src[i];
+    }
 }
 
 /* Full memory barrier (fence rw,rw): every earlier load/store is ordered before every later one.

@@ -5,24 +5,42 @@
 #ifndef FW_CONFIG_H
 #define FW_CONFIG_H
 
-/* Frames to render before exiting with status 0. */
+/* Scene shown at boot (scene.h names: tetra, cubes, landscape, voxel, knot). make SCENE=... */
+#ifndef FW_SCENE
+#define FW_SCENE "tetra"
+#endif
+
+/* Frames to render before exiting with status 0; 0 = run until Q is pressed. */
 #ifndef FW_FRAMES
 #define FW_FRAMES 24
 #endif
 
-/* Reads of DONE_SEQ before a batch counts as lost. One poll is 4 instructions (lw, addi, bne,
- * beq); under QEMU -icount 2^28 polls take about 3 s of host time (measured); 2^31 gives ~25 s, two
- * orders of magnitude more than a co-simulated frame needs (the vsync wait is 1.68 M GPU cycles, ~0.2 s
- * at 8 M simulated cycles/s). Raise it for slower simulators: make FW_MAX_POLLS=... */
+/* 1: print where each frame's instructions went (update, draw, sort, batch, submit). */
+#ifndef FW_PROFILE
+#define FW_PROFILE 0
+#endif
+
+/* The watchdog: reads of DONE_SEQ before a batch counts as lost. One poll is 4 instructions
+ * (lw, addi, bne, beq); under QEMU -icount 2^28 polls take about 3 s of host time (measured); 2^31
+ * gives ~25 s, two orders of magnitude more than a co-simulated batch needs (the vsync wait is
+ * 1.68 M GPU cycles, ~0.2 s at 8 M simulated cycles/s). On an FPGA at 100 MHz 2^31 polls are ~90 s:
+ * a board port should set it to about a second's worth (make FW_MAX_POLLS=...). */
 #ifndef FW_GPU_MAX_POLLS
 #define FW_GPU_MAX_POLLS (1u << 31)
 #endif
 
+/* Consecutive frames lost to the watchdog before the firmware gives up on the GPU (each one has
+ * already reset it): a GPU that a reset does not bring back is an error, not a reason to hang. */
+#ifndef FW_WATCHDOG_GIVE_UP
+#define FW_WATCHDOG_GIVE_UP 3u
+#endif
+
 /* Exit statuses (the QEMU process exits with these). */
 #define FW_EXIT_OK          0
+#define FW_EXIT_CONFIG      1   /* unknown scene name built in */
 #define FW_EXIT_GPU_INIT    2   /* no GPU, wrong version or geometry */
 #define FW_EXIT_GPU_SUBMIT  3   /* batch rejected by the driver */
-#define FW_EXIT_GPU_TIMEOUT 4   /* DONE_SEQ never reached the tag */
+#define FW_EXIT_GPU_TIMEOUT 4   /* the GPU stayed hung through FW_WATCHDOG_GIVE_UP resets */
 #define FW_EXIT_GPU_ERRORS  5   /* the GPU set an ERR_* flag */
 #define FW_EXIT_FX_OVERFLOW 6   /* a fixed-point range argument failed (saturation happened) */
 

@@ -5,10 +5,10 @@
 
 static uint32_t fx_overflows;  /* sticky overflow counter, see fixed.h */
 
-q16_16 fx_saturate(int64_t v)
+int32_t fx_saturate(int64_t v)
 {
     fx_overflows++;
-    return (v < 0) ? FX_MIN : FX_MAX;
+    return (v < 0) ? INT32_MIN : INT32_MAX;
 }
 
 uint32_t fx_overflow_count(void)
@@ -100,4 +100,49 @@ q16_16 fx_sin(fx_angle a)
 q16_16 fx_cos(fx_angle a)
 {
     return fx_sin((fx_angle)(a + FX_TURN / 4u));
+}
+
+/*
+ * Seed for fx_recip_mantissa: entry i is round(2^15 / mu_i) with mu_i = 0.5 + (i + 0.5) / 256, the
+ * middle of the mantissa interval [0.5 + i/256, 0.5 + (i+1)/256). Relative error of the seed over
+ * its interval: at most (1/512) / 0.5 = 2^-8. Generated with:
+ *   [min(65535, round(32768 / (0.5 + (i + 0.5) / 256))) for i in range(128)]
+ */
+const uint16_t fx_recip_seed[128] = {
+    65281, 64777, 64281, 63792, 63310, 62836, 62369, 61909,
+    61455, 61008, 60568, 60133, 59705, 59283, 58867, 58457,
+    58053, 57654, 57260, 56872, 56489, 56111, 55738, 55370,
+    55007, 54649, 54295, 53946, 53601, 53261, 52925, 52593,
+    52265, 51942, 51622, 51306, 50995, 50686, 50382, 50081,
+    49784, 49490, 49200, 48913, 48630, 48349, 48072, 47798,
+    47528, 47260, 46995, 46733, 46474, 46218, 45965, 45714,
+    45467, 45222, 44979, 44739, 44502, 44267, 44035, 43805,
+    43577, 43352, 43129, 42908, 42690, 42474, 42260, 42048,
+    41838, 41631, 41425, 41222, 41020, 40820, 40623, 40427,
+    40233, 40041, 39851, 39662, 39476, 39291, 39108, 38926,
+    38746, 38568, 38392, 38217, 38044, 37872, 37702, 37533,
+    37366, 37200, 37036, 36873, 36712, 36552, 36393, 36236,
+    36080, 35926, 35772, 35620, 35470, 35320, 35172, 35026,
+    34880, 34735, 34592, 34450, 34309, 34169, 34031, 33893,
+    33757, 33622, 33487, 33354, 33222, 33091, 32961, 32832,
+};
+
+uint32_t fx_isqrt64(uint64_t v)
+{
+    uint64_t root = 0;
+    uint64_t bit = (uint64_t)1 << 62;
+
+    while (bit > v) {
+        bit >>= 2;
+    }
+    while (bit != 0u) {
+        if (v >= root + bit) {
+            v -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    return (uint32_t)root;
 }

@@ -3,16 +3,20 @@
  *
  * Formats (the name says the format):
  *   q16_16    int32_t, value = raw / 2^16. Range [-32768, 32768), step 1/65536 (1.5e-5).
+ *             Positions and distances in world/view units.
+ *   q2_30     int32_t, value = raw / 2^30. Range [-2, 2), step 9.3e-10. Unit quantities: rotation
+ *             matrix entries, unit vectors (normals, light), cosines.
  *   fx_angle  uint16_t turn fraction, value = raw / 65536 turns (65536 = 360 degrees). Angle
  *             arithmetic wraps modulo one turn for free in uint16_t.
  *
- * Overflow policy: every operation whose result can leave the q16_16 range saturates to
- * FX_MAX / FX_MIN and increments a sticky overflow counter (fx_overflow_count()), like a DSP's
+ * Overflow policy: every operation whose result can leave its format's range saturates to the
+ * int32 extremes and increments a sticky overflow counter (fx_overflow_count()), like a DSP's
  * sticky Q flag. Callers check the counter where a range argument says overflow cannot happen —
  * a non-zero count means that argument was wrong. The counter is the only state in this module.
  *
- * Rounding: fx_mul and fx_div round to nearest (ties away from zero for fx_div, up for fx_mul).
- * Right shifts of negative values are arithmetic (GCC and Clang guarantee it).
+ * Rounding: fx_mul, q30_mul, q30_scale round to nearest (ties up); fx_div rounds ties away from
+ * zero. fx_mulh/fx_mulhu floor (they are the bare rv32im high-word multiplies). Right shifts of
+ * negative values are arithmetic (GCC and Clang guarantee it).
  */
 #ifndef FIXED_H
 #define FIXED_H
@@ -20,6 +24,7 @@
 #include <stdint.h>
 
 typedef int32_t q16_16;
+typedef int32_t q2_30;
 typedef uint16_t fx_angle;
 
 #define FX_FRAC_BITS 16
@@ -28,44 +33,50 @@ typedef uint16_t fx_angle;
 #define FX_MAX       ((q16_16)INT32_MAX)
 #define FX_MIN       ((q16_16)INT32_MIN)
 
+#define Q30_FRAC_BITS 30
+#define Q30_ONE       ((q2_30)0x40000000)
+
 /* Integer -> q16_16; |i| must be <= 32767. */
 #define FX_FROM_INT(i) ((q16_16)((int32_t)(i) * 65536))
-/* Compile-time constant from a decimal literal, rounded: FX_CONST(0.25). Constant expressions
- * only — with a run-time argument it would pull in soft-float. */
-#define FX_CONST(d) ((q16_16)((d) * 65536.0 + (((d) >= 0) ? 0.5 : -0.5)))
+/* Compile-time constants from decimal literals, rounded: FX_CONST(0.25), Q30_CONST(0.7071).
+ * Constant expressions only — with a run-time argument they would pull in soft-float.
+ * Q30_CONST needs -2 <= d < 2. */
+#define FX_CONST(d)  ((q16_16)((d) * 65536.0 + (((d) >= 0) ? 0.5 : -0.5)))
+#define Q30_CONST(d) ((q2_30)((d) * 1073741824.0 + (((d) >= 0) ? 0.5 : -0.5)))
 
 /* One full turn, and compile-time angle constants. */
 #define FX_TURN         65536u
 #define FX_ANGLE_DEG(d) ((fx_angle)((uint32_t)((d) * 65536.0 / 360.0 + 0.5) & 0xFFFFu))
 
 /* Slow path of saturation: counts the overflow and returns the clamped value. */
-q16_16 fx_saturate(int64_t v);
+int32_t fx_saturate(int64_t v);
 
 /* Sticky overflow counter: saturating operations since the last fx_overflow_clear(). */
 uint32_t fx_overflow_count(void);
 void fx_overflow_clear(void);
 
-/* int64 -> q16_16 raw value, saturating (and counting) when out of range. */
-static inline q16_16 fx_sat64(int64_t v)
+/* int64 -> int32 raw value (of any format), saturating (and counting) when out of range. */
+static inline int32_t fx_sat64(int64_t v)
 {
     if (v > (int64_t)INT32_MAX || v < (int64_t)INT32_MIN) {
         return fx_saturate(v);
     }
-    return (q16_16)v;
+    return (int32_t)v;
 }
 
-static inline q16_16 fx_add(q16_16 a, q16_16 b)
+/* Same-format add/subtract (q16_16 or q2_30). |a +- b| <= 2^32: exact in int64, then saturated. */
+static inline int32_t fx_add(int32_t a, int32_t b)
 {
-    return fx_sat64((int64_t)a + b);  /* |a + b| <= 2^32: exact in int64 */
+    return fx_sat64((int64_t)a + b);
 }
 
-static inline q16_16 fx_sub(q16_16 a, q16_16 b)
+static inline int32_t fx_sub(int32_t a, int32_t b)
 {
     return fx_sat64((int64_t)a - b);
 }
 
 /*
- * a * b, rounded to nearest.
+ * q16_16 a * b, rounded to nearest.
  * Range: |a|, |b| <= 2^31 so |a*b| <= 2^62 and adding the rounding half (2^15) cannot overflow
  * the int64 intermediate. After the shift the result can need up to 47 bits (e.g. 200.0 * 200.0
  * = 40000.0 > 32768): fx_sat64 clamps and counts that case.
@@ -82,7 +93,8 @@ static inline int32_t fx_round_to_int(q16_16 a)
 }
 
 /* a / b, rounded to nearest (ties away from zero); saturates (and counts) when the quotient is
- * out of range or b == 0. Uses one 64/32-bit division (a libgcc call on rv32). */
+ * out of range or b == 0. Uses one 64/32-bit division (a libgcc call on rv32): for per-frame and
+ * build-time work, not per vertex (the projection uses fx_recip_mantissa). */
 q16_16 fx_div(q16_16 a, q16_16 b);
 
 /* 1 / b, same rules as fx_div. */
@@ -90,6 +102,109 @@ static inline q16_16 fx_recip(q16_16 b)
 {
     return fx_div(FX_ONE, b);
 }
+
+/* ---- q2_30 ---------------------------------------------------------------------------------- */
+
+/* a * b in q2_30, rounded. |a|, |b| < 2 so |a*b| < 4: the product of two unit quantities
+ * (<= 1 + small) stays inside [-2, 2); anything larger saturates and counts. The int64
+ * intermediate (< 2^62 + 2^29) cannot overflow. */
+static inline q2_30 q30_mul(q2_30 a, q2_30 b)
+{
+    return fx_sat64(((int64_t)a * b + ((int64_t)1 << 29)) >> Q30_FRAC_BITS);
+}
+
+/* q16_16 v scaled by the q2_30 factor u, rounded: v * u as q16_16. |v * u| <= 2 |v|, so it
+ * saturates (and counts) only for |v| >= 16384 with |u| > 1. */
+static inline q16_16 q30_scale(q16_16 v, q2_30 u)
+{
+    return fx_sat64(((int64_t)v * u + ((int64_t)1 << 29)) >> Q30_FRAC_BITS);
+}
+
+/* q16_16 -> q2_30 (exact; saturates and counts outside [-2, 2)). */
+static inline q2_30 q30_from_q16(q16_16 v)
+{
+    return fx_sat64((int64_t)v * 16384);
+}
+
+/* q2_30 -> q16_16, rounded (never overflows). */
+static inline q16_16 q30_to_q16(q2_30 u)
+{
+    return (u + 8192) >> 14;
+}
+
+/* ---- raw multiplies and the projection's reciprocal ---------------------------------------- */
+
+/* floor(a * b / 2^32), signed: one `mulh` on rv32im. Exact (no overflow possible). */
+static inline int32_t fx_mulh(int32_t a, int32_t b)
+{
+    return (int32_t)(((int64_t)a * b) >> 32);
+}
+
+/* floor(a * b / 2^32), unsigned: one `mulhu` on rv32im. */
+static inline uint32_t fx_mulhu(uint32_t a, uint32_t b)
+{
+    return (uint32_t)(((uint64_t)a * b) >> 32);
+}
+
+/* Shift x (> 0) left until bit 31 is set; *shift receives the count (0..31). Five compare-and-
+ * shift steps: rv32im has no count-leading-zeros instruction, and libgcc's __clzsi2 is a call. */
+static inline uint32_t fx_normalize32(uint32_t x, int32_t *shift)
+{
+    int32_t s = 0;
+
+    if (x < 0x00010000u) {
+        x <<= 16;
+        s += 16;
+    }
+    if (x < 0x01000000u) {
+        x <<= 8;
+        s += 8;
+    }
+    if (x < 0x10000000u) {
+        x <<= 4;
+        s += 4;
+    }
+    if (x < 0x40000000u) {
+        x <<= 2;
+        s += 2;
+    }
+    if (x < 0x80000000u) {
+        x <<= 1;
+        s += 1;
+    }
+    *shift = s;
+    return x;
+}
+
+/*
+ * Reciprocal of a normalized mantissa without a divider: for m in [2^31, 2^32) (i.e. mu = m / 2^32
+ * in [0.5, 1)), returns Y ~= 2^63 / m (i.e. 1/mu in Q1.31, within (2^31, 2^32)).
+ * Method: a 128-entry seed table on the 7 bits below the leading one (relative error < 2^-8),
+ * then two Newton-Raphson steps y <- y (2 - mu y), each squaring the relative error: 2^-16, then
+ * below the truncation floor. Measured (tests/firmware, ~10^6 mantissas incl. both ends): Y is
+ * within 2 units (relative 2^-30) of floor(2^63/m); at m = 2^31 it returns 2^32 - 2 (2^32 does not
+ * fit). 4 multiplies, no division; portable to cores without a hardware divider (MicroBlaze).
+ * Range: each step forms P = mu y in Q1.31 (mulhu, < 2^32), D = 2 - mu y as 2^32 - P, and
+ * y (2 - mu y) = mulhu(Y, D) * 2; the iterate stays below 2/mu <= 2^32, so nothing wraps.
+ */
+extern const uint16_t fx_recip_seed[128];
+
+static inline uint32_t fx_recip_mantissa(uint32_t m)
+{
+    /* Y = 1/mu in Q1.31; the seed holds 1/mu in Q1.15. */
+    uint32_t y = (uint32_t)fx_recip_seed[(m >> 24) & 0x7Fu] << 16;
+
+    for (int step = 0; step < 2; step++) {
+        const uint32_t p = fx_mulhu(m, y);  /* mu * y in Q1.31, close to 2^31 */
+        const uint32_t d = 0u - p;          /* 2 - mu * y in Q1.31: 2^32 - p, p in (0, 2^32) */
+
+        y = fx_mulhu(y, d) << 1;            /* y * (2 - mu * y) */
+    }
+    return y;
+}
+
+/* floor(sqrt(v)), bit by bit (32 iterations). Build-time and per-frame use only. */
+uint32_t fx_isqrt64(uint64_t v);
 
 /* Sine and cosine of a turn fraction, from a 256-entry-per-turn table with linear
  * interpolation. Result in [-1.0, 1.0] as q16_16. Max error against the exact value is below

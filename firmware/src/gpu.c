@@ -1,7 +1,8 @@
 /*
  * gpu.c — the hardware edge of the GPU driver (see gpu.h). Every device access goes through
- * gpu_write()/gpu_read(): aligned 32-bit volatile accesses at BSP_GPU_BASE + a byte offset from
- * gpu_regs.h.
+ * the BSP's accessors with a byte offset from gpu_regs.h: bsp_gpu_write()/bsp_gpu_read() for
+ * registers, bsp_gpu_write_words() for the buffer copies (aligned 32-bit stores at BSP_GPU_BASE on
+ * real hardware; calls into the golden model on the host build).
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -9,14 +10,15 @@
 #include "bsp.h"
 #include "gpu.h"
 
+/* The contract's register names, through the platform's one accessor pair (bsp.h). */
 static inline void gpu_write(uint32_t offset, uint32_t value)
 {
-    *(volatile uint32_t *)((uintptr_t)BSP_GPU_BASE + offset) = value;
+    bsp_gpu_write(offset, value);
 }
 
 static inline uint32_t gpu_read(uint32_t offset)
 {
-    return *(volatile uint32_t *)((uintptr_t)BSP_GPU_BASE + offset);
+    return bsp_gpu_read(offset);
 }
 
 static uint32_t gpu_next_tag(uint32_t tag)
@@ -41,6 +43,7 @@ int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n)
     dev->pending = false;
     dev->next_tag = 1u;
     dev->last_done_seq = 0u;
+    dev->resets = 0u;
 
     if (info->id != GPU_ID_VALUE) {
         return GPU_E_NOT_FOUND;
@@ -92,12 +95,8 @@ int gpu_submit_batch(struct gpu_dev *dev, const struct gpu_batch *batch, uint32_
         return GPU_E_CAPACITY;
     }
 
-    for (uint32_t i = 0; i < nv; i++) {
-        gpu_write(vtx_off + 4u * i, batch->vtx_words[i]);
-    }
-    for (uint32_t i = 0; i < np; i++) {
-        gpu_write(idx_off + 4u * i, batch->prim_words[i]);
-    }
+    bsp_gpu_write_words(vtx_off, batch->vtx_words, nv);
+    bsp_gpu_write_words(idx_off, batch->prim_words, np);
     gpu_write(GPU_REG_CTRL, batch->ctrl);
     gpu_write(GPU_REG_VTX_BASE, batch->vtx_base);
     gpu_write(GPU_REG_VTX_COUNT, batch->vtx_count);
@@ -141,6 +140,17 @@ void gpu_read_stats(const struct gpu_dev *dev, struct gpu_stats *stats)
     stats->tris_rejected = gpu_read(GPU_REG_PERF_TRIS_REJECTED);
     stats->pixels = gpu_read(GPU_REG_PERF_PIXELS);
     stats->samples = gpu_read(GPU_REG_PERF_SAMPLES);
+    stats->spans_written = gpu_read(GPU_REG_PERF_SPANS_WRITTEN);
+}
+
+void gpu_reset(struct gpu_dev *dev)
+{
+    /* RESET acts on a change of value (a store of the same value is invisible in
+     * co-simulation), so write one more than what it holds; 0 is as good as any other. */
+    gpu_write(GPU_REG_RESET, gpu_read(GPU_REG_RESET) + 1u);
+    bsp_fence();
+    dev->pending = false;
+    dev->resets++;
 }
 
 const char *gpu_strerror(int result)

@@ -5,8 +5,8 @@
  *   - a pure core (static inline, below): packs vertex and primitive words exactly as the
  *     contract's field macros in gpu_regs.h say. No hardware access; render code and host tests
  *     use it.
- *   - a thin edge (gpu.c): every access to the device goes through one accessor pair,
- *     gpu_write(offset, value) / gpu_read(offset), at BSP_GPU_BASE from the platform's bsp.h.
+ *   - a thin edge (gpu.c): every access to the device goes through the platform's accessors
+ *     bsp_gpu_write(offset, value) / bsp_gpu_read(offset) / bsp_gpu_write_words() (bsp.h).
  *
  * The driver keeps its state in a gpu_dev the caller owns; there are no globals.
  */
@@ -58,6 +58,17 @@ enum gpu_result {
     GPU_E_ARG = -7,        /* bad argument (e.g. palette larger than the palette window) */
 };
 
+/* Capability fields of CAPS. */
+static inline bool gpu_caps_lines(uint32_t caps)
+{
+    return (caps & GPU_CAPS_LINES_MASK) != 0u;
+}
+
+static inline bool gpu_caps_zbuf(uint32_t caps)
+{
+    return (caps & GPU_CAPS_ZBUF_MASK) != 0u;
+}
+
 /* What the device reports about itself (read by gpu_init). */
 struct gpu_info {
     uint32_t id;
@@ -73,6 +84,7 @@ struct gpu_dev {
     uint32_t next_tag;  /* tag of the next doorbell: never 0, +1 per batch (skipping 0) */
     bool pending;       /* a batch is in flight: submitted, not yet seen done */
     uint32_t last_done_seq;  /* DONE_SEQ at the last gpu_wait return (for error messages) */
+    uint32_t resets;    /* gpu_reset calls since gpu_init */
 };
 
 /* One batch (docs/gpu-contract.md, "A batch, and the frame handshake"). The driver copies
@@ -98,6 +110,7 @@ struct gpu_stats {
     uint32_t tris_rejected;
     uint32_t pixels;
     uint32_t samples;
+    uint32_t spans_written;
 };
 
 /* Read ID/VERSION/CAPS/capacities into dev->info (always, so a caller can report them), then
@@ -117,6 +130,11 @@ int gpu_wait(struct gpu_dev *dev, uint32_t tag, uint32_t max_polls);
 
 /* Read ERRORS and the PERF_* counters of the last finished batch. */
 void gpu_read_stats(const struct gpu_dev *dev, struct gpu_stats *stats);
+
+/* The watchdog's way out (contract: "A batch, and the frame handshake"): write a new value to
+ * RESET, which abandons the running batch and returns the GPU to idle, and forget the pending
+ * batch so the next submit proceeds. DONE_SEQ keeps its old value; tags continue. */
+void gpu_reset(struct gpu_dev *dev);
 
 /* Short English text for a gpu_result. */
 const char *gpu_strerror(int result);

@@ -3,126 +3,470 @@
  */
 #include "render.h"
 
-/* Round x * 2^-32 to nearest (ties up). |x| < 2^62, so adding 2^31 cannot overflow. */
-static inline int64_t render_round_shift32(int64_t x)
+#include "clip.h"
+#include "gpu.h"
+#include "palette.h"
+
+void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,
+                      const struct cam_view *view, const mat3 *scene_rot, vec3 focus,
+                      uvec3 light, uint32_t ambient)
 {
-    return (x + ((int64_t)1 << 31)) >> 32;
+    pass->proj = *ps;
+    pass->view_scene = mat3_compose(&view->rot, scene_rot);
+    pass->focus = focus;
+    pass->focus_view = mat3_apply(&view->rot, vec3_sub(focus, view->eye));
+    pass->light_scene = mat3_apply_transposed_unit(scene_rot, light);
+    pass->ambient = (uint8_t)((ambient > 15u) ? 15u : ambient);
+    pass->eye_material = 0;
+    pass->wireframe = false;
+    pass->gpu_lines = true;
 }
 
-enum render_vstate render_project(const struct render_camera *cam, xf_vec3 v,
-                                  struct render_vertex *out)
+void render_stats_clear(struct render_stats *s)
 {
-    q16_16 p;
-    int64_t sx;
-    int64_t sy;
-    int32_t dz;
+    s->faces_in = 0;
+    s->objects_in = 0;
+    s->objects_culled = 0;
+    s->faces_culled_object = 0;
+    s->faces_frustum = 0;
+    s->faces_back = 0;
+    s->faces_clipped = 0;
+    s->faces_clipped_away = 0;
+    s->faces_emitted = 0;
+    s->dropped = 0;
+}
 
-    out->z = v.z;
-    out->sx_q4 = 0;
-    out->sy_q4 = 0;
-    out->depth = 0;
-    if (v.z < cam->near_z) {
-        out->state = RENDER_V_NEAR;
-        return RENDER_V_NEAR;
+void render_frame_begin(struct render_frame *f)
+{
+    f->vert_count = 0;
+    f->prim_count = 0;
+    f->sorted_count = 0;
+    f->batch_stamp = 0;  /* every vertex made from now on starts with stamp 0 */
+}
+
+enum render_sphere_class render_sphere_classify(const struct proj_setup *ps, vec3 c,
+                                                real_t radius)
+{
+    /* The dot products below may be low by 3 units of 2^-16 (vec3_dot_unit_fast); a margin of
+     * 2^-8 on the radius keeps both answers conservative: never cull what touches the frustum,
+     * never call inside what reaches out of it. */
+    const real_t r = real_add(radius, REAL_C(1.0 / 256.0));
+    enum render_sphere_class cls = RENDER_SPHERE_INSIDE;
+
+    if (real_add(c.z, r) < ps->near || real_sub(c.z, r) > ps->far) {
+        return RENDER_SPHERE_OUTSIDE;
     }
-
-    /* p = focal_q4 / z as q16_16: scale from view units to 1/16 px at this depth. */
-    p = fx_div(FX_FROM_INT(cam->focal_q4), v.z);
-    sx = cam->cx_q4 + render_round_shift32((int64_t)v.x * p);
-    sy = cam->cy_q4 - render_round_shift32((int64_t)v.y * p);
-    if (sx < INT16_MIN || sx > INT16_MAX || sy < INT16_MIN || sy > INT16_MAX) {
-        out->state = RENDER_V_RANGE;
-        return RENDER_V_RANGE;
+    if (real_sub(c.z, r) < ps->near || real_add(c.z, r) > ps->far) {
+        cls = RENDER_SPHERE_CROSSING;
     }
+    for (int i = 0; i < 4; i++) {
+        /* Signed distance to a plane through the eye: c . n, n the inward unit normal. */
+        const real_t d = vec3_dot_unit_fast(c, ps->edge_plane[i]);
 
-    /* Depth: distance behind the near plane in 1/256 view units, clamped to 16 bits. */
-    dz = (v.z - cam->near_z) >> 8;  /* v.z >= near_z > 0: no overflow, dz >= 0 */
-    out->depth = (dz > 0xFFFF) ? 0xFFFFu : (uint16_t)dz;
-    out->sx_q4 = (int16_t)sx;
-    out->sy_q4 = (int16_t)sy;
-    out->state = RENDER_V_OK;
-    return RENDER_V_OK;
-}
-
-int64_t render_signed_area(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2,
-                           int32_t y2)
-{
-    return (int64_t)(x1 - x0) * (y2 - y0) - (int64_t)(y1 - y0) * (x2 - x0);
-}
-
-void render_sort_back_to_front(const int32_t *key, uint16_t *order, uint32_t n)
-{
-    for (uint32_t i = 1; i < n; i++) {
-        const uint16_t item = order[i];
-        const int32_t k = key[item];
-        uint32_t j = i;
-
-        while (j > 0u && key[order[j - 1u]] < k) {
-            order[j] = order[j - 1u];
-            j--;
+        if (d < real_sub(0, r)) {
+            return RENDER_SPHERE_OUTSIDE;
         }
-        order[j] = item;
+        if (d < r) {
+            cls = RENDER_SPHERE_CROSSING;
+        }
+    }
+    return cls;
+}
+
+/* ---- emission ----------------------------------------------------------------------------- */
+
+/* The sort item of primitive `index` with depth key `key` (larger = farther): draw key
+ * 65535 - key in the upper half, so ascending items run far to near. index < 2^14. */
+static inline uint32_t render_sort_item(uint32_t key, uint32_t index)
+{
+    return (~key << 16) | index;  /* ~key << 16 = (65535 - key) << 16 for key < 2^16 */
+}
+
+static void render_emit_prim(struct render_frame *f, uint32_t i0, uint32_t i1, uint32_t i2,
+                             uint8_t color, uint8_t kind, uint16_t key)
+{
+    struct render_prim *p;
+    const uint32_t n = f->prim_count;
+
+    if (n >= RENDER_MAX_PRIMS) {
+        f->stats.dropped++;
+        return;
+    }
+    p = &f->prim[n];
+    p->v[0] = (uint16_t)i0;
+    p->v[1] = (uint16_t)i1;
+    p->v[2] = (uint16_t)i2;
+    p->color = color;
+    p->kind = kind;
+    f->sort_item[n] = render_sort_item(key, n);
+    f->prim_count = n + 1u;
+}
+
+/* A vertex that is not the projection of a point: the corners of an emulated line, the
+ * crosshair. Returns its index, or -1 when the frame is full. */
+static int32_t render_add_screen_vertex(struct render_frame *f, int32_t sx, int32_t sy,
+                                        uint16_t zbuf)
+{
+    struct proj_vertex *v;
+
+    if (f->vert_count >= RENDER_MAX_VERTS) {
+        f->stats.dropped++;
+        return -1;
+    }
+    v = &f->vert[f->vert_count];
+    v->sx = (int16_t)sx;  /* callers stay within the guard band plus a pixel */
+    v->sy = (int16_t)sy;
+    v->zbuf = zbuf;
+    v->depth = 0;
+    v->code = 0;
+    v->batch_stamp = 0;
+    v->batch_slot = 0;
+    return (int32_t)f->vert_count++;
+}
+
+/*
+ * A line a -> b. With GPU lines: one LINE primitive. Without: a quad one pixel wide across the
+ * line's minor axis, centred on it (+-8 sixteenths), as two triangles. For an x-major line the quad
+ * spans exactly one pixel centre per column under the fill rule (its vertical extent is 16
+ * sixteenths, half-open by the top-left rule), which is what a Bresenham line plots.
+ */
+static void render_emit_line(struct render_frame *f, const struct render_pass *pass, uint32_t a,
+                             uint32_t b, uint8_t color, uint16_t key)
+{
+    int32_t ax;
+    int32_t ay;
+    int32_t bx;
+    int32_t by;
+    int32_t hx = 0;
+    int32_t hy = 0;
+    int32_t q[4];
+
+    if (pass->gpu_lines) {
+        render_emit_prim(f, a, b, b, color, (uint8_t)GPU_PRIM_KIND_LINE, key);
+        return;
+    }
+    ax = f->vert[a].sx;
+    ay = f->vert[a].sy;
+    bx = f->vert[b].sx;
+    by = f->vert[b].sy;
+    if (((bx > ax) ? bx - ax : ax - bx) >= ((by > ay) ? by - ay : ay - by)) {
+        hy = 8;
+    } else {
+        hx = 8;
+    }
+    q[0] = render_add_screen_vertex(f, ax - hx, ay - hy, f->vert[a].zbuf);
+    q[1] = render_add_screen_vertex(f, bx - hx, by - hy, f->vert[b].zbuf);
+    q[2] = render_add_screen_vertex(f, bx + hx, by + hy, f->vert[b].zbuf);
+    q[3] = render_add_screen_vertex(f, ax + hx, ay + hy, f->vert[a].zbuf);
+    if (q[0] < 0 || q[1] < 0 || q[2] < 0 || q[3] < 0) {
+        return;
+    }
+    /* The GPU draws either winding, so no orientation care is needed here. */
+    render_emit_prim(f, (uint32_t)q[0], (uint32_t)q[1], (uint32_t)q[2], color,
+                     (uint8_t)GPU_PRIM_KIND_TRI, key);
+    render_emit_prim(f, (uint32_t)q[0], (uint32_t)q[2], (uint32_t)q[3], color,
+                     (uint8_t)GPU_PRIM_KIND_TRI, key);
+}
+
+/* A convex polygon (front-facing, already projected): a fan of triangles, or its outline. */
+static void render_emit_polygon(struct render_frame *f, const struct render_pass *pass,
+                                const uint32_t *idx, uint32_t n, uint8_t color, uint16_t key)
+{
+    if (pass->wireframe) {
+        for (uint32_t k = 0; k < n; k++) {
+            render_emit_line(f, pass, idx[k], idx[(k + 1u) % n], color, key);
+        }
+    } else {
+        for (uint32_t k = 1; k + 1u < n; k++) {
+            render_emit_prim(f, idx[0], idx[k], idx[k + 1u], color, (uint8_t)GPU_PRIM_KIND_TRI,
+                             key);
+        }
     }
 }
 
-uint32_t render_mesh_frame(const struct render_mesh *mesh, const xf_mat3 *rot, xf_vec3 pos,
-                           const struct render_camera *cam, struct render_frame *out)
+/* ---- lighting ----------------------------------------------------------------------------- */
+
+/* Palette index of a face: its material (or the object's, or the eye's ramp) at its light level. */
+static inline uint8_t render_face_color(const struct palette_light *light,
+                                        const struct mesh *mesh, const struct mesh_face *face,
+                                        uint32_t material_override)
 {
-    const uint32_t nv = (mesh->vert_count <= RENDER_MAX_VERTS) ? mesh->vert_count
-                                                                 : RENDER_MAX_VERTS;
-    const uint32_t nf = (mesh->face_count <= RENDER_MAX_FACES) ? mesh->face_count
-                                                                 : RENDER_MAX_FACES;
-    uint32_t n = 0;
+    const uint32_t mat = (material_override != 0u) ? material_override : face->material;
 
-    out->culled = 0;
-    out->dropped_near = 0;
-    out->dropped_range = 0;
+    return PAL_INDEX(mat, palette_light_level(light, mesh->normals[face->normal]));
+}
 
-    /* Vertices: transform, project, pack. A vertex that did not project is packed at (0, 0);
-     * no primitive below refers to it. */
-    for (uint32_t i = 0; i < nv; i++) {
-        struct render_vertex *pv = &out->pv[i];
-
-        render_project(cam, xf_transform(rot, mesh->verts[i], pos), pv);
-        gpu_pack_vertex(&out->vtx_words[i * GPU_VTX_WORDS], pv->sx_q4, pv->sy_q4, pv->depth);
+/* Depth key of a face: the sum of its three sort depths (3x the mean), or for half a quad 3/2 of
+ * its diagonal's two (3x the quad's centre). Each depth <= 21845: both stay <= 65535. */
+static inline uint32_t render_face_key(const struct mesh_face *face, const struct proj_vertex *a,
+                                       const struct proj_vertex *b, const struct proj_vertex *c)
+{
+    if ((face->flags & MESH_FACE_QUAD) != 0u) {
+        return (((uint32_t)a->depth + c->depth) * 3u) >> 1;
     }
-    out->vtx_count = nv;
+    return (uint32_t)a->depth + b->depth + c->depth;
+}
 
-    /* Faces: drop those not fully projected, cull back faces, key the rest by depth. */
-    for (uint32_t f = 0; f < nf; f++) {
-        const struct render_face *face = &mesh->faces[f];
-        const struct render_vertex *a = &out->pv[face->v[0]];
-        const struct render_vertex *b = &out->pv[face->v[1]];
-        const struct render_vertex *c = &out->pv[face->v[2]];
-        const uint8_t worst = a->state | b->state | c->state;
+/* The material every face of an object uses, or 0 for each face's own. */
+static uint32_t render_material_override(const struct render_pass *pass,
+                                         const struct render_object *obj)
+{
+    return (pass->eye_material != 0u) ? pass->eye_material : obj->material;
+}
 
-        if ((worst & RENDER_V_NEAR) != 0u) {
-            out->dropped_near++;
+/* ---- the slow path: near plane or guard band crossed -------------------------------------- */
+
+static void render_clipped_face(struct render_frame *f, const struct render_pass *pass,
+                                const xf_affine *mv, const struct mesh *mesh,
+                                const struct mesh_face *face, const struct palette_light *light,
+                                uint32_t material_override)
+{
+    struct clip_polygon poly;
+    uint32_t idx[CLIP_MAX_VERTS];
+    const uint32_t first = f->vert_count;
+    uint32_t n;
+    uint32_t all_codes = PROJ_CULL_BITS;
+    uint32_t depth_sum = 0;
+    int64_t area = 0;
+
+    f->stats.faces_clipped++;
+    /* The same transform as the fast path, so shared vertices land on the same pixels. */
+    n = clip_triangle(&pass->proj, xf_apply(mv, mesh->verts[face->v[0]]),
+                      xf_apply(mv, mesh->verts[face->v[1]]),
+                      xf_apply(mv, mesh->verts[face->v[2]]), &poly);
+    if (n == 0u) {
+        f->stats.faces_clipped_away++;
+        return;
+    }
+    if (f->vert_count + n > RENDER_MAX_VERTS) {
+        f->stats.dropped++;
+        return;
+    }
+    for (uint32_t k = 0; k < n; k++) {
+        struct proj_vertex *v = &f->vert[f->vert_count];
+
+        proj_point(&pass->proj, poly.v[k], v);
+        /* Clipped to the band up to rounding, which its margin absorbs: not a GUARD vertex. */
+        v->code &= (uint8_t)~PROJ_OUT_GUARD;
+        all_codes &= v->code;
+        depth_sum += v->depth;
+        idx[k] = f->vert_count++;
+    }
+    /* Whole polygon's signed area (coplanar fan: every part has the same sign). */
+    for (uint32_t k = 1; k + 1u < n; k++) {
+        area += proj_signed_area(&f->vert[idx[0]], &f->vert[idx[k]], &f->vert[idx[k + 1u]]);
+    }
+    if ((all_codes & PROJ_CULL_BITS) != 0u || area <= 0) {
+        if ((all_codes & PROJ_CULL_BITS) != 0u) {
+            f->stats.faces_frustum++;
+        } else {
+            f->stats.faces_back++;
+        }
+        f->vert_count = first;  /* give the vertices back */
+        return;
+    }
+    /* Key: the polygon's mean depth, times three like the fast path's sum. n <= 9. */
+    depth_sum = depth_sum * 3u / n;
+    render_emit_polygon(f, pass, idx, n, render_face_color(light, mesh, face, material_override),
+                        (uint16_t)((depth_sum > 65535u) ? 65535u : depth_sum));
+    f->stats.faces_emitted++;
+}
+
+/* ---- per object --------------------------------------------------------------------------- */
+
+/* Every vertex of a mesh through the model-view transform and the projection. Kept out of line
+ * so the compiler gives the loop all the registers; one loop per case, so the inside one has no
+ * outcode work at all. */
+static void __attribute__((noinline))
+render_project_vertices(const struct proj_setup *ps, const xf_affine *mv, const vec3 *verts,
+                        uint32_t n, struct proj_vertex *out, bool inside)
+{
+    const xf_affine m = *mv;  /* a local copy: the stores to out cannot alias it */
+
+    if (inside) {
+        for (uint32_t i = 0; i < n; i++) {
+            proj_point_inside(ps, xf_apply(&m, verts[i]), &out[i]);
+        }
+    } else {
+        for (uint32_t i = 0; i < n; i++) {
+            proj_point(ps, xf_apply(&m, verts[i]), &out[i]);
+        }
+    }
+}
+
+/* The face loop's rare cases, out of line: a face that crosses the near plane or the guard band
+ * (clip.c), and every face in wireframe mode. Emits through f->prim_count. */
+static void __attribute__((noinline))
+render_face_general(struct render_frame *f, const struct render_pass *pass, const xf_affine *mv,
+                    const struct mesh *mesh, const struct mesh_face *face, uint32_t base,
+                    const struct palette_light *light, uint32_t material_override)
+{
+    const struct proj_vertex *a = &f->vert[base + face->v[0]];
+    const struct proj_vertex *b = &f->vert[base + face->v[1]];
+    const struct proj_vertex *c = &f->vert[base + face->v[2]];
+
+    if (((a->code | b->code | c->code) & PROJ_CLIP_BITS) != 0u) {
+        render_clipped_face(f, pass, mv, mesh, face, light, material_override);
+    } else if (proj_signed_area(a, b, c) <= 0) {
+        f->stats.faces_back++;
+    } else {
+        const uint32_t idx[3] = {base + face->v[0], base + face->v[1], base + face->v[2]};
+
+        render_emit_polygon(f, pass, idx, 3u, render_face_color(light, mesh, face, material_override),
+                            (uint16_t)render_face_key(face, a, b, c));
+        f->stats.faces_emitted++;
+    }
+}
+
+/* What the face loop needs about one object. */
+struct render_faces_job {
+    const struct render_pass *pass;
+    const xf_affine *mv;
+    const struct mesh *mesh;
+    const struct palette_light *light;
+    uint32_t base;               /* index of the object's first vertex in the frame */
+    uint32_t material_override;
+};
+
+/*
+ * The face loop. `check` (a constant at both calls, folded away) is false for an object whose
+ * bounding sphere is inside the frustum: no face can be culled by outcodes or need clipping, so
+ * the loop skips those tests. Hot state stays in locals and is written back once; the fast path
+ * emits one triangle per front face, everything else goes through render_face_general.
+ */
+static inline __attribute__((always_inline)) void render_faces(struct render_frame *f,
+                                                               const struct render_faces_job *job,
+                                                               bool check)
+{
+    const struct mesh *mesh = job->mesh;
+    const uint32_t nf = mesh->face_count;
+    const struct mesh_face *faces = mesh->faces;
+    const uvec3 *normals = mesh->normals;
+    const struct proj_vertex *vert = &f->vert[job->base];
+    const uint32_t base = job->base;
+    const uint32_t material_override = job->material_override;
+    const bool general = job->pass->wireframe;
+    struct render_prim *prim = f->prim;
+    uint32_t *sort_item = f->sort_item;
+    const uint32_t np_start = f->prim_count;
+    uint32_t np = np_start;
+    uint32_t np_general = 0;  /* primitives the general path added (not one per face) */
+    uint32_t n_frustum = 0;
+    uint32_t n_back = 0;
+
+    for (uint32_t fi = 0; fi < nf; fi++) {
+        const struct mesh_face *face = &faces[fi];
+        const struct proj_vertex *a = &vert[face->v[0]];
+        const struct proj_vertex *b = &vert[face->v[1]];
+        const struct proj_vertex *c = &vert[face->v[2]];
+        uint32_t mat;
+        struct render_prim *p;
+
+        if (check && (a->code & b->code & c->code & PROJ_CULL_BITS) != 0u) {
+            n_frustum++;
             continue;
         }
-        if (worst != RENDER_V_OK) {
-            out->dropped_range++;
+        if ((check && ((a->code | b->code | c->code) & PROJ_CLIP_BITS) != 0u) || general) {
+            f->prim_count = np;
+            render_face_general(f, job->pass, job->mv, mesh, face, base, job->light,
+                                material_override);
+            np_general += f->prim_count - np;
+            np = f->prim_count;
             continue;
         }
-        if (!render_is_front(render_signed_area(a->sx_q4, a->sy_q4, b->sx_q4, b->sy_q4,
-                                                c->sx_q4, c->sy_q4))) {
-            out->culled++;
+        if (proj_signed_area(a, b, c) <= 0) {
+            n_back++;
             continue;
         }
-        /* Sum of the three view depths, each >> 2 so the sum fits int32 (z < 2^31, z > 0). */
-        out->key[f] = (a->z >> 2) + (b->z >> 2) + (c->z >> 2);
-        out->order[n] = (uint16_t)f;
-        n++;
+        if (np >= RENDER_MAX_PRIMS) {
+            f->stats.dropped++;
+            continue;
+        }
+        p = &prim[np];
+        p->v[0] = (uint16_t)(base + face->v[0]);
+        p->v[1] = (uint16_t)(base + face->v[1]);
+        p->v[2] = (uint16_t)(base + face->v[2]);
+        mat = (material_override != 0u) ? material_override : face->material;
+        p->color = PAL_INDEX(mat, palette_light_level(job->light, normals[face->normal]));
+        p->kind = (uint8_t)GPU_PRIM_KIND_TRI;
+        sort_item[np] = render_sort_item(render_face_key(face, a, b, c), np);
+        np++;
     }
+    f->prim_count = np;
+    f->stats.faces_frustum += n_frustum;
+    f->stats.faces_back += n_back;
+    f->stats.faces_emitted += (np - np_start) - np_general;  /* the fast path: one per face */
+}
 
-    render_sort_back_to_front(out->key, out->order, n);
+void render_object(struct render_frame *f, const struct render_pass *pass,
+                   const struct render_object *obj)
+{
+    const struct mesh *mesh = obj->mesh;
+    const uint32_t nv = mesh->vert_count;
+    const uint32_t nf = mesh->face_count;
+    struct palette_light light;
+    struct render_faces_job job;
+    enum render_sphere_class where;
+    xf_affine mv;
 
-    for (uint32_t i = 0; i < n; i++) {
-        const struct render_face *face = &mesh->faces[out->order[i]];
+    f->stats.faces_in += nf;
+    f->stats.objects_in++;
 
-        gpu_pack_prim(&out->prim_words[i * GPU_PRIM_WORDS], face->v[0], face->v[1], face->v[2],
-                      face->color, (uint8_t)GPU_PRIM_KIND_TRI);
+    mv.r = mat3_compose(&pass->view_scene, &obj->rot);
+    mv.t = vec3_add(mat3_apply(&pass->view_scene, vec3_sub(obj->pos, pass->focus)),
+                    pass->focus_view);
+    where = render_sphere_classify(&pass->proj, xf_apply(&mv, mesh->center), mesh->radius);
+    if (where == RENDER_SPHERE_OUTSIDE) {
+        f->stats.objects_culled++;
+        f->stats.faces_culled_object += nf;
+        return;
     }
-    out->prim_count = n;
-    return n;
+    if (f->vert_count + nv > RENDER_MAX_VERTS) {
+        f->stats.dropped++;
+        return;
+    }
+    job.base = f->vert_count;
+    render_project_vertices(&pass->proj, &mv, mesh->verts, nv, &f->vert[job.base],
+                            where == RENDER_SPHERE_INSIDE);
+    f->vert_count += nv;
+
+    /* The light in model space: (O R)^T l = R^T (O^T l). */
+    palette_light_init(&light, mat3_apply_transposed_unit(&obj->rot, pass->light_scene),
+                       pass->ambient);
+    job.pass = pass;
+    job.mv = &mv;
+    job.mesh = mesh;
+    job.light = &light;
+    job.material_override = render_material_override(pass, obj);
+    if (where == RENDER_SPHERE_INSIDE) {
+        render_faces(f, &job, false);
+    } else {
+        render_faces(f, &job, true);
+    }
+}
+
+void render_sort(struct render_frame *f)
+{
+    sort_items(f->sort_item, f->sort_tmp, f->prim_count, &f->sort);
+    f->sorted_count = f->prim_count;
+}
+
+void render_overlay_crosshair(struct render_frame *f, const struct render_pass *pass,
+                              int32_t half_px, uint8_t color)
+{
+    const int32_t cx = pass->proj.cx_q4;
+    const int32_t cy = pass->proj.cy_q4;
+    const int32_t h = half_px * 16;
+    /* Line endpoints are the pixels holding the vertices, the last one not drawn: one pixel past
+     * the arm's end so the cross is symmetric about the centre pixel. */
+    const int32_t l = render_add_screen_vertex(f, cx - h, cy + 8, 0);
+    const int32_t r = render_add_screen_vertex(f, cx + h + 16, cy + 8, 0);
+    const int32_t t = render_add_screen_vertex(f, cx + 8, cy - h, 0);
+    const int32_t b = render_add_screen_vertex(f, cx + 8, cy + h + 16, 0);
+
+    if (l < 0 || r < 0 || t < 0 || b < 0) {
+        return;
+    }
+    render_emit_line(f, pass, (uint32_t)l, (uint32_t)r, color, 0);
+    render_emit_line(f, pass, (uint32_t)t, (uint32_t)b, color, 0);
 }

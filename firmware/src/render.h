@@ -1,17 +1,26 @@
 /*
- * render.h — the geometry pipeline for one mesh: model rotation, view translation, perspective
- * projection to Q12.4 screen coordinates, near-plane rejection, back-face culling and a
- * back-to-front depth sort, producing packed GPU vertex and primitive words.
+ * render.h — one frame's geometry: objects in, sorted screen-space primitives out. Pure code.
  *
- * Pure code: takes plain data, fills a caller-owned render_frame, touches no hardware and no
- * globals (apart from fixed.h's sticky overflow counter). Host unit tests run it as is.
+ * Per object (render_object):
+ *   1. model -> view in one affine transform, composed once per object: the object's rotation and
+ *      position in the scene, the scene's rotation about its focus (object mode), the camera.
+ *   2. frustum culling of the whole object by its bounding sphere (near, far, four screen edges);
+ *      an object entirely inside skips every per-vertex and per-face frustum test below.
+ *   3. every vertex: xf_apply, proj_point -> Q12.4 position, depths, outcode.
+ *   4. every face: culled when its three outcodes share a bit (frustum, per triangle); sent to
+ *      clip.c when a vertex is in front of the near plane or beyond the guard band; else culled
+ *      when its signed area is <= 0 (back face or degenerate); else lit, keyed and emitted.
+ * Then render_sort orders the primitives far to near (sort.h), and overlay primitives (the
+ * crosshair) are appended unsorted, drawn last.
  *
- * Conventions:
- *   - view space: x right, y up, z forward (away from the camera), q16_16 units.
- *   - screen: Q12.4 (1/16 px), x right, y down; sx = cx + f*x/z, sy = cy - f*y/z.
- *   - a face is front-facing when its projected vertices v0, v1, v2 give a positive signed area
- *     E_v0v1(v2) in the contract's sense (docs/gpu-contract.md, "Triangle rule"), i.e. they run
- *     clockwise on the screen. Seen from outside the mesh, faces are listed clockwise.
+ * Emission: a triangle, or in wireframe its three edges as lines — GPU line primitives when the
+ * GPU has them (CAPS_LINES), else each edge as a one-pixel-wide quad of two triangles, so the
+ * toggle degrades instead of failing.
+ *
+ * Colour: flat lighting per face (palette.h), the light taken into model space once per object.
+ * In anaglyph mode the face's material is replaced by the eye's red or cyan ramp.
+ *
+ * All state lives in the caller's render_frame; nothing is global.
  */
 #ifndef RENDER_H
 #define RENDER_H
@@ -19,91 +28,117 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#include "fixed.h"
-#include "gpu.h"
-#include "xform.h"
+#include "camera.h"
+#include "mesh.h"
+#include "proj.h"
+#include "sort.h"
+#include "vec.h"
 
-#define RENDER_MAX_VERTS 64u
-#define RENDER_MAX_FACES 64u
+#define RENDER_MAX_VERTS 16384u
+#define RENDER_MAX_PRIMS 16384u
 
-struct render_camera {
-    q16_16 near_z;     /* near plane, view-space z; > 0. Vertices with z < near_z are not projected */
-    int32_t focal_q4;  /* focal length in 1/16 px, 1 .. 32767 (so focal_q4 * 2^16 fits q16_16) */
-    int32_t cx_q4;     /* screen centre, Q12.4 */
-    int32_t cy_q4;
+struct render_prim {
+    uint16_t v[3];   /* indices into render_frame.vert; v[2] repeats v[1] for a line */
+    uint8_t color;   /* palette index */
+    uint8_t kind;    /* GPU_PRIM_KIND_TRI or GPU_PRIM_KIND_LINE */
 };
 
-struct render_face {
-    uint16_t v[3];  /* vertex indices, clockwise seen from outside */
-    uint8_t color;  /* palette index */
+struct render_stats {
+    uint32_t faces_in;            /* faces of every object offered: "triangles submitted" */
+    uint32_t objects_in;
+    uint32_t objects_culled;      /* bounding sphere outside the frustum */
+    uint32_t faces_culled_object; /* faces of those objects */
+    uint32_t faces_frustum;       /* one outcode bit shared by all three vertices */
+    uint32_t faces_back;          /* back-facing or zero area */
+    uint32_t faces_clipped;       /* went through clip.c */
+    uint32_t faces_clipped_away;  /* ... and nothing was left */
+    uint32_t faces_emitted;       /* faces that produced primitives */
+    uint32_t dropped;             /* primitives or vertices that found no room (capacity) */
 };
 
-struct render_mesh {
-    const xf_vec3 *verts;  /* model space; each coordinate within +-64.0 (see xform.h) */
-    uint16_t vert_count;   /* <= RENDER_MAX_VERTS */
-    const struct render_face *faces;
-    uint16_t face_count;   /* <= RENDER_MAX_FACES */
-};
-
-/* Projection result of one vertex. */
-enum render_vstate {
-    RENDER_V_OK = 0,    /* projected; sx, sy, depth valid */
-    RENDER_V_NEAR = 1,  /* z < near plane: not projected (needs clipping, a later issue) */
-    RENDER_V_RANGE = 2, /* projects outside the Q12.4 range (beyond the guard band) */
-};
-
-struct render_vertex {
-    int16_t sx_q4;   /* screen x, Q12.4 */
-    int16_t sy_q4;   /* screen y, Q12.4 */
-    uint16_t depth;  /* (z - near) in 1/256 units, clamped to 0xFFFF; 0 = near */
-    uint8_t state;   /* enum render_vstate */
-    q16_16 z;        /* view-space z */
-};
-
-/* Output of render_mesh_frame: ready for a gpu_batch, plus statistics and scratch. */
 struct render_frame {
-    uint32_t vtx_words[RENDER_MAX_VERTS * GPU_VTX_WORDS];
-    uint32_t prim_words[RENDER_MAX_FACES * GPU_PRIM_WORDS];
-    uint32_t vtx_count;      /* vertices packed (all of the mesh's) */
-    uint32_t prim_count;     /* primitives packed, back to front */
-    uint32_t culled;         /* faces dropped as back-facing or zero-area */
-    uint32_t dropped_near;   /* faces dropped because a vertex is in front of the near plane */
-    uint32_t dropped_range;  /* faces dropped because a vertex is beyond the Q12.4 range */
-    /* scratch, kept here so the pipeline needs no globals and little stack */
-    struct render_vertex pv[RENDER_MAX_VERTS];
-    int32_t key[RENDER_MAX_FACES];
-    uint16_t order[RENDER_MAX_FACES];
+    struct proj_vertex vert[RENDER_MAX_VERTS];
+    struct render_prim prim[RENDER_MAX_PRIMS];
+    /* (draw key << 16) | primitive index, in emission order; after render_sort, in draw order.
+     * The draw key is 65535 minus the depth key: ascending = far to near (sort.h). */
+    uint32_t sort_item[RENDER_MAX_PRIMS];
+    uint32_t sort_tmp[RENDER_MAX_PRIMS];
+    struct sort_scratch sort;
+    uint32_t vert_count;
+    uint32_t prim_count;
+    uint32_t sorted_count;  /* primitives covered by render_sort; later ones are overlay */
+    uint16_t batch_stamp;   /* batch.c: stamp of the last batch filled from these vertices */
+    struct render_stats stats;
 };
 
-/*
- * Project a view-space point.
- * Range: p = focal_q4 / z is formed once per vertex with fx_div; z >= near_z keeps it within
- * q16_16 when focal_q4 / near_z < 32768 (e.g. 3200 / 0.25 = 12800). The offsets x * p and y * p
- * are exact int64 products (|x|, |p| < 2^31, so < 2^62) scaled by 2^-32 with one rounding; a
- * result outside int16 gives RENDER_V_RANGE. Error against exact arithmetic: < 1/16 px + tiny
- * (one rounding of the offset, plus p's rounding of < 2^-17 relative).
- */
-enum render_vstate render_project(const struct render_camera *cam, xf_vec3 v,
-                                  struct render_vertex *out);
+/* What stays the same for every object of one pass (a frame, or one eye of a stereo frame). */
+struct render_pass {
+    struct proj_setup proj;
+    mat3 view_scene;      /* V O: camera rotation times the scene's rotation about its focus */
+    vec3 focus;           /* the scene's focus (world) */
+    vec3 focus_view;      /* V (focus - eye) */
+    uvec3 light_scene;    /* unit vector towards the light, in the rotated scene's frame: O^T l */
+    uint8_t ambient;      /* light level of unlit faces, 0 .. 15 */
+    uint8_t eye_material; /* 0, or MAT_ANAGLYPH_LEFT / _RIGHT: every face uses that ramp */
+    bool wireframe;
+    bool gpu_lines;       /* the GPU draws line primitives (CAPS_LINES) */
+};
 
-/* The contract's edge function E_v0v1(v2) = (x1-x0)(y2-y0) - (y1-y0)(x2-x0) on Q12.4 coordinates.
- * Operands are 17-bit differences, products 33 bits, result 34 bits: exact in int64. */
-int64_t render_signed_area(int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2,
-                           int32_t y2);
+/* One instance of a mesh in the scene: p_scene = rot p_model + pos. */
+struct render_object {
+    const struct mesh *mesh;
+    mat3 rot;
+    vec3 pos;
+    uint8_t material;     /* 0: each face's own material; else this one for every face */
+};
 
-/* Front-facing: positive signed area (clockwise on screen). Zero area counts as back-facing. */
-static inline bool render_is_front(int64_t area)
+/* Compose a pass. light: unit vector towards the light in world space. */
+void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,
+                      const struct cam_view *view, const mat3 *scene_rot, vec3 focus,
+                      uvec3 light, uint32_t ambient);
+
+/* Empty the frame's vertices and primitives (statistics are kept: render_stats_clear). */
+void render_frame_begin(struct render_frame *f);
+void render_stats_clear(struct render_stats *s);
+
+/* Transform, cull, clip, light and emit one object. */
+void render_object(struct render_frame *f, const struct render_pass *pass,
+                   const struct render_object *obj);
+
+/* Where a sphere (view-space centre, radius) lies against near, far and the four planes through
+ * the eye and the screen edges. */
+enum render_sphere_class {
+    RENDER_SPHERE_OUTSIDE = 0,   /* entirely beyond one plane: cull the object */
+    RENDER_SPHERE_CROSSING = 1,  /* partly inside: test every vertex and face */
+    RENDER_SPHERE_INSIDE = 2,    /* entirely inside: no vertex needs an outcode or clipping */
+};
+enum render_sphere_class render_sphere_classify(const struct proj_setup *ps, vec3 center_view,
+                                                real_t radius);
+
+/* At least partly inside? */
+static inline bool render_sphere_visible(const struct proj_setup *ps, vec3 center_view,
+                                         real_t radius)
 {
-    return area > 0;
+    return render_sphere_classify(ps, center_view, radius) != RENDER_SPHERE_OUTSIDE;
 }
 
-/* Sort order[0 .. n-1] so that key[order[i]] is non-increasing: largest key (farthest) first, so
- * nearer faces are drawn later and overwrite. Stable insertion sort: n is tiny. */
-void render_sort_back_to_front(const int32_t *key, uint16_t *order, uint32_t n);
+/* Order the primitives emitted so far from far to near. */
+void render_sort(struct render_frame *f);
 
-/* Run the pipeline: every vertex through view = rot * v + pos, projected and packed; every face
- * with all vertices projected and a positive area is packed, back to front. Returns prim_count. */
-uint32_t render_mesh_frame(const struct render_mesh *mesh, const xf_mat3 *rot, xf_vec3 pos,
-                           const struct render_camera *cam, struct render_frame *out);
+/* Append a crosshair at the screen centre (arms of half_px pixels), drawn after everything. */
+void render_overlay_crosshair(struct render_frame *f, const struct render_pass *pass,
+                              int32_t half_px, uint8_t color);
+
+/* Index of the i-th primitive to draw (sorted ones, then the overlay). */
+static inline uint32_t render_draw_index(const struct render_frame *f, uint32_t i)
+{
+    return (i < f->sorted_count) ? (f->sort_item[i] & 0xFFFFu) : i;
+}
+
+/* The depth key of primitive i (larger = farther), as emitted. Before render_sort only. */
+static inline uint16_t render_depth_key(const struct render_frame *f, uint32_t i)
+{
+    return (uint16_t)(0xFFFFu - (f->sort_item[i] >> 16));
+}
 
 #endif /* RENDER_H */

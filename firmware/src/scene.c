@@ -1,52 +1,125 @@
 /*
- * scene.c — data of the walking-skeleton scene (see scene.h).
+ * scene.c — the scene table and what all scenes share (see scene.h).
  */
 #include "scene.h"
 
-#include "gpu.h"
+#include "palette.h"
 
-const uint16_t scene_palette[SCENE_PAL_COUNT] = {
-    GPU_RGB444(0x0, 0x0, 0x0),  /* 0: black (unused, as at reset) */
-    GPU_RGB444(0x1, 0x1, 0x3),  /* 1: background, dark blue */
-    GPU_RGB444(0xF, 0x3, 0x2),  /* 2: red */
-    GPU_RGB444(0x3, 0xD, 0x3),  /* 3: green */
-    GPU_RGB444(0x3, 0x6, 0xF),  /* 4: blue */
-    GPU_RGB444(0xF, 0xD, 0x2),  /* 5: yellow */
+static const struct scene_desc *const scene_table[SCENE_COUNT] = {
+    &scene_tetra_desc, &scene_cubes_desc, &scene_landscape_desc, &scene_voxel_desc,
+    &scene_knot_desc,
 };
 
-/* Regular tetrahedron: alternate corners of the cube [-1, 1]^3 (edge 2*sqrt(2), circumradius
- * sqrt(3) = 1.73). */
-static const xf_vec3 tetra_verts[4] = {
-    {FX_CONST(1.0), FX_CONST(1.0), FX_CONST(1.0)},
-    {FX_CONST(1.0), FX_CONST(-1.0), FX_CONST(-1.0)},
-    {FX_CONST(-1.0), FX_CONST(1.0), FX_CONST(-1.0)},
-    {FX_CONST(-1.0), FX_CONST(-1.0), FX_CONST(1.0)},
-};
+static int scene_name_equal(const char *a, const char *b)
+{
+    while (*a != '\0' && *a == *b) {
+        a++;
+        b++;
+    }
+    return *a == *b;
+}
 
-/* Face k is opposite vertex k, listed clockwise seen from outside (render.h). */
-static const struct render_face tetra_faces[4] = {
-    {{1, 3, 2}, SCENE_PAL_FACE0 + 0u},
-    {{0, 2, 3}, SCENE_PAL_FACE0 + 1u},
-    {{0, 3, 1}, SCENE_PAL_FACE0 + 2u},
-    {{0, 1, 2}, SCENE_PAL_FACE0 + 3u},
-};
+const struct scene_desc *scene_find(const char *name)
+{
+    for (uint32_t i = 0; i < SCENE_COUNT; i++) {
+        if (scene_name_equal(scene_table[i]->name, name)) {
+            return scene_table[i];
+        }
+    }
+    return 0;
+}
 
-const struct render_mesh scene_tetra = {
-    .verts = tetra_verts,
-    .vert_count = 4,
-    .faces = tetra_faces,
-    .face_count = 4,
-};
+const struct scene_desc *scene_at(uint32_t index)
+{
+    return (index < SCENE_COUNT) ? scene_table[index] : 0;
+}
 
-/* 320 x 240 screen, centre (160, 120) px; focal length 200 px (vertical field of view
- * 2 * atan(120 / 200) = 62 degrees); near plane at 0.25. focal_q4 / near_z = 12800 < 32768. */
-const struct render_camera scene_camera = {
-    .near_z = FX_CONST(0.25),
-    .focal_q4 = 200 * 16,
-    .cx_q4 = (int32_t)(GPU_FB_WIDTH / 2u) * 16,
-    .cy_q4 = (int32_t)(GPU_FB_HEIGHT / 2u) * 16,
-};
+struct cam_config scene_default_cam_config(void)
+{
+    struct cam_config cfg;
 
-/* 4.5 units ahead: the model (radius 1.73, so z >= 2.77, far from the near plane) stays within
- * about +-100 px of the screen centre. */
-const xf_vec3 scene_model_pos = {0, 0, FX_CONST(4.5)};
+    cfg.box_min = vec3_make(REAL_C(-64), REAL_C(-64), REAL_C(-64));
+    cfg.box_max = vec3_make(REAL_C(64), REAL_C(64), REAL_C(64));
+    cfg.dist_min = REAL_C(1.0);
+    cfg.dist_max = REAL_C(60.0);
+    cfg.move_step = REAL_C(0.25);
+    cfg.zoom_step = REAL_C(0.25);
+    cfg.look_step = (fx_angle)(FX_TURN / 128u);  /* 2.8125 degrees */
+    cfg.focus = vec3_make(0, 0, 0);
+    return cfg;
+}
+
+void scene_set_camera(struct scene *s, enum cam_mode mode, vec3 target, real_t distance,
+                      fx_angle yaw, int32_t pitch, const struct cam_config *cfg)
+{
+    s->cam_default = *cfg;
+    s->mode_default = mode;
+    s->target_default = target;
+    s->distance_default = distance;
+    s->yaw_default = yaw;
+    s->pitch_default = pitch;
+    cam_init(&s->cam, cfg, mode, target, distance, yaw, pitch);
+}
+
+void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
+                      uint8_t material)
+{
+    struct render_object *o;
+
+    if (s->object_count >= SCENE_MAX_OBJECTS) {
+        return;
+    }
+    o = &s->object[s->object_count++];
+    o->mesh = m;
+    o->rot = *rot;
+    o->pos = pos;
+    o->material = material;
+}
+
+void scene_start(struct scene *s, const struct scene_desc *desc)
+{
+    s->desc = desc;
+    s->object_count = 0;
+    s->frame = 0;
+    s->animate = true;
+    s->crosshair = false;
+    s->focal_px = 200;  /* vertical field of view 2 atan(120 / 200) = 62 degrees */
+    s->far = REAL_C(160.0);
+    /* Towards the light: up, a little left and towards the viewer. */
+    s->light = vec3_direction(vec3_make(REAL_C(-0.45), REAL_C(0.8), REAL_C(-0.4)));
+    s->ambient = 4;
+    s->eye_separation = REAL_C(0.15);
+    desc->init(s);
+}
+
+void scene_update(struct scene *s, const struct input_counts *keys, struct scene_event *ev)
+{
+    ev->kind = SCENE_EVENT_NONE;
+    if (input_toggled(keys, KEY_RESET_VIEW)) {
+        cam_init(&s->cam, &s->cam_default, s->mode_default, s->target_default,
+                 s->distance_default, s->yaw_default, s->pitch_default);
+    }
+    cam_apply_keys(&s->cam, keys);
+    if (input_toggled(keys, KEY_ANIMATE)) {
+        s->animate = !s->animate;
+    }
+    s->desc->update(s, keys, ev);
+    s->frame++;
+}
+
+void scene_draw(const struct scene *s, struct render_frame *f, const struct render_pass *pass)
+{
+    for (uint32_t i = 0; i < s->object_count; i++) {
+        render_object(f, pass, &s->object[i]);
+    }
+}
+
+uint32_t scene_triangle_count(const struct scene *s)
+{
+    uint32_t n = 0;
+
+    for (uint32_t i = 0; i < s->object_count; i++) {
+        n += s->object[i].mesh->face_count;
+    }
+    return n;
+}

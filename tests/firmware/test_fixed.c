@@ -215,3 +215,79 @@ void test_fx_angle_wrap(void)
     /* cos(a) = sin(a + quarter turn) across the wrap. */
     CHECK_EQ(fx_cos(60000), fx_sin((fx_angle)(60000u + 16384u)));
 }
+
+/* fx_recip_mantissa against exact 128-bit division: within 2 units of floor(2^63 / m) over a
+ * stride through every mantissa plus both ends (fixed.h states the bound). */
+void test_fx_recip_mantissa(void)
+{
+    long long worst = 0;
+    const uint32_t ends[] = {0x80000000u, 0x80000001u, 0x80FFFFFFu, 0xBFFFFFFFu, 0xC0000000u,
+                             0xFFFFFFFEu, 0xFFFFFFFFu};
+
+    for (uint64_t m = 0x80000000ull; m <= 0xFFFFFFFFull; m += 2039u) {
+        const uint64_t exact = (uint64_t)(((unsigned __int128)1 << 63) / m);
+        const long long e = (long long)fx_recip_mantissa((uint32_t)m) - (long long)exact;
+
+        worst = (llabs(e) > worst) ? llabs(e) : worst;
+    }
+    for (unsigned i = 0; i < sizeof ends / sizeof ends[0]; i++) {
+        const uint64_t exact = (uint64_t)(((unsigned __int128)1 << 63) / ends[i]);
+        const long long e = (long long)fx_recip_mantissa(ends[i]) - (long long)(exact > 0xFFFFFFFFu ? 0xFFFFFFFFu : exact);
+
+        worst = (llabs(e) > worst) ? llabs(e) : worst;
+    }
+    if (worst > 2) {
+        unit_fail(__FILE__, __LINE__, "reciprocal off by %lld units (bound 2)", worst);
+    }
+    /* Normalisation: the shift brings the top bit to 31 and is reported. */
+    for (uint32_t s = 0; s < 32u; s++) {
+        int32_t shift;
+        const uint32_t m = fx_normalize32(0x80000000u >> s | 1u, &shift);
+
+        CHECK(m >= 0x80000000u);
+        CHECK_EQ(shift, s);
+    }
+}
+
+void test_fx_isqrt64(void)
+{
+    static const uint64_t cases[] = {0, 1, 2, 3, 4, 15, 16, 17, 0xFFFFFFFFull,
+                                     0x100000000ull, 0xFFFFFFFE00000001ull, 0xFFFFFFFFFFFFFFFFull};
+
+    for (unsigned i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const uint64_t r = fx_isqrt64(cases[i]);
+
+        CHECK((unsigned __int128)r * r <= cases[i]);
+        CHECK((unsigned __int128)(r + 1u) * (r + 1u) > cases[i]);
+    }
+    for (int i = 0; i < 20000; i++) {
+        const uint64_t v = ((uint64_t)unit_rand() << 32 | unit_rand()) >> (unit_rand() % 64u);
+        const uint64_t r = fx_isqrt64(v);
+
+        CHECK((unsigned __int128)r * r <= v && (unsigned __int128)(r + 1u) * (r + 1u) > v);
+    }
+}
+
+/* q2_30 helpers: exact where they must be, rounded where they round, saturating at +-2. */
+void test_q30_ops(void)
+{
+    CHECK_EQ(q30_mul(Q30_ONE, Q30_ONE), Q30_ONE);
+    CHECK_EQ(q30_mul(Q30_CONST(0.5), Q30_CONST(-0.5)), Q30_CONST(-0.25));
+    CHECK_EQ(q30_scale(FX_CONST(3.0), Q30_CONST(0.5)), FX_CONST(1.5));
+    CHECK_EQ(q30_scale(FX_CONST(-100.0), Q30_ONE), FX_CONST(-100.0));
+    CHECK_EQ(q30_from_q16(FX_ONE), Q30_ONE);
+    CHECK_EQ(q30_to_q16(Q30_CONST(-0.75)), FX_CONST(-0.75));
+    CHECK_EQ(fx_overflow_count(), 0);
+    CHECK_EQ(q30_mul(Q30_CONST(1.9), Q30_CONST(1.9)), INT32_MAX);  /* 3.61 > 2 */
+    CHECK_EQ(q30_from_q16(FX_CONST(2.5)), INT32_MAX);
+    CHECK_EQ(q30_scale(FX_CONST(30000.0), Q30_CONST(1.5)), INT32_MAX);
+    CHECK_EQ(fx_overflow_count(), 3);
+    for (int i = 0; i < 100000; i++) {
+        const q2_30 a = (q2_30)(unit_rand() % 0x80000001u) - Q30_ONE;  /* [-1, 1] */
+        const q2_30 b = (q2_30)(unit_rand() % 0x80000001u) - Q30_ONE;
+        const double exact = (double)a * (double)b / 1073741824.0;
+
+        CHECK(fabs((double)q30_mul(a, b) - exact) <= 0.5 + 1e-6);
+        CHECK(fx_mulh(a, b) == (int32_t)floor((double)a * (double)b / 4294967296.0));
+    }
+}

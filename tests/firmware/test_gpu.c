@@ -12,6 +12,7 @@
 uint32_t fake_gpu_mem[FAKE_GPU_WORDS];
 uint32_t fake_fence_count;
 uint32_t fake_regs_at_fence[FAKE_REG_WORDS];
+uint32_t fake_write_count;
 
 void fake_bsp_fence(void)
 {
@@ -27,6 +28,7 @@ static void fake_reset(void)
     memset(fake_gpu_mem, 0, sizeof fake_gpu_mem);
     memset(fake_regs_at_fence, 0, sizeof fake_regs_at_fence);
     fake_fence_count = 0;
+    fake_write_count = 0;
     REG(GPU_REG_ID) = GPU_ID_VALUE;
     REG(GPU_REG_VERSION) = GPU_VERSION_VALUE;
     REG(GPU_REG_CAPS) = 1u << GPU_CAPS_SPAN_W_LSB;
@@ -308,6 +310,7 @@ void test_gpu_read_stats(void)
     REG(GPU_REG_PERF_TRIS_REJECTED) = 1u;
     REG(GPU_REG_PERF_PIXELS) = 5000u;
     REG(GPU_REG_PERF_SAMPLES) = 9000u;
+    REG(GPU_REG_PERF_SPANS_WRITTEN) = 777u;
     gpu_read_stats(&dev, &s);
     CHECK_EQ(s.errors, GPU_ERR_KIND_MASK);
     CHECK_EQ(s.busy_cycles, 100001u);
@@ -316,4 +319,36 @@ void test_gpu_read_stats(void)
     CHECK_EQ(s.tris_rejected, 1u);
     CHECK_EQ(s.pixels, 5000u);
     CHECK_EQ(s.samples, 9000u);
+    CHECK_EQ(s.spans_written, 777u);
+}
+
+/* The watchdog's reset: RESET gets a new value each time (the co-simulation only sees changes),
+ * the pending batch is forgotten so the next submit goes ahead, and tags continue. */
+void test_gpu_reset(void)
+{
+    static const uint32_t words[2] = {0};
+    const struct gpu_batch b = {
+        .vtx_words = words, .vtx_base = 0, .vtx_count = 1,
+        .prim_words = words, .tri_base = 0, .prim_count = 0,
+        .ctrl = 0, .clear_color = 0,
+    };
+    struct gpu_dev dev;
+    uint32_t tag = 0;
+    uint32_t tag2 = 0;
+
+    fake_reset();
+    REG(GPU_REG_RESET) = 0xFFFFFFFFu;
+    CHECK_EQ(gpu_init(&dev, NULL, 0), GPU_OK);
+    CHECK_EQ(dev.resets, 0u);
+    CHECK_EQ(gpu_submit_batch(&dev, &b, &tag), GPU_OK);
+    CHECK_EQ(gpu_wait(&dev, tag, 100), GPU_E_TIMEOUT);  /* DONE_SEQ never comes */
+    CHECK_EQ(gpu_submit_batch(&dev, &b, &tag2), GPU_E_PENDING);
+    gpu_reset(&dev);
+    CHECK_EQ(REG(GPU_REG_RESET), 0u);  /* 0xFFFFFFFF + 1: a new value, wrapping is fine */
+    CHECK(!dev.pending);
+    CHECK_EQ(dev.resets, 1u);
+    gpu_reset(&dev);
+    CHECK_EQ(REG(GPU_REG_RESET), 1u);
+    CHECK_EQ(gpu_submit_batch(&dev, &b, &tag2), GPU_OK);
+    CHECK_EQ(tag2, tag + 1u);
 }

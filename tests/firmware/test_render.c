@@ -1,434 +1,413 @@
 /*
- * test_render.c — rotation, projection against a double-precision reference, back-face culling,
- * the depth sort and the packed output of a whole frame.
+ * test_render.c — the frame pipeline per object: back-face culling, frustum culling per triangle
+ * and per object (bounding sphere), near-plane clipping that neither drops nor mirrors, the
+ * painter's order (far first, stable), wireframe with and without GPU lines, flat lighting,
+ * anaglyph colours, the overlay, and running out of room.
  */
-#include <math.h>
 #include <stdint.h>
 #include <string.h>
 
-#include "fixed.h"
-#include "gpu.h"
+#include "palette.h"
 #include "render.h"
-#include "scene.h"
+#include "test_util.h"
 #include "unit.h"
-#include "xform.h"
 
-#define PI 3.14159265358979323846
+static struct render_frame frame;
 
-static double d(q16_16 v)
+/* Camera at the origin looking along +z, no scene rotation, light from behind the camera. */
+static void setup_pass(struct render_pass *pass)
 {
-    return (double)v / 65536.0;
+    struct proj_setup ps;
+    struct cam_view view;
+    const mat3 id = mat3_identity();
+
+    proj_setup_init(&ps, 200, to_real(160.0));
+    view.rot = mat3_identity();
+    view.eye = v3(0, 0, 0);
+    render_pass_init(pass, &ps, &view, &id, v3(0, 0, 0), u3(0, 0, -1), 4);
 }
 
-static q16_16 rand_q(double lo, double hi)
-{
-    const double u = (double)unit_rand() / 4294967296.0;
+/* A mesh of independent triangles given as 3 points each (storage static per call site). */
+struct tri_mesh {
+    struct mesh m;
+    vec3 v[96];
+    struct mesh_face f[32];
+    uvec3 n[32];
+};
 
-    return (q16_16)llround((lo + u * (hi - lo)) * 65536.0);
+static void tri_mesh_init(struct tri_mesh *t)
+{
+    mesh_init(&t->m, t->v, 96, t->f, 32, t->n, 32);
 }
 
-/* Double-precision R = Rx(pitch) * Ry(yaw), the reference for xf_rot_yx. */
-static void ref_rot(double r[3][3], fx_angle yaw, fx_angle pitch)
+static void tri_mesh_add(struct tri_mesh *t, vec3 a, vec3 b, vec3 c, uint8_t mat)
 {
-    const double a = 2.0 * PI * yaw / 65536.0;
-    const double b = 2.0 * PI * pitch / 65536.0;
-    const double sy = sin(a), cy = cos(a), sp = sin(b), cp = cos(b);
+    const uint16_t i = mesh_add_vertex(&t->m, a);
 
-    r[0][0] = cy;       r[0][1] = 0.0; r[0][2] = sy;
-    r[1][0] = sp * sy;  r[1][1] = cp;  r[1][2] = -sp * cy;
-    r[2][0] = -cp * sy; r[2][1] = sp;  r[2][2] = cp * cy;
+    mesh_add_vertex(&t->m, b);
+    mesh_add_vertex(&t->m, c);
+    mesh_add_face(&t->m, i, (uint16_t)(i + 1u), (uint16_t)(i + 2u), mat);
 }
 
-void test_xf_rotation(void)
+static void draw(const struct render_pass *pass, const struct mesh *m, vec3 pos, uint8_t mat)
 {
-    xf_mat3 r;
-    xf_vec3 v;
-    const xf_vec3 zero = {0, 0, 0};
-    double ref[3][3];
+    struct render_object o;
 
-    xf_rot_yx(&r, 0, 0);
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++) {
-            CHECK_EQ(r.m[i][j], (i == j) ? FX_ONE : 0);
-        }
+    o.mesh = m;
+    o.rot = mat3_identity();
+    o.pos = pos;
+    o.material = mat;
+    render_object(&frame, pass, &o);
+}
+
+static void begin(void)
+{
+    render_frame_begin(&frame);
+    render_stats_clear(&frame.stats);
+}
+
+/* Edge-function test of a pixel centre against an emitted triangle (either winding). */
+static int covers(const struct render_prim *p, int px, int py)
+{
+    const int64_t x = 16 * px + 8;
+    const int64_t y = 16 * py + 8;
+    int64_t e[3];
+
+    for (int k = 0; k < 3; k++) {
+        const struct proj_vertex *a = &frame.vert[p->v[k]];
+        const struct proj_vertex *b = &frame.vert[p->v[(k + 1) % 3]];
+
+        e[k] = (int64_t)(b->sx - a->sx) * (y - a->sy) - (int64_t)(b->sy - a->sy) * (x - a->sx);
     }
-    /* Quarter turns are exact: yaw +90 turns +z to +x, pitch +90 turns +y to +z. */
-    xf_rot_yx(&r, FX_ANGLE_DEG(90), 0);
-    v = xf_transform(&r, (xf_vec3){0, 0, FX_ONE}, zero);
-    CHECK_EQ(v.x, FX_ONE);
-    CHECK_EQ(v.y, 0);
-    CHECK_EQ(v.z, 0);
-    xf_rot_yx(&r, 0, FX_ANGLE_DEG(90));
-    v = xf_transform(&r, (xf_vec3){0, FX_ONE, 0}, (xf_vec3){FX_CONST(1.0), 0, FX_CONST(5.0)});
-    CHECK_EQ(v.x, FX_CONST(1.0));
-    CHECK_EQ(v.y, 0);
-    CHECK_EQ(v.z, FX_CONST(6.0));
-
-    /* Any angles: entries within 2.5e-4 of the double matrix (sin/cos error < 1e-4, products
-     * of two such add up to twice that plus a rounding). */
-    for (int i = 0; i < 2000; i++) {
-        const fx_angle yaw = (fx_angle)unit_rand();
-        const fx_angle pitch = (fx_angle)unit_rand();
-
-        xf_rot_yx(&r, yaw, pitch);
-        ref_rot(ref, yaw, pitch);
-        for (int a = 0; a < 3; a++) {
-            for (int b = 0; b < 3; b++) {
-                CHECK(fabs(d(r.m[a][b]) - ref[a][b]) < 2.5e-4);
-            }
-        }
-    }
-    CHECK_EQ(fx_overflow_count(), 0);
+    return (e[0] >= 0 && e[1] >= 0 && e[2] >= 0) || (e[0] <= 0 && e[1] <= 0 && e[2] <= 0);
 }
 
-/*
- * Projection against double arithmetic. Bound (render.h): the error is one rounding of the
- * offset (<= 0.5 sixteenth of a pixel) plus |x| * 2^-17 from the rounding of p = f/z, so below
- * 0.5 + 64/131072 < 0.501 sixteenths for |x|, |y| <= 64.
- */
-void test_render_project_vs_double(void)
+void test_render_backface(void)
 {
-    const struct render_camera *cam = &scene_camera;
-    double max_err = 0.0;
-    int projected = 0;
+    static struct tri_mesh t;
+    struct render_pass pass;
 
-    for (int i = 0; i < 200000; i++) {
-        const xf_vec3 v = {rand_q(-64.0, 64.0), rand_q(-64.0, 64.0),
-                           rand_q(d(cam->near_z), (i & 1) ? 8.0 : 200.0)};
-        const double ex = cam->cx_q4 + cam->focal_q4 * d(v.x) / d(v.z);
-        const double ey = cam->cy_q4 - cam->focal_q4 * d(v.y) / d(v.z);
-        struct render_vertex pv;
-        const enum render_vstate st = render_project(cam, v, &pv);
-        const int in_range = ex > -32768.5 && ex < 32767.5 && ey > -32768.5 && ey < 32767.5;
-        const int clearly_in = ex > -32767.0 && ex < 32766.0 && ey > -32767.0 && ey < 32766.0;
-
-        if (st == RENDER_V_OK) {
-            projected++;
-            CHECK(in_range);
-            max_err = fmax(max_err, fmax(fabs(pv.sx_q4 - ex), fabs(pv.sy_q4 - ey)));
-            CHECK_EQ(pv.depth, ((v.z - cam->near_z) >> 8) > 0xFFFF ? 0xFFFF
-                                                                    : (v.z - cam->near_z) >> 8);
-        } else {
-            CHECK_EQ(st, RENDER_V_RANGE);
-            CHECK(!clearly_in);
-        }
-    }
-    if (!(max_err < 0.501)) {
-        unit_fail(__FILE__, __LINE__, "max projection error %.4f >= 0.501 (1/16 px)", max_err);
-    }
-    CHECK(projected > 50000);
-
-    /* Known points: the optical axis lands on the screen centre; one unit right at depth 5 is
-     * f/5 = 40 px right of it; one unit up is 40 px higher (y grows downwards). */
-    {
-        struct render_vertex pv;
-
-        CHECK_EQ(render_project(cam, (xf_vec3){0, 0, FX_CONST(5.0)}, &pv), RENDER_V_OK);
-        CHECK_EQ(pv.sx_q4, 160 * 16);
-        CHECK_EQ(pv.sy_q4, 120 * 16);
-        CHECK_EQ(render_project(cam, (xf_vec3){FX_ONE, FX_ONE, FX_CONST(5.0)}, &pv), RENDER_V_OK);
-        CHECK_EQ(pv.sx_q4, 200 * 16);
-        CHECK_EQ(pv.sy_q4, 80 * 16);
-        CHECK_EQ(pv.depth, (FX_CONST(5.0) - FX_CONST(0.25)) >> 8);
-    }
-    CHECK_EQ(fx_overflow_count(), 0);
+    setup_pass(&pass);
+    tri_mesh_init(&t);
+    tri_mesh_add(&t, v3(0, 0, 3), v3(0, 1, 3), v3(1, 0, 3), MAT_RED);  /* faces the eye (-z) */
+    tri_mesh_add(&t, v3(0, 0, 4), v3(1, 0, 4), v3(0, 1, 4), MAT_RED);  /* faces away */
+    mesh_finish(&t.m);
+    begin();
+    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    CHECK_EQ(frame.prim_count, 1);
+    CHECK_EQ(frame.stats.faces_back, 1);
+    CHECK_EQ(frame.stats.faces_emitted, 1);
+    CHECK_EQ(frame.prim[0].kind, GPU_PRIM_KIND_TRI);
+    /* The kept face has a positive signed area in the contract's sense. */
+    CHECK(proj_signed_area(&frame.vert[frame.prim[0].v[0]], &frame.vert[frame.prim[0].v[1]],
+                           &frame.vert[frame.prim[0].v[2]]) > 0);
+    /* Edge-on: zero area counts as back-facing. */
+    tri_mesh_init(&t);
+    tri_mesh_add(&t, v3(0, 0, 3), v3(0, 0, 4), v3(0, 1, 3), MAT_RED);  /* in the plane x = 0 */
+    mesh_finish(&t.m);
+    begin();
+    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    CHECK_EQ(frame.prim_count, 0);
+    CHECK_EQ(frame.stats.faces_back, 1);
 }
 
-void test_render_project_near(void)
+/* Per triangle: three vertices beyond one screen edge (or all beyond far, or all behind) are
+ * culled, while another triangle of the same object is drawn. Per object: a bounding sphere
+ * outside the frustum skips the whole object before any vertex is transformed. */
+void test_render_frustum_culling(void)
 {
-    const struct render_camera *cam = &scene_camera;
-    struct render_vertex pv;
+    static struct tri_mesh t;
+    struct render_pass pass;
 
-    CHECK_EQ(render_project(cam, (xf_vec3){0, 0, cam->near_z - 1}, &pv), RENDER_V_NEAR);
-    CHECK_EQ(pv.state, RENDER_V_NEAR);
-    CHECK_EQ(render_project(cam, (xf_vec3){0, 0, -FX_ONE}, &pv), RENDER_V_NEAR);
-    CHECK_EQ(render_project(cam, (xf_vec3){0, 0, 0}, &pv), RENDER_V_NEAR);
-    CHECK_EQ(render_project(cam, (xf_vec3){FX_ONE, 0, cam->near_z}, &pv), RENDER_V_OK);
-    CHECK_EQ(pv.sx_q4, 160 * 16 + 4 * 3200);  /* f / near = 800 px per unit */
-    CHECK_EQ(pv.depth, 0);
-    CHECK_EQ(fx_overflow_count(), 0);
+    setup_pass(&pass);
+    tri_mesh_init(&t);
+    tri_mesh_add(&t, v3(0, 0, 3), v3(0, 1, 3), v3(1, 0, 3), MAT_RED);        /* visible */
+    tri_mesh_add(&t, v3(10, 0, 3), v3(10, 1, 3), v3(11, 0, 3), MAT_RED);     /* right of it */
+    tri_mesh_add(&t, v3(0, -9, 3), v3(0, -8, 3), v3(1, -9, 3), MAT_RED);     /* below */
+    tri_mesh_add(&t, v3(0, 0, 170), v3(0, 1, 170), v3(1, 0, 170), MAT_RED);  /* beyond far */
+    tri_mesh_add(&t, v3(0, 0, -3), v3(1, 0, -3), v3(0, 1, -3), MAT_RED);     /* behind */
+    mesh_finish(&t.m);
+    begin();
+    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    CHECK_EQ(frame.prim_count, 1);
+    CHECK_EQ(frame.stats.faces_frustum, 4);
+    CHECK_EQ(frame.stats.objects_culled, 0);
+
+    tri_mesh_init(&t);
+    tri_mesh_add(&t, v3(0, 0, 0), v3(0, 1, 0), v3(1, 0, 0), MAT_RED);
+    mesh_finish(&t.m);
+    begin();
+    draw(&pass, &t.m, v3(0, 0, -5), 0);    /* behind the eye */
+    draw(&pass, &t.m, v3(0, 0, 200), 0);   /* beyond far */
+    draw(&pass, &t.m, v3(-50, 0, 5), 0);   /* left */
+    draw(&pass, &t.m, v3(50, 0, 5), 0);    /* right */
+    draw(&pass, &t.m, v3(0, 50, 5), 0);    /* above */
+    draw(&pass, &t.m, v3(0, -50, 5), 0);   /* below */
+    CHECK_EQ(frame.stats.objects_culled, 6);
+    CHECK_EQ(frame.stats.faces_culled_object, 6);
+    CHECK_EQ(frame.vert_count, 0);  /* nothing was even transformed */
+    draw(&pass, &t.m, v3(-0.5, 0, 5), 0);
+    CHECK_EQ(frame.stats.objects_culled, 6);
+    CHECK_EQ(frame.prim_count, 1);
+    /* A sphere straddling an edge plane is kept; inside, crossing and outside are told apart
+     * (the left edge plane at z = 5 is at x = -4; the near plane at z = 0.25). */
+    CHECK(render_sphere_visible(&pass.proj, v3(-4.1, 0, 5), to_real(0.5)));
+    CHECK(!render_sphere_visible(&pass.proj, v3(-5.0, 0, 5), to_real(0.5)));
+    CHECK_EQ(render_sphere_classify(&pass.proj, v3(-4.1, 0, 5), to_real(0.5)), RENDER_SPHERE_CROSSING);
+    CHECK_EQ(render_sphere_classify(&pass.proj, v3(-3.0, 0, 5), to_real(0.5)), RENDER_SPHERE_INSIDE);
+    CHECK_EQ(render_sphere_classify(&pass.proj, v3(0, 0, 0.6), to_real(0.5)), RENDER_SPHERE_CROSSING);
+    CHECK_EQ(render_sphere_classify(&pass.proj, v3(0, 0, 159.8), to_real(0.5)), RENDER_SPHERE_CROSSING);
+    CHECK_EQ(render_sphere_classify(&pass.proj, v3(0, 0, 161), to_real(0.5)), RENDER_SPHERE_OUTSIDE);
 }
 
-void test_render_project_range(void)
+/* An object inside the frustum takes the shortcut (no outcodes) and an object crossing an edge
+ * the full path; both give the same primitives for the faces they share. */
+void test_render_inside_shortcut(void)
 {
-    const struct render_camera *cam = &scene_camera;
-    struct render_vertex pv;
+    static struct tri_mesh t;
+    struct render_pass pass;
+    struct render_prim inside[2];
+    struct proj_vertex inside_v[6];
 
-    /* 64 units right at the near plane: 51200 px, far beyond Q12.4. */
-    CHECK_EQ(render_project(cam, (xf_vec3){FX_FROM_INT(64), 0, cam->near_z}, &pv),
-             RENDER_V_RANGE);
-    CHECK_EQ(render_project(cam, (xf_vec3){0, FX_FROM_INT(-64), cam->near_z}, &pv),
-             RENDER_V_RANGE);
-    /* Largest x that still fits: sx = 2560 + 3200 * x / 1 <= 32767 -> x <= 9.4396. */
-    CHECK_EQ(render_project(cam, (xf_vec3){FX_CONST(9.4396), 0, FX_ONE}, &pv), RENDER_V_OK);
-    CHECK_EQ(render_project(cam, (xf_vec3){FX_CONST(9.4400), 0, FX_ONE}, &pv), RENDER_V_RANGE);
-    /* Very far: depth clamps. */
-    CHECK_EQ(render_project(cam, (xf_vec3){0, 0, FX_FROM_INT(30000)}, &pv), RENDER_V_OK);
-    CHECK_EQ(pv.depth, 0xFFFF);
-    CHECK_EQ(fx_overflow_count(), 0);
-}
-
-void test_render_signed_area(void)
-{
-    /* Clockwise on screen (y down): right, then down-left. Positive = front. */
-    CHECK(render_signed_area(0, 0, 16, 0, 0, 16) > 0);
-    CHECK(render_is_front(render_signed_area(0, 0, 16, 0, 0, 16)));
-    CHECK_EQ(render_signed_area(0, 0, 16, 0, 0, 16), 256);
-    /* Same triangle the other way round: back. */
-    CHECK(render_signed_area(0, 0, 0, 16, 16, 0) < 0);
-    CHECK(!render_is_front(render_signed_area(0, 0, 0, 16, 16, 0)));
-    /* Collinear: zero, culled. */
-    CHECK_EQ(render_signed_area(0, 0, 16, 16, 32, 32), 0);
-    CHECK(!render_is_front(0));
-    /* Rotating the vertex order keeps the sign. */
-    CHECK_EQ(render_signed_area(16, 0, 0, 16, 0, 0), 256);
-    /* Extremes of Q12.4: the 34-bit result is exact. */
-    CHECK_EQ(render_signed_area(-32768, -32768, 32767, -32768, -32768, 32767),
-             (int64_t)65535 * 65535);
-    CHECK_EQ(render_signed_area(-32768, -32768, -32768, 32767, 32767, -32768),
-             -(int64_t)65535 * 65535);
-}
-
-void test_render_sort(void)
-{
-    const int32_t key[5] = {5, 9, 1, 9, 3};
-    uint16_t order[5] = {0, 1, 2, 3, 4};
-    uint16_t one[1] = {0};
-
-    render_sort_back_to_front(key, order, 5);
-    /* Largest (farthest) first; equal keys keep their order (stable). */
-    CHECK_EQ(order[0], 1);
-    CHECK_EQ(order[1], 3);
-    CHECK_EQ(order[2], 0);
-    CHECK_EQ(order[3], 4);
-    CHECK_EQ(order[4], 2);
-    render_sort_back_to_front(key, one, 1);
-    CHECK_EQ(one[0], 0);
-    render_sort_back_to_front(key, order, 0);  /* nothing to do, must not touch memory */
-}
-
-void test_render_sort_random(void)
-{
-    int32_t key[RENDER_MAX_FACES];
-    uint16_t order[RENDER_MAX_FACES];
-
-    for (int round = 0; round < 500; round++) {
-        const uint32_t n = 1u + unit_rand() % RENDER_MAX_FACES;
-        uint32_t seen[RENDER_MAX_FACES] = {0};
-
-        for (uint32_t i = 0; i < n; i++) {
-            key[i] = (int32_t)(unit_rand() % 16u) - 8;  /* many ties */
-            order[i] = (uint16_t)i;
-        }
-        render_sort_back_to_front(key, order, n);
-        for (uint32_t i = 0; i < n; i++) {
-            seen[order[i]]++;
-            if (i > 0) {
-                CHECK(key[order[i - 1]] >= key[order[i]]);
-                if (key[order[i - 1]] == key[order[i]]) {
-                    CHECK(order[i - 1] < order[i]);  /* stable */
-                }
-            }
-        }
-        for (uint32_t i = 0; i < n; i++) {
-            CHECK_EQ(seen[i], 1);  /* a permutation */
-        }
+    setup_pass(&pass);
+    tri_mesh_init(&t);
+    tri_mesh_add(&t, v3(0, 0, 0), v3(0, 0.5, 0), v3(0.5, 0, 0), MAT_RED);
+    tri_mesh_add(&t, v3(0, 0, 0), v3(0.5, 0, 0), v3(0, 0.5, 0), MAT_RED);  /* back */
+    mesh_finish(&t.m);
+    begin();
+    draw(&pass, &t.m, v3(0, 0, 5), 0);  /* well inside */
+    CHECK_EQ(frame.prim_count, 1);
+    CHECK_EQ(frame.vert[0].code, 0);
+    memcpy(inside, frame.prim, sizeof inside);
+    memcpy(inside_v, frame.vert, sizeof inside_v);
+    /* Same object, same view position, but a far plane that cuts its sphere: full path. */
+    pass.proj.far = to_real(5.1);
+    begin();
+    draw(&pass, &t.m, v3(0, 0, 5), 0);
+    CHECK_EQ(frame.prim_count, 1);
+    CHECK_EQ(frame.stats.faces_back, 1);
+    CHECK(memcmp(&frame.prim[0], &inside[0], sizeof inside[0]) == 0);
+    for (int k = 0; k < 3; k++) {
+        CHECK_EQ(frame.vert[k].sxy, inside_v[k].sxy);
+        CHECK_EQ(frame.vert[k].depth, inside_v[k].depth);
     }
 }
 
-/* The scene's mesh: indices in range, one distinct colour per face, faces clockwise seen from
- * outside in the left-handed view frame (equivalently: (b-a) x (c-a) points outwards). */
-void test_scene_mesh_valid(void)
+/* A floor running from behind the eye to far ahead: its triangles cross the near plane. They are
+ * cut, not dropped (the pixels just in front are covered), and not mirrored (a floor triangle
+ * to the left stays on the left). */
+void test_render_near_clipping(void)
 {
-    const struct render_mesh *m = &scene_tetra;
-    double cx = 0.0, cy = 0.0, cz = 0.0;
+    static struct tri_mesh t;
+    struct render_pass pass;
+    int covered = 0;
 
-    CHECK_EQ(m->vert_count, 4);
-    CHECK_EQ(m->face_count, 4);
-    for (uint32_t i = 0; i < m->vert_count; i++) {
-        cx += d(m->verts[i].x) / m->vert_count;
-        cy += d(m->verts[i].y) / m->vert_count;
-        cz += d(m->verts[i].z) / m->vert_count;
-    }
-    for (uint32_t f = 0; f < m->face_count; f++) {
-        const struct render_face *face = &m->faces[f];
-        double p[3][3];
-        double e1[3], e2[3], n[3], out[3];
-
-        for (uint32_t g = 0; g < f; g++) {
-            CHECK(m->faces[g].color != face->color);
-        }
-        CHECK(face->color != SCENE_PAL_BG && face->color < SCENE_PAL_COUNT);
+    setup_pass(&pass);
+    tri_mesh_init(&t);
+    /* Floor y = -1, facing up: wound so (b - a) x (c - a) = +y. */
+    tri_mesh_add(&t, v3(-2, -1, -3), v3(-2, -1, 10), v3(2, -1, 10), MAT_GREEN);
+    tri_mesh_add(&t, v3(-2, -1, -3), v3(2, -1, 10), v3(2, -1, -3), MAT_GREEN);
+    mesh_finish(&t.m);
+    begin();
+    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    CHECK_EQ(frame.stats.faces_clipped, 2);
+    CHECK(frame.prim_count >= 2);
+    for (uint32_t i = 0; i < frame.prim_count; i++) {
         for (int k = 0; k < 3; k++) {
-            CHECK(face->v[k] < m->vert_count);
-            p[k][0] = d(m->verts[face->v[k]].x);
-            p[k][1] = d(m->verts[face->v[k]].y);
-            p[k][2] = d(m->verts[face->v[k]].z);
+            CHECK((frame.vert[frame.prim[i].v[k]].code & PROJ_CLIP_BITS) == 0);
         }
+        covered |= covers(&frame.prim[i], 160, 239);  /* bottom centre: floor right in front */
+        CHECK(proj_signed_area(&frame.vert[frame.prim[i].v[0]], &frame.vert[frame.prim[i].v[1]],
+                               &frame.vert[frame.prim[i].v[2]]) >= 0);
+    }
+    CHECK(covered);
+
+    /* Left of the eye, partly behind it: everything drawn stays in the left half. */
+    tri_mesh_init(&t);
+    tri_mesh_add(&t, v3(-3, -1, 2), v3(-1, -1, 2), v3(-2, -1, -5), MAT_GREEN);  /* faces up */
+    mesh_finish(&t.m);
+    begin();
+    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    CHECK(frame.prim_count >= 1);
+    for (uint32_t i = 0; i < frame.prim_count; i++) {
         for (int k = 0; k < 3; k++) {
-            e1[k] = p[1][k] - p[0][k];
-            e2[k] = p[2][k] - p[0][k];
-        }
-        n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-        n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-        n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-        out[0] = (p[0][0] + p[1][0] + p[2][0]) / 3.0 - cx;
-        out[1] = (p[0][1] + p[1][1] + p[2][1]) / 3.0 - cy;
-        out[2] = (p[0][2] + p[1][2] + p[2][2]) / 3.0 - cz;
-        CHECK(n[0] * out[0] + n[1] * out[1] + n[2] * out[2] > 0.0);
-    }
-}
-
-static int frame_has_face(const struct render_frame *fr, const struct render_face *face)
-{
-    for (uint32_t i = 0; i < fr->prim_count; i++) {
-        const uint32_t *w = &fr->prim_words[i * GPU_PRIM_WORDS];
-
-        if (((w[GPU_PRIM_I0_WORD] >> GPU_PRIM_I0_LSB) & GPU_PRIM_I0_MASK) == face->v[0] &&
-            ((w[GPU_PRIM_I1_WORD] >> GPU_PRIM_I1_LSB) & GPU_PRIM_I1_MASK) == face->v[1] &&
-            ((w[GPU_PRIM_I2_WORD] >> GPU_PRIM_I2_LSB) & GPU_PRIM_I2_MASK) == face->v[2]) {
-            return 1;
+            CHECK(frame.vert[frame.prim[i].v[k]].sx <= 2560);
         }
     }
-    return 0;
-}
-
-/*
- * Culling against geometry, independent of winding: a face of a convex body is visible from
- * the eye (the origin) exactly when the eye is on the outer side of the face's plane. Computed
- * in double from the exact rotation; orientations within 1e-3 of edge-on are skipped.
- */
-void test_render_cull_vs_geometry(void)
-{
-    static struct render_frame fr;
-    const struct render_mesh *m = &scene_tetra;
-    int compared = 0;
-
-    for (uint32_t yi = 0; yi < 97; yi++) {
-        for (uint32_t pi = 0; pi < 61; pi++) {
-            const fx_angle yaw = (fx_angle)(yi * 677u);
-            const fx_angle pitch = (fx_angle)(pi * 1087u);
-            double r[3][3];
-            double vv[4][3];
-            xf_mat3 rot;
-
-            xf_rot_yx(&rot, yaw, pitch);
-            render_mesh_frame(m, &rot, scene_model_pos, &scene_camera, &fr);
-            CHECK_EQ(fr.prim_count + fr.culled + fr.dropped_near + fr.dropped_range,
-                     m->face_count);
-            CHECK_EQ(fr.dropped_near + fr.dropped_range, 0);
-            CHECK(fr.prim_count >= 1 && fr.prim_count <= 3);
-
-            ref_rot(r, yaw, pitch);
-            for (uint32_t i = 0; i < m->vert_count; i++) {
-                const double x = d(m->verts[i].x), y = d(m->verts[i].y), z = d(m->verts[i].z);
-
-                for (int k = 0; k < 3; k++) {
-                    vv[i][k] = r[k][0] * x + r[k][1] * y + r[k][2] * z;
-                }
-                vv[i][2] += d(scene_model_pos.z);
-            }
-            for (uint32_t f = 0; f < m->face_count; f++) {
-                const double *a = vv[m->faces[f].v[0]];
-                const double *b = vv[m->faces[f].v[1]];
-                const double *c = vv[m->faces[f].v[2]];
-                const double *o = vv[f];  /* face f is opposite vertex f: inside the body */
-                double e1[3], e2[3], n[3], side, eye, len_n, len_a;
-
-                for (int k = 0; k < 3; k++) {
-                    e1[k] = b[k] - a[k];
-                    e2[k] = c[k] - a[k];
-                }
-                n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-                n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-                n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-                side = n[0] * (o[0] - a[0]) + n[1] * (o[1] - a[1]) + n[2] * (o[2] - a[2]);
-                if (side > 0.0) {  /* make n point outwards */
-                    n[0] = -n[0];
-                    n[1] = -n[1];
-                    n[2] = -n[2];
-                }
-                eye = -(n[0] * a[0] + n[1] * a[1] + n[2] * a[2]);  /* n . (eye - a) */
-                len_n = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-                len_a = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-                if (fabs(eye) < 1e-3 * len_n * len_a) {
-                    continue;
-                }
-                compared++;
-                CHECK_EQ(frame_has_face(&fr, &m->faces[f]), eye > 0.0);
-            }
-        }
-    }
-    CHECK(compared > 97 * 61 * 4 * 9 / 10);
     CHECK_EQ(fx_overflow_count(), 0);
 }
 
-/* One frame's packed output, decoded with the contract's field macros. */
-void test_render_frame_output(void)
+/* After render_sort the farther primitive comes first; equal depths keep emission order. */
+void test_render_painter_order(void)
 {
-    static struct render_frame fr;
-    const struct render_mesh *m = &scene_tetra;
-    xf_mat3 rot;
-    int32_t prev_key = INT32_MAX;
+    static struct tri_mesh near_t;
+    static struct tri_mesh far_t;
+    struct render_pass pass;
 
-    xf_rot_yx(&rot, SCENE_YAW0, SCENE_PITCH0);
-    CHECK_EQ(render_mesh_frame(m, &rot, scene_model_pos, &scene_camera, &fr), fr.prim_count);
-    CHECK_EQ(fr.vtx_count, m->vert_count);
-    for (uint32_t i = 0; i < fr.vtx_count; i++) {
-        const uint32_t *w = &fr.vtx_words[i * GPU_VTX_WORDS];
-
-        CHECK_EQ((int16_t)((w[GPU_VTX_X_WORD] >> GPU_VTX_X_LSB) & GPU_VTX_X_MASK), fr.pv[i].sx_q4);
-        CHECK_EQ((int16_t)((w[GPU_VTX_Y_WORD] >> GPU_VTX_Y_LSB) & GPU_VTX_Y_MASK), fr.pv[i].sy_q4);
-        CHECK_EQ((w[GPU_VTX_Z_WORD] >> GPU_VTX_Z_LSB) & GPU_VTX_Z_MASK, fr.pv[i].depth);
-        /* The tetrahedron stays well inside the screen. */
-        CHECK(fr.pv[i].sx_q4 > 0 && fr.pv[i].sx_q4 < 320 * 16);
-        CHECK(fr.pv[i].sy_q4 > 0 && fr.pv[i].sy_q4 < 240 * 16);
+    setup_pass(&pass);
+    tri_mesh_init(&near_t);
+    tri_mesh_add(&near_t, v3(0, 0, 2), v3(0, 1, 2), v3(1, 0, 2), MAT_RED);
+    mesh_finish(&near_t.m);
+    tri_mesh_init(&far_t);
+    tri_mesh_add(&far_t, v3(0, 0, 4), v3(0, 1, 4), v3(1, 0, 4), MAT_BLUE);
+    mesh_finish(&far_t.m);
+    begin();
+    draw(&pass, &near_t.m, v3(0, 0, 0), 0);
+    draw(&pass, &far_t.m, v3(0, 0, 0), 0);
+    draw(&pass, &near_t.m, v3(0, 0, 0), MAT_YELLOW);  /* same depth as the first, later */
+    CHECK(render_depth_key(&frame, 1) > render_depth_key(&frame, 0));
+    render_sort(&frame);
+    CHECK_EQ(render_draw_index(&frame, 0), 1);  /* far first */
+    CHECK_EQ(render_draw_index(&frame, 1), 0);  /* then the two near ones, in emission order */
+    CHECK_EQ(render_draw_index(&frame, 2), 2);
+    /* Many primitives: the draw order is non-increasing in depth. */
+    begin();
+    for (int i = 0; i < 300; i++) {
+        draw(&pass, &near_t.m, v3(((int)(unit_rand() % 200u) - 100) / 100.0, 0,
+                                  (double)(unit_rand() % 1000u) / 10.0),
+             0);
     }
-    CHECK(fr.prim_count >= 1);
-    for (uint32_t i = 0; i < fr.prim_count; i++) {
-        const uint32_t *w = &fr.prim_words[i * GPU_PRIM_WORDS];
-        const uint32_t i0 = (w[GPU_PRIM_I0_WORD] >> GPU_PRIM_I0_LSB) & GPU_PRIM_I0_MASK;
-        const uint32_t i1 = (w[GPU_PRIM_I1_WORD] >> GPU_PRIM_I1_LSB) & GPU_PRIM_I1_MASK;
-        const uint32_t i2 = (w[GPU_PRIM_I2_WORD] >> GPU_PRIM_I2_LSB) & GPU_PRIM_I2_MASK;
-        const uint32_t color = (w[GPU_PRIM_COLOR_WORD] >> GPU_PRIM_COLOR_LSB) & GPU_PRIM_COLOR_MASK;
-        const uint32_t kind = (w[GPU_PRIM_KIND_WORD] >> GPU_PRIM_KIND_LSB) & GPU_PRIM_KIND_MASK;
-        const struct render_face *face = NULL;
-        int32_t key;
-
-        for (uint32_t f = 0; f < m->face_count; f++) {
-            if (m->faces[f].v[0] == i0 && m->faces[f].v[1] == i1 && m->faces[f].v[2] == i2) {
-                face = &m->faces[f];
-            }
-        }
-        CHECK(face != NULL);
-        if (face == NULL) {
-            break;
-        }
-        CHECK_EQ(color, face->color);
-        CHECK_EQ(kind, GPU_PRIM_KIND_TRI);
-        CHECK(render_signed_area(fr.pv[i0].sx_q4, fr.pv[i0].sy_q4, fr.pv[i1].sx_q4,
-                                 fr.pv[i1].sy_q4, fr.pv[i2].sx_q4, fr.pv[i2].sy_q4) > 0);
-        key = (fr.pv[i0].z >> 2) + (fr.pv[i1].z >> 2) + (fr.pv[i2].z >> 2);
-        CHECK(key <= prev_key);  /* back to front */
-        prev_key = key;
-    }
-
-    /* Pushed into the near plane: faces touching a vertex in front of it are dropped and
-     * counted, and no primitive refers to such a vertex. */
     {
-        const xf_vec3 close = {0, 0, FX_CONST(1.0)};
+        uint16_t keys[RENDER_MAX_PRIMS];
 
-        xf_rot_yx(&rot, 0, 0);
-        render_mesh_frame(m, &rot, close, &scene_camera, &fr);
-        CHECK(fr.dropped_near > 0);
-        CHECK_EQ(fr.prim_count + fr.culled + fr.dropped_near + fr.dropped_range, m->face_count);
-        for (uint32_t i = 0; i < fr.prim_count; i++) {
-            const uint32_t *w = &fr.prim_words[i * GPU_PRIM_WORDS];
-
-            CHECK_EQ(fr.pv[(w[0] >> GPU_PRIM_I0_LSB) & GPU_PRIM_I0_MASK].state, RENDER_V_OK);
-            CHECK_EQ(fr.pv[(w[0] >> GPU_PRIM_I1_LSB) & GPU_PRIM_I1_MASK].state, RENDER_V_OK);
-            CHECK_EQ(fr.pv[(w[1] >> GPU_PRIM_I2_LSB) & GPU_PRIM_I2_MASK].state, RENDER_V_OK);
+        for (uint32_t i = 0; i < frame.prim_count; i++) {
+            keys[i] = render_depth_key(&frame, i);
+        }
+        render_sort(&frame);
+        for (uint32_t i = 1; i < frame.prim_count; i++) {
+            CHECK(keys[render_draw_index(&frame, i - 1u)] >= keys[render_draw_index(&frame, i)]);
         }
     }
-    CHECK_EQ(fx_overflow_count(), 0);
+}
+
+/* Wireframe: three GPU lines per front face; without GPU lines, each edge becomes two thin
+ * triangles on four new vertices; back faces draw nothing either way. */
+void test_render_wireframe(void)
+{
+    static struct tri_mesh t;
+    struct render_pass pass;
+
+    setup_pass(&pass);
+    tri_mesh_init(&t);
+    tri_mesh_add(&t, v3(0, 0, 3), v3(0, 1, 3), v3(1, 0, 3), MAT_RED);
+    tri_mesh_add(&t, v3(0, 0, 4), v3(1, 0, 4), v3(0, 1, 4), MAT_RED);  /* back */
+    mesh_finish(&t.m);
+    pass.wireframe = true;
+    pass.gpu_lines = true;
+    begin();
+    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    CHECK_EQ(frame.prim_count, 3);
+    for (uint32_t i = 0; i < 3; i++) {
+        CHECK_EQ(frame.prim[i].kind, GPU_PRIM_KIND_LINE);
+    }
+    CHECK_EQ(frame.prim[0].v[1], frame.prim[1].v[0]);  /* a closed outline */
+    CHECK_EQ(frame.prim[2].v[1], frame.prim[0].v[0]);
+    CHECK_EQ(frame.stats.faces_back, 1);
+
+    pass.gpu_lines = false;
+    begin();
+    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    CHECK_EQ(frame.prim_count, 6);
+    CHECK_EQ(frame.vert_count, 6u + 12u);
+    for (uint32_t i = 0; i < 6; i++) {
+        const struct render_prim *p = &frame.prim[i];
+
+        CHECK_EQ(p->kind, GPU_PRIM_KIND_TRI);
+        /* one pixel wide: the quad's two long sides are 16 sixteenths apart */
+        CHECK(proj_signed_area(&frame.vert[p->v[0]], &frame.vert[p->v[1]], &frame.vert[p->v[2]]) != 0);
+    }
+}
+
+/* Flat light: a face turned to the light gets the full level, the object's material overrides
+ * the face's, the anaglyph eye's ramp overrides both. */
+void test_render_lighting_and_colour(void)
+{
+    static struct tri_mesh t;
+    struct render_pass pass;
+
+    setup_pass(&pass);  /* light towards -z: straight at the faces that face the eye */
+    tri_mesh_init(&t);
+    tri_mesh_add(&t, v3(0, 0, 3), v3(0, 1, 3), v3(1, 0, 3), MAT_RED);
+    mesh_finish(&t.m);
+    begin();
+    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    CHECK_EQ(frame.prim[0].color, PAL_INDEX(MAT_RED, 15u));
+    draw(&pass, &t.m, v3(0, 0, 0), MAT_BLUE);
+    CHECK_EQ(frame.prim[1].color, PAL_INDEX(MAT_BLUE, 15u));
+    pass.eye_material = MAT_ANAGLYPH_LEFT;
+    draw(&pass, &t.m, v3(0, 0, 0), MAT_BLUE);
+    CHECK_EQ(frame.prim[2].color, PAL_INDEX(MAT_ANAGLYPH_LEFT, 15u));
+    /* Light from the side (towards +x), perpendicular to the face's normal: ambient only. */
+    {
+        struct cam_view view;
+        const mat3 id = mat3_identity();
+        struct proj_setup ps;
+
+        proj_setup_init(&ps, 200, to_real(160.0));
+        view.rot = mat3_identity();
+        view.eye = v3(0, 0, 0);
+        render_pass_init(&pass, &ps, &view, &id, v3(0, 0, 0), u3(1, 0, 0), 4);
+        begin();
+        draw(&pass, &t.m, v3(0, 0, 0), 0);
+        CHECK_EQ(frame.prim[0].color, PAL_INDEX(MAT_RED, 4u));
+    }
+}
+
+/* The crosshair comes after the sorted primitives and stays last. */
+void test_render_overlay(void)
+{
+    static struct tri_mesh t;
+    struct render_pass pass;
+
+    setup_pass(&pass);
+    tri_mesh_init(&t);
+    tri_mesh_add(&t, v3(0, 0, 3), v3(0, 1, 3), v3(1, 0, 3), MAT_RED);
+    mesh_finish(&t.m);
+    begin();
+    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    draw(&pass, &t.m, v3(0, 0, 1), 0);
+    render_sort(&frame);
+    render_overlay_crosshair(&frame, &pass, 5, PAL_WHITE);
+    CHECK_EQ(frame.sorted_count, 2);
+    CHECK_EQ(frame.prim_count, 4);
+    CHECK_EQ(render_draw_index(&frame, 2), 2);
+    CHECK_EQ(render_draw_index(&frame, 3), 3);
+    CHECK_EQ(frame.prim[3].kind, GPU_PRIM_KIND_LINE);
+    CHECK_EQ(frame.prim[3].color, PAL_WHITE);
+    pass.gpu_lines = false;
+    render_overlay_crosshair(&frame, &pass, 5, PAL_WHITE);
+    CHECK_EQ(frame.prim_count, 8);
+    CHECK_EQ(frame.prim[7].kind, GPU_PRIM_KIND_TRI);
+}
+
+/* More primitives than the frame holds: the excess is counted, nothing is written past the
+ * arrays, and what fits is intact. (3000 faces on the same three vertices per object.) */
+void test_render_capacity(void)
+{
+    static struct mesh m;
+    static vec3 v[3];
+    static struct mesh_face f[3000];
+    static uvec3 n[1];
+    struct render_pass pass;
+
+    setup_pass(&pass);
+    mesh_init(&m, v, 3, f, 3000, n, 1);
+    mesh_add_normal(&m, u3(0, 0, -1));
+    mesh_add_vertex(&m, v3(0, 0, 3));
+    mesh_add_vertex(&m, v3(0, 1, 3));
+    mesh_add_vertex(&m, v3(1, 0, 3));
+    for (uint32_t i = 0; i < 3000u; i++) {
+        mesh_add_face_normal(&m, 0, 1, 2, 0, MAT_RED);
+    }
+    mesh_finish(&m);
+    CHECK(!m.full);
+    begin();
+    for (int k = 0; k < 6; k++) {
+        draw(&pass, &m, v3(0, 0, 0), 0);
+    }
+    CHECK_EQ(frame.prim_count, RENDER_MAX_PRIMS);
+    CHECK_EQ(frame.stats.dropped, 6u * 3000u - RENDER_MAX_PRIMS);
+    CHECK_EQ(frame.vert_count, 18);
+    render_sort(&frame);
+    CHECK_EQ(frame.sorted_count, RENDER_MAX_PRIMS);
 }

@@ -48,16 +48,58 @@ void unit_srand(uint32_t seed);
     X(test_fx_sin_cos_exact_points)   \
     X(test_fx_sin_cos_vs_libm)        \
     X(test_fx_angle_wrap)             \
-    X(test_xf_rotation)               \
-    X(test_render_project_vs_double) \
-    X(test_render_project_near)       \
-    X(test_render_project_range)      \
-    X(test_render_signed_area)        \
-    X(test_render_sort)               \
-    X(test_render_sort_random)        \
-    X(test_scene_mesh_valid)          \
-    X(test_render_cull_vs_geometry)   \
-    X(test_render_frame_output)       \
+    X(test_fx_recip_mantissa)         \
+    X(test_fx_isqrt64)                \
+    X(test_q30_ops)                   \
+    X(test_vec_rotation_conventions)  \
+    X(test_vec_mat3_vs_double)        \
+    X(test_vec_xf_apply_error)        \
+    X(test_vec_triangle_normal)       \
+    X(test_vec_million_rotations)     \
+    X(test_cam_pitch_limits)          \
+    X(test_cam_fly_moves_and_clamps)  \
+    X(test_cam_mode_cycle)            \
+    X(test_cam_object_turns)          \
+    X(test_input_key_map)             \
+    X(test_input_escape_and_unknown)  \
+    X(test_input_counts_saturate)     \
+    X(test_proj_vs_double)            \
+    X(test_proj_vertex_path_vs_double) \
+    X(test_proj_near_plane)           \
+    X(test_proj_outcodes)             \
+    X(test_proj_guard_band)           \
+    X(test_proj_depths)               \
+    X(test_proj_inside_matches)       \
+    X(test_clip_one_vertex_behind)    \
+    X(test_clip_two_vertices_behind)  \
+    X(test_clip_three_vertices_behind) \
+    X(test_clip_vertex_on_plane)      \
+    X(test_clip_guard_band)           \
+    X(test_clip_random)               \
+    X(test_sort_order_and_stability)  \
+    X(test_sort_reverse_input)        \
+    X(test_palette_ramps)             \
+    X(test_palette_light_levels)      \
+    X(test_render_backface)           \
+    X(test_render_frustum_culling)    \
+    X(test_render_near_clipping)      \
+    X(test_render_painter_order)      \
+    X(test_render_wireframe)          \
+    X(test_render_lighting_and_colour) \
+    X(test_render_overlay)            \
+    X(test_render_capacity)           \
+    X(test_render_inside_shortcut)    \
+    X(test_batch_split_and_renumber)  \
+    X(test_batch_shares_vertices)     \
+    X(test_voxel_hidden_faces)        \
+    X(test_voxel_chunk_border)        \
+    X(test_voxel_worst_case)          \
+    X(test_voxel_edit_marks_chunks)   \
+    X(test_voxel_raycast)             \
+    X(test_scene_meshes_valid)        \
+    X(test_scene_sizes)               \
+    X(test_scene_frames)              \
+    X(test_scene_voxel_place_break)   \
     X(test_gpu_pack_vertex)           \
     X(test_gpu_pack_prim)             \
     X(test_gpu_init_checks)           \
@@ -66,7 +108,8 @@ void unit_srand(uint32_t seed);
     X(test_gpu_submit_capacity)       \
     X(test_gpu_wait_timeout)          \
     X(test_gpu_tag_wrap)              \
-    X(test_gpu_read_stats)
+    X(test_gpu_read_stats)            \
+    X(test_gpu_reset)
 
 #define UNIT_DECLARE(name) void name(void);
 UNIT_TESTS(UNIT_DECLARE)

@@ -17,6 +17,7 @@
 extern uint32_t fake_gpu_mem[FAKE_GPU_WORDS];
 extern uint32_t fake_fence_count;
 extern uint32_t fake_regs_at_fence[FAKE_REG_WORDS];  /* registers at the last fence */
+extern uint32_t fake_write_count;                    /* bus writes so far */
 
 #define BSP_GPU_BASE ((uintptr_t)fake_gpu_mem)
 
@@ -25,6 +26,24 @@ void fake_bsp_fence(void);
 static inline void bsp_fence(void)
 {
     fake_bsp_fence();
+}
+
+static inline void bsp_gpu_write(uint32_t offset, uint32_t value)
+{
+    fake_gpu_mem[offset / 4u] = value;
+    fake_write_count++;
+}
+
+static inline uint32_t bsp_gpu_read(uint32_t offset)
+{
+    return fake_gpu_mem[offset / 4u];
+}
+
+static inline void bsp_gpu_write_words(uint32_t offset, const uint32_t *src, uint32_t n)
+{
+    for (uint32_t i = 0; i < n; i++) {
+        bsp_gpu_write(offset + 4u * i, src[i]);
+    }
 }
 
 #endif /* BSP_H */

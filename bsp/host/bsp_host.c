@@ -1,0 +1,119 @@
+/*
+ * bsp_host.c — the host BSP (see bsp.h): golden-model GPU, scripted UART, PNG frames.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bsp.h"
+#include "bsp_host.h"
+#include "gpu_model.h"
+#include "png_write.h"
+
+static struct bsp_host_config host_cfg;
+static gpu_model *host_gpu;
+static uint8_t host_rgb[GPU_MODEL_SCREEN_W * GPU_MODEL_SCREEN_H * 3];
+static uint32_t host_doorbells;     /* doorbells serviced so far */
+static uint32_t host_frames_written;
+static char host_uart_in[4096];     /* typed, not yet read */
+static uint32_t host_uart_head;
+static uint32_t host_uart_tail;
+
+void bsp_host_configure(const struct bsp_host_config *cfg)
+{
+    host_cfg = *cfg;
+}
+
+void bsp_init(void)
+{
+    gpu_model_config mc;
+
+    if (host_gpu == NULL) {
+        host_gpu = malloc(sizeof *host_gpu);
+        if (host_gpu == NULL) {
+            fprintf(stderr, "host bsp: out of memory\n");
+            exit(1);
+        }
+    }
+    mc.span_w = host_cfg.span_w;
+    mc.lines = host_cfg.lines;
+    mc.zbuf = host_cfg.zbuf;
+    gpu_model_reset_config(host_gpu, &mc);
+    setvbuf(stdout, NULL, _IOLBF, 0);
+}
+
+void bsp_exit(int code)
+{
+    fflush(stdout);
+    exit(code);
+}
+
+int bsp_uart_getc_nonblock(void)
+{
+    if (host_uart_head == host_uart_tail) {
+        return -1;
+    }
+    return (unsigned char)host_uart_in[host_uart_head++ % sizeof host_uart_in];
+}
+
+void bsp_uart_putc(char c)
+{
+    putchar(c);
+}
+
+static void host_type(const char *text)
+{
+    for (; *text != '\0'; text++) {
+        if (host_uart_tail - host_uart_head < sizeof host_uart_in) {
+            host_uart_in[host_uart_tail++ % sizeof host_uart_in] = *text;
+        }
+    }
+}
+
+static void host_doorbell(uint32_t offset, uint32_t value)
+{
+    const uint32_t frames_before = gpu_model_read(host_gpu, GPU_REG_FRAME_COUNT);
+
+    host_doorbells++;
+    for (uint32_t i = 0; i < host_cfg.key_events; i++) {
+        if (host_cfg.keys[i].doorbell == host_doorbells) {
+            host_type(host_cfg.keys[i].text);
+        }
+    }
+    gpu_model_write(host_gpu, offset, value);
+    if (gpu_model_read(host_gpu, GPU_REG_FRAME_COUNT) != frames_before) {
+        if (host_cfg.frames_dir != NULL) {
+            char path[1024];
+
+            snprintf(path, sizeof path, "%s/%04u.png", host_cfg.frames_dir,
+                     (unsigned)host_frames_written);
+            gpu_model_scanout(host_gpu, host_rgb);
+            if (png_write_rgb(path, host_rgb, GPU_MODEL_SCREEN_W, GPU_MODEL_SCREEN_H) != 0) {
+                fprintf(stderr, "host bsp: cannot write %s\n", path);
+                exit(1);
+            }
+        }
+        host_frames_written++;
+    }
+}
+
+void bsp_gpu_write(uint32_t offset, uint32_t value)
+{
+    if (offset == GPU_REG_DOORBELL) {
+        host_doorbell(offset, value);
+    } else {
+        gpu_model_write(host_gpu, offset, value);
+    }
+}
+
+uint32_t bsp_gpu_read(uint32_t offset)
+{
+    return gpu_model_read(host_gpu, offset);
+}
+
+void bsp_gpu_write_words(uint32_t offset, const uint32_t *src, uint32_t n)
+{
+    for (uint32_t i = 0; i < n; i++) {
+        bsp_gpu_write(offset + 4u * i, src[i]);
+    }
+}

@@ -1,0 +1,30 @@
+/*
+ * bsp_host.h — configuration of the host BSP, set by host_main.c before app_run(). Not part of the
+ * bsp.h interface.
+ */
+#ifndef BSP_HOST_H
+#define BSP_HOST_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#define BSP_HOST_MAX_KEY_EVENTS 64
+
+struct bsp_host_keys {
+    uint32_t doorbell;  /* typed just before this doorbell (1 = the first) is serviced */
+    const char *text;
+};
+
+struct bsp_host_config {
+    const char *frames_dir;  /* PNG per swapped frame, NULL: none */
+    struct bsp_host_keys keys[BSP_HOST_MAX_KEY_EVENTS];
+    uint32_t key_events;
+    unsigned span_w;         /* model build options (CAPS), as gpu_model_config */
+    bool lines;
+    bool zbuf;
+};
+
+/* Set before app_run(); bsp_init() applies it. */
+void bsp_host_configure(const struct bsp_host_config *cfg);
+
+#endif /* BSP_HOST_H */

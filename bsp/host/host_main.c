@@ -1,0 +1,76 @@
+/*
+ * host_main.c — command line of the host build: the firmware's frame loop (app_run) on Linux,
+ * rendering through the golden model.
+ *
+ *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--span-w N]
+ *
+ *   --frames DIR      write each swapped frame as DIR/NNNN.png (as gpusim cosim does)
+ *   --keys-at N:TEXT  type TEXT just before doorbell N (1 = first) is serviced, byte for byte
+ *                     (as gpusim cosim; use the shell's $'...' for control bytes)
+ *   --no-lines        model a GPU built without line primitives (CAPS_LINES = 0)
+ *   --zbuf            model a GPU built with the depth buffer (CAPS_ZBUF = 1)
+ *   --span-w N        SPAN_W the model reports (1, 4, 8, 16; default 8)
+ *
+ * The scene and the number of frames are built in, like the target's (make SCENE=... FRAMES=...).
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "app.h"
+#include "bsp_host.h"
+
+static int host_usage(void)
+{
+    fprintf(stderr, "usage: fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] "
+                    "[--span-w N]\n");
+    return 2;
+}
+
+int main(int argc, char **argv)
+{
+    struct bsp_host_config cfg;
+
+    memset(&cfg, 0, sizeof cfg);
+    cfg.span_w = 8;
+    cfg.lines = true;
+    cfg.zbuf = false;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const int has_value = i + 1 < argc;
+
+        if (strcmp(a, "--frames") == 0 && has_value) {
+            cfg.frames_dir = argv[++i];
+            if (mkdir(cfg.frames_dir, 0755) != 0) {
+                struct stat st;
+
+                if (stat(cfg.frames_dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+                    fprintf(stderr, "fw-host: cannot create %s\n", cfg.frames_dir);
+                    return 2;
+                }
+            }
+        } else if (strcmp(a, "--keys-at") == 0 && has_value) {
+            const char *spec = argv[++i];
+            const char *colon = strchr(spec, ':');
+
+            if (colon == NULL || colon == spec || cfg.key_events >= BSP_HOST_MAX_KEY_EVENTS) {
+                fprintf(stderr, "fw-host: --keys-at wants N:TEXT, got '%s'\n", spec);
+                return 2;
+            }
+            cfg.keys[cfg.key_events].doorbell = (uint32_t)strtoul(spec, NULL, 10);
+            cfg.keys[cfg.key_events].text = colon + 1;
+            cfg.key_events++;
+        } else if (strcmp(a, "--no-lines") == 0) {
+            cfg.lines = false;
+        } else if (strcmp(a, "--zbuf") == 0) {
+            cfg.zbuf = true;
+        } else if (strcmp(a, "--span-w") == 0 && has_value) {
+            cfg.span_w = (unsigned)strtoul(argv[++i], NULL, 10);
+        } else {
+            return host_usage();
+        }
+    }
+    bsp_host_configure(&cfg);
+    return app_run();
+}

@@ -1,0 +1,88 @@
+/*
+ * sort.c — see sort.h.
+ */
+#include "sort.h"
+
+/* Stable insertion sort by the key half, for short lists. */
+static void sort_insertion(uint32_t *item, uint32_t n)
+{
+    for (uint32_t i = 1; i < n; i++) {
+        const uint32_t x = item[i];
+        const uint32_t k = x >> 16;
+        uint32_t j = i;
+
+        while (j > 0u && (item[j - 1u] >> 16) > k) {
+            item[j] = item[j - 1u];
+            j--;
+        }
+        item[j] = x;
+    }
+}
+
+/* A pass can be skipped when one digit value holds every item. */
+static int sort_pass_needed(const uint32_t hist[256], uint32_t n)
+{
+    for (uint32_t d = 0; d < 256u; d++) {
+        if (hist[d] != 0u) {
+            return hist[d] != n;
+        }
+    }
+    return 0;
+}
+
+/* One stable counting pass on the item byte at `shift` (16: key low byte, 24: key high byte).
+ * hist holds the digit counts on entry and is turned into start offsets. */
+static void sort_pass(const uint32_t *in, uint32_t *out, uint32_t n, uint32_t hist[256],
+                      uint32_t shift)
+{
+    uint32_t start = 0;
+
+    for (uint32_t d = 0; d < 256u; d++) {
+        const uint32_t c = hist[d];
+
+        hist[d] = start;
+        start += c;
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        const uint32_t x = in[i];
+
+        out[hist[(x >> shift) & 0xFFu]++] = x;
+    }
+}
+
+void sort_items(uint32_t *item, uint32_t *tmp, uint32_t n, struct sort_scratch *scratch)
+{
+    uint32_t(*hist)[256] = scratch->hist;
+    uint32_t *src = item;
+    uint32_t *dst = tmp;
+
+    if (n < SORT_SMALL_N) {
+        sort_insertion(item, n);
+        return;
+    }
+    for (uint32_t d = 0; d < 256u; d++) {
+        hist[0][d] = 0;
+        hist[1][d] = 0;
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        const uint32_t x = item[i];
+
+        hist[0][(x >> 16) & 0xFFu]++;
+        hist[1][x >> 24]++;
+    }
+    for (uint32_t pass = 0; pass < 2u; pass++) {
+        if (sort_pass_needed(hist[pass], n)) {
+            uint32_t *t;
+
+            sort_pass(src, dst, n, hist[pass], 16u + 8u * pass);
+            t = src;
+            src = dst;
+            dst = t;
+        }
+    }
+    if (src != item) {
+        for (uint32_t i = 0; i < n; i++) {
+            item[i] = src[i];
+        }
+    }
+}

@@ -1,0 +1,31 @@
+/*
+ * sort.h — the painter's sort: a stable O(n) radix sort of 16-bit depth keys. Pure code.
+ *
+ * Items are 32-bit words, key << 16 | payload (render.c: the draw key and the primitive's
+ * index), sorted ascending by the key with two least-significant-digit counting passes of 8 bits.
+ * Carrying the payload inside the item means each pass reads and writes one sequential word,
+ * with no indirection. Counting sort is stable, so items with equal keys keep their order —
+ * for the painter, submission order (object order, then face order): frames are reproducible and
+ * a coplanar face listed later stays on top. A pass whose digit is the same for every item is
+ * skipped; lists shorter than SORT_SMALL_N use a stable insertion sort instead (same result,
+ * none of the 2 x 256-bucket overhead).
+ *
+ * The key itself (render.c): 65535 minus the sum of the three vertices' sort depths (proj.h), so
+ * ascending keys run from far to near; a later primitive overwrites an earlier one on the GPU.
+ */
+#ifndef SORT_H
+#define SORT_H
+
+#include <stdint.h>
+
+/* Below this many items a stable insertion sort is cheaper than the two bucket passes. */
+#define SORT_SMALL_N 32u
+
+struct sort_scratch {
+    uint32_t hist[2][256];
+};
+
+/* Sort item[0 .. n-1] ascending by item >> 16, stable; tmp must hold n words. */
+void sort_items(uint32_t *item, uint32_t *tmp, uint32_t n, struct sort_scratch *scratch);
+
+#endif /* SORT_H */

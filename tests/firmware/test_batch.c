@@ -1,0 +1,150 @@
+/*
+ * test_batch.c — cutting a frame into GPU batches: capacities respected, every primitive sent
+ * once and in draw order, each batch's vertex words and renumbered indices decoding back to the
+ * frame's vertices, shared vertices written once per batch.
+ */
+#include <stdint.h>
+#include <string.h>
+
+#include "batch.h"
+#include "palette.h"
+#include "render.h"
+#include "test_util.h"
+#include "unit.h"
+
+static struct render_frame frame;
+static struct batch_words words;
+
+/* A grid of n x n quads facing the eye at z = 5 (two triangles each, shared vertices). */
+static void build_grid(struct mesh *m, vec3 *v, struct mesh_face *f, uvec3 *nrm, int n)
+{
+    mesh_init(m, v, (uint32_t)((n + 1) * (n + 1)), f, (uint32_t)(2 * n * n), nrm, 1);
+    mesh_add_normal(m, u3(0, 0, -1));
+    for (int j = 0; j <= n; j++) {
+        for (int i = 0; i <= n; i++) {
+            mesh_add_vertex(m, v3(-2.0 + 4.0 * i / n, -1.5 + 3.0 * j / n, 5.0 + 0.01 * i));
+        }
+    }
+    for (int j = 0; j < n; j++) {
+        for (int i = 0; i < n; i++) {
+            const uint16_t a = (uint16_t)(j * (n + 1) + i);
+            const uint16_t b = (uint16_t)((j + 1) * (n + 1) + i);
+            const uint16_t c = (uint16_t)((j + 1) * (n + 1) + i + 1);
+            const uint16_t d = (uint16_t)(j * (n + 1) + i + 1);
+
+            /* u = +y, v = +x: u x v = -z, towards the eye */
+            mesh_add_quad(m, a, b, c, d, 0, (uint8_t)(1 + (i + j) % 8));
+        }
+    }
+    mesh_finish(m);
+}
+
+static void render_grid(int n)
+{
+    static struct mesh m;
+    static vec3 v[41 * 41];
+    static struct mesh_face f[2 * 40 * 40];
+    static uvec3 nrm[1];
+    struct render_pass pass;
+    struct proj_setup ps;
+    struct cam_view view;
+    struct render_object o;
+    const mat3 id = mat3_identity();
+
+    build_grid(&m, v, f, nrm, n);
+    proj_setup_init(&ps, 200, to_real(160.0));
+    view.rot = mat3_identity();
+    view.eye = v3(0, 0, 0);
+    render_pass_init(&pass, &ps, &view, &id, v3(0, 0, 0), u3(0, 0, -1), 4);
+    o.mesh = &m;
+    o.rot = mat3_identity();
+    o.pos = v3(0, 0, 0);
+    o.material = 0;
+    render_frame_begin(&frame);
+    render_stats_clear(&frame.stats);
+    render_object(&frame, &pass, &o);
+    render_sort(&frame);
+    render_overlay_crosshair(&frame, &pass, 4, PAL_WHITE);
+}
+
+/* Run all batches with the given capacities and check everything about them. */
+static void check_batches(uint32_t vtx_cap, uint32_t tri_cap, uint32_t *batches_out)
+{
+    struct batch_cursor cur;
+    uint32_t next = 0;  /* draw position expected next */
+    uint32_t batches = 0;
+
+    batch_begin(&cur);
+    do {
+        batch_fill(&cur, &frame, vtx_cap, tri_cap, &words);
+        batches++;
+        CHECK(words.prim_count >= 1u);
+        CHECK(words.prim_count <= tri_cap);
+        CHECK(words.vtx_count <= vtx_cap);
+        for (uint32_t i = 0; i < words.prim_count; i++) {
+            const uint32_t *pw = &words.prim[i * GPU_PRIM_WORDS];
+            const struct render_prim *p = &frame.prim[render_draw_index(&frame, next)];
+            const uint32_t idx[3] = {(pw[GPU_PRIM_I0_WORD] >> GPU_PRIM_I0_LSB) & GPU_PRIM_I0_MASK,
+                                     (pw[GPU_PRIM_I1_WORD] >> GPU_PRIM_I1_LSB) & GPU_PRIM_I1_MASK,
+                                     (pw[GPU_PRIM_I2_WORD] >> GPU_PRIM_I2_LSB) & GPU_PRIM_I2_MASK};
+
+            CHECK_EQ((pw[GPU_PRIM_COLOR_WORD] >> GPU_PRIM_COLOR_LSB) & GPU_PRIM_COLOR_MASK, p->color);
+            CHECK_EQ((pw[GPU_PRIM_KIND_WORD] >> GPU_PRIM_KIND_LSB) & GPU_PRIM_KIND_MASK, p->kind);
+            for (int k = 0; k < 3; k++) {
+                const uint32_t *vw = &words.vtx[idx[k] * GPU_VTX_WORDS];
+                const struct proj_vertex *want = &frame.vert[p->v[k]];
+
+                CHECK(idx[k] < words.vtx_count);
+                CHECK_EQ((int16_t)((vw[GPU_VTX_X_WORD] >> GPU_VTX_X_LSB) & GPU_VTX_X_MASK), want->sx);
+                CHECK_EQ((int16_t)((vw[GPU_VTX_Y_WORD] >> GPU_VTX_Y_LSB) & GPU_VTX_Y_MASK), want->sy);
+                CHECK_EQ((vw[GPU_VTX_Z_WORD] >> GPU_VTX_Z_LSB) & GPU_VTX_Z_MASK, want->zbuf);
+            }
+            next++;
+        }
+        /* Each vertex is written once per batch: no two slots hold the same frame vertex... */
+        for (uint32_t a = 0; a < words.vtx_count && a < 64u; a++) {
+            for (uint32_t b = a + 1u; b < words.vtx_count; b++) {
+                CHECK(words.vtx[a * GPU_VTX_WORDS] != words.vtx[b * GPU_VTX_WORDS] ||
+                      words.vtx[a * GPU_VTX_WORDS + 1u] != words.vtx[b * GPU_VTX_WORDS + 1u]);
+            }
+        }
+    } while (!batch_done(&cur, &frame));
+    CHECK_EQ(next, frame.prim_count);  /* every primitive, once, in draw order */
+    *batches_out = batches;
+}
+
+void test_batch_split_and_renumber(void)
+{
+    uint32_t b;
+
+    render_grid(40);  /* 3200 triangles, 1681 vertices, plus the crosshair */
+    CHECK_EQ(frame.prim_count, 3202);
+    check_batches(GPU_VTX_CAP, GPU_TRI_CAP, &b);
+    CHECK(b >= 7u);  /* 3202 / 512 */
+    check_batches(30, 7, &b);
+    CHECK(b >= 3202u / 7u);
+    check_batches(3, 1, &b);  /* the smallest batch: one triangle */
+    CHECK_EQ(b, 3202);
+    check_batches(100000, 100000, &b);  /* more than the header's buffers: clamped to them */
+    CHECK(b >= 7u);
+}
+
+/* Shared vertices stay shared inside a batch: a 10 x 10 grid (121 vertices, 200 triangles) fits
+ * one batch with each vertex written once. */
+void test_batch_shares_vertices(void)
+{
+    struct batch_cursor cur;
+
+    render_grid(10);
+    batch_begin(&cur);
+    batch_fill(&cur, &frame, GPU_VTX_CAP, GPU_TRI_CAP, &words);
+    CHECK(batch_done(&cur, &frame));
+    CHECK_EQ(words.prim_count, 202);
+    CHECK_EQ(words.vtx_count, 121u + 4u);
+    /* An empty frame still makes one (empty) batch: the frame's clear and swap must happen. */
+    render_frame_begin(&frame);
+    batch_begin(&cur);
+    batch_fill(&cur, &frame, GPU_VTX_CAP, GPU_TRI_CAP, &words);
+    CHECK_EQ(words.prim_count, 0);
+    CHECK(batch_done(&cur, &frame));
+}

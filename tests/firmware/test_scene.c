@@ -1,0 +1,204 @@
+/*
+ * test_scene.c — the built-in scenes: meshes well formed (indices, normals, winding, ranges the
+ * fixed-point arguments assume), each scene renders without overflow or dropped primitives, the
+ * voxel scene's place and break, the sizes the issue asks for.
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "batch.h"
+#include "palette.h"
+#include "render.h"
+#include "scene.h"
+#include "test_util.h"
+#include "unit.h"
+
+static struct scene scene;
+static struct render_frame frame;
+
+static void render_scene(const struct scene *s, struct render_frame *f, bool wire)
+{
+    struct proj_setup ps;
+    struct cam_view view;
+    struct render_pass pass;
+
+    proj_setup_init(&ps, s->focal_px, s->far);
+    cam_get_view(&s->cam, 0, &view);
+    render_pass_init(&pass, &ps, &view, &s->cam.scene_rot, s->cam.cfg.focus, s->light, s->ambient);
+    pass.wireframe = wire;
+    pass.gpu_lines = true;
+    render_frame_begin(f);
+    render_stats_clear(&f->stats);
+    scene_draw(s, f, &pass);
+    render_sort(f);
+}
+
+static void check_mesh(const struct mesh *m, const struct render_object *o)
+{
+    CHECK(!m->full);
+    CHECK(rd(m->radius) + fabs(rd(o->pos.x)) + fabs(rd(o->pos.y)) + fabs(rd(o->pos.z)) < 1024.0);
+    for (uint32_t i = 0; i < m->vert_count; i++) {
+        CHECK(fabs(rd(m->verts[i].x)) < 8192.0 && fabs(rd(m->verts[i].y)) < 8192.0 &&
+              fabs(rd(m->verts[i].z)) < 8192.0);
+        CHECK(rd(vec3_length(vec3_sub(m->verts[i], m->center))) <= rd(m->radius));
+    }
+    for (uint32_t i = 0; i < m->normal_count; i++) {
+        const uvec3 n = m->normals[i];
+        const double len = sqrt(ud(n.x) * ud(n.x) + ud(n.y) * ud(n.y) + ud(n.z) * ud(n.z));
+
+        CHECK(fabs(len - 1.0) < 1e-3);
+    }
+    for (uint32_t i = 0; i < m->face_count; i++) {
+        const struct mesh_face *f = &m->faces[i];
+        uvec3 w;
+        uvec3 s;
+
+        CHECK(f->v[0] < m->vert_count && f->v[1] < m->vert_count && f->v[2] < m->vert_count);
+        CHECK(f->normal < m->normal_count);
+        CHECK((f->material > 0u && f->material < MAT_ANAGLYPH_LEFT) || o->material != 0u);
+        /* The winding's normal is the stored one: front faces keep a positive screen area. */
+        w = vec3_triangle_normal(m->verts[f->v[0]], m->verts[f->v[1]], m->verts[f->v[2]]);
+        s = m->normals[f->normal];
+        CHECK(ud(w.x) * ud(s.x) + ud(w.y) * ud(s.y) + ud(w.z) * ud(s.z) > 0.99);
+    }
+}
+
+void test_scene_meshes_valid(void)
+{
+    for (uint32_t k = 0; k < SCENE_COUNT; k++) {
+        const struct scene_desc *d = scene_at(k);
+
+        CHECK(scene_find(d->name) == d);
+        scene_start(&scene, d);
+        CHECK(scene.object_count > 0u);
+        CHECK(scene_triangle_count(&scene) > 0u);
+        for (uint32_t i = 0; i < scene.object_count; i++) {
+            check_mesh(scene.object[i].mesh, &scene.object[i]);
+        }
+        /* Camera inside the +-1024 box of the range arguments. */
+        CHECK(fabs(rd(scene.cam.eye.x)) < 1024.0 && fabs(rd(scene.cam.eye.y)) < 1024.0 &&
+              fabs(rd(scene.cam.eye.z)) < 1024.0);
+        CHECK(rd(scene.cam.cfg.box_max.x) + rd(scene.cam.cfg.dist_max) < 1024.0);
+    }
+    CHECK(scene_find("nonesuch") == 0);
+    CHECK(scene_at(SCENE_COUNT) == 0);
+    CHECK_EQ(fx_overflow_count(), 0);
+}
+
+/* The sizes of issue #4: a 16^3 voxel world, a 5000-triangle model. */
+void test_scene_sizes(void)
+{
+    scene_start(&scene, scene_find("knot"));
+    CHECK_EQ(scene_triangle_count(&scene), 5000);
+    scene_start(&scene, scene_find("voxel"));
+    CHECK(scene_triangle_count(&scene) > 1000u);
+    scene_start(&scene, scene_find("landscape"));
+    CHECK_EQ(scene_triangle_count(&scene), 2048);
+    scene_start(&scene, scene_find("cubes"));
+    CHECK_EQ(scene_triangle_count(&scene), 64u * 12u);
+    scene_start(&scene, scene_find("tetra"));
+    CHECK_EQ(scene_triangle_count(&scene), 4);
+}
+
+/* Every scene renders frames, with keys, in filled and wireframe mode: something is drawn, the
+ * frame's buffers suffice, and no fixed-point range argument fails. */
+void test_scene_frames(void)
+{
+    static const char *const keys[] = {"", "wwwwjjjii", "m", "ddd  kkk", "mllluo", "sssss", "r"};
+
+    for (uint32_t k = 0; k < SCENE_COUNT; k++) {
+        scene_start(&scene, scene_at(k));
+        for (uint32_t fr = 0; fr < 14u; fr++) {
+            struct input_decoder dec;
+            struct input_counts c;
+            struct scene_event ev;
+            const char *text = keys[fr % 7u];
+
+            input_decoder_init(&dec);
+            input_counts_clear(&c);
+            input_feed(&dec, &c, (const uint8_t *)text, (uint32_t)strlen(text));
+            scene_update(&scene, &c, &ev);
+            render_scene(&scene, &frame, fr >= 7u);
+            CHECK(frame.prim_count > 0u);
+            CHECK_EQ(frame.stats.dropped, 0);
+        }
+        if (fx_overflow_count() != 0u) {
+            unit_fail(__FILE__, __LINE__, "scene %s: %u fixed-point overflows", scene_at(k)->name,
+                      (unsigned)fx_overflow_count());
+        }
+    }
+}
+
+/* Voxel: B breaks the block under the crosshair, P puts one back in front of the hit face. */
+void test_scene_voxel_place_break(void)
+{
+    struct scene_voxel_state *v = &scene.u.voxel;
+    struct input_decoder dec;
+    struct input_counts c;
+    struct scene_event ev;
+    struct voxel_hit hit;
+    uint32_t faces_before;
+
+    scene_start(&scene, scene_find("voxel"));
+    /* Look straight down from above the middle of the world. */
+    scene.cam.mode = CAM_FLY;
+    scene.cam.eye = v3(8.5, 11.5, 8.5);  /* above the terrain (at most 9 high), within reach */
+    scene.cam.pitch = -CAM_PITCH_LIMIT;
+    CHECK(voxel_raycast(&v->world, scene.cam.eye, cam_forward(&scene.cam), to_real(10.0), &hit));
+    faces_before = scene_triangle_count(&scene);
+
+    input_decoder_init(&dec);
+    input_counts_clear(&c);
+    input_feed(&dec, &c, (const uint8_t *)"b", 1);
+    scene_update(&scene, &c, &ev);
+    CHECK_EQ(ev.kind, SCENE_EVENT_BROKE);
+    CHECK(ev.x == hit.x && ev.y == hit.y && ev.z == hit.z);
+    CHECK_EQ(voxel_get(&v->world, hit.x, hit.y, hit.z), BLOCK_AIR);
+    /* The chunk mesh was rebuilt: no face is left on top of the removed block. */
+    {
+        const struct voxel_chunk *ch = &v->chunk[voxel_chunk_index(hit.x / VOXEL_CHUNK,
+                                                                   hit.y / VOXEL_CHUNK,
+                                                                   hit.z / VOXEL_CHUNK)];
+        const int lx = hit.x % VOXEL_CHUNK;
+        const int ly = hit.y % VOXEL_CHUNK;
+        const int lz = hit.z % VOXEL_CHUNK;
+        int top_faces = 0;
+
+        for (uint32_t i = 0; i < ch->mesh.face_count; i++) {
+            int on_top = 1;
+
+            for (int k = 0; k < 3; k++) {
+                const vec3 p = ch->mesh.verts[ch->mesh.faces[i].v[k]];
+
+                on_top &= rd(p.y) == ly + 1 && rd(p.x) >= lx && rd(p.x) <= lx + 1 &&
+                          rd(p.z) >= lz && rd(p.z) <= lz + 1;
+            }
+            top_faces += on_top;
+        }
+        CHECK_EQ(top_faces, 0);
+        CHECK(scene_triangle_count(&scene) >= faces_before - 2u);
+    }
+
+    input_counts_clear(&c);
+    input_feed(&dec, &c, (const uint8_t *)"p", 1);
+    scene_update(&scene, &c, &ev);
+    CHECK_EQ(ev.kind, SCENE_EVENT_PLACED);
+    CHECK(ev.x == hit.x && ev.y == hit.y && ev.z == hit.z);  /* fills the hole again */
+    CHECK_EQ(voxel_get(&v->world, hit.x, hit.y, hit.z), BLOCK_STONE);
+
+    input_counts_clear(&c);
+    input_feed(&dec, &c, (const uint8_t *)"np", 2);
+    scene_update(&scene, &c, &ev);
+    CHECK_EQ(ev.kind, SCENE_EVENT_PLACED);
+    CHECK_EQ(ev.y, hit.y + 1);  /* on top of it, the next block type */
+    CHECK(voxel_get(&v->world, ev.x, ev.y, ev.z) != BLOCK_STONE);
+
+    /* Nothing in reach: looking straight up. */
+    scene.cam.pitch = CAM_PITCH_LIMIT;
+    input_counts_clear(&c);
+    input_feed(&dec, &c, (const uint8_t *)"b", 1);
+    scene_update(&scene, &c, &ev);
+    CHECK_EQ(ev.kind, SCENE_EVENT_NO_TARGET);
+    CHECK_EQ(fx_overflow_count(), 0);
+}

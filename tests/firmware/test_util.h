@@ -1,0 +1,72 @@
+/*
+ * test_util.h — conversions between the pipeline's backend types (real.h) and double, so one test
+ * source checks both the fixed-point and the float build against double-precision references.
+ */
+#ifndef TEST_UTIL_H
+#define TEST_UTIL_H
+
+#include <math.h>
+
+#include "real.h"
+#include "vec.h"
+
+#define TEST_PI 3.14159265358979323846
+
+static inline double rd(real_t r)
+{
+#if REAL_IS_FIXED
+    return (double)r / 65536.0;
+#else
+    return (double)r;
+#endif
+}
+
+static inline double ud(unit_t u)
+{
+#if REAL_IS_FIXED
+    return (double)u / 1073741824.0;
+#else
+    return (double)u;
+#endif
+}
+
+static inline real_t to_real(double d)
+{
+#if REAL_IS_FIXED
+    return (real_t)llround(d * 65536.0);
+#else
+    return (real_t)d;
+#endif
+}
+
+static inline unit_t to_unit(double d)
+{
+#if REAL_IS_FIXED
+    return (unit_t)llround(d * 1073741824.0);
+#else
+    return (unit_t)d;
+#endif
+}
+
+static inline vec3 v3(double x, double y, double z)
+{
+    return vec3_make(to_real(x), to_real(y), to_real(z));
+}
+
+static inline uvec3 u3(double x, double y, double z)
+{
+    uvec3 u = {to_unit(x), to_unit(y), to_unit(z)};
+
+    return u;
+}
+
+/* One unit of the last place of real_t near 1 (fixed: 2^-16; float: ~6e-8). */
+#if REAL_IS_FIXED
+#define TEST_REAL_ULP (1.0 / 65536.0)
+#define TEST_UNIT_ULP (1.0 / 1073741824.0)
+#else
+#define TEST_REAL_ULP 1.2e-7
+#define TEST_UNIT_ULP 1.2e-7
+#endif
+
+#endif /* TEST_UTIL_H */
