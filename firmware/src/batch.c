@@ -41,6 +41,11 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
     uint32_t np = 0;
     const uint32_t total = f->prim_count;
     const uint32_t sorted = f->sorted_count;
+    const uint32_t *sort_item = f->sort_item;
+    const struct render_prim *prim = f->prim;
+    struct proj_vertex *vert = f->vert;
+    uint32_t *vtx = out->vtx;
+    uint32_t *prim_words = out->prim;
 
     vtx_cap = (vtx_cap > GPU_VTX_CAP) ? GPU_VTX_CAP : vtx_cap;
     tri_cap = (tri_cap > GPU_TRI_CAP) ? GPU_TRI_CAP : tri_cap;
@@ -59,14 +64,16 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
     f->batch_stamp = stamp;
 
     while (i < total && np < tri_cap && nv + 3u <= vtx_cap) {
-        const uint32_t index = (i < sorted) ? (f->sort_item[i] & 0xFFFFu) : i;  /* draw order */
-        const struct render_prim *p = &f->prim[index];
-        const uint32_t s0 = batch_vertex(&f->vert[p->v[0]], stamp, out->vtx, &nv);
-        const uint32_t s1 = batch_vertex(&f->vert[p->v[1]], stamp, out->vtx, &nv);
-        const uint32_t s2 = batch_vertex(&f->vert[p->v[2]], stamp, out->vtx, &nv);
+        const uint32_t index = (i < sorted) ? (sort_item[i] & 0xFFFFu) : i;  /* draw order */
+        /* The primitive in locals first: the vertex stamps written below are uint16_t like
+         * p->v[], so the compiler would otherwise reload the primitive after every store. */
+        const struct render_prim p = prim[index];
+        const uint32_t s0 = batch_vertex(&vert[p.v[0]], stamp, vtx, &nv);
+        const uint32_t s1 = batch_vertex(&vert[p.v[1]], stamp, vtx, &nv);
+        const uint32_t s2 = batch_vertex(&vert[p.v[2]], stamp, vtx, &nv);
 
-        gpu_pack_prim(&out->prim[np * GPU_PRIM_WORDS], (uint16_t)s0, (uint16_t)s1, (uint16_t)s2,
-                      p->color, p->kind);
+        gpu_pack_prim(&prim_words[np * GPU_PRIM_WORDS], (uint16_t)s0, (uint16_t)s1, (uint16_t)s2,
+                      p.color, p.kind);
         np++;
         i++;
     }

@@ -374,7 +374,7 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
             np = f->prim_count;
             continue;
         }
-        if (proj_signed_area(a, b, c) <= 0) {
+        if (check ? (proj_signed_area(a, b, c) <= 0) : (proj_signed_area_inside(a, b, c) <= 0)) {
             n_back++;
             continue;
         }

@@ -31,22 +31,21 @@ static int sort_pass_needed(const uint32_t hist[256], uint32_t n)
 }
 
 /* One stable counting pass on the item byte at `shift` (16: key low byte, 24: key high byte).
- * hist holds the digit counts on entry and is turned into start offsets. */
-static void sort_pass(const uint32_t *in, uint32_t *out, uint32_t n, uint32_t hist[256],
-                      uint32_t shift)
+ * hist holds the digit counts; next receives each digit's write position (a pointer, so placing an
+ * item is one load, two stores and an increment). */
+static void sort_pass(const uint32_t *in, uint32_t *out, uint32_t n, const uint32_t hist[256],
+                      uint32_t *next[256], uint32_t shift)
 {
-    uint32_t start = 0;
+    uint32_t *start = out;
 
     for (uint32_t d = 0; d < 256u; d++) {
-        const uint32_t c = hist[d];
-
-        hist[d] = start;
-        start += c;
+        next[d] = start;
+        start += hist[d];
     }
     for (uint32_t i = 0; i < n; i++) {
         const uint32_t x = in[i];
 
-        out[hist[(x >> shift) & 0xFFu]++] = x;
+        *next[(x >> shift) & 0xFFu]++ = x;
     }
 }
 
@@ -74,7 +73,7 @@ void sort_items(uint32_t *item, uint32_t *tmp, uint32_t n, struct sort_scratch *
         if (sort_pass_needed(hist[pass], n)) {
             uint32_t *t;
 
-            sort_pass(src, dst, n, hist[pass], 16u + 8u * pass);
+            sort_pass(src, dst, n, hist[pass], scratch->next, 16u + 8u * pass);
             t = src;
             src = dst;
             dst = t;

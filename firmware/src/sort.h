@@ -23,6 +23,7 @@
 
 struct sort_scratch {
     uint32_t hist[2][256];
+    uint32_t *next[256];  /* during a pass: where the next item of each digit goes */
 };
 
 /* Sort item[0 .. n-1] ascending by item >> 16, stable; tmp must hold n words. */
