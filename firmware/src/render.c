@@ -22,6 +22,37 @@ void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,
     pass->gpu_lines = true;
 }
 
+void render_level_cache_init(struct render_level_cache *c, uint8_t *storage, uint32_t cap)
+{
+    c->level = storage;
+    c->cap = cap;
+    c->valid = false;
+    c->light.x = 0;
+    c->light.y = 0;
+    c->light.z = 0;
+    c->ambient = 0;
+}
+
+/* The cache's entries for this object's model-space light, or 0 when it has no usable cache.
+ * Exact: an entry is what palette_light_level returns for the same light and normal. */
+static uint8_t *render_level_cache_for(struct render_level_cache *c, const struct mesh *mesh,
+                                       uvec3 light_model, uint32_t ambient)
+{
+    if (c == 0 || c->cap < mesh->normal_count) {
+        return 0;
+    }
+    if (!c->valid || c->light.x != light_model.x || c->light.y != light_model.y ||
+        c->light.z != light_model.z || c->ambient != ambient) {
+        for (uint32_t i = 0; i < mesh->normal_count; i++) {
+            c->level[i] = (uint8_t)RENDER_LEVEL_UNKNOWN;
+        }
+        c->light = light_model;
+        c->ambient = ambient;
+        c->valid = true;
+    }
+    return c->level;
+}
+
 void render_stats_clear(struct render_stats *s)
 {
     s->faces_in = 0;
@@ -324,24 +355,27 @@ struct render_faces_job {
     const xf_affine *mv;
     const struct mesh *mesh;
     const struct palette_light *light;
+    uint8_t *levels;             /* 0, or the object's cached level per normal (filled lazily) */
     uint32_t base;               /* index of the object's first vertex in the frame */
     uint32_t material_override;
 };
 
 /*
- * The face loop. `check` (a constant at both calls, folded away) is false for an object whose
+ * The face loop. `check` (a constant at every call, folded away) is false for an object whose
  * bounding sphere is inside the frustum: no face can be culled by outcodes or need clipping, so
- * the loop skips those tests. Hot state stays in locals and is written back once; the fast path
+ * the loop skips those tests. `cached` (likewise a constant) is true when job->levels holds the
+ * object's level cache: a face's light level is then looked up, computed only on a miss. Hot state stays in locals and is written back once; the fast path
  * emits one triangle per front face, everything else goes through render_face_general.
  */
 static inline __attribute__((always_inline)) void render_faces(struct render_frame *f,
                                                                const struct render_faces_job *job,
-                                                               bool check)
+                                                               bool check, bool cached)
 {
     const struct mesh *mesh = job->mesh;
     const uint32_t nf = mesh->face_count;
     const struct mesh_face *faces = mesh->faces;
     const uvec3 *normals = mesh->normals;
+    uint8_t *const levels = job->levels;
     const struct proj_vertex *vert = &f->vert[job->base];
     const uint32_t base = job->base;
     const uint32_t material_override = job->material_override;
@@ -360,6 +394,7 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
         const struct proj_vertex *b = &vert[face->v[1]];
         const struct proj_vertex *c = &vert[face->v[2]];
         uint32_t mat;
+        uint32_t level;
         struct render_prim *p;
 
         if (check && (a->code & b->code & c->code & PROJ_CULL_BITS) != 0u) {
@@ -387,7 +422,16 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
         p->v[1] = (uint16_t)(base + face->v[1]);
         p->v[2] = (uint16_t)(base + face->v[2]);
         mat = (material_override != 0u) ? material_override : face->material;
-        p->color = PAL_INDEX(mat, palette_light_level(job->light, normals[face->normal]));
+        if (cached) {
+            level = levels[face->normal];
+            if (level == RENDER_LEVEL_UNKNOWN) {
+                level = palette_light_level(job->light, normals[face->normal]);
+                levels[face->normal] = (uint8_t)level;
+            }
+        } else {
+            level = palette_light_level(job->light, normals[face->normal]);
+        }
+        p->color = PAL_INDEX(mat, level);
         p->kind = (uint8_t)GPU_PRIM_KIND_TRI;
         sort_item[np] = render_sort_item(render_face_key(face, a, b, c), np);
         np++;
@@ -407,6 +451,7 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
     struct palette_light light;
     struct render_faces_job job;
     enum render_sphere_class where;
+    uvec3 light_model;
     xf_affine mv;
 
     f->stats.faces_in += nf;
@@ -431,17 +476,27 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
     f->vert_count += nv;
 
     /* The light in model space: (O R)^T l = R^T (O^T l). */
-    palette_light_init(&light, mat3_apply_transposed_unit(&obj->rot, pass->light_scene),
-                       pass->ambient);
+    light_model = mat3_apply_transposed_unit(&obj->rot, pass->light_scene);
+    palette_light_init(&light, light_model, pass->ambient);
+    job.levels = render_level_cache_for(obj->levels, mesh, light_model, pass->ambient);
     job.pass = pass;
     job.mv = &mv;
     job.mesh = mesh;
     job.light = &light;
     job.material_override = render_material_override(pass, obj);
+    /* Four specialisations of the face loop, so that neither test costs a face anything. */
     if (where == RENDER_SPHERE_INSIDE) {
-        render_faces(f, &job, false);
+        if (job.levels != 0) {
+            render_faces(f, &job, false, true);
+        } else {
+            render_faces(f, &job, false, false);
+        }
     } else {
-        render_faces(f, &job, true);
+        if (job.levels != 0) {
+            render_faces(f, &job, true, true);
+        } else {
+            render_faces(f, &job, true, false);
+        }
     }
 }
 

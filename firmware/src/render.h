@@ -84,12 +84,34 @@ struct render_pass {
     bool gpu_lines;       /* the GPU draws line primitives (CAPS_LINES) */
 };
 
+/*
+ * Light levels of a static mesh's normals, kept across frames (owned by the scene, next to the
+ * mesh). A face's level depends only on its normal, the light in model space and the ambient level
+ * (palette.h), so while those are unchanged the level computed in an earlier frame is exactly the
+ * one this frame would compute. Filled lazily (only front faces ever need a level); emptied when
+ * the model-space light or the ambient level changes. The mesh's normals must not change while a
+ * cache is attached (the landscape's never do; meshes rebuilt at run time do not use one).
+ */
+#define RENDER_LEVEL_UNKNOWN 0xFFu  /* an entry not computed yet (levels are 0 .. 15) */
+
+struct render_level_cache {
+    uint8_t *level;       /* cap entries, one per normal: a level, or RENDER_LEVEL_UNKNOWN */
+    uint32_t cap;         /* used only if >= the mesh's normal_count */
+    bool valid;           /* light and ambient below are what the entries were computed for */
+    uvec3 light;          /* unit vector towards the light, model space */
+    uint32_t ambient;
+};
+
+/* Attach storage (cap entries) to an empty cache. */
+void render_level_cache_init(struct render_level_cache *c, uint8_t *storage, uint32_t cap);
+
 /* One instance of a mesh in the scene: p_scene = rot p_model + pos. */
 struct render_object {
     const struct mesh *mesh;
     mat3 rot;
     vec3 pos;
     uint8_t material;     /* 0: each face's own material; else this one for every face */
+    struct render_level_cache *levels;  /* 0, or the cache of a static mesh's light levels */
 };
 
 /* Compose a pass. light: unit vector towards the light in world space. */

@@ -74,6 +74,7 @@ void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, ve
     o->rot = *rot;
     o->pos = pos;
     o->material = material;
+    o->levels = 0;
 }
 
 void scene_start(struct scene *s, const struct scene_desc *desc)

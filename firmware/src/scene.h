@@ -54,6 +54,9 @@ struct scene_landscape_tile {
     vec3 verts[LANDSCAPE_TILE_VERTS];
     struct mesh_face faces[LANDSCAPE_TILE_FACES];
     uvec3 normals[LANDSCAPE_TILE_FACES];
+    /* The terrain never changes: its light levels carry over from frame to frame (render.h). */
+    uint8_t level[LANDSCAPE_TILE_FACES];
+    struct render_level_cache levels;
 };
 
 struct scene_landscape_state {

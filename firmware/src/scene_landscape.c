@@ -96,6 +96,8 @@ static void land_init(struct scene *s)
 
             land_build_tile(t, ti, tj);
             scene_add_object(s, &t->mesh, &id, vec3_make(0, 0, 0), 0);
+            render_level_cache_init(&t->levels, t->level, LANDSCAPE_TILE_FACES);
+            s->object[s->object_count - 1u].levels = &t->levels;
         }
     }
     cfg.box_min = vec3_make(REAL_C(-96), REAL_C(-8), REAL_C(-96));

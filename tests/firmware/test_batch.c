@@ -60,6 +60,7 @@ static void render_grid(int n)
     o.rot = mat3_identity();
     o.pos = v3(0, 0, 0);
     o.material = 0;
+    o.levels = 0;
     render_frame_begin(&frame);
     render_stats_clear(&frame.stats);
     render_object(&frame, &pass, &o);

@@ -57,6 +57,7 @@ static void draw(const struct render_pass *pass, const struct mesh *m, vec3 pos,
     o.rot = mat3_identity();
     o.pos = pos;
     o.material = mat;
+    o.levels = 0;
     render_object(&frame, pass, &o);
 }
 
@@ -109,6 +110,55 @@ void test_render_backface(void)
     draw(&pass, &t.m, v3(0, 0, 0), 0);
     CHECK_EQ(frame.prim_count, 0);
     CHECK_EQ(frame.stats.faces_back, 1);
+}
+
+/* The level cache of a static mesh: the same colours as without it, in the first frame (filled
+ * lazily) and in the next (looked up); a new light empties it. */
+void test_render_level_cache(void)
+{
+    static struct tri_mesh t;
+    static uint8_t level[32];
+    struct render_level_cache cache;
+    struct render_prim plain[8];
+    struct render_pass pass;
+    struct render_object o;
+    uint32_t n;
+
+    setup_pass(&pass);
+    tri_mesh_init(&t);
+    tri_mesh_add(&t, v3(0, 0, 3), v3(0, 1, 3), v3(1, 0, 3), MAT_RED);        /* faces the light */
+    tri_mesh_add(&t, v3(-2, 0, 3), v3(-2, 1, 4), v3(-1, 0, 3), MAT_GRASS);   /* tilted */
+    tri_mesh_add(&t, v3(0, -2, 4), v3(0, -1, 3), v3(1, -2, 4), MAT_STONE);   /* tilted */
+    mesh_finish(&t.m);
+    begin();
+    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    n = frame.prim_count;
+    CHECK_EQ(n, 3);
+    memcpy(plain, frame.prim, n * sizeof plain[0]);
+
+    render_level_cache_init(&cache, level, 32);
+    o.mesh = &t.m;
+    o.rot = mat3_identity();
+    o.pos = v3(0, 0, 0);
+    o.material = 0;
+    o.levels = &cache;
+    for (int rep = 0; rep < 2; rep++) {
+        begin();
+        render_object(&frame, &pass, &o);
+        CHECK_EQ(frame.prim_count, n);
+        CHECK(memcmp(frame.prim, plain, n * sizeof plain[0]) == 0);
+        CHECK(cache.valid);
+        CHECK(level[t.m.faces[0].normal] <= 15u);
+    }
+    /* Another light: the cache is emptied and refilled, and agrees with the uncached path. */
+    pass.light_scene = u3(0.6, 0.0, -0.8);
+    begin();
+    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    memcpy(plain, frame.prim, n * sizeof plain[0]);
+    begin();
+    render_object(&frame, &pass, &o);
+    CHECK(memcmp(frame.prim, plain, n * sizeof plain[0]) == 0);
+    CHECK(cache.light.x == pass.light_scene.x && cache.light.z == pass.light_scene.z);
 }
 
 /* Per triangle: three vertices beyond one screen edge (or all beyond far, or all behind) are

@@ -81,6 +81,7 @@ void unit_srand(uint32_t seed);
     X(test_palette_ramps)             \
     X(test_palette_light_levels)      \
     X(test_render_backface)           \
+    X(test_render_level_cache)        \
     X(test_render_frustum_culling)    \
     X(test_render_near_clipping)      \
     X(test_render_painter_order)      \
