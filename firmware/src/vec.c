@@ -250,8 +250,38 @@ mat3 mat3_rotation(int axis, fx_angle a)
     return r;
 }
 
+#if REAL_IS_FIXED
+/* unit_mul(unit_from_q16(a), unit_from_q16(b)) for table sines and cosines (|a|, |b| <= 2^16),
+ * without its saturation checks: the product (a 2^14)(b 2^14) / 2^30, rounded, is
+ * floor((a b + 2) / 4) — the same value — and |a b| <= 2^32 makes it at most 2^30: in range. */
+static inline unit_t vec_sincos_mul(q16_16 a, q16_16 b)
+{
+    return (unit_t)(((int64_t)a * b + 2) >> 2);
+}
+#endif
+
 mat3 mat3_from_yaw_pitch(fx_angle yaw, fx_angle pitch)
 {
+#if REAL_IS_FIXED
+    /* Table values are within [-1, 1] (q16_16 |v| <= 2^16): * 2^14 is an exact q2_30, no
+     * saturation check needed; the products as unit_mul would give them (vec_sincos_mul). */
+    const q16_16 sy16 = fx_sin(yaw);
+    const q16_16 cy16 = fx_cos(yaw);
+    const q16_16 sp16 = fx_sin(pitch);
+    const q16_16 cp16 = fx_cos(pitch);
+    mat3 r;
+
+    r.m[0][0] = cy16 * 16384;
+    r.m[0][1] = 0;
+    r.m[0][2] = sy16 * 16384;
+    r.m[1][0] = vec_sincos_mul(sp16, sy16);
+    r.m[1][1] = cp16 * 16384;
+    r.m[1][2] = -vec_sincos_mul(sp16, cy16);
+    r.m[2][0] = -vec_sincos_mul(cp16, sy16);
+    r.m[2][1] = sp16 * 16384;
+    r.m[2][2] = vec_sincos_mul(cp16, cy16);
+    return r;
+#else
     const unit_t sy = unit_from_q16(fx_sin(yaw));
     const unit_t cy = unit_from_q16(fx_cos(yaw));
     const unit_t sp = unit_from_q16(fx_sin(pitch));
@@ -272,6 +302,7 @@ mat3 mat3_from_yaw_pitch(fx_angle yaw, fx_angle pitch)
     r.m[2][1] = sp;
     r.m[2][2] = unit_mul(cp, cy);
     return r;
+#endif
 }
 
 /* v * (3 - v.v) / 2: one Newton step towards unit length. */

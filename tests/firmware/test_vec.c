@@ -264,3 +264,39 @@ void test_vec_million_rotations(void)
     }
     CHECK_EQ(fx_overflow_count(), 0);
 }
+
+/* mat3_from_yaw_pitch equals Rx(pitch) Ry(yaw) written with the generic unit arithmetic
+ * (unit_from_q16, unit_mul, unit_sub), entry for entry, over a grid of angles that includes every
+ * table point and the quarter turns. */
+void test_vec_yaw_pitch_exact(void)
+{
+    uint32_t bad = 0;
+
+    for (uint32_t y = 0; y < 65536u; y += 61u) {
+        for (uint32_t p = 0; p < 65536u; p += 509u) {
+            const fx_angle ya = (fx_angle)y;
+            const fx_angle pa = (fx_angle)(p + (y & 255u));
+            const unit_t sy = unit_from_q16(fx_sin(ya));
+            const unit_t cy = unit_from_q16(fx_cos(ya));
+            const unit_t sp = unit_from_q16(fx_sin(pa));
+            const unit_t cp = unit_from_q16(fx_cos(pa));
+            const mat3 m = mat3_from_yaw_pitch(ya, pa);
+
+            bad += m.m[0][0] != cy;
+            bad += m.m[0][1] != 0;
+            bad += m.m[0][2] != sy;
+            bad += m.m[1][0] != unit_mul(sp, sy);
+            bad += m.m[1][1] != cp;
+            bad += m.m[1][2] != unit_sub(0, unit_mul(sp, cy));
+            bad += m.m[2][0] != unit_sub(0, unit_mul(cp, sy));
+            bad += m.m[2][1] != sp;
+            bad += m.m[2][2] != unit_mul(cp, cy);
+        }
+    }
+    for (uint32_t q = 0; q < 4u; q++) {
+        const mat3 m = mat3_from_yaw_pitch((fx_angle)(q * 16384u), (fx_angle)(q * 16384u));
+
+        bad += m.m[1][1] != unit_from_q16(fx_cos((fx_angle)(q * 16384u)));
+    }
+    CHECK_EQ(bad, 0);
+}

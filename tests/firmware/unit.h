@@ -52,6 +52,7 @@ void unit_srand(uint32_t seed);
     X(test_fx_isqrt64)                \
     X(test_q30_ops)                   \
     X(test_vec_rotation_conventions)  \
+    X(test_vec_yaw_pitch_exact)       \
     X(test_vec_mat3_vs_double)        \
     X(test_vec_xf_apply_error)        \
     X(test_vec_triangle_normal)       \
