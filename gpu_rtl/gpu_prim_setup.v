@@ -80,7 +80,7 @@ module gpu_prim_setup #(
     output reg                      ev_err_kind,
     output reg                      ev_err_index
 );
-`include "gpu_regs.vh"
+`include "gpu_rtl/gpu_regs.vh"  // relative to the repository root, where every tool runs
 
     // ------------------------------------------------------------------ fetch
     localparam [2:0] F_IDLE = 3'd0, F_ISSUE = 3'd1, F_CHECK = 3'd2, F_V1 = 3'd3, F_V2 = 3'd4,

@@ -60,7 +60,7 @@ module gpu_regs #(
     input  wire [31:0]       perf_spans_written,
     input  wire [31:0]       perf_spans_visited
 );
-`include "gpu_regs.vh"
+`include "gpu_rtl/gpu_regs.vh"  // relative to the repository root, where every tool runs
 
     wire [16:0] byte_addr = {bus_addr, 2'b00};
     wire is_write = bus_valid && bus_write;

@@ -39,7 +39,7 @@ module gpu_top #(
     output wire [3:0]  vga_g,
     output wire [3:0]  vga_b
 );
-`include "gpu_regs.vh"
+`include "gpu_rtl/gpu_regs.vh"  // relative to the repository root, where every tool runs
 
     localparam [31:0] CAPS = (32'(SPAN_W) << GPU_CAPS_SPAN_W_LSB)
                            | (32'(ENABLE_LINES != 0) << GPU_CAPS_LINES_LSB)
