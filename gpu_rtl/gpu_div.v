@@ -1,7 +1,7 @@
 // gpu_div: sequential signed division for the depth-plane gradients, saturated to 32 bits.
 //
 // Contract: start (one-cycle pulse, while not busy) takes dividend and divisor (divisor != 0);
-// 33 clocks later done pulses with quotient = sat32(trunc(dividend / divisor)), trunc rounding toward
+// done pulses 32 clocks after the start clock, with quotient = sat32(trunc(dividend / divisor)), trunc rounding toward
 // zero and sat32 clamping to -2^31 .. 2^31-1, exactly as docs/gpu-contract.md ("Depth") defines ZA
 // and ZB. Radix-2 restoring division of the magnitudes, one quotient bit per clock; a quotient whose
 // magnitude reaches 2^31 is recognised up front (|n| >= 2^31 |d|) and saturated.

@@ -22,7 +22,7 @@ module gpu_prim_setup #(
     parameter integer TRI_CAP = 512,
     parameter integer SPAN_W = 8,
     parameter integer ENABLE_LINES = 1,
-    parameter integer ENABLE_ZBUF = 0,   // depth-plane set-up (adds a 33-clock division per triangle
+    parameter integer ENABLE_ZBUF = 0,   // depth-plane set-up (adds a 32-clock division per triangle
                                          // while CTRL.ZTEST is on)
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),

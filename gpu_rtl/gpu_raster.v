@@ -247,7 +247,8 @@ module gpu_raster #(
                         state_q <= S_DRAW;
                     end
                 end
-                S_DRAW: state_q <= S_DRAIN;  // the setup left idle at least one clock ago
+                S_DRAW: state_q <= S_DRAIN;  // from here the walker takes descriptors; S_DRAIN waits
+                                             // for setup and walker to be idle (the setup started in S_CHECK)
                 S_DRAIN: if (pipeline_empty) begin
                     state_q <= ctrl_swap ? S_VBLANK : S_FINISH;
                 end

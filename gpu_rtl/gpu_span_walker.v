@@ -92,17 +92,22 @@ module gpu_span_walker #(
         covered = (e > 0) || (tl && (e == 0));
     endfunction
     // v * n for an elaboration-time constant n >= 0, as shifts and adds: a generic multiplier here
-    // would cost an FPGA a DSP (or, on an iCE40, hundreds of LUTs) per lane for nothing.
-    function automatic signed [EDGE_W-1:0] times(input signed [EDGE_W-1:0] v, input integer n);
+    // would cost an FPGA a DSP (or, on an iCE40, hundreds of LUTs) per lane for nothing. Computed at the
+    // depth accumulator's width (the widest operand); edge callers keep the low EDGE_W bits, which
+    // hold the exact value by the range argument.
+    function automatic signed [Z_W-1:0] times(input signed [Z_W-1:0] v, input integer n);
         integer b;
         begin
-            times = {EDGE_W{1'b0}};
+            times = {Z_W{1'b0}};
             for (b = 0; b < 8; b = b + 1) begin
                 if (((n >> b) & 1) != 0) begin
                     times = times + (v <<< b);
                 end
             end
         end
+    endfunction
+    function automatic signed [EDGE_W-1:0] edge_times(input signed [EDGE_W-1:0] v, input integer n);
+        edge_times = EDGE_W'(times(Z_W'(v), n));
     endfunction
 
     reg [SPAN_W-1:0] lane_cov;              // pixels of this span inside the triangle
@@ -112,14 +117,14 @@ module gpu_span_walker #(
         lane_cov = {SPAN_W{1'b1}};
         for (k = 0; k < 3; k = k + 1) begin
             for (l = 0; l < SPAN_W; l = l + 1) begin
-                if (!covered(e_q[k] + times(sx_q[k], l), tl_q[k])) begin
+                if (!covered(e_q[k] + edge_times(sx_q[k], l), tl_q[k])) begin
                     lane_cov[l] = 1'b0;
                 end
             end
             pass_left[k]  = covered(e_q[k] - sx_q[k], tl_q[k]);
             pass_first[k] = covered(e_q[k], tl_q[k]);
-            pass_last[k]  = covered(e_q[k] + times(sx_q[k], SPAN_W - 1), tl_q[k]);
-            pass_next[k]  = covered(e_q[k] + times(sx_q[k], SPAN_W), tl_q[k]);
+            pass_last[k]  = covered(e_q[k] + edge_times(sx_q[k], SPAN_W - 1), tl_q[k]);
+            pass_next[k]  = covered(e_q[k] + edge_times(sx_q[k], SPAN_W), tl_q[k]);
         end
     end
 
@@ -167,17 +172,6 @@ module gpu_span_walker #(
     reg signed [Z_W-1:0] z_q, zfirst_q;
     reg signed [ZSTEP_W-1:0] zdx_q, zdy_q;
     reg ztest_q;
-    function automatic signed [Z_W-1:0] ztimes(input signed [ZSTEP_W-1:0] v, input integer n);
-        integer b;
-        begin
-            ztimes = {Z_W{1'b0}};
-            for (b = 0; b < 8; b = b + 1) begin
-                if (((n >> b) & 1) != 0) begin
-                    ztimes = ztimes + (Z_W'(v) <<< b);
-                end
-            end
-        end
-    endfunction
     function automatic [15:0] zclamp(input signed [Z_W-1:0] zfix);
         reg signed [Z_W-1:0] whole;
         begin
@@ -188,7 +182,7 @@ module gpu_span_walker #(
     reg [SPAN_W*16-1:0] lane_z;
     always @(*) begin
         for (l = 0; l < SPAN_W; l = l + 1) begin
-            lane_z[l*16 +: 16] = zclamp(z_q + ztimes(zdx_q, l));
+            lane_z[l*16 +: 16] = zclamp(z_q + times(Z_W'(zdx_q), l));
         end
     end
 
@@ -289,12 +283,12 @@ module gpu_span_walker #(
                         end
                     end else if (go_left) begin
                         col_q <= col_q - 1'b1;
-                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] - times(sx_q[k], SPAN_W);
-                        z_q <= z_q - ztimes(zdx_q, SPAN_W);
+                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] - edge_times(sx_q[k], SPAN_W);
+                        z_q <= z_q - times(Z_W'(zdx_q), SPAN_W);
                     end else begin  // seeking right past a rejected span, or the scan's next span
                         col_q <= col_q + 1'b1;
-                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] + times(sx_q[k], SPAN_W);
-                        z_q <= z_q + ztimes(zdx_q, SPAN_W);
+                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] + edge_times(sx_q[k], SPAN_W);
+                        z_q <= z_q + times(Z_W'(zdx_q), SPAN_W);
                         if (draw_span) begin
                             state_q <= S_SCAN;
                         end
@@ -374,7 +368,7 @@ module gpu_span_walker #(
     always @(posedge clk) begin
         if (!rst && ztest_q && (seek || scan) && draw_span) begin
             for (k = 0; k < SPAN_W; k = k + 1) begin
-                assert ((z_q + ztimes(zdx_q, k)) < (52'sd1 <<< 50) && (z_q + ztimes(zdx_q, k)) > -(52'sd1 <<< 50))
+                assert ((z_q + times(Z_W'(zdx_q), k)) < (52'sd1 <<< 50) && (z_q + times(Z_W'(zdx_q), k)) > -(52'sd1 <<< 50))
                     else $error("gpu_span_walker: depth accumulator exceeds 2^50");
             end
         end

@@ -22,7 +22,7 @@
 
 /* The watchdog: reads of DONE_SEQ before a batch counts as lost. One poll is 4 instructions
  * (lw, addi, bne, beq); under QEMU -icount 2^28 polls take about 3 s of host time (measured); 2^31
- * gives ~25 s, two orders of magnitude more than a co-simulated batch needs (the vsync wait is
+ * would then take ~25 s (extrapolated), two orders of magnitude more than a co-simulated batch needs (the vsync wait is
  * 1.68 M GPU cycles, ~0.2 s at 8 M simulated cycles/s). On an FPGA at 100 MHz 2^31 polls are ~90 s:
  * a board port should set it to about a second's worth (make FW_MAX_POLLS=...). */
 #ifndef FW_GPU_MAX_POLLS
