@@ -12,6 +12,9 @@
  * many times the same frame is cut into batches) and written once per batch, so shared vertices
  * stay shared inside a batch and a batch never names a vertex it does not carry. A batch is closed
  * while it still has room for three more vertices, so every primitive fits whole.
+ *
+ * A frame whose vertices and primitives all fit one batch skips the renumbering: its vertices are
+ * copied in order and the primitives keep the frame's vertex numbers.
  */
 #ifndef BATCH_H
 #define BATCH_H

@@ -38,9 +38,16 @@
 #define RENDER_MAX_PRIMS 16384u
 
 struct render_prim {
-    uint16_t v[3];   /* indices into render_frame.vert; v[2] repeats v[1] for a line */
-    uint8_t color;   /* palette index */
-    uint8_t kind;    /* GPU_PRIM_KIND_TRI or GPU_PRIM_KIND_LINE */
+    union {
+        struct {
+            uint16_t v[3];   /* indices into render_frame.vert; v[2] repeats v[1] for a line */
+            uint8_t color;   /* palette index */
+            uint8_t kind;    /* GPU_PRIM_KIND_TRI or GPU_PRIM_KIND_LINE */
+        };
+        /* The same 8 bytes as two words: on a little-endian CPU they are the contract's primitive
+         * words with frame vertex numbers in place of batch ones (batch.c uses that). */
+        uint32_t w[2];
+    };
 };
 
 struct render_stats {
