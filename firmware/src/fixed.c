@@ -21,6 +21,11 @@ void fx_overflow_clear(void)
     fx_overflows = 0u;
 }
 
+void fx_overflow_note(void)
+{
+    fx_overflows++;
+}
+
 /*
  * Range: |a| <= 2^31, so the numerator a * 2^16 is at most 2^47 in magnitude and adding |b|/2
  * (<= 2^30) stays far inside int64. The quotient can reach 2^47 (b small): fx_sat64 clamps it.

@@ -54,6 +54,8 @@ int32_t fx_saturate(int64_t v);
 /* Sticky overflow counter: saturating operations since the last fx_overflow_clear(). */
 uint32_t fx_overflow_count(void);
 void fx_overflow_clear(void);
+/* Count one overflow found by a caller's own range check (an input outside a range argument). */
+void fx_overflow_note(void);
 
 /* int64 -> int32 raw value (of any format), saturating (and counting) when out of range. */
 static inline int32_t fx_sat64(int64_t v)

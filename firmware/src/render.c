@@ -12,9 +12,9 @@ void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,
                       uvec3 light, uint32_t ambient)
 {
     pass->proj = *ps;
-    pass->view_scene = mat3_compose(&view->rot, scene_rot);
+    pass->focus_to_view.r = mat3_compose(&view->rot, scene_rot);
+    pass->focus_to_view.t = mat3_apply(&view->rot, vec3_sub(focus, view->eye));
     pass->focus = focus;
-    pass->focus_view = mat3_apply(&view->rot, vec3_sub(focus, view->eye));
     pass->light_scene = mat3_apply_transposed_unit(scene_rot, light);
     pass->ambient = (uint8_t)((ambient > 15u) ? 15u : ambient);
     pass->eye_material = 0;
@@ -80,21 +80,23 @@ enum render_sphere_class render_sphere_classify(const struct proj_setup *ps, vec
 {
     /* The dot products below may be low by 3 units of 2^-16 (vec3_dot_unit_fast); a margin of
      * 2^-8 on the radius keeps both answers conservative: never cull what touches the frustum,
-     * never call inside what reaches out of it. */
-    const real_t r = real_add(radius, REAL_C(1.0 / 256.0));
+     * never call inside what reaches out of it. Plain sums: view coordinates are within +-4096
+     * and a mesh's radius below 14190 (model coordinates within +-8192, real.h), so every sum
+     * below stays under 2^15 units, inside q16_16. */
+    const real_t r = radius + REAL_C(1.0 / 256.0);
     enum render_sphere_class cls = RENDER_SPHERE_INSIDE;
 
-    if (real_add(c.z, r) < ps->near || real_sub(c.z, r) > ps->far) {
+    if (c.z + r < ps->near || c.z - r > ps->far) {
         return RENDER_SPHERE_OUTSIDE;
     }
-    if (real_sub(c.z, r) < ps->near || real_add(c.z, r) > ps->far) {
+    if (c.z - r < ps->near || c.z + r > ps->far) {
         cls = RENDER_SPHERE_CROSSING;
     }
     for (int i = 0; i < 4; i++) {
         /* Signed distance to a plane through the eye: c . n, n the inward unit normal. */
         const real_t d = vec3_dot_unit_fast(c, ps->edge_plane[i]);
 
-        if (d < real_sub(0, r)) {
+        if (d < -r) {
             return RENDER_SPHERE_OUTSIDE;
         }
         if (d < r) {
@@ -457,9 +459,14 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
     f->stats.faces_in += nf;
     f->stats.objects_in++;
 
-    mv.r = mat3_compose(&pass->view_scene, &obj->rot);
-    mv.t = vec3_add(mat3_apply(&pass->view_scene, vec3_sub(obj->pos, pass->focus)),
-                    pass->focus_view);
+    /* Model -> view: r = (V O) R, t = (V O)(pos - focus) + V (focus - eye). pos and focus are
+     * world points (within +-1024 per axis, real.h; scene_add_object enforces it for pos, the
+     * camera's box for the focus), so pos - focus is exact and within xf_apply's |p| < 8192, and
+     * V (focus - eye) within its |t| < 4096: the object's offset gets the vertices' arithmetic. */
+    mv.r = mat3_compose(&pass->focus_to_view.r, &obj->rot);
+    mv.t = xf_apply(&pass->focus_to_view, vec3_make(obj->pos.x - pass->focus.x,
+                                                    obj->pos.y - pass->focus.y,
+                                                    obj->pos.z - pass->focus.z));
     where = render_sphere_classify(&pass->proj, xf_apply(&mv, mesh->center), mesh->radius);
     if (where == RENDER_SPHERE_OUTSIDE) {
         f->stats.objects_culled++;
@@ -476,7 +483,7 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
     f->vert_count += nv;
 
     /* The light in model space: (O R)^T l = R^T (O^T l). */
-    light_model = mat3_apply_transposed_unit(&obj->rot, pass->light_scene);
+    light_model = mat3_apply_transposed_unit_fast(&obj->rot, pass->light_scene);
     palette_light_init(&light, light_model, pass->ambient);
     job.levels = render_level_cache_for(obj->levels, mesh, light_model, pass->ambient);
     job.pass = pass;

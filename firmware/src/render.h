@@ -81,9 +81,10 @@ struct render_frame {
 /* What stays the same for every object of one pass (a frame, or one eye of a stereo frame). */
 struct render_pass {
     struct proj_setup proj;
-    mat3 view_scene;      /* V O: camera rotation times the scene's rotation about its focus */
+    /* Scene -> view for points given relative to the focus: r = V O (the camera's rotation times
+     * the scene's rotation about its focus), t = V (focus - eye). */
+    xf_affine focus_to_view;
     vec3 focus;           /* the scene's focus (world) */
-    vec3 focus_view;      /* V (focus - eye) */
     uvec3 light_scene;    /* unit vector towards the light, in the rotated scene's frame: O^T l */
     uint8_t ambient;      /* light level of unlit faces, 0 .. 15 */
     uint8_t eye_material; /* 0, or MAT_ANAGLYPH_LEFT / _RIGHT: every face uses that ramp */

@@ -61,6 +61,18 @@ void scene_set_camera(struct scene *s, enum cam_mode mode, vec3 target, real_t d
     cam_init(&s->cam, cfg, mode, target, distance, yaw, pitch);
 }
 
+/* A world coordinate within +-1024 (real.h's range rule; render.c forms object offsets exactly
+ * on the strength of it): one outside is clamped and counted as an overflow, so the frame loop
+ * reports the failed range argument instead of drawing with a wrong offset. */
+static real_t scene_world_coord(real_t v)
+{
+    if (v > REAL_C(1024.0) || v < REAL_C(-1024.0)) {
+        fx_overflow_note();
+        return (v > 0) ? REAL_C(1024.0) : REAL_C(-1024.0);
+    }
+    return v;
+}
+
 void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
                       uint8_t material)
 {
@@ -69,6 +81,7 @@ void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, ve
     if (s->object_count >= SCENE_MAX_OBJECTS) {
         return;
     }
+    pos = vec3_make(scene_world_coord(pos.x), scene_world_coord(pos.y), scene_world_coord(pos.z));
     o = &s->object[s->object_count++];
     o->mesh = m;
     o->rot = *rot;

@@ -140,6 +140,24 @@ vec3 mat3_apply(const mat3 *m, vec3 v);
 uvec3 mat3_apply_unit(const mat3 *m, uvec3 v);
 /* m^T * v, without forming the transpose (takes a direction into the frame m rotates from). */
 uvec3 mat3_apply_transposed_unit(const mat3 *m, uvec3 v);
+/* The same for m a rotation and v a unit vector where 2^-27 does not matter (lighting, once per
+ * object): fixed point sums the high words of the products, (m 2^30)(v 2^30) / 2^32 each, and
+ * scales by 4: an entry is low by less than 3 * 2^-28 and stays within q2_30 because each row of
+ * m^T times v is within [-1, 1]. Float: mat3_apply_transposed_unit. */
+static inline uvec3 mat3_apply_transposed_unit_fast(const mat3 *m, uvec3 v)
+{
+#if REAL_IS_FIXED
+    const unit_t(*a)[3] = m->m;
+    uvec3 out;
+
+    out.x = (fx_mulh(a[0][0], v.x) + fx_mulh(a[1][0], v.y) + fx_mulh(a[2][0], v.z)) * 4;
+    out.y = (fx_mulh(a[0][1], v.x) + fx_mulh(a[1][1], v.y) + fx_mulh(a[2][1], v.z)) * 4;
+    out.z = (fx_mulh(a[0][2], v.x) + fx_mulh(a[1][2], v.y) + fx_mulh(a[2][2], v.z)) * 4;
+    return out;
+#else
+    return mat3_apply_transposed_unit(m, v);
+#endif
+}
 /* Row i of m as a direction. */
 uvec3 mat3_row(const mat3 *m, int i);
 

@@ -158,7 +158,12 @@ void test_render_level_cache(void)
     begin();
     render_object(&frame, &pass, &o);
     CHECK(memcmp(frame.prim, plain, n * sizeof plain[0]) == 0);
-    CHECK(cache.light.x == pass.light_scene.x && cache.light.z == pass.light_scene.z);
+    {
+        /* the cache holds the light in model space, as render_object forms it */
+        const uvec3 l = mat3_apply_transposed_unit_fast(&o.rot, pass.light_scene);
+
+        CHECK(cache.light.x == l.x && cache.light.y == l.y && cache.light.z == l.z);
+    }
 }
 
 /* Per triangle: three vertices beyond one screen edge (or all beyond far, or all behind) are
