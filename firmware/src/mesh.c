@@ -24,6 +24,7 @@ void mesh_clear(struct mesh *m)
     m->center = vec3_make(0, 0, 0);
     m->radius = 0;
     m->full = false;
+    m->box = false;
 }
 
 uint16_t mesh_add_vertex(struct mesh *m, vec3 p)
@@ -88,6 +89,7 @@ void mesh_finish(struct mesh *m)
     vec3 hi;
     real_t r = 0;
 
+    m->box = false;
     if (m->vert_count == 0u) {
         m->center = vec3_make(0, 0, 0);
         m->radius = 0;
@@ -114,4 +116,14 @@ void mesh_finish(struct mesh *m)
     }
     /* One unit of the last place up: rounding of the length must not shrink the sphere. */
     m->radius = real_add(r, REAL_C(1.0 / 256.0));
+
+    m->box = (m->vert_count == 8u);
+    for (uint32_t i = 0; i < m->vert_count && m->box; i++) {
+        const vec3 p = m->verts[i];
+
+        m->box = p.x == ((i & 1u) ? hi.x : lo.x) && p.y == ((i & 2u) ? hi.y : lo.y) &&
+                 p.z == ((i & 4u) ? hi.z : lo.z);
+    }
+    m->box_lo = lo;
+    m->box_hi = hi;
 }

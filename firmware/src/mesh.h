@@ -47,6 +47,12 @@ struct mesh {
     uint32_t normal_cap;
     vec3 center;    /* bounding sphere, model space (mesh_finish) */
     real_t radius;
+    /* mesh_finish: the vertices are exactly the corners of the box [box_lo, box_hi], vertex i at
+     * hi on axis k when bit k of i is set (x: 1, y: 2, z: 4): render.c then transforms them with
+     * xf_apply_box. */
+    bool box;
+    vec3 box_lo;
+    vec3 box_hi;
     bool full;      /* an add did not fit its array: the mesh is incomplete */
 };
 
@@ -68,7 +74,8 @@ void mesh_add_face_normal(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, ui
 void mesh_add_quad(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint16_t d,
                    uint16_t normal, uint8_t material);
 
-/* Bounding sphere: centre of the vertices' box, radius to the farthest vertex. */
+/* Bounding sphere: centre of the vertices' box, radius to the farthest vertex; and whether the
+ * vertices are that box's eight corners in the order mesh.box names. */
 void mesh_finish(struct mesh *m);
 
 #endif /* MESH_H */

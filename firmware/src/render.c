@@ -327,6 +327,26 @@ render_project_vertices(const struct proj_setup *ps, const xf_affine *mv, const 
     }
 }
 
+/* The same for a box mesh (mesh.box): its eight corners through xf_apply_box, which gives the
+ * same view points as xf_apply at a third of the cost. */
+static void __attribute__((noinline))
+render_project_box(const struct proj_setup *ps, const xf_affine *mv, const struct mesh *mesh,
+                   struct proj_vertex *out, bool inside)
+{
+    vec3 p[8];
+
+    xf_apply_box(mv, mesh->box_lo, mesh->box_hi, p);
+    if (inside) {
+        for (uint32_t i = 0; i < 8u; i++) {
+            proj_point_inside(ps, p[i], &out[i]);
+        }
+    } else {
+        for (uint32_t i = 0; i < 8u; i++) {
+            proj_point(ps, p[i], &out[i]);
+        }
+    }
+}
+
 /* The face loop's rare cases, out of line: a face that crosses the near plane or the guard band
  * (clip.c), and every face in wireframe mode. Emits through f->prim_count. */
 static void __attribute__((noinline))
@@ -478,8 +498,13 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
         return;
     }
     job.base = f->vert_count;
-    render_project_vertices(&pass->proj, &mv, mesh->verts, nv, &f->vert[job.base],
-                            where == RENDER_SPHERE_INSIDE);
+    if (mesh->box) {
+        render_project_box(&pass->proj, &mv, mesh, &f->vert[job.base],
+                           where == RENDER_SPHERE_INSIDE);
+    } else {
+        render_project_vertices(&pass->proj, &mv, mesh->verts, nv, &f->vert[job.base],
+                                where == RENDER_SPHERE_INSIDE);
+    }
     f->vert_count += nv;
 
     /* The light in model space: (O R)^T l = R^T (O^T l). */

@@ -343,3 +343,43 @@ void mat3_renormalize(mat3 *m)
     m->m[2][1] = zo.y;
     m->m[2][2] = zo.z;
 }
+
+/* One output coordinate (row m of the transform, offset t) of the eight corners, written to
+ * out[i] + offset: partial sums over z, then y, then x. */
+static inline void xf_box_row(const unit_t m[3], int32_t t, const int32_t lo4[3],
+                              const int32_t hi4[3], vec3 out[8], int row)
+{
+    const int32_t z0 = t + fx_mulh(m[2], lo4[2]);
+    const int32_t z1 = t + fx_mulh(m[2], hi4[2]);
+    const int32_t y_lo = fx_mulh(m[1], lo4[1]);
+    const int32_t y_hi = fx_mulh(m[1], hi4[1]);
+    const int32_t x_lo = fx_mulh(m[0], lo4[0]);
+    const int32_t x_hi = fx_mulh(m[0], hi4[0]);
+    const int32_t yz[4] = {z0 + y_lo, z0 + y_hi, z1 + y_lo, z1 + y_hi};  /* y bit + 2 z bit */
+
+    for (int k = 0; k < 4; k++) {
+        real_t *even = (row == 0) ? &out[2 * k].x : ((row == 1) ? &out[2 * k].y : &out[2 * k].z);
+        real_t *odd = (row == 0) ? &out[2 * k + 1].x
+                                 : ((row == 1) ? &out[2 * k + 1].y : &out[2 * k + 1].z);
+
+        *even = yz[k] + x_lo;
+        *odd = yz[k] + x_hi;
+    }
+}
+
+void xf_apply_box(const xf_affine *xf, vec3 lo, vec3 hi, vec3 out[8])
+{
+#if REAL_IS_FIXED
+    const int32_t lo4[3] = {lo.x * 4, lo.y * 4, lo.z * 4};
+    const int32_t hi4[3] = {hi.x * 4, hi.y * 4, hi.z * 4};
+
+    xf_box_row(xf->r.m[0], xf->t.x, lo4, hi4, out, 0);
+    xf_box_row(xf->r.m[1], xf->t.y, lo4, hi4, out, 1);
+    xf_box_row(xf->r.m[2], xf->t.z, lo4, hi4, out, 2);
+#else
+    for (int i = 0; i < 8; i++) {
+        out[i] = xf_apply(xf, vec3_make((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y,
+                                        (i & 4) ? hi.z : lo.z));
+    }
+#endif
+}

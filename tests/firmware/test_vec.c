@@ -160,6 +160,36 @@ void test_vec_xf_apply_error(void)
 #endif
 }
 
+/* vec.h: xf_apply_box gives exactly xf_apply's result for each of the eight corners, in the
+ * documented corner order, for random boxes within the transform's range rule. */
+void test_vec_xf_apply_box_exact(void)
+{
+    for (int i = 0; i < 20000; i++) {
+        xf_affine xf;
+        const double range = (i & 1) ? 4000.0 : 2.0;
+        const vec3 lo = v3(-((double)unit_rand() / 4294967296.0) * range,
+                           -((double)unit_rand() / 4294967296.0) * range,
+                           ((double)unit_rand() / 4294967296.0 - 0.5) * range);
+        const vec3 hi = v3(((double)unit_rand() / 4294967296.0) * range,
+                           ((double)unit_rand() / 4294967296.0) * range,
+                           ((double)unit_rand() / 4294967296.0) * range);
+        vec3 corner[8];
+
+        xf.r = mat3_from_yaw_pitch((fx_angle)unit_rand(), (fx_angle)unit_rand());
+        xf.t = v3(((double)unit_rand() / 4294967296.0 - 0.5) * 8000.0, 12.5, -4000.0);
+        xf_apply_box(&xf, lo, hi, corner);
+        for (int k = 0; k < 8; k++) {
+            const vec3 want = xf_apply(&xf, vec3_make((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y,
+                                                      (k & 4) ? hi.z : lo.z));
+
+            if (corner[k].x != want.x || corner[k].y != want.y || corner[k].z != want.z) {
+                unit_fail(__FILE__, __LINE__, "xf_apply_box corner %d differs from xf_apply", k);
+                return;
+            }
+        }
+    }
+}
+
 void test_vec_triangle_normal(void)
 {
     uvec3 n;

@@ -55,6 +55,7 @@ void unit_srand(uint32_t seed);
     X(test_vec_yaw_pitch_exact)       \
     X(test_vec_mat3_vs_double)        \
     X(test_vec_xf_apply_error)        \
+    X(test_vec_xf_apply_box_exact)    \
     X(test_vec_triangle_normal)       \
     X(test_vec_million_rotations)     \
     X(test_cam_pitch_limits)          \
