@@ -91,6 +91,15 @@ static inline void bsp_gpu_write_words(uint32_t offset, const uint32_t *src, uin
     }
 }
 
+/* The GPU's vertex or index buffer at `offset` as ordinary CPU memory, or NULL where the platform
+ * reaches the window only through the accessors above. Here the window is mapped (block RAM on a
+ * board, shared RAM in co-simulation) and stores to the buffers have no side effects, so the
+ * firmware may build a batch in place; bsp_fence() before DOORBELL orders those stores. */
+static inline uint32_t *bsp_gpu_buffer(uint32_t offset)
+{
+    return (uint32_t *)(uintptr_t)(BSP_GPU_BASE + offset);
+}
+
 /* Full memory barrier (fence rw,rw): every earlier load/store is ordered before every later one.
  * The GPU driver uses it before ringing DOORBELL and after seeing DONE_SEQ. */
 static inline void bsp_fence(void)

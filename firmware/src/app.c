@@ -76,6 +76,9 @@ struct frame_totals {
 };
 
 static struct app app_state;
+/* Batch staging, for platforms whose GPU buffers are not CPU memory (bsp_gpu_buffer NULL). */
+static uint32_t app_vtx_staging[GPU_VTX_CAP * GPU_VTX_WORDS];
+static uint32_t app_prim_staging[GPU_TRI_CAP * GPU_PRIM_WORDS];
 
 static void app_fail(int status) __attribute__((noreturn));
 static void app_fail(int status)
@@ -344,6 +347,13 @@ int app_run(void)
     bsp_init();
     palette_build(app->palette);
     rc = gpu_init(&app->gpu, app->palette, PAL_ENTRIES);
+    /* Batches are built in the GPU's own buffers where the platform maps them, else staged. */
+    app->words.vtx = gpu_buffer_words(GPU_WIN_VTX);
+    app->words.prim = gpu_buffer_words(GPU_WIN_IDX);
+    if (app->words.vtx == NULL || app->words.prim == NULL) {
+        app->words.vtx = app_vtx_staging;
+        app->words.prim = app_prim_staging;
+    }
     printf("%s fw (%s, %s): GPU id 0x%08lx version 0x%08lx caps 0x%08lx vtx_cap %lu tri_cap %lu "
            "fb %lux%lu | frames %u\n",
            FW_SCENE, BSP_NAME, REAL_BACKEND_NAME, (unsigned long)app->gpu.info.id,

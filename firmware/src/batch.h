@@ -3,9 +3,10 @@
  *
  * The GPU holds VTX_CAP vertices and TRI_CAP primitives per batch (1024 and 512 today); a frame
  * can have many more. batch_fill takes primitives in draw order until either buffer would
- * overflow and writes them, packed in the contract's word formats, into a caller-owned
- * batch_words; the driver copies those into the GPU and rings it. The next call continues where
- * this one stopped.
+ * overflow and writes them, packed in the contract's word formats, where the caller's batch_words
+ * points: staging arrays the driver then copies into the GPU, or, on a platform that maps the
+ * GPU's buffers, those buffers themselves (no copy). The next call continues where this one
+ * stopped.
  *
  * Vertices are renumbered per batch: each primitive's vertices are looked up by a per-vertex stamp
  * (the batch that last wrote it; a counter kept in the render_frame, so stamps stay unique however
@@ -25,9 +26,11 @@
 #include "gpu.h"
 #include "render.h"
 
+/* Where batch_fill writes: room for GPU_VTX_CAP vertices and GPU_TRI_CAP primitives each, either
+ * staging arrays the driver copies from or the GPU's own buffers (gpu_buffer_words). */
 struct batch_words {
-    uint32_t vtx[GPU_VTX_CAP * GPU_VTX_WORDS];
-    uint32_t prim[GPU_TRI_CAP * GPU_PRIM_WORDS];
+    uint32_t *vtx;
+    uint32_t *prim;
     uint32_t vtx_count;
     uint32_t prim_count;
 };

@@ -95,8 +95,13 @@ int gpu_submit_batch(struct gpu_dev *dev, const struct gpu_batch *batch, uint32_
         return GPU_E_CAPACITY;
     }
 
-    bsp_gpu_write_words(vtx_off, batch->vtx_words, nv);
-    bsp_gpu_write_words(idx_off, batch->prim_words, np);
+    /* A buffer built in place is already there: copying it onto itself is skipped. */
+    if (batch->vtx_words != bsp_gpu_buffer(vtx_off)) {
+        bsp_gpu_write_words(vtx_off, batch->vtx_words, nv);
+    }
+    if (batch->prim_words != bsp_gpu_buffer(idx_off)) {
+        bsp_gpu_write_words(idx_off, batch->prim_words, np);
+    }
     gpu_write(GPU_REG_CTRL, batch->ctrl);
     gpu_write(GPU_REG_VTX_BASE, batch->vtx_base);
     gpu_write(GPU_REG_VTX_COUNT, batch->vtx_count);
@@ -111,6 +116,11 @@ int gpu_submit_batch(struct gpu_dev *dev, const struct gpu_batch *batch, uint32_
     dev->pending = true;
     *tag = t;
     return GPU_OK;
+}
+
+uint32_t *gpu_buffer_words(uint32_t window_offset)
+{
+    return bsp_gpu_buffer(window_offset);
 }
 
 int gpu_wait(struct gpu_dev *dev, uint32_t tag, uint32_t max_polls)

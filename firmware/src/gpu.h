@@ -121,8 +121,15 @@ int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n);
 
 /* Copy the batch's buffers, program the batch registers, fence, ring DOORBELL with a fresh
  * non-zero tag. The tag is returned in *tag for gpu_wait. Fails without touching the device when
- * a batch is still pending or the batch does not fit the capacities the device reported. */
+ * a batch is still pending or the batch does not fit the capacities the device reported.
+ * Words already in place (vtx_words / prim_words pointing where gpu_buffer_words says the buffer
+ * at that base is) are not copied. */
 int gpu_submit_batch(struct gpu_dev *dev, const struct gpu_batch *batch, uint32_t *tag);
+
+/* The GPU's vertex buffer (GPU_WIN_VTX) or index buffer (GPU_WIN_IDX) as CPU memory to build
+ * batches in place, when the platform maps the window (bsp_gpu_buffer); NULL otherwise. Write it
+ * only while no batch is pending. */
+uint32_t *gpu_buffer_words(uint32_t window_offset);
 
 /* Poll DONE_SEQ until it equals tag, at most max_polls reads. GPU_OK or GPU_E_TIMEOUT (the last
  * value read is left in dev->last_done_seq). */

@@ -13,7 +13,9 @@
 #include "unit.h"
 
 static struct render_frame frame;
-static struct batch_words words;
+static uint32_t vtx_words[GPU_VTX_CAP * GPU_VTX_WORDS];
+static uint32_t prim_words[GPU_TRI_CAP * GPU_PRIM_WORDS];
+static struct batch_words words = {vtx_words, prim_words, 0, 0};
 
 /* A grid of n x n quads facing the eye at z = 5 (two triangles each, shared vertices). */
 static void build_grid(struct mesh *m, vec3 *v, struct mesh_face *f, uvec3 *nrm, int n)

@@ -208,6 +208,48 @@ void test_gpu_submit(void)
     CHECK_EQ(REG(GPU_REG_DOORBELL), 43u);
 }
 
+/* A batch built in the GPU's own buffers (gpu_buffer_words) is submitted without a copy: only the
+ * six batch registers and DOORBELL are written, and the words stay as built. */
+void test_gpu_submit_in_place(void)
+{
+    uint32_t *vtx = gpu_buffer_words(GPU_WIN_VTX);
+    uint32_t *prim = gpu_buffer_words(GPU_WIN_IDX);
+    struct gpu_batch b = {
+        .vtx_base = 0, .vtx_count = 3, .tri_base = 0, .prim_count = 1,
+        .ctrl = GPU_CTRL_SWAP_MASK, .clear_color = 0,
+    };
+    struct gpu_dev dev;
+    uint32_t tag = 0;
+    uint32_t writes;
+
+    fake_reset();
+    CHECK_EQ(gpu_init(&dev, test_palette, 3), GPU_OK);
+    CHECK(vtx != NULL && prim != NULL);
+    for (unsigned i = 0; i < 3u * GPU_VTX_WORDS; i++) {
+        vtx[i] = 0x00100010u + i;
+    }
+    prim[0] = 0x00010000u;
+    prim[1] = 0x00000002u;
+    b.vtx_words = vtx;
+    b.prim_words = prim;
+    writes = fake_write_count;
+    CHECK_EQ(gpu_submit_batch(&dev, &b, &tag), GPU_OK);
+    CHECK_EQ(fake_write_count - writes, 7u);  /* CTRL, VTX_BASE/COUNT, TRI_BASE/COUNT, CLEAR, DOORBELL */
+    for (unsigned i = 0; i < 3u * GPU_VTX_WORDS; i++) {
+        CHECK_EQ(REG(GPU_WIN_VTX + 4u * i), 0x00100010u + i);
+    }
+    CHECK_EQ(REG(GPU_WIN_IDX), 0x00010000u);
+    CHECK_EQ(REG(GPU_REG_DOORBELL), tag);
+    /* Staged words at another base are still copied. */
+    REG(GPU_REG_DONE_SEQ) = tag;
+    CHECK_EQ(gpu_wait(&dev, tag, 10), GPU_OK);
+    b.vtx_base = 5;
+    writes = fake_write_count;
+    CHECK_EQ(gpu_submit_batch(&dev, &b, &tag), GPU_OK);
+    CHECK_EQ(fake_write_count - writes, 7u + 3u * GPU_VTX_WORDS);
+    CHECK_EQ(REG(GPU_WIN_VTX + 4u * 5u * GPU_VTX_WORDS), 0x00100010u);
+}
+
 void test_gpu_submit_capacity(void)
 {
     static const uint32_t words[4] = {0};

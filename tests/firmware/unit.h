@@ -108,6 +108,7 @@ void unit_srand(uint32_t seed);
     X(test_gpu_init_checks)           \
     X(test_gpu_init_first_tag)        \
     X(test_gpu_submit)                \
+    X(test_gpu_submit_in_place)       \
     X(test_gpu_submit_capacity)       \
     X(test_gpu_wait_timeout)          \
     X(test_gpu_tag_wrap)              \

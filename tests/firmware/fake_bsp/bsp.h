@@ -46,4 +46,10 @@ static inline void bsp_gpu_write_words(uint32_t offset, const uint32_t *src, uin
     }
 }
 
+/* The aperture array itself, so the driver's in-place path can be tested. */
+static inline uint32_t *bsp_gpu_buffer(uint32_t offset)
+{
+    return &fake_gpu_mem[offset / 4u];
+}
+
 #endif /* BSP_H */
