@@ -181,28 +181,28 @@ static inline uint32_t fx_normalize32(uint32_t x, int32_t *shift)
 /*
  * Reciprocal of a normalized mantissa without a divider: for m in [2^31, 2^32) (i.e. mu = m / 2^32
  * in [0.5, 1)), returns Y ~= 2^63 / m (i.e. 1/mu in Q1.31, within (2^31, 2^32)).
- * Method: a 128-entry seed table on the 7 bits below the leading one (relative error < 2^-8),
- * then two Newton-Raphson steps y <- y (2 - mu y), each squaring the relative error: 2^-16, then
- * below the truncation floor. Measured (tests/firmware, ~10^6 mantissas incl. both ends): Y is
- * within 2 units (relative 2^-30) of floor(2^63/m); at m = 2^31 it returns 2^32 - 2 (2^32 does not
- * fit). 4 multiplies, no division; portable to cores without a hardware divider (MicroBlaze).
- * Range: each step forms P = mu y in Q1.31 (mulhu, < 2^32), D = 2 - mu y as 2^32 - P, and
+ * Method: a 1024-entry seed table on the 10 bits below the leading one (relative error below
+ * 2^-11 + 2^-16), then one Newton-Raphson step y <- y (2 - mu y), which squares the relative error
+ * to about 2^-21 (the step's two floors add a few units). Measured (tests/firmware, ~10^6
+ * mantissas incl. both ends): Y is within 1039 units (relative 2^-20.98; the test allows 1100) of
+ * floor(2^63/m); at m = 2^31 it returns 2^32 - 2 (2^32 does not fit). 2 multiplies, no division;
+ * portable to cores without a hardware divider (MicroBlaze). A second step would bring Y within 2
+ * units for 4 instructions more per vertex; the projection does not need it (proj.h: 2^-20.9 of
+ * the largest offset, 1536 px, is 0.012 of a Q12.4 unit).
+ * Range: the step forms P = mu y in Q1.31 (mulhu, < 2^32), D = 2 - mu y as 2^32 - P, and
  * y (2 - mu y) = mulhu(Y, D) * 2; the iterate stays below 2/mu <= 2^32, so nothing wraps.
  */
-extern const uint16_t fx_recip_seed[128];
+#define FX_RECIP_SEED_ENTRIES 1024u
+extern const uint16_t fx_recip_seed[FX_RECIP_SEED_ENTRIES];
 
 static inline uint32_t fx_recip_mantissa(uint32_t m)
 {
     /* Y = 1/mu in Q1.31; the seed holds 1/mu in Q1.15. */
-    uint32_t y = (uint32_t)fx_recip_seed[(m >> 24) & 0x7Fu] << 16;
+    const uint32_t y = (uint32_t)fx_recip_seed[(m >> 21) & (FX_RECIP_SEED_ENTRIES - 1u)] << 16;
+    const uint32_t p = fx_mulhu(m, y);  /* mu * y in Q1.31, close to 2^31 */
+    const uint32_t d = 0u - p;          /* 2 - mu * y in Q1.31: 2^32 - p, p in (0, 2^32) */
 
-    for (int step = 0; step < 2; step++) {
-        const uint32_t p = fx_mulhu(m, y);  /* mu * y in Q1.31, close to 2^31 */
-        const uint32_t d = 0u - p;          /* 2 - mu * y in Q1.31: 2^32 - p, p in (0, 2^32) */
-
-        y = fx_mulhu(y, d) << 1;            /* y * (2 - mu * y) */
-    }
-    return y;
+    return fx_mulhu(y, d) << 1;         /* y * (2 - mu * y) */
 }
 
 /* floor(sqrt(v)), bit by bit (32 iterations). Build-time and per-frame use only. */

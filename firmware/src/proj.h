@@ -26,8 +26,9 @@
  *   Q = mulhu(Y, f_q4 << 19) = Y f_q4 / 2^13 < 2^31 (f_q4 < 4096), so f_q4 / z = Q 2^(s - 34);
  *   offset = x f_q4 / z = (x << 3) Q 2^(s - 53) = mulh(x << 3, Q) >> (21 - s), rounded.
  *   Needs |x|, |y| < 4096 view units (x << 3 fits int32; real.h's range rule). The shift is 4..20;
- *   the floor in mulh costs at most 2^-4 of a Q12.4 unit, Y and Q carry 2^-28 relative error:
- *   the offset is within 0.5 + 2^-4 + 2^-13 < 0.57 Q12.4 units (1/16 px) of f x / z, i.e. of the
+ *   the floor in mulh costs at most 2^-4 of a Q12.4 unit, Y and Q carry 2^-20.9 relative error
+ *   (one Newton step, fixed.h), at most 24576 * 2^-20.9 = 0.013 units of the largest offset:
+ *   the offset is within 0.5 + 2^-4 + 0.013 < 0.58 Q12.4 units (1/16 px) of f x / z, i.e. of the
  *   exact projection of the given view point (tests/firmware checks it against double arithmetic).
  * Float: one division and four multiplies, rounded to nearest.
  *
@@ -97,13 +98,34 @@ struct proj_vertex {
         };
         uint32_t sxy;    /* the pair as one word (little-endian: the GPU's first vertex word) */
     };
-    uint16_t zbuf;       /* GPU VTX_Z */
-    uint16_t depth;      /* sort depth, <= PROJ_DEPTH_MAX */
+    union {
+        struct {
+            uint16_t zbuf;   /* GPU VTX_Z */
+            uint16_t depth;  /* sort depth, <= PROJ_DEPTH_MAX */
+        };
+        uint32_t zd;         /* the pair as one word (little-endian), for one store */
+    };
     uint16_t batch_stamp;  /* batch.c: the last batch this vertex was written to (0: none) */
     uint16_t batch_slot;   /* batch.c: its index in that batch's vertex buffer */
     uint8_t code;        /* enum proj_outcode bits */
     uint8_t spare[3];
 };
+
+/* Position and depths of a vertex as two word stores (little-endian: the two halfword pairs;
+ * elsewhere field by field). sx, sy within int16; zbuf, depth within uint16. */
+static inline void proj_vertex_store(struct proj_vertex *out, int32_t sx, int32_t sy,
+                                     uint32_t zbuf, uint32_t depth)
+{
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    out->sxy = ((uint32_t)sx & 0xFFFFu) | ((uint32_t)sy << 16);
+    out->zd = zbuf | (depth << 16);
+#else
+    out->sx = (int16_t)sx;
+    out->sy = (int16_t)sy;
+    out->zbuf = (uint16_t)zbuf;
+    out->depth = (uint16_t)depth;
+#endif
+}
 
 /* A 320 x 240 screen centred on (160, 120) px with the given focal length (64 .. 255 px). */
 void proj_setup_init(struct proj_setup *ps, int32_t focal_px, real_t far);
@@ -170,11 +192,9 @@ static inline __attribute__((always_inline)) void proj_point_impl(const struct p
         depth = (fd >= (float)PROJ_DEPTH_MAX) ? PROJ_DEPTH_MAX : (uint32_t)fd;
     }
 #endif
+    depth = (depth > PROJ_DEPTH_MAX) ? PROJ_DEPTH_MAX : depth;
     if (inside) {
-        out->sx = (int16_t)(ps->cx_q4 + off_x);
-        out->sy = (int16_t)(ps->cy_q4 - off_y);
-        out->zbuf = (uint16_t)zbuf;
-        out->depth = (uint16_t)((depth > PROJ_DEPTH_MAX) ? PROJ_DEPTH_MAX : depth);
+        proj_vertex_store(out, ps->cx_q4 + off_x, ps->cy_q4 - off_y, zbuf, depth);
         out->code = 0;
         return;
     }
@@ -199,10 +219,7 @@ static inline __attribute__((always_inline)) void proj_point_impl(const struct p
     if (v.z > ps->far) {
         code |= PROJ_OUT_FAR;
     }
-    out->sx = (int16_t)sx;
-    out->sy = (int16_t)sy;
-    out->zbuf = (uint16_t)zbuf;
-    out->depth = (uint16_t)((depth > PROJ_DEPTH_MAX) ? PROJ_DEPTH_MAX : depth);
+    proj_vertex_store(out, sx, sy, zbuf, depth);
     out->code = code;
 }
 
