@@ -51,7 +51,7 @@ q16_16 fx_div(q16_16 a, q16_16 b)
  * sin(2*pi*i/256) in q16_16 for i = 0..256 (the last entry repeats the first so interpolation
  * never wraps). Generated with: round(65536 * sin(2 * pi * i / 256)).
  */
-static const q16_16 fx_sin_table[257] = {
+const q16_16 fx_sin_table[257] = {
     0, 1608, 3216, 4821, 6424, 8022, 9616, 11204,
     12785, 14359, 15924, 17479, 19024, 20557, 22078, 23586,
     25080, 26558, 28020, 29466, 30893, 32303, 33692, 35062,
@@ -86,26 +86,6 @@ static const q16_16 fx_sin_table[257] = {
     -12785, -11204, -9616, -8022, -6424, -4821, -3216, -1608,
     0,
 };
-
-/*
- * Top 8 bits of the angle pick the table segment, the low 8 bits interpolate inside it.
- * Range: neighbouring entries differ by at most 1608 (= 65536 * 2*pi/256), times a fraction
- * < 256: |delta * frac| < 2^19, no overflow.
- */
-q16_16 fx_sin(fx_angle a)
-{
-    uint32_t i = (uint32_t)a >> 8;
-    int32_t frac = (int32_t)(a & 0xFFu);
-    q16_16 s0 = fx_sin_table[i];
-    q16_16 s1 = fx_sin_table[i + 1u];
-
-    return s0 + (((s1 - s0) * frac + 128) >> 8);
-}
-
-q16_16 fx_cos(fx_angle a)
-{
-    return fx_sin((fx_angle)(a + FX_TURN / 4u));
-}
 
 /*
  * Seed for fx_recip_mantissa: entry i is round(2^15 / mu_i) with mu_i = 0.5 + (i + 0.5) / 2048, the

@@ -152,33 +152,6 @@ mat3 mat3_mul(const mat3 *a, const mat3 *b)
     return r;
 }
 
-mat3 mat3_compose(const mat3 *a, const mat3 *b)
-{
-#if REAL_IS_FIXED
-    /* (a 2^30)(b 2^30) / 2^32 = a b 2^28 per term. For rotations a row times a column is within
-     * [-1, 1] (+ rounding), so the sum is within 2^28 and * 4 within q2_30. Written out with b's
-     * columns in locals (b is read once, no loop overhead): the same arithmetic as a loop over
-     * i, j, at about 100 instructions instead of 170 (once per object per frame). */
-    const unit_t b00 = b->m[0][0], b01 = b->m[0][1], b02 = b->m[0][2];
-    const unit_t b10 = b->m[1][0], b11 = b->m[1][1], b12 = b->m[1][2];
-    const unit_t b20 = b->m[2][0], b21 = b->m[2][1], b22 = b->m[2][2];
-    mat3 r;
-
-    for (int i = 0; i < 3; i++) {
-        const unit_t ai0 = a->m[i][0];
-        const unit_t ai1 = a->m[i][1];
-        const unit_t ai2 = a->m[i][2];
-
-        r.m[i][0] = (fx_mulh(ai0, b00) + fx_mulh(ai1, b10) + fx_mulh(ai2, b20)) * 4;
-        r.m[i][1] = (fx_mulh(ai0, b01) + fx_mulh(ai1, b11) + fx_mulh(ai2, b21)) * 4;
-        r.m[i][2] = (fx_mulh(ai0, b02) + fx_mulh(ai1, b12) + fx_mulh(ai2, b22)) * 4;
-    }
-    return r;
-#else
-    return mat3_mul(a, b);
-#endif
-}
-
 mat3 mat3_transpose(const mat3 *a)
 {
     mat3 r;
