@@ -7,6 +7,23 @@
 #include "gpu.h"
 #include "palette.h"
 
+/* The light in the rotated scene's frame, O^T l, and in an object's model space, R^T (O^T l):
+ * one place for both, so a cache filled ahead (render_level_cache_fill) matches render_object. */
+static uvec3 render_light_scene(const mat3 *scene_rot, uvec3 light)
+{
+    return mat3_apply_transposed_unit(scene_rot, light);
+}
+
+static uvec3 render_light_model(const mat3 *obj_rot, uvec3 light_scene)
+{
+    return mat3_apply_transposed_unit_fast(obj_rot, light_scene);
+}
+
+static uint8_t render_ambient(uint32_t ambient)
+{
+    return (uint8_t)((ambient > 15u) ? 15u : ambient);
+}
+
 void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,
                       const struct cam_view *view, const mat3 *scene_rot, vec3 focus,
                       uvec3 light, uint32_t ambient)
@@ -15,8 +32,8 @@ void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,
     pass->focus_to_view.r = mat3_compose(&view->rot, scene_rot);
     pass->focus_to_view.t = mat3_apply(&view->rot, vec3_sub(focus, view->eye));
     pass->focus = focus;
-    pass->light_scene = mat3_apply_transposed_unit(scene_rot, light);
-    pass->ambient = (uint8_t)((ambient > 15u) ? 15u : ambient);
+    pass->light_scene = render_light_scene(scene_rot, light);
+    pass->ambient = render_ambient(ambient);
     pass->eye_material = 0;
     pass->wireframe = false;
     pass->gpu_lines = true;
@@ -51,6 +68,24 @@ static uint8_t *render_level_cache_for(struct render_level_cache *c, const struc
         c->valid = true;
     }
     return c->level;
+}
+
+void render_level_cache_fill(const struct render_object *obj, const mat3 *scene_rot, uvec3 light,
+                             uint32_t ambient)
+{
+    const struct mesh *mesh = obj->mesh;
+    const uvec3 light_model = render_light_model(&obj->rot, render_light_scene(scene_rot, light));
+    const uint32_t amb = render_ambient(ambient);
+    struct palette_light pl;
+    uint8_t *level = render_level_cache_for(obj->levels, mesh, light_model, amb);
+
+    if (level == 0) {
+        return;
+    }
+    palette_light_init(&pl, light_model, amb);
+    for (uint32_t i = 0; i < mesh->normal_count; i++) {
+        level[i] = (uint8_t)palette_light_level(&pl, mesh->normals[i]);
+    }
 }
 
 void render_stats_clear(struct render_stats *s)
@@ -508,7 +543,7 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
     f->vert_count += nv;
 
     /* The light in model space: (O R)^T l = R^T (O^T l). */
-    light_model = mat3_apply_transposed_unit_fast(&obj->rot, pass->light_scene);
+    light_model = render_light_model(&obj->rot, pass->light_scene);
     palette_light_init(&light, light_model, pass->ambient);
     job.levels = render_level_cache_for(obj->levels, mesh, light_model, pass->ambient);
     job.pass = pass;

@@ -113,6 +113,14 @@ struct render_level_cache {
 /* Attach storage (cap entries) to an empty cache. */
 void render_level_cache_init(struct render_level_cache *c, uint8_t *storage, uint32_t cap);
 
+struct render_object;
+
+/* Fill an object's cache for every normal, as render_object would for this light (world space),
+ * scene rotation and ambient level: static lighting computed when a scene is built rather than
+ * in its first frame. Exact: the same levels the lazy fill computes. No-op without a cache. */
+void render_level_cache_fill(const struct render_object *obj, const mat3 *scene_rot, uvec3 light,
+                             uint32_t ambient);
+
 /* One instance of a mesh in the scene: p_scene = rot p_model + pos. */
 struct render_object {
     const struct mesh *mesh;

@@ -104,6 +104,9 @@ void scene_start(struct scene *s, const struct scene_desc *desc)
     s->ambient = 4;
     s->eye_separation = REAL_C(0.15);
     desc->init(s);
+    for (uint32_t i = 0; i < s->object_count; i++) {
+        render_level_cache_fill(&s->object[i], &s->cam.scene_rot, s->light, s->ambient);
+    }
 }
 
 void scene_update(struct scene *s, const struct input_counts *keys, struct scene_event *ev)

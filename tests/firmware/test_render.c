@@ -164,6 +164,26 @@ void test_render_level_cache(void)
 
         CHECK(cache.light.x == l.x && cache.light.y == l.y && cache.light.z == l.z);
     }
+    /* Filled ahead for the pass's light (setup_pass: identity scene, light u3(0, 0, -1),
+     * ambient 4): every entry set, and the frame is the one the lazy path drew. */
+    {
+        const mat3 id = mat3_identity();
+
+        render_level_cache_init(&cache, level, 32);
+        setup_pass(&pass);
+        render_level_cache_fill(&o, &id, u3(0, 0, -1), 4);
+        CHECK(cache.valid);
+        for (uint32_t i = 0; i < t.m.normal_count; i++) {
+            CHECK(level[i] <= 15u);
+        }
+        begin();
+        draw(&pass, &t.m, v3(0, 0, 0), 0);
+        memcpy(plain, frame.prim, n * sizeof plain[0]);
+        begin();
+        render_object(&frame, &pass, &o);
+        CHECK(memcmp(frame.prim, plain, n * sizeof plain[0]) == 0);
+        CHECK(cache.valid);
+    }
 }
 
 /* Per triangle: three vertices beyond one screen edge (or all beyond far, or all behind) are
