@@ -23,7 +23,8 @@
 #   fw-test-deps    everything tests/scenes/*.sh needs (scene ELFs and host builds with
 #                   FW_TEST_FRAMES frames under $(BUILD)/fw-test, the watchdog test ELF)
 # Convenience targets: fw, fw-all (every scene, both backends), fw-host, fw-unit, fw-smoke,
-# bench-fw (the instruction-count table of every scene and backend, measured in co-simulation).
+# bench-fw (the instruction-count table of every scene and backend, measured in co-simulation),
+# profile-fw (one scene's instructions per function and frame).
 #
 # Objects are shared per backend; only app.c, which carries the scene name, the frame count and
 # the watchdog bound, is compiled per ELF. A change of flags rebuilds by itself (cflags.txt).
@@ -242,7 +243,7 @@ FW_FAKE_GPU_REGS := \
   -device loader,addr=0x87000010,data=512,data-len=4 \
   -device loader,addr=0x87000014,data=0x00f00140,data-len=4
 
-.PHONY: fw fw-all fw-host fw-unit fw-smoke fw-test-deps bench-fw fw-force
+.PHONY: fw fw-all fw-host fw-unit fw-smoke fw-test-deps bench-fw profile-fw fw-force
 fw: $(FW_ELF)
 
 fw-all: $(FW_ALL_ELFS) $(FW_ALL_HOSTS)
@@ -275,5 +276,9 @@ fw-smoke: $(FW_TEST_DIR)/tetra-watchdog.elf
 # The instruction-count table of issue #4, measured in co-simulation (no model check: faster).
 bench-fw: $(FW_BENCH_ELFS) $(GPUSIM)
 	@GPUSIM=$(GPUSIM) BENCH_DIR=$(FW_BENCH_DIR) bash firmware/tools/bench_fw.sh $(FW_SCENES)
+
+# Instructions per function and frame of one scene's benchmark build (SCENE, FW_BACKEND).
+profile-fw: $(FW_BENCH_DIR)/$(call fw_name,$(SCENE),$(FW_BACKEND)).elf $(GPUSIM)
+	@$(or $(PYTHON),python3) firmware/tools/profile_fw.py $(GPUSIM) $<
 
 fw-force:

@@ -1,0 +1,128 @@
+#!/usr/bin/env python3
+"""make profile-fw — where a scene's firmware instructions go, function by function.
+
+Runs one firmware ELF in co-simulation with QEMU executing one instruction per translation block
+and logging every block it executes (-singlestep -d exec,nochain), so the log has one line per
+retired instruction. The log streams through a FIFO (it would be hundreds of MB as a file: the
+boot-time clearing of .bss alone is millions of instructions) and each program counter is
+attributed to the function containing it (nm of the ELF). A frame runs from one entry into
+scene_update to the next; the first frame and everything before it are skipped (warm-up:
+scene building, first-use caches), and the table gives the mean over the remaining frames.
+
+The counts are exact and deterministic (QEMU -icount); they include the DONE_SEQ polling in
+gpu_wait and the frame report's printing, which the firmware's own "fw instr" figure excludes,
+so both are listed separately below the table.
+
+Usage: profile_fw.py GPUSIM ELF [--top N]
+"""
+import argparse
+import bisect
+import collections
+import os
+import subprocess
+import sys
+import tempfile
+import threading
+
+FRAME_MARK = "scene_update"
+NOT_PIPELINE = {"gpu_wait"}  # polling the GPU, not work
+
+
+def symbols(elf):
+    nm = os.environ.get("RV_NM", "riscv64-unknown-elf-nm")
+    out = subprocess.run([nm, "-n", "--defined-only", elf], capture_output=True, text=True,
+                         check=True).stdout
+    syms = []
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) >= 3 and parts[1] in "tTwW":
+            syms.append((int(parts[0], 16), parts[2]))
+    return syms
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("gpusim")
+    ap.add_argument("elf")
+    ap.add_argument("--top", type=int, default=25)
+    args = ap.parse_args()
+
+    syms = symbols(args.elf)
+    starts = [a for a, _ in syms]
+    mark = next((a for a, n in syms if n == FRAME_MARK), None)
+    if mark is None:
+        sys.exit(f"profile-fw: {args.elf} has no {FRAME_MARK} symbol")
+
+    tmp = tempfile.mkdtemp(prefix="profile-fw-")
+    fifo = os.path.join(tmp, "trace")
+    wrapper = os.path.join(tmp, "qemu")
+    os.mkfifo(fifo)
+    with open(wrapper, "w") as f:
+        f.write("#!/bin/sh\nexec qemu-system-riscv32 -singlestep -d exec,nochain "
+                f"-D {fifo} \"$@\"\n")
+    os.chmod(wrapper, 0o755)
+
+    sim = subprocess.Popen([args.gpusim, "cosim", "--fw", args.elf, "--frames",
+                            os.path.join(tmp, "frames"), "--no-model-check", "--qemu", wrapper,
+                            "--uart-log", os.path.join(tmp, "uart.log")],
+                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    err = []
+    threading.Thread(target=lambda: err.append(sim.stderr.read()), daemon=True).start()
+
+    per_frame = []           # one Counter of pc -> count per frame
+    pcs = collections.Counter()
+    frames_seen = -1         # entries into FRAME_MARK so far, minus one
+    lines = 0
+    with open(fifo) as trace:
+        for line in trace:
+            if not line.startswith("Trace"):
+                continue
+            pc = int(line.split("[", 1)[1].split("/", 2)[1], 16)
+            lines += 1
+            if pc == mark:
+                if frames_seen >= 0:
+                    per_frame.append(pcs)
+                pcs = collections.Counter()
+                frames_seen += 1
+                print(f"profile-fw: frame {frames_seen} starts after {lines} instructions",
+                      file=sys.stderr)
+            pcs[pc] += 1
+    status = sim.wait()
+    if status != 0:
+        sys.exit(f"profile-fw: co-simulation failed ({status}): {''.join(err)[-400:]}")
+    if pcs and frames_seen >= 0:
+        per_frame.append(pcs)  # the last frame runs until the firmware exits
+    # per_frame[0] is frame 0 (warm-up): skip it; the last one also holds the exit path.
+    measured = per_frame[1:-1] if len(per_frame) > 2 else per_frame[1:]
+    if not measured:
+        sys.exit("profile-fw: fewer than two frames in the run; build with FRAMES >= 3")
+
+    by_fn = collections.Counter()
+    for frame in measured:
+        for pc, n in frame.items():
+            i = bisect.bisect_right(starts, pc) - 1
+            by_fn[syms[i][1] if i >= 0 else "?"] += n
+    nf = len(measured)
+    total = sum(by_fn.values())
+    side = {k: by_fn.pop(k) for k in list(by_fn) if k in NOT_PIPELINE}
+    work = total - sum(side.values())
+
+    print(f"| function | instructions/frame | share |")
+    print("|---|---:|---:|")
+    shown = 0
+    for name, n in by_fn.most_common(args.top):
+        print(f"| {name} | {n / nf:.0f} | {100.0 * n / work:.1f}% |")
+        shown += n
+    rest = work - shown
+    if rest > 0:
+        print(f"| (other functions) | {rest / nf:.0f} | {100.0 * rest / work:.1f}% |")
+    print(f"| **total, polling excluded** | **{work / nf:.0f}** | 100% |")
+    print()
+    for name, n in side.items():
+        print(f"{name} (polling DONE_SEQ): {n / nf:.0f} instructions/frame, not counted above")
+    print(f"Mean of {nf} frame(s) (frame 0 and the last skipped); QEMU -icount, one line of "
+          f"the execution log per instruction.")
+
+
+if __name__ == "__main__":
+    main()
