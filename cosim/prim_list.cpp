@@ -9,8 +9,28 @@ extern "C" {
 #include "gpu_regs.h"
 }
 
-bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops, std::string &error)
+// A word of the input as an error message quotes it: bytes outside printable ASCII as \xNN, so a
+// NUL or a control byte in a bad list cannot cut or garble the message.
+static std::string printable(const std::string &word)
 {
+    static const char hex[] = "0123456789abcdef";
+    std::string out;
+    for (const char c : word) {
+        const unsigned char u = static_cast<unsigned char>(c);
+        if (u >= 0x20 && u < 0x7F) {
+            out += c;
+        } else {
+            out += "\\x";
+            out += hex[u >> 4];
+            out += hex[u & 0xF];
+        }
+    }
+    return out;
+}
+
+bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops_out, std::string &error)
+{
+    std::vector<ListOp> ops;  // appended to ops_out only if the whole list is valid
     std::istringstream in(text);
     std::string line;
     int number = 0;
@@ -40,7 +60,7 @@ bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops, std::str
             op.kind = ListOp::ZTri;
             count = 9;
         } else {
-            error = std::to_string(number) + ": unknown primitive '" + word + "' (clear, tri, line, ztri)";
+            error = std::to_string(number) + ": unknown primitive '" + printable(word) + "' (clear, tri, line, ztri)";
             return false;
         }
         std::vector<long> values;
@@ -49,8 +69,10 @@ bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops, std::str
             char *end = nullptr;
             errno = 0;
             const long value = std::strtol(token.c_str(), &end, 10);
-            if (*end != '\0' || errno != 0) {
-                error = std::to_string(number) + ": '" + token + "' is not an integer";
+            // The whole token must be the number: `end` at the token's last byte, not merely at a
+            // NUL byte inside it ("5\0x" is not 5).
+            if (end != token.c_str() + token.size() || errno != 0) {
+                error = std::to_string(number) + ": '" + printable(token) + "' is not an integer";
                 return false;
             }
             values.push_back(value);
@@ -87,6 +109,7 @@ bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops, std::str
         op.color = static_cast<uint32_t>(values[count]);
         ops.push_back(op);
     }
+    ops_out.insert(ops_out.end(), ops.begin(), ops.end());
     return true;
 }
 

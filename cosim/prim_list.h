@@ -19,7 +19,8 @@ struct ListOp {
     uint32_t color;
 };
 
-// Parses text; on error returns false and sets error to "LINE: what is wrong".
+// Parses text and appends its primitives to ops. On error returns false, sets error to
+// "LINE: what is wrong" (LINE counted from 1) and leaves ops as it was.
 bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops, std::string &error);
 
 // One GPU batch: its vertex and index words, whether it clears first, and with what colour.

@@ -19,6 +19,9 @@ check range     "tri 0 0 40000 0 0 16 1\n"            "outside Q12.4"
 check colour    "line 0 0 16 16 256\n"                "not a palette index"
 check negative  "clear -1\n"                          "not a palette index"
 check overflow  "tri 0 0 0 99999999999999999999 0 0 1\n" "not an integer"
+# A NUL byte inside a number used to end it there, so this read as colour 5 (found by
+# tests/fuzz/fuzz_prim_list); the message shows the byte escaped.
+check nul       "clear 0\ntri 0 0 16 0 0 16 5\0x\n"    "2: '5.x00x' is not an integer"
 "$GPUSIM" raster --in "$work/does-not-exist.txt" --out "$work/x" >"$work/missing.out" 2>&1
 [ $? -eq 2 ] && grep -q "cannot read" "$work/missing.out" || { echo "missing file not reported"; exit 1; }
-echo "raster bad input: 8 malformed inputs rejected with a message naming the problem"
+echo "raster bad input: 9 malformed inputs rejected with a message naming the problem"
