@@ -46,7 +46,10 @@ typedef uint16_t fx_angle;
 
 /* One full turn, and compile-time angle constants. */
 #define FX_TURN         65536u
-#define FX_ANGLE_DEG(d) ((fx_angle)((uint32_t)((d) * 65536.0 / 360.0 + 0.5) & 0xFFFFu))
+/* Negative angles wrap (FX_ANGLE_DEG(-35) = 65536 - 6372): rounded to a signed integer first, as
+ * converting a negative double straight to uint32_t is undefined (GCC folds it to 0). */
+#define FX_ANGLE_DEG(d) \
+    ((fx_angle)((uint32_t)(int32_t)((d) * 65536.0 / 360.0 + (((d) >= 0) ? 0.5 : -0.5)) & 0xFFFFu))
 
 /* Slow path of saturation: counts the overflow and returns the clamped value. */
 int32_t fx_saturate(int64_t v);

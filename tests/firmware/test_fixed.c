@@ -208,6 +208,11 @@ void test_fx_angle_wrap(void)
     CHECK_EQ(fx_sin((fx_angle)-16384), -FX_ONE);
     CHECK_EQ(FX_ANGLE_DEG(360), 0);
     CHECK_EQ(FX_ANGLE_DEG(90), 16384);
+    /* Negative angles wrap (found by tests/fuzz/fuzz_input: the conversion used to be undefined
+     * and GCC folded FX_ANGLE_DEG(-35) to 0, so the knot scene lost its start tilt). */
+    CHECK_EQ(FX_ANGLE_DEG(-35), 65536 - 6372);  /* -6371.56 rounds to -6372 */
+    CHECK_EQ(FX_ANGLE_DEG(-90), 49152);
+    CHECK_EQ(FX_ANGLE_DEG(-0.7), 65536 - 127);
     /* Any step size: after 65536 steps the angle is back exactly where it started. */
     for (uint32_t i = 0; i < 65536u; i++) {
         b = (fx_angle)(b + 683u);
