@@ -38,7 +38,7 @@
 /* Exit statuses (the QEMU process exits with these). */
 #define FW_EXIT_OK          0
 #define FW_EXIT_CONFIG      1   /* unknown scene name built in */
-#define FW_EXIT_GPU_INIT    2   /* no GPU, wrong version or geometry */
+#define FW_EXIT_GPU_INIT    2   /* no GPU, wrong version, geometry or capacities */
 #define FW_EXIT_GPU_SUBMIT  3   /* batch rejected by the driver */
 #define FW_EXIT_GPU_TIMEOUT 4   /* the GPU stayed hung through FW_WATCHDOG_GIVE_UP resets */
 #define FW_EXIT_GPU_ERRORS  5   /* the GPU set an ERR_* flag */

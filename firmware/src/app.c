@@ -122,6 +122,12 @@ static void app_report_init_error(int rc, const struct gpu_info *info)
                (unsigned long)info->fb_size, (unsigned long)GPU_FB_WIDTH,
                (unsigned long)GPU_FB_HEIGHT);
         break;
+    case GPU_E_BUFFERS:
+        printf("error: GPU buffer capacities out of range (VTX_CAP=%lu, TRI_CAP=%lu; expected "
+               "3..%lu and 1..%lu)\n",
+               (unsigned long)info->vtx_cap, (unsigned long)info->tri_cap,
+               (unsigned long)GPU_VTX_CAP_MAX, (unsigned long)GPU_TRI_CAP_MAX);
+        break;
     default:
         printf("error: GPU init failed: %s (%d)\n", gpu_strerror(rc), rc);
         break;

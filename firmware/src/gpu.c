@@ -55,6 +55,12 @@ int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n)
     if (info->fb_size != ((GPU_FB_HEIGHT << 16) | GPU_FB_WIDTH)) {
         return GPU_E_GEOMETRY;
     }
+    /* gpu_submit_batch trusts the capacities: they must fit the windows (else buffer words would
+     * land in the next window, or the offset arithmetic would wrap), and hold one triangle. */
+    if (info->vtx_cap < 3u || info->vtx_cap > GPU_VTX_CAP_MAX || info->tri_cap < 1u ||
+        info->tri_cap > GPU_TRI_CAP_MAX) {
+        return GPU_E_BUFFERS;
+    }
     if (n > GPU_PALETTE_ENTRIES || (n > 0u && palette == NULL)) {
         return GPU_E_ARG;
     }
@@ -182,6 +188,8 @@ const char *gpu_strerror(int result)
         return "timeout waiting for DONE_SEQ";
     case GPU_E_ARG:
         return "bad argument";
+    case GPU_E_BUFFERS:
+        return "GPU buffer capacities out of range";
     default:
         return "unknown error";
     }

@@ -56,7 +56,13 @@ enum gpu_result {
     GPU_E_PENDING = -5,    /* a batch was submitted and not yet waited for */
     GPU_E_TIMEOUT = -6,    /* DONE_SEQ did not reach the tag within max_polls reads */
     GPU_E_ARG = -7,        /* bad argument (e.g. palette larger than the palette window) */
+    GPU_E_BUFFERS = -8,    /* VTX_CAP / TRI_CAP beyond their bus windows, or below one triangle */
 };
+
+/* The most vertices and primitives the contract's bus windows can hold: a device reporting more
+ * is not the contract's, and trusting it would send buffer words past their window. */
+#define GPU_VTX_CAP_MAX (GPU_WIN_VTX_BYTES / (4u * GPU_VTX_WORDS))
+#define GPU_TRI_CAP_MAX (GPU_WIN_IDX_BYTES / (4u * GPU_PRIM_WORDS))
 
 /* Capability fields of CAPS. */
 static inline bool gpu_caps_lines(uint32_t caps)
@@ -114,7 +120,8 @@ struct gpu_stats {
 };
 
 /* Read ID/VERSION/CAPS/capacities into dev->info (always, so a caller can report them), then
- * check them: GPU_E_NOT_FOUND, GPU_E_VERSION or GPU_E_GEOMETRY on a mismatch. On success load
+ * check them: GPU_E_NOT_FOUND, GPU_E_VERSION or GPU_E_GEOMETRY on a mismatch, GPU_E_BUFFERS when
+ * VTX_CAP is not in 3 .. GPU_VTX_CAP_MAX or TRI_CAP not in 1 .. GPU_TRI_CAP_MAX. On success load
  * palette[0 .. n-1] (RGB444 words) into the palette window and pick a first tag that differs from
  * the current DOORBELL and DONE_SEQ values. */
 int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n);

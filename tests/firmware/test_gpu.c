@@ -290,6 +290,37 @@ void test_gpu_submit_capacity(void)
     CHECK_EQ(gpu_submit_batch(&dev, &b, &tag), GPU_E_CAPACITY);
 }
 
+/* A device reporting capacities beyond its bus windows (or below one triangle) is refused at
+ * init (found by tests/fuzz/fuzz_gpu_driver: with VTX_CAP = 0xFFFFFFFF a batch at VTX_BASE
+ * 0x20000000 wrapped the offset and wrote vertex slot 0; with VTX_CAP = 0x10000 vertex words
+ * landed in the index window). */
+void test_gpu_init_capacities(void)
+{
+    static const uint32_t bad[][2] = {
+        {0xFFFFFFFFu, GPU_TRI_CAP}, {GPU_VTX_CAP_MAX + 1u, GPU_TRI_CAP}, {2u, GPU_TRI_CAP},
+        {0u, GPU_TRI_CAP}, {GPU_VTX_CAP, GPU_TRI_CAP_MAX + 1u}, {GPU_VTX_CAP, 0u},
+    };
+    struct gpu_dev dev;
+
+    for (unsigned i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        fake_reset();
+        REG(GPU_REG_VTX_CAP) = bad[i][0];
+        REG(GPU_REG_TRI_CAP) = bad[i][1];
+        CHECK_EQ(gpu_init(&dev, test_palette, 3), GPU_E_BUFFERS);
+        CHECK_EQ(fake_write_count, 0u);
+        CHECK_EQ(dev.info.vtx_cap, bad[i][0]);  /* still read, for the error message */
+    }
+    fake_reset();
+    REG(GPU_REG_VTX_CAP) = GPU_VTX_CAP_MAX;
+    REG(GPU_REG_TRI_CAP) = 1u;
+    CHECK_EQ(gpu_init(&dev, test_palette, 3), GPU_OK);
+    fake_reset();
+    REG(GPU_REG_VTX_CAP) = 3u;
+    REG(GPU_REG_TRI_CAP) = GPU_TRI_CAP_MAX;
+    CHECK_EQ(gpu_init(&dev, test_palette, 3), GPU_OK);
+    CHECK(gpu_strerror(GPU_E_BUFFERS)[0] != '\0');
+}
+
 void test_gpu_wait_timeout(void)
 {
     static const uint32_t words[2] = {0};

@@ -110,6 +110,7 @@ void unit_srand(uint32_t seed);
     X(test_gpu_submit)                \
     X(test_gpu_submit_in_place)       \
     X(test_gpu_submit_capacity)       \
+    X(test_gpu_init_capacities)       \
     X(test_gpu_wait_timeout)          \
     X(test_gpu_tag_wrap)              \
     X(test_gpu_read_stats)            \
