@@ -18,6 +18,8 @@ ZBUF_SIM    := $(BUILD)/sim-z-w8/gpusim
 # Firmware (FW_ELF, fw_unit) and golden model (GPU_MODEL_SRC, model_unit) rules.
 include firmware/firmware.mk
 include gpu_model/model.mk
+# libFuzzer targets (FUZZ_BINS, fuzz-build) and `make fuzz`.
+include tests/fuzz/fuzz.mk
 
 RTL_V      := $(sort $(wildcard gpu_rtl/*.v))
 RTL_LINT   := gpu_rtl/lint.vlt
@@ -46,7 +48,8 @@ run-headless: $(FW_ELF) $(GPUSIM)
 test: setup
 	@$(MAKE) --no-print-directory test-quick
 
-test-quick: $(FW_ELF) $(BENCH_SIMS) $(ZBUF_SIM) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit fw-test-deps
+test-quick: $(FW_ELF) $(BENCH_SIMS) $(ZBUF_SIM) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit fw-test-deps \
+            fuzz-build
 	@GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) bash tests/run_all.sh
 
 # ---- the contract: regenerate, or check that the generated files are current ----

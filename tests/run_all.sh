@@ -39,6 +39,10 @@ suite rtl-vs-model-span16    "$BUILD/sim-w16/gpusim" random --seed 6 --batches 2
 suite rtl-vs-model-zbuf      "$BUILD/sim-z-w8/gpusim" random --seed 7 --batches 40 --tris 300
 suite rtl-mesh-exact-once    bash tests/raster/mesh.sh
 suite raster-bad-input       bash tests/raster/bad_input.sh
+suite fuzz-prim-list         bash tests/fuzz/run_fuzz.sh short prim_list
+suite fuzz-input             bash tests/fuzz/run_fuzz.sh short input
+suite fuzz-gpu-model         bash tests/fuzz/run_fuzz.sh short gpu_model
+suite fuzz-gpu-driver        bash tests/fuzz/run_fuzz.sh short gpu_driver
 suite cosim-end-to-end       bash tests/cosim/end_to_end.sh
 suite cosim-kill-qemu        bash tests/cosim/kill.sh qemu
 suite cosim-kill-harness     bash tests/cosim/kill.sh harness

@@ -1,0 +1,61 @@
+# tests/fuzz/fuzz.mk - make fragment: the libFuzzer targets (clang 14, ASan + UBSan), `make fuzz`
+# and the short deterministic run of `make test`. Included by the top-level Makefile after it
+# defines BUILD; FW_PURE_SRCS comes from firmware/firmware.mk.
+#
+#   make fuzz                   every target for FUZZ_SECONDS (60) seconds, corpus kept in
+#                               $(BUILD)/fuzz/corpus-<name>, crashes in $(BUILD)/fuzz/artifacts/
+#   make fuzz FUZZ_TARGETS=input FUZZ_SECONDS=600
+#   make fuzz-build             build only
+#
+# Every target is built with -fsanitize=fuzzer,address,undefined and -fno-sanitize-recover, so
+# any sanitizer report stops it like a failed property check. The golden model is compiled without
+# comparison tracing (-fno-sanitize-coverage=trace-cmp): its pixel loops would otherwise dominate
+# the time, and its branches are reached by the harnesses' own choice of values. Warnings are not
+# errors here: the sources are other owners', built by their own rules with -Werror already, and a
+# new clang warning must not break `make test`.
+
+FUZZ_CC      ?= clang-14
+FUZZ_CXX     ?= clang++-14
+FUZZ_SECONDS ?= 60
+FUZZ_TARGETS ?= prim_list input gpu_model gpu_driver
+FUZZ_DIR     := $(BUILD)/fuzz
+FUZZ_SAN     := -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
+FUZZ_CFLAGS  := -std=c11 -g -O1 -Wall -Wextra $(FUZZ_SAN)
+FUZZ_CXXFLAGS := -std=c++17 -g -O1 -Wall -Wextra $(FUZZ_SAN)
+FUZZ_BINS    := $(foreach t,$(FUZZ_TARGETS),$(FUZZ_DIR)/fuzz_$(t))
+
+FUZZ_FW_HDRS := $(wildcard firmware/src/*.h firmware/include/*.h)
+
+# The golden model, instrumented for ASan/UBSan and coverage but not comparison tracing.
+$(FUZZ_DIR)/gpu_model.o: gpu_model/gpu_model.c $(GPU_MODEL_HDR)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(filter-out $(FUZZ_SAN),$(FUZZ_CFLAGS)) \
+	  -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all \
+	  -fno-sanitize-coverage=trace-cmp -Igpu_model -Ifirmware/include -c $< -o $@
+
+$(FUZZ_DIR)/fuzz_prim_list: tests/fuzz/fuzz_prim_list.cpp cosim/prim_list.cpp cosim/prim_list.h \
+                            firmware/include/gpu_regs.h
+	@mkdir -p $(dir $@)
+	$(FUZZ_CXX) $(FUZZ_CXXFLAGS) -Icosim -Ifirmware/include $(filter %.cpp,$^) -o $@
+
+$(FUZZ_DIR)/fuzz_input: tests/fuzz/fuzz_input.c $(FW_PURE_SRCS) $(FUZZ_FW_HDRS)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Ifirmware/include -Ifirmware/src $(filter %.c,$^) -lm -o $@
+
+$(FUZZ_DIR)/fuzz_gpu_model: tests/fuzz/fuzz_gpu_model.c $(FUZZ_DIR)/gpu_model.o $(GPU_MODEL_HDR)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Igpu_model -Ifirmware/include $(filter %.c %.o,$^) -o $@
+
+$(FUZZ_DIR)/fuzz_gpu_driver: tests/fuzz/fuzz_gpu_driver.c firmware/src/gpu.c firmware/src/batch.c \
+                             $(FUZZ_DIR)/gpu_model.o tests/fuzz/driver_bsp/bsp.h $(FUZZ_FW_HDRS) \
+                             $(GPU_MODEL_HDR)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Itests/fuzz/driver_bsp -Igpu_model -Ifirmware/include \
+	  -Ifirmware/src $(filter %.c %.o,$^) -o $@
+
+.PHONY: fuzz fuzz-build
+fuzz-build: $(FUZZ_BINS)
+
+fuzz: setup
+	@$(MAKE) --no-print-directory fuzz-build
+	@FUZZ_DIR=$(FUZZ_DIR) FUZZ_SECONDS=$(FUZZ_SECONDS) bash tests/fuzz/run_fuzz.sh long $(FUZZ_TARGETS)
