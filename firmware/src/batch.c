@@ -34,17 +34,14 @@ static inline void batch_put_vertex(uint32_t *w, const struct proj_vertex *v)
 #endif
 }
 
-/* Primitive p with batch vertex numbers s0, s1, s2. */
+#if !BATCH_NATIVE_WORDS
+/* Primitive p with batch vertex numbers s0, s1, s2 (the native layout writes words inline). */
 static inline void batch_put_prim(uint32_t *w, const struct render_prim *p, uint32_t s0,
                                   uint32_t s1, uint32_t s2)
 {
-#if BATCH_NATIVE_WORDS
-    w[0] = s0 | (s1 << 16);
-    w[1] = s2 | (p->w[1] & 0xFFFF0000u);  /* colour and kind are already in place */
-#else
     gpu_pack_prim(w, (uint16_t)s0, (uint16_t)s1, (uint16_t)s2, p->color, p->kind);
-#endif
 }
+#endif
 
 /* The vertex's slot in the current batch, writing it there first if the batch lacks it.
  * *nv counts the batch's vertices so far. */

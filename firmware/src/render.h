@@ -66,8 +66,10 @@ struct render_stats {
 struct render_frame {
     struct proj_vertex vert[RENDER_MAX_VERTS];
     struct render_prim prim[RENDER_MAX_PRIMS];
-    /* (draw key << 16) | primitive index, in emission order; after render_sort, in draw order.
-     * The draw key is 65535 minus the depth key: ascending = far to near (sort.h). */
+    /* (draw key << 16) | primitive index, one per primitive, in emission order; after
+     * render_sort, the first sorted_count in draw order. Primitives emitted after the sort (the
+     * overlay) keep items naming themselves, so sort_item[i]'s index is the i-th primitive to
+     * draw for every i. The draw key is 65535 minus the depth key: ascending = far to near. */
     uint32_t sort_item[RENDER_MAX_PRIMS];
     uint32_t sort_tmp[RENDER_MAX_PRIMS];
     struct sort_scratch sort;
@@ -167,10 +169,10 @@ void render_sort(struct render_frame *f);
 void render_overlay_crosshair(struct render_frame *f, const struct render_pass *pass,
                               int32_t half_px, uint8_t color);
 
-/* Index of the i-th primitive to draw (sorted ones, then the overlay). */
+/* Index of the i-th primitive to draw (sorted ones, then the overlay; see sort_item). */
 static inline uint32_t render_draw_index(const struct render_frame *f, uint32_t i)
 {
-    return (i < f->sorted_count) ? (f->sort_item[i] & 0xFFFFu) : i;
+    return f->sort_item[i] & 0xFFFFu;
 }
 
 /* The depth key of primitive i (larger = farther), as emitted. Before render_sort only. */

@@ -7,7 +7,8 @@
  * The input: the device's identity registers, then commands: raw batches with arbitrary bases,
  * counts and buffer words; waits with few polls; resets; hangs; and whole frames — arbitrary
  * well-formed draw lists (render_frame as render.c leaves it: indices below vert_count, the first
- * sorted_count in a shuffled draw order; batch_fill does not check this precondition) cut by
+ * sorted_count items in a shuffled draw order, the rest naming themselves; batch_fill does not
+ * check this precondition) cut by
  * batch_fill and submitted as app.c does.
  *
  * Properties (a violation aborts; ASan + UBSan are on):
@@ -191,7 +192,9 @@ static uint32_t take_value(struct reader *r)
 static uint32_t vtx_words[WIN_VTX_MAX * GPU_VTX_WORDS];
 static uint32_t prim_words[WIN_IDX_MAX * GPU_PRIM_WORDS];
 static struct render_frame frame;
-static struct batch_words words;
+static uint32_t batch_vtx[GPU_VTX_CAP * GPU_VTX_WORDS];
+static uint32_t batch_prim[GPU_TRI_CAP * GPU_PRIM_WORDS];
+static struct batch_words words = {batch_vtx, batch_prim, 0, 0};
 
 /* Submit through the driver with the bus open exactly for this batch; check the outcome. */
 static int submit(struct gpu_dev *dev, const struct gpu_batch *b, uint32_t *tag)
@@ -302,6 +305,9 @@ static void make_frame(struct reader *r)
     }
     for (uint32_t i = 0; i < frame.sorted_count; i++) {
         frame.sort_item[i] |= (uint32_t)take8(r) << 16;  /* a draw key above the index */
+    }
+    for (uint32_t i = frame.sorted_count; i < np; i++) {
+        frame.sort_item[i] = 0xFFFF0000u | i;  /* the overlay's items name themselves */
     }
 }
 

@@ -58,7 +58,9 @@ static struct scene scene;          /* large: static, like app.c's */
 static struct scene started[SCENE_COUNT];
 static bool started_valid[SCENE_COUNT];
 static struct render_frame frame;
-static struct batch_words words;
+static uint32_t batch_vtx[GPU_VTX_CAP * GPU_VTX_WORDS];
+static uint32_t batch_prim[GPU_TRI_CAP * GPU_PRIM_WORDS];
+static struct batch_words words = {batch_vtx, batch_prim, 0, 0};
 
 static double unit_d(unit_t u)
 {
