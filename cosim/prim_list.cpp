@@ -123,7 +123,12 @@ std::vector<Batch> prim_list_batches(const std::vector<ListOp> &ops, uint32_t vt
     batches.back().depth = depth;
     for (const ListOp &op : ops) {
         if (op.kind == ListOp::Clear) {
-            batches.emplace_back();
+            // A clear while the current batch has no primitive yet (the list's start, or a clear just
+            // before) becomes that batch's clear: an empty batch of its own would only cost the GPU a
+            // clear more (the first batch of a depth list always clears depth).
+            if (!batches.back().idx.empty()) {
+                batches.emplace_back();
+            }
             batches.back().depth = depth;
             batches.back().clear = true;
             batches.back().clear_color = op.color;

@@ -32,7 +32,8 @@ struct Batch {
     std::vector<uint32_t> idx;   // 2 words per primitive
 };
 
-// Splits ops into batches that fit the capacities; a `clear` starts a new batch.
+// Splits ops into batches that fit the capacities; a `clear` starts a new batch (or, when the current
+// batch has no primitive yet, becomes its clear).
 std::vector<Batch> prim_list_batches(const std::vector<ListOp> &ops, uint32_t vtx_cap, uint32_t tri_cap);
 
 #endif
