@@ -9,9 +9,13 @@
 // RAM has one read port and a primitive needs three vertices); the index read of the next primitive
 // and the setup arithmetic overlap with the vertex reads, so the walker is fed while it draws.
 // Latency from a primitive's index read to its descriptor: 6 clocks. Rejected primitives take 1-2.
+// A depth-tested triangle (ENABLE_ZBUF, CTRL.ZTEST) holds stage B for the depth-plane division:
+// ceil(31 / DIV_QBITS) + 2 clocks (18), its throughput then; the fetch of the next primitives and
+// the walk of the previous ones go on meanwhile, so large triangles hide it completely.
 //
 // Pipeline: fetch FSM -> stage A (vertices) -> stage B (area, box, line endpoints) -> stage C
-// (the descriptor: edge values at the first span, steps, line Bresenham state). A stage loads when it
+// (the descriptor: edge values at the first span, steps, line Bresenham state, depth at the first
+// span and its steps). A stage loads when it
 // is empty or the stage after it moves; a full descriptor with out_ready low stalls everything behind.
 //
 // Widths: see gpu_raster.v for the edge-function range argument (34 bits needed, EDGE_W = 36).
@@ -22,8 +26,12 @@ module gpu_prim_setup #(
     parameter integer TRI_CAP = 512,
     parameter integer SPAN_W = 8,
     parameter integer ENABLE_LINES = 1,
-    parameter integer ENABLE_ZBUF = 0,   // depth-plane set-up (adds a 32-clock division per triangle
-                                         // while CTRL.ZTEST is on)
+    parameter integer ENABLE_ZBUF = 0,   // depth-plane set-up (a division per triangle while
+                                         // CTRL.ZTEST is on)
+    parameter integer DIV_QBITS = 2,     // quotient bits per clock of the depth dividers: a depth-
+                                         // tested triangle holds stage B ceil(31 / DIV_QBITS) + 2
+                                         // clocks (18 with 2; 1 halves the dividers' subtractors
+                                         // and takes 33, 3 more than doubles them and takes 13)
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer PRIM_W = $clog2(TRI_CAP + 1),
@@ -371,36 +379,34 @@ module gpu_prim_setup #(
             wire signed [50:0] num_a = 51'(dz1 * dy2 - dz2 * dy1) <<< 16;
             wire signed [50:0] num_b = 51'(dz2 * dx1 - dz1 * dx2) <<< 16;
             wire need = b_valid_q && !b_is_line_q && ctrl_ztest && b_drawable;
-            reg started_q, ready_q;
-            wire busy_a, busy_b, done_a, done_b;
+            reg started_q;             // this triangle's division has been started
+            wire div_start = need && !started_q;
+            wire valid_a, valid_b;     // the quotients are ready (both dividers take the same time)
             wire signed [31:0] za, zb;
-            gpu_div u_div_a (.clk(clk), .rst(rst), .start(need && !started_q), .dividend(num_a),
-                             .divisor(b_area_q), .busy(busy_a), .done(done_a), .quotient(za));
-            gpu_div u_div_b (.clk(clk), .rst(rst), .start(need && !started_q), .dividend(num_b),
-                             .divisor(b_area_q), .busy(busy_b), .done(done_b), .quotient(zb));
-            reg signed [31:0] za_q, zb_q;
+            gpu_div #(.QBITS(DIV_QBITS)) u_div_a (.clk(clk), .rst(rst), .start(div_start),
+                .dividend(num_a), .divisor(b_area_q), .valid(valid_a), .quotient(za));
+            gpu_div #(.QBITS(DIV_QBITS)) u_div_b (.clk(clk), .rst(rst), .start(div_start),
+                .dividend(num_b), .divisor(b_area_q), .valid(valid_b), .quotient(zb));
             always @(posedge clk) begin
                 if (rst || b_leaves || !b_valid_q) begin
                     started_q <= 1'b0;
-                    ready_q <= 1'b0;
-                end else begin
-                    if (need && !started_q) started_q <= 1'b1;
-                    if (done_a) begin  // both dividers take the same number of clocks
-                        ready_q <= 1'b1;
-                        za_q <= za;
-                        zb_q <= zb;
-                    end
+                end else if (div_start) begin
+                    started_q <= 1'b1;
                 end
             end
-            assign b_z_ready = !need || ready_q;
+            // Timeline in stage B: clock 0 starts both dividers from B's registers, the next STEPS
+            // clocks develop the quotients, and in the clock after they are valid and stage C takes
+            // them straight from the dividers (they hold until the next start, a clock later at the
+            // earliest): STEPS + 2 clocks a depth-tested triangle.
+            assign b_z_ready = !need || (started_q && valid_a);
             // Depth at lane 0 of the first span: 2^16 z0 + ZA (pcx - x0) + ZB (pcy - y0).
             wire signed [17:0] off_x = pcx - 18'(bx0_q);  // -32759 .. 37896: 17 bits
             wire signed [17:0] off_y = pcy - 18'(by0_q);
             assign z_start_w = (Z_W'($signed({1'b0, bz0_q})) <<< 16)
-                             + Z_W'(za_q) * Z_W'(off_x) + Z_W'(zb_q) * Z_W'(off_y);
-            assign z_dx_w = ZSTEP_W'(za_q) <<< 4;
-            assign z_dy_w = ZSTEP_W'(zb_q) <<< 4;
-            wire unused_div = busy_a | busy_b | done_b;
+                             + Z_W'(za) * Z_W'(off_x) + Z_W'(zb) * Z_W'(off_y);
+            assign z_dx_w = ZSTEP_W'(za) <<< 4;
+            assign z_dy_w = ZSTEP_W'(zb) <<< 4;
+            wire unused_div = valid_b;
         end else begin : g_no_z
             assign b_z_ready = 1'b1;
             assign z_start_w = {Z_W{1'b0}};

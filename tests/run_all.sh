@@ -26,6 +26,7 @@ suite() {
 
 suite contract-generated     "$PYTHON" tools/gen_contract.py --check
 suite rtl-lint               verilator --lint-only -Wall --top-module gpu_top -Igpu_rtl gpu_rtl/lint.vlt gpu_rtl/*.v
+suite rtl-div-unit           bash tests/rtl/div.sh
 suite firmware-unit          "$BUILD/tests/fw_unit"
 suite firmware-unit-float    "$BUILD/tests/fw_unit_float"
 suite firmware-no-gpu         bash tests/firmware/no_gpu.sh
