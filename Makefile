@@ -11,6 +11,7 @@ PYTHON      ?= python3
 VERILATOR   ?= verilator
 
 SPAN_W      ?= 8
+ZBUF        ?= 0
 GPUSIM      := $(BUILD)/sim-w$(SPAN_W)/gpusim
 BENCH_SIMS  := $(foreach w,1 4 8 16,$(BUILD)/sim-w$(w)/gpusim)
 ZBUF_SIM    := $(BUILD)/sim-z-w8/gpusim
@@ -73,7 +74,7 @@ raster: $(GPUSIM)
 	$(GPUSIM) raster --in $(IN) --out $(OUT)
 
 # ---- GPU performance, counted in simulated cycles, for each span width ----
-bench-gpu: $(BENCH_SIMS) $(FW_ELF)
+bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(FW_ELF)
 	@rm -rf $(BUILD)/bench-gpu/scene-lists && mkdir -p $(BUILD)/bench-gpu/scene-lists
 	@$(GPUSIM) cosim --fw $(FW_ELF) --frames $(BUILD)/bench-gpu/scene-frames --no-model-check \
 	  --dump-lists $(BUILD)/bench-gpu/scene-lists >/dev/null
@@ -82,7 +83,7 @@ bench-gpu: $(BENCH_SIMS) $(FW_ELF)
 # ---- synthesis: yosys for 7-series (resource counts) and iCE40 place-and-route (fmax) ----
 synth:
 	@bash tools/setup.sh packages-synth.txt
-	@bash synth/synth.sh $(BUILD)
+	@ZBUF=$(ZBUF) bash synth/synth.sh $(BUILD)
 
 # ---- host-side simulator: Verilated GPU + co-simulation bridge + golden model ----
 HOST_OBJ := $(patsubst %.c,$(BUILD)/host/%.o,$(HOST_C))

@@ -4,16 +4,19 @@
 #  2. iCE40 HX8K place-and-route (nextpnr-ice40) of the span walker (synth/ice40_walker_core.v,
 #     SPAN_W=4): utilisation and fmax. (The whole rasterizer needs ~12k LUT4 on an iCE40 for its
 #     set-up multipliers, measured, and does not fit the 7680 of the largest part.)
-# Usage: synth.sh BUILD_DIR. Prints a Markdown table; logs in BUILD_DIR/synth/.
+# Usage: [ZBUF=1] synth.sh BUILD_DIR (ZBUF=1: gpu_top with ENABLE_ZBUF in step 1). Prints a Markdown
+# table; logs in BUILD_DIR/synth/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${1:-build}/synth"
 mkdir -p "$out"
 rtl=$(ls gpu_rtl/*.v | grep -v gpu_top.v | tr '\n' ' ')
+zbuf="${ZBUF:-0}"
+[ "$zbuf" = 1 ] && zlabel="depth buffer" || zlabel="no z"
 
-echo "synth: yosys synth_xilinx (xc7) on gpu_top ..." >&2
+echo "synth: yosys synth_xilinx (xc7) on gpu_top, ENABLE_ZBUF=$zbuf ..." >&2
 yosys -q -l "$out/xc7.log" 2>"$out/xc7.warnings" -p "read_verilog -sv -Igpu_rtl $rtl gpu_rtl/gpu_top.v; \
-    synth_xilinx -family xc7 -top gpu_top -flatten; tee -q -o $out/xc7_stat.txt stat" >/dev/null
+    chparam -set ENABLE_ZBUF $zbuf gpu_top; synth_xilinx -family xc7 -top gpu_top -flatten; tee -q -o $out/xc7_stat.txt stat" >/dev/null
 
 count() { awk -v pat="$1" '$1 ~ pat && $2 ~ /^[0-9]+$/ { n += $2 } END { print n + 0 }' "$out/xc7_stat.txt"; }
 luts=$(count '^LUT[1-6]$')
@@ -35,5 +38,5 @@ ebr=$(grep -o "ICESTORM_RAM: *[0-9]*/ *[0-9]*" "$out/nextpnr.log" | tail -1 | tr
 
 echo "| target | design | LUT | FF | BRAM36 (+BRAM18) | LUTRAM | DSP | CARRY4 | fmax |"
 echo "|---|---|---:|---:|---:|---:|---:|---:|---:|"
-echo "| xc7 (synth_xilinx) | gpu_top, SPAN_W=8, lines, no z | $luts | $ffs | $bram36 (+$bram18) | $lutram | $dsps | $carry | (not placed) |"
+echo "| xc7 (synth_xilinx) | gpu_top, SPAN_W=8, lines, $zlabel | $luts | $ffs | $bram36 (+$bram18) | $lutram | $dsps | $carry | (not placed) |"
 echo "| iCE40 HX8K (nextpnr) | span walker, SPAN_W=4 | ${lcs#ICESTORM_LC: } LC | | ${ebr#ICESTORM_RAM: } EBR | | | | $fmax |"

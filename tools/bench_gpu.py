@@ -5,6 +5,13 @@ clears), for each span width, on three workloads:
   large  - 24 large random triangles over the screen (no clear)
   scene  - the default scene's buffers, every frame, as the firmware submitted them (with clears)
   tiny   - 10,000 random triangles of at most 2 px across (no clear)
+and, on the depth-buffer build (sim-z-w8, SPAN_W = 8 only), the large and tiny triangles again as
+depth-tested `ztri` with random vertex depths (the first batch clears the depth buffer; its
+320 * 240 / SPAN_W clocks are left out of these rows' cycles, and their pixels are those written, i.e.
+that passed the depth test):
+  zlarge - the large triangles, depth-tested
+  ztiny  - the tiny triangles, depth-tested (those that cover a pixel centre each need the depth-plane
+           division)
 
     bench_gpu.py BUILD SCENE_LISTS_DIR
 """
@@ -32,6 +39,16 @@ def write_tiny(path, rng):
             f.write("tri %d %d %d %d %d %d %d\n" % (*pts[0], *pts[1], *pts[2], rng.randint(1, 255)))
 
 
+def write_depth(path, src, rng):
+    """The triangles of src again, as ztri with random vertex depths."""
+    with open(src) as f, open(path, "w") as out:
+        for line in f:
+            v = line.split()
+            z = [rng.randint(0, 65535) for _ in range(3)]
+            out.write("ztri %s %s %d %s %s %d %s %s %d %s\n" % (v[1], v[2], z[0], v[3], v[4], z[1], v[5], v[6],
+                                                                z[2], v[7]))
+
+
 def write_scene(path, lists_dir):
     with open(path, "w") as f:
         for name in sorted(os.listdir(lists_dir)):
@@ -49,16 +66,21 @@ def main():
     write_large(workloads["large"], rng)
     write_scene(workloads["scene"], lists_dir)
     write_tiny(workloads["tiny"], rng)
+    zworkloads = {"zlarge": os.path.join(work, "zlarge.txt"), "ztiny": os.path.join(work, "ztiny.txt")}
+    write_depth(zworkloads["zlarge"], workloads["large"], rng)
+    write_depth(zworkloads["ztiny"], workloads["tiny"], rng)
 
+    runs = [(os.path.join(build, "sim-w%d" % width, "gpusim"), width, workloads) for width in WIDTHS]
+    runs.append((os.path.join(build, "sim-z-w8", "gpusim"), 8, zworkloads))
     rows = []
-    for width in WIDTHS:
-        sim = os.path.join(build, "sim-w%d" % width, "gpusim")
-        for name, path in workloads.items():
+    for sim, width, loads in runs:
+        for name, path in loads.items():
             out = os.path.join(work, "%s-w%d" % (name, width))
             print("bench-gpu: %s, SPAN_W=%d ..." % (name, width), file=sys.stderr, flush=True)
             subprocess.run([sim, "raster", "--in", path, "--out", out], check=True, stdout=subprocess.DEVNULL)
             s = json.load(open(os.path.join(out, "stats.json")))
-            rows.append((name, width, s["prims_in"], s["pixels"], s["busy_cycles"], s["spans_visited"]))
+            cycles = s["busy_cycles"] - (320 * 240 // width if name.startswith("z") else 0)
+            rows.append((name, width, s["prims_in"], s["pixels"], cycles, s["spans_visited"]))
 
     print("| workload | SPAN_W | primitives | pixels written | busy cycles | covered px/clk | clk/primitive |")
     print("|---|---:|---:|---:|---:|---:|---:|")
