@@ -20,6 +20,13 @@
 #define FW_PROFILE 0
 #endif
 
+/* Fraction bits kept in projected screen coordinates, 0..4 (the contract's Q12.4 carries 4):
+ * fewer bits round every vertex to a coarser grid (0: whole pixels). An accuracy knob for
+ * `make bench-error`; 4, the default, builds exactly the full-precision code. make FW_SUBPIXEL_BITS=... */
+#ifndef FW_SUBPIXEL_BITS
+#define FW_SUBPIXEL_BITS 4
+#endif
+
 /* The watchdog: reads of DONE_SEQ before a batch counts as lost. One poll is 4 instructions
  * (lw, addi, bne, beq); under QEMU -icount 2^28 polls take about 3 s of host time (measured); 2^31
  * would then take ~25 s (extrapolated), two orders of magnitude more than a co-simulated batch needs (the vsync wait is

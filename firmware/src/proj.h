@@ -46,6 +46,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "fw_config.h"
 #include "gpu_regs.h"
 #include "vec.h"
 
@@ -54,6 +55,15 @@
 #define PROJ_GUARD_Q4    (1536 * 16)      /* guard band half-width, Q12.4 */
 #define PROJ_DEPTH_MAX   21845u           /* 3 * 21845 = 65535 */
 #define PROJ_DEPTH_SCALE 128              /* depth units per view unit */
+
+/* Sub-pixel precision of projected vertices (FW_SUBPIXEL_BITS, fw_config.h): the screen offsets
+ * are rounded once, to the nearest multiple of PROJ_SUBPIXEL_STEP Q12.4 units. At the default 4
+ * bits the step is 1 and every expression below folds back to the full-precision code. */
+#if FW_SUBPIXEL_BITS < 0 || FW_SUBPIXEL_BITS > 4
+#error "FW_SUBPIXEL_BITS must be 0..4 (Q12.4 screen coordinates carry 4 fraction bits)"
+#endif
+#define PROJ_SUBPIXEL_DROP (4 - FW_SUBPIXEL_BITS)
+#define PROJ_SUBPIXEL_STEP ((int32_t)1 << PROJ_SUBPIXEL_DROP)
 
 /* Pixel-centre limits of the screen in Q12.4 (contract: centres at 16 px + 8). */
 #define PROJ_X_FIRST 8
@@ -160,12 +170,12 @@ static inline __attribute__((always_inline)) void proj_point_impl(const struct p
         const uint32_t m = fx_normalize32((uint32_t)v.z, &s);  /* z >= 2^14: s in [1, 17] */
         const uint32_t y = fx_recip_mantissa(m);
         const int32_t q = (int32_t)fx_mulhu(y, ps->focal_hi);  /* < 2^31 */
-        const int32_t sh = 21 - s;                             /* 4 .. 20 */
+        const int32_t sh = 21 - s + PROJ_SUBPIXEL_DROP;        /* 4 .. 24 */
         const int32_t half = (int32_t)1 << (sh - 1);
         const int32_t zsh = 33 - s;                            /* 16 .. 32 */
 
-        off_x = (fx_mulh(v.x * 8, q) + half) >> sh;
-        off_y = (fx_mulh(v.y * 8, q) + half) >> sh;
+        off_x = ((fx_mulh(v.x * 8, q) + half) >> sh) * PROJ_SUBPIXEL_STEP;
+        off_y = ((fx_mulh(v.y * 8, q) + half) >> sh) * PROJ_SUBPIXEL_STEP;
         /* near / z in 0.16 = Y 2^(s - 33) for near = 2^-2; <= 2^16 */
         zbuf = 0u;
         if (ps->zbuf) {
@@ -177,8 +187,11 @@ static inline __attribute__((always_inline)) void proj_point_impl(const struct p
 #else
     {
         const float inv_z = 1.0f / v.z;
-        const float k = (float)ps->focal_q4 * inv_z;
-        const float limit = 8.0f * PROJ_GUARD_Q4;  /* keeps the conversions below in range */
+        /* In units of PROJ_SUBPIXEL_STEP: focal_q4 = 16 focal_px, so the shift is exact, and a
+         * power-of-two scale of k scales fx and fy exactly. */
+        const float k = (float)(ps->focal_q4 >> PROJ_SUBPIXEL_DROP) * inv_z;
+        /* keeps the conversions below in range */
+        const float limit = 8.0f * PROJ_GUARD_Q4 / PROJ_SUBPIXEL_STEP;
         float fx = v.x * k;
         float fy = v.y * k;
         const float nz = ps->near * inv_z;
@@ -186,8 +199,8 @@ static inline __attribute__((always_inline)) void proj_point_impl(const struct p
 
         fx = (fx > limit) ? limit : ((fx < -limit) ? -limit : fx);
         fy = (fy > limit) ? limit : ((fy < -limit) ? -limit : fy);
-        off_x = real_round_int(fx);
-        off_y = real_round_int(fy);
+        off_x = real_round_int(fx) * PROJ_SUBPIXEL_STEP;
+        off_y = real_round_int(fy) * PROJ_SUBPIXEL_STEP;
         zbuf = (!ps->zbuf || nz >= 1.0f) ? 0u : (uint32_t)(65535.0f * (1.0f - nz));
         depth = (fd >= (float)PROJ_DEPTH_MAX) ? PROJ_DEPTH_MAX : (uint32_t)fd;
     }
