@@ -20,6 +20,12 @@
 #define FW_PROFILE 0
 #endif
 
+/* 1: the depth test starts on (if the GPU has a depth buffer, CAPS_ZBUF), as if Z had been pressed
+ * before the first frame. Used by `make bench-error`; the Z key still toggles it. */
+#ifndef FW_DEPTH_TEST
+#define FW_DEPTH_TEST 0
+#endif
+
 /* Fraction bits kept in projected screen coordinates, 0..4 (the contract's Q12.4 carries 4):
  * fewer bits round every vertex to a coarser grid (0: whole pixels). An accuracy knob for
  * `make bench-error`; 4, the default, builds exactly the full-precision code. make FW_SUBPIXEL_BITS=... */

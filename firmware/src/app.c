@@ -379,7 +379,10 @@ int app_run(void)
     input_decoder_init(&app->decoder);
     app->wireframe = false;
     app->anaglyph = false;
-    app->depth_test = false;
+    app->depth_test = FW_DEPTH_TEST && gpu_caps_zbuf(app->gpu.info.caps);
+    if (app->depth_test) {
+        printf("depth buffer on (FW_DEPTH_TEST)\n");
+    }
     app->lost_in_a_row = 0;
     app_start_scene(app, desc);
     app_report_lines(app);
