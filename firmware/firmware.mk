@@ -12,6 +12,8 @@
 #   FW_PLATFORM    bsp/<platform>/ to build for           (default qemu_virt)
 #   FW_MAX_POLLS   optional -DFW_GPU_MAX_POLLS override (the watchdog: DONE_SEQ reads per batch)
 #   FW_PROFILE     1: every frame also prints where its instructions went (app.c)
+#   FW_SUBPIXEL_BITS  fraction bits kept in projected vertices, 0..4 (default: 4, the contract's
+#                  Q12.4); an accuracy knob (proj.h), measured by `make bench-error`
 #   GPUSIM         the co-simulator (set by the top-level Makefile), for bench-fw
 #
 # Outputs:
@@ -21,7 +23,11 @@
 #   $(FW_UNIT)      = $(BUILD)/tests/fw_unit, host unit tests of the pure code (fixed backend)
 #   $(FW_UNIT_FLOAT)= $(BUILD)/tests/fw_unit_float, the same tests on the float backend
 #   fw-test-deps    everything tests/scenes/*.sh needs (scene ELFs and host builds with
-#                   FW_TEST_FRAMES frames under $(BUILD)/fw-test, the watchdog test ELF)
+#                   FW_TEST_FRAMES frames under $(BUILD)/fw-test, the watchdog test ELF, the
+#                   explicit FW_SUBPIXEL_BITS=4 build of tetra)
+#   $(FW_ERR_ELFS)  `make bench-error`'s firmware under $(BUILD)/fw-error: FW_ERR_FRAMES frames of
+#                   every scene, fixed and float, and with the depth test on from the start
+#                   (FW_DEPTH_TEST=1) fixed, float and float with 2 and 0 sub-pixel bits
 # Convenience targets: fw, fw-all (every scene, both backends), fw-host, fw-unit, fw-smoke,
 # bench-fw (the instruction-count table of every scene and backend, measured in co-simulation),
 # profile-fw (one scene's instructions per function and frame).
@@ -39,6 +45,7 @@ HOST_CFLAGS ?= -std=c11 -O2 -g -Wall -Wextra -Werror
 FW_PLATFORM ?= qemu_virt
 FW_MAX_POLLS ?=
 FW_PROFILE  ?=
+FW_SUBPIXEL_BITS ?=
 GPUSIM      ?= $(BUILD)/sim/gpusim
 
 include bsp/$(FW_PLATFORM)/bsp.mk
@@ -51,6 +58,9 @@ $(error SCENE=$(SCENE) is not one of: $(FW_SCENES))
 endif
 ifeq ($(filter $(FW_BACKEND),$(FW_BACKENDS)),)
 $(error FW_BACKEND=$(FW_BACKEND) is not one of: $(FW_BACKENDS))
+endif
+ifneq ($(filter-out 0 1 2 3 4,$(FW_SUBPIXEL_BITS)),)
+$(error FW_SUBPIXEL_BITS=$(FW_SUBPIXEL_BITS) is not one of: 0 1 2 3 4)
 endif
 
 # name of a (scene, backend) build: tetra, tetra-float
@@ -79,6 +89,12 @@ FW_PNG_LIBS   := $(or $(shell pkg-config --libs libpng 2>/dev/null),-lpng)
 FW_WARN := -std=c11 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes
 FW_BACKEND_DEFS_fixed :=
 FW_BACKEND_DEFS_float := -DFW_BACKEND_FLOAT=1
+# Object variants: the two backends take the command line's FW_SUBPIXEL_BITS; <backend>-sp<N>
+# (bench-error, and one test) are a backend with N sub-pixel bits, whatever the command line says.
+FW_VARIANT_DEFS_fixed := $(if $(FW_SUBPIXEL_BITS),-DFW_SUBPIXEL_BITS=$(FW_SUBPIXEL_BITS))
+FW_VARIANT_DEFS_float := $(FW_VARIANT_DEFS_fixed)
+FW_SP_VARIANTS := fixed-sp4 float-sp0 float-sp2
+$(foreach v,$(FW_SP_VARIANTS),  $(eval FW_BACKEND_DEFS_$(v) := $(FW_BACKEND_DEFS_$(word 1,$(subst -, ,$(v)))))  $(eval FW_VARIANT_DEFS_$(v) := -DFW_SUBPIXEL_BITS=$(patsubst sp%,%,$(word 2,$(subst -, ,$(v))))))
 # -ffp-contract=off: no fused multiply-adds, so the float backend rounds identically on the host
 # and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
 # -fno-tree-loop-distribute-patterns: GCC would turn the pipeline's clearing loops (the sort's
@@ -103,11 +119,12 @@ endef
 # $(1) = backend
 define FW_BACKEND_RULES
 FW_OBJ_DIR_$(1)   := $(BUILD)/firmware/obj-$(1)
-FW_CFLAGS_$(1)    := $(FW_CFLAGS_BASE) $(FW_BACKEND_DEFS_$(1))
+FW_CFLAGS_$(1)    := $(FW_CFLAGS_BASE) $(FW_BACKEND_DEFS_$(1)) $(FW_VARIANT_DEFS_$(1))
 FW_OBJS_$(1)      := $$(patsubst %.c,$$(FW_OBJ_DIR_$(1))/%.o,$(FW_PURE_SRCS) $(FW_DRIVER_SRC) \
                      $(FW_MAIN_SRC) $(FW_BSP_SRCS))
 HOST_OBJ_DIR_$(1) := $(BUILD)/fw-host/obj-$(1)
-FW_HOST_CFLAGS_$(1) = $(FW_HOST_CFLAGS_BASE) $(FW_BACKEND_DEFS_$(1)) $(FW_PNG_CFLAGS)
+FW_HOST_CFLAGS_$(1) = $(FW_HOST_CFLAGS_BASE) $(FW_BACKEND_DEFS_$(1)) $(FW_VARIANT_DEFS_$(1)) \
+                      $(FW_PNG_CFLAGS)
 FW_HOST_OBJS_$(1) := $$(patsubst %.c,$$(HOST_OBJ_DIR_$(1))/%.o,$(FW_PURE_SRCS) $(FW_DRIVER_SRC) \
                      $(FW_HOST_SRCS))
 
@@ -137,15 +154,16 @@ FW_DEP_FILES += $$(FW_OBJS_$(1):.o=.d) $$(FW_HOST_OBJS_$(1):.o=.d)
 endef
 
 # ---- per program: app.c with its settings, linked with a backend's objects ---------------------
-# $(1) = ELF path, $(2) = scene, $(3) = backend, $(4) = frames, $(5) = max polls (may be empty)
+# $(1) = ELF path, $(2) = scene, $(3) = backend, $(4) = frames, $(5) = max polls (may be empty),
+# $(6) = further -D settings of app.c (may be empty)
 define FW_ELF_RULES
 $(1:.elf=)/app.o: $(FW_APP_SRC) $(1:.elf=)/cflags.txt
 	$$(FW_CC) $$(FW_CFLAGS_$(3)) -DFW_SCENE='"$(2)"' -DFW_FRAMES=$(4) \
-	  $(if $(5),-DFW_GPU_MAX_POLLS=$(5)) $(if $(FW_PROFILE),-DFW_PROFILE=$(FW_PROFILE)) \
+	  $(if $(5),-DFW_GPU_MAX_POLLS=$(5)) $(if $(FW_PROFILE),-DFW_PROFILE=$(FW_PROFILE)) $(6) \
 	  -MMD -MP -c $$< -o $$@
 
 $(1:.elf=)/cflags.txt: fw-force
-	$$(call fw_flags_file,$$@,$$(FW_CC) $$(FW_CFLAGS_$(3)) $(2) $(4) $(5) $(FW_PROFILE))
+	$$(call fw_flags_file,$$@,$$(FW_CC) $$(FW_CFLAGS_$(3)) $(2) $(4) $(5) $(FW_PROFILE) $(6))
 
 $(1): $$(FW_OBJS_$(3)) $(1:.elf=)/app.o $(FW_LDSCRIPT)
 	$$(FW_CC) $$(FW_LDFLAGS_BASE) -Wl,-Map=$(1:.elf=.map) -o $$@ $$(FW_OBJS_$(3)) \
@@ -170,7 +188,7 @@ $(1): $$(FW_HOST_OBJS_$(3)) $(1).obj/app.o
 FW_DEP_FILES += $(1).obj/app.d
 endef
 
-$(foreach b,$(FW_BACKENDS),$(eval $(call FW_BACKEND_RULES,$(b))))
+$(foreach b,$(FW_BACKENDS) $(FW_SP_VARIANTS),$(eval $(call FW_BACKEND_RULES,$(b))))
 
 # What `make run`, `make fw-all` and `make fw-host` build: FRAMES frames.
 FW_ALL_ELFS :=
@@ -192,6 +210,9 @@ $(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
   $(eval FW_TEST_DEPS += $(FW_TEST_DIR)/$(call fw_name,$(s),$(b)).elf $(FW_TEST_DIR)/host-$(call fw_name,$(s),$(b)))))
 $(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/tetra-watchdog.elf,tetra,fixed,5,268435456))
 FW_TEST_DEPS += $(FW_TEST_DIR)/tetra-watchdog.elf $(FW_UNIT) $(FW_UNIT_FLOAT)
+# tetra built with an explicit FW_SUBPIXEL_BITS=4: must be the same program as tetra.elf.
+$(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/tetra-fixed-sp4.elf,tetra,fixed-sp4,$(FW_TEST_FRAMES),))
+FW_TEST_DEPS += $(FW_TEST_DIR)/tetra-fixed-sp4.elf
 
 # Benchmark builds: FW_BENCH_FRAMES frames of every scene, both backends.
 FW_BENCH_FRAMES := 8
@@ -200,6 +221,18 @@ FW_BENCH_ELFS   :=
 $(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
   $(eval $(call FW_ELF_RULES,$(FW_BENCH_DIR)/$(call fw_name,$(s),$(b)).elf,$(s),$(b),$(FW_BENCH_FRAMES),))\
   $(eval FW_BENCH_ELFS += $(FW_BENCH_DIR)/$(call fw_name,$(s),$(b)).elf)))
+
+# bench-error builds: FW_ERR_FRAMES frames of every scene, <scene>-<variant>[-z].elf; -z: the
+# depth test on from the first frame (FW_DEPTH_TEST=1, for a GPU built with the depth buffer).
+FW_ERR_FRAMES := 3
+FW_ERR_DIR    := $(BUILD)/fw-error
+FW_ERR_ELFS   :=
+$(foreach s,$(FW_SCENES),$(foreach v,fixed float,\
+  $(eval $(call FW_ELF_RULES,$(FW_ERR_DIR)/$(s)-$(v).elf,$(s),$(v),$(FW_ERR_FRAMES),))\
+  $(eval FW_ERR_ELFS += $(FW_ERR_DIR)/$(s)-$(v).elf)))
+$(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2,\
+  $(eval $(call FW_ELF_RULES,$(FW_ERR_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_ERR_FRAMES),,-DFW_DEPTH_TEST=1))\
+  $(eval FW_ERR_ELFS += $(FW_ERR_DIR)/$(s)-$(v)-z.elf)))
 
 # ---- host unit tests -------------------------------------------------------------------------
 # The pure sources and gpu.c, built against tests/firmware/fake_bsp/bsp.h (the GPU aperture is an
