@@ -15,6 +15,8 @@ ZBUF        ?= 0
 GPUSIM      := $(BUILD)/sim-w$(SPAN_W)/gpusim
 BENCH_SIMS  := $(foreach w,1 4 8 16,$(BUILD)/sim-w$(w)/gpusim)
 ZBUF_SIM    := $(BUILD)/sim-z-w8/gpusim
+ZBUF_SIMS   := $(foreach w,1 4 8 16,$(BUILD)/sim-z-w$(w)/gpusim)
+PNG_DIFF    := $(BUILD)/tools/png_diff
 
 # Firmware (FW_ELF, fw_unit) and golden model (GPU_MODEL_SRC, model_unit) rules.
 include firmware/firmware.mk
@@ -30,7 +32,7 @@ HOST_LIB   := $(BUILD)/host/libcosim.a
 HOST_INC   := -Icosim -Igpu_model -Ifirmware/include -Ibsp/qemu_virt
 
 .PHONY: all setup run run-headless test test-quick lint check-contract contract random-long raster \
-        bench-gpu synth clean
+        bench-gpu bench-error bench-error-run synth clean
 
 all: $(FW_ELF) $(GPUSIM)
 
@@ -50,7 +52,7 @@ test: setup
 	@$(MAKE) --no-print-directory test-quick
 
 test-quick: $(FW_ELF) $(BENCH_SIMS) $(ZBUF_SIM) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit fw-test-deps \
-            fuzz-build
+            fuzz-build $(PNG_DIFF)
 	@GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) bash tests/run_all.sh
 
 # ---- the contract: regenerate, or check that the generated files are current ----
@@ -79,6 +81,22 @@ bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(FW_ELF)
 	@$(GPUSIM) cosim --fw $(FW_ELF) --frames $(BUILD)/bench-gpu/scene-frames --no-model-check \
 	  --dump-lists $(BUILD)/bench-gpu/scene-lists >/dev/null
 	@$(PYTHON) tools/bench_gpu.py $(BUILD) $(BUILD)/bench-gpu/scene-lists
+
+# ---- pixel error against counted cost, for every accuracy/speed knob (tools/bench_error.py) ----
+# Installs matplotlib for the plot (tools/packages-plot.txt), then runs the table and the plot with
+# the interpreter Debian's python3-matplotlib belongs to (PYTHON may be another one, e.g. pyenv's).
+PLOT_PYTHON ?= $(or $(wildcard /usr/bin/python3),$(PYTHON))
+bench-error:
+	@bash tools/setup.sh packages-plot.txt
+	@$(MAKE) --no-print-directory bench-error-run
+
+bench-error-run: $(FW_ERR_ELFS) $(BENCH_SIMS) $(ZBUF_SIMS) $(PNG_DIFF)
+	@$(if $(FW_SUBPIXEL_BITS),echo "bench-error: sets FW_SUBPIXEL_BITS itself; run it without" && exit 2)
+	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --frames $(FW_ERR_FRAMES) $(FW_SCENES)
+
+$(PNG_DIFF): tools/png_diff.c
+	@mkdir -p $(dir $@)
+	$(HOST_CC) $(HOST_CFLAGS) $$(pkg-config --cflags libpng) $< -o $@ $$(pkg-config --libs libpng)
 
 # ---- synthesis: yosys for 7-series (resource counts) and iCE40 place-and-route (fmax) ----
 synth:

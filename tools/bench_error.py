@@ -1,0 +1,320 @@
+#!/usr/bin/env python3
+"""`make bench-error`: pixel error against counted cost, for every knob that trades accuracy for
+speed, on every scene's default view. A Markdown table on stdout, a plot in
+BUILD/bench-error/error-vs-cost.png, one progress line per co-simulated configuration on stderr.
+
+Reference R: the most accurate configuration the project builds - the float arithmetic backend,
+the GPU's depth buffer (RTL built with ENABLE_ZBUF; firmware built with FW_DEPTH_TEST=1), the
+contract's 4 sub-pixel bits (Q12.4), SPAN_W = 8. Every other configuration changes exactly one knob
+of R, so its error is that knob's own; the row "default build" changes all of them at once to what
+`make run` builds (fixed point, painter's sort, 4 bits, SPAN_W = 8, no depth buffer):
+
+  arithmetic      fixed point (q16_16 / q2_30) instead of float (firmware/src/real.h)
+  depth order     the painter's sort alone (GPU without depth buffer) instead of the depth test
+  sub-pixel bits  2 and 0 fraction bits kept in projected vertices (FW_SUBPIXEL_BITS, proj.h;
+                  the switch also takes 3 and 1, left out here to keep the run short)
+  span width      GPUs built with SPAN_W = 1, 4, 16 (the rasterizer is exact: error must be 0)
+
+Each configuration is co-simulated (QEMU -icount + the Verilator GPU, like `make bench-fw`) for
+FRAMES frames from boot, no keys; every number below is a mean over those frames.
+
+Metrics, per scene and configuration (frames compared as captured from the VGA pins; each
+framebuffer pixel is a 2 x 2 block there, tools/png_diff.c compares one pixel per block):
+  pixels differing  framebuffer pixels (of 320 x 240 = 76,800) whose RGB differs from R's frame
+  mean |dRGB|       sum over all framebuffer pixels and the three channels of |RGB - RGB_R|
+                    (8-bit values) divided by 76,800 x 3: 0 for identical frames, 255 at most
+Costs, counted (never timed):
+  fw instr/frame    the firmware's per-frame `fw instr` (minstret delta under QEMU -icount shift=0)
+  GPU cycles/frame  the firmware's per-frame `gpu cycles` (PERF_BUSY_CYCLES of the RTL, summed
+                    over the frame's batches)
+
+    bench_error.py --build BUILD --frames N [--jobs J] [--no-run] SCENE...
+    bench_error.py --check-metric PNG_DIFF WORKDIR     (the test: the metric on known images)
+"""
+import argparse
+import concurrent.futures
+import os
+import re
+import shutil
+import struct
+import subprocess
+import sys
+import zlib
+
+FB_PIXELS = 320 * 240
+
+# Configurations: key -> (firmware, BUILD/fw-error/<scene>-<firmware>.elf; simulator, BUILD/<sim>/gpusim;
+# plot label). "-z" firmware starts with the depth test on and runs on a GPU that has the buffer.
+CONFIGS = {
+    "ref":     ("float-z",     "sim-z-w8",  "reference R"),
+    "fixed":   ("fixed-z",     "sim-z-w8",  "fixed point"),
+    "painter": ("float",       "sim-w8",    "painter's sort"),
+    "sp2":     ("float-sp2-z", "sim-z-w8",  "2 sub-pixel bits"),
+    "sp0":     ("float-sp0-z", "sim-z-w8",  "0 sub-pixel bits"),
+    "w1":      ("float-z",     "sim-z-w1",  "SPAN_W 1"),
+    "w4":      ("float-z",     "sim-z-w4",  "SPAN_W 4"),
+    "w16":     ("float-z",     "sim-z-w16", "SPAN_W 16"),
+    "default": ("fixed",       "sim-w8",    "default build"),
+}
+
+# Table rows: (knob, setting, configuration key), grouped by knob; R appears in every group.
+KNOBS = [
+    ("arithmetic", [("float (R)", "ref"), ("fixed point", "fixed")]),
+    ("depth order", [("depth buffer (R)", "ref"), ("painter's sort", "painter")]),
+    ("sub-pixel bits", [("4 (R)", "ref"), ("2", "sp2"), ("0", "sp0")]),
+    ("span width", [("8 (R)", "ref"), ("1", "w1"), ("4", "w4"), ("16", "w16")]),
+    ("default build", [("fixed, painter, 4 bits, SPAN_W 8", "default")]),
+]
+
+FRAME_RE = re.compile(r"^frame (\d+): .*\| fw instr (\d+) \| gpu cycles (\d+) \|")
+
+
+def run_config(build, frames, scene, key, rerun=True):
+    """Co-simulate one configuration (or, rerun False, read the last run's results); returns
+    {frame: (fw instr, gpu cycles)} and the frame directory."""
+    variant, sim, _ = CONFIGS[key]
+    work = os.path.join(build, "bench-error", scene, key)
+    if rerun:
+        cosim(build, work, scene, variant, sim)
+    return parse_log(work, frames, scene, key, variant), os.path.join(work, "frames")
+
+
+def cosim(build, work, scene, variant, sim):
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    cmd = [os.path.join(build, sim, "gpusim"), "cosim",
+           "--fw", os.path.join(build, "fw-error", "%s-%s.elf" % (scene, variant)),
+           "--frames", os.path.join(work, "frames"), "--uart-log", os.path.join(work, "uart.log"),
+           "--no-model-check"]
+    with open(os.path.join(work, "cosim.out"), "w") as out:
+        if subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT).returncode != 0:
+            raise RuntimeError("%s-%s on %s: co-simulation failed, see %s/cosim.out" % (scene, variant, sim, work))
+
+
+def parse_log(work, frames, scene, key, variant):
+    counts = {}
+    with open(os.path.join(work, "uart.log")) as log:
+        for line in log:
+            m = FRAME_RE.match(line)
+            if m:
+                counts[int(m.group(1))] = (int(m.group(2)), int(m.group(3)))
+    if sorted(counts) != list(range(frames)):
+        raise RuntimeError("%s %s: expected frames 0..%d in %s/uart.log" % (scene, key, frames - 1, work))
+    if variant.endswith("-z") != ("depth buffer on" in open(os.path.join(work, "uart.log")).read()):
+        raise RuntimeError("%s %s: depth test on/off not as configured" % (scene, key))
+    return counts
+
+
+def png_diff(tool, ref, img):
+    """(framebuffer pixels differing, sum of |dRGB|) of img against ref."""
+    out = subprocess.run([tool, "--block", "2", ref, img], check=True, capture_output=True,
+                         text=True).stdout.split()
+    fields = dict(zip(out[0::2], (int(v) for v in out[1::2])))
+    if fields["pixels"] != FB_PIXELS:
+        raise RuntimeError("%s: %d framebuffer pixels, expected %d" % (img, fields["pixels"], FB_PIXELS))
+    return fields["differing"], fields["abs_sum"]
+
+
+def measure(build, frames, scenes, jobs, rerun):
+    tool = os.path.join(build, "tools", "png_diff")
+    todo = [(scene, key) for scene in scenes for key in CONFIGS]
+    runs = {}
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = {pool.submit(run_config, build, frames, scene, key, rerun): (scene, key) for scene, key in todo}
+        done = 0
+        for fut in concurrent.futures.as_completed(futures):
+            scene, key = futures[fut]
+            try:
+                runs[(scene, key)] = fut.result()
+            except Exception:
+                pool.shutdown(wait=True, cancel_futures=True)  # stop at the first failure
+                raise
+            done += 1
+            variant, sim, _ = CONFIGS[key]
+            print("bench-error: [%2d/%d] %-9s %-8s %s-%s.elf on %s" % (done, len(todo), scene, key, scene,
+                                                                     variant, sim), file=sys.stderr, flush=True)
+    results = {}
+    compared = range(frames)
+    for scene, key in todo:
+        counts, fdir = runs[(scene, key)]
+        ref_dir = runs[(scene, "ref")][1]
+        diff = [png_diff(tool, os.path.join(ref_dir, "%04d.png" % f), os.path.join(fdir, "%04d.png" % f))
+                for f in compared]
+        n = len(diff)
+        results[(scene, key)] = {
+            "differing": sum(d for d, _ in diff) / n,
+            "mae": sum(s for _, s in diff) / (n * FB_PIXELS * 3),
+            "instr": sum(counts[f][0] for f in compared) / n,
+            "cycles": sum(counts[f][1] for f in compared) / n,
+        }
+    return results
+
+
+def table(results, scenes, frames):
+    lines = ["| knob | setting | scene | pixels differing | mean abs dRGB | fw instructions/frame | GPU cycles/frame |",
+             "|---|---|---|---:|---:|---:|---:|"]
+    for knob, settings in KNOBS:
+        for scene in scenes:
+            for setting, key in settings:
+                r = results[(scene, key)]
+                lines.append("| %s | %s | %s | %.1f (%.2f%%) | %.4f | %d | %d |" % (
+                    knob, setting, scene, r["differing"], 100.0 * r["differing"] / FB_PIXELS, r["mae"],
+                    round(r["instr"]), round(r["cycles"])))
+    lines.append("")
+    lines.append("R = float, depth buffer, 4 sub-pixel bits, SPAN_W 8. Error against R's frame; means "
+                 "over the first %d frames of each scene's default view; counts from co-simulation "
+                 "(QEMU -icount, Verilator cycles)." % frames)
+    lines.extend(notes(results, scenes))
+    return "\n".join(lines)
+
+
+def summary(results, scenes):
+    """The short version: per setting, the range over the scenes."""
+    def span(values, fmt):
+        lo, hi = min(values), max(values)
+        return fmt % lo if fmt % lo == fmt % hi else (fmt + " .. " + fmt) % (lo, hi)
+    lines = ["| knob | setting | pixels differing from R | fw instructions / R's | GPU cycles / R's |",
+             "|---|---|---:|---:|---:|"]
+    for knob, settings in KNOBS:
+        for setting, key in settings:
+            if key == "ref" and knob != "arithmetic":
+                continue
+            rs = [results[(sc, key)] for sc in scenes]
+            refs = [results[(sc, "ref")] for sc in scenes]
+            lines.append("| %s | %s | %s | %s | %s |" % (
+                knob if key != "ref" else "reference R", setting if key != "ref" else "float, depth buffer, 4 bits, SPAN_W 8",
+                span([r["differing"] for r in rs], "%.1f"),
+                span([r["instr"] / q["instr"] for r, q in zip(rs, refs)], "%.2f"),
+                span([r["cycles"] / q["cycles"] for r, q in zip(rs, refs)], "%.2f")))
+    lines.append("")
+    lines.append("Ranges over the scenes (%s); pixels differing: framebuffer pixels of 76,800 per frame, "
+                 "mean of the frames." % ", ".join(scenes))
+    return "\n".join(lines)
+
+
+def notes(results, scenes):
+    """Notes computed from the numbers, so that they cannot go stale."""
+    out = []
+    span_err = max(results[(s, k)]["differing"] for s in scenes for k in ("w1", "w4", "w16"))
+    out.append("- span width: %s" % ("every frame identical to R's: the rasterizer is exact at every width"
+                                      if span_err == 0 else "FRAMES DIFFER FROM R (a rasterizer bug)"))
+    def change(cost):
+        c = [100.0 * (results[(s, k)][cost] / results[(s, "ref")][cost] - 1.0)
+             for k in ("sp2", "sp0") for s in scenes]
+        return "%+.1f%% .. %+.1f%%" % (min(c), max(c))
+    out.append("- sub-pixel bits: against R, firmware instructions change by %s and GPU cycles by %s "
+               "(the rounding itself is a shift per coordinate; with fewer bits some thin triangles "
+               "become empty); "
+               "an accuracy knob, not a speed one" % (change("instr"), change("cycles")))
+    return out
+
+
+def plot(results, scenes, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.patches
+    import matplotlib.pyplot as plt
+
+    markers = {"ref": "*", "fixed": "s", "painter": "D", "sp2": "v", "sp0": "^",
+               "w1": "1", "w4": "2", "w16": "3", "default": "o"}
+    colours = dict(zip(scenes, ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown"]))
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6), sharey=True)
+    for ax, cost, label in ((axes[0], "instr", "firmware instructions / frame (QEMU -icount)"),
+                            (axes[1], "cycles", "GPU cycles / frame (Verilator, PERF_BUSY_CYCLES)")):
+        for scene in scenes:
+            for key in CONFIGS:
+                r = results[(scene, key)]
+                ax.scatter(r[cost], r["differing"], marker=markers[key], color=colours[scene], s=36)
+        ax.set_xscale("log")
+        ax.set_yscale("symlog", linthresh=1.0)
+        ax.set_ylim(bottom=-0.2)
+        ax.set_xlabel(label)
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].set_ylabel("framebuffer pixels differing from R / frame")
+    handles = [plt.Line2D([], [], color="grey", marker=markers[k], linestyle="", label=CONFIGS[k][2])
+               for k in CONFIGS]
+    handles += [matplotlib.patches.Patch(color=colours[s], label=s) for s in scenes]
+    fig.legend(handles=handles, loc="center right", fontsize=8, frameon=False)
+    fig.suptitle("Pixel error against counted cost, one marker per configuration and scene "
+                 "(R = float, depth buffer, 4 sub-pixel bits, SPAN_W 8)", fontsize=10)
+    fig.tight_layout(rect=(0, 0, 0.86, 0.95))
+    fig.savefig(path, dpi=90)
+
+
+# ---- the test: the metric on images with a known difference ------------------------------------
+
+def write_png(path, width, height, rgb):
+    """A minimal 8-bit RGB PNG (filter 0 on every row)."""
+    def chunk(tag, data):
+        return struct.pack(">I", len(data)) + tag + data + struct.pack(">I", zlib.crc32(tag + data) & 0xFFFFFFFF)
+    rows = b"".join(b"\0" + bytes(rgb[y * width * 3:(y + 1) * width * 3]) for y in range(height))
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0))
+                + chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+
+
+def check_metric(tool, work):
+    os.makedirs(work, exist_ok=True)
+    w, h = 8, 6
+    base = [(x * 31 + y * 7 + c * 50) % 256 for y in range(h) for x in range(w) for c in range(3)]
+    changed = list(base)
+    changed[(2 * w + 5) * 3 + 1] ^= 0x10   # one pixel, green channel, |d| = 16
+    changed[(3 * w + 1) * 3 + 0] = 255 - changed[(3 * w + 1) * 3 + 0]
+    expected_sum = 16 + abs(255 - 2 * base[(3 * w + 1) * 3])
+    paths = {n: os.path.join(work, n + ".png") for n in ("a", "b", "c", "small")}
+    write_png(paths["a"], w, h, base)
+    write_png(paths["b"], w, h, base)
+    write_png(paths["c"], w, h, changed)
+    write_png(paths["small"], w, h - 2, base[:w * (h - 2) * 3])
+
+    def diff(*args):
+        r = subprocess.run([tool, *args], capture_output=True, text=True)
+        return r.returncode, r.stdout.split()
+    failures = []
+    rc, out = diff(paths["a"], paths["b"])
+    if rc != 0 or out != ["pixels", "48", "differing", "0", "abs_sum", "0", "max_abs", "0"]:
+        failures.append("identical images: %s (status %d)" % (" ".join(out), rc))
+    rc, out = diff(paths["a"], paths["c"])
+    want = ["pixels", "48", "differing", "2", "abs_sum", str(expected_sum), "max_abs",
+            str(max(16, expected_sum - 16))]
+    if rc != 0 or out != want:
+        failures.append("two changed pixels: got %s, want %s" % (" ".join(out), " ".join(want)))
+    rc, out = diff("--block", "2", paths["a"], paths["c"])  # (5, 2) and (1, 3) are not block corners
+    if rc != 0 or out[:4] != ["pixels", "12", "differing", "0"]:
+        failures.append("--block 2: %s" % " ".join(out))
+    rc, _ = diff(paths["a"], paths["small"])
+    if rc != 2:
+        failures.append("different sizes: status %d, want 2" % rc)
+    for f in failures:
+        print("metric: " + f)
+    return not failures
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--build")
+    ap.add_argument("--frames", type=int, default=3)
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--no-run", action="store_true", help="tabulate and plot the last run again")
+    ap.add_argument("--check-metric", nargs=2, metavar=("PNG_DIFF", "WORKDIR"))
+    ap.add_argument("scenes", nargs="*")
+    a = ap.parse_args()
+    if a.check_metric:
+        ok = check_metric(*a.check_metric)
+        print("metric: 0 for identical images, the known sum for 2 changed pixels, sizes checked"
+              if ok else "metric: FAILED")
+        return 0 if ok else 1
+    if not a.build or not a.scenes or a.frames < 1:
+        ap.error("--build, --frames and at least one scene are needed")
+    results = measure(a.build, a.frames, a.scenes, a.jobs, not a.no_run)
+    print(table(results, a.scenes, a.frames))
+    print()
+    print(summary(results, a.scenes))
+    path = os.path.join(a.build, "bench-error", "error-vs-cost.png")
+    plot(results, a.scenes, path)
+    print("\nPlot: %s" % path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
