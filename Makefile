@@ -16,6 +16,7 @@ GPUSIM      := $(BUILD)/sim-w$(SPAN_W)/gpusim
 BENCH_SIMS  := $(foreach w,1 4 8 16,$(BUILD)/sim-w$(w)/gpusim)
 ZBUF_SIM    := $(BUILD)/sim-z-w8/gpusim
 ZBUF_SIMS   := $(foreach w,1 4 8 16,$(BUILD)/sim-z-w$(w)/gpusim)
+GPUSIM_W8   := $(BUILD)/sim-w8/gpusim
 PNG_DIFF    := $(BUILD)/tools/png_diff
 
 # Firmware (FW_ELF, fw_unit) and golden model (GPU_MODEL_SRC, model_unit) rules.
@@ -86,12 +87,14 @@ bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(FW_ELF)
 # Installs matplotlib for the plot (tools/packages-plot.txt), then runs the table and the plot with
 # the interpreter Debian's python3-matplotlib belongs to (PYTHON may be another one, e.g. pyenv's).
 PLOT_PYTHON ?= $(or $(wildcard /usr/bin/python3),$(PYTHON))
+BENCH_ERROR_CHECK = $(if $(FW_SUBPIXEL_BITS),@echo "bench-error sets FW_SUBPIXEL_BITS itself: run it without" && exit 2)
 bench-error:
+	$(BENCH_ERROR_CHECK)
 	@bash tools/setup.sh packages-plot.txt
 	@$(MAKE) --no-print-directory bench-error-run
 
-bench-error-run: $(FW_ERR_ELFS) $(BENCH_SIMS) $(ZBUF_SIMS) $(PNG_DIFF)
-	@$(if $(FW_SUBPIXEL_BITS),echo "bench-error: sets FW_SUBPIXEL_BITS itself; run it without" && exit 2)
+bench-error-run: $(FW_ERR_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(PNG_DIFF)
+	$(BENCH_ERROR_CHECK)
 	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --frames $(FW_ERR_FRAMES) $(FW_SCENES)
 
 $(PNG_DIFF): tools/png_diff.c
