@@ -177,8 +177,16 @@ static void app_read_keys(struct app *app, struct input_counts *keys)
 struct app_notes {
     bool help;
     bool scene_changed;
-    const char *msg;
+    const char *msg[3];  /* one per toggle (wireframe, anaglyph, depth): all of a frame's shown */
+    uint32_t msg_count;
 };
+
+static void app_note(struct app_notes *notes, const char *msg)
+{
+    if (notes->msg_count < sizeof notes->msg / sizeof notes->msg[0]) {
+        notes->msg[notes->msg_count++] = msg;
+    }
+}
 
 /* Keys that belong to the loop rather than the scene. Returns false to quit. */
 static bool app_global_keys(struct app *app, const struct input_counts *keys,
@@ -186,7 +194,7 @@ static bool app_global_keys(struct app *app, const struct input_counts *keys,
 {
     notes->help = keys->n[KEY_HELP] != 0u;
     notes->scene_changed = false;
-    notes->msg = 0;
+    notes->msg_count = 0;
     if (keys->n[KEY_QUIT] != 0u) {
         return false;
     }
@@ -198,18 +206,18 @@ static bool app_global_keys(struct app *app, const struct input_counts *keys,
     }
     if (input_toggled(keys, KEY_WIREFRAME)) {
         app->wireframe = !app->wireframe;
-        notes->msg = app->wireframe ? "wireframe on" : "wireframe off";
+        app_note(notes, app->wireframe ? "wireframe on" : "wireframe off");
     }
     if (input_toggled(keys, KEY_ANAGLYPH)) {
         app->anaglyph = !app->anaglyph;
-        notes->msg = app->anaglyph ? "anaglyph on (left eye red, right eye cyan)" : "anaglyph off";
+        app_note(notes, app->anaglyph ? "anaglyph on (left eye red, right eye cyan)" : "anaglyph off");
     }
     if (input_toggled(keys, KEY_DEPTH)) {
         if (gpu_caps_zbuf(app->gpu.info.caps)) {
             app->depth_test = !app->depth_test;
-            notes->msg = app->depth_test ? "depth buffer on" : "depth buffer off";
+            app_note(notes, app->depth_test ? "depth buffer on" : "depth buffer off");
         } else {
-            notes->msg = "depth buffer: the GPU has none (CAPS_ZBUF = 0)";
+            app_note(notes, "depth buffer: the GPU has none (CAPS_ZBUF = 0)");
         }
     }
     return true;
@@ -433,8 +441,8 @@ int app_run(void)
                    (unsigned long)scene_triangle_count(&app->scene),
                    cam_mode_name(app->scene.cam.mode));
         }
-        if (notes.msg != 0) {
-            printf("%s\n", notes.msg);
+        for (uint32_t m = 0; m < notes.msg_count; m++) {
+            printf("%s\n", notes.msg[m]);
         }
         if (app->scene.cam.mode != mode_before && !notes.scene_changed) {
             printf("camera: %s\n", cam_mode_name(app->scene.cam.mode));
