@@ -11,7 +11,8 @@
 //     of plain decimal integers, each in its documented range — checked here by an independent,
 //     much simpler reading of the format in prim_list.h — and the ops read back exactly;
 //   - prim_list_batches keeps every batch within the capacities it is given, every index inside
-//     its batch's vertices, and every primitive once, in order.
+//     its batch's vertices, and every primitive once, in order; a clear starts a batch, and
+//     clears with no primitive between them share one, cleared by the last.
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -176,9 +177,12 @@ void check_batches(const std::vector<ListOp> &ops, uint32_t vtx_cap, uint32_t tr
         REQUIRE(nv <= vtx_cap && np <= tri_cap, "batch of %zu vertices, %zu prims over %u/%u", nv,
                 np, vtx_cap, tri_cap);
         if (b.clear) {
-            REQUIRE(next < ops.size() && ops[next].kind == ListOp::Clear &&
-                        ops[next].color == b.clear_color,
-                    "clear batch out of order");
+            // Clears with no primitive between them make one batch, cleared by the last of them.
+            REQUIRE(next < ops.size() && ops[next].kind == ListOp::Clear, "clear batch out of order");
+            while (next + 1 < ops.size() && ops[next + 1].kind == ListOp::Clear) {
+                next++;
+            }
+            REQUIRE(ops[next].color == b.clear_color, "clear batch with another clear's colour");
             next++;
         }
         for (size_t p = 0; p < np; p++) {
