@@ -515,8 +515,9 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
     f->stats.objects_in++;
 
     /* Model -> view: r = (V O) R, t = (V O)(pos - focus) + V (focus - eye). pos and focus are
-     * world points (within +-1024 per axis, real.h; scene_add_object enforces it for pos, the
-     * camera's box for the focus), so pos - focus is exact and within xf_apply's |p| < 8192, and
+     * world points (within +-1024 per axis, real.h; scene_add_object enforces it for pos, and the
+     * focus is a scene's constant, the origin or the voxel world's centre), so pos - focus is
+     * exact and within xf_apply's |p| < 8192, and
      * V (focus - eye) within its |t| < 4096: the object's offset gets the vertices' arithmetic. */
     mv.r = mat3_compose(&pass->focus_to_view.r, &obj->rot);
     mv.t = xf_apply(&pass->focus_to_view, vec3_make(obj->pos.x - pass->focus.x,
