@@ -86,6 +86,29 @@ void test_scene_meshes_valid(void)
     CHECK_EQ(fx_overflow_count(), 0);
 }
 
+/* An object placed outside the +-1024 world box (the range rule render.c's exact object offsets
+ * rely on) is clamped into it and counted as an overflow, never drawn with a wrapped offset; the
+ * cubes' mesh is recognised as a box (xf_apply_box). */
+void test_scene_object_range(void)
+{
+    const mat3 id = mat3_identity();
+    uint32_t n;
+
+    scene_start(&scene, scene_find("cubes"));
+    CHECK(scene.object[0].mesh->box);
+    scene_start(&scene, scene_find("tetra"));
+    CHECK(!scene.object[0].mesh->box);
+    fx_overflow_clear();
+    n = scene.object_count;
+    scene_add_object(&scene, scene.object[0].mesh, &id, v3(1000.0, -1000.0, 5.0), 0);
+    CHECK_EQ(fx_overflow_count(), 0);
+    scene_add_object(&scene, scene.object[0].mesh, &id, v3(2000.0, 0.0, -1500.0), 0);
+    CHECK_EQ(fx_overflow_count(), 2);
+    CHECK_EQ(scene.object_count, n + 2u);
+    CHECK(rd(scene.object[n + 1u].pos.x) == 1024.0 && rd(scene.object[n + 1u].pos.z) == -1024.0);
+    fx_overflow_clear();
+}
+
 /* The sizes of issue #4: a 16^3 voxel world, a 5000-triangle model. */
 void test_scene_sizes(void)
 {

@@ -100,6 +100,7 @@ void unit_srand(uint32_t seed);
     X(test_voxel_edit_marks_chunks)   \
     X(test_voxel_raycast)             \
     X(test_scene_meshes_valid)        \
+    X(test_scene_object_range)        \
     X(test_scene_sizes)               \
     X(test_scene_frames)              \
     X(test_scene_voxel_place_break)   \
