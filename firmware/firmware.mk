@@ -14,6 +14,8 @@
 #   FW_PROFILE     1: every frame also prints where its instructions went (app.c)
 #   FW_SUBPIXEL_BITS  fraction bits kept in projected vertices, 0..4 (default: 4, the contract's
 #                  Q12.4); an accuracy knob (proj.h), measured by `make bench-error`
+#   FW_DEFS        further -D settings of every object, e.g. "-DFW_WITH_LIGHTING=0" (fw_config.h:
+#                  the FW_WITH_* features a scene may not need)
 #   GPUSIM         the co-simulator (set by the top-level Makefile), for bench-fw
 #
 # Outputs:
@@ -46,6 +48,7 @@ FW_PLATFORM ?= qemu_virt
 FW_MAX_POLLS ?=
 FW_PROFILE  ?=
 FW_SUBPIXEL_BITS ?=
+FW_DEFS     ?=
 GPUSIM      ?= $(BUILD)/sim/gpusim
 
 include bsp/$(FW_PLATFORM)/bsp.mk
@@ -91,10 +94,16 @@ FW_BACKEND_DEFS_fixed :=
 FW_BACKEND_DEFS_float := -DFW_BACKEND_FLOAT=1
 # Object variants: the two backends take the command line's FW_SUBPIXEL_BITS; <backend>-sp<N>
 # (bench-error, and one test) are a backend with N sub-pixel bits, whatever the command line says.
-FW_VARIANT_DEFS_fixed := $(if $(FW_SUBPIXEL_BITS),-DFW_SUBPIXEL_BITS=$(FW_SUBPIXEL_BITS))
+FW_VARIANT_DEFS_fixed := $(if $(FW_SUBPIXEL_BITS),-DFW_SUBPIXEL_BITS=$(FW_SUBPIXEL_BITS)) $(FW_DEFS)
 FW_VARIANT_DEFS_float := $(FW_VARIANT_DEFS_fixed)
 FW_SP_VARIANTS := fixed-sp4 float-sp0 float-sp2
 $(foreach v,$(FW_SP_VARIANTS),  $(eval FW_BACKEND_DEFS_$(v) := $(FW_BACKEND_DEFS_$(word 1,$(subst -, ,$(v)))))  $(eval FW_VARIANT_DEFS_$(v) := -DFW_SUBPIXEL_BITS=$(patsubst sp%,%,$(word 2,$(subst -, ,$(v))))))
+# fixed-lean: the fixed backend with every optional feature left out (fw_config.h FW_WITH_*), for
+# the test that such a build runs and is smaller.
+FW_LEAN_DEFS := -DFW_WITH_WIREFRAME=0 -DFW_WITH_ANAGLYPH=0 -DFW_WITH_DEPTH=0 -DFW_WITH_LIGHTING=0
+FW_BACKEND_DEFS_fixed-lean :=
+FW_VARIANT_DEFS_fixed-lean := $(FW_LEAN_DEFS)
+FW_SP_VARIANTS += fixed-lean
 # -ffp-contract=off: no fused multiply-adds, so the float backend rounds identically on the host
 # and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
 # -fno-tree-loop-distribute-patterns: GCC would turn the pipeline's clearing loops (the sort's
@@ -210,6 +219,9 @@ $(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
   $(eval FW_TEST_DEPS += $(FW_TEST_DIR)/$(call fw_name,$(s),$(b)).elf $(FW_TEST_DIR)/host-$(call fw_name,$(s),$(b)))))
 $(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/tetra-watchdog.elf,tetra,fixed,5,268435456))
 FW_TEST_DEPS += $(FW_TEST_DIR)/tetra-watchdog.elf $(FW_UNIT) $(FW_UNIT_FLOAT)
+# cubes without any optional feature (tests/scenes/lean_build.sh).
+$(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/cubes-lean.elf,cubes,fixed-lean,$(FW_TEST_FRAMES),))
+FW_TEST_DEPS += $(FW_TEST_DIR)/cubes-lean.elf
 # tetra built with an explicit FW_SUBPIXEL_BITS=4: must be the same program as tetra.elf.
 $(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/tetra-fixed-sp4.elf,tetra,fixed-sp4,$(FW_TEST_FRAMES),))
 FW_TEST_DEPS += $(FW_TEST_DIR)/tetra-fixed-sp4.elf

@@ -53,6 +53,7 @@ suite fw-scenes-host-vs-cosim bash tests/scenes/host_vs_cosim.sh
 suite fw-watchdog            bash tests/scenes/watchdog.sh
 suite fw-keys-burst          bash tests/scenes/keys_burst.sh
 suite fw-host-features       bash tests/scenes/host_features.sh
+suite fw-lean-build          bash tests/scenes/lean_build.sh
 suite bench-error-machinery  bash tests/bench/error_machinery.sh
 
 echo "$passed passed, $failed failed"

@@ -33,6 +33,25 @@
 #define FW_SUBPIXEL_BITS 4
 #endif
 
+/* Features a scene may not need: 1 builds them in (the default), 0 leaves their code out, and
+ * their key then says so. make FW_DEFS="-DFW_WITH_LIGHTING=0 ..." (firmware/README.md):
+ *   FW_WITH_WIREFRAME  the F key's outline mode (the crosshair's lines stay)
+ *   FW_WITH_ANAGLYPH   the G key's red/cyan stereo (a second pass per frame)
+ *   FW_WITH_DEPTH      the GPU's depth test: VTX_Z per vertex and the Z key
+ *   FW_WITH_LIGHTING   flat light per face; without, every face shows its material at full level */
+#ifndef FW_WITH_WIREFRAME
+#define FW_WITH_WIREFRAME 1
+#endif
+#ifndef FW_WITH_ANAGLYPH
+#define FW_WITH_ANAGLYPH 1
+#endif
+#ifndef FW_WITH_DEPTH
+#define FW_WITH_DEPTH 1
+#endif
+#ifndef FW_WITH_LIGHTING
+#define FW_WITH_LIGHTING 1
+#endif
+
 /* The watchdog: reads of DONE_SEQ before a batch counts as lost. One poll is 4 instructions
  * (lw, addi, bne, beq); under QEMU -icount 2^28 polls take about 3 s of host time (measured); 2^31
  * would then take ~25 s (extrapolated), two orders of magnitude more than a co-simulated batch needs (the vsync wait is

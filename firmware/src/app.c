@@ -205,15 +205,26 @@ static bool app_global_keys(struct app *app, const struct input_counts *keys,
         }
     }
     if (input_toggled(keys, KEY_WIREFRAME)) {
-        app->wireframe = !app->wireframe;
-        app_note(notes, app->wireframe ? "wireframe on" : "wireframe off");
+        if (FW_WITH_WIREFRAME) {
+            app->wireframe = !app->wireframe;
+            app_note(notes, app->wireframe ? "wireframe on" : "wireframe off");
+        } else {
+            app_note(notes, "wireframe: not built in (FW_WITH_WIREFRAME=0)");
+        }
     }
     if (input_toggled(keys, KEY_ANAGLYPH)) {
-        app->anaglyph = !app->anaglyph;
-        app_note(notes, app->anaglyph ? "anaglyph on (left eye red, right eye cyan)" : "anaglyph off");
+        if (FW_WITH_ANAGLYPH) {
+            app->anaglyph = !app->anaglyph;
+            app_note(notes, app->anaglyph ? "anaglyph on (left eye red, right eye cyan)"
+                                          : "anaglyph off");
+        } else {
+            app_note(notes, "anaglyph: not built in (FW_WITH_ANAGLYPH=0)");
+        }
     }
     if (input_toggled(keys, KEY_DEPTH)) {
-        if (gpu_caps_zbuf(app->gpu.info.caps)) {
+        if (!FW_WITH_DEPTH) {
+            app_note(notes, "depth buffer: not built in (FW_WITH_DEPTH=0)");
+        } else if (gpu_caps_zbuf(app->gpu.info.caps)) {
             app->depth_test = !app->depth_test;
             app_note(notes, app->depth_test ? "depth buffer on" : "depth buffer off");
         } else {
@@ -387,7 +398,7 @@ int app_run(void)
     input_decoder_init(&app->decoder);
     app->wireframe = false;
     app->anaglyph = false;
-    app->depth_test = FW_DEPTH_TEST && gpu_caps_zbuf(app->gpu.info.caps);
+    app->depth_test = FW_WITH_DEPTH && FW_DEPTH_TEST && gpu_caps_zbuf(app->gpu.info.caps);
     if (app->depth_test) {
         printf("depth buffer on (FW_DEPTH_TEST)\n");
     }
@@ -420,7 +431,7 @@ int app_run(void)
         tot.t_update = bsp_instret() - t_start;
 
         render_stats_clear(&tot.render);
-        passes = app->anaglyph ? 2 : 1;
+        passes = (FW_WITH_ANAGLYPH && app->anaglyph) ? 2 : 1;
         for (int p = 0; p < passes && completed; p++) {
             const int eye = app->anaglyph ? ((p == 0) ? -1 : 1) : 0;
 

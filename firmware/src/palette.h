@@ -16,6 +16,7 @@
 
 #include <stdint.h>
 
+#include "fw_config.h"
 #include "real.h"
 #include "vec.h"
 
@@ -90,6 +91,11 @@ static inline void palette_light_init(struct palette_light *pl, uvec3 l, uint32_
 
 static inline uint32_t palette_light_level(const struct palette_light *pl, uvec3 n)
 {
+#if !FW_WITH_LIGHTING
+    (void)pl;
+    (void)n;
+    return 15u;  /* built without lighting: the material's full level */
+#else
     uint32_t level = pl->ambient;
 #if REAL_IS_FIXED
     const int32_t d = fx_mulh(n.x, pl->scaled[0]) + fx_mulh(n.y, pl->scaled[1]) +
@@ -106,6 +112,7 @@ static inline uint32_t palette_light_level(const struct palette_light *pl, uvec3
     }
 #endif
     return (level > 15u) ? 15u : level;
+#endif
 }
 
 #endif /* PALETTE_H */

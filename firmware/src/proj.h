@@ -38,7 +38,8 @@
  *          the cap is z = 170.7, beyond the far distance.
  *   zbuf   the GPU's VTX_Z for the optional depth buffer: 65535 (1 - near / z), 0 at the near
  *          plane, growing towards 65535 far away; linear in 1/z, so the GPU's screen-space
- *          interpolation of it is exact. Only computed when ps->zbuf (the depth test is on).
+ *          interpolation of it is exact. Only computed when ps->zbuf (the depth test is on), and
+ *          not at all in a build without the depth test (FW_WITH_DEPTH = 0).
  */
 #ifndef PROJ_H
 #define PROJ_H
@@ -178,7 +179,7 @@ static inline __attribute__((always_inline)) void proj_point_impl(const struct p
         off_y = ((fx_mulh(v.y * 8, q) + half) >> sh) * PROJ_SUBPIXEL_STEP;
         /* near / z in 0.16 = Y 2^(s - 33) for near = 2^-2; <= 2^16 */
         zbuf = 0u;
-        if (ps->zbuf) {
+        if (FW_WITH_DEPTH && ps->zbuf) {
             zbuf = (zsh >= 32) ? 0u : (y >> zsh);
             zbuf = (zbuf >= 65535u) ? 0u : 65535u - zbuf;
         }
@@ -201,7 +202,7 @@ static inline __attribute__((always_inline)) void proj_point_impl(const struct p
         fy = (fy > limit) ? limit : ((fy < -limit) ? -limit : fy);
         off_x = real_round_int(fx) * PROJ_SUBPIXEL_STEP;
         off_y = real_round_int(fy) * PROJ_SUBPIXEL_STEP;
-        zbuf = (!ps->zbuf || nz >= 1.0f) ? 0u : (uint32_t)(65535.0f * (1.0f - nz));
+        zbuf = (!FW_WITH_DEPTH || !ps->zbuf || nz >= 1.0f) ? 0u : (uint32_t)(65535.0f * (1.0f - nz));
         depth = (fd >= (float)PROJ_DEPTH_MAX) ? PROJ_DEPTH_MAX : (uint32_t)fd;
     }
 #endif

@@ -5,6 +5,7 @@
 
 #include "clip.h"
 #include "gpu.h"
+#include "fw_config.h"
 #include "palette.h"
 
 /* The light in the rotated scene's frame, O^T l, and in an object's model space, R^T (O^T l):
@@ -240,7 +241,7 @@ static void render_emit_line(struct render_frame *f, const struct render_pass *p
 static void render_emit_polygon(struct render_frame *f, const struct render_pass *pass,
                                 const uint32_t *idx, uint32_t n, uint8_t color, uint16_t key)
 {
-    if (pass->wireframe) {
+    if (FW_WITH_WIREFRAME && pass->wireframe) {
         for (uint32_t k = 0; k < n; k++) {
             render_emit_line(f, pass, idx[k], idx[(k + 1u) % n], color, key);
         }
@@ -436,7 +437,7 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     const struct proj_vertex *vert = &f->vert[job->base];
     const uint32_t base = job->base;
     const uint32_t material_override = job->material_override;
-    const bool general = job->pass->wireframe;
+    const bool general = FW_WITH_WIREFRAME && job->pass->wireframe;
     struct render_prim *prim = f->prim;
     uint32_t *sort_item = f->sort_item;
     const uint32_t np_start = f->prim_count;
