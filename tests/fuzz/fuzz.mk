@@ -38,15 +38,15 @@ $(FUZZ_DIR)/fuzz_prim_list: tests/fuzz/fuzz_prim_list.cpp cosim/prim_list.cpp co
 	@mkdir -p $(dir $@)
 	$(FUZZ_CXX) $(FUZZ_CXXFLAGS) -Icosim -Ifirmware/include $(filter %.cpp,$^) -o $@
 
-$(FUZZ_DIR)/fuzz_input: tests/fuzz/fuzz_input.c $(FW_PURE_SRCS) $(FUZZ_FW_HDRS)
+$(FUZZ_DIR)/fuzz_input: tests/fuzz/fuzz_input.c tests/fuzz/fuzz_common.h $(FW_PURE_SRCS) $(FUZZ_FW_HDRS)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -Ifirmware/include -Ifirmware/src $(filter %.c,$^) -lm -o $@
 
-$(FUZZ_DIR)/fuzz_gpu_model: tests/fuzz/fuzz_gpu_model.c $(FUZZ_DIR)/gpu_model.o $(GPU_MODEL_HDR)
+$(FUZZ_DIR)/fuzz_gpu_model: tests/fuzz/fuzz_gpu_model.c tests/fuzz/fuzz_common.h $(FUZZ_DIR)/gpu_model.o $(GPU_MODEL_HDR)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -Igpu_model -Ifirmware/include $(filter %.c %.o,$^) -o $@
 
-$(FUZZ_DIR)/fuzz_gpu_driver: tests/fuzz/fuzz_gpu_driver.c firmware/src/gpu.c firmware/src/batch.c \
+$(FUZZ_DIR)/fuzz_gpu_driver: tests/fuzz/fuzz_gpu_driver.c tests/fuzz/fuzz_common.h firmware/src/gpu.c firmware/src/batch.c \
                              $(FUZZ_DIR)/gpu_model.o tests/fuzz/driver_bsp/bsp.h $(FUZZ_FW_HDRS) \
                              $(GPU_MODEL_HDR)
 	@mkdir -p $(dir $@)

@@ -40,16 +40,7 @@
 #include "gpu.h"
 #include "gpu_model.h"
 #include "render.h"
-
-#define REQUIRE(cond, ...)                                                                \
-    do {                                                                                  \
-        if (!(cond)) {                                                                    \
-            fprintf(stderr, "fuzz_gpu_driver: %s:%d: %s: ", __FILE__, __LINE__, #cond);   \
-            fprintf(stderr, __VA_ARGS__);                                                 \
-            fprintf(stderr, "\n");                                                        \
-            abort();                                                                      \
-        }                                                                                 \
-    } while (0)
+#include "fuzz_common.h"
 
 /* The most vertices and primitives the bus windows can hold: a capacity beyond is a lie. */
 #define WIN_VTX_MAX (GPU_WIN_VTX_BYTES / (4u * GPU_VTX_WORDS))
@@ -142,32 +133,6 @@ uint32_t fuzz_bus_read(uint32_t offset)
 }
 
 /* ---- the input ----------------------------------------------------------------------------- */
-
-struct reader {
-    const uint8_t *p;
-    size_t n;
-};
-
-static uint32_t take8(struct reader *r)
-{
-    if (r->n == 0u) {
-        return 0u;
-    }
-    r->n--;
-    return *r->p++;
-}
-
-static uint32_t take16(struct reader *r)
-{
-    const uint32_t lo = take8(r);
-    return lo | take8(r) << 8;
-}
-
-static uint32_t take32(struct reader *r)
-{
-    const uint32_t lo = take16(r);
-    return lo | take16(r) << 16;
-}
 
 /* A count or base: the edges that matter, small values, or raw. */
 static uint32_t take_value(struct reader *r)

@@ -30,43 +30,7 @@
 #include <string.h>
 
 #include "gpu_model.h"
-
-#define REQUIRE(cond, ...)                                                                \
-    do {                                                                                  \
-        if (!(cond)) {                                                                    \
-            fprintf(stderr, "fuzz_gpu_model: %s:%d: %s: ", __FILE__, __LINE__, #cond);    \
-            fprintf(stderr, __VA_ARGS__);                                                 \
-            fprintf(stderr, "\n");                                                        \
-            abort();                                                                      \
-        }                                                                                 \
-    } while (0)
-
-/* The fuzz input, consumed from the front; reads past the end give 0. */
-struct reader {
-    const uint8_t *p;
-    size_t n;
-};
-
-static uint32_t take8(struct reader *r)
-{
-    if (r->n == 0u) {
-        return 0u;
-    }
-    r->n--;
-    return *r->p++;
-}
-
-static uint32_t take16(struct reader *r)
-{
-    const uint32_t lo = take8(r);
-    return lo | take8(r) << 8;
-}
-
-static uint32_t take32(struct reader *r)
-{
-    const uint32_t lo = take16(r);
-    return lo | take16(r) << 16;
-}
+#include "fuzz_common.h"
 
 /* A register value: mostly the edges that matter, sometimes raw. */
 static uint32_t take_value(struct reader *r)

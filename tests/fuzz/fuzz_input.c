@@ -38,16 +38,7 @@
 #include "real.h"
 #include "render.h"
 #include "scene.h"
-
-#define REQUIRE(cond, ...)                                                                \
-    do {                                                                                  \
-        if (!(cond)) {                                                                    \
-            fprintf(stderr, "fuzz_input: %s:%d: %s: ", __FILE__, __LINE__, #cond);        \
-            fprintf(stderr, __VA_ARGS__);                                                 \
-            fprintf(stderr, "\n");                                                        \
-            abort();                                                                      \
-        }                                                                                 \
-    } while (0)
+#include "fuzz_common.h"
 
 #define FUZZ_MAX_BACKLOG 4096u  /* the simulated UART holds what has arrived and not been read */
 
