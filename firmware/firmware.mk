@@ -108,7 +108,7 @@ FW_SP_VARIANTS += fixed-lean
 # and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
 # -fno-tree-loop-distribute-patterns: GCC would turn the pipeline's clearing loops (the sort's
 # histograms, 2 KiB a frame) into memset calls, and picolibc's rv32 memset stores a byte at a time:
-# measured ~7,700 instructions for the histograms instead of ~1,100 as a word loop.
+# measured on a cubes frame, the sort fell from 25,059 to 17,869 instructions without the call.
 FW_CFLAGS_BASE := $(FW_ARCH_FLAGS) -O2 -g $(FW_WARN) -ffp-contract=off -ffunction-sections \
                   -fdata-sections -fno-tree-loop-distribute-patterns \
                   -Ibsp/$(FW_PLATFORM) -Ifirmware/include -Ifirmware/src

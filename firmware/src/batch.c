@@ -68,7 +68,6 @@ static void batch_fill_whole(struct render_frame *f, struct batch_words *out)
     const uint32_t np = f->prim_count;
     const struct proj_vertex *vert = f->vert;
     const struct render_prim *prim = f->prim;
-    const uint32_t *sort_item = f->sort_item;
     uint32_t *vtx = out->vtx;
     uint32_t *prim_words = out->prim;
 
@@ -76,7 +75,7 @@ static void batch_fill_whole(struct render_frame *f, struct batch_words *out)
         batch_put_vertex(&vtx[v * GPU_VTX_WORDS], &vert[v]);
     }
     for (uint32_t i = 0; i < np; i++) {
-        const struct render_prim *p = &prim[sort_item[i] & 0xFFFFu];  /* draw order */
+        const struct render_prim *p = &prim[render_draw_index(f, i)];
 
 #if BATCH_NATIVE_WORDS
         prim_words[i * GPU_PRIM_WORDS] = p->w[0];
@@ -99,7 +98,6 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
     uint32_t end;
     uint32_t vtx_room;
     const uint32_t total = f->prim_count;
-    const uint32_t *sort_item = f->sort_item;
     const struct render_prim *prim = f->prim;
     struct proj_vertex *vert = f->vert;
     uint32_t *vtx = out->vtx;
@@ -127,13 +125,12 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
     }
     f->batch_stamp = stamp;
 
-    /* Primitives [first, end) at most; the batch closes early when fewer than three vertex
-     * slots are left (nv > vtx_room). Every primitive has a sort item, the overlay's naming
-     * itself, so the draw order is sort_item[i]'s index for every i. */
+    /* Primitives [first, end) in draw order (render_draw_index) at most; the batch closes early
+     * when fewer than three vertex slots are left (nv > vtx_room). */
     end = (total - first > tri_cap) ? first + tri_cap : total;
     vtx_room = vtx_cap - 3u;
     while (i < end && nv <= vtx_room) {
-        const struct render_prim *p = &prim[sort_item[i] & 0xFFFFu];
+        const struct render_prim *p = &prim[render_draw_index(f, i)];
 #if BATCH_NATIVE_WORDS
         /* Both words in locals first: the vertex stamps written below are uint16_t like the
          * indices, so the compiler would otherwise reload the primitive after every store. */

@@ -364,7 +364,7 @@ render_project_vertices(const struct proj_setup *ps, const xf_affine *mv, const 
 }
 
 /* The same for a box mesh (mesh.box): its eight corners through xf_apply_box, which gives the
- * same view points as xf_apply at a third of the cost. */
+ * same view points as xf_apply (cubes: 184 instructions for the eight instead of about 256). */
 static void __attribute__((noinline))
 render_project_box(const struct proj_setup *ps, const xf_affine *mv, const struct mesh *mesh,
                    struct proj_vertex *out, bool inside)

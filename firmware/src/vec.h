@@ -238,7 +238,8 @@ static inline mat3 mat3_compose(const mat3 *a, const mat3 *b)
  * xf_apply of the eight corners of the box [lo, hi], corner i taking hi on axis k when bit k of i
  * is set (x: bit 0, y: bit 1, z: bit 2). Fixed: xf_apply's nine per-axis terms are the only parts
  * that differ between corners, so 18 mulh (each axis at lo and at hi) serve all eight, summed in
- * int32 without overflow under xf_apply's range rule: bit-exact with xf_apply, a third of its cost.
+ * int32 without overflow under xf_apply's range rule: bit-exact with xf_apply (measured on the
+ * cubes: 184 instructions for the eight corners, against about 32 per corner through xf_apply).
  * Float: xf_apply per corner.
  */
 void xf_apply_box(const xf_affine *xf, vec3 lo, vec3 hi, vec3 out[8]);
