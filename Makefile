@@ -19,18 +19,21 @@ ZBUF_SIMS   := $(foreach w,1 4 8 16,$(BUILD)/sim-z-w$(w)/gpusim)
 GPUSIM_W8   := $(BUILD)/sim-w8/gpusim
 PNG_DIFF    := $(BUILD)/tools/png_diff
 
-# Firmware (FW_ELF, fw_unit) and golden model (GPU_MODEL_SRC, model_unit) rules.
-include firmware/firmware.mk
+# The harness's C parts (VGA monitor model, PNG writer), built once: the co-simulator and the
+# firmware's host build link them.
+COSIM_C_SRC := cosim/vga_monitor.c cosim/png_write.c
+COSIM_C_LIB := $(BUILD)/host/libcosim.a
+
+# Golden model (GPU_MODEL_LIB, model_unit), firmware (FW_ELF, fw_unit) rules.
 include gpu_model/model.mk
+include firmware/firmware.mk
 # libFuzzer targets (FUZZ_BINS, fuzz-build) and `make fuzz`.
 include tests/fuzz/fuzz.mk
 
 RTL_V      := $(sort $(wildcard gpu_rtl/*.v))
 RTL_LINT   := gpu_rtl/lint.vlt
 COSIM_CPP  := $(sort $(wildcard cosim/*.cpp))
-HOST_C     := cosim/vga_monitor.c cosim/png_write.c $(GPU_MODEL_SRC)
-HOST_LIB   := $(BUILD)/host/libcosim.a
-HOST_INC   := -Icosim -Igpu_model -Ifirmware/include -Ibsp/qemu_virt
+HOST_INC   := -Icosim -Igpu_model -Icontract -Ibsp/qemu_virt
 
 .PHONY: all setup run run-headless test test-quick lint check-contract contract random-long raster \
         bench-gpu bench-error bench-error-run synth clean
@@ -58,10 +61,10 @@ test-quick: $(FW_ELF) $(BENCH_SIMS) $(ZBUF_SIM) $(BUILD)/tests/fw_unit $(BUILD)/
 
 # ---- the contract: regenerate, or check that the generated files are current ----
 contract:
-	$(PYTHON) tools/gen_contract.py
+	$(PYTHON) contract/gen_contract.py
 
 check-contract:
-	$(PYTHON) tools/gen_contract.py --check
+	$(PYTHON) contract/gen_contract.py --check
 
 lint:
 	$(VERILATOR) --lint-only -Wall --top-module gpu_top -Igpu_rtl $(RTL_LINT) $(RTL_V)
@@ -107,13 +110,13 @@ synth:
 	@ZBUF=$(ZBUF) bash synth/synth.sh $(BUILD)
 
 # ---- host-side simulator: Verilated GPU + co-simulation bridge + golden model ----
-HOST_OBJ := $(patsubst %.c,$(BUILD)/host/%.o,$(HOST_C))
+HOST_OBJ := $(patsubst %.c,$(BUILD)/host/%.o,$(COSIM_C_SRC))
 
 $(BUILD)/host/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(HOST_CC) $(HOST_CFLAGS) -MMD -MP $(HOST_INC) $$(pkg-config --cflags libpng) -c $< -o $@
 
-$(HOST_LIB): $(HOST_OBJ)
+$(COSIM_C_LIB): $(HOST_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
@@ -124,11 +127,11 @@ define verilate
 	$(VERILATOR) --cc --exe --build -j 2 --assert -O3 --x-assign fast --x-initial fast \
 	  --top-module gpu_top $(2) -Igpu_rtl $(RTL_V) $(abspath $(COSIM_CPP)) \
 	  -CFLAGS "-O2 -std=c++17 $(addprefix -I$(CURDIR)/,$(patsubst -I%,%,$(HOST_INC)))" \
-	  -LDFLAGS "$(abspath $(HOST_LIB)) $$(pkg-config --libs libpng)" \
+	  -LDFLAGS "$(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
 	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(dir $(1))obj -o $(abspath $(1)) \
 	  >$(dir $(1))verilator.log 2>&1 || { tail -40 $(dir $(1))verilator.log; exit 1; }
 endef
-SIM_DEPS := $(RTL_V) gpu_rtl/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) $(HOST_LIB)
+SIM_DEPS := $(RTL_V) contract/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) $(COSIM_C_LIB) $(GPU_MODEL_LIB)
 
 $(BUILD)/sim-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$*)

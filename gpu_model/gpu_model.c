@@ -1,7 +1,7 @@
 /*
  * gpu_model.c - bit-exact golden C model of the GPU (see gpu_model.h).
  *
- * Every rule here is a transcription of docs/gpu-contract.md (version 1.1);
+ * Every rule here is a transcription of contract/gpu-contract.md (version 1.1);
  * the comments quote the step they implement.  The rasterizer is deliberately
  * the plainest possible reading of the "Triangle rule (exact)": for every
  * pixel centre of the clamped bounding box it evaluates the three edge

@@ -1,8 +1,8 @@
 /*
  * gpu_model.h - bit-exact golden C model of the GPU (contract 1.1).
  *
- * Written only from docs/gpu-contract.md and the generated register map
- * (firmware/include/gpu_regs.h), never from the RTL, so that the two readers of
+ * Written only from contract/gpu-contract.md and the generated register map
+ * (contract/gpu_regs.h), never from the RTL, so that the two readers of
  * the contract cannot share a bug by sharing code.  It must agree with the RTL
  * on every framebuffer pixel and every register except PERF_BUSY_CYCLES and
  * PERF_SPANS_VISITED (implementation-specific; both read 0 here).

@@ -3,7 +3,7 @@
 // Contract: start (one-cycle pulse, at any time; a division in progress is abandoned) takes dividend
 // and divisor (divisor != 0). valid rises STEPS + 1 clocks after the start clock and stays high, with
 // quotient = sat32(trunc(dividend / divisor)), until the next start; trunc rounds toward zero and
-// sat32 clamps to -2^31 .. 2^31-1, exactly as docs/gpu-contract.md ("Depth") defines ZA and ZB.
+// sat32 clamps to -2^31 .. 2^31-1, exactly as contract/gpu-contract.md ("Depth") defines ZA and ZB.
 // Throughput: one division per STEPS + 1 clocks (STEPS = ceil(31 / QBITS); 16 with QBITS = 2).
 //
 // Method: restoring division of the magnitudes, QBITS quotient bits per clock (radix 2^QBITS), in the

@@ -3,7 +3,7 @@
 //
 // Contract: start (one-cycle pulse) begins at primitive 0 of the batch described by the batch inputs,
 // which hold still until idle. Descriptors leave in primitive order through out_valid/out_ready.
-// Checks and arithmetic follow docs/gpu-contract.md exactly: kind, then vertex indices (no vertex
+// Checks and arithmetic follow contract/gpu-contract.md exactly: kind, then vertex indices (no vertex
 // outside the batch is ever read), then the triangle rule (area, winding swap, clamped bounding box of
 // pixel centres, top-left edges) or the line rule. Throughput: one primitive per 3 clocks (the vertex
 // RAM has one read port and a primitive needs three vertices); the index read of the next primitive
@@ -88,7 +88,7 @@ module gpu_prim_setup #(
     output reg                      ev_err_kind,
     output reg                      ev_err_index
 );
-`include "gpu_rtl/gpu_regs.vh"  // relative to the repository root, where every tool runs
+`include "contract/gpu_regs.vh"  // relative to the repository root, where every tool runs
 
     // ------------------------------------------------------------------ fetch
     localparam [2:0] F_IDLE = 3'd0, F_ISSUE = 3'd1, F_CHECK = 3'd2, F_V1 = 3'd3, F_V2 = 3'd4,

@@ -3,7 +3,7 @@
 //
 // Contract: start (one-cycle pulse) begins a batch described by the batch inputs, which hold still
 // until busy falls; soft_reset abandons it at once (RESET register). Steps and counters follow
-// docs/gpu-contract.md ("A batch, and the frame handshake"). The clear writes SPAN_W pixels per clock;
+// contract/gpu-contract.md ("A batch, and the frame handshake"). The clear writes SPAN_W pixels per clock;
 // primitives are set up at one per 3 clocks while earlier ones are drawn at one span per clock.
 //
 // Edge-function widths (the range argument for gpu_prim_setup and gpu_span_walker): vertex

@@ -1,6 +1,6 @@
 // gpu_regs: the GPU's bus slave — register file, window decode and buffer write routing.
 //
-// Contract (docs/gpu-contract.md, offsets from gpu_regs.vh): aligned 32-bit accesses. A write is taken
+// Contract (contract/gpu-contract.md, offsets from gpu_regs.vh): aligned 32-bit accesses. A write is taken
 // in the cycle bus_valid && bus_write is high (no wait states). A read returns bus_rdata with
 // bus_rvalid one cycle after bus_valid && !bus_write. Writes to the palette, the buffers and the batch
 // registers while busy are dropped and flag ERR_WRITE_BUSY; a DOORBELL write while idle latches its tag
@@ -60,7 +60,7 @@ module gpu_regs #(
     input  wire [31:0]       perf_spans_written,
     input  wire [31:0]       perf_spans_visited
 );
-`include "gpu_rtl/gpu_regs.vh"  // relative to the repository root, where every tool runs
+`include "contract/gpu_regs.vh"  // relative to the repository root, where every tool runs
 
     wire [16:0] byte_addr = {bus_addr, 2'b00};
     wire is_write = bus_valid && bus_write;

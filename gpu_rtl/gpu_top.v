@@ -1,6 +1,6 @@
 // gpu_top: the GPU — bus slave, vertex/index/palette RAMs, rasterizer, double framebuffer, VGA out.
 //
-// Contract: docs/gpu-contract.md. The CPU writes buffers and registers over the bus and rings
+// Contract: contract/gpu-contract.md. The CPU writes buffers and registers over the bus and rings
 // DOORBELL; the GPU clears and draws into the back buffer, swaps at vertical blank when asked, and
 // reports DONE_SEQ. Data path: bus -> gpu_regs -> vertex/index RAM -> gpu_raster (gpu_prim_setup ->
 // gpu_span_walker) -> gpu_framebuffer (back) ... (front) -> gpu_vga -> palette -> VGA pins. One clock
@@ -39,7 +39,7 @@ module gpu_top #(
     output wire [3:0]  vga_g,
     output wire [3:0]  vga_b
 );
-`include "gpu_rtl/gpu_regs.vh"  // relative to the repository root, where every tool runs
+`include "contract/gpu_regs.vh"  // relative to the repository root, where every tool runs
 
     localparam [31:0] CAPS = (32'(SPAN_W) << GPU_CAPS_SPAN_W_LSB)
                            | (32'(ENABLE_LINES != 0) << GPU_CAPS_LINES_LSB)

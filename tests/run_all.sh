@@ -24,7 +24,7 @@ suite() {
     fi
 }
 
-suite contract-generated     "$PYTHON" tools/gen_contract.py --check
+suite contract-generated     "$PYTHON" contract/gen_contract.py --check
 suite rtl-lint               verilator --lint-only -Wall --top-module gpu_top -Igpu_rtl gpu_rtl/lint.vlt gpu_rtl/*.v
 suite rtl-div-unit           bash tests/rtl/div.sh
 suite firmware-unit          "$BUILD/tests/fw_unit"

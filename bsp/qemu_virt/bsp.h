@@ -21,7 +21,7 @@
 
 #define BSP_NAME      "qemu_virt"
 
-/* Base address of the GPU's bus window (docs/gpu-contract.md, "Platforms"): 0x8700_0000. */
+/* Base address of the GPU's bus window (contract/gpu-contract.md, "Platforms"): 0x8700_0000. */
 #define BSP_GPU_BASE  PLATFORM_GPU_BASE
 
 /* Exit status used when a CPU trap (exception or unexpected interrupt) ends the program. */

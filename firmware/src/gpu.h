@@ -1,5 +1,5 @@
 /*
- * gpu.h — driver for the memory-mapped GPU of docs/gpu-contract.md.
+ * gpu.h — driver for the memory-mapped GPU of contract/gpu-contract.md.
  *
  * Two layers:
  *   - a pure core (static inline, below): packs vertex and primitive words exactly as the
@@ -93,7 +93,7 @@ struct gpu_dev {
     uint32_t resets;    /* gpu_reset calls since gpu_init */
 };
 
-/* One batch (docs/gpu-contract.md, "A batch, and the frame handshake"). The driver copies
+/* One batch (contract/gpu-contract.md, "A batch, and the frame handshake"). The driver copies
  * vtx_count vertices to the vertex buffer starting at vtx_base and prim_count primitives to the
  * index buffer starting at tri_base, then programs the batch registers with the same values. */
 struct gpu_batch {

@@ -4,7 +4,7 @@
  * defined bits, the RESET register, and PERF_SPANS_WRITTEN (triangle rule,
  * "Spans") for every span width.
  *
- * Expected values come from docs/gpu-contract.md, computed by hand (the
+ * Expected values come from contract/gpu-contract.md, computed by hand (the
  * arithmetic is in the comments).
  */
 #include <stdlib.h>

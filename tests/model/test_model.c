@@ -3,7 +3,7 @@
  * (identity registers, windows, read/write rules) and the batch rules
  * (errors, counters, clear, swap, scan-out).  Raster rules: test_raster.c.
  *
- * Expected values come from docs/gpu-contract.md, computed by hand.
+ * Expected values come from contract/gpu-contract.md, computed by hand.
  */
 #include <stdlib.h>
 #include <string.h>
