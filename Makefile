@@ -35,7 +35,7 @@ RTL_LINT   := gpu_rtl/lint.vlt
 COSIM_CPP  := $(sort $(wildcard cosim/*.cpp))
 HOST_INC   := -Icosim -Igpu_model -Icontract -Ibsp/qemu_virt
 
-.PHONY: all setup run run-headless test test-quick lint check-contract contract random-long raster \
+.PHONY: all setup run run-headless test test-quick test-list lint check-contract contract random-long raster \
         bench-gpu bench-error bench-error-run synth clean
 
 all: $(FW_ELF) $(GPUSIM)
@@ -51,13 +51,18 @@ run-headless: $(FW_ELF) $(GPUSIM)
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
 	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log
 
-# ---- test: everything, with a summary line ----
+# ---- test: every suite (or those matching SUITE, e.g. SUITE='rtl-* fw-unit'), with a summary line ----
+SUITE ?= *
+TEST_ENV = GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUITE='$(SUITE)'
 test: setup
 	@$(MAKE) --no-print-directory test-quick
 
 test-quick: $(FW_ELF) $(BENCH_SIMS) $(ZBUF_SIM) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit fw-test-deps \
             fuzz-build $(PNG_DIFF)
-	@GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) bash tests/run_all.sh
+	@$(TEST_ENV) bash tests/run_all.sh
+
+test-list:
+	@$(TEST_ENV) bash tests/run_all.sh --list
 
 # ---- the contract: regenerate, or check that the generated files are current ----
 contract:

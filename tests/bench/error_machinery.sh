@@ -5,11 +5,9 @@
 #  2. FW_SUBPIXEL_BITS=4 builds the same program as the default build (tetra, fixed point: the
 #     loaded bytes of the two ELFs are equal);
 #  3. FW_SUBPIXEL_BITS outside 0..4 is refused by the build.
-set -euo pipefail
-: "${BUILD:?}"
-PYTHON="${PYTHON:-python3}"
-work="$BUILD/test-bench-error"
-rm -rf "$work" && mkdir -p "$work"
+source "$(dirname "$0")/../lib.sh"
+need BUILD PYTHON
+work=$(fresh_dir bench-error-machinery)
 
 # 1.
 "$PYTHON" tools/bench_error.py --check-metric "$BUILD/tools/png_diff" "$work"
@@ -18,13 +16,13 @@ rm -rf "$work" && mkdir -p "$work"
 objcopy=riscv64-unknown-elf-objcopy
 "$objcopy" -O binary "$BUILD/fw-test/tetra.elf" "$work/default.bin"
 "$objcopy" -O binary "$BUILD/fw-test/tetra-fixed-sp4.elf" "$work/sp4.bin"
-[ -s "$work/default.bin" ] || { echo "empty image from tetra.elf"; exit 1; }
-cmp -s "$work/default.bin" "$work/sp4.bin" || { echo "FW_SUBPIXEL_BITS=4 is not the default program"; exit 1; }
+[ -s "$work/default.bin" ] || fail "empty image from tetra.elf"
+cmp -s "$work/default.bin" "$work/sp4.bin" || fail "FW_SUBPIXEL_BITS=4 is not the default program"
 echo "sub-pixel: FW_SUBPIXEL_BITS=4 gives the default program ($(stat -c %s "$work/sp4.bin") bytes, equal)"
 
 # 3.
 if make --no-print-directory -n BUILD="$work/b" FW_SUBPIXEL_BITS=5 fw >"$work/sp5.log" 2>&1; then
-    echo "FW_SUBPIXEL_BITS=5 was accepted"; exit 1
+    fail "FW_SUBPIXEL_BITS=5 was accepted"
 fi
-grep -q "FW_SUBPIXEL_BITS=5 is not one of" "$work/sp5.log" || { cat "$work/sp5.log"; exit 1; }
-echo "bench-error machinery: metric exact on known images, FW_SUBPIXEL_BITS=4 = default build, 5 refused"
+expect_line "FW_SUBPIXEL_BITS=5 is not one of" "$work/sp5.log"
+pass "bench-error machinery: metric exact on known images, FW_SUBPIXEL_BITS=4 = default build, 5 refused"

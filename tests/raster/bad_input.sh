@@ -1,15 +1,13 @@
 #!/usr/bin/env bash
 # `gpusim raster` on malformed lists: a clear message naming the line, exit status 2, no crash.
-set -uo pipefail
-: "${GPUSIM:?}" "${BUILD:?}"
-work="$BUILD/test-raster-bad"
-rm -rf "$work" && mkdir -p "$work"
+source "$(dirname "$0")/../lib.sh"
+need GPUSIM BUILD
+work=$(fresh_dir raster-bad-input)
 check() {  # check NAME CONTENT EXPECTED-MESSAGE
     printf '%b' "$2" >"$work/$1.txt"
-    "$GPUSIM" raster --in "$work/$1.txt" --out "$work/$1" >"$work/$1.out" 2>&1
-    local status=$?
-    if [ $status -ne 2 ] || ! grep -q "$3" "$work/$1.out"; then
-        echo "$1: expected status 2 and '$3', got status $status:"; cat "$work/$1.out"; exit 1
+    run_to "$work/$1.out" 30 "$GPUSIM" raster --in "$work/$1.txt" --out "$work/$1"
+    if [ "$status" -ne 2 ] || ! grep -q -- "$3" "$work/$1.out"; then
+        cat "$work/$1.out"; fail "$1: expected status 2 and '$3', got status $status"
     fi
 }
 check unknown   "clear 0\ncircle 1 2 3 4\n"          "2: unknown primitive 'circle'"
@@ -22,6 +20,7 @@ check overflow  "tri 0 0 0 99999999999999999999 0 0 1\n" "not an integer"
 # A NUL byte inside a number used to end it there, so this read as colour 5 (found by
 # tests/fuzz/fuzz_prim_list); the message shows the byte escaped.
 check nul       "clear 0\ntri 0 0 16 0 0 16 5\0x\n"    "2: '5.x00x' is not an integer"
-"$GPUSIM" raster --in "$work/does-not-exist.txt" --out "$work/x" >"$work/missing.out" 2>&1
-[ $? -eq 2 ] && grep -q "cannot read" "$work/missing.out" || { echo "missing file not reported"; exit 1; }
-echo "raster bad input: 9 malformed inputs rejected with a message naming the problem"
+run_to "$work/missing.out" 30 "$GPUSIM" raster --in "$work/does-not-exist.txt" --out "$work/x"
+expect_status 2 "a missing list"
+expect_line "cannot read" "$work/missing.out"
+pass "raster bad input: 9 malformed inputs rejected with a message naming the problem"

@@ -2,10 +2,9 @@
 # Exact-once coverage through the RTL: meshes of edge-sharing triangles drawn over colour 0 must
 # write every covered pixel exactly once (PERF_PIXELS equals the number of non-zero pixels), a mesh
 # over the whole guard band must cover all 76800 pixels, and RTL and model must agree.
-set -euo pipefail
-: "${GPUSIM:?}" "${BUILD:?}" "${PYTHON:=python3}"
-work="$BUILD/test-mesh"
-rm -rf "$work" && mkdir -p "$work"
+source "$(dirname "$0")/../lib.sh"
+need GPUSIM BUILD PYTHON
+work=$(fresh_dir raster-mesh)
 checked=0
 for kind in grid fan; do
     for seed in 1 2 3 4 5 6; do
@@ -25,4 +24,4 @@ PY
         checked=$((checked + 1))
     done
 done
-echo "mesh: $checked meshes, every covered pixel written exactly once, no cracks"
+pass "mesh: $checked meshes, every covered pixel written exactly once, no cracks"

@@ -7,52 +7,48 @@
 #  3. Keys 1-5 switch scenes while running.
 #  4. The painter's order is right: on each scene's default view, frames drawn in sorted order
 #     without a depth test equal the frames drawn with the depth buffer on (host, model --zbuf).
-set -euo pipefail
-: "${BUILD:?}"
+source "$(dirname "$0")/../lib.sh"
+need BUILD
 dir="$BUILD/fw-test"
-work="$BUILD/test-scenes/features"
-rm -rf "$work" && mkdir -p "$work"
+zsim="$BUILD/sim-z-w8/gpusim"
+need_file "$dir/host-voxel" "$dir/host-knot" "$dir/host-tetra" "$dir/knot.elf" "$zsim"
+work=$(fresh_dir scene-host-features)
 
 # 1. no lines
 "$dir/host-voxel" --no-lines --frames "$work/nolines" --keys-at 2:f >"$work/nolines.log"
-grep -q "wireframe: the GPU has no lines" "$work/nolines.log" || { echo "no-lines mode not reported"; exit 1; }
-grep -q "^wireframe on" "$work/nolines.log" || { echo "wireframe did not switch on"; exit 1; }
-[ "$(grep -c '^frame ' "$work/nolines.log")" -eq 4 ] || { echo "frames missing without lines"; exit 1; }
+expect_line "wireframe: the GPU has no lines" "$work/nolines.log"
+expect_line "^wireframe on" "$work/nolines.log"
+expect_eq "$(count '^frame ' "$work/nolines.log")" 4 "frames without lines"
 "$dir/host-voxel" --frames "$work/lines" --keys-at 2:f >"$work/lines.log"
 # With lines the wireframe frames use fewer primitives than the triangle-pair emulation.
 p_lines=$(grep '^frame 3:' "$work/lines.log" | sed -E 's/.*prims ([0-9]+).*/\1/')
 p_tris=$(grep '^frame 3:' "$work/nolines.log" | sed -E 's/.*prims ([0-9]+).*/\1/')
-[ "$p_tris" -eq $((2 * p_lines)) ] || { echo "expected two triangles per line: $p_tris vs $p_lines"; exit 1; }
+expect_eq "$p_tris" $((2 * p_lines)) "primitives without lines (two triangles per line)"
 echo "no-lines: wireframe as $p_tris triangles instead of $p_lines lines"
 
 # 2. depth buffer, co-simulated against the host build
-zsim="$BUILD/sim-z-w8/gpusim"
-if [ -x "$zsim" ]; then
-    "$zsim" cosim --fw "$dir/knot.elf" --frames "$work/z-cosim" --uart-log "$work/z-cosim.log" \
-        --keys-at 1:z >"$work/z-cosim.out" 2>&1 || { echo "z co-simulation failed"; tail -n 5 "$work/z-cosim.out"; exit 1; }
-    "$dir/host-knot" --zbuf --frames "$work/z-host" --keys-at 1:z >"$work/z-host.log"
-    grep -q "^depth buffer on" "$work/z-host.log" || { echo "depth test not enabled"; exit 1; }
-    for f in "$work/z-cosim"/*.png; do
-        cmp -s "$f" "$work/z-host/$(basename "$f")" || { echo "depth buffer: $(basename "$f") differs"; exit 1; }
-    done
-    echo "zbuf: $(ls "$work/z-cosim" | wc -l) frames with the depth test, identical in co-simulation and on the host"
-else
-    echo "missing $zsim"; exit 1
-fi
+run_to "$work/z-cosim.out" 300 "$zsim" cosim --fw "$dir/knot.elf" --frames "$work/z-cosim" \
+    --uart-log "$work/z-cosim.log" --keys-at 1:z
+[ "$status" -eq 0 ] || { tail -n 5 "$work/z-cosim.out"; fail "z co-simulation failed (status $status)"; }
+"$dir/host-knot" --zbuf --frames "$work/z-host" --keys-at 1:z >"$work/z-host.log"
+expect_line "^depth buffer on" "$work/z-host.log"
+same_pngs "$work/z-cosim" "$work/z-host" "depth buffer"
+echo "zbuf: $(ls "$work/z-cosim" | wc -l) frames with the depth test, identical in co-simulation and on the host"
 # Without a depth buffer the key is refused politely.
 "$dir/host-knot" --keys-at 1:z >"$work/noz.log"
-grep -q "the GPU has none" "$work/noz.log" || { echo "missing CAPS_ZBUF message"; exit 1; }
+expect_line "the GPU has none" "$work/noz.log"
 
 # 3. scene switching
 "$dir/host-tetra" --frames "$work/switch" --keys-at 1:4 --keys-at 3:2 >"$work/switch.log"
-grep -q "^scene voxel: " "$work/switch.log" && grep -q "^scene cubes: 768 triangles" "$work/switch.log" || { echo "scene switch failed"; exit 1; }
+expect_line "^scene voxel: " "$work/switch.log"
+expect_line "^scene cubes: 768 triangles" "$work/switch.log"
 # 4. painter's order against the depth buffer
 for scene in cubes landscape voxel knot; do
     "$dir/host-$scene" --zbuf --frames "$work/painter-$scene" >/dev/null
     "$dir/host-$scene" --zbuf --frames "$work/zbuf-$scene" --keys-at 1:z >/dev/null
     for f in 0001 0002 0003; do
-        cmp -s "$work/painter-$scene/$f.png" "$work/zbuf-$scene/$f.png" || { echo "$scene frame $f: painter's order differs from the depth buffer"; exit 1; }
+        cmp -s "$work/painter-$scene/$f.png" "$work/zbuf-$scene/$f.png" || fail "$scene frame $f: painter's order differs from the depth buffer"
     done
 done
 echo "painter: sorted frames equal depth-buffered frames on cubes, landscape, voxel, knot"
-echo "host-features: no-lines wireframe, depth buffer (co-simulated), scene switching, painter = depth buffer"
+pass "host-features: no-lines wireframe, depth buffer (co-simulated), scene switching, painter = depth buffer"

@@ -7,11 +7,10 @@
 # modes, wireframe, anaglyph stereo and voxel place/break. The per-frame statistics lines must
 # agree too, except the two fields only the co-simulation can measure (instructions, GPU cycles).
 # Uses the FW_TEST_FRAMES-frame builds of `make fw-test-deps` in $BUILD/fw-test.
-set -euo pipefail
-: "${GPUSIM:?}" "${BUILD:?}"
+source "$(dirname "$0")/../lib.sh"
+need GPUSIM BUILD
 dir="$BUILD/fw-test"
-work="$BUILD/test-scenes/host-vs-cosim"
-rm -rf "$work" && mkdir -p "$work"
+work=$(fresh_dir scene-host-vs-cosim)
 
 check_case() {
     local name=$1 variant=$2
@@ -20,34 +19,27 @@ check_case() {
     for k in "$@"; do
         args+=(--keys-at "$k")
     done
-    [ -x "$dir/host-$variant" ] && [ -f "$dir/$variant.elf" ] || { echo "missing $dir/$variant builds (make fw-test-deps)"; exit 1; }
-    if ! "$GPUSIM" cosim --fw "$dir/$variant.elf" --frames "$work/$name-cosim" \
-         --uart-log "$work/$name-cosim.uart" "${args[@]}" >"$work/$name-cosim.out" 2>&1; then
-        echo "$name: co-simulation failed"; tail -n 5 "$work/$name-cosim.out"; exit 1
-    fi
-    if ! "$dir/host-$variant" --frames "$work/$name-host" "${args[@]}" >"$work/$name-host.uart" 2>&1; then
-        echo "$name: host build failed"; tail -n 5 "$work/$name-host.uart"; exit 1
-    fi
-    local n_cosim n_host n_model
-    n_cosim=$(ls "$work/$name-cosim" | wc -l)
-    n_host=$(ls "$work/$name-host" | wc -l)
-    n_model=$(grep -c "equals golden model" "$work/$name-cosim.out" || true)
-    [ "$n_cosim" -ge 4 ] || { echo "$name: only $n_cosim frames"; exit 1; }
-    [ "$n_cosim" -eq "$n_host" ] || { echo "$name: $n_cosim co-simulated frames, $n_host host frames"; exit 1; }
-    [ "$n_model" -eq "$n_cosim" ] || { echo "$name: the harness checked $n_model of $n_cosim frames"; exit 1; }
-    for f in "$work/$name-cosim"/*.png; do
-        cmp -s "$f" "$work/$name-host/$(basename "$f")" || { echo "$name: $(basename "$f") differs"; exit 1; }
-    done
+    need_file "$dir/host-$variant" "$dir/$variant.elf"
+    run_to "$work/$name-cosim.out" 300 "$GPUSIM" cosim --fw "$dir/$variant.elf" --frames "$work/$name-cosim" \
+        --uart-log "$work/$name-cosim.uart" --summary "$work/$name.summary" "${args[@]}"
+    [ "$status" -eq 0 ] || { tail -n 5 "$work/$name-cosim.out"; fail "$name: co-simulation failed (status $status)"; }
+    run_to "$work/$name-host.uart" 300 "$dir/host-$variant" --frames "$work/$name-host" "${args[@]}"
+    [ "$status" -eq 0 ] || { tail -n 5 "$work/$name-host.uart"; fail "$name: host build failed (status $status)"; }
+    local frames
+    frames=$(summary frames "$work/$name.summary")
+    [ "$frames" -ge 4 ] || fail "$name: only $frames frames"
+    expect_eq "$(summary frames_model_checked "$work/$name.summary")" "$frames" "$name: frames checked against the model"
+    same_pngs "$work/$name-cosim" "$work/$name-host" "$name: co-simulation against host"
     # Frame lines: identical but for the co-simulation-only fields.
     strip() { grep '^frame ' "$1" | sed -E 's/fw instr [0-9]+/fw instr -/; s/gpu cycles [0-9]+/gpu cycles -/'; }
     if ! diff <(strip "$work/$name-cosim.uart") <(strip "$work/$name-host.uart") >"$work/$name.diff"; then
-        echo "$name: frame statistics differ:"; head -n 6 "$work/$name.diff"; exit 1
+        head -n 6 "$work/$name.diff"; fail "$name: frame statistics differ"
     fi
     # Consecutive frames differ (the keys or the animation moved something).
     local distinct
     distinct=$(md5sum "$work/$name-cosim"/*.png | awk '{print $1}' | sort -u | wc -l)
-    [ "$distinct" -ge 3 ] || { echo "$name: only $distinct distinct frames: nothing moved"; exit 1; }
-    echo "$name: $n_cosim frames identical (keys: $*)"
+    [ "$distinct" -ge 3 ] || fail "$name: only $distinct distinct frames: nothing moved"
+    echo "$name: $frames frames identical (keys: $*)"
 }
 
 check_case tetra        tetra        2:f 3:g
@@ -57,4 +49,4 @@ check_case voxel        voxel        2:b 5:p 8:np
 check_case knot         knot         2:uoo 3:g
 check_case tetra-float  tetra-float  2:iif
 check_case voxel-float  voxel-float  2:bbj 5:k 8:dd
-echo "host-vs-cosim: 7 runs, every frame byte-identical between the host build and co-simulation"
+pass "host-vs-cosim: 7 runs, every frame byte-identical between the host build and co-simulation"

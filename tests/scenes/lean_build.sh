@@ -3,33 +3,29 @@
 # (FW_WITH_WIREFRAME/ANAGLYPH/DEPTH/LIGHTING = 0, fw_config.h) run in co-simulation on the depth
 # GPU: every frame rendered and equal to the golden model, the F, G and Z keys answered with
 # "not built in" and changing nothing, and the program smaller than the full build.
-set -euo pipefail
-: "${BUILD:?}"
+source "$(dirname "$0")/../lib.sh"
+need BUILD
 lean="$BUILD/fw-test/cubes-lean.elf"
 full="$BUILD/fw-test/cubes.elf"
 sim="$BUILD/sim-z-w8/gpusim"
-work="$BUILD/test-scenes/lean-build"
-rm -rf "$work" && mkdir -p "$work"
-for f in "$lean" "$full" "$sim"; do [ -f "$f" ] || { echo "missing $f (make test builds it)"; exit 1; }; done
+need_file "$lean" "$full" "$sim"
+work=$(fresh_dir scene-lean-build)
 
-set +e
-timeout 120 "$sim" cosim --fw "$lean" --frames "$work/frames" --uart-log "$work/uart.log" \
-    --keys-at "1:fgz" >"$work/out" 2>&1
-status=$?
-set -e
+run_to "$work/out" 120 "$sim" cosim --fw "$lean" --frames "$work/frames" --uart-log "$work/uart.log" \
+    --keys-at "1:fgz" --summary "$work/summary"
 tail -n 3 "$work/out"
-[ "$status" -eq 0 ] || { echo "expected status 0, got $status"; exit 1; }
-[ "$(grep -c '^frame ' "$work/uart.log")" -eq 4 ] || { echo "not every frame rendered"; exit 1; }
-[ "$(grep -c 'equals golden model' "$work/out")" -eq 4 ] || { echo "not every frame matched the model"; exit 1; }
+expect_status 0 "the co-simulation"
+expect_eq "$(count '^frame ' "$work/uart.log")" 4 "frames rendered"
+expect_eq "$(summary frames_model_checked "$work/summary")" 4 "frames equal to the model"
 for what in "wireframe: not built in" "anaglyph: not built in" "depth buffer: not built in"; do
-    grep -q "^$what" "$work/uart.log" || { echo "no '$what' answer"; exit 1; }
+    expect_line "^$what" "$work/uart.log"
 done
-! grep -Eq '^(wireframe on|anaglyph on|depth buffer on)' "$work/uart.log" || { echo "a left-out feature turned on"; exit 1; }
-# One pass a frame (no anaglyph), and the GPU's depth test never asked for.
-! grep -q 'batches 2' "$work/uart.log" || { echo "two passes in a frame"; exit 1; }
+expect_no_line '^(wireframe on|anaglyph on|depth buffer on)' "$work/uart.log"
+# One pass a frame (no anaglyph): every frame line says one batch.
+expect_eq "$(count ' batches 1 [|]' "$work/uart.log")" 4 "frames drawn in one batch"
 
 size_of() { riscv64-unknown-elf-size "$1" | awk 'NR == 2 { print $1 }'; }
 lean_text=$(size_of "$lean")
 full_text=$(size_of "$full")
-[ "$lean_text" -lt "$full_text" ] || { echo "lean build not smaller: $lean_text >= $full_text bytes"; exit 1; }
-echo "lean build: 4 frames equal to the model, F/G/Z not built in, .text $lean_text bytes (full build $full_text)"
+[ "$lean_text" -lt "$full_text" ] || fail "lean build not smaller: $lean_text >= $full_text bytes"
+pass "lean build: 4 frames equal to the model, F/G/Z not built in, .text $lean_text bytes (full build $full_text)"

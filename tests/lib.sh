@@ -1,0 +1,104 @@
+# tests/lib.sh — sourced by every shell test: strict mode, the checks they all make, and the one
+# summary line that tests/run_all.sh shows for a passing suite (the log's last line).
+#
+#   need VAR...                  fail unless each environment variable is set (GPUSIM, BUILD, ...)
+#   need_file FILE...            fail unless each file exists ("make test builds it")
+#   work=$(fresh_dir NAME)       an empty $BUILD/tests-run/NAME
+#   run_to FILE TIMEOUT CMD...   run CMD under `timeout`, stdout and stderr to FILE; sets $status
+#                                (never stops the test: the caller judges the status)
+#   fail MESSAGE                 print MESSAGE and end the test with status 1
+#   expect_status WANT [WHAT]    fail unless $status is WANT
+#   expect_eq GOT WANT WHAT      fail unless two numbers are equal
+#   count PATTERN FILE           lines of FILE matching the extended regex (0 when none, or no file)
+#   expect_line PATTERN FILE     fail unless some line of FILE matches the extended regex
+#   expect_no_line PATTERN FILE  fail if any line of FILE matches
+#   same_pngs DIR_A DIR_B WHAT   fail unless both hold the same PNG names with identical bytes
+#   summary KEY FILE             a field of a `gpusim cosim --summary` file (key=value lines)
+#   no_qemu_left                 fail if a co-simulation QEMU started from this checkout still runs
+#   pass MESSAGE                 the summary line; the test ends with status 0
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+need() {
+    local v
+    for v in "$@"; do
+        [ -n "${!v:-}" ] || fail "$v is not set (tests/run_all.sh sets it; run through make test)"
+    done
+}
+
+need_file() {
+    local f
+    for f in "$@"; do
+        [ -e "$f" ] || fail "missing $f (make test builds it)"
+    done
+}
+
+fresh_dir() {
+    local dir="${BUILD:?}/tests-run/$1"
+    rm -rf "$dir" && mkdir -p "$dir"
+    echo "$dir"
+}
+
+run_to() {
+    local out="$1" limit="$2"
+    shift 2
+    status=0
+    timeout "$limit" "$@" >"$out" 2>&1 || status=$?
+}
+
+fail() {
+    echo "FAILED: $*"
+    exit 1
+}
+
+expect_status() {
+    [ "$status" -eq "$1" ] || fail "${2:-the command}: expected status $1, got $status"
+}
+
+expect_eq() {
+    [ "$1" -eq "$2" ] || fail "$3: got $1, expected $2"
+}
+
+count() {
+    [ -f "$2" ] || { echo 0; return; }
+    grep -cE -- "$1" "$2" || true
+}
+
+expect_line() {
+    grep -qE -- "$1" "$2" || fail "no line matching '$1' in $2"
+}
+
+expect_no_line() {
+    ! grep -qE -- "$1" "$2" || fail "a line matches '$1' in $2: $(grep -m1 -E -- "$1" "$2")"
+}
+
+same_pngs() {
+    local a="$1" b="$2" what="$3" f n_a n_b
+    n_a=$(find "$a" -maxdepth 1 -name '*.png' | wc -l)
+    n_b=$(find "$b" -maxdepth 1 -name '*.png' | wc -l)
+    [ "$n_a" -eq "$n_b" ] || fail "$what: $n_a frames against $n_b"
+    [ "$n_a" -gt 0 ] || fail "$what: no frames"
+    for f in "$a"/*.png; do
+        cmp -s "$f" "$b/$(basename "$f")" || fail "$what: $(basename "$f") differs"
+    done
+}
+
+summary() {
+    local value
+    value=$(sed -n "s/^$1=//p" "$2")
+    [ -n "$value" ] || fail "no '$1' in $2"
+    echo "$value"
+}
+
+no_qemu_left() {
+    # Only a QEMU started from this checkout counts: other checkouts may be co-simulating meanwhile.
+    local pid
+    for pid in $(pgrep -f "mem-path=/proc/self/fd" || true); do
+        [ "$(readlink "/proc/$pid/cwd" 2>/dev/null)" != "$PWD" ] || fail "a QEMU is still running (pid $pid)"
+    done
+}
+
+pass() {
+    echo "$*"
+    exit 0
+}
