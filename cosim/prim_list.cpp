@@ -2,6 +2,7 @@
 #include "prim_list.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 
@@ -111,6 +112,34 @@ bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops_out, std:
     }
     ops_out.insert(ops_out.end(), ops.begin(), ops.end());
     return true;
+}
+
+std::string prim_list_write(const std::vector<ListOp> &ops)
+{
+    std::string text;
+    char line[160];
+    for (const ListOp &op : ops) {
+        const int32_t *v = op.v;
+        line[0] = '\0';
+        switch (op.kind) {
+        case ListOp::Clear:
+            std::snprintf(line, sizeof line, "clear %u\n", op.color);
+            break;
+        case ListOp::Tri:
+            std::snprintf(line, sizeof line, "tri %d %d %d %d %d %d %u\n", v[0], v[1], v[2], v[3], v[4], v[5],
+                          op.color);
+            break;
+        case ListOp::Line:
+            std::snprintf(line, sizeof line, "line %d %d %d %d %u\n", v[0], v[1], v[2], v[3], op.color);
+            break;
+        case ListOp::ZTri:
+            std::snprintf(line, sizeof line, "ztri %d %d %u %d %d %u %d %d %u %u\n", v[0], v[1], op.z[0], v[2],
+                          v[3], op.z[1], v[4], v[5], op.z[2], op.color);
+            break;
+        }
+        text += line;
+    }
+    return text;
 }
 
 std::vector<Batch> prim_list_batches(const std::vector<ListOp> &ops, uint32_t vtx_cap, uint32_t tri_cap)

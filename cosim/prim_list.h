@@ -1,4 +1,5 @@
-// prim_list: the primitive-list text format of `make raster`, and the batches it becomes.
+// prim_list: the primitive-list text format of `make raster` and `gpusim cosim --dump-lists`: its
+// parser, its writer, and the batches a list becomes.
 //
 // One primitive per line, integers: `clear C`, `tri X0 Y0 X1 Y1 X2 Y2 C`, `line X0 Y0 X1 Y1 C`
 // (coordinates Q12.4, -32768..32767; C a palette index 0..255); `#` starts a comment; blank lines
@@ -22,6 +23,12 @@ struct ListOp {
 // Parses text and appends its primitives to ops. On error returns false, sets error to
 // "LINE: what is wrong" (LINE counted from 1) and leaves ops as it was.
 bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops, std::string &error);
+
+// The text of ops, one op per line in the format above (the first value of each field its kind uses;
+// values are expected in their documented ranges, as the parser gives them). The inverse of
+// prim_list_parse: parsing the text gives ops back, every kind (ztri included) and field the parser
+// sets (tests/raster/roundtrip.sh, tests/fuzz/fuzz_prim_list.cpp).
+std::string prim_list_write(const std::vector<ListOp> &ops);
 
 // One GPU batch: its vertex and index words, whether it clears first, and with what colour.
 struct Batch {

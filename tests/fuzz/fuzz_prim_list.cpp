@@ -10,6 +10,8 @@
 //   - an acceptance means every non-blank line (comments stripped) is a keyword and the right count
 //     of plain decimal integers, each in its documented range — checked here by an independent,
 //     much simpler reading of the format in prim_list.h — and the ops read back exactly;
+//   - an accepted list round-trips: prim_list_write of its ops parses again, to the same ops, and
+//     writing those gives the same text;
 //   - prim_list_batches keeps every batch within the capacities it is given, every index inside
 //     its batch's vertices, and every primitive once, in order; a clear starts a batch, and
 //     clears with no primitive between them share one, cleared by the last.
@@ -271,6 +273,24 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
     }
     REQUIRE(next == ops.size(), "%zu ops from %zu lines", ops.size(), next);
+
+    // Round trip through the writer.
+    const std::string written = prim_list_write(ops);
+    std::vector<ListOp> again;
+    std::string error_again;
+    REQUIRE(prim_list_parse(written, again, error_again), "the written list is rejected: '%s'",
+            error_again.c_str());
+    REQUIRE(again.size() == ops.size(), "%zu ops written, %zu read back", ops.size(), again.size());
+    for (size_t i = 0; i < ops.size(); i++) {
+        const ListOp &a = ops[i], &b = again[i];
+        REQUIRE(same_op(b, a),
+                "op %zu (kind %d, v %d %d %d %d %d %d, z %u %u %u, colour %u) is written as '%s' and reads "
+                "back as kind %d, v %d %d %d %d %d %d, z %u %u %u, colour %u",
+                i + 1, a.kind, a.v[0], a.v[1], a.v[2], a.v[3], a.v[4], a.v[5], a.z[0], a.z[1], a.z[2], a.color,
+                prim_list_write({a}).c_str(), b.kind, b.v[0], b.v[1], b.v[2], b.v[3], b.v[4], b.v[5], b.z[0],
+                b.z[1], b.z[2], b.color);
+    }
+    REQUIRE(prim_list_write(again) == written, "the list read back is written differently");
 
     check_batches(ops, GPU_VTX_CAP, GPU_TRI_CAP);
     if (!ops.empty()) {

@@ -1,0 +1,196 @@
+// batch_bridge: see batch_bridge.h.
+#include "batch_bridge.h"
+
+#include <cstdarg>
+#include <cstdio>
+
+#include "prim_list.h"
+
+extern "C" {
+#include "gpu_regs.h"
+#include "png_write.h"
+}
+
+namespace {
+
+std::string format(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+std::string format(const char *fmt, ...)
+{
+    char text[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    std::vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    return text;
+}
+
+}  // namespace
+
+BatchBridge::BatchBridge(const BridgeOptions &o)
+    : opt_(o), model_(sim_.read(GPU_REG_CAPS)), shadow_(GPU_APERTURE_BYTES / 4, 0)
+{
+}
+
+bool BatchBridge::pending_doorbell(uint32_t *tag) const
+{
+    *tag = __atomic_load_n(&window_[GPU_REG_DOORBELL / 4], __ATOMIC_ACQUIRE);
+    return *tag != shadow_[GPU_REG_DOORBELL / 4];
+}
+
+bool BatchBridge::pending_reset(uint32_t *value) const
+{
+    *value = __atomic_load_n(&window_[GPU_REG_RESET / 4], __ATOMIC_ACQUIRE);
+    return *value != shadow_[GPU_REG_RESET / 4];
+}
+
+void BatchBridge::service_reset(uint32_t value)
+{
+    __atomic_thread_fence(__ATOMIC_ACQUIRE);
+    sim_.write(GPU_REG_RESET, value);
+    if (opt_.check_model) {
+        model_.write(GPU_REG_RESET, value);
+    }
+    shadow_[GPU_REG_RESET / 4] = value;
+    std::printf("cosim: GPU reset by the firmware (RESET = %u)\n", value);
+    publish_registers();
+}
+
+// The batch about to run, as a primitive list (vertices expanded; invalid primitives left out).
+void BatchBridge::dump_list()
+{
+    const auto reg = [&](uint32_t offset) { return shadow_[offset / 4]; };
+    std::vector<ListOp> ops;
+    if (reg(GPU_REG_CTRL) & GPU_CTRL_CLEAR_MASK) {
+        ops.push_back(ListOp{ListOp::Clear, {0, 0, 0, 0, 0, 0}, {0, 0, 0}, reg(GPU_REG_CLEAR_COLOR) & 0xFFu});
+    }
+    const bool depth = (reg(GPU_REG_CTRL) & GPU_CTRL_ZTEST_MASK) != 0;
+    const uint32_t vbase = reg(GPU_REG_VTX_BASE), vcount = reg(GPU_REG_VTX_COUNT);
+    const uint32_t tbase = reg(GPU_REG_TRI_BASE), tcount = reg(GPU_REG_TRI_COUNT);
+    const auto vertex = [&](uint32_t i, ListOp &op, int k) {
+        const uint32_t xy = shadow_[(GPU_WIN_VTX + 8 * (vbase + i)) / 4];
+        const uint32_t attr = shadow_[(GPU_WIN_VTX + 8 * (vbase + i) + 4) / 4];
+        op.v[2 * k] = static_cast<int16_t>(xy >> GPU_VTX_X_LSB);
+        op.v[2 * k + 1] = static_cast<int16_t>(xy >> GPU_VTX_Y_LSB);
+        op.z[k] = depth ? (attr >> GPU_VTX_Z_LSB) & GPU_VTX_Z_MASK : 0;
+    };
+    for (uint32_t t = 0; t < tcount && tbase + t < GPU_TRI_CAP && vbase + vcount <= GPU_VTX_CAP; t++) {
+        const uint32_t w0 = shadow_[(GPU_WIN_IDX + 8 * (tbase + t)) / 4];
+        const uint32_t w1 = shadow_[(GPU_WIN_IDX + 8 * (tbase + t) + 4) / 4];
+        const uint32_t i0 = (w0 >> GPU_PRIM_I0_LSB) & GPU_PRIM_I0_MASK, i1 = (w0 >> GPU_PRIM_I1_LSB) & GPU_PRIM_I1_MASK;
+        const uint32_t i2 = (w1 >> GPU_PRIM_I2_LSB) & GPU_PRIM_I2_MASK;
+        const uint32_t kind = (w1 >> GPU_PRIM_KIND_LSB) & GPU_PRIM_KIND_MASK;
+        ListOp op{};
+        op.color = (w1 >> GPU_PRIM_COLOR_LSB) & GPU_PRIM_COLOR_MASK;
+        if (i0 >= vcount || i1 >= vcount) {
+            continue;
+        }
+        vertex(i0, op, 0);
+        vertex(i1, op, 1);
+        if (kind == GPU_PRIM_KIND_LINE) {
+            op.kind = ListOp::Line;
+            op.z[0] = op.z[1] = 0;  // a line has no depth test
+        } else if (kind == GPU_PRIM_KIND_TRI && i2 < vcount) {
+            vertex(i2, op, 2);
+            op.kind = depth ? ListOp::ZTri : ListOp::Tri;
+        } else {
+            continue;
+        }
+        ops.push_back(op);
+    }
+    char path[512];
+    std::snprintf(path, sizeof path, "%s/batch%04u.txt", opt_.dump_lists.c_str(), batches_);
+    FILE *f = std::fopen(path, "w");
+    if (f == nullptr) {
+        return;
+    }
+    std::fputs(prim_list_write(ops).c_str(), f);
+    std::fclose(f);
+}
+
+// Copy the GPU's read-only registers into the shared window, DONE_SEQ last (kReadOnlyRegs order).
+void BatchBridge::publish_registers()
+{
+    for (int i = 0; i < kReadOnlyRegCount; i++) {
+        const uint32_t offset = kReadOnlyRegs[i];
+        const uint32_t value = sim_.read(offset);
+        if (offset == GPU_REG_DONE_SEQ) {
+            __atomic_thread_fence(__ATOMIC_RELEASE);
+        }
+        window_[offset / 4] = value;
+        shadow_[offset / 4] = value;
+    }
+}
+
+bool BatchBridge::service_batch(uint32_t tag, std::string *error)
+{
+    __atomic_thread_fence(__ATOMIC_ACQUIRE);
+    const uint32_t doorbell_word = GPU_REG_DOORBELL / 4;
+    // Replay the firmware's stores: every word that changed since the last batch, DOORBELL last.
+    for (uint32_t w = 0; w < shadow_.size(); w++) {
+        const uint32_t value = window_[w];
+        if (value != shadow_[w] && w != doorbell_word) {
+            sim_.write(w * 4, value);
+            if (opt_.check_model) {
+                model_.write(w * 4, value);
+            }
+            shadow_[w] = value;
+        }
+    }
+    if (batches_ + 1 == opt_.drop_doorbell) {
+        batches_++;
+        shadow_[doorbell_word] = tag;
+        std::printf("cosim: doorbell %u (tag %u) dropped on purpose (--drop-doorbell)\n", batches_, tag);
+        return true;
+    }
+    if (!opt_.dump_lists.empty()) {
+        dump_list();
+    }
+    const uint32_t frames_before = sim_.read(GPU_REG_FRAME_COUNT);
+    sim_.write(GPU_REG_DOORBELL, tag);
+    if (opt_.check_model) {
+        model_.write(GPU_REG_DOORBELL, tag);
+    }
+    shadow_[doorbell_word] = tag;
+    batches_++;
+
+    if (!sim_.wait_done(tag, opt_.max_batch_cycles)) {
+        *error = format("GPU timeout: batch %u (tag %u) did not finish within %llu cycles", batches_, tag,
+                        static_cast<unsigned long long>(opt_.max_batch_cycles));
+        return false;
+    }
+    if (opt_.check_model) {
+        const std::string diff = model_.compare_registers(sim_);
+        if (!diff.empty()) {
+            *error = format("batch %u: RTL and golden model disagree: %s", batches_, diff.c_str());
+            return false;
+        }
+    }
+    if (sim_.read(GPU_REG_FRAME_COUNT) != frames_before) {
+        const uint64_t frame_cycles = 800ull * 525 * 4;
+        if (!sim_.capture_frame(3 * frame_cycles)) {
+            *error = format("no frame captured from the VGA pins: %s",
+                            sim_.vga_error()[0] ? sim_.vga_error() : "timeout");
+            return false;
+        }
+        if (opt_.check_model) {
+            const std::string diff = model_.compare_frame(sim_.frame_rgb());
+            if (!diff.empty()) {
+                *error = format("frame %u: VGA output differs from the golden model: %s", frames_written_,
+                                diff.c_str());
+                return false;
+            }
+        }
+        char path[512];
+        std::snprintf(path, sizeof path, "%s/%04u.png", opt_.frames_dir.c_str(), frames_written_);
+        if (png_write_rgb(path, sim_.frame_rgb(), VGA_W, VGA_H) != 0) {
+            *error = format("cannot write %s", path);
+            return false;
+        }
+        std::printf("cosim: frame %04u -> %s | gpu busy %u cycles | simulated %llu cycles%s\n", frames_written_,
+                    path, sim_.read(GPU_REG_PERF_BUSY_CYCLES), static_cast<unsigned long long>(sim_.cycles()),
+                    opt_.check_model ? " | equals golden model" : "");
+        frames_written_++;
+    }
+    publish_registers();
+    return true;
+}

@@ -1,0 +1,67 @@
+// batch_bridge: the GPU side of the co-simulation — turns the firmware's stores in the GPU's window
+// of shared RAM into bus writes of the Verilated GPU, runs it, and writes back what the firmware may
+// read. The golden model gets the same writes and is compared after every batch.
+//
+// Contract, for a window attached with attach() (PLATFORM_GPU_BASE in the shared RAM):
+//   - publish_registers() copies the GPU's read-only registers into the window, DONE_SEQ last with a
+//     release fence before it (kReadOnlyRegs order), so a firmware that sees the new DONE_SEQ sees
+//     every counter of that batch.
+//   - pending_doorbell() / pending_reset() say whether the firmware wrote a new DOORBELL tag or a new
+//     RESET value since the bridge last forwarded one (acquire loads).
+//   - service_batch(tag) replays every window word that changed since the last batch into the RTL
+//     (and the model), DOORBELL last; runs the GPU until DONE_SEQ shows the tag; compares the
+//     registers with the model; when FRAME_COUNT moved, captures the next frame from the VGA pins,
+//     compares it with the model and writes FRAMES_DIR/NNNN.png, printing one "cosim: frame" line;
+//     then publishes the registers. With --drop-doorbell N batch N is recorded but never run. With
+//     --dump-lists DIR each batch is written first as DIR/batchNNNN.txt (prim_list.h format: ztri
+//     when CTRL.ZTEST is set). On a GPU timeout, a disagreement, or a frame that cannot be captured
+//     or written, it returns false with *error set (the caller reports it).
+//   - service_reset(value) forwards a RESET at once (a watchdog gave up on a batch), prints
+//     "cosim: GPU reset by the firmware", then publishes the registers.
+// Simulated time advances only inside these calls, so results do not depend on host timing.
+#ifndef BATCH_BRIDGE_H
+#define BATCH_BRIDGE_H
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gpu_sim.h"
+#include "model_check.h"
+
+struct BridgeOptions {
+    std::string frames_dir = "out/frames";
+    uint64_t max_batch_cycles = 100000000;  // 1 s of GPU time at 100 MHz
+    bool check_model = true;
+    uint32_t drop_doorbell = 0;  // batch number never serviced (0: none)
+    std::string dump_lists;      // directory for each batch as a primitive list
+};
+
+class BatchBridge {
+public:
+    explicit BatchBridge(const BridgeOptions &o);
+
+    void attach(volatile uint32_t *window) { window_ = window; }
+    bool pending_doorbell(uint32_t *tag) const;
+    bool pending_reset(uint32_t *value) const;
+    bool service_batch(uint32_t tag, std::string *error);
+    void service_reset(uint32_t value);
+    void publish_registers();
+
+    uint32_t batches() const { return batches_; }  // doorbells taken so far (dropped ones included)
+    uint32_t frames() const { return frames_written_; }
+    uint64_t cycles() const { return sim_.cycles(); }
+
+private:
+    void dump_list();
+
+    const BridgeOptions &opt_;
+    GpuSim sim_;
+    ModelCheck model_;
+    volatile uint32_t *window_ = nullptr;
+    std::vector<uint32_t> shadow_;  // the window as last forwarded to the RTL
+    uint32_t frames_written_ = 0;
+    uint32_t batches_ = 0;
+};
+
+#endif

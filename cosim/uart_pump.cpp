@@ -1,0 +1,57 @@
+// uart_pump: see uart_pump.h.
+#include "uart_pump.h"
+
+#include <cerrno>
+#include <cstring>
+
+#include <unistd.h>
+
+bool UartPump::open_log(const std::string &path)
+{
+    log_ = std::fopen(path.c_str(), "w");
+    return log_ != nullptr;
+}
+
+void UartPump::close_log()
+{
+    if (log_) {
+        std::fclose(log_);
+        log_ = nullptr;
+    }
+}
+
+void UartPump::pump(int uart_out_fd, bool final)
+{
+    char buf[4096];
+    for (;;) {
+        ssize_t n = read(uart_out_fd, buf, sizeof buf);
+        if (n <= 0) {
+            break;
+        }
+        for (ssize_t i = 0; i < n; i++) {
+            if (buf[i] == '\r') {
+                continue;
+            }
+            line_ += buf[i];
+            if (buf[i] == '\n') {
+                std::fputs(line_.c_str(), stdout);
+                if (log_) {
+                    std::fputs(line_.c_str(), log_);
+                }
+                line_.clear();
+            }
+        }
+    }
+    if (final && !line_.empty()) {
+        std::printf("%s\n", line_.c_str());
+        line_.clear();
+    }
+    std::fflush(stdout);
+}
+
+void UartPump::type(int uart_in_fd, const std::string &text)
+{
+    if (uart_in_fd >= 0 && !text.empty() && write(uart_in_fd, text.data(), text.size()) < 0) {
+        std::fprintf(stderr, "cosim: warning: cannot type keys: %s\n", std::strerror(errno));
+    }
+}
