@@ -51,6 +51,7 @@ void BatchBridge::service_reset(uint32_t value)
         model_.write(GPU_REG_RESET, value);
     }
     shadow_[GPU_REG_RESET / 4] = value;
+    resets_++;
     std::printf("cosim: GPU reset by the firmware (RESET = %u)\n", value);
     publish_registers();
 }
@@ -138,6 +139,7 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
     }
     if (batches_ + 1 == opt_.drop_doorbell) {
         batches_++;
+        dropped_++;
         shadow_[doorbell_word] = tag;
         std::printf("cosim: doorbell %u (tag %u) dropped on purpose (--drop-doorbell)\n", batches_, tag);
         return true;
@@ -154,6 +156,7 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
     batches_++;
 
     if (!sim_.wait_done(tag, opt_.max_batch_cycles)) {
+        error_kind_ = "gpu-timeout";
         *error = format("GPU timeout: batch %u (tag %u) did not finish within %llu cycles", batches_, tag,
                         static_cast<unsigned long long>(opt_.max_batch_cycles));
         return false;
@@ -161,6 +164,7 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
     if (opt_.check_model) {
         const std::string diff = model_.compare_registers(sim_);
         if (!diff.empty()) {
+            error_kind_ = "model-mismatch";
             *error = format("batch %u: RTL and golden model disagree: %s", batches_, diff.c_str());
             return false;
         }
@@ -168,6 +172,7 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
     if (sim_.read(GPU_REG_FRAME_COUNT) != frames_before) {
         const uint64_t frame_cycles = 800ull * 525 * 4;
         if (!sim_.capture_frame(3 * frame_cycles)) {
+            error_kind_ = "capture";
             *error = format("no frame captured from the VGA pins: %s",
                             sim_.vga_error()[0] ? sim_.vga_error() : "timeout");
             return false;
@@ -175,6 +180,7 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
         if (opt_.check_model) {
             const std::string diff = model_.compare_frame(sim_.frame_rgb());
             if (!diff.empty()) {
+                error_kind_ = "model-mismatch";
                 *error = format("frame %u: VGA output differs from the golden model: %s", frames_written_,
                                 diff.c_str());
                 return false;
@@ -183,6 +189,7 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
         char path[512];
         std::snprintf(path, sizeof path, "%s/%04u.png", opt_.frames_dir.c_str(), frames_written_);
         if (png_write_rgb(path, sim_.frame_rgb(), VGA_W, VGA_H) != 0) {
+            error_kind_ = "write";
             *error = format("cannot write %s", path);
             return false;
         }
@@ -190,6 +197,7 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
                     path, sim_.read(GPU_REG_PERF_BUSY_CYCLES), static_cast<unsigned long long>(sim_.cycles()),
                     opt_.check_model ? " | equals golden model" : "");
         frames_written_++;
+        frames_checked_ += opt_.check_model ? 1 : 0;
     }
     publish_registers();
     return true;

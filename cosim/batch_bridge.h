@@ -15,7 +15,8 @@
 //     then publishes the registers. With --drop-doorbell N batch N is recorded but never run. With
 //     --dump-lists DIR each batch is written first as DIR/batchNNNN.txt (prim_list.h format: ztri
 //     when CTRL.ZTEST is set). On a GPU timeout, a disagreement, or a frame that cannot be captured
-//     or written, it returns false with *error set (the caller reports it).
+//     or written, it returns false with *error set (the caller reports it) and error_kind() naming
+//     the failure for the run's summary: gpu-timeout, model-mismatch, capture or write.
 //   - service_reset(value) forwards a RESET at once (a watchdog gave up on a batch), prints
 //     "cosim: GPU reset by the firmware", then publishes the registers.
 // Simulated time advances only inside these calls, so results do not depend on host timing.
@@ -49,8 +50,12 @@ public:
     void publish_registers();
 
     uint32_t batches() const { return batches_; }  // doorbells taken so far (dropped ones included)
+    uint32_t doorbells_dropped() const { return dropped_; }
+    uint32_t resets() const { return resets_; }
     uint32_t frames() const { return frames_written_; }
+    uint32_t frames_model_checked() const { return frames_checked_; }
     uint64_t cycles() const { return sim_.cycles(); }
+    const char *error_kind() const { return error_kind_; }
 
 private:
     void dump_list();
@@ -61,7 +66,11 @@ private:
     volatile uint32_t *window_ = nullptr;
     std::vector<uint32_t> shadow_;  // the window as last forwarded to the RTL
     uint32_t frames_written_ = 0;
+    uint32_t frames_checked_ = 0;  // frames compared with the golden model and found equal
     uint32_t batches_ = 0;
+    uint32_t dropped_ = 0;
+    uint32_t resets_ = 0;
+    const char *error_kind_ = "none";
 };
 
 #endif

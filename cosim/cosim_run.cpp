@@ -11,7 +11,9 @@
 // notices QEMU's death, SIGINT/SIGTERM/SIGHUP (and Ctrl-C on a raw terminal), a GPU timeout and a
 // silent firmware. Every failure prints one "cosim: error: ..." line on stderr, stops QEMU, restores
 // the terminal, flushes the UART's last output and returns 1; usage errors return 2; a firmware that
-// ends with status 0 returns 0.
+// ends with status 0 returns 0. With --summary FILE the run's outcome is also written as key=value
+// lines (result, error, firmware_status, batches, doorbells_dropped, gpu_resets, frames,
+// frames_model_checked, gpu_cycles) for tests and scripts to read instead of the prose.
 #include <cerrno>
 #include <cstdarg>
 #include <csignal>
@@ -41,6 +43,7 @@ struct Options {
     std::string firmware;
     std::string qemu = "qemu-system-riscv32";
     std::string uart_log;
+    std::string summary;
     double idle_timeout_s = 60.0;
     std::vector<std::pair<uint32_t, std::string>> keys_at;  // (batch number, text) to type
     BridgeOptions bridge;
@@ -58,10 +61,11 @@ int usage()
     std::fprintf(stderr,
                  "usage: gpusim cosim --fw FIRMWARE.elf [--frames DIR] [--qemu PATH] [--uart-log FILE]\n"
                  "                    [--idle-timeout SECONDS] [--max-batch-cycles N] [--no-model-check]\n"
-                 "                    [--keys-at N:TEXT]... [--drop-doorbell N] [--dump-lists DIR]\n"
+                 "                    [--keys-at N:TEXT]... [--drop-doorbell N] [--dump-lists DIR] [--summary FILE]\n"
                  "  --keys-at N:TEXT   type TEXT into the firmware's UART just before servicing doorbell N (from 1)\n"
                  "  --drop-doorbell N  ignore doorbell N, as a hung GPU would (the firmware's watchdog must RESET)\n"
                  "  --dump-lists DIR   write each batch as DIR/batchNNNN.txt in the `make raster` list format\n"
+                 "  --summary FILE     write the run's outcome and counts as key=value lines\n"
                  "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n");
     return 2;
 }
@@ -79,6 +83,8 @@ bool parse(int argc, char **argv, Options &o)
             o.qemu = argv[++i];
         } else if (a == "--uart-log" && has_value) {
             o.uart_log = argv[++i];
+        } else if (a == "--summary" && has_value) {
+            o.summary = argv[++i];
         } else if (a == "--idle-timeout" && has_value) {
             o.idle_timeout_s = std::atof(argv[++i]);
         } else if (a == "--max-batch-cycles" && has_value) {
@@ -114,7 +120,8 @@ public:
     int run();
 
 private:
-    int fail(const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+    int fail(const char *kind, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+    void write_summary(const char *error);
     void shutdown();
     void pump_uart(bool final) { uart_.pump(qemu_.uart_out_fd(), final); }
 
@@ -124,9 +131,30 @@ private:
     QemuProcess qemu_;
     UartPump uart_;
     UartTerminal terminal_;
+    int firmware_status_ = -1;  // QEMU's exit status once it has ended
 };
 
-int CosimRun::fail(const char *fmt, ...)
+// The outcome for --summary: error "none" on success; firmware_status -1 while QEMU had not ended.
+void CosimRun::write_summary(const char *error)
+{
+    if (opt_.summary.empty()) {
+        return;
+    }
+    FILE *f = std::fopen(opt_.summary.c_str(), "w");
+    if (f == nullptr) {
+        std::fprintf(stderr, "cosim: warning: cannot write %s: %s\n", opt_.summary.c_str(), std::strerror(errno));
+        return;
+    }
+    std::fprintf(f, "result=%s\nerror=%s\nfirmware_status=%d\n", std::strcmp(error, "none") ? "error" : "ok",
+                 error, firmware_status_);
+    std::fprintf(f, "batches=%u\ndoorbells_dropped=%u\ngpu_resets=%u\n", bridge_.batches(),
+                 bridge_.doorbells_dropped(), bridge_.resets());
+    std::fprintf(f, "frames=%u\nframes_model_checked=%u\ngpu_cycles=%llu\n", bridge_.frames(),
+                 bridge_.frames_model_checked(), static_cast<unsigned long long>(bridge_.cycles()));
+    std::fclose(f);
+}
+
+int CosimRun::fail(const char *kind, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
@@ -135,6 +163,7 @@ int CosimRun::fail(const char *fmt, ...)
     std::fputc('\n', stderr);
     va_end(ap);
     shutdown();
+    write_summary(kind);
     return 1;
 }
 
@@ -147,38 +176,41 @@ int CosimRun::run()
 
     const std::string &frames_dir = opt_.bridge.frames_dir;
     if (mkdir(frames_dir.c_str(), 0755) != 0 && errno != EEXIST) {
-        return fail("cannot create %s: %s", frames_dir.c_str(), std::strerror(errno));
+        return fail("setup", "cannot create %s: %s", frames_dir.c_str(), std::strerror(errno));
     }
     if (!opt_.uart_log.empty() && !uart_.open_log(opt_.uart_log)) {
-        return fail("cannot create %s: %s", opt_.uart_log.c_str(), std::strerror(errno));
+        return fail("setup", "cannot create %s: %s", opt_.uart_log.c_str(), std::strerror(errno));
     }
     if (!ram_.create()) {
-        return fail("shared RAM setup failed");
+        return fail("setup", "shared RAM setup failed");
     }
     bridge_.attach(ram_.gpu_window());
     bridge_.publish_registers();  // ID, VERSION, CAPS ... are readable before the first doorbell
     if (!qemu_.start(opt_.qemu, opt_.firmware, ram_.fd())) {
-        return fail("cannot start QEMU: %s", std::strerror(errno));
+        return fail("setup", "cannot start QEMU: %s", std::strerror(errno));
     }
     terminal_.enter_raw();
 
     double last_activity = now_s();
     for (;;) {
         if (g_signal) {
-            return fail("stopped by signal %d", static_cast<int>(g_signal));
+            return fail("signal", "stopped by signal %d", static_cast<int>(g_signal));
         }
         int status = 0;
         if (qemu_.reap(&status)) {
             pump_uart(true);
             if (WIFSIGNALED(status)) {
-                return fail("QEMU was killed by signal %d", WTERMSIG(status));
+                return fail("qemu-died", "QEMU was killed by signal %d", WTERMSIG(status));
             }
             if (WEXITSTATUS(status) != 0) {
-                return fail("firmware ended with exit status %d", WEXITSTATUS(status));
+                firmware_status_ = WEXITSTATUS(status);
+                return fail("firmware-status", "firmware ended with exit status %d", firmware_status_);
             }
             std::printf("cosim: firmware finished: %u batches, %u frames, %llu GPU cycles simulated\n",
                         bridge_.batches(), bridge_.frames(), static_cast<unsigned long long>(bridge_.cycles()));
+            firmware_status_ = 0;
             shutdown();
+            write_summary("none");
             return 0;
         }
         pump_uart(false);
@@ -204,12 +236,12 @@ int CosimRun::run()
             }
             std::string error;
             if (!bridge_.service_batch(tag, &error)) {
-                return fail("%s", error.c_str());
+                return fail(bridge_.error_kind(), "%s", error.c_str());
             }
             last_activity = now_s();
         } else {
             if (now_s() - last_activity > opt_.idle_timeout_s) {
-                return fail("the firmware rang no doorbell for %.0f s: giving up", opt_.idle_timeout_s);
+                return fail("idle", "the firmware rang no doorbell for %.0f s: giving up", opt_.idle_timeout_s);
             }
             usleep(20);
         }

@@ -68,6 +68,7 @@ suite rtl-vs-model-span16    "$BUILD/sim-w16/gpusim" random --seed 6 --batches 2
 suite rtl-vs-model-zbuf      "$BUILD/sim-z-w8/gpusim" random --seed 7 --batches 40 --tris 300
 suite raster-mesh-exact-once bash tests/raster/mesh.sh
 suite raster-bad-input       bash tests/raster/bad_input.sh
+suite raster-list-roundtrip  bash tests/raster/roundtrip.sh
 suite fuzz-prim-list         bash tests/fuzz/run_fuzz.sh short prim_list
 suite fuzz-input             bash tests/fuzz/run_fuzz.sh short input
 suite fuzz-gpu-model         bash tests/fuzz/run_fuzz.sh short gpu_model
