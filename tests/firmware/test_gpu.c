@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "bsp.h"
-#include "gpu.h"
+#include "gpu/gpu.h"
 #include "unit.h"
 
 uint32_t fake_gpu_mem[FAKE_GPU_WORDS];

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sort.h"
+#include "render/sort.h"
 #include "unit.h"
 
 #define SORT_TEST_MAX 20000u

@@ -9,7 +9,7 @@
 
 #include "test_util.h"
 #include "unit.h"
-#include "vec.h"
+#include "math/vec.h"
 
 static double mat_err_vs(const mat3 *m, const double r[3][3])
 {

@@ -35,11 +35,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "batch.h"
+#include "gpu/batch.h"
 #include "bsp.h"
-#include "gpu.h"
+#include "gpu/gpu.h"
 #include "gpu_model.h"
-#include "render.h"
+#include "render/render.h"
 #include "fuzz_common.h"
 
 /* The most vertices and primitives the bus windows can hold: a capacity beyond is a lie. */
