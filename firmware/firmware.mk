@@ -123,8 +123,8 @@ FW_SP_VARIANTS += fixed-lean
 # measured on a cubes frame, the sort fell from 25,059 to 17,869 instructions without the call.
 FW_CFLAGS_BASE := $(FW_ARCH_FLAGS) -O2 -g $(FW_WARN) -ffp-contract=off -ffunction-sections \
                   -fdata-sections -fno-tree-loop-distribute-patterns \
-                  -Ibsp/$(FW_PLATFORM) -Icontract -Ifirmware
-FW_HOST_CFLAGS_BASE = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Ibsp/host -Icontract \
+                  -Ibsp/$(FW_PLATFORM) -Ibsp -Icontract -Ifirmware
+FW_HOST_CFLAGS_BASE = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Ibsp/host -Ibsp -Icontract \
                       -Ifirmware -Igpu_model -Icosim
 FW_LDFLAGS_BASE := $(FW_ARCH_FLAGS) $(FW_BSP_LDFLAGS) -T$(FW_LDSCRIPT) -Wl,--gc-sections
 
@@ -250,11 +250,11 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2,\
   $(eval FW_ERR_ELFS += $(FW_ERR_DIR)/$(s)-$(v)-z.elf)))
 
 # ---- host unit tests -------------------------------------------------------------------------
-# The pure sources and gpu.c, built against tests/firmware/fake_bsp/bsp.h (the GPU aperture is an
+# The pure sources and gpu.c, built against tests/firmware/fake_bsp/bsp_platform.h (the GPU aperture is an
 # array), once per backend. Test files that only make sense for one backend say so themselves.
 
 FW_UNIT_TEST_SRCS := $(wildcard tests/firmware/*.c)
-FW_UNIT_CFLAGS     = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Itests/firmware/fake_bsp \
+FW_UNIT_CFLAGS     = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Itests/firmware/fake_bsp -Ibsp \
                      -Itests/firmware -Icontract -Ifirmware
 
 # $(1) = binary, $(2) = backend

@@ -9,39 +9,26 @@ void batch_begin(struct batch_cursor *cur)
 }
 
 /* The contract's vertex and primitive words are, on a little-endian CPU, the very bytes of
- * proj_vertex.sxy / zbuf and render_prim.w (with frame vertex numbers): copy words instead of
- * packing fields. Any other layout or byte order packs field by field (gpu.h). */
-#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && \
-    GPU_VTX_WORDS == 2 && GPU_PRIM_WORDS == 2 && \
-    GPU_VTX_X_WORD == 0 && GPU_VTX_X_LSB == 0 && GPU_VTX_Y_WORD == 0 && GPU_VTX_Y_LSB == 16 && \
-    GPU_VTX_Z_WORD == 1 && GPU_VTX_Z_LSB == 0 && \
-    GPU_PRIM_I0_WORD == 0 && GPU_PRIM_I0_LSB == 0 && GPU_PRIM_I1_WORD == 0 && \
-    GPU_PRIM_I1_LSB == 16 && GPU_PRIM_I2_WORD == 1 && GPU_PRIM_I2_LSB == 0 && \
-    GPU_PRIM_COLOR_WORD == 1 && GPU_PRIM_COLOR_LSB == 16 && GPU_PRIM_KIND_WORD == 1 && \
-    GPU_PRIM_KIND_LSB == 24
-#define BATCH_NATIVE_WORDS 1
-#else
-#define BATCH_NATIVE_WORDS 0
+ * proj_vertex.sxy / zbuf and render_prim.w (with frame vertex numbers): batches copy words
+ * instead of packing fields. Every platform of this firmware is little-endian; a contract or a
+ * CPU for which that no longer holds stops the build here (test_gpu_native_words checks the
+ * same layout at run time). */
+#if !(defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && \
+      GPU_VTX_WORDS == 2 && GPU_PRIM_WORDS == 2 && \
+      GPU_VTX_X_WORD == 0 && GPU_VTX_X_LSB == 0 && GPU_VTX_Y_WORD == 0 && GPU_VTX_Y_LSB == 16 && \
+      GPU_VTX_Z_WORD == 1 && GPU_VTX_Z_LSB == 0 && \
+      GPU_PRIM_I0_WORD == 0 && GPU_PRIM_I0_LSB == 0 && GPU_PRIM_I1_WORD == 0 && \
+      GPU_PRIM_I1_LSB == 16 && GPU_PRIM_I2_WORD == 1 && GPU_PRIM_I2_LSB == 0 && \
+      GPU_PRIM_COLOR_WORD == 1 && GPU_PRIM_COLOR_LSB == 16 && GPU_PRIM_KIND_WORD == 1 && \
+      GPU_PRIM_KIND_LSB == 24)
+#error "batch.c copies proj_vertex and render_prim words as the GPU's: this CPU or contract differs"
 #endif
 
 static inline void batch_put_vertex(uint32_t *w, const struct proj_vertex *v)
 {
-#if BATCH_NATIVE_WORDS
     w[0] = v->sxy;
     w[1] = v->zbuf;
-#else
-    gpu_pack_vertex(w, v->sx, v->sy, v->zbuf);
-#endif
 }
-
-#if !BATCH_NATIVE_WORDS
-/* Primitive p with batch vertex numbers s0, s1, s2 (the native layout writes words inline). */
-static inline void batch_put_prim(uint32_t *w, const struct render_prim *p, uint32_t s0,
-                                  uint32_t s1, uint32_t s2)
-{
-    gpu_pack_prim(w, (uint16_t)s0, (uint16_t)s1, (uint16_t)s2, p->color, p->kind);
-}
-#endif
 
 /* The vertex's slot in the current batch, writing it there first if the batch lacks it.
  * *nv counts the batch's vertices so far. */
@@ -77,12 +64,8 @@ static void batch_fill_whole(struct render_frame *f, struct batch_words *out)
     for (uint32_t i = 0; i < np; i++) {
         const struct render_prim *p = &prim[render_draw_index(f, i)];
 
-#if BATCH_NATIVE_WORDS
         prim_words[i * GPU_PRIM_WORDS] = p->w[0];
         prim_words[i * GPU_PRIM_WORDS + 1u] = p->w[1];
-#else
-        batch_put_prim(&prim_words[i * GPU_PRIM_WORDS], p, p->v[0], p->v[1], p->v[2]);
-#endif
     }
     out->vtx_count = nv;
     out->prim_count = np;
@@ -131,7 +114,6 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
     vtx_room = vtx_cap - 3u;
     while (i < end && nv <= vtx_room) {
         const struct render_prim *p = &prim[render_draw_index(f, i)];
-#if BATCH_NATIVE_WORDS
         /* Both words in locals first: the vertex stamps written below are uint16_t like the
          * indices, so the compiler would otherwise reload the primitive after every store. */
         const uint32_t w0 = p->w[0];
@@ -143,14 +125,6 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
 
         pw[0] = s0 | (s1 << 16);
         pw[1] = s2 | (w1 & 0xFFFF0000u);
-#else
-        const struct render_prim q = *p;
-        const uint32_t s0 = batch_vertex(&vert[q.v[0]], stamp, vtx, &nv);
-        const uint32_t s1 = batch_vertex(&vert[q.v[1]], stamp, vtx, &nv);
-        const uint32_t s2 = batch_vertex(&vert[q.v[2]], stamp, vtx, &nv);
-
-        batch_put_prim(&prim_words[(i - first) * GPU_PRIM_WORDS], &q, s0, s1, s2);
-#endif
         i++;
     }
     out->vtx_count = nv;

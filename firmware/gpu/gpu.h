@@ -20,25 +20,10 @@
 
 /* ---- pure core: buffer word formats -------------------------------------------------------- */
 
-#define GPU_FIELD(name, v) ((((uint32_t)(v)) & GPU_##name##_MASK) << GPU_##name##_LSB)
-
-/* Vertex: x, y signed Q12.4 screen coordinates (1/16 px), z unsigned depth (0 = near).
- * Writes GPU_VTX_WORDS words to out. */
-static inline void gpu_pack_vertex(uint32_t out[GPU_VTX_WORDS], int16_t x_q4, int16_t y_q4,
-                                   uint16_t z)
-{
-    out[0] = GPU_FIELD(VTX_X, (uint16_t)x_q4) | GPU_FIELD(VTX_Y, (uint16_t)y_q4);
-    out[1] = GPU_FIELD(VTX_Z, z);
-}
-
-/* Primitive: three vertex indices relative to VTX_BASE, a palette colour, a GPU_PRIM_KIND_*.
- * Writes GPU_PRIM_WORDS words to out. */
-static inline void gpu_pack_prim(uint32_t out[GPU_PRIM_WORDS], uint16_t i0, uint16_t i1,
-                                 uint16_t i2, uint8_t color, uint8_t kind)
-{
-    out[0] = GPU_FIELD(PRIM_I0, i0) | GPU_FIELD(PRIM_I1, i1);
-    out[1] = GPU_FIELD(PRIM_I2, i2) | GPU_FIELD(PRIM_COLOR, color) | GPU_FIELD(PRIM_KIND, kind);
-}
+/* Vertex: x, y signed Q12.4 screen coordinates (1/16 px), z unsigned depth (0 = near);
+ * primitive: three vertex indices relative to VTX_BASE, a palette colour, a GPU_PRIM_KIND_*.
+ * batch.c writes both as the words of proj_vertex and render_prim (their layout is the
+ * contract's on every platform of this firmware; batch.c stops the build where it is not). */
 
 /* RGB444 palette word from 4-bit channels. */
 #define GPU_RGB444(r, g, b) ((((uint32_t)(r) & 0xFu) << 8) | (((uint32_t)(g) & 0xFu) << 4) | \

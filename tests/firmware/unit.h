@@ -79,7 +79,7 @@ void unit_srand(uint32_t seed);
     X(test_clip_guard_band)           \
     X(test_clip_random)               \
     X(test_sort_order_and_stability)  \
-    X(test_sort_reverse_input)        \
+    X(test_sort_reverse_input_sorted)        \
     X(test_palette_ramps)             \
     X(test_palette_light_levels)      \
     X(test_render_backface)           \
@@ -104,8 +104,7 @@ void unit_srand(uint32_t seed);
     X(test_scene_sizes)               \
     X(test_scene_frames)              \
     X(test_scene_voxel_place_break)   \
-    X(test_gpu_pack_vertex)           \
-    X(test_gpu_pack_prim)             \
+    X(test_gpu_native_words)          \
     X(test_gpu_init_checks)           \
     X(test_gpu_init_first_tag)        \
     X(test_gpu_submit)                \

@@ -1,15 +1,18 @@
 /*
- * bsp.h (host test double) — the slice of the BSP interface that firmware/src/gpu.c uses, on the
- * host: the GPU aperture is a plain array, bsp_fence() takes a snapshot of the register window so
- * a test can check what had been written before the fence. See bsp/README.md for the real
- * interface.
+ * bsp_platform.h (unit-test double) — bsp/bsp.h's interface for the host unit tests: the GPU
+ * aperture is a plain array, bsp_fence() takes a snapshot of the register window so a test can
+ * check what had been written before the fence; the console is empty, nothing is counted, and
+ * bsp_exit() ends the test program.
  */
-#ifndef BSP_H
-#define BSP_H
+#ifndef BSP_PLATFORM_H
+#define BSP_PLATFORM_H
+
+#include <stdlib.h>
 
 #include <stdint.h>
 
 #define BSP_NAME "host-test"
+#define BSP_EXIT_TRAP 126
 
 #define FAKE_GPU_WORDS (0x20000u / 4u)  /* the 128 KiB aperture */
 #define FAKE_REG_WORDS (0x100u / 4u)    /* the register window */
@@ -52,4 +55,29 @@ static inline uint32_t *bsp_gpu_buffer(uint32_t offset)
     return &fake_gpu_mem[offset / 4u];
 }
 
-#endif /* BSP_H */
+static inline void bsp_init(void)
+{
+}
+
+static inline void bsp_exit(int code) __attribute__((noreturn));
+static inline void bsp_exit(int code)
+{
+    exit(code);
+}
+
+static inline int bsp_uart_getc_nonblock(void)
+{
+    return -1;
+}
+
+static inline void bsp_uart_putc(char c)
+{
+    (void)c;
+}
+
+static inline uint64_t bsp_instret(void)
+{
+    return 0u;
+}
+
+#endif /* BSP_PLATFORM_H */

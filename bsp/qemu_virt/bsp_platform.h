@@ -1,10 +1,7 @@
 /*
- * bsp.h — board support for QEMU `virt` (riscv32, rv32im, machine mode, no OS).
- *
- * This is the whole platform interface the firmware uses. Render code never includes it; only
- * the frame loop (firmware/src/app.c, main.c) and the GPU driver edge (firmware/src/gpu.c) do. Another platform (an FPGA
- * SoC, a MicroBlaze) is a sibling folder bsp/<platform>/ with its own bsp.h providing the same
- * names with the same meaning; see bsp/README.md.
+ * bsp_platform.h — QEMU `virt` (riscv32, rv32im, machine mode, no OS): the macros and the inline
+ * half of the platform interface declared in bsp/bsp.h (which includes this file; include that
+ * one). bsp.c, uart.c and trap.c define the rest.
  *
  * Memory map used here (QEMU 7.2 `virt`):
  *   0x0010_0000  sifive_test   (exit QEMU with a status)
@@ -12,8 +9,8 @@
  *   0x8000_0000  RAM, 128 MiB; the firmware uses 0x8000_0000 .. 0x807F_FFFF (linker/qemu_virt.ld)
  *   0x8700_0000  GPU aperture, 128 KiB (guest RAM shared with the Verilator GPU in co-simulation)
  */
-#ifndef BSP_H
-#define BSP_H
+#ifndef BSP_PLATFORM_H
+#define BSP_PLATFORM_H
 
 #include <stdint.h>
 
@@ -27,18 +24,9 @@
 /* Exit status used when a CPU trap (exception or unexpected interrupt) ends the program. */
 #define BSP_EXIT_TRAP 126
 
-/* Set up the trap vector and the UART. Call first thing in main(). Idempotent. */
-void bsp_init(void);
-
-/* End the program: status 0 = success, anything else = failure with that status (the QEMU
- * process exits with status & 0xFF; a non-zero status that would read as 0 becomes 1). */
-void bsp_exit(int code) __attribute__((noreturn));
-
-/* One byte from the UART, or -1 when none is waiting. Never blocks. */
-int bsp_uart_getc_nonblock(void);
-
-/* Write one byte to the UART (blocking until the transmitter has room). */
-void bsp_uart_putc(char c);
+/* bsp_init (bsp.c): the trap vector (trap.c), the UART (uart.c). bsp_exit (bsp.c): the QEMU process
+ * exits with status & 0xFF through sifive_test; a non-zero status that would read as 0 becomes 1.
+ * bsp_uart_getc_nonblock, bsp_uart_putc (uart.c): the NS16550. */
 
 /* Retired-instruction counter, 64 bits. minstreth is re-read to detect a carry out of minstret
  * between the two reads, so the pair is consistent. Exact and reproducible under -icount. */
@@ -107,4 +95,4 @@ static inline void bsp_fence(void)
     __asm__ volatile("fence rw, rw" ::: "memory");
 }
 
-#endif /* BSP_H */
+#endif /* BSP_PLATFORM_H */
