@@ -255,7 +255,7 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2,\
 
 FW_UNIT_TEST_SRCS := $(wildcard tests/firmware/*.c)
 FW_UNIT_CFLAGS     = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Itests/firmware/fake_bsp -Ibsp \
-                     -Itests/firmware -Icontract -Ifirmware
+                     -Itests/firmware -Icontract -Ifirmware -DSORT_COUNT_WORK
 
 # $(1) = binary, $(2) = backend
 define FW_UNIT_RULES

@@ -5,7 +5,7 @@
 #ifndef FW_CONFIG_H
 #define FW_CONFIG_H
 
-/* Scene shown at boot (scene.h names: tetra, cubes, landscape, voxel, knot). make SCENE=... */
+/* Scene shown at boot, a name of the scene table (scenes/scene_list.h). make SCENE=... */
 #ifndef FW_SCENE
 #define FW_SCENE "tetra"
 #endif

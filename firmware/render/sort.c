@@ -3,6 +3,16 @@
  */
 #include "render/sort.h"
 
+/* Work counter for the unit tests, which build this file with SORT_COUNT_WORK (firmware.mk,
+ * FW_UNIT_CFLAGS): every item read or moved counts one, every histogram slot cleared or scanned
+ * one. The firmware's builds leave it out (SORT_WORK is then nothing). */
+#ifdef SORT_COUNT_WORK
+uint64_t sort_work;
+#define SORT_WORK(n) (sort_work += (uint64_t)(n))
+#else
+#define SORT_WORK(n) ((void)0)
+#endif
+
 /* Stable insertion sort by the key half, for short lists. */
 static void sort_insertion(uint32_t *item, uint32_t n)
 {
@@ -14,8 +24,10 @@ static void sort_insertion(uint32_t *item, uint32_t n)
         while (j > 0u && (item[j - 1u] >> 16) > k) {
             item[j] = item[j - 1u];
             j--;
+            SORT_WORK(1);
         }
         item[j] = x;
+        SORT_WORK(1);
     }
 }
 
@@ -23,6 +35,7 @@ static void sort_insertion(uint32_t *item, uint32_t n)
 static int sort_pass_needed(const uint32_t hist[256], uint32_t n)
 {
     for (uint32_t d = 0; d < 256u; d++) {
+        SORT_WORK(1);
         if (hist[d] != 0u) {
             return hist[d] != n;
         }
@@ -50,11 +63,13 @@ static inline __attribute__((always_inline)) void sort_pass(const uint32_t *in, 
         start += hist[d + 2u];
         next[d + 3u] = start;
         start += hist[d + 3u];
+        SORT_WORK(4);
     }
     for (const uint32_t *p = in; p != in_end; p++) {
         const uint32_t x = *p;
 
         *next[(x >> shift) & 0xFFu]++ = x;
+        SORT_WORK(1);
     }
 }
 
@@ -73,12 +88,14 @@ void sort_items(uint32_t *item, uint32_t *tmp, uint32_t n, struct sort_scratch *
         hist[0][d + 1u] = 0;
         hist[1][d] = 0;
         hist[1][d + 1u] = 0;
+        SORT_WORK(4);
     }
     for (uint32_t i = 0; i < n; i++) {
         const uint32_t x = item[i];
 
         hist[0][(x >> 16) & 0xFFu]++;
         hist[1][x >> 24]++;
+        SORT_WORK(1);
     }
     /* Low digit, then high digit; a skipped pass leaves the items where they are. */
     if (sort_pass_needed(hist[0], n)) {
@@ -93,6 +110,7 @@ void sort_items(uint32_t *item, uint32_t *tmp, uint32_t n, struct sort_scratch *
     if (src != item) {
         for (uint32_t i = 0; i < n; i++) {
             item[i] = src[i];
+            SORT_WORK(1);
         }
     }
 }

@@ -1,13 +1,14 @@
 /*
- * scene.h — the built-in scenes and what the frame loop asks of them. Pure code.
+ * scene.h — what the frame loop asks of a scene, and what scene files share. Pure code.
  *
+ * The scenes are the lines of scenes/scene_list.h, each in its own file or folder:
  *   tetra      the walking skeleton's tetrahedron, spinning (object mode)
  *   cubes      64 coloured cubes, each turning on its own (orbit mode)
  *   landscape  a lit low-poly height field, 2048 triangles in 16 tiles (fly mode)
  *   voxel      a 16 x 16 x 16 block world with place/break under the crosshair (fly mode)
  *   knot       a (2, 3) torus knot of exactly 5000 triangles, the large-model benchmark (object mode)
  *
- * A scene owns its meshes (built once by init into its own storage, inside struct scene), its
+ * A scene owns its meshes (built once by init into its own state, SCENE_STATE below), its
  * camera and its objects. The frame loop calls scene_update once per frame with the keys, then
  * scene_draw once per pass (twice for anaglyph stereo). Object mode turns the whole scene about
  * cam.cfg.focus (render.h composes it into every object's transform).

@@ -79,7 +79,7 @@ void unit_srand(uint32_t seed);
     X(test_clip_guard_band)           \
     X(test_clip_random)               \
     X(test_sort_order_and_stability)  \
-    X(test_sort_reverse_input_sorted)        \
+    X(test_sort_reverse_input)        \
     X(test_palette_ramps)             \
     X(test_palette_light_levels)      \
     X(test_render_backface)           \
