@@ -59,9 +59,18 @@ static void check_mesh(const struct mesh *m, const struct render_object *o)
 
 void test_scene_meshes_valid(void)
 {
+    /* The table's names, in its order: each scene's .name is its SCENE(name) line's. */
+    static const char *const table_names[] = {
+#define SCENE(name) #name,
+#include "scenes/scene_list.h"
+#undef SCENE
+    };
+
+    CHECK_EQ(sizeof table_names / sizeof table_names[0], SCENE_COUNT);
     for (uint32_t k = 0; k < SCENE_COUNT; k++) {
         const struct scene_desc *d = scene_at(k);
 
+        CHECK(strcmp(d->name, table_names[k]) == 0);
         CHECK(scene_find(d->name) == d);
         scene_start(&scene, d);
         CHECK(scene.object_count > 0u);
