@@ -127,3 +127,41 @@ void mesh_finish(struct mesh *m)
     m->box_lo = lo;
     m->box_hi = hi;
 }
+
+/*
+ * The six face directions: the outward normal's axis and sign, and the two tangent axes u, v with
+ * u x v = normal, so the quad o, o+u, o+u+v, o+v is wound outwards (mesh.h). o is the face's
+ * corner with the smallest coordinates.
+ */
+const struct mesh_cube_face mesh_cube_faces[6] = {
+    {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},    /* +x: y x z = x */
+    {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},   /* -x: z x y = -x */
+    {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}},    /* +y: z x x = y */
+    {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},   /* -y: x x z = -y */
+    {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},    /* +z: x x y = z */
+    {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}},   /* -z: y x x = -z */
+};
+
+void mesh_cube_face_corners(uint32_t dir, int32_t corner[4][3])
+{
+    const int8_t *n = mesh_cube_faces[dir].n;
+    const int8_t *u = mesh_cube_faces[dir].u;
+    const int8_t *v = mesh_cube_faces[dir].v;
+
+    for (int a = 0; a < 3; a++) {
+        const int32_t o = (n[a] > 0) ? 1 : 0;
+
+        corner[0][a] = o;
+        corner[1][a] = o + u[a];
+        corner[2][a] = o + u[a] + v[a];
+        corner[3][a] = o + v[a];
+    }
+}
+
+uvec3 mesh_cube_face_normal(uint32_t dir)
+{
+    const int8_t *n = mesh_cube_faces[dir].n;
+    uvec3 r = {UNIT_ONE * n[0], UNIT_ONE * n[1], UNIT_ONE * n[2]};
+
+    return r;
+}

@@ -78,4 +78,19 @@ void mesh_add_quad(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint16_t 
  * vertices are that box's eight corners in the order mesh.box names. */
 void mesh_finish(struct mesh *m);
 
+/* The six faces of the unit cube [0, 1]^3, dir 0 = +x, 1 = -x, 2 = +y, 3 = -y, 4 = +z, 5 = -z:
+ * the outward normal n and tangent axes u, v with u x v = n (the voxel world's block faces, the
+ * cubes scene's cube). */
+struct mesh_cube_face {
+    int8_t n[3];
+    int8_t u[3];
+    int8_t v[3];
+};
+extern const struct mesh_cube_face mesh_cube_faces[6];
+
+/* Corners of face `dir` in outward winding order: the quad corner[0..3] (mesh_add_quad). */
+void mesh_cube_face_corners(uint32_t dir, int32_t corner[4][3]);
+/* Outward unit normal of face `dir`. */
+uvec3 mesh_cube_face_normal(uint32_t dir);
+
 #endif /* MESH_H */

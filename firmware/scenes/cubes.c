@@ -4,7 +4,6 @@
  */
 #include "render/palette.h"
 #include "scenes/scene.h"
-#include "scenes/voxel/voxel_world.h"  /* voxel_face_corners, voxel_face_normal: a cube is a block */
 
 struct cubes_state {
     struct mesh mesh;
@@ -36,11 +35,11 @@ static void cubes_init(struct scene *s)
         int32_t k[4][3];
         uint16_t q[4];
 
-        voxel_face_corners(d, k);
+        mesh_cube_face_corners(d, k);
         for (int j = 0; j < 4; j++) {
             q[j] = (uint16_t)(k[j][0] + 2 * k[j][1] + 4 * k[j][2]);
         }
-        mesh_add_quad(m, q[0], q[1], q[2], q[3], mesh_add_normal(m, voxel_face_normal(d)), 0);
+        mesh_add_quad(m, q[0], q[1], q[2], q[3], mesh_add_normal(m, mesh_cube_face_normal(d)), 0);
     }
     mesh_finish(m);
 

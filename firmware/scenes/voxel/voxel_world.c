@@ -111,48 +111,6 @@ uint8_t voxel_face_material(uint8_t block, uint32_t face)
     }
 }
 
-/*
- * The six face directions: the outward normal's axis and sign, and the two tangent axes u, v with
- * u x v = normal, so the quad o, o+u, o+u+v, o+v is wound outwards (mesh.h). o is the face's
- * corner with the smallest coordinates.
- */
-static const struct {
-    int8_t n[3];
-    int8_t u[3];
-    int8_t v[3];
-} voxel_dirs[6] = {
-    {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},    /* +x: y x z = x */
-    {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},   /* -x: z x y = -x */
-    {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}},    /* +y: z x x = y */
-    {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},   /* -y: x x z = -y */
-    {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},    /* +z: x x y = z */
-    {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}},   /* -z: y x x = -z */
-};
-
-void voxel_face_corners(uint32_t dir, int32_t corner[4][3])
-{
-    const int8_t *n = voxel_dirs[dir].n;
-    const int8_t *u = voxel_dirs[dir].u;
-    const int8_t *v = voxel_dirs[dir].v;
-
-    for (int a = 0; a < 3; a++) {
-        const int32_t o = (n[a] > 0) ? 1 : 0;
-
-        corner[0][a] = o;
-        corner[1][a] = o + u[a];
-        corner[2][a] = o + u[a] + v[a];
-        corner[3][a] = o + v[a];
-    }
-}
-
-uvec3 voxel_face_normal(uint32_t dir)
-{
-    const int8_t *n = voxel_dirs[dir].n;
-    uvec3 r = {UNIT_ONE * n[0], UNIT_ONE * n[1], UNIT_ONE * n[2]};
-
-    return r;
-}
-
 void voxel_chunk_init(struct voxel_chunk *c, int32_t cx, int32_t cy, int32_t cz)
 {
     mesh_init(&c->mesh, c->verts, VOXEL_CHUNK_MAX_VERTS, c->faces, VOXEL_CHUNK_MAX_FACES,
@@ -186,7 +144,7 @@ void voxel_build_chunk(const struct voxel_world *w, int32_t cx, int32_t cy, int3
         grid_index[i] = 0xFFFFu;
     }
     for (uint32_t d = 0; d < 6u; d++) {
-        mesh_add_normal(m, voxel_face_normal(d));
+        mesh_add_normal(m, mesh_cube_face_normal(d));
     }
     for (int32_t ly = 0; ly < VOXEL_CHUNK; ly++) {
         for (int32_t lz = 0; lz < VOXEL_CHUNK; lz++) {
@@ -197,7 +155,7 @@ void voxel_build_chunk(const struct voxel_world *w, int32_t cx, int32_t cy, int3
                     continue;
                 }
                 for (uint32_t d = 0; d < 6u; d++) {
-                    const int8_t *n = voxel_dirs[d].n;
+                    const int8_t *n = mesh_cube_faces[d].n;
                     int32_t corner[4][3];
                     uint16_t q[4];
 
@@ -205,7 +163,7 @@ void voxel_build_chunk(const struct voxel_world *w, int32_t cx, int32_t cy, int3
                         BLOCK_AIR) {
                         continue;  /* hidden between two solid blocks */
                     }
-                    voxel_face_corners(d, corner);
+                    mesh_cube_face_corners(d, corner);
                     for (int k = 0; k < 4; k++) {
                         q[k] = voxel_corner(m, grid_index, lx + corner[k][0], ly + corner[k][1],
                                             lz + corner[k][2]);

@@ -92,11 +92,7 @@ static inline uint32_t voxel_chunk_index(int32_t cx, int32_t cy, int32_t cz)
     return (uint32_t)((cy * VOXEL_CHUNKS_Z + cz) * VOXEL_CHUNKS_X + cx);
 }
 
-/* Corners of face `dir` (0 = +x, 1 = -x, 2 = +y, 3 = -y, 4 = +z, 5 = -z) of the unit cube
- * [0, 1]^3, in outward winding order: the quad corner[0..3] (mesh_add_quad). */
-void voxel_face_corners(uint32_t dir, int32_t corner[4][3]);
-/* Outward unit normal of face `dir`. */
-uvec3 voxel_face_normal(uint32_t dir);
+/* A block's faces are the unit cube's: mesh_cube_faces, mesh_cube_face_corners (render/mesh.h). */
 
 /* The palette material of a block's face (0 = +x, 1 = -x, 2 = +y, 3 = -y, 4 = +z, 5 = -z). */
 uint8_t voxel_face_material(uint8_t block, uint32_t face);
