@@ -3,7 +3,8 @@
 #
 # Inputs (set before or on the command line):
 #   BUILD          output directory                                  (default build)
-#   SCENE          scene shown at boot: tetra cubes landscape voxel knot (default tetra)
+#   SCENE          scene shown at boot, one of the scene table's (firmware/scenes/scene_list.h:
+#                  tetra cubes landscape voxel knot)                  (default tetra)
 #   FW_BACKEND     arithmetic of the pipeline: fixed or float          (default fixed)
 #   FRAMES         frames the firmware renders, -DFW_FRAMES; 0 = until Q (default 24)
 #   RV_CC          cross compiler                         (default riscv64-unknown-elf-gcc)
@@ -53,8 +54,14 @@ GPUSIM      ?= $(BUILD)/sim/gpusim
 
 include bsp/$(FW_PLATFORM)/bsp.mk
 
-FW_SCENES   := tetra cubes landscape voxel knot
+# The scenes: the names of the scene table's SCENE(name) lines, in its order (keys 1..9 follow
+# it). A scene's sources are firmware/scenes/<name>.c, or every .c file of firmware/scenes/<name>/.
+FW_SCENE_TABLE := firmware/scenes/scene_list.h
+FW_SCENES   := $(shell sed -n 's/^SCENE(\([A-Za-z0-9_]*\)).*/\1/p' $(FW_SCENE_TABLE))
 FW_BACKENDS := fixed float
+fw_scene_srcs = $(wildcard firmware/scenes/$(1).c firmware/scenes/$(1)/*.c)
+$(foreach s,$(FW_SCENES),$(if $(call fw_scene_srcs,$(s)),,\
+  $(error scene '$(s)' of $(FW_SCENE_TABLE) has no firmware/scenes/$(s).c nor firmware/scenes/$(s)/*.c)))
 
 ifeq ($(filter $(SCENE),$(FW_SCENES)),)
 $(error SCENE=$(SCENE) is not one of: $(FW_SCENES))
@@ -76,12 +83,16 @@ FW_UNIT_FLOAT := $(BUILD)/tests/fw_unit_float
 
 # Pure sources (no hardware access: built for the target, the host build and the unit tests),
 # the driver edge, the frame loop (per ELF), the target's main.
-FW_PURE_SRCS := $(addprefix firmware/src/,fixed.c vec.c camera.c input.c palette.c mesh.c proj.c \
-                clip.c sort.c render.c batch.c voxel.c scene.c scene_tetra.c scene_cubes.c \
-                scene_landscape.c scene_voxel.c scene_knot.c)
-FW_DRIVER_SRC := firmware/src/gpu.c
-FW_APP_SRC    := firmware/src/app.c
-FW_MAIN_SRC   := firmware/src/main.c
+# The folders follow the data path (firmware/README.md): math/, input/, camera/, render/ (the
+# pipeline stages), gpu/ (batching and the driver), scenes/, app/ (the loop, main, settings).
+FW_PURE_SRCS := firmware/math/fixed.c firmware/math/vec.c firmware/camera/camera.c \
+                firmware/input/input.c \
+                $(addprefix firmware/render/,palette.c mesh.c proj.c clip.c sort.c render.c) \
+                firmware/gpu/batch.c firmware/scenes/scene.c \
+                $(foreach s,$(FW_SCENES),$(call fw_scene_srcs,$(s)))
+FW_DRIVER_SRC := firmware/gpu/gpu.c
+FW_APP_SRC    := firmware/app/app.c
+FW_MAIN_SRC   := firmware/app/main.c
 FW_HOST_SRCS  := bsp/host/bsp_host.c bsp/host/host_main.c
 # Other components in the host build come as their own libraries, built once by their own rules
 # (the golden model, gpu_model/model.mk; the PNG writer, the top-level Makefile).
@@ -112,9 +123,9 @@ FW_SP_VARIANTS += fixed-lean
 # measured on a cubes frame, the sort fell from 25,059 to 17,869 instructions without the call.
 FW_CFLAGS_BASE := $(FW_ARCH_FLAGS) -O2 -g $(FW_WARN) -ffp-contract=off -ffunction-sections \
                   -fdata-sections -fno-tree-loop-distribute-patterns \
-                  -Ibsp/$(FW_PLATFORM) -Icontract -Ifirmware/src
-FW_HOST_CFLAGS_BASE = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Ibsp/host -Icontract \
-                      -Ifirmware/src -Igpu_model -Icosim
+                  -Ibsp/$(FW_PLATFORM) -Ibsp -Icontract -Ifirmware
+FW_HOST_CFLAGS_BASE = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Ibsp/host -Ibsp -Icontract \
+                      -Ifirmware -Igpu_model -Icosim
 FW_LDFLAGS_BASE := $(FW_ARCH_FLAGS) $(FW_BSP_LDFLAGS) -T$(FW_LDSCRIPT) -Wl,--gc-sections
 
 # Record a command line in a file, rewriting it only when it changed: objects depend on it.
@@ -239,12 +250,12 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2,\
   $(eval FW_ERR_ELFS += $(FW_ERR_DIR)/$(s)-$(v)-z.elf)))
 
 # ---- host unit tests -------------------------------------------------------------------------
-# The pure sources and gpu.c, built against tests/firmware/fake_bsp/bsp.h (the GPU aperture is an
+# The pure sources and gpu.c, built against tests/firmware/fake_bsp/bsp_platform.h (the GPU aperture is an
 # array), once per backend. Test files that only make sense for one backend say so themselves.
 
 FW_UNIT_TEST_SRCS := $(wildcard tests/firmware/*.c)
-FW_UNIT_CFLAGS     = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Itests/firmware/fake_bsp \
-                     -Itests/firmware -Icontract -Ifirmware/src
+FW_UNIT_CFLAGS     = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Itests/firmware/fake_bsp -Ibsp \
+                     -Itests/firmware -Icontract -Ifirmware -DSORT_COUNT_WORK
 
 # $(1) = binary, $(2) = backend
 define FW_UNIT_RULES
@@ -268,6 +279,9 @@ $(eval $(call FW_UNIT_RULES,$(FW_UNIT),fixed))
 $(eval $(call FW_UNIT_RULES,$(FW_UNIT_FLOAT),float))
 
 -include $(FW_DEP_FILES)
+# The sources were in firmware/src/ until it was split by role: a dependency file written before
+# (build/.../app.d) may still name firmware/src/app.c; let it be missing, app.o is then rebuilt.
+firmware/src/%.c: ;
 
 # ---- convenience ----------------------------------------------------------------------------
 

@@ -18,7 +18,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "app.h"
+#include "app/app.h"
 #include "bsp_host.h"
 
 static int host_usage(void)

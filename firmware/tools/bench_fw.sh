@@ -4,7 +4,7 @@
 # Each scene's benchmark ELF (FW_BENCH_FRAMES frames, default view, no keys) runs in co-simulation
 # without the golden-model check (the counts do not depend on it); QEMU runs with -icount, so the
 # firmware's per-frame "fw instr" (minstret delta of the frame's CPU work, DONE_SEQ polling and
-# printing excluded; see firmware/src/app.c) is exact and reproducible. The table gives the mean
+# printing excluded; see firmware/app/app.c) is exact and reproducible. The table gives the mean
 # over the frames. "triangles drawn" is the GPU's PERF_TRIS_DRAWN summed over the frame's batches.
 # The 60 fps budget: 100 MHz / 1.3 cycles per instruction / 60 = 1,282,051 instructions per frame.
 #

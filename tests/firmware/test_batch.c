@@ -6,9 +6,9 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "batch.h"
-#include "palette.h"
-#include "render.h"
+#include "gpu/batch.h"
+#include "render/palette.h"
+#include "render/render.h"
 #include "test_util.h"
 #include "unit.h"
 

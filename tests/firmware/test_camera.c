@@ -5,8 +5,9 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "camera.h"
-#include "input.h"
+#include "camera/camera.h"
+#include "input/input.h"
+#include "scenes/scene.h"  /* scene_camera_keys: the key bindings */
 #include "test_util.h"
 #include "unit.h"
 
@@ -36,7 +37,7 @@ static void press(struct camera *cam, enum input_key k, int times)
         for (int i = 0; i < n; i++) {
             input_counts_add(&keys, k);
         }
-        cam_apply_keys(cam, &keys);
+        scene_camera_keys(cam, &keys);
         times -= n;
     }
 }
@@ -148,21 +149,21 @@ void test_cam_mode_cycle(void)
     yaw = cam.yaw;
     input_counts_clear(&keys);
     input_counts_add(&keys, KEY_MODE);
-    cam_apply_keys(&cam, &keys);
+    scene_camera_keys(&cam, &keys);
     CHECK_EQ(cam.mode, CAM_ORBIT);
     CHECK(fabs(rd(cam.eye.x) - rd(eye.x)) < 2e-3 && fabs(rd(cam.eye.z) - rd(eye.z)) < 2e-3);
     CHECK_EQ(cam.yaw, yaw);
     press(&cam, KEY_LOOK_LEFT, 5);  /* orbit a little */
     eye = cam.eye;
-    cam_apply_keys(&cam, &keys);
+    scene_camera_keys(&cam, &keys);
     CHECK_EQ(cam.mode, CAM_OBJECT);
     CHECK(fabs(rd(cam.eye.y) - rd(eye.y)) < 2e-3);
-    cam_apply_keys(&cam, &keys);
+    scene_camera_keys(&cam, &keys);
     CHECK_EQ(cam.mode, CAM_FLY);
     CHECK(fabs(rd(cam.eye.x) - rd(eye.x)) < 2e-3 && fabs(rd(cam.eye.z) - rd(eye.z)) < 2e-3);
     /* Two presses in one frame: two steps. */
     input_counts_add(&keys, KEY_MODE);
-    cam_apply_keys(&cam, &keys);
+    scene_camera_keys(&cam, &keys);
     CHECK_EQ(cam.mode, CAM_OBJECT);
     CHECK(cam_mode_name(CAM_OBJECT)[0] == 'o');
 }

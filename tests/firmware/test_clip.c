@@ -6,7 +6,7 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "clip.h"
+#include "render/clip.h"
 #include "test_util.h"
 #include "unit.h"
 

@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "fixed.h"
+#include "math/fixed.h"
 #include "unit.h"
 
 #define PI 3.14159265358979323846

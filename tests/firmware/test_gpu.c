@@ -6,7 +6,9 @@
 #include <string.h>
 
 #include "bsp.h"
-#include "gpu.h"
+#include "gpu/gpu.h"
+#include "render/proj.h"
+#include "render/render.h"
 #include "unit.h"
 
 uint32_t fake_gpu_mem[FAKE_GPU_WORDS];
@@ -39,41 +41,39 @@ static void fake_reset(void)
 
 static const uint16_t test_palette[3] = {0x000, 0x123, 0xFA5};
 
-void test_gpu_pack_vertex(void)
+/* The words batch.c copies are the contract's: proj_vertex's first word decodes, through the
+ * contract's field definitions, to its x and y (sign-extended), render_prim's two words to its
+ * indices, colour and kind. */
+void test_gpu_native_words(void)
 {
     const int16_t xs[] = {0, 1, -1, 2560, -32768, 32767, -16};
-    uint32_t w[GPU_VTX_WORDS];
+    struct render_prim p;
 
-    gpu_pack_vertex(w, -1, -32768, 0xABCD);
-    CHECK_EQ(w[0], 0x8000FFFFu);
-    CHECK_EQ(w[1], 0x0000ABCDu);
-    gpu_pack_vertex(w, 160 * 16 + 8, 120 * 16 + 8, 0);
-    CHECK_EQ(w[0], (uint32_t)(1928u << 16) | 2568u);
-    CHECK_EQ(w[1], 0u);
-    /* Round trip through the contract's field definitions, sign-extending x and y. */
     for (unsigned i = 0; i < sizeof xs / sizeof xs[0]; i++) {
         for (unsigned j = 0; j < sizeof xs / sizeof xs[0]; j++) {
-            gpu_pack_vertex(w, xs[i], xs[j], (uint16_t)(i * 1000u + j));
+            struct proj_vertex v;
+            uint32_t w[GPU_VTX_WORDS];
+
+            memset(&v, 0, sizeof v);
+            proj_vertex_store(&v, xs[i], xs[j], i * 1000u + j, 77u);
+            w[0] = v.sxy;
+            w[1] = v.zbuf;
             CHECK_EQ((int16_t)((w[GPU_VTX_X_WORD] >> GPU_VTX_X_LSB) & GPU_VTX_X_MASK), xs[i]);
             CHECK_EQ((int16_t)((w[GPU_VTX_Y_WORD] >> GPU_VTX_Y_LSB) & GPU_VTX_Y_MASK), xs[j]);
             CHECK_EQ((w[GPU_VTX_Z_WORD] >> GPU_VTX_Z_LSB) & GPU_VTX_Z_MASK, i * 1000u + j);
         }
     }
-}
-
-void test_gpu_pack_prim(void)
-{
-    uint32_t w[GPU_PRIM_WORDS];
-
-    gpu_pack_prim(w, 1, 2, 3, 0xA5, GPU_PRIM_KIND_LINE);
-    CHECK_EQ(w[0], 0x00020001u);
-    CHECK_EQ(w[1], 0x01A50003u);
-    gpu_pack_prim(w, 0xFFFF, 0x8000, 1023, 0xFF, GPU_PRIM_KIND_TRI);
-    CHECK_EQ((w[GPU_PRIM_I0_WORD] >> GPU_PRIM_I0_LSB) & GPU_PRIM_I0_MASK, 0xFFFFu);
-    CHECK_EQ((w[GPU_PRIM_I1_WORD] >> GPU_PRIM_I1_LSB) & GPU_PRIM_I1_MASK, 0x8000u);
-    CHECK_EQ((w[GPU_PRIM_I2_WORD] >> GPU_PRIM_I2_LSB) & GPU_PRIM_I2_MASK, 1023u);
-    CHECK_EQ((w[GPU_PRIM_COLOR_WORD] >> GPU_PRIM_COLOR_LSB) & GPU_PRIM_COLOR_MASK, 0xFFu);
-    CHECK_EQ((w[GPU_PRIM_KIND_WORD] >> GPU_PRIM_KIND_LSB) & GPU_PRIM_KIND_MASK, GPU_PRIM_KIND_TRI);
+    p.v[0] = 0xFFFF;
+    p.v[1] = 0x8000;
+    p.v[2] = 1023;
+    p.color = 0xA5;
+    p.kind = GPU_PRIM_KIND_LINE;
+    CHECK_EQ((p.w[GPU_PRIM_I0_WORD] >> GPU_PRIM_I0_LSB) & GPU_PRIM_I0_MASK, 0xFFFFu);
+    CHECK_EQ((p.w[GPU_PRIM_I1_WORD] >> GPU_PRIM_I1_LSB) & GPU_PRIM_I1_MASK, 0x8000u);
+    CHECK_EQ((p.w[GPU_PRIM_I2_WORD] >> GPU_PRIM_I2_LSB) & GPU_PRIM_I2_MASK, 1023u);
+    CHECK_EQ((p.w[GPU_PRIM_COLOR_WORD] >> GPU_PRIM_COLOR_LSB) & GPU_PRIM_COLOR_MASK, 0xA5u);
+    CHECK_EQ((p.w[GPU_PRIM_KIND_WORD] >> GPU_PRIM_KIND_LSB) & GPU_PRIM_KIND_MASK,
+             GPU_PRIM_KIND_LINE);
     CHECK_EQ(GPU_RGB444(0xF, 0xA, 0x5), 0xFA5u);
 }
 

@@ -3,8 +3,8 @@
  */
 #include <stdint.h>
 
-#include "gpu.h"
-#include "palette.h"
+#include "gpu/gpu.h"
+#include "render/palette.h"
 #include "test_util.h"
 #include "unit.h"
 

@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "proj.h"
+#include "render/proj.h"
 #include "test_util.h"
 #include "unit.h"
 

@@ -7,8 +7,8 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "palette.h"
-#include "render.h"
+#include "render/palette.h"
+#include "render/render.h"
 #include "test_util.h"
 #include "unit.h"
 

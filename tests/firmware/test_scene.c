@@ -7,31 +7,24 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "batch.h"
-#include "palette.h"
-#include "render.h"
-#include "scene.h"
+#include "gpu/batch.h"
+#include "render/palette.h"
+#include "render/render.h"
+#include "scenes/scene.h"
+#include "scenes/voxel/voxel_scene.h"
+#include "app/pipeline.h"
 #include "test_util.h"
 #include "unit.h"
 
 static struct scene scene;
 static struct render_frame frame;
 
+/* The frame loop's pass (pipeline.h), with GPU lines. */
 static void render_scene(const struct scene *s, struct render_frame *f, bool wire)
 {
-    struct proj_setup ps;
-    struct cam_view view;
-    struct render_pass pass;
+    const struct pipeline_opts opts = {.wireframe = wire, .depth_test = false, .gpu_lines = true};
 
-    proj_setup_init(&ps, s->focal_px, s->far);
-    cam_get_view(&s->cam, 0, &view);
-    render_pass_init(&pass, &ps, &view, &s->cam.scene_rot, s->cam.cfg.focus, s->light, s->ambient);
-    pass.wireframe = wire;
-    pass.gpu_lines = true;
-    render_frame_begin(f);
-    render_stats_clear(&f->stats);
-    scene_draw(s, f, &pass);
-    render_sort(f);
+    pipeline_pass(f, s, &opts, 0, NULL, NULL);
 }
 
 static void check_mesh(const struct mesh *m, const struct render_object *o)
@@ -66,9 +59,18 @@ static void check_mesh(const struct mesh *m, const struct render_object *o)
 
 void test_scene_meshes_valid(void)
 {
+    /* The table's names, in its order: each scene's .name is its SCENE(name) line's. */
+    static const char *const table_names[] = {
+#define SCENE(name) #name,
+#include "scenes/scene_list.h"
+#undef SCENE
+    };
+
+    CHECK_EQ(sizeof table_names / sizeof table_names[0], SCENE_COUNT);
     for (uint32_t k = 0; k < SCENE_COUNT; k++) {
         const struct scene_desc *d = scene_at(k);
 
+        CHECK(strcmp(d->name, table_names[k]) == 0);
         CHECK(scene_find(d->name) == d);
         scene_start(&scene, d);
         CHECK(scene.object_count > 0u);
@@ -156,7 +158,7 @@ void test_scene_frames(void)
 /* Voxel: B breaks the block under the crosshair, P puts one back in front of the hit face. */
 void test_scene_voxel_place_break(void)
 {
-    struct scene_voxel_state *v = &scene.u.voxel;
+    struct voxel_scene_state *v = voxel_scene_state(&scene);
     struct input_decoder dec;
     struct input_counts c;
     struct scene_event ev;

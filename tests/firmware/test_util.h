@@ -7,8 +7,8 @@
 
 #include <math.h>
 
-#include "real.h"
-#include "vec.h"
+#include "math/real.h"
+#include "math/vec.h"
 
 #define TEST_PI 3.14159265358979323846
 

@@ -9,7 +9,7 @@
 
 #include "test_util.h"
 #include "unit.h"
-#include "voxel.h"
+#include "scenes/voxel/voxel_world.h"
 
 static struct voxel_world world;
 static struct voxel_chunk chunk;

@@ -4,7 +4,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 
-#include "fixed.h"
+#include "math/fixed.h"
 #include "unit.h"
 
 static int unit_case_failures;

@@ -24,7 +24,7 @@ FUZZ_CFLAGS  := -std=c11 -g -O1 -Wall -Wextra $(FUZZ_SAN)
 FUZZ_CXXFLAGS := -std=c++17 -g -O1 -Wall -Wextra $(FUZZ_SAN)
 FUZZ_BINS    := $(foreach t,$(FUZZ_TARGETS),$(FUZZ_DIR)/fuzz_$(t))
 
-FUZZ_FW_HDRS := $(wildcard firmware/src/*.h contract/gpu_regs.h)
+FUZZ_FW_HDRS := $(wildcard firmware/*/*.h firmware/scenes/*/*.h bsp/bsp.h contract/gpu_regs.h)
 
 # The golden model, instrumented for ASan/UBSan and coverage but not comparison tracing.
 $(FUZZ_DIR)/gpu_model.o: gpu_model/gpu_model.c $(GPU_MODEL_HDR)
@@ -40,18 +40,18 @@ $(FUZZ_DIR)/fuzz_prim_list: tests/fuzz/fuzz_prim_list.cpp cosim/prim_list.cpp co
 
 $(FUZZ_DIR)/fuzz_input: tests/fuzz/fuzz_input.c tests/fuzz/fuzz_common.h $(FW_PURE_SRCS) $(FUZZ_FW_HDRS)
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -Icontract -Ifirmware/src $(filter %.c,$^) -lm -o $@
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Icontract -Ifirmware $(filter %.c,$^) -lm -o $@
 
 $(FUZZ_DIR)/fuzz_gpu_model: tests/fuzz/fuzz_gpu_model.c tests/fuzz/fuzz_common.h $(FUZZ_DIR)/gpu_model.o $(GPU_MODEL_HDR)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -Igpu_model -Icontract $(filter %.c %.o,$^) -o $@
 
-$(FUZZ_DIR)/fuzz_gpu_driver: tests/fuzz/fuzz_gpu_driver.c tests/fuzz/fuzz_common.h firmware/src/gpu.c firmware/src/batch.c \
-                             $(FUZZ_DIR)/gpu_model.o tests/fuzz/driver_bsp/bsp.h $(FUZZ_FW_HDRS) \
+$(FUZZ_DIR)/fuzz_gpu_driver: tests/fuzz/fuzz_gpu_driver.c tests/fuzz/fuzz_common.h firmware/gpu/gpu.c firmware/gpu/batch.c \
+                             $(FUZZ_DIR)/gpu_model.o tests/fuzz/driver_bsp/bsp_platform.h $(FUZZ_FW_HDRS) \
                              $(GPU_MODEL_HDR)
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -Itests/fuzz/driver_bsp -Igpu_model -Icontract \
-	  -Ifirmware/src $(filter %.c %.o,$^) -o $@
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Itests/fuzz/driver_bsp -Ibsp -Igpu_model -Icontract \
+	  -Ifirmware $(filter %.c %.o,$^) -o $@
 
 .PHONY: fuzz fuzz-build
 fuzz-build: $(FUZZ_BINS)

@@ -1,6 +1,6 @@
 /*
- * fuzz_gpu_driver — libFuzzer target for the firmware's GPU driver (firmware/src/gpu.c) and
- * batching (firmware/src/batch.c), on a bus that checks every access and forwards it to the
+ * fuzz_gpu_driver — libFuzzer target for the firmware's GPU driver (firmware/gpu/gpu.c) and
+ * batching (firmware/gpu/batch.c), on a bus that checks every access and forwards it to the
  * golden model. The device may lie about itself (ID, VERSION, capacities, FB_SIZE) and may hang
  * (DONE_SEQ never reaches the tag) until the driver resets it.
  *
@@ -35,11 +35,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "batch.h"
+#include "gpu/batch.h"
 #include "bsp.h"
-#include "gpu.h"
+#include "gpu/gpu.h"
 #include "gpu_model.h"
-#include "render.h"
+#include "render/render.h"
 #include "fuzz_common.h"
 
 /* The most vertices and primitives the bus windows can hold: a capacity beyond is a lie. */

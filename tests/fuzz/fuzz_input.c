@@ -29,15 +29,17 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "batch.h"
-#include "camera.h"
-#include "fixed.h"
-#include "input.h"
-#include "palette.h"
-#include "proj.h"
-#include "real.h"
-#include "render.h"
-#include "scene.h"
+#include "gpu/batch.h"
+#include "camera/camera.h"
+#include "math/fixed.h"
+#include "input/input.h"
+#include "render/palette.h"
+#include "render/proj.h"
+#include "math/real.h"
+#include "render/render.h"
+#include "scenes/scene.h"
+#include "scenes/voxel/voxel_scene.h"
+#include "app/pipeline.h"
 #include "fuzz_common.h"
 
 #define FUZZ_MAX_BACKLOG 4096u  /* the simulated UART holds what has arrived and not been read */
@@ -126,8 +128,9 @@ static void check_camera(const struct scene *s)
                 fabs(real_d(view.eye.z)) <= 1024.0,
             "view eye outside +-1024");
     if (s->desc == &scene_voxel_desc) {
-        REQUIRE(s->u.voxel.place_block >= BLOCK_GRASS && s->u.voxel.place_block < BLOCK_TYPES,
-                "block type %u", s->u.voxel.place_block);
+        const uint8_t b = voxel_scene_state((struct scene *)s)->place_block;
+
+        REQUIRE(b >= BLOCK_GRASS && b < BLOCK_TYPES, "block type %u", b);
     }
     REQUIRE(fx_overflow_count() == 0u, "%lu fixed-point saturations",
             (unsigned long)fx_overflow_count());
@@ -143,27 +146,15 @@ static void start_scene(uint32_t k)
     memcpy(&scene, &started[k], sizeof scene);
 }
 
-/* One render pass and its batches, as app_render_pass and app_submit do (without a GPU). */
+/* One render pass (the frame loop's, pipeline.h) and its batches, as app_submit cuts them (without
+ * a GPU). */
 static void render_and_batch(struct scene *s)
 {
-    struct proj_setup ps;
-    struct cam_view view;
-    struct render_pass pass;
+    const struct pipeline_opts opts = {.wireframe = false, .depth_test = false, .gpu_lines = true};
     struct batch_cursor cur;
     uint32_t prims = 0;
 
-    proj_setup_init(&ps, s->focal_px, s->far);
-    cam_get_view(&s->cam, 0, &view);
-    render_pass_init(&pass, &ps, &view, &s->cam.scene_rot, s->cam.cfg.focus, s->light,
-                     s->ambient);
-    pass.gpu_lines = true;
-    render_frame_begin(&frame);
-    render_stats_clear(&frame.stats);
-    scene_draw(s, &frame, &pass);
-    render_sort(&frame);
-    if (s->crosshair) {
-        render_overlay_crosshair(&frame, &pass, 5, PAL_WHITE);
-    }
+    pipeline_pass(&frame, s, &opts, 0, NULL, NULL);
     batch_begin(&cur);
     do {
         batch_fill(&cur, &frame, GPU_VTX_CAP, GPU_TRI_CAP, &words);

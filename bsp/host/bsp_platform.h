@@ -1,0 +1,44 @@
+/*
+ * bsp_platform.h — the host build: the same firmware, compiled for Linux, with the GPU replaced by
+ * the bit-exact golden model (gpu_model/) and the UART by scripted keys. The macros and the inline
+ * half of bsp/bsp.h's interface (bsp_host.c defines the rest); what differs from a board:
+ *
+ *   - bsp_gpu_write/read go to a gpu_model instance; a DOORBELL write runs the whole batch at
+ *     once, and every buffer swap is written as a PNG (640 x 480, the model's scan-out), numbered
+ *     like the co-simulation's frames.
+ *   - bsp_uart_getc_nonblock() returns keys scheduled with --keys-at N:TEXT, delivered just
+ *     before the N-th doorbell is serviced — the co-simulation harness's rule, so a host run and a
+ *     co-simulation run with the same key script render the same frames.
+ *   - bsp_instret() has nothing to count and returns 0.
+ *
+ * bsp/host/host_main.c parses the options and calls app_run().
+ */
+#ifndef BSP_PLATFORM_H
+#define BSP_PLATFORM_H
+
+#include <stdint.h>
+
+#define BSP_NAME      "host"
+#define BSP_GPU_BASE  0u  /* offsets go straight to the model; printed only in error messages */
+#define BSP_EXIT_TRAP 126
+
+static inline uint64_t bsp_instret(void)
+{
+    return 0u;
+}
+
+static inline void bsp_fence(void)
+{
+    __asm__ volatile("" ::: "memory");  /* the model runs in this thread: a compiler barrier */
+}
+
+/* bsp_gpu_write, bsp_gpu_read, bsp_gpu_write_words: functions into the model (bsp_host.c). */
+
+/* NULL: the golden model's buffers are reached only through bsp_gpu_write (batches are staged). */
+static inline uint32_t *bsp_gpu_buffer(uint32_t offset)
+{
+    (void)offset;
+    return 0;
+}
+
+#endif /* BSP_PLATFORM_H */

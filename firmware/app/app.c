@@ -1,0 +1,492 @@
+/*
+ * app.c — the frame loop: keys in, scene update, one or two render passes, GPU batches out, one
+ * statistics line per frame. This file and the driver edge (gpu.c) are the only ones that touch
+ * the platform (bsp.h); everything they call is pure and host-tested.
+ *
+ * Per frame:
+ *   1. read at most INPUT_MAX_BYTES_PER_FRAME bytes from the UART (never blocks; the rest waits
+ *      for the next frame) and decode them into key counts;
+ *   2. global keys (quit, scene, wireframe, anaglyph, depth buffer, help), then scene_update
+ *      (camera keys, animation, scene keys);
+ *   3. per pass (two for anaglyph: left eye red, right eye cyan): render the scene into the
+ *      frame's primitive list, sort it, add the overlay, and stream it to the GPU batch by batch
+ *      (batch.c). The first batch of the frame sets CTRL_CLEAR, the last CTRL_SWAP.
+ *   4. after each doorbell, wait for DONE_SEQ with a bounded poll — the watchdog. A batch that
+ *      never finishes is reported, the GPU is reset (RESET register), the rest of the frame is
+ *      dropped and the loop goes on with the next frame; after FW_WATCHDOG_GIVE_UP consecutive
+ *      lost frames the firmware stops with FW_EXIT_GPU_TIMEOUT.
+ *
+ * Output, one line per frame:
+ *   frame N: tris submitted S drawn D | fw instr I | gpu cycles C | errors 0xE | prims P batches B
+ *     | culled object O frustum F back K clipped L
+ * "fw instr" counts the frame's CPU work (steps 1-4, including the buffer copies and the counter
+ * reads) with bsp_instret(), minus the DONE_SEQ polling: exact and reproducible under QEMU -icount.
+ * Printing is not counted.
+ */
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "app/app.h"
+#include "gpu/batch.h"
+#include "bsp.h"
+#include "camera/camera.h"
+#include "math/fixed.h"
+#include "app/fw_config.h"
+#include "gpu/gpu.h"
+#include "input/input.h"
+#include "render/palette.h"
+#include "render/proj.h"
+#include "math/real.h"
+#include "render/render.h"
+#include "scenes/scene.h"
+#include "app/pipeline.h"
+
+/* Everything the loop owns. One instance, static (about 1 MiB: frame buffers and scene meshes),
+ * handed to the pure code by pointer. */
+struct app {
+    struct gpu_dev gpu;
+    struct scene scene;
+    struct render_frame frame;
+    struct batch_words words;
+    struct input_decoder decoder;
+    uint16_t palette[PAL_ENTRIES];
+    bool wireframe;
+    bool anaglyph;
+    bool depth_test;
+    uint32_t lost_in_a_row;  /* consecutive frames dropped by the watchdog */
+};
+
+/* What one frame sent and what the GPU reported, summed over its batches and passes. */
+struct frame_totals {
+    uint32_t batches;
+    uint32_t prims;
+    uint32_t drawn;
+    uint32_t busy_cycles;
+    uint32_t errors;
+    uint64_t wait_instr;  /* instructions spent polling DONE_SEQ (excluded from fw instr) */
+    /* Where the instructions went (FW_PROFILE=1 prints them): */
+    uint64_t t_update;    /* keys, camera, scene update */
+    uint64_t t_draw;      /* transform, project, cull, clip, light, emit */
+    uint64_t t_sort;
+    uint64_t t_batch;     /* batch_fill: renumbering and packing */
+    uint64_t t_submit;    /* driver: copies, registers, doorbell, counters */
+    struct render_stats render;
+};
+
+static struct app app_state;
+/* Batch staging, for platforms whose GPU buffers are not CPU memory (bsp_gpu_buffer NULL). */
+static uint32_t app_vtx_staging[GPU_VTX_CAP * GPU_VTX_WORDS];
+static uint32_t app_prim_staging[GPU_TRI_CAP * GPU_PRIM_WORDS];
+
+static void app_fail(int status) __attribute__((noreturn));
+static void app_fail(int status)
+{
+    fflush(stdout);
+    exit(status);
+}
+
+static const char *const app_key_map =
+    "keys: W/S forward/back, A/D left/right, space/C up/down (fly: move the eye;\n"
+    "        orbit/object: W/S zoom, A/D and space/C move the target)\n"
+    "      I/K look up/down, J/L look left/right (arrow keys too); object mode: turn the scene,\n"
+    "        U/O roll\n"
+    "      M camera mode (fly -> orbit -> object), F wireframe, G anaglyph stereo (red/cyan),\n"
+    "        Z depth buffer (if the GPU has one), T animation on/off, R reset view\n";
+
+static void app_print_keys(const struct scene *s)
+{
+    fputs(app_key_map, stdout);
+    /* "1-5 scene (tetra, cubes, landscape, voxel, knot)": the scene table's names. */
+    printf("      1-%u scene (", (unsigned)SCENE_COUNT);
+    for (uint32_t k = 0; k < SCENE_COUNT; k++) {
+        printf("%s%s", (k == 0u) ? "" : ", ", scene_at(k)->name);
+    }
+    fputs("), H this help, Q quit\n", stdout);
+    if (s->desc->keys != 0) {
+        printf("      %s: %s\n", s->desc->name, s->desc->keys);
+    }
+}
+
+static void app_report_init_error(int rc, const struct gpu_info *info)
+{
+    switch (rc) {
+    case GPU_E_NOT_FOUND:
+        printf("error: GPU not found (ID=0x%08lx, expected 0x%08lx at 0x%08lx)\n",
+               (unsigned long)info->id, (unsigned long)GPU_ID_VALUE,
+               (unsigned long)BSP_GPU_BASE);
+        break;
+    case GPU_E_VERSION:
+        printf("error: unsupported GPU contract version (VERSION=0x%08lx, firmware built for "
+               "0x%08lx)\n",
+               (unsigned long)info->version, (unsigned long)GPU_VERSION_VALUE);
+        break;
+    case GPU_E_GEOMETRY:
+        printf("error: unexpected framebuffer size (FB_SIZE=0x%08lx, expected %lux%lu)\n",
+               (unsigned long)info->fb_size, (unsigned long)GPU_FB_WIDTH,
+               (unsigned long)GPU_FB_HEIGHT);
+        break;
+    case GPU_E_BUFFERS:
+        printf("error: GPU buffer capacities out of range (VTX_CAP=%lu, TRI_CAP=%lu; expected "
+               "3..%lu and 1..%lu)\n",
+               (unsigned long)info->vtx_cap, (unsigned long)info->tri_cap,
+               (unsigned long)GPU_VTX_CAP_MAX, (unsigned long)GPU_TRI_CAP_MAX);
+        break;
+    default:
+        printf("error: GPU init failed: %s (%d)\n", gpu_strerror(rc), rc);
+        break;
+    }
+}
+
+static void app_report_gpu_errors(unsigned frame, uint32_t errors)
+{
+    printf("error: GPU reported ERRORS=0x%lx in frame %u:%s%s%s%s\n", (unsigned long)errors,
+           frame, (errors & GPU_ERR_VTX_INDEX_MASK) ? " VTX_INDEX" : "",
+           (errors & GPU_ERR_COUNT_MASK) ? " COUNT" : "",
+           (errors & GPU_ERR_KIND_MASK) ? " KIND" : "",
+           (errors & GPU_ERR_WRITE_BUSY_MASK) ? " WRITE_BUSY" : "");
+}
+
+static void app_report_lines(const struct app *app)
+{
+    if (gpu_caps_lines(app->gpu.info.caps)) {
+        printf("wireframe: GPU line primitives\n");
+    } else {
+        printf("wireframe: the GPU has no lines (CAPS_LINES = 0): edges drawn as 1-pixel-wide "
+               "triangle pairs\n");
+    }
+}
+
+/* Read this frame's keys: at most INPUT_MAX_BYTES_PER_FRAME bytes, never waiting. */
+static void app_read_keys(struct app *app, struct input_counts *keys)
+{
+    input_counts_clear(keys);
+    for (uint32_t i = 0; i < INPUT_MAX_BYTES_PER_FRAME; i++) {
+        const int c = bsp_uart_getc_nonblock();
+
+        if (c < 0) {
+            break;
+        }
+        input_counts_add(keys, input_decode(&app->decoder, (uint8_t)c));
+    }
+}
+
+/* What the global keys changed, printed after the frame so printing stays out of the count. */
+struct app_notes {
+    bool help;
+    bool scene_changed;
+    const char *msg[3];  /* one per toggle (wireframe, anaglyph, depth): all of a frame's shown */
+    uint32_t msg_count;
+};
+
+static void app_note(struct app_notes *notes, const char *msg)
+{
+    if (notes->msg_count < sizeof notes->msg / sizeof notes->msg[0]) {
+        notes->msg[notes->msg_count++] = msg;
+    }
+}
+
+/* Keys that belong to the loop rather than the scene. Returns false to quit. */
+static bool app_global_keys(struct app *app, const struct input_counts *keys,
+                            struct app_notes *notes)
+{
+    notes->help = keys->n[KEY_HELP] != 0u;
+    notes->scene_changed = false;
+    notes->msg_count = 0;
+    if (keys->n[KEY_QUIT] != 0u) {
+        return false;
+    }
+    for (uint32_t k = 0; k < SCENE_COUNT; k++) {
+        if (keys->n[KEY_SCENE_1 + k] != 0u) {
+            scene_start(&app->scene, scene_at(k));
+            notes->scene_changed = true;
+        }
+    }
+    if (input_toggled(keys, KEY_WIREFRAME)) {
+        if (FW_WITH_WIREFRAME) {
+            app->wireframe = !app->wireframe;
+            app_note(notes, app->wireframe ? "wireframe on" : "wireframe off");
+        } else {
+            app_note(notes, "wireframe: not built in (FW_WITH_WIREFRAME=0)");
+        }
+    }
+    if (input_toggled(keys, KEY_ANAGLYPH)) {
+        if (FW_WITH_ANAGLYPH) {
+            app->anaglyph = !app->anaglyph;
+            app_note(notes, app->anaglyph ? "anaglyph on (left eye red, right eye cyan)"
+                                          : "anaglyph off");
+        } else {
+            app_note(notes, "anaglyph: not built in (FW_WITH_ANAGLYPH=0)");
+        }
+    }
+    if (input_toggled(keys, KEY_DEPTH)) {
+        if (!FW_WITH_DEPTH) {
+            app_note(notes, "depth buffer: not built in (FW_WITH_DEPTH=0)");
+        } else if (gpu_caps_zbuf(app->gpu.info.caps)) {
+            app->depth_test = !app->depth_test;
+            app_note(notes, app->depth_test ? "depth buffer on" : "depth buffer off");
+        } else {
+            app_note(notes, "depth buffer: the GPU has none (CAPS_ZBUF = 0)");
+        }
+    }
+    return true;
+}
+
+/*
+ * Stream the frame's primitives to the GPU. Returns false when the watchdog fired (the GPU has
+ * been reset and the frame is abandoned).
+ */
+static bool app_submit(struct app *app, unsigned frame_no, bool first_pass, bool last_pass,
+                       struct frame_totals *tot)
+{
+    struct batch_cursor cur;
+    bool first = first_pass;
+    struct gpu_batch batch;
+
+    batch.vtx_words = app->words.vtx;
+    batch.vtx_base = 0;
+    batch.prim_words = app->words.prim;
+    batch.tri_base = 0;
+    batch.clear_color = app->anaglyph ? PAL_NIGHT : PAL_SKY;
+    batch_begin(&cur);
+    do {
+        struct gpu_stats stats;
+        uint32_t tag;
+        uint64_t t0;
+        uint64_t t1;
+        uint64_t t_wait;
+        bool last;
+        int rc;
+
+        t0 = bsp_instret();
+        batch_fill(&cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap, &app->words);
+        t1 = bsp_instret();
+        tot->t_batch += t1 - t0;
+        last = last_pass && batch_done(&cur, &app->frame);
+        batch.vtx_count = app->words.vtx_count;
+        batch.prim_count = app->words.prim_count;
+        batch.ctrl = (first ? GPU_CTRL_CLEAR_MASK : 0u) | (last ? GPU_CTRL_SWAP_MASK : 0u);
+        if (app->depth_test) {
+            batch.ctrl |= GPU_CTRL_ZTEST_MASK | (first ? GPU_CTRL_ZCLEAR_MASK : 0u);
+        }
+        rc = gpu_submit_batch(&app->gpu, &batch, &tag);
+        if (rc != GPU_OK) {
+            printf("error: frame %u: batch not submitted: %s\n", frame_no, gpu_strerror(rc));
+            app_fail(FW_EXIT_GPU_SUBMIT);
+        }
+        tot->batches++;
+        tot->prims += batch.prim_count;
+
+        t_wait = bsp_instret();
+        tot->t_submit += t_wait - t1;
+        rc = gpu_wait(&app->gpu, tag, FW_GPU_MAX_POLLS);
+        t0 = bsp_instret();
+        tot->wait_instr += t0 - t_wait;
+        if (rc != GPU_OK) {
+            printf("watchdog: frame %u batch %lu: GPU did not finish (DONE_SEQ=0x%08lx, expected "
+                   "tag 0x%08lx after %lu polls): resetting it, dropping the frame\n",
+                   frame_no, (unsigned long)tot->batches, (unsigned long)app->gpu.last_done_seq,
+                   (unsigned long)tag, (unsigned long)FW_GPU_MAX_POLLS);
+            gpu_reset(&app->gpu);
+            return false;
+        }
+        gpu_read_stats(&app->gpu, &stats);
+        tot->t_submit += bsp_instret() - t0;
+        tot->drawn += stats.tris_drawn;
+        tot->busy_cycles += stats.busy_cycles;
+        tot->errors |= stats.errors;
+        first = false;
+    } while (!batch_done(&cur, &app->frame));
+    return true;
+}
+
+/* The instruction counter, as pipeline_pass's clock (inlined there). */
+static inline uint64_t app_clock(void)
+{
+    return bsp_instret();
+}
+
+/* One pass (pipeline.h): the scene seen from one eye, sorted, then the overlay. */
+static void app_render_pass(struct app *app, int eye, struct frame_totals *tot)
+{
+    struct pipeline_opts opts;
+    struct pipeline_times times = {tot->t_draw, tot->t_sort};
+
+    opts.wireframe = app->wireframe;
+    opts.depth_test = app->depth_test;
+    opts.gpu_lines = gpu_caps_lines(app->gpu.info.caps);
+    pipeline_pass(&app->frame, &app->scene, &opts, eye, app_clock, &times);
+    tot->t_draw = times.draw;
+    tot->t_sort = times.sort;
+}
+
+/* What the scene reported (the voxel scene's edits), prefixed with its name. */
+static void app_print_event(const struct scene *s, const struct scene_event *ev)
+{
+    const char *name = s->desc->name;
+    const char *block = (ev->block_name != NULL) ? ev->block_name : "?";
+
+    switch (ev->kind) {
+    case SCENE_EVENT_BROKE:
+        printf("%s: broke block (%ld, %ld, %ld)\n", name, (long)ev->x, (long)ev->y, (long)ev->z);
+        break;
+    case SCENE_EVENT_PLACED:
+        printf("%s: placed %s at (%ld, %ld, %ld)\n", name, block, (long)ev->x, (long)ev->y,
+               (long)ev->z);
+        break;
+    case SCENE_EVENT_NO_TARGET:
+        printf("%s: nothing under the crosshair within reach\n", name);
+        break;
+    case SCENE_EVENT_BLOCK_TYPE:
+        printf("%s: placing %s\n", name, block);
+        break;
+    default:
+        break;
+    }
+}
+
+int app_run(void)
+{
+    struct app *app = &app_state;
+    const struct scene_desc *desc;
+    int rc;
+
+    bsp_init();
+    palette_build(app->palette);
+    rc = gpu_init(&app->gpu, app->palette, PAL_ENTRIES);
+    /* Batches are built in the GPU's own buffers where the platform maps them, else staged. */
+    app->words.vtx = gpu_buffer_words(GPU_WIN_VTX);
+    app->words.prim = gpu_buffer_words(GPU_WIN_IDX);
+    if (app->words.vtx == NULL || app->words.prim == NULL) {
+        app->words.vtx = app_vtx_staging;
+        app->words.prim = app_prim_staging;
+    }
+    printf("%s fw (%s, %s): GPU id 0x%08lx version 0x%08lx caps 0x%08lx vtx_cap %lu tri_cap %lu "
+           "fb %lux%lu | frames %u\n",
+           FW_SCENE, BSP_NAME, REAL_BACKEND_NAME, (unsigned long)app->gpu.info.id,
+           (unsigned long)app->gpu.info.version, (unsigned long)app->gpu.info.caps,
+           (unsigned long)app->gpu.info.vtx_cap, (unsigned long)app->gpu.info.tri_cap,
+           (unsigned long)(app->gpu.info.fb_size & 0xFFFFu),
+           (unsigned long)(app->gpu.info.fb_size >> 16), (unsigned)FW_FRAMES);
+    if (rc != GPU_OK) {
+        app_report_init_error(rc, &app->gpu.info);
+        app_fail(FW_EXIT_GPU_INIT);
+    }
+    desc = scene_find(FW_SCENE);
+    if (desc == 0) {
+        printf("error: no scene named '%s'\n", FW_SCENE);
+        app_fail(FW_EXIT_CONFIG);
+    }
+    input_decoder_init(&app->decoder);
+    app->wireframe = false;
+    app->anaglyph = false;
+    app->depth_test = FW_WITH_DEPTH && FW_DEPTH_TEST && gpu_caps_zbuf(app->gpu.info.caps);
+    if (app->depth_test) {
+        printf("depth buffer on (FW_DEPTH_TEST)\n");
+    }
+    app->lost_in_a_row = 0;
+    scene_start(&app->scene, desc);
+    app_report_lines(app);
+    app_print_keys(&app->scene);
+    printf("scene %s: %lu triangles, camera %s\n", app->scene.desc->name,
+           (unsigned long)scene_triangle_count(&app->scene), cam_mode_name(app->scene.cam.mode));
+
+    /* FW_FRAMES frames, or (FW_FRAMES = 0) until Q; the frame number wraps after 2^32 frames. */
+    for (unsigned frame = 0, left = FW_FRAMES; FW_FRAMES == 0 || left > 0u; frame++, left--) {
+        struct input_counts keys;
+        struct scene_event ev;
+        struct frame_totals tot = {0};
+        const enum cam_mode mode_before = app->scene.cam.mode;
+        struct app_notes notes;
+        bool completed = true;
+        uint64_t t_start;
+        uint64_t t_end;
+        int passes;
+
+        t_start = bsp_instret();
+        app_read_keys(app, &keys);
+        if (!app_global_keys(app, &keys, &notes)) {
+            printf("quit at frame %u\n", frame);
+            break;
+        }
+        scene_update(&app->scene, &keys, &ev);
+        tot.t_update = bsp_instret() - t_start;
+
+        render_stats_clear(&tot.render);
+        passes = (FW_WITH_ANAGLYPH && app->anaglyph) ? 2 : 1;
+        for (int p = 0; p < passes && completed; p++) {
+            const int eye = app->anaglyph ? ((p == 0) ? -1 : 1) : 0;
+
+            app_render_pass(app, eye, &tot);
+            completed = app_submit(app, frame, p == 0, p == passes - 1, &tot);
+            tot.render.faces_in += app->frame.stats.faces_in;
+            tot.render.faces_culled_object += app->frame.stats.faces_culled_object;
+            tot.render.faces_frustum += app->frame.stats.faces_frustum;
+            tot.render.faces_back += app->frame.stats.faces_back;
+            tot.render.faces_clipped += app->frame.stats.faces_clipped;
+            tot.render.dropped += app->frame.stats.dropped;
+        }
+        t_end = bsp_instret();
+
+        if (notes.scene_changed) {
+            printf("scene %s: %lu triangles, camera %s\n", app->scene.desc->name,
+                   (unsigned long)scene_triangle_count(&app->scene),
+                   cam_mode_name(app->scene.cam.mode));
+        }
+        for (uint32_t m = 0; m < notes.msg_count; m++) {
+            printf("%s\n", notes.msg[m]);
+        }
+        if (app->scene.cam.mode != mode_before && !notes.scene_changed) {
+            printf("camera: %s\n", cam_mode_name(app->scene.cam.mode));
+        }
+        app_print_event(&app->scene, &ev);
+        if (notes.help) {
+            app_print_keys(&app->scene);
+        }
+        if (!completed) {
+            app->lost_in_a_row++;
+            if (app->lost_in_a_row >= FW_WATCHDOG_GIVE_UP) {
+                printf("error: frame %u: the GPU is still hung after %u resets; giving up\n", frame,
+                       (unsigned)app->lost_in_a_row);
+                app_fail(FW_EXIT_GPU_TIMEOUT);
+            }
+            continue;
+        }
+        app->lost_in_a_row = 0;
+        printf("frame %u: tris submitted %lu drawn %lu | fw instr %lu | gpu cycles %lu | errors "
+               "0x%lx | prims %lu batches %lu | culled object %lu frustum %lu back %lu | clipped "
+               "%lu\n",
+               frame, (unsigned long)tot.render.faces_in, (unsigned long)tot.drawn,
+               (unsigned long)((t_end - t_start) - tot.wait_instr),
+               (unsigned long)tot.busy_cycles, (unsigned long)tot.errors,
+               (unsigned long)tot.prims, (unsigned long)tot.batches,
+               (unsigned long)tot.render.faces_culled_object,
+               (unsigned long)tot.render.faces_frustum, (unsigned long)tot.render.faces_back,
+               (unsigned long)tot.render.faces_clipped);
+        if (FW_PROFILE) {
+            printf("profile %u: update %lu draw %lu sort %lu batch %lu submit %lu\n", frame,
+                   (unsigned long)tot.t_update, (unsigned long)tot.t_draw,
+                   (unsigned long)tot.t_sort, (unsigned long)tot.t_batch,
+                   (unsigned long)tot.t_submit);
+        }
+        if (tot.render.dropped != 0u) {
+            printf("warning: frame %u: %lu primitives or vertices did not fit the frame buffers\n",
+                   frame, (unsigned long)tot.render.dropped);
+        }
+        if (tot.errors != 0u) {
+            app_report_gpu_errors(frame, tot.errors);
+            app_fail(FW_EXIT_GPU_ERRORS);
+        }
+        if (fx_overflow_count() != 0u) {
+            printf("error: frame %u: %lu fixed-point overflow(s): a range argument failed\n",
+                   frame, (unsigned long)fx_overflow_count());
+            app_fail(FW_EXIT_FX_OVERFLOW);
+        }
+    }
+    if (app->gpu.resets != 0u) {
+        printf("watchdog: %lu GPU reset(s) in this run\n", (unsigned long)app->gpu.resets);
+    }
+    fflush(stdout);
+    return FW_EXIT_OK;
+}

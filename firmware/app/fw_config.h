@@ -1,0 +1,79 @@
+/*
+ * fw_config.h — build-time settings of the firmware and its exit statuses.
+ * Override the settings with -D on the compiler command line (firmware/firmware.mk does).
+ */
+#ifndef FW_CONFIG_H
+#define FW_CONFIG_H
+
+/* Scene shown at boot, a name of the scene table (scenes/scene_list.h). make SCENE=... */
+#ifndef FW_SCENE
+#define FW_SCENE "tetra"
+#endif
+
+/* Frames to render before exiting with status 0; 0 = run until Q is pressed. */
+#ifndef FW_FRAMES
+#define FW_FRAMES 24
+#endif
+
+/* 1: print where each frame's instructions went (update, draw, sort, batch, submit). */
+#ifndef FW_PROFILE
+#define FW_PROFILE 0
+#endif
+
+/* 1: the depth test starts on (if the GPU has a depth buffer, CAPS_ZBUF), as if Z had been pressed
+ * before the first frame. Used by `make bench-error`; the Z key still toggles it. */
+#ifndef FW_DEPTH_TEST
+#define FW_DEPTH_TEST 0
+#endif
+
+/* Fraction bits kept in projected screen coordinates, 0..4 (the contract's Q12.4 carries 4):
+ * fewer bits round every vertex to a coarser grid (0: whole pixels). An accuracy knob for
+ * `make bench-error`; 4, the default, builds exactly the full-precision code. make FW_SUBPIXEL_BITS=... */
+#ifndef FW_SUBPIXEL_BITS
+#define FW_SUBPIXEL_BITS 4
+#endif
+
+/* Features a scene may not need: 1 builds them in (the default), 0 leaves their code out, and
+ * their key then says so. make FW_DEFS="-DFW_WITH_LIGHTING=0 ..." (firmware/README.md):
+ *   FW_WITH_WIREFRAME  the F key's outline mode (the crosshair's lines stay)
+ *   FW_WITH_ANAGLYPH   the G key's red/cyan stereo (a second pass per frame)
+ *   FW_WITH_DEPTH      the GPU's depth test: VTX_Z per vertex and the Z key
+ *   FW_WITH_LIGHTING   flat light per face; without, every face shows its material at full level */
+#ifndef FW_WITH_WIREFRAME
+#define FW_WITH_WIREFRAME 1
+#endif
+#ifndef FW_WITH_ANAGLYPH
+#define FW_WITH_ANAGLYPH 1
+#endif
+#ifndef FW_WITH_DEPTH
+#define FW_WITH_DEPTH 1
+#endif
+#ifndef FW_WITH_LIGHTING
+#define FW_WITH_LIGHTING 1
+#endif
+
+/* The watchdog: reads of DONE_SEQ before a batch counts as lost. One poll is 4 instructions
+ * (lw, addi, bne, beq); under QEMU -icount 2^28 polls take about 3 s of host time (measured); 2^31
+ * would then take ~25 s (extrapolated), two orders of magnitude more than a co-simulated batch needs (the vsync wait is
+ * 1.68 M GPU cycles, ~0.2 s at 8 M simulated cycles/s). On an FPGA at 100 MHz 2^31 polls are ~90 s:
+ * a board port should set it to about a second's worth (make FW_MAX_POLLS=...). */
+#ifndef FW_GPU_MAX_POLLS
+#define FW_GPU_MAX_POLLS (1u << 31)
+#endif
+
+/* Consecutive frames lost to the watchdog before the firmware gives up on the GPU (each one has
+ * already reset it): a GPU that a reset does not bring back is an error, not a reason to hang. */
+#ifndef FW_WATCHDOG_GIVE_UP
+#define FW_WATCHDOG_GIVE_UP 3u
+#endif
+
+/* Exit statuses (the QEMU process exits with these). */
+#define FW_EXIT_OK          0
+#define FW_EXIT_CONFIG      1   /* unknown scene name built in */
+#define FW_EXIT_GPU_INIT    2   /* no GPU, wrong version, geometry or capacities */
+#define FW_EXIT_GPU_SUBMIT  3   /* batch rejected by the driver */
+#define FW_EXIT_GPU_TIMEOUT 4   /* the GPU stayed hung through FW_WATCHDOG_GIVE_UP resets */
+#define FW_EXIT_GPU_ERRORS  5   /* the GPU set an ERR_* flag */
+#define FW_EXIT_FX_OVERFLOW 6   /* a fixed-point range argument failed (saturation happened) */
+
+#endif /* FW_CONFIG_H */

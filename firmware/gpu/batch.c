@@ -1,0 +1,133 @@
+/*
+ * batch.c — see batch.h.
+ */
+#include "gpu/batch.h"
+
+void batch_begin(struct batch_cursor *cur)
+{
+    cur->next = 0;
+}
+
+/* The contract's vertex and primitive words are, on a little-endian CPU, the very bytes of
+ * proj_vertex.sxy / zbuf and render_prim.w (with frame vertex numbers): batches copy words
+ * instead of packing fields. Every platform of this firmware is little-endian; a contract or a
+ * CPU for which that no longer holds stops the build here (test_gpu_native_words checks the
+ * same layout at run time). */
+#if !(defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && \
+      GPU_VTX_WORDS == 2 && GPU_PRIM_WORDS == 2 && \
+      GPU_VTX_X_WORD == 0 && GPU_VTX_X_LSB == 0 && GPU_VTX_Y_WORD == 0 && GPU_VTX_Y_LSB == 16 && \
+      GPU_VTX_Z_WORD == 1 && GPU_VTX_Z_LSB == 0 && \
+      GPU_PRIM_I0_WORD == 0 && GPU_PRIM_I0_LSB == 0 && GPU_PRIM_I1_WORD == 0 && \
+      GPU_PRIM_I1_LSB == 16 && GPU_PRIM_I2_WORD == 1 && GPU_PRIM_I2_LSB == 0 && \
+      GPU_PRIM_COLOR_WORD == 1 && GPU_PRIM_COLOR_LSB == 16 && GPU_PRIM_KIND_WORD == 1 && \
+      GPU_PRIM_KIND_LSB == 24)
+#error "batch.c copies proj_vertex and render_prim words as the GPU's: this CPU or contract differs"
+#endif
+
+static inline void batch_put_vertex(uint32_t *w, const struct proj_vertex *v)
+{
+    w[0] = v->sxy;
+    w[1] = v->zbuf;
+}
+
+/* The vertex's slot in the current batch, writing it there first if the batch lacks it.
+ * *nv counts the batch's vertices so far. */
+static inline uint32_t batch_vertex(struct proj_vertex *v, uint16_t stamp, uint32_t *vtx,
+                                    uint32_t *nv)
+{
+    if (v->batch_stamp != stamp) {
+        v->batch_stamp = stamp;
+        v->batch_slot = (uint16_t)*nv;
+        batch_put_vertex(&vtx[*nv * GPU_VTX_WORDS], v);
+        (*nv)++;
+    }
+    return v->batch_slot;
+}
+
+/*
+ * The whole frame in one batch with the frame's own vertex numbers: every vertex is copied once,
+ * in order (also those only back faces used: the GPU reads only what primitives name), and the
+ * primitives need no renumbering. Cheaper than batch_fill's general path by the vertex look-ups.
+ */
+static void batch_fill_whole(struct render_frame *f, struct batch_words *out)
+{
+    const uint32_t nv = f->vert_count;
+    const uint32_t np = f->prim_count;
+    const struct proj_vertex *vert = f->vert;
+    const struct render_prim *prim = f->prim;
+    uint32_t *vtx = out->vtx;
+    uint32_t *prim_words = out->prim;
+
+    for (uint32_t v = 0; v < nv; v++) {
+        batch_put_vertex(&vtx[v * GPU_VTX_WORDS], &vert[v]);
+    }
+    for (uint32_t i = 0; i < np; i++) {
+        const struct render_prim *p = &prim[render_draw_index(f, i)];
+
+        prim_words[i * GPU_PRIM_WORDS] = p->w[0];
+        prim_words[i * GPU_PRIM_WORDS + 1u] = p->w[1];
+    }
+    out->vtx_count = nv;
+    out->prim_count = np;
+}
+
+void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_cap,
+                uint32_t tri_cap, struct batch_words *out)
+{
+    uint16_t stamp;
+    const uint32_t first = cur->next;
+    uint32_t i = first;
+    uint32_t nv = 0;  /* locals, not out->..., so the stores to the word arrays cannot alias them */
+    uint32_t end;
+    uint32_t vtx_room;
+    const uint32_t total = f->prim_count;
+    const struct render_prim *prim = f->prim;
+    struct proj_vertex *vert = f->vert;
+    uint32_t *vtx = out->vtx;
+    uint32_t *prim_words = out->prim;
+
+    vtx_cap = (vtx_cap > GPU_VTX_CAP) ? GPU_VTX_CAP : vtx_cap;
+    tri_cap = (tri_cap > GPU_TRI_CAP) ? GPU_TRI_CAP : tri_cap;
+    vtx_cap = (vtx_cap < 3u) ? 3u : vtx_cap;
+    tri_cap = (tri_cap < 1u) ? 1u : tri_cap;
+
+    if (first == 0u && f->vert_count <= vtx_cap && total <= tri_cap) {
+        batch_fill_whole(f, out);
+        cur->next = total;
+        return;
+    }
+
+    /* A fresh stamp: 0 marks "in no batch" (every new vertex's), so on wrapping past 65535 the
+     * old stamps are cleared first — after 65535 batches of one frame, i.e. never in practice. */
+    stamp = (uint16_t)(f->batch_stamp + 1u);
+    if (stamp == 0u) {
+        for (uint32_t v = 0; v < f->vert_count; v++) {
+            f->vert[v].batch_stamp = 0;
+        }
+        stamp = 1;
+    }
+    f->batch_stamp = stamp;
+
+    /* Primitives [first, end) in draw order (render_draw_index) at most; the batch closes early
+     * when fewer than three vertex slots are left (nv > vtx_room). */
+    end = (total - first > tri_cap) ? first + tri_cap : total;
+    vtx_room = vtx_cap - 3u;
+    while (i < end && nv <= vtx_room) {
+        const struct render_prim *p = &prim[render_draw_index(f, i)];
+        /* Both words in locals first: the vertex stamps written below are uint16_t like the
+         * indices, so the compiler would otherwise reload the primitive after every store. */
+        const uint32_t w0 = p->w[0];
+        const uint32_t w1 = p->w[1];
+        const uint32_t s0 = batch_vertex(&vert[w0 & 0xFFFFu], stamp, vtx, &nv);
+        const uint32_t s1 = batch_vertex(&vert[w0 >> 16], stamp, vtx, &nv);
+        const uint32_t s2 = batch_vertex(&vert[w1 & 0xFFFFu], stamp, vtx, &nv);
+        uint32_t *pw = &prim_words[(i - first) * GPU_PRIM_WORDS];
+
+        pw[0] = s0 | (s1 << 16);
+        pw[1] = s2 | (w1 & 0xFFFF0000u);
+        i++;
+    }
+    out->vtx_count = nv;
+    out->prim_count = i - first;
+    cur->next = i;
+}

@@ -1,0 +1,56 @@
+/*
+ * batch.h — cutting a frame's draw list into GPU batches. Pure code.
+ *
+ * The GPU holds VTX_CAP vertices and TRI_CAP primitives per batch (1024 and 512 today); a frame
+ * can have many more. batch_fill takes primitives in draw order until either buffer would
+ * overflow and writes them, packed in the contract's word formats, where the caller's batch_words
+ * points: staging arrays the driver then copies into the GPU, or, on a platform that maps the
+ * GPU's buffers, those buffers themselves (no copy). The next call continues where this one
+ * stopped.
+ *
+ * Vertices are renumbered per batch: each primitive's vertices are looked up by a per-vertex stamp
+ * (the batch that last wrote it; a counter kept in the render_frame, so stamps stay unique however
+ * many times the same frame is cut into batches) and written once per batch, so shared vertices
+ * stay shared inside a batch and a batch never names a vertex it does not carry. A batch is closed
+ * while it still has room for three more vertices, so every primitive fits whole.
+ *
+ * A frame whose vertices and primitives all fit one batch skips the renumbering: its vertices are
+ * copied in order and the primitives keep the frame's vertex numbers.
+ */
+#ifndef BATCH_H
+#define BATCH_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "gpu/gpu.h"
+#include "render/render.h"
+
+/* Where batch_fill writes: room for GPU_VTX_CAP vertices and GPU_TRI_CAP primitives each, either
+ * staging arrays the driver copies from or the GPU's own buffers (gpu_buffer_words). */
+struct batch_words {
+    uint32_t *vtx;
+    uint32_t *prim;
+    uint32_t vtx_count;
+    uint32_t prim_count;
+};
+
+struct batch_cursor {
+    uint32_t next;    /* position in the frame's draw order */
+};
+
+void batch_begin(struct batch_cursor *cur);
+
+/* Fill one batch from the frame's draw list (render_draw_index order). vtx_cap/tri_cap are the
+ * GPU's reported capacities, clamped to the header's (the size of batch_words) and to a minimum of
+ * 3 vertices and 1 primitive. Writes the frame's per-vertex stamps. */
+void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_cap,
+                uint32_t tri_cap, struct batch_words *out);
+
+/* True when every primitive of the frame has been put in a batch. */
+static inline bool batch_done(const struct batch_cursor *cur, const struct render_frame *f)
+{
+    return cur->next >= f->prim_count;
+}
+
+#endif /* BATCH_H */

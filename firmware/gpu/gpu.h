@@ -1,0 +1,141 @@
+/*
+ * gpu.h — driver for the memory-mapped GPU of contract/gpu-contract.md.
+ *
+ * Two layers:
+ *   - a pure core (static inline, below): packs vertex and primitive words exactly as the
+ *     contract's field macros in gpu_regs.h say. No hardware access; render code and host tests
+ *     use it.
+ *   - a thin edge (gpu.c): every access to the device goes through the platform's accessors
+ *     bsp_gpu_write(offset, value) / bsp_gpu_read(offset) / bsp_gpu_write_words() (bsp.h).
+ *
+ * The driver keeps its state in a gpu_dev the caller owns; there are no globals.
+ */
+#ifndef GPU_H
+#define GPU_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "gpu_regs.h"
+
+/* ---- pure core: buffer word formats -------------------------------------------------------- */
+
+/* Vertex: x, y signed Q12.4 screen coordinates (1/16 px), z unsigned depth (0 = near);
+ * primitive: three vertex indices relative to VTX_BASE, a palette colour, a GPU_PRIM_KIND_*.
+ * batch.c writes both as the words of proj_vertex and render_prim (their layout is the
+ * contract's on every platform of this firmware; batch.c stops the build where it is not). */
+
+/* RGB444 palette word from 4-bit channels. */
+#define GPU_RGB444(r, g, b) ((((uint32_t)(r) & 0xFu) << 8) | (((uint32_t)(g) & 0xFu) << 4) | \
+                             ((uint32_t)(b) & 0xFu))
+
+/* ---- edge: the device ---------------------------------------------------------------------- */
+
+/* Driver results. 0 is success; every failure is negative. */
+enum gpu_result {
+    GPU_OK = 0,
+    GPU_E_NOT_FOUND = -1,  /* ID register is not GPU_ID_VALUE */
+    GPU_E_VERSION = -2,    /* contract major version differs, or minor is older than ours */
+    GPU_E_GEOMETRY = -3,   /* FB_SIZE is not GPU_FB_WIDTH x GPU_FB_HEIGHT */
+    GPU_E_CAPACITY = -4,   /* the batch does not fit VTX_CAP / TRI_CAP */
+    GPU_E_PENDING = -5,    /* a batch was submitted and not yet waited for */
+    GPU_E_TIMEOUT = -6,    /* DONE_SEQ did not reach the tag within max_polls reads */
+    GPU_E_ARG = -7,        /* bad argument (e.g. palette larger than the palette window) */
+    GPU_E_BUFFERS = -8,    /* VTX_CAP / TRI_CAP beyond their bus windows, or below one triangle */
+};
+
+/* The most vertices and primitives the contract's bus windows can hold: a device reporting more
+ * is not the contract's, and trusting it would send buffer words past their window. */
+#define GPU_VTX_CAP_MAX (GPU_WIN_VTX_BYTES / (4u * GPU_VTX_WORDS))
+#define GPU_TRI_CAP_MAX (GPU_WIN_IDX_BYTES / (4u * GPU_PRIM_WORDS))
+
+/* Capability fields of CAPS. */
+static inline bool gpu_caps_lines(uint32_t caps)
+{
+    return (caps & GPU_CAPS_LINES_MASK) != 0u;
+}
+
+static inline bool gpu_caps_zbuf(uint32_t caps)
+{
+    return (caps & GPU_CAPS_ZBUF_MASK) != 0u;
+}
+
+/* What the device reports about itself (read by gpu_init). */
+struct gpu_info {
+    uint32_t id;
+    uint32_t version;
+    uint32_t caps;
+    uint32_t vtx_cap;
+    uint32_t tri_cap;
+    uint32_t fb_size;
+};
+
+struct gpu_dev {
+    struct gpu_info info;
+    uint32_t next_tag;  /* tag of the next doorbell: never 0, +1 per batch (skipping 0) */
+    bool pending;       /* a batch is in flight: submitted, not yet seen done */
+    uint32_t last_done_seq;  /* DONE_SEQ at the last gpu_wait return (for error messages) */
+    uint32_t resets;    /* gpu_reset calls since gpu_init */
+};
+
+/* One batch (contract/gpu-contract.md, "A batch, and the frame handshake"). The driver copies
+ * vtx_count vertices to the vertex buffer starting at vtx_base and prim_count primitives to the
+ * index buffer starting at tri_base, then programs the batch registers with the same values. */
+struct gpu_batch {
+    const uint32_t *vtx_words;   /* vtx_count * GPU_VTX_WORDS words */
+    uint32_t vtx_base;
+    uint32_t vtx_count;
+    const uint32_t *prim_words;  /* prim_count * GPU_PRIM_WORDS words */
+    uint32_t tri_base;
+    uint32_t prim_count;
+    uint32_t ctrl;               /* GPU_CTRL_*_MASK bits */
+    uint8_t clear_color;         /* palette index used when ctrl has GPU_CTRL_CLEAR_MASK */
+};
+
+/* Counters and flags of the last finished batch. */
+struct gpu_stats {
+    uint32_t errors;        /* GPU_ERR_*_MASK bits */
+    uint32_t busy_cycles;
+    uint32_t tris_in;
+    uint32_t tris_drawn;
+    uint32_t tris_rejected;
+    uint32_t pixels;
+    uint32_t samples;
+    uint32_t spans_written;
+};
+
+/* Read ID/VERSION/CAPS/capacities into dev->info (always, so a caller can report them), then
+ * check them: GPU_E_NOT_FOUND, GPU_E_VERSION or GPU_E_GEOMETRY on a mismatch, GPU_E_BUFFERS when
+ * VTX_CAP is not in 3 .. GPU_VTX_CAP_MAX or TRI_CAP not in 1 .. GPU_TRI_CAP_MAX. On success load
+ * palette[0 .. n-1] (RGB444 words) into the palette window and pick a first tag that differs from
+ * the current DOORBELL and DONE_SEQ values. */
+int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n);
+
+/* Copy the batch's buffers, program the batch registers, fence, ring DOORBELL with a fresh
+ * non-zero tag. The tag is returned in *tag for gpu_wait. Fails without touching the device when
+ * a batch is still pending or the batch does not fit the capacities the device reported.
+ * Words already in place (vtx_words / prim_words pointing where gpu_buffer_words says the buffer
+ * at that base is) are not copied. */
+int gpu_submit_batch(struct gpu_dev *dev, const struct gpu_batch *batch, uint32_t *tag);
+
+/* The GPU's vertex buffer (GPU_WIN_VTX) or index buffer (GPU_WIN_IDX) as CPU memory to build
+ * batches in place, when the platform maps the window (bsp_gpu_buffer); NULL otherwise. Write it
+ * only while no batch is pending. */
+uint32_t *gpu_buffer_words(uint32_t window_offset);
+
+/* Poll DONE_SEQ until it equals tag, at most max_polls reads. GPU_OK or GPU_E_TIMEOUT (the last
+ * value read is left in dev->last_done_seq). */
+int gpu_wait(struct gpu_dev *dev, uint32_t tag, uint32_t max_polls);
+
+/* Read ERRORS and the PERF_* counters of the last finished batch. */
+void gpu_read_stats(const struct gpu_dev *dev, struct gpu_stats *stats);
+
+/* The watchdog's way out (contract: "A batch, and the frame handshake"): write a new value to
+ * RESET, which abandons the running batch and returns the GPU to idle, and forget the pending
+ * batch so the next submit proceeds. DONE_SEQ keeps its old value; tags continue. */
+void gpu_reset(struct gpu_dev *dev);
+
+/* Short English text for a gpu_result. */
+const char *gpu_strerror(int result);
+
+#endif /* GPU_H */

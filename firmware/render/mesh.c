@@ -1,0 +1,167 @@
+/*
+ * mesh.c — see mesh.h.
+ */
+#include "render/mesh.h"
+
+void mesh_init(struct mesh *m, vec3 *verts, uint32_t vert_cap, struct mesh_face *faces,
+               uint32_t face_cap, uvec3 *normals, uint32_t normal_cap)
+{
+    m->verts = verts;
+    m->faces = faces;
+    m->normals = normals;
+    /* Face vertex and normal indices are uint16. */
+    m->vert_cap = (vert_cap > 65536u) ? 65536u : vert_cap;
+    m->face_cap = face_cap;
+    m->normal_cap = (normal_cap > 65536u) ? 65536u : normal_cap;
+    mesh_clear(m);
+}
+
+void mesh_clear(struct mesh *m)
+{
+    m->vert_count = 0;
+    m->face_count = 0;
+    m->normal_count = 0;
+    m->center = vec3_make(0, 0, 0);
+    m->radius = 0;
+    m->full = false;
+    m->box = false;
+}
+
+uint16_t mesh_add_vertex(struct mesh *m, vec3 p)
+{
+    if (m->vert_count >= m->vert_cap) {
+        m->full = true;
+        return 0;
+    }
+    m->verts[m->vert_count] = p;
+    return (uint16_t)m->vert_count++;
+}
+
+uint16_t mesh_add_normal(struct mesh *m, uvec3 n)
+{
+    if (m->normal_count >= m->normal_cap) {
+        m->full = true;
+        return 0;
+    }
+    m->normals[m->normal_count] = n;
+    return (uint16_t)m->normal_count++;
+}
+
+void mesh_add_face_normal(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint16_t normal,
+                          uint8_t material)
+{
+    struct mesh_face *f;
+
+    if (m->face_count >= m->face_cap) {
+        m->full = true;
+        return;
+    }
+    f = &m->faces[m->face_count++];
+    f->v[0] = a;
+    f->v[1] = b;
+    f->v[2] = c;
+    f->normal = normal;
+    f->material = material;
+    f->flags = 0;
+}
+
+void mesh_add_face(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint8_t material)
+{
+    const uvec3 n = vec3_triangle_normal(m->verts[a], m->verts[b], m->verts[c]);
+
+    mesh_add_face_normal(m, a, b, c, mesh_add_normal(m, n), material);
+}
+
+void mesh_add_quad(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint16_t d,
+                   uint16_t normal, uint8_t material)
+{
+    mesh_add_face_normal(m, a, b, c, normal, material);
+    mesh_add_face_normal(m, c, d, a, normal, material);
+    if (!m->full) {
+        m->faces[m->face_count - 2u].flags = MESH_FACE_QUAD;
+        m->faces[m->face_count - 1u].flags = MESH_FACE_QUAD;
+    }
+}
+
+void mesh_finish(struct mesh *m)
+{
+    vec3 lo;
+    vec3 hi;
+    real_t r = 0;
+
+    m->box = false;
+    if (m->vert_count == 0u) {
+        m->center = vec3_make(0, 0, 0);
+        m->radius = 0;
+        return;
+    }
+    lo = m->verts[0];
+    hi = m->verts[0];
+    for (uint32_t i = 1; i < m->vert_count; i++) {
+        const vec3 p = m->verts[i];
+
+        lo.x = (p.x < lo.x) ? p.x : lo.x;
+        lo.y = (p.y < lo.y) ? p.y : lo.y;
+        lo.z = (p.z < lo.z) ? p.z : lo.z;
+        hi.x = (p.x > hi.x) ? p.x : hi.x;
+        hi.y = (p.y > hi.y) ? p.y : hi.y;
+        hi.z = (p.z > hi.z) ? p.z : hi.z;
+    }
+    m->center = vec3_make(real_half(real_add(lo.x, hi.x)), real_half(real_add(lo.y, hi.y)),
+                          real_half(real_add(lo.z, hi.z)));
+    for (uint32_t i = 0; i < m->vert_count; i++) {
+        const real_t d = vec3_length(vec3_sub(m->verts[i], m->center));
+
+        r = (d > r) ? d : r;
+    }
+    /* One unit of the last place up: rounding of the length must not shrink the sphere. */
+    m->radius = real_add(r, REAL_C(1.0 / 256.0));
+
+    m->box = (m->vert_count == 8u);
+    for (uint32_t i = 0; i < m->vert_count && m->box; i++) {
+        const vec3 p = m->verts[i];
+
+        m->box = p.x == ((i & 1u) ? hi.x : lo.x) && p.y == ((i & 2u) ? hi.y : lo.y) &&
+                 p.z == ((i & 4u) ? hi.z : lo.z);
+    }
+    m->box_lo = lo;
+    m->box_hi = hi;
+}
+
+/*
+ * The six face directions: the outward normal's axis and sign, and the two tangent axes u, v with
+ * u x v = normal, so the quad o, o+u, o+u+v, o+v is wound outwards (mesh.h). o is the face's
+ * corner with the smallest coordinates.
+ */
+const struct mesh_cube_face mesh_cube_faces[6] = {
+    {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},    /* +x: y x z = x */
+    {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},   /* -x: z x y = -x */
+    {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}},    /* +y: z x x = y */
+    {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},   /* -y: x x z = -y */
+    {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},    /* +z: x x y = z */
+    {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}},   /* -z: y x x = -z */
+};
+
+void mesh_cube_face_corners(uint32_t dir, int32_t corner[4][3])
+{
+    const int8_t *n = mesh_cube_faces[dir].n;
+    const int8_t *u = mesh_cube_faces[dir].u;
+    const int8_t *v = mesh_cube_faces[dir].v;
+
+    for (int a = 0; a < 3; a++) {
+        const int32_t o = (n[a] > 0) ? 1 : 0;
+
+        corner[0][a] = o;
+        corner[1][a] = o + u[a];
+        corner[2][a] = o + u[a] + v[a];
+        corner[3][a] = o + v[a];
+    }
+}
+
+uvec3 mesh_cube_face_normal(uint32_t dir)
+{
+    const int8_t *n = mesh_cube_faces[dir].n;
+    uvec3 r = {UNIT_ONE * n[0], UNIT_ONE * n[1], UNIT_ONE * n[2]};
+
+    return r;
+}

@@ -1,0 +1,96 @@
+/*
+ * mesh.h — indexed triangle meshes and a builder for the scenes. Pure code.
+ *
+ * Winding: a face (a, b, c) faces the direction of (b - a) x (c - a) (vec.h), which must point out
+ * of the solid. Projected, a front face then has a positive signed area E_v0v1(v2) in the GPU
+ * contract's sense (y down), which is what the back-face test keeps.
+ *
+ * Each face names a normal in the mesh's normal table (unit vectors, model space), so meshes with
+ * few distinct normals (voxel chunks: six) share them. The builder computes a face's normal from
+ * its winding unless given one.
+ *
+ * Ranges: model coordinates within +-8192 (vec.h's transform), and the bounding sphere plus the
+ * object's position within the +-1024 world box (real.h).
+ *
+ * Storage is the caller's: a mesh points into arrays it was given, so the render path allocates
+ * nothing.
+ */
+#ifndef MESH_H
+#define MESH_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "math/vec.h"
+
+struct mesh_face {
+    uint16_t v[3];     /* vertex indices */
+    uint16_t normal;   /* index into the normal table */
+    uint8_t material;  /* palette material (palette.h) */
+    uint8_t flags;     /* MESH_FACE_* */
+};
+
+/* The face is half of a planar quad whose diagonal is v[0]-v[2] (mesh_add_quad): both halves take
+ * the quad's centre (the diagonal's midpoint) as their depth, so the painter keeps them together
+ * instead of letting a neighbouring face slip between them (saw-tooth seams on voxel terrain). */
+#define MESH_FACE_QUAD 0x01u
+
+struct mesh {
+    vec3 *verts;
+    struct mesh_face *faces;
+    uvec3 *normals;
+    uint32_t vert_count;
+    uint32_t face_count;
+    uint32_t normal_count;
+    uint32_t vert_cap;
+    uint32_t face_cap;
+    uint32_t normal_cap;
+    vec3 center;    /* bounding sphere, model space (mesh_finish) */
+    real_t radius;
+    /* mesh_finish: the vertices are exactly the corners of the box [box_lo, box_hi], vertex i at
+     * hi on axis k when bit k of i is set (x: 1, y: 2, z: 4): render.c then transforms them with
+     * xf_apply_box. */
+    bool box;
+    vec3 box_lo;
+    vec3 box_hi;
+    bool full;      /* an add did not fit its array: the mesh is incomplete */
+};
+
+/* Point the mesh at caller-owned arrays and empty it. */
+void mesh_init(struct mesh *m, vec3 *verts, uint32_t vert_cap, struct mesh_face *faces,
+               uint32_t face_cap, uvec3 *normals, uint32_t normal_cap);
+void mesh_clear(struct mesh *m);
+
+/* Append; each returns the new index (or 0 and sets m->full when the array is full). */
+uint16_t mesh_add_vertex(struct mesh *m, vec3 p);
+uint16_t mesh_add_normal(struct mesh *m, uvec3 n);
+/* A face with its normal computed from the winding. */
+void mesh_add_face(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint8_t material);
+/* A face with a given normal index. */
+void mesh_add_face_normal(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint16_t normal,
+                          uint8_t material);
+/* Quad a-b-c-d (in winding order, planar) as the faces (a, b, c) and (c, d, a), one normal, both
+ * flagged MESH_FACE_QUAD with the diagonal a-c as their v[0]-v[2]. */
+void mesh_add_quad(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint16_t d,
+                   uint16_t normal, uint8_t material);
+
+/* Bounding sphere: centre of the vertices' box, radius to the farthest vertex; and whether the
+ * vertices are that box's eight corners in the order mesh.box names. */
+void mesh_finish(struct mesh *m);
+
+/* The six faces of the unit cube [0, 1]^3, dir 0 = +x, 1 = -x, 2 = +y, 3 = -y, 4 = +z, 5 = -z:
+ * the outward normal n and tangent axes u, v with u x v = n (the voxel world's block faces, the
+ * cubes scene's cube). */
+struct mesh_cube_face {
+    int8_t n[3];
+    int8_t u[3];
+    int8_t v[3];
+};
+extern const struct mesh_cube_face mesh_cube_faces[6];
+
+/* Corners of face `dir` in outward winding order: the quad corner[0..3] (mesh_add_quad). */
+void mesh_cube_face_corners(uint32_t dir, int32_t corner[4][3]);
+/* Outward unit normal of face `dir`. */
+uvec3 mesh_cube_face_normal(uint32_t dir);
+
+#endif /* MESH_H */

@@ -1,0 +1,283 @@
+/*
+ * proj.h — perspective projection of view-space points to the GPU's Q12.4 screen coordinates,
+ * with the outcodes that drive culling and clipping. Pure code.
+ *
+ * Screen mapping: sx = cx + f x / z, sy = cy - f y / z (Q12.4: 1/16 px; y down), f = focal length.
+ *
+ * Guard band: the GPU takes any Q12.4 coordinate (+-2048 px) and clips to the 320 x 240 screen
+ * itself, so the firmware only clips where a vertex would leave the band |f x / z| <= 1536 px,
+ * |f y / z| <= 1536 px (sx in -1376 .. 1696 px, sy in -1416 .. 1656 px: 350 px of margin inside
+ * the Q12.4 range for the rounding of clipped vertices). Such a vertex gets PROJ_OUT_GUARD and its
+ * triangles go through clip.c against the band's four planes |x| = g z, |y| = g z, g = 1536 / f.
+ * Keeping |sx|, |sy| <= 27136 also keeps the edge-function differences under 2^16.
+ *
+ * Near plane: z >= PROJ_NEAR (0.25 view units). A nearer vertex is not projected at all
+ * (PROJ_OUT_NEAR); its triangles are cut by clip.c (Sutherland-Hodgman), so nothing behind the eye
+ * is drawn and nothing crossing the plane vanishes. A vertex exactly on the plane is in front.
+ *
+ * Outcodes: LEFT/RIGHT/TOP/BOTTOM mean the vertex lies beyond the screen's outermost pixel centres
+ * (sx < 8, sx > 16*319 + 8, ...), exactly the GPU's bounding-box rejection; FAR means z > far.
+ * A triangle whose three vertices share one of those bits (or all have NEAR) covers no pixel
+ * centre: frustum-culled per triangle.
+ *
+ * Fixed-point projection (the per-vertex cost that matters): no division.
+ *   z (q16_16, >= 2^14 raw) is normalised, m = z << s with s in [1, 17];
+ *   Y = fx_recip_mantissa(m) ~ 2^63 / m, so 1/z = Y 2^(s - 47);
+ *   Q = mulhu(Y, f_q4 << 19) = Y f_q4 / 2^13 < 2^31 (f_q4 < 4096), so f_q4 / z = Q 2^(s - 34);
+ *   offset = x f_q4 / z = (x << 3) Q 2^(s - 53) = mulh(x << 3, Q) >> (21 - s), rounded.
+ *   Needs |x|, |y| < 4096 view units (x << 3 fits int32; real.h's range rule). The shift is 4..20;
+ *   the floor in mulh costs at most 2^-4 of a Q12.4 unit, Y and Q carry 2^-20.9 relative error
+ *   (one Newton step, fixed.h), at most 24576 * 2^-20.9 = 0.013 units of the largest offset:
+ *   the offset is within 0.5 + 2^-4 + 0.013 < 0.58 Q12.4 units (1/16 px) of f x / z, i.e. of the
+ *   exact projection of the given view point (tests/firmware checks it against double arithmetic).
+ * Float: one division and four multiplies, rounded to nearest.
+ *
+ * Depths produced per vertex:
+ *   depth  the painter's sort depth: z in 1/128 units, capped at PROJ_DEPTH_MAX = 21845 so that the
+ *          sum of a triangle's three depths, its sort key, fits 16 bits. Resolution 1/128 unit;
+ *          the cap is z = 170.7, beyond the far distance.
+ *   zbuf   the GPU's VTX_Z for the optional depth buffer: 65535 (1 - near / z), 0 at the near
+ *          plane, growing towards 65535 far away; linear in 1/z, so the GPU's screen-space
+ *          interpolation of it is exact. Only computed when ps->zbuf (the depth test is on), and
+ *          not at all in a build without the depth test (FW_WITH_DEPTH = 0).
+ */
+#ifndef PROJ_H
+#define PROJ_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "app/fw_config.h"
+#include "gpu_regs.h"
+#include "math/vec.h"
+
+#define PROJ_NEAR_Q16    16384            /* 0.25 view units: the fixed path relies on 2^14 */
+#define PROJ_NEAR        REAL_C(0.25)
+#define PROJ_GUARD_Q4    (1536 * 16)      /* guard band half-width, Q12.4 */
+#define PROJ_DEPTH_MAX   21845u           /* 3 * 21845 = 65535 */
+#define PROJ_DEPTH_SCALE 128              /* depth units per view unit */
+
+/* Sub-pixel precision of projected vertices (FW_SUBPIXEL_BITS, fw_config.h): the screen offsets
+ * are rounded once, to the nearest multiple of PROJ_SUBPIXEL_STEP Q12.4 units. At the default 4
+ * bits the step is 1 and every expression below folds back to the full-precision code. */
+#if FW_SUBPIXEL_BITS < 0 || FW_SUBPIXEL_BITS > 4
+#error "FW_SUBPIXEL_BITS must be 0..4 (Q12.4 screen coordinates carry 4 fraction bits)"
+#endif
+#define PROJ_SUBPIXEL_DROP (4 - FW_SUBPIXEL_BITS)
+#define PROJ_SUBPIXEL_STEP ((int32_t)1 << PROJ_SUBPIXEL_DROP)
+
+/* Pixel-centre limits of the screen in Q12.4 (contract: centres at 16 px + 8). */
+#define PROJ_X_FIRST 8
+#define PROJ_X_LAST  ((int32_t)(16u * (GPU_FB_WIDTH - 1u) + 8u))
+#define PROJ_Y_FIRST 8
+#define PROJ_Y_LAST  ((int32_t)(16u * (GPU_FB_HEIGHT - 1u) + 8u))
+
+enum proj_outcode {
+    PROJ_OUT_LEFT = 0x01,
+    PROJ_OUT_RIGHT = 0x02,
+    PROJ_OUT_TOP = 0x04,
+    PROJ_OUT_BOTTOM = 0x08,
+    PROJ_OUT_FAR = 0x10,
+    PROJ_OUT_NEAR = 0x20,   /* z < near: not projected */
+    PROJ_OUT_GUARD = 0x40,  /* beyond the guard band: sx/sy not usable */
+};
+#define PROJ_CULL_BITS (PROJ_OUT_LEFT | PROJ_OUT_RIGHT | PROJ_OUT_TOP | PROJ_OUT_BOTTOM | \
+                        PROJ_OUT_FAR | PROJ_OUT_NEAR)
+#define PROJ_CLIP_BITS (PROJ_OUT_NEAR | PROJ_OUT_GUARD)
+
+struct proj_setup {
+    int32_t focal_q4;   /* focal length, 1/16 px: 1024 .. 4095 */
+    int32_t cx_q4;      /* screen centre, Q12.4 */
+    int32_t cy_q4;
+    real_t near;        /* PROJ_NEAR */
+    real_t far;         /* beyond it: PROJ_OUT_FAR; 1 .. 160 view units */
+    real_t guard_slope; /* g = PROJ_GUARD_Q4 / focal_q4: the band is |x|, |y| <= g z */
+    uint32_t focal_hi;  /* fixed: focal_q4 << 19, the multiplier forming Q */
+    bool zbuf;          /* compute VTX_Z (only the GPU's depth test reads it; 0 otherwise) */
+    uvec3 edge_plane[4];  /* inward unit normals (view space) of the planes through the eye and
+                           * the screen's left, right, top and bottom edges */
+};
+
+/* One projected vertex: 16 bytes, so indexing is a shift. The batch fields belong to batch.c.
+ * sx and sy come first and in this order: on a little-endian CPU the pair, read as one 32-bit
+ * word, is already the GPU's first vertex word (batch.c uses that). */
+struct proj_vertex {
+    union {
+        struct {
+            int16_t sx;  /* Q12.4 */
+            int16_t sy;
+        };
+        uint32_t sxy;    /* the pair as one word (little-endian: the GPU's first vertex word) */
+    };
+    union {
+        struct {
+            uint16_t zbuf;   /* GPU VTX_Z */
+            uint16_t depth;  /* sort depth, <= PROJ_DEPTH_MAX */
+        };
+        uint32_t zd;         /* the pair as one word (little-endian), for one store */
+    };
+    uint16_t batch_stamp;  /* batch.c: the last batch this vertex was written to (0: none) */
+    uint16_t batch_slot;   /* batch.c: its index in that batch's vertex buffer */
+    uint8_t code;        /* enum proj_outcode bits */
+    uint8_t spare[3];
+};
+
+/* Position and depths of a vertex as two word stores (little-endian: the two halfword pairs;
+ * elsewhere field by field). sx, sy within int16; zbuf, depth within uint16. */
+static inline void proj_vertex_store(struct proj_vertex *out, int32_t sx, int32_t sy,
+                                     uint32_t zbuf, uint32_t depth)
+{
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    out->sxy = ((uint32_t)sx & 0xFFFFu) | ((uint32_t)sy << 16);
+    out->zd = zbuf | (depth << 16);
+#else
+    out->sx = (int16_t)sx;
+    out->sy = (int16_t)sy;
+    out->zbuf = (uint16_t)zbuf;
+    out->depth = (uint16_t)depth;
+#endif
+}
+
+/* A 320 x 240 screen centred on (160, 120) px with the given focal length (64 .. 255 px). */
+void proj_setup_init(struct proj_setup *ps, int32_t focal_px, real_t far);
+
+/* The projection proper; `inside` (a constant at every call, folded away) skips the near test,
+ * the guard band and the outcodes for points known to be inside the screen frustum, between near
+ * and far (render.c knows that from an object's bounding sphere). */
+static inline __attribute__((always_inline)) void proj_point_impl(const struct proj_setup *ps,
+                                                                  vec3 v, struct proj_vertex *out,
+                                                                  bool inside)
+{
+    int32_t off_x;
+    int32_t off_y;
+    uint32_t zbuf;
+    uint32_t depth;
+    int32_t sx;
+    int32_t sy;
+    uint8_t code = 0;
+
+    out->batch_stamp = 0;
+    if (!inside && v.z < ps->near) {
+        out->sx = 0;
+        out->sy = 0;
+        out->zbuf = 0;
+        out->depth = 0;
+        out->code = PROJ_OUT_NEAR;
+        return;
+    }
+#if REAL_IS_FIXED
+    {
+        int32_t s;
+        const uint32_t m = fx_normalize32((uint32_t)v.z, &s);  /* z >= 2^14: s in [1, 17] */
+        const uint32_t y = fx_recip_mantissa(m);
+        const int32_t q = (int32_t)fx_mulhu(y, ps->focal_hi);  /* < 2^31 */
+        const int32_t sh = 21 - s + PROJ_SUBPIXEL_DROP;        /* 4 .. 24 */
+        const int32_t half = (int32_t)1 << (sh - 1);
+        const int32_t zsh = 33 - s;                            /* 16 .. 32 */
+
+        off_x = ((fx_mulh(v.x * 8, q) + half) >> sh) * PROJ_SUBPIXEL_STEP;
+        off_y = ((fx_mulh(v.y * 8, q) + half) >> sh) * PROJ_SUBPIXEL_STEP;
+        /* near / z in 0.16 = Y 2^(s - 33) for near = 2^-2; <= 2^16 */
+        zbuf = 0u;
+        if (FW_WITH_DEPTH && ps->zbuf) {
+            zbuf = (zsh >= 32) ? 0u : (y >> zsh);
+            zbuf = (zbuf >= 65535u) ? 0u : 65535u - zbuf;
+        }
+        depth = (uint32_t)v.z >> 9;  /* q16_16 -> 1/128 units */
+    }
+#else
+    {
+        const float inv_z = 1.0f / v.z;
+        /* In units of PROJ_SUBPIXEL_STEP: focal_q4 = 16 focal_px, so the shift is exact, and a
+         * power-of-two scale of k scales fx and fy exactly. */
+        const float k = (float)(ps->focal_q4 >> PROJ_SUBPIXEL_DROP) * inv_z;
+        /* keeps the conversions below in range */
+        const float limit = 8.0f * PROJ_GUARD_Q4 / PROJ_SUBPIXEL_STEP;
+        float fx = v.x * k;
+        float fy = v.y * k;
+        const float nz = ps->near * inv_z;
+        const float fd = v.z * (float)PROJ_DEPTH_SCALE;
+
+        fx = (fx > limit) ? limit : ((fx < -limit) ? -limit : fx);
+        fy = (fy > limit) ? limit : ((fy < -limit) ? -limit : fy);
+        off_x = real_round_int(fx) * PROJ_SUBPIXEL_STEP;
+        off_y = real_round_int(fy) * PROJ_SUBPIXEL_STEP;
+        zbuf = (!FW_WITH_DEPTH || !ps->zbuf || nz >= 1.0f) ? 0u : (uint32_t)(65535.0f * (1.0f - nz));
+        depth = (fd >= (float)PROJ_DEPTH_MAX) ? PROJ_DEPTH_MAX : (uint32_t)fd;
+    }
+#endif
+    depth = (depth > PROJ_DEPTH_MAX) ? PROJ_DEPTH_MAX : depth;
+    if (inside) {
+        proj_vertex_store(out, ps->cx_q4 + off_x, ps->cy_q4 - off_y, zbuf, depth);
+        out->code = 0;
+        return;
+    }
+    if (off_x > PROJ_GUARD_Q4 || off_x < -PROJ_GUARD_Q4 || off_y > PROJ_GUARD_Q4 ||
+        off_y < -PROJ_GUARD_Q4) {
+        code |= PROJ_OUT_GUARD;
+        /* Keep the stored coordinates representable; a GUARD vertex is never drawn as is. */
+        off_x = (off_x > PROJ_GUARD_Q4) ? PROJ_GUARD_Q4 : off_x;
+        off_x = (off_x < -PROJ_GUARD_Q4) ? -PROJ_GUARD_Q4 : off_x;
+        off_y = (off_y > PROJ_GUARD_Q4) ? PROJ_GUARD_Q4 : off_y;
+        off_y = (off_y < -PROJ_GUARD_Q4) ? -PROJ_GUARD_Q4 : off_y;
+    }
+    sx = ps->cx_q4 + off_x;
+    sy = ps->cy_q4 - off_y;
+    /* Most vertices are on the screen: one unsigned range check per axis decides that. */
+    if ((uint32_t)(sx - PROJ_X_FIRST) > (uint32_t)(PROJ_X_LAST - PROJ_X_FIRST)) {
+        code |= (sx < PROJ_X_FIRST) ? PROJ_OUT_LEFT : PROJ_OUT_RIGHT;
+    }
+    if ((uint32_t)(sy - PROJ_Y_FIRST) > (uint32_t)(PROJ_Y_LAST - PROJ_Y_FIRST)) {
+        code |= (sy < PROJ_Y_FIRST) ? PROJ_OUT_TOP : PROJ_OUT_BOTTOM;
+    }
+    if (v.z > ps->far) {
+        code |= PROJ_OUT_FAR;
+    }
+    proj_vertex_store(out, sx, sy, zbuf, depth);
+    out->code = code;
+}
+
+/* Project one view-space point (|x|, |y| < 4096, any z) into *out, with its outcode. Always
+ * inlined: it is the body of the per-vertex loop. */
+static inline __attribute__((always_inline)) void proj_point(const struct proj_setup *ps, vec3 v,
+                                                             struct proj_vertex *out)
+{
+    proj_point_impl(ps, v, out, false);
+}
+
+/* The same for a point known to lie inside the screen frustum between near and far: no outcode
+ * work (code 0). A point within half a pixel of a screen edge may then miss the LEFT/RIGHT/TOP/
+ * BOTTOM bit proj_point would give it; the GPU finds no pixel centre there either. */
+static inline __attribute__((always_inline)) void proj_point_inside(const struct proj_setup *ps,
+                                                                    vec3 v,
+                                                                    struct proj_vertex *out)
+{
+    proj_point_impl(ps, v, out, true);
+}
+
+/*
+ * The contract's edge function E_v0v1(v2) = (x1 - x0)(y2 - y0) - (y1 - y0)(x2 - x0) on Q12.4
+ * coordinates: positive for a front face (mesh.h). Inside the guard band the differences are
+ * below 2^16 and the products below 2^32: int64.
+ */
+static inline int64_t proj_signed_area(const struct proj_vertex *a, const struct proj_vertex *b,
+                                       const struct proj_vertex *c)
+{
+    return (int64_t)(b->sx - a->sx) * (c->sy - a->sy) - (int64_t)(b->sy - a->sy) * (c->sx - a->sx);
+}
+
+/*
+ * The same edge function in 32 bits, for vertices of an object inside the screen frustum
+ * (proj_point_inside): they project onto the screen, sx in 0 .. 5120 and sy in 0 .. 3840 Q12.4 up
+ * to rounding, so each difference is below 2^13 in magnitude, each product below 2^26 and their
+ * difference below 2^27: exact in int32, the same value as proj_signed_area. Two `mul` instead of
+ * two 64-bit products and a 64-bit compare.
+ */
+static inline int32_t proj_signed_area_inside(const struct proj_vertex *a,
+                                              const struct proj_vertex *b,
+                                              const struct proj_vertex *c)
+{
+    return (b->sx - a->sx) * (c->sy - a->sy) - (b->sy - a->sy) * (c->sx - a->sx);
+}
+
+#endif /* PROJ_H */

@@ -1,0 +1,596 @@
+/*
+ * render.c — see render.h.
+ */
+#include "render/render.h"
+
+#include "render/clip.h"
+#include "gpu/gpu.h"
+#include "app/fw_config.h"
+#include "render/palette.h"
+
+/* The light in the rotated scene's frame, O^T l, and in an object's model space, R^T (O^T l):
+ * one place for both, so a cache filled ahead (render_level_cache_fill) matches render_object. */
+static uvec3 render_light_scene(const mat3 *scene_rot, uvec3 light)
+{
+    return mat3_apply_transposed_unit(scene_rot, light);
+}
+
+static uvec3 render_light_model(const mat3 *obj_rot, uvec3 light_scene)
+{
+    return mat3_apply_transposed_unit_fast(obj_rot, light_scene);
+}
+
+static uint8_t render_ambient(uint32_t ambient)
+{
+    return (uint8_t)((ambient > 15u) ? 15u : ambient);
+}
+
+void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,
+                      const struct cam_view *view, const mat3 *scene_rot, vec3 focus,
+                      uvec3 light, uint32_t ambient)
+{
+    pass->proj = *ps;
+    pass->focus_to_view.r = mat3_compose(&view->rot, scene_rot);
+    pass->focus_to_view.t = mat3_apply(&view->rot, vec3_sub(focus, view->eye));
+    pass->focus = focus;
+    pass->light_scene = render_light_scene(scene_rot, light);
+    pass->ambient = render_ambient(ambient);
+    pass->eye_material = 0;
+    pass->wireframe = false;
+    pass->gpu_lines = true;
+}
+
+void render_level_cache_init(struct render_level_cache *c, uint8_t *storage, uint32_t cap)
+{
+    c->level = storage;
+    c->cap = cap;
+    c->valid = false;
+    c->light.x = 0;
+    c->light.y = 0;
+    c->light.z = 0;
+    c->ambient = 0;
+}
+
+/* The cache's entries for this object's model-space light, or 0 when it has no usable cache.
+ * Exact: an entry is what palette_light_level returns for the same light and normal. */
+static uint8_t *render_level_cache_for(struct render_level_cache *c, const struct mesh *mesh,
+                                       uvec3 light_model, uint32_t ambient)
+{
+    if (c == 0 || c->cap < mesh->normal_count) {
+        return 0;
+    }
+    if (!c->valid || c->light.x != light_model.x || c->light.y != light_model.y ||
+        c->light.z != light_model.z || c->ambient != ambient) {
+        for (uint32_t i = 0; i < mesh->normal_count; i++) {
+            c->level[i] = (uint8_t)RENDER_LEVEL_UNKNOWN;
+        }
+        c->light = light_model;
+        c->ambient = ambient;
+        c->valid = true;
+    }
+    return c->level;
+}
+
+void render_level_cache_fill(const struct render_object *obj, const mat3 *scene_rot, uvec3 light,
+                             uint32_t ambient)
+{
+    const struct mesh *mesh = obj->mesh;
+    const uvec3 light_model = render_light_model(&obj->rot, render_light_scene(scene_rot, light));
+    const uint32_t amb = render_ambient(ambient);
+    struct palette_light pl;
+    uint8_t *level = render_level_cache_for(obj->levels, mesh, light_model, amb);
+
+    if (level == 0) {
+        return;
+    }
+    palette_light_init(&pl, light_model, amb);
+    for (uint32_t i = 0; i < mesh->normal_count; i++) {
+        level[i] = (uint8_t)palette_light_level(&pl, mesh->normals[i]);
+    }
+}
+
+void render_stats_clear(struct render_stats *s)
+{
+    s->faces_in = 0;
+    s->objects_in = 0;
+    s->objects_culled = 0;
+    s->faces_culled_object = 0;
+    s->faces_frustum = 0;
+    s->faces_back = 0;
+    s->faces_clipped = 0;
+    s->faces_clipped_away = 0;
+    s->faces_emitted = 0;
+    s->dropped = 0;
+}
+
+void render_frame_begin(struct render_frame *f)
+{
+    f->vert_count = 0;
+    f->prim_count = 0;
+    f->sorted_count = 0;
+    f->batch_stamp = 0;  /* every vertex made from now on starts with stamp 0 */
+}
+
+enum render_sphere_class render_sphere_classify(const struct proj_setup *ps, vec3 c,
+                                                real_t radius)
+{
+    /* The dot products below may be low by 3 units of 2^-16 (vec3_dot_unit_fast); a margin of
+     * 2^-8 on the radius keeps both answers conservative: never cull what touches the frustum,
+     * never call inside what reaches out of it. Plain sums: view coordinates are within +-4096
+     * and a mesh's radius below 14190 (model coordinates within +-8192, real.h), so every sum
+     * below stays under 2^15 units, inside q16_16. */
+    const real_t r = radius + REAL_C(1.0 / 256.0);
+    enum render_sphere_class cls = RENDER_SPHERE_INSIDE;
+
+    if (c.z + r < ps->near || c.z - r > ps->far) {
+        return RENDER_SPHERE_OUTSIDE;
+    }
+    if (c.z - r < ps->near || c.z + r > ps->far) {
+        cls = RENDER_SPHERE_CROSSING;
+    }
+    for (int i = 0; i < 4; i++) {
+        /* Signed distance to a plane through the eye: c . n, n the inward unit normal. */
+        const real_t d = vec3_dot_unit_fast(c, ps->edge_plane[i]);
+
+        if (d < -r) {
+            return RENDER_SPHERE_OUTSIDE;
+        }
+        if (d < r) {
+            cls = RENDER_SPHERE_CROSSING;
+        }
+    }
+    return cls;
+}
+
+/* ---- emission ----------------------------------------------------------------------------- */
+
+/* The sort item of primitive `index` with depth key `key` (larger = farther): draw key
+ * 65535 - key in the upper half, so ascending items run far to near. index < 2^14. */
+static inline uint32_t render_sort_item(uint32_t key, uint32_t index)
+{
+    return (~key << 16) | index;  /* ~key << 16 = (65535 - key) << 16 for key < 2^16 */
+}
+
+static void render_emit_prim(struct render_frame *f, uint32_t i0, uint32_t i1, uint32_t i2,
+                             uint8_t color, uint8_t kind, uint16_t key)
+{
+    struct render_prim *p;
+    const uint32_t n = f->prim_count;
+
+    if (n >= RENDER_MAX_PRIMS) {
+        f->stats.dropped++;
+        return;
+    }
+    p = &f->prim[n];
+    p->v[0] = (uint16_t)i0;
+    p->v[1] = (uint16_t)i1;
+    p->v[2] = (uint16_t)i2;
+    p->color = color;
+    p->kind = kind;
+    f->sort_item[n] = render_sort_item(key, n);
+    f->prim_count = n + 1u;
+}
+
+/* A vertex that is not the projection of a point: the corners of an emulated line, the
+ * crosshair. Returns its index, or -1 when the frame is full. */
+static int32_t render_add_screen_vertex(struct render_frame *f, int32_t sx, int32_t sy,
+                                        uint16_t zbuf)
+{
+    struct proj_vertex *v;
+
+    if (f->vert_count >= RENDER_MAX_VERTS) {
+        f->stats.dropped++;
+        return -1;
+    }
+    v = &f->vert[f->vert_count];
+    v->sx = (int16_t)sx;  /* callers stay within the guard band plus a pixel */
+    v->sy = (int16_t)sy;
+    v->zbuf = zbuf;
+    v->depth = 0;
+    v->code = 0;
+    v->batch_stamp = 0;
+    v->batch_slot = 0;
+    return (int32_t)f->vert_count++;
+}
+
+/*
+ * A line a -> b. With GPU lines: one LINE primitive. Without: a quad one pixel wide across the
+ * line's minor axis, centred on it (+-8 sixteenths), as two triangles. For an x-major line the quad
+ * spans exactly one pixel centre per column under the fill rule (its vertical extent is 16
+ * sixteenths, half-open by the top-left rule), which is what a Bresenham line plots.
+ */
+static void render_emit_line(struct render_frame *f, const struct render_pass *pass, uint32_t a,
+                             uint32_t b, uint8_t color, uint16_t key)
+{
+    int32_t ax;
+    int32_t ay;
+    int32_t bx;
+    int32_t by;
+    int32_t hx = 0;
+    int32_t hy = 0;
+    int32_t q[4];
+
+    if (pass->gpu_lines) {
+        render_emit_prim(f, a, b, b, color, (uint8_t)GPU_PRIM_KIND_LINE, key);
+        return;
+    }
+    ax = f->vert[a].sx;
+    ay = f->vert[a].sy;
+    bx = f->vert[b].sx;
+    by = f->vert[b].sy;
+    if (((bx > ax) ? bx - ax : ax - bx) >= ((by > ay) ? by - ay : ay - by)) {
+        hy = 8;
+    } else {
+        hx = 8;
+    }
+    q[0] = render_add_screen_vertex(f, ax - hx, ay - hy, f->vert[a].zbuf);
+    q[1] = render_add_screen_vertex(f, bx - hx, by - hy, f->vert[b].zbuf);
+    q[2] = render_add_screen_vertex(f, bx + hx, by + hy, f->vert[b].zbuf);
+    q[3] = render_add_screen_vertex(f, ax + hx, ay + hy, f->vert[a].zbuf);
+    if (q[0] < 0 || q[1] < 0 || q[2] < 0 || q[3] < 0) {
+        return;
+    }
+    /* The GPU draws either winding, so no orientation care is needed here. */
+    render_emit_prim(f, (uint32_t)q[0], (uint32_t)q[1], (uint32_t)q[2], color,
+                     (uint8_t)GPU_PRIM_KIND_TRI, key);
+    render_emit_prim(f, (uint32_t)q[0], (uint32_t)q[2], (uint32_t)q[3], color,
+                     (uint8_t)GPU_PRIM_KIND_TRI, key);
+}
+
+/* A convex polygon (front-facing, already projected): a fan of triangles, or its outline. */
+static void render_emit_polygon(struct render_frame *f, const struct render_pass *pass,
+                                const uint32_t *idx, uint32_t n, uint8_t color, uint16_t key)
+{
+    if (FW_WITH_WIREFRAME && pass->wireframe) {
+        for (uint32_t k = 0; k < n; k++) {
+            render_emit_line(f, pass, idx[k], idx[(k + 1u) % n], color, key);
+        }
+    } else {
+        for (uint32_t k = 1; k + 1u < n; k++) {
+            render_emit_prim(f, idx[0], idx[k], idx[k + 1u], color, (uint8_t)GPU_PRIM_KIND_TRI,
+                             key);
+        }
+    }
+}
+
+/* ---- lighting ----------------------------------------------------------------------------- */
+
+/* Palette index of a face: its material (or the object's, or the eye's ramp) at its light level. */
+static inline uint8_t render_face_color(const struct palette_light *light,
+                                        const struct mesh *mesh, const struct mesh_face *face,
+                                        uint32_t material_override)
+{
+    const uint32_t mat = (material_override != 0u) ? material_override : face->material;
+
+    return PAL_INDEX(mat, palette_light_level(light, mesh->normals[face->normal]));
+}
+
+/* Depth key of a face: the sum of its three sort depths (3x the mean), or for half a quad 3/2 of
+ * its diagonal's two (3x the quad's centre). Each depth <= 21845: both stay <= 65535. */
+static inline uint32_t render_face_key(const struct mesh_face *face, const struct proj_vertex *a,
+                                       const struct proj_vertex *b, const struct proj_vertex *c)
+{
+    if ((face->flags & MESH_FACE_QUAD) != 0u) {
+        return (((uint32_t)a->depth + c->depth) * 3u) >> 1;
+    }
+    return (uint32_t)a->depth + b->depth + c->depth;
+}
+
+/* The material every face of an object uses, or 0 for each face's own. */
+static uint32_t render_material_override(const struct render_pass *pass,
+                                         const struct render_object *obj)
+{
+    return (pass->eye_material != 0u) ? pass->eye_material : obj->material;
+}
+
+/* ---- the slow path: near plane or guard band crossed -------------------------------------- */
+
+static void render_clipped_face(struct render_frame *f, const struct render_pass *pass,
+                                const xf_affine *mv, const struct mesh *mesh,
+                                const struct mesh_face *face, const struct palette_light *light,
+                                uint32_t material_override)
+{
+    struct clip_polygon poly;
+    uint32_t idx[CLIP_MAX_VERTS];
+    const uint32_t first = f->vert_count;
+    uint32_t n;
+    uint32_t all_codes = PROJ_CULL_BITS;
+    uint32_t depth_sum = 0;
+    int64_t area = 0;
+
+    f->stats.faces_clipped++;
+    /* The same transform as the fast path, so shared vertices land on the same pixels. */
+    n = clip_triangle(&pass->proj, xf_apply(mv, mesh->verts[face->v[0]]),
+                      xf_apply(mv, mesh->verts[face->v[1]]),
+                      xf_apply(mv, mesh->verts[face->v[2]]), &poly);
+    if (n == 0u) {
+        f->stats.faces_clipped_away++;
+        return;
+    }
+    if (f->vert_count + n > RENDER_MAX_VERTS) {
+        f->stats.dropped++;
+        return;
+    }
+    for (uint32_t k = 0; k < n; k++) {
+        struct proj_vertex *v = &f->vert[f->vert_count];
+
+        proj_point(&pass->proj, poly.v[k], v);
+        /* Clipped to the band up to rounding, which its margin absorbs: not a GUARD vertex. */
+        v->code &= (uint8_t)~PROJ_OUT_GUARD;
+        all_codes &= v->code;
+        depth_sum += v->depth;
+        idx[k] = f->vert_count++;
+    }
+    /* Whole polygon's signed area (coplanar fan: every part has the same sign). */
+    for (uint32_t k = 1; k + 1u < n; k++) {
+        area += proj_signed_area(&f->vert[idx[0]], &f->vert[idx[k]], &f->vert[idx[k + 1u]]);
+    }
+    if ((all_codes & PROJ_CULL_BITS) != 0u || area <= 0) {
+        if ((all_codes & PROJ_CULL_BITS) != 0u) {
+            f->stats.faces_frustum++;
+        } else {
+            f->stats.faces_back++;
+        }
+        f->vert_count = first;  /* give the vertices back */
+        return;
+    }
+    /* Key: the polygon's mean depth, times three like the fast path's sum. n <= 9. */
+    depth_sum = depth_sum * 3u / n;
+    render_emit_polygon(f, pass, idx, n, render_face_color(light, mesh, face, material_override),
+                        (uint16_t)((depth_sum > 65535u) ? 65535u : depth_sum));
+    f->stats.faces_emitted++;
+}
+
+/* ---- per object --------------------------------------------------------------------------- */
+
+/* Every vertex of a mesh through the model-view transform and the projection. Kept out of line
+ * so the compiler gives the loop all the registers; one loop per case, so the inside one has no
+ * outcode work at all. */
+static void __attribute__((noinline))
+render_project_vertices(const struct proj_setup *ps, const xf_affine *mv, const vec3 *verts,
+                        uint32_t n, struct proj_vertex *out, bool inside)
+{
+    const xf_affine m = *mv;  /* a local copy: the stores to out cannot alias it */
+
+    if (inside) {
+        for (uint32_t i = 0; i < n; i++) {
+            proj_point_inside(ps, xf_apply(&m, verts[i]), &out[i]);
+        }
+    } else {
+        for (uint32_t i = 0; i < n; i++) {
+            proj_point(ps, xf_apply(&m, verts[i]), &out[i]);
+        }
+    }
+}
+
+/* The same for a box mesh (mesh.box): its eight corners through xf_apply_box, which gives the
+ * same view points as xf_apply (cubes: 184 instructions for the eight instead of about 256). */
+static void __attribute__((noinline))
+render_project_box(const struct proj_setup *ps, const xf_affine *mv, const struct mesh *mesh,
+                   struct proj_vertex *out, bool inside)
+{
+    vec3 p[8];
+
+    xf_apply_box(mv, mesh->box_lo, mesh->box_hi, p);
+    if (inside) {
+        for (uint32_t i = 0; i < 8u; i++) {
+            proj_point_inside(ps, p[i], &out[i]);
+        }
+    } else {
+        for (uint32_t i = 0; i < 8u; i++) {
+            proj_point(ps, p[i], &out[i]);
+        }
+    }
+}
+
+/* The face loop's rare cases, out of line: a face that crosses the near plane or the guard band
+ * (clip.c), and every face in wireframe mode. Emits through f->prim_count. */
+static void __attribute__((noinline))
+render_face_general(struct render_frame *f, const struct render_pass *pass, const xf_affine *mv,
+                    const struct mesh *mesh, const struct mesh_face *face, uint32_t base,
+                    const struct palette_light *light, uint32_t material_override)
+{
+    const struct proj_vertex *a = &f->vert[base + face->v[0]];
+    const struct proj_vertex *b = &f->vert[base + face->v[1]];
+    const struct proj_vertex *c = &f->vert[base + face->v[2]];
+
+    if (((a->code | b->code | c->code) & PROJ_CLIP_BITS) != 0u) {
+        render_clipped_face(f, pass, mv, mesh, face, light, material_override);
+    } else if (proj_signed_area(a, b, c) <= 0) {
+        f->stats.faces_back++;
+    } else {
+        const uint32_t idx[3] = {base + face->v[0], base + face->v[1], base + face->v[2]};
+
+        render_emit_polygon(f, pass, idx, 3u, render_face_color(light, mesh, face, material_override),
+                            (uint16_t)render_face_key(face, a, b, c));
+        f->stats.faces_emitted++;
+    }
+}
+
+/* What the face loop needs about one object. */
+struct render_faces_job {
+    const struct render_pass *pass;
+    const xf_affine *mv;
+    const struct mesh *mesh;
+    const struct palette_light *light;
+    uint8_t *levels;             /* 0, or the object's cached level per normal (filled lazily) */
+    uint32_t base;               /* index of the object's first vertex in the frame */
+    uint32_t material_override;
+};
+
+/*
+ * The face loop. `check` (a constant at every call, folded away) is false for an object whose
+ * bounding sphere is inside the frustum: no face can be culled by outcodes or need clipping, so
+ * the loop skips those tests. `cached` (likewise a constant) is true when job->levels holds the
+ * object's level cache: a face's light level is then looked up, computed only on a miss. Hot state stays in locals and is written back once; the fast path
+ * emits one triangle per front face, everything else goes through render_face_general.
+ */
+static inline __attribute__((always_inline)) void render_faces(struct render_frame *f,
+                                                               const struct render_faces_job *job,
+                                                               bool check, bool cached)
+{
+    const struct mesh *mesh = job->mesh;
+    const uint32_t nf = mesh->face_count;
+    const struct mesh_face *faces = mesh->faces;
+    const uvec3 *normals = mesh->normals;
+    uint8_t *const levels = job->levels;
+    const struct proj_vertex *vert = &f->vert[job->base];
+    const uint32_t base = job->base;
+    const uint32_t material_override = job->material_override;
+    const bool general = FW_WITH_WIREFRAME && job->pass->wireframe;
+    struct render_prim *prim = f->prim;
+    uint32_t *sort_item = f->sort_item;
+    const uint32_t np_start = f->prim_count;
+    uint32_t np = np_start;
+    uint32_t np_general = 0;  /* primitives the general path added (not one per face) */
+    uint32_t n_frustum = 0;
+    uint32_t n_back = 0;
+
+    for (uint32_t fi = 0; fi < nf; fi++) {
+        const struct mesh_face *face = &faces[fi];
+        const struct proj_vertex *a = &vert[face->v[0]];
+        const struct proj_vertex *b = &vert[face->v[1]];
+        const struct proj_vertex *c = &vert[face->v[2]];
+        uint32_t mat;
+        uint32_t level;
+        struct render_prim *p;
+
+        if (check && (a->code & b->code & c->code & PROJ_CULL_BITS) != 0u) {
+            n_frustum++;
+            continue;
+        }
+        if ((check && ((a->code | b->code | c->code) & PROJ_CLIP_BITS) != 0u) || general) {
+            f->prim_count = np;
+            render_face_general(f, job->pass, job->mv, mesh, face, base, job->light,
+                                material_override);
+            np_general += f->prim_count - np;
+            np = f->prim_count;
+            continue;
+        }
+        if (check ? (proj_signed_area(a, b, c) <= 0) : (proj_signed_area_inside(a, b, c) <= 0)) {
+            n_back++;
+            continue;
+        }
+        if (np >= RENDER_MAX_PRIMS) {
+            f->stats.dropped++;
+            continue;
+        }
+        p = &prim[np];
+        p->v[0] = (uint16_t)(base + face->v[0]);
+        p->v[1] = (uint16_t)(base + face->v[1]);
+        p->v[2] = (uint16_t)(base + face->v[2]);
+        mat = (material_override != 0u) ? material_override : face->material;
+        if (cached) {
+            level = levels[face->normal];
+            if (level == RENDER_LEVEL_UNKNOWN) {
+                level = palette_light_level(job->light, normals[face->normal]);
+                levels[face->normal] = (uint8_t)level;
+            }
+        } else {
+            level = palette_light_level(job->light, normals[face->normal]);
+        }
+        p->color = PAL_INDEX(mat, level);
+        p->kind = (uint8_t)GPU_PRIM_KIND_TRI;
+        sort_item[np] = render_sort_item(render_face_key(face, a, b, c), np);
+        np++;
+    }
+    f->prim_count = np;
+    f->stats.faces_frustum += n_frustum;
+    f->stats.faces_back += n_back;
+    f->stats.faces_emitted += (np - np_start) - np_general;  /* the fast path: one per face */
+}
+
+void render_object(struct render_frame *f, const struct render_pass *pass,
+                   const struct render_object *obj)
+{
+    const struct mesh *mesh = obj->mesh;
+    const uint32_t nv = mesh->vert_count;
+    const uint32_t nf = mesh->face_count;
+    struct palette_light light;
+    struct render_faces_job job;
+    enum render_sphere_class where;
+    uvec3 light_model;
+    xf_affine mv;
+
+    f->stats.faces_in += nf;
+    f->stats.objects_in++;
+
+    /* Model -> view: r = (V O) R, t = (V O)(pos - focus) + V (focus - eye). pos and focus are
+     * world points (within +-1024 per axis, real.h; scene_add_object enforces it for pos, and the
+     * focus is a scene's constant, the origin or the voxel world's centre), so pos - focus is
+     * exact and within xf_apply's |p| < 8192, and
+     * V (focus - eye) within its |t| < 4096: the object's offset gets the vertices' arithmetic. */
+    mv.r = mat3_compose(&pass->focus_to_view.r, &obj->rot);
+    mv.t = xf_apply(&pass->focus_to_view, vec3_make(obj->pos.x - pass->focus.x,
+                                                    obj->pos.y - pass->focus.y,
+                                                    obj->pos.z - pass->focus.z));
+    where = render_sphere_classify(&pass->proj, xf_apply(&mv, mesh->center), mesh->radius);
+    if (where == RENDER_SPHERE_OUTSIDE) {
+        f->stats.objects_culled++;
+        f->stats.faces_culled_object += nf;
+        return;
+    }
+    if (f->vert_count + nv > RENDER_MAX_VERTS) {
+        f->stats.dropped++;
+        return;
+    }
+    job.base = f->vert_count;
+    if (mesh->box) {
+        render_project_box(&pass->proj, &mv, mesh, &f->vert[job.base],
+                           where == RENDER_SPHERE_INSIDE);
+    } else {
+        render_project_vertices(&pass->proj, &mv, mesh->verts, nv, &f->vert[job.base],
+                                where == RENDER_SPHERE_INSIDE);
+    }
+    f->vert_count += nv;
+
+    /* The light in model space: (O R)^T l = R^T (O^T l). */
+    light_model = render_light_model(&obj->rot, pass->light_scene);
+    palette_light_init(&light, light_model, pass->ambient);
+    job.levels = render_level_cache_for(obj->levels, mesh, light_model, pass->ambient);
+    job.pass = pass;
+    job.mv = &mv;
+    job.mesh = mesh;
+    job.light = &light;
+    job.material_override = render_material_override(pass, obj);
+    /* Four specialisations of the face loop, so that neither test costs a face anything. */
+    if (where == RENDER_SPHERE_INSIDE) {
+        if (job.levels != 0) {
+            render_faces(f, &job, false, true);
+        } else {
+            render_faces(f, &job, false, false);
+        }
+    } else {
+        if (job.levels != 0) {
+            render_faces(f, &job, true, true);
+        } else {
+            render_faces(f, &job, true, false);
+        }
+    }
+}
+
+void render_sort(struct render_frame *f)
+{
+    sort_items(f->sort_item, f->sort_tmp, f->prim_count, &f->sort);
+    f->sorted_count = f->prim_count;
+}
+
+void render_overlay_crosshair(struct render_frame *f, const struct render_pass *pass,
+                              int32_t half_px, uint8_t color)
+{
+    const int32_t cx = pass->proj.cx_q4;
+    const int32_t cy = pass->proj.cy_q4;
+    const int32_t h = half_px * 16;
+    /* Line endpoints are the pixels holding the vertices, the last one not drawn: one pixel past
+     * the arm's end so the cross is symmetric about the centre pixel. */
+    const int32_t l = render_add_screen_vertex(f, cx - h, cy + 8, 0);
+    const int32_t r = render_add_screen_vertex(f, cx + h + 16, cy + 8, 0);
+    const int32_t t = render_add_screen_vertex(f, cx + 8, cy - h, 0);
+    const int32_t b = render_add_screen_vertex(f, cx + 8, cy + h + 16, 0);
+
+    if (l < 0 || r < 0 || t < 0 || b < 0) {
+        return;
+    }
+    render_emit_line(f, pass, (uint32_t)l, (uint32_t)r, color, 0);
+    render_emit_line(f, pass, (uint32_t)t, (uint32_t)b, color, 0);
+}

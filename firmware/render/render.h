@@ -1,0 +1,184 @@
+/*
+ * render.h — one frame's geometry: objects in, sorted screen-space primitives out. Pure code.
+ *
+ * Per object (render_object):
+ *   1. model -> view in one affine transform, composed once per object: the object's rotation and
+ *      position in the scene, the scene's rotation about its focus (object mode), the camera.
+ *   2. frustum culling of the whole object by its bounding sphere (near, far, four screen edges);
+ *      an object entirely inside skips every per-vertex and per-face frustum test below.
+ *   3. every vertex: xf_apply, proj_point -> Q12.4 position, depths, outcode.
+ *   4. every face: culled when its three outcodes share a bit (frustum, per triangle); sent to
+ *      clip.c when a vertex is in front of the near plane or beyond the guard band; else culled
+ *      when its signed area is <= 0 (back face or degenerate); else lit, keyed and emitted.
+ * Then render_sort orders the primitives far to near (sort.h), and overlay primitives (the
+ * crosshair) are appended unsorted, drawn last.
+ *
+ * Emission: a triangle, or in wireframe its three edges as lines — GPU line primitives when the
+ * GPU has them (CAPS_LINES), else each edge as a one-pixel-wide quad of two triangles, so the
+ * toggle degrades instead of failing.
+ *
+ * Colour: flat lighting per face (palette.h), the light taken into model space once per object.
+ * In anaglyph mode the face's material is replaced by the eye's red or cyan ramp.
+ *
+ * All state lives in the caller's render_frame; nothing is global.
+ */
+#ifndef RENDER_H
+#define RENDER_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "camera/camera.h"
+#include "render/mesh.h"
+#include "render/proj.h"
+#include "render/sort.h"
+#include "math/vec.h"
+
+#define RENDER_MAX_VERTS 16384u
+#define RENDER_MAX_PRIMS 16384u
+
+struct render_prim {
+    union {
+        struct {
+            uint16_t v[3];   /* indices into render_frame.vert; v[2] repeats v[1] for a line */
+            uint8_t color;   /* palette index */
+            uint8_t kind;    /* GPU_PRIM_KIND_TRI or GPU_PRIM_KIND_LINE */
+        };
+        /* The same 8 bytes as two words: on a little-endian CPU they are the contract's primitive
+         * words with frame vertex numbers in place of batch ones (batch.c uses that). */
+        uint32_t w[2];
+    };
+};
+
+struct render_stats {
+    uint32_t faces_in;            /* faces of every object offered: "triangles submitted" */
+    uint32_t objects_in;
+    uint32_t objects_culled;      /* bounding sphere outside the frustum */
+    uint32_t faces_culled_object; /* faces of those objects */
+    uint32_t faces_frustum;       /* one outcode bit shared by all three vertices */
+    uint32_t faces_back;          /* back-facing or zero area */
+    uint32_t faces_clipped;       /* went through clip.c */
+    uint32_t faces_clipped_away;  /* ... and nothing was left */
+    uint32_t faces_emitted;       /* faces that produced primitives */
+    uint32_t dropped;             /* primitives or vertices that found no room (capacity) */
+};
+
+struct render_frame {
+    struct proj_vertex vert[RENDER_MAX_VERTS];
+    struct render_prim prim[RENDER_MAX_PRIMS];
+    /* (draw key << 16) | primitive index, one per primitive, in emission order; after
+     * render_sort, the first sorted_count in draw order. Primitives emitted after the sort (the
+     * overlay) keep items naming themselves, so sort_item[i]'s index is the i-th primitive to
+     * draw for every i. The draw key is 65535 minus the depth key: ascending = far to near. */
+    uint32_t sort_item[RENDER_MAX_PRIMS];
+    uint32_t sort_tmp[RENDER_MAX_PRIMS];
+    struct sort_scratch sort;
+    uint32_t vert_count;
+    uint32_t prim_count;
+    uint32_t sorted_count;  /* primitives covered by render_sort; later ones are overlay */
+    uint16_t batch_stamp;   /* batch.c: stamp of the last batch filled from these vertices */
+    struct render_stats stats;
+};
+
+/* What stays the same for every object of one pass (a frame, or one eye of a stereo frame). */
+struct render_pass {
+    struct proj_setup proj;
+    /* Scene -> view for points given relative to the focus: r = V O (the camera's rotation times
+     * the scene's rotation about its focus), t = V (focus - eye). */
+    xf_affine focus_to_view;
+    vec3 focus;           /* the scene's focus (world) */
+    uvec3 light_scene;    /* unit vector towards the light, in the rotated scene's frame: O^T l */
+    uint8_t ambient;      /* light level of unlit faces, 0 .. 15 */
+    uint8_t eye_material; /* 0, or MAT_ANAGLYPH_LEFT / _RIGHT: every face uses that ramp */
+    bool wireframe;
+    bool gpu_lines;       /* the GPU draws line primitives (CAPS_LINES) */
+};
+
+/*
+ * Light levels of a static mesh's normals, kept across frames (owned by the scene, next to the
+ * mesh). A face's level depends only on its normal, the light in model space and the ambient level
+ * (palette.h), so while those are unchanged the level computed in an earlier frame is exactly the
+ * one this frame would compute. Filled lazily (only front faces ever need a level); emptied when
+ * the model-space light or the ambient level changes. The mesh's normals must not change while a
+ * cache is attached (the landscape's never do; meshes rebuilt at run time do not use one).
+ */
+#define RENDER_LEVEL_UNKNOWN 0xFFu  /* an entry not computed yet (levels are 0 .. 15) */
+
+struct render_level_cache {
+    uint8_t *level;       /* cap entries, one per normal: a level, or RENDER_LEVEL_UNKNOWN */
+    uint32_t cap;         /* used only if >= the mesh's normal_count */
+    bool valid;           /* light and ambient below are what the entries were computed for */
+    uvec3 light;          /* unit vector towards the light, model space */
+    uint32_t ambient;
+};
+
+/* Attach storage (cap entries) to an empty cache. */
+void render_level_cache_init(struct render_level_cache *c, uint8_t *storage, uint32_t cap);
+
+struct render_object;
+
+/* Fill an object's cache for every normal, as render_object would for this light (world space),
+ * scene rotation and ambient level: static lighting computed when a scene is built rather than
+ * in its first frame. Exact: the same levels the lazy fill computes. No-op without a cache. */
+void render_level_cache_fill(const struct render_object *obj, const mat3 *scene_rot, uvec3 light,
+                             uint32_t ambient);
+
+/* One instance of a mesh in the scene: p_scene = rot p_model + pos. */
+struct render_object {
+    const struct mesh *mesh;
+    mat3 rot;
+    vec3 pos;
+    uint8_t material;     /* 0: each face's own material; else this one for every face */
+    struct render_level_cache *levels;  /* 0, or the cache of a static mesh's light levels */
+};
+
+/* Compose a pass. light: unit vector towards the light in world space. */
+void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,
+                      const struct cam_view *view, const mat3 *scene_rot, vec3 focus,
+                      uvec3 light, uint32_t ambient);
+
+/* Empty the frame's vertices and primitives (statistics are kept: render_stats_clear). */
+void render_frame_begin(struct render_frame *f);
+void render_stats_clear(struct render_stats *s);
+
+/* Transform, cull, clip, light and emit one object. */
+void render_object(struct render_frame *f, const struct render_pass *pass,
+                   const struct render_object *obj);
+
+/* Where a sphere (view-space centre, radius) lies against near, far and the four planes through
+ * the eye and the screen edges. */
+enum render_sphere_class {
+    RENDER_SPHERE_OUTSIDE = 0,   /* entirely beyond one plane: cull the object */
+    RENDER_SPHERE_CROSSING = 1,  /* partly inside: test every vertex and face */
+    RENDER_SPHERE_INSIDE = 2,    /* entirely inside: no vertex needs an outcode or clipping */
+};
+enum render_sphere_class render_sphere_classify(const struct proj_setup *ps, vec3 center_view,
+                                                real_t radius);
+
+/* At least partly inside? */
+static inline bool render_sphere_visible(const struct proj_setup *ps, vec3 center_view,
+                                         real_t radius)
+{
+    return render_sphere_classify(ps, center_view, radius) != RENDER_SPHERE_OUTSIDE;
+}
+
+/* Order the primitives emitted so far from far to near. */
+void render_sort(struct render_frame *f);
+
+/* Append a crosshair at the screen centre (arms of half_px pixels), drawn after everything. */
+void render_overlay_crosshair(struct render_frame *f, const struct render_pass *pass,
+                              int32_t half_px, uint8_t color);
+
+/* Index of the i-th primitive to draw (sorted ones, then the overlay; see sort_item). */
+static inline uint32_t render_draw_index(const struct render_frame *f, uint32_t i)
+{
+    return f->sort_item[i] & 0xFFFFu;
+}
+
+/* The depth key of primitive i (larger = farther), as emitted. Before render_sort only. */
+static inline uint16_t render_depth_key(const struct render_frame *f, uint32_t i)
+{
+    return (uint16_t)(0xFFFFu - (f->sort_item[i] >> 16));
+}
+
+#endif /* RENDER_H */

@@ -1,0 +1,116 @@
+/*
+ * sort.c — see sort.h.
+ */
+#include "render/sort.h"
+
+/* Work counter for the unit tests, which build this file with SORT_COUNT_WORK (firmware.mk,
+ * FW_UNIT_CFLAGS): every item read or moved counts one, every histogram slot cleared or scanned
+ * one. The firmware's builds leave it out (SORT_WORK is then nothing). */
+#ifdef SORT_COUNT_WORK
+uint64_t sort_work;
+#define SORT_WORK(n) (sort_work += (uint64_t)(n))
+#else
+#define SORT_WORK(n) ((void)0)
+#endif
+
+/* Stable insertion sort by the key half, for short lists. */
+static void sort_insertion(uint32_t *item, uint32_t n)
+{
+    for (uint32_t i = 1; i < n; i++) {
+        const uint32_t x = item[i];
+        const uint32_t k = x >> 16;
+        uint32_t j = i;
+
+        while (j > 0u && (item[j - 1u] >> 16) > k) {
+            item[j] = item[j - 1u];
+            j--;
+            SORT_WORK(1);
+        }
+        item[j] = x;
+        SORT_WORK(1);
+    }
+}
+
+/* A pass can be skipped when one digit value holds every item. */
+static int sort_pass_needed(const uint32_t hist[256], uint32_t n)
+{
+    for (uint32_t d = 0; d < 256u; d++) {
+        SORT_WORK(1);
+        if (hist[d] != 0u) {
+            return hist[d] != n;
+        }
+    }
+    return 0;
+}
+
+/* One stable counting pass on the item byte at `shift` (16: key low byte, 24: key high byte).
+ * hist holds the digit counts; next receives each digit's write position (a pointer, so placing an
+ * item is one load, two stores and an increment). Always inlined with a constant shift, so the
+ * digit costs two instructions (shift, mask) and the loop nine per item. */
+static inline __attribute__((always_inline)) void sort_pass(const uint32_t *in, uint32_t *out,
+                                                            uint32_t n, const uint32_t hist[256],
+                                                            uint32_t *next[256], uint32_t shift)
+{
+    uint32_t *start = out;
+    const uint32_t *const in_end = in + n;
+
+    for (uint32_t d = 0; d < 256u; d += 4u) {  /* by four: a fixed cost of every sort */
+        next[d] = start;
+        start += hist[d];
+        next[d + 1u] = start;
+        start += hist[d + 1u];
+        next[d + 2u] = start;
+        start += hist[d + 2u];
+        next[d + 3u] = start;
+        start += hist[d + 3u];
+        SORT_WORK(4);
+    }
+    for (const uint32_t *p = in; p != in_end; p++) {
+        const uint32_t x = *p;
+
+        *next[(x >> shift) & 0xFFu]++ = x;
+        SORT_WORK(1);
+    }
+}
+
+void sort_items(uint32_t *item, uint32_t *tmp, uint32_t n, struct sort_scratch *scratch)
+{
+    uint32_t(*hist)[256] = scratch->hist;
+    uint32_t *src = item;
+    uint32_t *dst = tmp;
+
+    if (n < SORT_SMALL_N) {
+        sort_insertion(item, n);
+        return;
+    }
+    for (uint32_t d = 0; d < 256u; d += 2u) {
+        hist[0][d] = 0;
+        hist[0][d + 1u] = 0;
+        hist[1][d] = 0;
+        hist[1][d + 1u] = 0;
+        SORT_WORK(4);
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        const uint32_t x = item[i];
+
+        hist[0][(x >> 16) & 0xFFu]++;
+        hist[1][x >> 24]++;
+        SORT_WORK(1);
+    }
+    /* Low digit, then high digit; a skipped pass leaves the items where they are. */
+    if (sort_pass_needed(hist[0], n)) {
+        sort_pass(src, dst, n, hist[0], scratch->next, 16u);
+        src = tmp;
+        dst = item;
+    }
+    if (sort_pass_needed(hist[1], n)) {
+        sort_pass(src, dst, n, hist[1], scratch->next, 24u);
+        src = dst;
+    }
+    if (src != item) {
+        for (uint32_t i = 0; i < n; i++) {
+            item[i] = src[i];
+            SORT_WORK(1);
+        }
+    }
+}

@@ -1,0 +1,155 @@
+/*
+ * scene.c — the scene table (scene_list.h) and what all scenes share (see scene.h).
+ */
+#include "scenes/scene.h"
+
+#include "render/palette.h"
+
+static const struct scene_desc *const scene_table[SCENE_COUNT] = {
+#define SCENE(name) &scene_##name##_desc,
+#include "scenes/scene_list.h"
+#undef SCENE
+};
+
+_Static_assert(SCENE_COUNT >= 1 && SCENE_COUNT <= KEY_SCENE_LAST - KEY_SCENE_1 + 1,
+               "scene_list.h: 1 to 9 scenes (the keys 1..9 choose them)");
+
+static int scene_name_equal(const char *a, const char *b)
+{
+    while (*a != '\0' && *a == *b) {
+        a++;
+        b++;
+    }
+    return *a == *b;
+}
+
+const struct scene_desc *scene_find(const char *name)
+{
+    for (uint32_t i = 0; i < SCENE_COUNT; i++) {
+        if (scene_name_equal(scene_table[i]->name, name)) {
+            return scene_table[i];
+        }
+    }
+    return 0;
+}
+
+const struct scene_desc *scene_at(uint32_t index)
+{
+    return (index < SCENE_COUNT) ? scene_table[index] : 0;
+}
+
+void scene_camera_keys(struct camera *cam, const struct input_counts *keys)
+{
+    cam_move(cam, input_axis(keys, KEY_FORWARD, KEY_BACK), input_axis(keys, KEY_RIGHT, KEY_LEFT),
+             input_axis(keys, KEY_UP, KEY_DOWN), input_axis(keys, KEY_LOOK_RIGHT, KEY_LOOK_LEFT),
+             input_axis(keys, KEY_LOOK_UP, KEY_LOOK_DOWN),
+             input_axis(keys, KEY_ROLL_RIGHT, KEY_ROLL_LEFT), keys->n[KEY_MODE]);
+}
+
+struct cam_config scene_default_cam_config(void)
+{
+    struct cam_config cfg;
+
+    cfg.box_min = vec3_make(REAL_C(-64), REAL_C(-64), REAL_C(-64));
+    cfg.box_max = vec3_make(REAL_C(64), REAL_C(64), REAL_C(64));
+    cfg.dist_min = REAL_C(1.0);
+    cfg.dist_max = REAL_C(60.0);
+    cfg.move_step = REAL_C(0.25);
+    cfg.zoom_step = REAL_C(0.25);
+    cfg.look_step = (fx_angle)(FX_TURN / 128u);  /* 2.8125 degrees */
+    cfg.focus = vec3_make(0, 0, 0);
+    return cfg;
+}
+
+void scene_set_camera(struct scene *s, enum cam_mode mode, vec3 target, real_t distance,
+                      fx_angle yaw, int32_t pitch, const struct cam_config *cfg)
+{
+    s->cam_default = *cfg;
+    s->mode_default = mode;
+    s->target_default = target;
+    s->distance_default = distance;
+    s->yaw_default = yaw;
+    s->pitch_default = pitch;
+    cam_init(&s->cam, cfg, mode, target, distance, yaw, pitch);
+}
+
+/* A world coordinate within +-1024 (real.h's range rule; render.c forms object offsets exactly
+ * on the strength of it): one outside is clamped and counted as an overflow, so the frame loop
+ * reports the failed range argument instead of drawing with a wrong offset. */
+static real_t scene_world_coord(real_t v)
+{
+    if (v > REAL_C(1024.0) || v < REAL_C(-1024.0)) {
+        fx_overflow_note();
+        return (v > 0) ? REAL_C(1024.0) : REAL_C(-1024.0);
+    }
+    return v;
+}
+
+void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
+                      uint8_t material)
+{
+    struct render_object *o;
+
+    if (s->object_count >= SCENE_MAX_OBJECTS) {
+        return;
+    }
+    pos = vec3_make(scene_world_coord(pos.x), scene_world_coord(pos.y), scene_world_coord(pos.z));
+    o = &s->object[s->object_count++];
+    o->mesh = m;
+    o->rot = *rot;
+    o->pos = pos;
+    o->material = material;
+    o->levels = 0;
+}
+
+void scene_start(struct scene *s, const struct scene_desc *desc)
+{
+    s->desc = desc;
+    s->object_count = 0;
+    s->frame = 0;
+    s->animate = true;
+    s->crosshair = false;
+    s->focal_px = 200;  /* vertical field of view 2 atan(120 / 200) = 62 degrees */
+    s->far = REAL_C(160.0);
+    /* Towards the light: up, a little left and towards the viewer. */
+    s->light = vec3_direction(vec3_make(REAL_C(-0.45), REAL_C(0.8), REAL_C(-0.4)));
+    s->ambient = 4;
+    s->eye_separation = REAL_C(0.15);
+    desc->init(s);
+    proj_setup_init(&s->proj, s->focal_px, s->far);
+    for (uint32_t i = 0; i < s->object_count; i++) {
+        render_level_cache_fill(&s->object[i], &s->cam.scene_rot, s->light, s->ambient);
+    }
+}
+
+void scene_update(struct scene *s, const struct input_counts *keys, struct scene_event *ev)
+{
+    ev->kind = SCENE_EVENT_NONE;
+    if (input_toggled(keys, KEY_RESET_VIEW)) {
+        cam_init(&s->cam, &s->cam_default, s->mode_default, s->target_default,
+                 s->distance_default, s->yaw_default, s->pitch_default);
+    }
+    scene_camera_keys(&s->cam, keys);
+    if (input_toggled(keys, KEY_ANIMATE)) {
+        s->animate = !s->animate;
+    }
+    s->desc->update(s, keys, ev);
+    s->frame++;
+}
+
+void scene_draw(const struct scene *s, struct render_frame *f, const struct render_pass *pass)
+{
+    for (uint32_t i = 0; i < s->object_count; i++) {
+        render_object(f, pass, &s->object[i]);
+    }
+}
+
+uint32_t scene_triangle_count(const struct scene *s)
+{
+    uint32_t n = 0;
+
+    for (uint32_t i = 0; i < s->object_count; i++) {
+        n += s->object[i].mesh->face_count;
+    }
+    return n;
+}
