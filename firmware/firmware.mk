@@ -279,9 +279,6 @@ $(eval $(call FW_UNIT_RULES,$(FW_UNIT),fixed))
 $(eval $(call FW_UNIT_RULES,$(FW_UNIT_FLOAT),float))
 
 -include $(FW_DEP_FILES)
-# The sources were in firmware/src/ until it was split by role: a dependency file written before
-# (build/.../app.d) may still name firmware/src/app.c; let it be missing, app.o is then rebuilt.
-firmware/src/%.c: ;
 
 # ---- convenience ----------------------------------------------------------------------------
 

@@ -9,7 +9,7 @@ contract's 4 sub-pixel bits (Q12.4), SPAN_W = 8. Every other configuration chang
 of R, so its error is that knob's own; the row "default build" changes all of them at once to what
 `make run` builds (fixed point, painter's sort, 4 bits, SPAN_W = 8, no depth buffer):
 
-  arithmetic      fixed point (q16_16 / q2_30) instead of float (firmware/src/real.h)
+  arithmetic      fixed point (q16_16 / q2_30) instead of float (firmware/math/real.h)
   depth order     the painter's sort alone (GPU without depth buffer) instead of the depth test
   sub-pixel bits  2 and 0 fraction bits kept in projected vertices (FW_SUBPIXEL_BITS, proj.h;
                   the switch also takes 3 and 1, left out here to keep the run short)
