@@ -97,8 +97,10 @@ bool GpuSim::capture_frame(uint64_t max_cycles)
 }
 
 // ---- back_buffer: the framebuffer's arrays, as Verilator names them ----
-// gpu_framebuffer: bank b is a main RAM of whole 1024-word blocks plus, unless the bank's word count
-// is such a multiple (SPAN_W = 1), a tail RAM; a word holds SPAN_W pixels, pixel i in bits [8i +: 8].
+// gpu_framebuffer.v: bank b is a main RAM of whole 1024-word blocks plus a tail RAM for the rest (none
+// when the bank is whole blocks, at SPAN_W = 1); a word holds SPAN_W pixels, pixel i in bits
+// [8i +: 8]; bank !front_q is the back bank. A renamed array is a compile error here, not a wrong
+// reading; SPAN_W is derived from the arrays' depths and checked against their word width.
 #define GPU_FB_MAIN(bank) \
     gpu_top__DOT__u_framebuffer__DOT__g_bank__BRA__##bank##__KET____DOT__u_main__DOT__g_block__DOT__mem
 #define GPU_FB_TAIL(bank) \
@@ -131,7 +133,7 @@ uint8_t lane(const VlWide<N> &word, unsigned i)  // a word wider than 64 bits, i
 template <class T, std::size_t D>
 void copy_words(const VlUnpacked<T, D> &mem, std::size_t first_word, unsigned span_w, uint8_t *pixels)
 {
-    if (sizeof(T) < span_w) {  // the arrays are not what gpu_framebuffer.v says they are
+    if (sizeof(T) < span_w) {  // the array is not what gpu_framebuffer.v says it is
         std::fprintf(stderr, "gpusim: framebuffer words of %zu bytes for %u pixels\n", sizeof(T), span_w);
         std::abort();
     }
@@ -142,11 +144,15 @@ void copy_words(const VlUnpacked<T, D> &mem, std::size_t first_word, unsigned sp
     }
 }
 
-template <class R, class Main, class Tail>
+template <class Main, class Tail>
 void copy_bank(const Main &main, const Tail *tail, uint8_t *pixels)
 {
     const std::size_t words = depth(main) + (tail ? depth(*tail) : 0);
     const unsigned span_w = static_cast<unsigned>(GPU_FB_WIDTH * GPU_FB_HEIGHT / words);
+    if (span_w * words != GPU_FB_WIDTH * GPU_FB_HEIGHT) {
+        std::fprintf(stderr, "gpusim: a framebuffer bank of %zu words\n", words);
+        std::abort();
+    }
     copy_words(main, 0, span_w, pixels);
     if (tail) {
         copy_words(*tail, depth(main), span_w, pixels);
@@ -159,16 +165,16 @@ void read_back_bank(const R &root, uint8_t *pixels)
     const bool back_is_1 = root.gpu_top__DOT__u_framebuffer__DOT__front_q == 0;
     if constexpr (HasTail<R>::value) {
         if (back_is_1) {
-            copy_bank<R>(root.GPU_FB_MAIN(1), &root.GPU_FB_TAIL(1), pixels);
+            copy_bank(root.GPU_FB_MAIN(1), &root.GPU_FB_TAIL(1), pixels);
         } else {
-            copy_bank<R>(root.GPU_FB_MAIN(0), &root.GPU_FB_TAIL(0), pixels);
+            copy_bank(root.GPU_FB_MAIN(0), &root.GPU_FB_TAIL(0), pixels);
         }
     } else {
         using Main = std::decay_t<decltype(root.GPU_FB_MAIN(0))>;
         if (back_is_1) {
-            copy_bank<R>(root.GPU_FB_MAIN(1), static_cast<const Main *>(nullptr), pixels);
+            copy_bank(root.GPU_FB_MAIN(1), static_cast<const Main *>(nullptr), pixels);
         } else {
-            copy_bank<R>(root.GPU_FB_MAIN(0), static_cast<const Main *>(nullptr), pixels);
+            copy_bank(root.GPU_FB_MAIN(0), static_cast<const Main *>(nullptr), pixels);
         }
     }
 }
