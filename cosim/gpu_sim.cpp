@@ -1,7 +1,13 @@
 // gpu_sim: see gpu_sim.h.
 #include "gpu_sim.h"
 
+#include <cstdio>
+#include <cstdlib>
+#include <type_traits>
+#include <utility>
+
 #include "Vgpu_top.h"
+#include "Vgpu_top___024root.h"
 #include "verilated.h"
 
 extern "C" {
@@ -88,4 +94,94 @@ bool GpuSim::capture_frame(uint64_t max_cycles)
         tick();
     }
     return monitor_.frame_ready && monitor_.error[0] == '\0';
+}
+
+// ---- back_buffer: the framebuffer's arrays, as Verilator names them ----
+// gpu_framebuffer.v: bank b is a main RAM of whole 1024-word blocks plus a tail RAM for the rest (none
+// when the bank is whole blocks, at SPAN_W = 1); a word holds SPAN_W pixels, pixel i in bits
+// [8i +: 8]; bank !front_q is the back bank. A renamed array is a compile error here, not a wrong
+// reading; SPAN_W is derived from the arrays' depths and checked against their word width.
+#define GPU_FB_MAIN(bank) \
+    gpu_top__DOT__u_framebuffer__DOT__g_bank__BRA__##bank##__KET____DOT__u_main__DOT__g_block__DOT__mem
+#define GPU_FB_TAIL(bank) \
+    gpu_top__DOT__u_framebuffer__DOT__g_bank__BRA__##bank##__KET____DOT__g_tail__DOT__u_tail__DOT__g_block__DOT__mem
+
+namespace {
+
+template <class R, class = void>
+struct HasTail : std::false_type {};
+template <class R>
+struct HasTail<R, std::void_t<decltype(std::declval<const R &>().GPU_FB_TAIL(0))>> : std::true_type {};
+
+template <class T, std::size_t D>
+constexpr std::size_t depth(const VlUnpacked<T, D> &)
+{
+    return D;
+}
+
+template <class T>
+uint8_t lane(const T &word, unsigned i)  // a word of at most 64 bits
+{
+    return static_cast<uint8_t>(static_cast<uint64_t>(word) >> (8 * i));
+}
+template <std::size_t N>
+uint8_t lane(const VlWide<N> &word, unsigned i)  // a word wider than 64 bits, in 32-bit parts
+{
+    return static_cast<uint8_t>(word.m_storage[i / 4] >> (8 * (i % 4)));
+}
+
+template <class T, std::size_t D>
+void copy_words(const VlUnpacked<T, D> &mem, std::size_t first_word, unsigned span_w, uint8_t *pixels)
+{
+    if (sizeof(T) < span_w) {  // the array is not what gpu_framebuffer.v says it is
+        std::fprintf(stderr, "gpusim: framebuffer words of %zu bytes for %u pixels\n", sizeof(T), span_w);
+        std::abort();
+    }
+    for (std::size_t w = 0; w < D; w++) {
+        for (unsigned i = 0; i < span_w; i++) {
+            pixels[(first_word + w) * span_w + i] = lane(mem[w], i);
+        }
+    }
+}
+
+template <class Main, class Tail>
+void copy_bank(const Main &main, const Tail *tail, uint8_t *pixels)
+{
+    const std::size_t words = depth(main) + (tail ? depth(*tail) : 0);
+    const unsigned span_w = static_cast<unsigned>(GPU_FB_WIDTH * GPU_FB_HEIGHT / words);
+    if (span_w * words != GPU_FB_WIDTH * GPU_FB_HEIGHT) {
+        std::fprintf(stderr, "gpusim: a framebuffer bank of %zu words\n", words);
+        std::abort();
+    }
+    copy_words(main, 0, span_w, pixels);
+    if (tail) {
+        copy_words(*tail, depth(main), span_w, pixels);
+    }
+}
+
+template <class R>
+void read_back_bank(const R &root, uint8_t *pixels)
+{
+    const bool back_is_1 = root.gpu_top__DOT__u_framebuffer__DOT__front_q == 0;
+    if constexpr (HasTail<R>::value) {
+        if (back_is_1) {
+            copy_bank(root.GPU_FB_MAIN(1), &root.GPU_FB_TAIL(1), pixels);
+        } else {
+            copy_bank(root.GPU_FB_MAIN(0), &root.GPU_FB_TAIL(0), pixels);
+        }
+    } else {
+        using Main = std::decay_t<decltype(root.GPU_FB_MAIN(0))>;
+        if (back_is_1) {
+            copy_bank(root.GPU_FB_MAIN(1), static_cast<const Main *>(nullptr), pixels);
+        } else {
+            copy_bank(root.GPU_FB_MAIN(0), static_cast<const Main *>(nullptr), pixels);
+        }
+    }
+}
+
+}  // namespace
+
+void GpuSim::back_buffer(uint8_t *pixels) const
+{
+    read_back_bank(*top_->rootp, pixels);
 }

@@ -1,5 +1,6 @@
 // gpu_sim: drives the Verilated GPU (gpu_top) through its own ports — bus writes and reads, the
-// clock — and watches its VGA pins with a monitor model. Nothing here peeks inside the RTL.
+// clock — and watches its VGA pins with a monitor model. Nothing here drives anything inside the RTL;
+// the one look inside is back_buffer(), for checks only (the back buffer has no port to be seen by).
 #ifndef GPU_SIM_H
 #define GPU_SIM_H
 
@@ -28,6 +29,12 @@ public:
     bool wait_done(uint32_t tag, uint64_t max_cycles);
     // Capture the next complete frame from the VGA pins. False on timeout or a timing error.
     bool capture_frame(uint64_t max_cycles);
+
+    // The framebuffer being drawn (the back bank, !STATUS.FRONT), as 320x240 palette indices,
+    // row-major: read from the framebuffer's block-RAM arrays in the Verilated model (their
+    // Verilator names, gpu_top.u_framebuffer.g_bank[b].u_main / g_tail.u_tail .mem, are checked at
+    // compile time). Takes no clock and no bus cycle, so it changes nothing the GPU does.
+    void back_buffer(uint8_t *pixels) const;
 
     const uint8_t *frame_rgb() const { return monitor_.rgb; }
     const char *vga_error() const { return monitor_.error; }

@@ -1,6 +1,9 @@
 // rtl_check: seeded random batches driven into the RTL and the golden model through the same bus
-// writes; every frame is captured from the VGA pins and must equal the model's, pixel for pixel, and
-// every read-only register except the cycle counter must agree. Prints a reproducer on failure.
+// writes. After every batch, every read-only register except the cycle counter must agree, and the
+// framebuffer being drawn (the back buffer) must equal the model's pixel for pixel — read from the
+// RTL's framebuffer RAMs (GpuSim::back_buffer), since a batch that does not swap shows nothing on the
+// VGA pins; every frame a swap shows is also captured from the VGA pins and must equal the model's.
+// Prints a reproducer on failure.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -66,6 +69,27 @@ struct Writer {  // every bus write goes to both implementations
     }
 };
 
+// "" when the RTL's back buffer equals the model's, else how they differ.
+std::string compare_back_buffer(const GpuSim &sim, const ModelCheck &model, std::vector<uint8_t> &rtl)
+{
+    sim.back_buffer(rtl.data());
+    const uint8_t *expected = gpu_model_back(model.model());
+    long mismatches = 0, first = -1;
+    for (long i = 0; i < static_cast<long>(rtl.size()); i++) {
+        if (rtl[i] != expected[i]) {
+            first = first < 0 ? i : first;
+            mismatches++;
+        }
+    }
+    if (mismatches == 0) {
+        return "";
+    }
+    char text[160];
+    std::snprintf(text, sizeof text, "back buffer: %ld pixels differ; first at fb (%ld,%ld): RTL %u, model %u",
+                  mismatches, first % GPU_FB_WIDTH, first / GPU_FB_WIDTH, rtl[first], expected[first]);
+    return text;
+}
+
 }  // namespace
 
 int rtl_check_main(int argc, char **argv)
@@ -97,7 +121,8 @@ int rtl_check_main(int argc, char **argv)
     GpuSim sim;
     ModelCheck model(sim.read(GPU_REG_CAPS));
     Writer write{sim, model};
-    uint64_t tris = 0, pixels = 0, frames = 0, resets = 0;
+    uint64_t tris = 0, pixels = 0, frames = 0, resets = 0, back_checks = 0;
+    std::vector<uint8_t> back(GPU_FB_WIDTH * GPU_FB_HEIGHT);
     bool must_clear = false;
 
     // Contract probes the random batches cannot reach: a write while busy is dropped and flagged,
@@ -189,6 +214,10 @@ int rtl_check_main(int argc, char **argv)
             return 1;
         }
         std::string diff = model.compare_registers(sim);
+        if (diff.empty()) {
+            diff = compare_back_buffer(sim, model, back);
+            back_checks++;
+        }
         if (diff.empty() && swap) {
             if (!sim.capture_frame(3ull * 800 * 525 * 4)) {
                 diff = std::string("no VGA frame: ") + sim.vga_error();
@@ -211,9 +240,10 @@ int rtl_check_main(int argc, char **argv)
                     static_cast<unsigned long long>(tris), static_cast<unsigned long long>(min_prims));
         return 1;
     }
-    std::printf("random: seed %llu: %d batches, %llu primitives, %llu pixels, %llu frames, %llu resets: RTL equals model\n",
+    std::printf("random: seed %llu: %d batches, %llu primitives, %llu pixels, %llu back buffers, %llu frames, "
+                "%llu resets: RTL equals model\n",
                 static_cast<unsigned long long>(seed), batches, static_cast<unsigned long long>(tris),
-                static_cast<unsigned long long>(pixels), static_cast<unsigned long long>(frames),
-                static_cast<unsigned long long>(resets));
+                static_cast<unsigned long long>(pixels), static_cast<unsigned long long>(back_checks),
+                static_cast<unsigned long long>(frames), static_cast<unsigned long long>(resets));
     return 0;
 }
