@@ -16,44 +16,30 @@
 // covered span plus one per row and per span the boundary moves. Bounding-box limits (col_lo..col_hi,
 // row_lo..row_hi) stop the walk at the screen edge.
 //
-// Widths: edge values at lanes -1 .. SPAN_W of any on-screen span are values at pixel centres within
-// one pixel of the screen, inside the 34-bit bound argued in gpu_raster.v; EDGE_W = 36.
+// Widths: the descriptor is a gpu_pkg::desc_t. Edge values at lanes -1 .. SPAN_W of any on-screen
+// span are values at pixel centres within one pixel of the screen, inside the EDGE_NEED_W-bit bound
+// argued in gpu_pkg.sv; EDGE_W = 36. The depth accumulator's bound (Z_W) is argued there too.
 `default_nettype none
 
 module gpu_span_walker #(
-    parameter integer SPAN_W = 8,
-    parameter integer ENABLE_ZBUF = 0,  // depth test stage and depth-buffer port
-    localparam integer COL_W = $clog2(320 / SPAN_W),
-    localparam integer WORDS_PER_ROW = 320 / SPAN_W,
-    localparam integer WAW = $clog2(320 * 240 / SPAN_W),
+    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,           // build options: see gpu_top
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF, // depth test stage and depth-
+                                                                      // buffer port
+    localparam integer WORDS_PER_ROW = gpu_pkg::GPU_FB_WIDTH / SPAN_W,
+    localparam integer COL_W = $clog2(WORDS_PER_ROW),                 // span column
+    localparam integer WAW = $clog2(gpu_pkg::GPU_FB_PIXELS / SPAN_W),
     localparam integer LANE_AW = (SPAN_W > 1) ? $clog2(SPAN_W) : 1,
     localparam integer CNT_W = $clog2(SPAN_W + 1),
-    localparam integer EDGE_W = 36,
-    localparam integer Z_W = 52,
-    localparam integer ZSTEP_W = 40
+    localparam integer EDGE_W = gpu_pkg::EDGE_W,
+    localparam integer Z_W = gpu_pkg::Z_W,
+    localparam integer ZSTEP_W = gpu_pkg::ZSTEP_W
 ) (
     input  wire                     clk,
     input  wire                     rst,
     // descriptor (see gpu_prim_setup)
     input  wire                     in_valid,
     output wire                     in_ready,
-    input  wire                     in_is_line,
-    input  wire [7:0]               in_color,
-    input  wire signed [EDGE_W-1:0] in_e0, in_e1, in_e2,
-    input  wire signed [EDGE_W-1:0] in_sx0, in_sx1, in_sx2,
-    input  wire signed [EDGE_W-1:0] in_sy0, in_sy1, in_sy2,
-    input  wire [2:0]               in_top_left,
-    input  wire [COL_W-1:0]         in_col_lo, in_col_hi,
-    input  wire [7:0]               in_row_lo, in_row_hi,
-    input  wire signed [11:0]       in_line_x, in_line_y,
-    input  wire [11:0]              in_line_n,
-    input  wire                     in_line_xmajor,
-    input  wire                     in_line_xneg, in_line_yneg,
-    input  wire [12:0]              in_line_two_a_major,
-    input  wire [12:0]              in_line_two_a_minor,
-    input  wire signed [14:0]       in_line_err,
-    input  wire signed [Z_W-1:0]    in_z_start,
-    input  wire signed [ZSTEP_W-1:0] in_z_dx, in_z_dy,
+    input  gpu_pkg::desc_t          in_desc,      // the primitive; columns in its low COL_W bits
     input  wire                     ztest,        // CTRL.ZTEST of the batch
     // depth buffer (ENABLE_ZBUF): read the span's depths, write the winners'
     output wire                     z_rd_en,
@@ -162,7 +148,9 @@ module gpu_span_walker #(
     reg lxmajor_q, lxneg_q, lyneg_q;
     reg [12:0] l2maj_q, l2min_q;
     reg signed [14:0] lerr_q;
-    wire line_on_screen = lx_q >= 0 && lx_q < 320 && ly_q >= 0 && ly_q < 240;
+    localparam signed [11:0] LINE_X_END = 12'(gpu_pkg::GPU_FB_WIDTH);   // first column off screen
+    localparam signed [11:0] LINE_Y_END = 12'(gpu_pkg::GPU_FB_HEIGHT);  // first row off screen
+    wire line_on_screen = lx_q >= 0 && lx_q < LINE_X_END && ly_q >= 0 && ly_q < LINE_Y_END;
     wire [8:0] line_px = lx_q[8:0];
     wire [7:0] line_py = ly_q[7:0];
     wire [WAW-1:0] line_addr = WAW'(32'(line_py) * WORDS_PER_ROW + 32'(line_px) / SPAN_W);
@@ -209,44 +197,44 @@ module gpu_span_walker #(
             ev_span_written <= 1'b0;
             case (state_q)
                 S_IDLE: if (in_valid) begin
-                    color_q <= in_color;
-                    z_q <= in_z_start;
-                    zfirst_q <= in_z_start;
-                    zdx_q <= in_z_dx;
-                    zdy_q <= in_z_dy;
-                    ztest_q <= ztest && !in_is_line;
-                    if (in_is_line) begin
-                        lx_q <= in_line_x;
-                        ly_q <= in_line_y;
-                        ln_q <= in_line_n;
-                        lxmajor_q <= in_line_xmajor;
-                        lxneg_q <= in_line_xneg;
-                        lyneg_q <= in_line_yneg;
-                        l2maj_q <= in_line_two_a_major;
-                        l2min_q <= in_line_two_a_minor;
-                        lerr_q <= in_line_err;
+                    color_q <= in_desc.color;
+                    z_q <= in_desc.z_start;
+                    zfirst_q <= in_desc.z_start;
+                    zdx_q <= in_desc.z_dx;
+                    zdy_q <= in_desc.z_dy;
+                    ztest_q <= ztest && !in_desc.is_line;
+                    if (in_desc.is_line) begin
+                        lx_q <= in_desc.line_x;
+                        ly_q <= in_desc.line_y;
+                        ln_q <= in_desc.line_n;
+                        lxmajor_q <= in_desc.line_xmajor;
+                        lxneg_q <= in_desc.line_xneg;
+                        lyneg_q <= in_desc.line_yneg;
+                        l2maj_q <= in_desc.line_two_a_major;
+                        l2min_q <= in_desc.line_two_a_minor;
+                        lerr_q <= in_desc.line_err;
                         state_q <= S_LINE;
                     end else begin
-                        e_q[0] <= in_e0;
-                        e_q[1] <= in_e1;
-                        e_q[2] <= in_e2;
-                        efirst_q[0] <= in_e0;
-                        efirst_q[1] <= in_e1;
-                        efirst_q[2] <= in_e2;
-                        sx_q[0] <= in_sx0;
-                        sx_q[1] <= in_sx1;
-                        sx_q[2] <= in_sx2;
-                        sy_q[0] <= in_sy0;
-                        sy_q[1] <= in_sy1;
-                        sy_q[2] <= in_sy2;
-                        tl_q <= in_top_left;
-                        col_q <= in_col_lo;
-                        col_first_q <= in_col_lo;
-                        col_lo_q <= in_col_lo;
-                        col_hi_q <= in_col_hi;
-                        row_q <= in_row_lo;
-                        row_hi_q <= in_row_hi;
-                        row_addr_q <= WAW'(32'(in_row_lo) * WORDS_PER_ROW);
+                        e_q[0] <= in_desc.e0;
+                        e_q[1] <= in_desc.e1;
+                        e_q[2] <= in_desc.e2;
+                        efirst_q[0] <= in_desc.e0;
+                        efirst_q[1] <= in_desc.e1;
+                        efirst_q[2] <= in_desc.e2;
+                        sx_q[0] <= in_desc.sx0;
+                        sx_q[1] <= in_desc.sx1;
+                        sx_q[2] <= in_desc.sx2;
+                        sy_q[0] <= in_desc.sy0;
+                        sy_q[1] <= in_desc.sy1;
+                        sy_q[2] <= in_desc.sy2;
+                        tl_q <= in_desc.top_left;
+                        col_q <= COL_W'(in_desc.col_lo);
+                        col_first_q <= COL_W'(in_desc.col_lo);
+                        col_lo_q <= COL_W'(in_desc.col_lo);
+                        col_hi_q <= COL_W'(in_desc.col_hi);
+                        row_q <= in_desc.row_lo;
+                        row_hi_q <= in_desc.row_hi;
+                        row_addr_q <= WAW'(32'(in_desc.row_lo) * WORDS_PER_ROW);
                         state_q <= S_SEEK;
                     end
                 end
@@ -363,12 +351,14 @@ module gpu_span_walker #(
     endgenerate
 
 `ifndef SYNTHESIS
-    // The depth range argument (contract, "Depth"), checked: the Q16 accumulator stays below 2^50
-    // in magnitude at every lane of every span a depth-tested triangle writes.
+    // The depth range argument (gpu_pkg, contract "Depth"), checked: the Q16 accumulator stays
+    // below 2^(Z_NEED_W - 1) = 2^50 in magnitude at every lane of every span a depth-tested
+    // triangle writes.
+    localparam signed [Z_W-1:0] Z_LIMIT = Z_W'(1) <<< (gpu_pkg::Z_NEED_W - 1);
     always @(posedge clk) begin
         if (!rst && ztest_q && (seek || scan) && draw_span) begin
             for (k = 0; k < SPAN_W; k = k + 1) begin
-                assert ((z_q + times(Z_W'(zdx_q), k)) < (52'sd1 <<< 50) && (z_q + times(Z_W'(zdx_q), k)) > -(52'sd1 <<< 50))
+                assert ((z_q + times(Z_W'(zdx_q), k)) < Z_LIMIT && (z_q + times(Z_W'(zdx_q), k)) > -Z_LIMIT)
                     else $error("gpu_span_walker: depth accumulator exceeds 2^50");
             end
         end
