@@ -40,11 +40,13 @@ package gpu_pkg;
     localparam integer PIX_W = GPU_VTX_X_WIDTH - GPU_SUBPIXEL_BITS;
     localparam integer LERR_W = PIX_W + 3;
 
-    // The box of a triangle in span columns and rows. A column is a pixel x divided by SPAN_W; the
-    // descriptor carries it at the width SPAN_W = 1 needs, and a build with wider spans uses the low
-    // $clog2(GPU_FB_WIDTH / SPAN_W) bits (the others are 0).
-    localparam integer DESC_COL_W = $clog2(GPU_FB_WIDTH);
+    // Pixels on screen: x in 0 .. GPU_FB_WIDTH - 1 (X_W bits), y in 0 .. GPU_FB_HEIGHT - 1 (ROW_W).
+    // The box of a triangle is carried in span columns and rows. A column is a pixel x divided by
+    // SPAN_W; the descriptor carries it at the width SPAN_W = 1 needs, and a build with wider spans
+    // uses the low $clog2(GPU_FB_WIDTH / SPAN_W) bits (the others are 0).
+    localparam integer X_W = $clog2(GPU_FB_WIDTH);
     localparam integer ROW_W = $clog2(GPU_FB_HEIGHT);
+    localparam integer DESC_COL_W = X_W;
     localparam integer COLOR_W = GPU_PRIM_COLOR_WIDTH;
 
     // ---- the primitive descriptor: gpu_prim_setup -> gpu_span_walker, one per drawn primitive ----

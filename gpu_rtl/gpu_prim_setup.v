@@ -78,7 +78,7 @@ module gpu_prim_setup #(
     reg [2:0] fstate_q;
     reg [PRIM_W-1:0] prim_q;           // next primitive whose index words are read
     reg [15:0] i1_q, i2_q;
-    reg [7:0] color_q;
+    reg [gpu_pkg::COLOR_W-1:0] color_q;
     reg is_line_q;
     reg signed [15:0] fx0_q, fy0_q, fx1_q, fy1_q;
     reg [15:0] fz0_q, fz1_q;
@@ -90,7 +90,8 @@ module gpu_prim_setup #(
     wire [15:0] w_i0 = idx_rd_data[gpu_pkg::GPU_PRIM_I0_LSB +: gpu_pkg::GPU_PRIM_I0_WIDTH];
     wire [15:0] w_i1 = idx_rd_data[gpu_pkg::GPU_PRIM_I1_LSB +: gpu_pkg::GPU_PRIM_I1_WIDTH];
     wire [15:0] w_i2 = idx_rd_data[32 + gpu_pkg::GPU_PRIM_I2_LSB +: gpu_pkg::GPU_PRIM_I2_WIDTH];
-    wire [7:0]  w_color = idx_rd_data[32 + gpu_pkg::GPU_PRIM_COLOR_LSB +: gpu_pkg::GPU_PRIM_COLOR_WIDTH];
+    wire [gpu_pkg::COLOR_W-1:0] w_color =
+        idx_rd_data[32 + gpu_pkg::GPU_PRIM_COLOR_LSB +: gpu_pkg::GPU_PRIM_COLOR_WIDTH];
     wire [7:0]  w_kind = idx_rd_data[32 + gpu_pkg::GPU_PRIM_KIND_LSB +: gpu_pkg::GPU_PRIM_KIND_WIDTH];
     wire w_is_line = (w_kind == gpu_pkg::GPU_PRIM_KIND_LINE);
     wire w_kind_ok = (w_kind == gpu_pkg::GPU_PRIM_KIND_TRI) || (w_is_line && ENABLE_LINES != 0);
@@ -190,7 +191,7 @@ module gpu_prim_setup #(
     // ------------------------------------------------------------------ stage A: three vertices
     reg a_valid_q;
     reg a_is_line_q;
-    reg [7:0] a_color_q;
+    reg [gpu_pkg::COLOR_W-1:0] a_color_q;
     reg signed [15:0] ax0_q, ay0_q, ax1_q, ay1_q, ax2_q, ay2_q;
     reg [15:0] az0_q, az1_q, az2_q;
     wire b_free;
@@ -252,7 +253,7 @@ module gpu_prim_setup #(
 
     reg b_valid_q;
     reg b_is_line_q;
-    reg [7:0] b_color_q;
+    reg [gpu_pkg::COLOR_W-1:0] b_color_q;
     reg signed [15:0] bx0_q, by0_q, bx1_q, by1_q, bx2_q, by2_q;
     reg signed [34:0] b_area_q;
     reg signed [12:0] b_rpx0_q, b_rpx1_q, b_rpy0_q, b_rpy1_q;  // box of pixel centres, unclamped
@@ -334,16 +335,20 @@ module gpu_prim_setup #(
     endfunction
 
     // Lines: endpoint pixels by arithmetic shift, Bresenham set-up per the contract.
-    wire signed [11:0] lx0 = 12'(bx0_q >>> 4), ly0 = 12'(by0_q >>> 4);
-    wire signed [11:0] lx1 = 12'(bx1_q >>> 4), ly1 = 12'(by1_q >>> 4);
-    wire signed [12:0] ldx = 13'(lx1) - 13'(lx0);
-    wire signed [12:0] ldy = 13'(ly1) - 13'(ly0);
-    wire [11:0] lax = 12'(ldx < 0 ? -ldx : ldx);
-    wire [11:0] lay = 12'(ldy < 0 ? -ldy : ldy);
+    localparam integer PIX_W = gpu_pkg::PIX_W;  // a line endpoint pixel, signed
+    localparam integer PIXD_W = PIX_W + 1;      // a difference of two
+    wire signed [PIX_W-1:0] lx0 = PIX_W'(bx0_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
+    wire signed [PIX_W-1:0] ly0 = PIX_W'(by0_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
+    wire signed [PIX_W-1:0] lx1 = PIX_W'(bx1_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
+    wire signed [PIX_W-1:0] ly1 = PIX_W'(by1_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
+    wire signed [PIXD_W-1:0] ldx = PIXD_W'(lx1) - PIXD_W'(lx0);
+    wire signed [PIXD_W-1:0] ldy = PIXD_W'(ly1) - PIXD_W'(ly0);
+    wire [PIX_W-1:0] lax = PIX_W'(ldx < 0 ? -ldx : ldx);
+    wire [PIX_W-1:0] lay = PIX_W'(ldy < 0 ? -ldy : ldy);
     wire lxmajor = lax >= lay;
-    wire [11:0] lmaj = lxmajor ? lax : lay;
-    wire [11:0] lmin = lxmajor ? lay : lax;
-    wire line_empty = (lmaj == 12'd0);
+    wire [PIX_W-1:0] lmaj = lxmajor ? lax : lay;
+    wire [PIX_W-1:0] lmin = lxmajor ? lay : lax;
+    wire line_empty = (lmaj == {PIX_W{1'b0}});
 
     wire b_drawable = b_is_line_q ? !line_empty : (b_area_q != 0 && !box_empty);
     wire c_load_valid = b_valid_q && b_drawable && b_z_ready;
@@ -424,8 +429,8 @@ module gpu_prim_setup #(
                                  top_left(tx0, ty0, tx1, ty1)};
                 out_desc.col_lo <= gpu_pkg::DESC_COL_W'(col_lo);
                 out_desc.col_hi <= gpu_pkg::DESC_COL_W'(col_hi);
-                out_desc.row_lo <= b_py0[7:0];
-                out_desc.row_hi <= b_py1[7:0];
+                out_desc.row_lo <= b_py0[gpu_pkg::ROW_W-1:0];
+                out_desc.row_hi <= b_py1[gpu_pkg::ROW_W-1:0];
                 out_desc.line_x <= lx0;
                 out_desc.line_y <= ly0;
                 out_desc.line_n <= lmaj;
@@ -434,7 +439,7 @@ module gpu_prim_setup #(
                 out_desc.line_yneg <= ldy < 0;
                 out_desc.line_two_a_major <= {lmaj, 1'b0};
                 out_desc.line_two_a_minor <= {lmin, 1'b0};
-                out_desc.line_err <= 15'({lmin, 1'b0}) - 15'(lmaj);
+                out_desc.line_err <= gpu_pkg::LERR_W'({lmin, 1'b0}) - gpu_pkg::LERR_W'(lmaj);
                 out_desc.z_start <= z_start_w;
                 out_desc.z_dx <= z_dx_w;
                 out_desc.z_dy <= z_dy_w;

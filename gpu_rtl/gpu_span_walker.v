@@ -32,7 +32,11 @@ module gpu_span_walker #(
     localparam integer CNT_W = $clog2(SPAN_W + 1),
     localparam integer EDGE_W = gpu_pkg::EDGE_W,
     localparam integer Z_W = gpu_pkg::Z_W,
-    localparam integer ZSTEP_W = gpu_pkg::ZSTEP_W
+    localparam integer ZSTEP_W = gpu_pkg::ZSTEP_W,
+    localparam integer PIX_W = gpu_pkg::PIX_W,                        // line pixel coordinates
+    localparam integer LERR_W = gpu_pkg::LERR_W,
+    localparam integer ROW_W = gpu_pkg::ROW_W,
+    localparam integer X_W = gpu_pkg::X_W                             // a pixel x on screen
 ) (
     input  wire                     clk,
     input  wire                     rst,
@@ -63,14 +67,14 @@ module gpu_span_walker #(
     localparam [1:0] S_IDLE = 2'd0, S_SEEK = 2'd1, S_SCAN = 2'd2, S_LINE = 2'd3;
     reg [1:0] state_q;
 
-    reg [7:0] color_q;
+    reg [gpu_pkg::COLOR_W-1:0] color_q;
     reg signed [EDGE_W-1:0] e_q [0:2];       // edges at lane 0 of the current span
     reg signed [EDGE_W-1:0] efirst_q [0:2];  // edges at lane 0 of the row's starting span
     reg signed [EDGE_W-1:0] sx_q [0:2];
     reg signed [EDGE_W-1:0] sy_q [0:2];
     reg [2:0] tl_q;
     reg [COL_W-1:0] col_q, col_first_q, col_lo_q, col_hi_q;
-    reg [7:0] row_q, row_hi_q;
+    reg [ROW_W-1:0] row_q, row_hi_q;
     reg [WAW-1:0] row_addr_q;                // word address of (col 0, row_q)
 
     // ---- lane evaluation: edge k at lane l is e + l * step (l = -1 .. SPAN_W) ----
@@ -143,18 +147,19 @@ module gpu_span_walker #(
     wire row_end = row_empty || (draw_span && right_done);
 
     // ---- lines ----
-    reg signed [11:0] lx_q, ly_q;
-    reg [11:0] ln_q;
+    reg signed [PIX_W-1:0] lx_q, ly_q;
+    reg [PIX_W-1:0] ln_q;
     reg lxmajor_q, lxneg_q, lyneg_q;
-    reg [12:0] l2maj_q, l2min_q;
-    reg signed [14:0] lerr_q;
-    localparam signed [11:0] LINE_X_END = 12'(gpu_pkg::GPU_FB_WIDTH);   // first column off screen
-    localparam signed [11:0] LINE_Y_END = 12'(gpu_pkg::GPU_FB_HEIGHT);  // first row off screen
+    reg [PIX_W:0] l2maj_q, l2min_q;
+    reg signed [LERR_W-1:0] lerr_q;
+    localparam signed [PIX_W-1:0] LINE_X_END = PIX_W'(gpu_pkg::GPU_FB_WIDTH);   // first column off screen
+    localparam signed [PIX_W-1:0] LINE_Y_END = PIX_W'(gpu_pkg::GPU_FB_HEIGHT);  // first row off screen
+    localparam signed [PIX_W-1:0] PIX_ONE = 1;
     wire line_on_screen = lx_q >= 0 && lx_q < LINE_X_END && ly_q >= 0 && ly_q < LINE_Y_END;
-    wire [8:0] line_px = lx_q[8:0];
-    wire [7:0] line_py = ly_q[7:0];
+    wire [X_W-1:0] line_px = lx_q[X_W-1:0];
+    wire [ROW_W-1:0] line_py = ly_q[ROW_W-1:0];
     wire [WAW-1:0] line_addr = WAW'(32'(line_py) * WORDS_PER_ROW + 32'(line_px) / SPAN_W);
-    wire [LANE_AW-1:0] line_lane = (SPAN_W > 1) ? LANE_AW'(line_px % 9'(SPAN_W)) : {LANE_AW{1'b0}};
+    wire [LANE_AW-1:0] line_lane = (SPAN_W > 1) ? LANE_AW'(line_px % X_W'(SPAN_W)) : {LANE_AW{1'b0}};
 
     // ---- depth of each lane: clamp(floor(Zfix / 2^16), 0, 65535), Zfix stepped like the edges ----
     reg signed [Z_W-1:0] z_q, zfirst_q;
@@ -258,7 +263,7 @@ module gpu_span_walker #(
                             state_q <= S_IDLE;
                         end else begin
                             // The next row starts where this one's coverage started.
-                            row_q <= row_q + 8'd1;
+                            row_q <= row_q + 1'b1;
                             row_addr_q <= row_addr_q + WAW'(WORDS_PER_ROW);
                             col_q <= first_span ? col_q : col_first_q;
                             for (k = 0; k < 3; k = k + 1) begin
@@ -292,14 +297,14 @@ module gpu_span_walker #(
                     end
                     // Bresenham: step the minor axis when the error is positive, then the major one.
                     if (lerr_q > 0) begin
-                        if (lxmajor_q) ly_q <= lyneg_q ? ly_q - 12'sd1 : ly_q + 12'sd1;
-                        else lx_q <= lxneg_q ? lx_q - 12'sd1 : lx_q + 12'sd1;
+                        if (lxmajor_q) ly_q <= lyneg_q ? ly_q - PIX_ONE : ly_q + PIX_ONE;
+                        else lx_q <= lxneg_q ? lx_q - PIX_ONE : lx_q + PIX_ONE;
                     end
-                    lerr_q <= lerr_q - ((lerr_q > 0) ? 15'(l2maj_q) : 15'd0) + 15'(l2min_q);
-                    if (lxmajor_q) lx_q <= lxneg_q ? lx_q - 12'sd1 : lx_q + 12'sd1;
-                    else ly_q <= lyneg_q ? ly_q - 12'sd1 : ly_q + 12'sd1;
-                    ln_q <= ln_q - 12'd1;
-                    if (ln_q == 12'd1) begin
+                    lerr_q <= lerr_q - ((lerr_q > 0) ? LERR_W'(l2maj_q) : {LERR_W{1'b0}}) + LERR_W'(l2min_q);
+                    if (lxmajor_q) lx_q <= lxneg_q ? lx_q - PIX_ONE : lx_q + PIX_ONE;
+                    else ly_q <= lyneg_q ? ly_q - PIX_ONE : ly_q + PIX_ONE;
+                    ln_q <= ln_q - 1'b1;
+                    if (ln_q == PIX_W'(1)) begin
                         state_q <= S_IDLE;
                     end
                 end
