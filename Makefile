@@ -30,7 +30,9 @@ include firmware/firmware.mk
 # libFuzzer targets (FUZZ_BINS, fuzz-build) and `make fuzz`.
 include tests/fuzz/fuzz.mk
 
-RTL_V      := $(sort $(wildcard gpu_rtl/*.v))
+# The RTL, in compilation order: gpu_rtl/files.f is the one list (lint, simulators, synth/synth.sh).
+RTL_FILES  := gpu_rtl/files.f
+RTL_V      := $(shell sed -e 's://.*::' $(RTL_FILES))
 RTL_LINT   := gpu_rtl/lint.vlt
 COSIM_CPP  := $(sort $(wildcard cosim/*.cpp))
 HOST_INC   := -Icosim -Igpu_model -Icontract -Ibsp/qemu_virt
@@ -72,7 +74,7 @@ check-contract:
 	$(PYTHON) contract/gen_contract.py --check
 
 lint:
-	$(VERILATOR) --lint-only -Wall --top-module gpu_top -Igpu_rtl $(RTL_LINT) $(RTL_V)
+	$(VERILATOR) --lint-only -Wall --top-module gpu_top $(RTL_LINT) -f $(RTL_FILES)
 
 # ---- longer randomized RTL-vs-model run ----
 random-long: $(GPUSIM)
@@ -130,13 +132,13 @@ $(COSIM_C_LIB): $(HOST_OBJ)
 define verilate
 	@mkdir -p $(dir $(1))
 	$(VERILATOR) --cc --exe --build -j 2 --assert -O3 --x-assign fast --x-initial fast \
-	  --top-module gpu_top $(2) -Igpu_rtl $(RTL_V) $(abspath $(COSIM_CPP)) \
+	  --top-module gpu_top $(2) -f $(RTL_FILES) $(abspath $(COSIM_CPP)) \
 	  -CFLAGS "-O2 -std=c++17 $(addprefix -I$(CURDIR)/,$(patsubst -I%,%,$(HOST_INC)))" \
 	  -LDFLAGS "$(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
 	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(dir $(1))obj -o $(abspath $(1)) \
 	  >$(dir $(1))verilator.log 2>&1 || { tail -40 $(dir $(1))verilator.log; exit 1; }
 endef
-SIM_DEPS := $(RTL_V) contract/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) $(COSIM_C_LIB) $(GPU_MODEL_LIB)
+SIM_DEPS := $(RTL_FILES) $(RTL_V) contract/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) $(COSIM_C_LIB) $(GPU_MODEL_LIB)
 
 $(BUILD)/sim-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$*)

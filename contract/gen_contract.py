@@ -36,7 +36,20 @@ def load():
     for f in c["format"]:
         if f["lsb"] + f["width"] > 32:
             sys.exit(f"contract: format field {f['name']} exceeds 32 bits")
+    for name, b in c["build"].items():
+        if not name.isupper() or not isinstance(b.get("default"), int) or "doc" not in b:
+            sys.exit(f"contract: build option {name} needs an upper-case name, an integer default and a doc")
     return c
+
+
+def fb_pixels(c):
+    """The frame size: pixels of one framebuffer (and of the depth buffer)."""
+    return c["limits"]["fb_width"] * c["limits"]["fb_height"]
+
+
+def read_only_regs(c):
+    """Registers with access "ro", in offset order."""
+    return sorted((r for r in c["reg"] if r["access"] == "ro"), key=lambda r: r["offset"])
 
 
 def gen_c(c):
@@ -53,6 +66,11 @@ def gen_c(c):
     out.append("")
     for k, v in lim.items():
         define(f"GPU_{k.upper()}", f"{v}u")
+    define("GPU_FB_PIXELS", f"{fb_pixels(c)}u", "GPU_FB_WIDTH * GPU_FB_HEIGHT: the frame size")
+    out.append("")
+    out.append("/* Build-option defaults (the RTL's parameter defaults; CAPS reports a build's own). */")
+    for name, b in c["build"].items():
+        define(f"GPU_DEFAULT_{name}", f"{b['default']}u", b["doc"])
     out.append("")
     out.append("/* Bus windows: byte offset and size from the GPU base. */")
     for w in c["window"]:
@@ -62,6 +80,14 @@ def gen_c(c):
     out.append("/* Registers: byte offsets from the GPU base. */")
     for r in c["reg"]:
         define(f"GPU_REG_{r['name']}", f"0x{r['offset']:03X}u", f"{r['access']}: {r['doc']}")
+    out.append("")
+    ro = read_only_regs(c)
+    out.append("/* The read-only registers, in offset order, as an X-macro: X(NAME) for each, NAME as in")
+    out.append(" * GPU_REG_NAME. E.g. #define OFFSET(n) GPU_REG_##n, ... { GPU_READ_ONLY_REGS(OFFSET) }. */")
+    out.append("#define GPU_READ_ONLY_REGS(X) \\")
+    for i, r in enumerate(ro):
+        out.append(f"    X({r['name']})" + (" \\" if i + 1 < len(ro) else ""))
+    define("GPU_READ_ONLY_REG_COUNT", f"{len(ro)}u")
     out.append("")
     out.append("/* Register bit fields. */")
     for f in c["field"]:
@@ -86,8 +112,13 @@ def gen_c(c):
 def gen_v(c):
     d, lim = c["device"], c["limits"]
     out = [f"// {BANNER}",
-           "// Included inside module bodies. Not every module uses every constant:",
+           "// Included once, in the body of package gpu_pkg (gpu_rtl/gpu_pkg.sv): the RTL names these",
+           "// gpu_pkg::GPU_*. Not every build uses every constant:",
            "/* verilator lint_off UNUSEDPARAM */"]
+
+    def lpi(name, value, comment=None):
+        text = f"localparam integer {name:<28} = {value};"
+        out.append(text + (f"  // {comment}" if comment else ""))
 
     def lp(name, width, value, comment=None):
         text = f"localparam [{width - 1}:0] {name:<28} = {width}'h{value:X};"
@@ -96,7 +127,10 @@ def gen_v(c):
     lp("GPU_ID_VALUE", 32, d["id"])
     lp("GPU_VERSION_VALUE", 32, d["version"])
     for k, v in lim.items():
-        lp(f"GPU_{k.upper()}", 32, v)
+        lpi(f"GPU_{k.upper()}", v)
+    lpi("GPU_FB_PIXELS", fb_pixels(c), "GPU_FB_WIDTH * GPU_FB_HEIGHT: the frame size")
+    for name, b in c["build"].items():
+        lpi(f"GPU_DEFAULT_{name}", b["default"], "build-option default")
     for w in c["window"]:
         lp(f"GPU_WIN_{w['name']}", 17, w["offset"], w["doc"])
         lp(f"GPU_WIN_{w['name']}_BYTES", 17, w["bytes"])
@@ -134,8 +168,16 @@ def gen_md(c):
         hi = f["lsb"] + f["width"] - 1
         out.append(f"| {f['name']} | {f['word']} | {hi}:{f['lsb']} | {'yes' if f['signed'] else 'no'} | {f['doc']} |")
     out += ["", "## Limits and constants", "", "| name | value |", "|---|---|"]
-    for k, v in list(c["limits"].items()) + list(c["constants"].items()):
+    for k, v in list(c["limits"].items()) + [("fb_pixels", fb_pixels(c))] + list(c["constants"].items()):
         out.append(f"| {k} | {v} |")
+    out += ["", "## Build options", "",
+            "Defaults of the RTL's parameters and of the golden model's configuration; CAPS reports a build's own.",
+            "", "| option | default | meaning |", "|---|---|---|"]
+    for name, b in c["build"].items():
+        out.append(f"| {name} | {b['default']} | {b['doc']} |")
+    out += ["", "## Read-only registers", "",
+            "In offset order, as `GPU_READ_ONLY_REGS(X)` in gpu_regs.h: "
+            + ", ".join(r["name"] for r in read_only_regs(c)) + "."]
     out.append("")
     return "\n".join(out)
 

@@ -12,6 +12,12 @@
 #define GPU_FB_HEIGHT                240u
 #define GPU_PALETTE_ENTRIES          256u
 #define GPU_SUBPIXEL_BITS            4u
+#define GPU_FB_PIXELS                76800u  /* GPU_FB_WIDTH * GPU_FB_HEIGHT: the frame size */
+
+/* Build-option defaults (the RTL's parameter defaults; CAPS reports a build's own). */
+#define GPU_DEFAULT_SPAN_W           8u  /* Pixels rasterized per clock: 1, 4, 8 or 16 (CAPS_SPAN_W). */
+#define GPU_DEFAULT_ENABLE_LINES     1u  /* Line primitives (CAPS_LINES); without them a line sets ERR_KIND. */
+#define GPU_DEFAULT_ENABLE_ZBUF      0u  /* 16-bit depth buffer (CAPS_ZBUF); without it CTRL_ZTEST and CTRL_ZCLEAR have no effect. */
 
 /* Bus windows: byte offset and size from the GPU base. */
 #define GPU_WIN_REGS                 0x00000u  /* Registers, 32-bit words. */
@@ -50,6 +56,29 @@
 #define GPU_REG_PERF_SAMPLES         0x074u  /* ro: Size of the drawn primitives: pixel centres in each triangle's clamped bounding box, steps of each line. */
 #define GPU_REG_PERF_SPANS_WRITTEN   0x078u  /* ro: Aligned spans (CAPS_SPAN_W pixels of one row, first pixel a multiple of the width) with at least one covered pixel, over the batch's triangles. */
 #define GPU_REG_PERF_SPANS_VISITED   0x07Cu  /* ro: Span evaluations the rasterizer made, covered or not (implementation-specific, like PERF_BUSY_CYCLES; not modelled). */
+
+/* The read-only registers, in offset order, as an X-macro: X(NAME) for each, NAME as in
+ * GPU_REG_NAME. E.g. #define OFFSET(n) GPU_REG_##n, ... { GPU_READ_ONLY_REGS(OFFSET) }. */
+#define GPU_READ_ONLY_REGS(X) \
+    X(ID) \
+    X(VERSION) \
+    X(CAPS) \
+    X(VTX_CAP) \
+    X(TRI_CAP) \
+    X(FB_SIZE) \
+    X(STATUS) \
+    X(DONE_SEQ) \
+    X(FRAME_COUNT) \
+    X(ERRORS) \
+    X(PERF_BUSY_CYCLES) \
+    X(PERF_TRIS_IN) \
+    X(PERF_TRIS_DRAWN) \
+    X(PERF_TRIS_REJECTED) \
+    X(PERF_PIXELS) \
+    X(PERF_SAMPLES) \
+    X(PERF_SPANS_WRITTEN) \
+    X(PERF_SPANS_VISITED)
+#define GPU_READ_ONLY_REG_COUNT      18u
 
 /* Register bit fields. */
 #define GPU_CTRL_CLEAR_LSB           0u  /* in CTRL: Fill the back buffer with CLEAR_COLOR before drawing. */

@@ -9,14 +9,40 @@ extern "C" {
 #include "gpu_regs.h"
 }
 
-const uint32_t kReadOnlyRegs[] = {
-    GPU_REG_ID, GPU_REG_VERSION, GPU_REG_CAPS, GPU_REG_VTX_CAP, GPU_REG_TRI_CAP, GPU_REG_FB_SIZE,
-    GPU_REG_STATUS, GPU_REG_FRAME_COUNT, GPU_REG_ERRORS, GPU_REG_PERF_BUSY_CYCLES,
-    GPU_REG_PERF_TRIS_IN, GPU_REG_PERF_TRIS_DRAWN, GPU_REG_PERF_TRIS_REJECTED, GPU_REG_PERF_PIXELS,
-    GPU_REG_PERF_SAMPLES, GPU_REG_PERF_SPANS_WRITTEN, GPU_REG_PERF_SPANS_VISITED,
-    GPU_REG_DONE_SEQ,
+namespace {
+
+// The contract's read-only registers (generated, offset order), reordered with DONE_SEQ last: the
+// firmware takes a new DONE_SEQ as the sign that the others are current.
+#define MODEL_CHECK_RO_OFFSET(name) GPU_REG_##name,
+constexpr uint32_t kContractReadOnly[] = {GPU_READ_ONLY_REGS(MODEL_CHECK_RO_OFFSET)};
+#undef MODEL_CHECK_RO_OFFSET
+constexpr int kCount = sizeof kContractReadOnly / sizeof kContractReadOnly[0];
+static_assert(kCount == GPU_READ_ONLY_REG_COUNT, "gpu_regs.h: X-macro and count disagree");
+
+struct RegList {
+    uint32_t offset[kCount];
 };
-const int kReadOnlyRegCount = sizeof kReadOnlyRegs / sizeof kReadOnlyRegs[0];
+
+constexpr RegList done_seq_last()
+{
+    RegList list{};
+    int n = 0;
+    for (const uint32_t offset : kContractReadOnly) {
+        if (offset != GPU_REG_DONE_SEQ) {
+            list.offset[n++] = offset;
+        }
+    }
+    list.offset[n++] = GPU_REG_DONE_SEQ;
+    return list;
+}
+
+constexpr RegList kOrdered = done_seq_last();
+static_assert(kOrdered.offset[kCount - 1] == GPU_REG_DONE_SEQ, "DONE_SEQ is not read-only");
+
+}  // namespace
+
+const uint32_t *const kReadOnlyRegs = kOrdered.offset;
+const int kReadOnlyRegCount = kCount;
 
 ModelCheck::ModelCheck(uint32_t caps) : model_(new gpu_model), expected_(640 * 480 * 3)
 {

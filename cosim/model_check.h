@@ -31,8 +31,9 @@ private:
     std::vector<uint8_t> expected_;
 };
 
-// Read-only registers copied back to the firmware after a batch, DONE_SEQ last.
-extern const uint32_t kReadOnlyRegs[];
+// Read-only registers copied back to the firmware after a batch, DONE_SEQ last: the contract's
+// list (GPU_READ_ONLY_REGS in gpu_regs.h) in offset order, DONE_SEQ moved to the end.
+extern const uint32_t *const kReadOnlyRegs;
 extern const int kReadOnlyRegCount;
 
 #endif

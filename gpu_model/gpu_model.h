@@ -34,11 +34,11 @@
 /* Pixels in one framebuffer (320 x 240), also in the depth buffer. */
 #define GPU_MODEL_FB_PIXELS (GPU_FB_WIDTH * GPU_FB_HEIGHT)
 
-/* Build-option defaults, the RTL's parameter defaults (contract table
- * "Build options, reported in CAPS"). */
-#define GPU_MODEL_DEFAULT_SPAN_W 8u
-#define GPU_MODEL_DEFAULT_LINES  true
-#define GPU_MODEL_DEFAULT_ZBUF   false
+/* Build-option defaults, the same as the RTL's parameter defaults: both come
+ * from the contract's [build] table (contract/gpu_contract.toml). */
+#define GPU_MODEL_DEFAULT_SPAN_W GPU_DEFAULT_SPAN_W
+#define GPU_MODEL_DEFAULT_LINES  (GPU_DEFAULT_ENABLE_LINES != 0u)
+#define GPU_MODEL_DEFAULT_ZBUF   (GPU_DEFAULT_ENABLE_ZBUF != 0u)
 
 /* The bits of CTRL the contract defines; CTRL keeps (and reads back) only
  * these, whatever the build options. */

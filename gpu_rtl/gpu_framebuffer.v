@@ -1,20 +1,22 @@
-// gpu_framebuffer: two 320x240 banks of 8-bit palette indices, one drawn (back), one shown (front).
+// gpu_framebuffer: two banks of GPU_FB_WIDTH x GPU_FB_HEIGHT 8-bit palette indices (the contract's
+// frame), one drawn (back), one shown (front).
 //
 // Contract: each bank is stored as words of SPAN_W pixels (a span: SPAN_W neighbours in one row, the
 // first at a multiple of SPAN_W), so the rasterizer writes a whole span per clock with a per-pixel
 // mask and never reads. The write port always targets the back bank, the read port always the front
-// bank; the read port takes a pixel index (y*320 + x) and returns that pixel one cycle later. swap
-// (one-cycle pulse) exchanges the banks on the clock edge; a read issued on that edge still comes from
-// the old front. front is the bank being shown (STATUS.FRONT).
+// bank; the read port takes a pixel index (y * GPU_FB_WIDTH + x) and returns that pixel one cycle
+// later. swap (one-cycle pulse) exchanges the banks on the clock edge; a read issued on that edge
+// still comes from the old front. front is the bank being shown (STATUS.FRONT).
 //
-// Block RAM economy: a bank of 76800/SPAN_W words is not a multiple of the 1024-word depth 36 Kb block
-// RAMs come in, and a tool that rounds it up wastes a whole column of them (20 instead of 19 per bank
-// at SPAN_W = 8). So each bank is a main part of whole 1024-word blocks plus a small tail RAM.
+// Block RAM economy: a bank of GPU_FB_PIXELS / SPAN_W words is not a multiple of the 1024-word depth
+// 36 Kb block RAMs come in, and a tool that rounds it up wastes a whole column of them (20 instead of
+// 19 per bank at SPAN_W = 8). So each bank is a main part of whole 1024-word blocks plus a small tail
+// RAM.
 `default_nettype none
 
 module gpu_framebuffer #(
-    parameter integer SPAN_W = 8,    // pixels per word; divides 320
-    localparam integer PIXELS = 320 * 240,
+    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,  // pixels per word; divides GPU_FB_WIDTH
+    localparam integer PIXELS = gpu_pkg::GPU_FB_PIXELS,
     localparam integer WORDS = PIXELS / SPAN_W,
     localparam integer MAIN_WORDS = (WORDS / 1024) * 1024,
     localparam integer TAIL_WORDS = WORDS - MAIN_WORDS,
@@ -29,12 +31,12 @@ module gpu_framebuffer #(
     output wire                front,      // bank currently shown
     // write port (rasterizer, back bank): one span
     input  wire                wr_en,
-    input  wire [WAW-1:0]      wr_addr,    // span index: y * 320/SPAN_W + x/SPAN_W
+    input  wire [WAW-1:0]      wr_addr,    // span index: y * GPU_FB_WIDTH / SPAN_W + x / SPAN_W
     input  wire [SPAN_W*8-1:0] wr_data,    // pixel i of the span in bits [8i +: 8]
     input  wire [SPAN_W-1:0]   wr_mask,    // pixels to write
     // read port (scan-out, front bank): one pixel
     input  wire                rd_en,
-    input  wire [PAW-1:0]      rd_addr,    // pixel index y*320 + x
+    input  wire [PAW-1:0]      rd_addr,    // pixel index y * GPU_FB_WIDTH + x
     output wire [7:0]          rd_data
 );
     reg front_q;

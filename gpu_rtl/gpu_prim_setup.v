@@ -18,16 +18,17 @@
 // span and its steps). A stage loads when it
 // is empty or the stage after it moves; a full descriptor with out_ready low stalls everything behind.
 //
-// Widths: see gpu_raster.v for the edge-function range argument (34 bits needed, EDGE_W = 36).
+// Widths: the descriptor is a gpu_pkg::desc_t; the range arguments of its fields (edge values need
+// EDGE_NEED_W = 34 bits, EDGE_W = 36; the depth accumulator Z_W) are in gpu_pkg.sv.
 `default_nettype none
 
 module gpu_prim_setup #(
-    parameter integer VTX_CAP = 1024,
-    parameter integer TRI_CAP = 512,
-    parameter integer SPAN_W = 8,
-    parameter integer ENABLE_LINES = 1,
-    parameter integer ENABLE_ZBUF = 0,   // depth-plane set-up (a division per triangle while
-                                         // CTRL.ZTEST is on)
+    parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,              // build options: see gpu_top
+    parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,
+    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
+    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,  // depth-plane set-up (a division
+                                         // per triangle while CTRL.ZTEST is on)
     parameter integer DIV_QBITS = 2,     // quotient bits per clock of the depth dividers: a depth-
                                          // tested triangle holds stage B ceil(31 / DIV_QBITS) + 2
                                          // clocks (18 with 2; 1 halves the dividers' subtractors
@@ -35,10 +36,10 @@ module gpu_prim_setup #(
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer PRIM_W = $clog2(TRI_CAP + 1),
-    localparam integer COL_W = $clog2(320 / SPAN_W),
-    localparam integer EDGE_W = 36,
-    localparam integer Z_W = 52,           // Q16 depth accumulator: |value| < 2^50 (contract), signed
-    localparam integer ZSTEP_W = 40        // 16 * ZA: |value| <= 2^35, signed
+    localparam integer COL_W = $clog2(gpu_pkg::GPU_FB_WIDTH / SPAN_W),  // span column
+    localparam integer EDGE_W = gpu_pkg::EDGE_W,
+    localparam integer Z_W = gpu_pkg::Z_W,
+    localparam integer ZSTEP_W = gpu_pkg::ZSTEP_W
 ) (
     input  wire                     clk,
     input  wire                     rst,
@@ -62,24 +63,7 @@ module gpu_prim_setup #(
     // descriptor to the walker
     output reg                      out_valid,
     input  wire                     out_ready,
-    output reg                      out_is_line,
-    output reg  [7:0]               out_color,
-    output reg  signed [EDGE_W-1:0] out_e0, out_e1, out_e2,         // edges at the first span, lane 0
-    output reg  signed [EDGE_W-1:0] out_sx0, out_sx1, out_sx2,      // per pixel right
-    output reg  signed [EDGE_W-1:0] out_sy0, out_sy1, out_sy2,      // per row down
-    output reg  [2:0]               out_top_left,
-    output reg  [COL_W-1:0]         out_col_lo, out_col_hi,         // span columns of the box
-    output reg  [7:0]               out_row_lo, out_row_hi,
-    output reg  signed [11:0]       out_line_x, out_line_y,         // first endpoint pixel
-    output reg  [11:0]              out_line_n,                     // steps
-    output reg                      out_line_xmajor,
-    output reg                      out_line_xneg, out_line_yneg,
-    output reg  [12:0]              out_line_two_a_major,           // 2 * |major delta|
-    output reg  [12:0]              out_line_two_a_minor,           // 2 * |minor delta|
-    output reg  signed [14:0]       out_line_err,
-    output reg  signed [Z_W-1:0]    out_z_start,                    // Q16 depth at the first span, lane 0
-    output reg  signed [ZSTEP_W-1:0] out_z_dx,                      // per pixel right (16 ZA)
-    output reg  signed [ZSTEP_W-1:0] out_z_dy,                      // per row down (16 ZB)
+    output gpu_pkg::desc_t          out_desc,      // held while out_valid && !out_ready
     // events for the counters
     output reg                      ev_prim_in,
     output reg  [1:0]               ev_rejected,   // the fetch and stage B may both reject in one clock
@@ -88,15 +72,13 @@ module gpu_prim_setup #(
     output reg                      ev_err_kind,
     output reg                      ev_err_index
 );
-`include "contract/gpu_regs.vh"  // relative to the repository root, where every tool runs
-
     // ------------------------------------------------------------------ fetch
     localparam [2:0] F_IDLE = 3'd0, F_ISSUE = 3'd1, F_CHECK = 3'd2, F_V1 = 3'd3, F_V2 = 3'd4,
                      F_DRAIN = 3'd5;
     reg [2:0] fstate_q;
     reg [PRIM_W-1:0] prim_q;           // next primitive whose index words are read
     reg [15:0] i1_q, i2_q;
-    reg [7:0] color_q;
+    reg [gpu_pkg::COLOR_W-1:0] color_q;
     reg is_line_q;
     reg signed [15:0] fx0_q, fy0_q, fx1_q, fy1_q;
     reg [15:0] fz0_q, fz1_q;
@@ -105,13 +87,14 @@ module gpu_prim_setup #(
     reg idx_was_read_q;                // F_V1 read the next primitive's index words
 
     wire more_prims = 32'(prim_q) < tri_count;
-    wire [15:0] w_i0 = idx_rd_data[GPU_PRIM_I0_LSB +: GPU_PRIM_I0_WIDTH];
-    wire [15:0] w_i1 = idx_rd_data[GPU_PRIM_I1_LSB +: GPU_PRIM_I1_WIDTH];
-    wire [15:0] w_i2 = idx_rd_data[32 + GPU_PRIM_I2_LSB +: GPU_PRIM_I2_WIDTH];
-    wire [7:0]  w_color = idx_rd_data[32 + GPU_PRIM_COLOR_LSB +: GPU_PRIM_COLOR_WIDTH];
-    wire [7:0]  w_kind = idx_rd_data[32 + GPU_PRIM_KIND_LSB +: GPU_PRIM_KIND_WIDTH];
-    wire w_is_line = (w_kind == GPU_PRIM_KIND_LINE);
-    wire w_kind_ok = (w_kind == GPU_PRIM_KIND_TRI) || (w_is_line && ENABLE_LINES != 0);
+    wire [15:0] w_i0 = idx_rd_data[gpu_pkg::GPU_PRIM_I0_LSB +: gpu_pkg::GPU_PRIM_I0_WIDTH];
+    wire [15:0] w_i1 = idx_rd_data[gpu_pkg::GPU_PRIM_I1_LSB +: gpu_pkg::GPU_PRIM_I1_WIDTH];
+    wire [15:0] w_i2 = idx_rd_data[32 + gpu_pkg::GPU_PRIM_I2_LSB +: gpu_pkg::GPU_PRIM_I2_WIDTH];
+    wire [gpu_pkg::COLOR_W-1:0] w_color =
+        idx_rd_data[32 + gpu_pkg::GPU_PRIM_COLOR_LSB +: gpu_pkg::GPU_PRIM_COLOR_WIDTH];
+    wire [7:0]  w_kind = idx_rd_data[32 + gpu_pkg::GPU_PRIM_KIND_LSB +: gpu_pkg::GPU_PRIM_KIND_WIDTH];
+    wire w_is_line = (w_kind == gpu_pkg::GPU_PRIM_KIND_LINE);
+    wire w_kind_ok = (w_kind == gpu_pkg::GPU_PRIM_KIND_TRI) || (w_is_line && ENABLE_LINES != 0);
     wire w_index_ok = (32'(w_i0) < vtx_count) && (32'(w_i1) < vtx_count)
                    && (w_is_line || 32'(w_i2) < vtx_count);
 
@@ -129,8 +112,8 @@ module gpu_prim_setup #(
     assign vtx_rd_en = (decode && !reject_now) || fstate_q == F_V1 || (fstate_q == F_V2 && !is_line_q);
     assign vtx_rd_addr = vtx_base[VI_W-1:0] + vtx_index[VI_W-1:0];
 
-    wire signed [15:0] vx = vtx_rd_data[GPU_VTX_X_LSB +: GPU_VTX_X_WIDTH];
-    wire signed [15:0] vy = vtx_rd_data[GPU_VTX_Y_LSB +: GPU_VTX_Y_WIDTH];
+    wire signed [15:0] vx = vtx_rd_data[gpu_pkg::GPU_VTX_X_LSB +: gpu_pkg::GPU_VTX_X_WIDTH];
+    wire signed [15:0] vy = vtx_rd_data[gpu_pkg::GPU_VTX_Y_LSB +: gpu_pkg::GPU_VTX_Y_WIDTH];
 
     always @(posedge clk) begin
         if (rst) begin
@@ -208,7 +191,7 @@ module gpu_prim_setup #(
     // ------------------------------------------------------------------ stage A: three vertices
     reg a_valid_q;
     reg a_is_line_q;
-    reg [7:0] a_color_q;
+    reg [gpu_pkg::COLOR_W-1:0] a_color_q;
     reg signed [15:0] ax0_q, ay0_q, ax1_q, ay1_q, ax2_q, ay2_q;
     reg [15:0] az0_q, az1_q, az2_q;
     wire b_free;
@@ -270,7 +253,7 @@ module gpu_prim_setup #(
 
     reg b_valid_q;
     reg b_is_line_q;
-    reg [7:0] b_color_q;
+    reg [gpu_pkg::COLOR_W-1:0] b_color_q;
     reg signed [15:0] bx0_q, by0_q, bx1_q, by1_q, bx2_q, by2_q;
     reg signed [34:0] b_area_q;
     reg signed [12:0] b_rpx0_q, b_rpx1_q, b_rpy0_q, b_rpy1_q;  // box of pixel centres, unclamped
@@ -306,12 +289,14 @@ module gpu_prim_setup #(
         end
     end
 
-    // Clamped to the screen: px0 = max(0, raw), px1 = min(319, raw). Empty when px0 > px1, i.e. when
-    // the raw box is empty or lies wholly off one side.
-    wire signed [12:0] b_px0 = clamp(b_rpx0_q, 13'sd319), b_px1 = clamp(b_rpx1_q, 13'sd319);
-    wire signed [12:0] b_py0 = clamp(b_rpy0_q, 13'sd239), b_py1 = clamp(b_rpy1_q, 13'sd239);
+    // Clamped to the screen: px0 = max(0, raw), px1 = min(X_LAST, raw). Empty when px0 > px1, i.e.
+    // when the raw box is empty or lies wholly off one side.
+    localparam signed [12:0] X_LAST = 13'(gpu_pkg::GPU_FB_WIDTH - 1);   // last pixel column
+    localparam signed [12:0] Y_LAST = 13'(gpu_pkg::GPU_FB_HEIGHT - 1);  // last pixel row
+    wire signed [12:0] b_px0 = clamp(b_rpx0_q, X_LAST), b_px1 = clamp(b_rpx1_q, X_LAST);
+    wire signed [12:0] b_py0 = clamp(b_rpy0_q, Y_LAST), b_py1 = clamp(b_rpy1_q, Y_LAST);
     wire box_empty = b_rpx0_q > b_rpx1_q || b_rpy0_q > b_rpy1_q || b_rpx1_q < 13'sd0
-                  || b_rpy1_q < 13'sd0 || b_rpx0_q > 13'sd319 || b_rpy0_q > 13'sd239;
+                  || b_rpy1_q < 13'sd0 || b_rpx0_q > X_LAST || b_rpy0_q > Y_LAST;
 
     // ------------------------------------------------------------------ stage C: the descriptor
     // Winding: with area < 0, v1 and v2 trade places so that the interior is where every E > 0.
@@ -350,16 +335,20 @@ module gpu_prim_setup #(
     endfunction
 
     // Lines: endpoint pixels by arithmetic shift, Bresenham set-up per the contract.
-    wire signed [11:0] lx0 = 12'(bx0_q >>> 4), ly0 = 12'(by0_q >>> 4);
-    wire signed [11:0] lx1 = 12'(bx1_q >>> 4), ly1 = 12'(by1_q >>> 4);
-    wire signed [12:0] ldx = 13'(lx1) - 13'(lx0);
-    wire signed [12:0] ldy = 13'(ly1) - 13'(ly0);
-    wire [11:0] lax = 12'(ldx < 0 ? -ldx : ldx);
-    wire [11:0] lay = 12'(ldy < 0 ? -ldy : ldy);
+    localparam integer PIX_W = gpu_pkg::PIX_W;  // a line endpoint pixel, signed
+    localparam integer PIXD_W = PIX_W + 1;      // a difference of two
+    wire signed [PIX_W-1:0] lx0 = PIX_W'(bx0_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
+    wire signed [PIX_W-1:0] ly0 = PIX_W'(by0_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
+    wire signed [PIX_W-1:0] lx1 = PIX_W'(bx1_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
+    wire signed [PIX_W-1:0] ly1 = PIX_W'(by1_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
+    wire signed [PIXD_W-1:0] ldx = PIXD_W'(lx1) - PIXD_W'(lx0);
+    wire signed [PIXD_W-1:0] ldy = PIXD_W'(ly1) - PIXD_W'(ly0);
+    wire [PIX_W-1:0] lax = PIX_W'(ldx < 0 ? -ldx : ldx);
+    wire [PIX_W-1:0] lay = PIX_W'(ldy < 0 ? -ldy : ldy);
     wire lxmajor = lax >= lay;
-    wire [11:0] lmaj = lxmajor ? lax : lay;
-    wire [11:0] lmin = lxmajor ? lay : lax;
-    wire line_empty = (lmaj == 12'd0);
+    wire [PIX_W-1:0] lmaj = lxmajor ? lax : lay;
+    wire [PIX_W-1:0] lmin = lxmajor ? lay : lax;
+    wire line_empty = (lmaj == {PIX_W{1'b0}});
 
     wire b_drawable = b_is_line_q ? !line_empty : (b_area_q != 0 && !box_empty);
     wire c_load_valid = b_valid_q && b_drawable && b_z_ready;
@@ -425,35 +414,35 @@ module gpu_prim_setup #(
         end else if (c_free) begin
             out_valid <= c_load_valid;
             if (c_load_valid) begin
-                out_is_line <= b_is_line_q;
-                out_color <= b_color_q;
-                out_e0 <= edge_at(tx0, ty0, tx1, ty1, pcx, pcy);
-                out_e1 <= edge_at(tx1, ty1, tx2, ty2, pcx, pcy);
-                out_e2 <= edge_at(tx2, ty2, tx0, ty0, pcx, pcy);
-                out_sx0 <= step_right(ty0, ty1);
-                out_sx1 <= step_right(ty1, ty2);
-                out_sx2 <= step_right(ty2, ty0);
-                out_sy0 <= step_down(tx0, tx1);
-                out_sy1 <= step_down(tx1, tx2);
-                out_sy2 <= step_down(tx2, tx0);
-                out_top_left <= {top_left(tx2, ty2, tx0, ty0), top_left(tx1, ty1, tx2, ty2),
+                out_desc.is_line <= b_is_line_q;
+                out_desc.color <= b_color_q;
+                out_desc.e0 <= edge_at(tx0, ty0, tx1, ty1, pcx, pcy);
+                out_desc.e1 <= edge_at(tx1, ty1, tx2, ty2, pcx, pcy);
+                out_desc.e2 <= edge_at(tx2, ty2, tx0, ty0, pcx, pcy);
+                out_desc.sx0 <= step_right(ty0, ty1);
+                out_desc.sx1 <= step_right(ty1, ty2);
+                out_desc.sx2 <= step_right(ty2, ty0);
+                out_desc.sy0 <= step_down(tx0, tx1);
+                out_desc.sy1 <= step_down(tx1, tx2);
+                out_desc.sy2 <= step_down(tx2, tx0);
+                out_desc.top_left <= {top_left(tx2, ty2, tx0, ty0), top_left(tx1, ty1, tx2, ty2),
                                  top_left(tx0, ty0, tx1, ty1)};
-                out_col_lo <= col_lo;
-                out_col_hi <= col_hi;
-                out_row_lo <= b_py0[7:0];
-                out_row_hi <= b_py1[7:0];
-                out_line_x <= lx0;
-                out_line_y <= ly0;
-                out_line_n <= lmaj;
-                out_line_xmajor <= lxmajor;
-                out_line_xneg <= ldx < 0;
-                out_line_yneg <= ldy < 0;
-                out_line_two_a_major <= {lmaj, 1'b0};
-                out_line_two_a_minor <= {lmin, 1'b0};
-                out_line_err <= 15'({lmin, 1'b0}) - 15'(lmaj);
-                out_z_start <= z_start_w;
-                out_z_dx <= z_dx_w;
-                out_z_dy <= z_dy_w;
+                out_desc.col_lo <= gpu_pkg::DESC_COL_W'(col_lo);
+                out_desc.col_hi <= gpu_pkg::DESC_COL_W'(col_hi);
+                out_desc.row_lo <= b_py0[gpu_pkg::ROW_W-1:0];
+                out_desc.row_hi <= b_py1[gpu_pkg::ROW_W-1:0];
+                out_desc.line_x <= lx0;
+                out_desc.line_y <= ly0;
+                out_desc.line_n <= lmaj;
+                out_desc.line_xmajor <= lxmajor;
+                out_desc.line_xneg <= ldx < 0;
+                out_desc.line_yneg <= ldy < 0;
+                out_desc.line_two_a_major <= {lmaj, 1'b0};
+                out_desc.line_two_a_minor <= {lmin, 1'b0};
+                out_desc.line_err <= gpu_pkg::LERR_W'({lmin, 1'b0}) - gpu_pkg::LERR_W'(lmaj);
+                out_desc.z_start <= z_start_w;
+                out_desc.z_dx <= z_dx_w;
+                out_desc.z_dy <= z_dy_w;
             end
         end
     end

@@ -6,29 +6,22 @@
 // contract/gpu-contract.md ("A batch, and the frame handshake"). The clear writes SPAN_W pixels per clock;
 // primitives are set up at one per 3 clocks while earlier ones are drawn at one span per clock.
 //
-// Edge-function widths (the range argument for gpu_prim_setup and gpu_span_walker): vertex
-// coordinates are signed Q12.4 in 16 bits, so a difference needs 17 bits; pixel centres the walker
-// evaluates lie within one pixel of the screen (x in -1 .. 320, y in 0 .. 239), so their offset from
-// a vertex is in -32775 .. 37896, also 17 bits. Each product is below 2^32 in magnitude, an edge value
-// below 2^33: 34 bits signed. EDGE_W = 36 leaves two bits of margin; the assertion below checks the
-// 34-bit bound on every descriptor in simulation.
+// The descriptor between the two is one gpu_pkg::desc_t; the widths of its fields and their range
+// arguments are in gpu_pkg.sv. The assertion below checks the edge values' bound (EDGE_NEED_W bits)
+// on every descriptor in simulation.
 `default_nettype none
 
 module gpu_raster #(
-    parameter integer VTX_CAP = 1024,
-    parameter integer TRI_CAP = 512,
-    parameter integer SPAN_W = 8,
-    parameter integer ENABLE_LINES = 1,
-    parameter integer ENABLE_ZBUF = 0,
+    parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,              // build options: see gpu_top
+    parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,
+    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
+    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
-    localparam integer WORDS = 320 * 240 / SPAN_W,
+    localparam integer WORDS = gpu_pkg::GPU_FB_PIXELS / SPAN_W,   // spans in a frame
     localparam integer WAW = $clog2(WORDS),
-    localparam integer COL_W = $clog2(320 / SPAN_W),
-    localparam integer CNT_W = $clog2(SPAN_W + 1),
-    localparam integer EDGE_W = 36,
-    localparam integer Z_W = 52,
-    localparam integer ZSTEP_W = 40
+    localparam integer CNT_W = $clog2(SPAN_W + 1)
 ) (
     input  wire                clk,
     input  wire                rst,
@@ -50,14 +43,7 @@ module gpu_raster #(
     output reg  [31:0]         done_seq,
     output reg  [31:0]         frame_count,
     output reg  [2:0]          errors,       // {ERR_KIND, ERR_COUNT, ERR_VTX_INDEX}
-    output reg  [31:0]         perf_busy_cycles,
-    output reg  [31:0]         perf_tris_in,
-    output reg  [31:0]         perf_tris_drawn,
-    output reg  [31:0]         perf_tris_rejected,
-    output reg  [31:0]         perf_pixels,
-    output reg  [31:0]         perf_samples,
-    output reg  [31:0]         perf_spans_written,
-    output reg  [31:0]         perf_spans_visited,
+    output gpu_pkg::perf_t     perf,         // the PERF_* counters
     // index RAM read port (both words of a primitive)
     output wire                idx_rd_en,
     output wire [TI_W-1:0]     idx_rd_addr,
@@ -93,18 +79,7 @@ module gpu_raster #(
     // ---- front end and back end ----
     wire setup_idle, walker_idle;
     wire desc_valid, desc_ready;
-    wire desc_is_line, desc_xmajor, desc_xneg, desc_yneg;
-    wire [7:0] desc_color, desc_row_lo, desc_row_hi;
-    wire signed [EDGE_W-1:0] desc_e0, desc_e1, desc_e2, desc_sx0, desc_sx1, desc_sx2;
-    wire signed [EDGE_W-1:0] desc_sy0, desc_sy1, desc_sy2;
-    wire [2:0] desc_top_left;
-    wire [COL_W-1:0] desc_col_lo, desc_col_hi;
-    wire signed [11:0] desc_line_x, desc_line_y;
-    wire [11:0] desc_line_n;
-    wire [12:0] desc_two_a_major, desc_two_a_minor;
-    wire signed [14:0] desc_line_err;
-    wire signed [Z_W-1:0] desc_z_start;
-    wire signed [ZSTEP_W-1:0] desc_z_dx, desc_z_dy;
+    gpu_pkg::desc_t desc;
     wire walker_z_wr_en;
     wire [WAW-1:0] walker_z_wr_addr;
     wire [SPAN_W*16-1:0] walker_z_wr_data;
@@ -127,16 +102,7 @@ module gpu_raster #(
         .tri_base(tri_base), .tri_count(tri_count), .ctrl_ztest(ztest), .idle(setup_idle),
         .idx_rd_en(idx_rd_en), .idx_rd_addr(idx_rd_addr), .idx_rd_data(idx_rd_data),
         .vtx_rd_en(vtx_rd_en), .vtx_rd_addr(vtx_rd_addr), .vtx_rd_data(vtx_rd_data),
-        .vz_rd_data(vz_rd_data), .out_valid(desc_valid), .out_ready(desc_ready), .out_is_line(desc_is_line),
-        .out_color(desc_color), .out_e0(desc_e0), .out_e1(desc_e1), .out_e2(desc_e2),
-        .out_sx0(desc_sx0), .out_sx1(desc_sx1), .out_sx2(desc_sx2),
-        .out_sy0(desc_sy0), .out_sy1(desc_sy1), .out_sy2(desc_sy2), .out_top_left(desc_top_left),
-        .out_col_lo(desc_col_lo), .out_col_hi(desc_col_hi), .out_row_lo(desc_row_lo),
-        .out_row_hi(desc_row_hi), .out_line_x(desc_line_x), .out_line_y(desc_line_y),
-        .out_line_n(desc_line_n), .out_line_xmajor(desc_xmajor), .out_line_xneg(desc_xneg),
-        .out_line_yneg(desc_yneg), .out_line_two_a_major(desc_two_a_major),
-        .out_line_two_a_minor(desc_two_a_minor), .out_line_err(desc_line_err),
-        .out_z_start(desc_z_start), .out_z_dx(desc_z_dx), .out_z_dy(desc_z_dy),
+        .vz_rd_data(vz_rd_data), .out_valid(desc_valid), .out_ready(desc_ready), .out_desc(desc),
         .ev_prim_in(ev_prim_in), .ev_rejected(ev_rejected), .ev_drawn(ev_drawn),
         .ev_samples(ev_samples), .ev_err_kind(ev_err_kind), .ev_err_index(ev_err_index)
     );
@@ -146,16 +112,7 @@ module gpu_raster #(
 
     gpu_span_walker #(.SPAN_W(SPAN_W), .ENABLE_ZBUF(ENABLE_ZBUF)) u_walker (
         .clk(clk), .rst(pipe_rst),
-        .in_valid(desc_valid && walk_enable), .in_ready(walker_ready), .in_is_line(desc_is_line),
-        .in_color(desc_color), .in_e0(desc_e0), .in_e1(desc_e1), .in_e2(desc_e2),
-        .in_sx0(desc_sx0), .in_sx1(desc_sx1), .in_sx2(desc_sx2),
-        .in_sy0(desc_sy0), .in_sy1(desc_sy1), .in_sy2(desc_sy2), .in_top_left(desc_top_left),
-        .in_col_lo(desc_col_lo), .in_col_hi(desc_col_hi), .in_row_lo(desc_row_lo),
-        .in_row_hi(desc_row_hi), .in_line_x(desc_line_x), .in_line_y(desc_line_y),
-        .in_line_n(desc_line_n), .in_line_xmajor(desc_xmajor), .in_line_xneg(desc_xneg),
-        .in_line_yneg(desc_yneg), .in_line_two_a_major(desc_two_a_major),
-        .in_line_two_a_minor(desc_two_a_minor), .in_line_err(desc_line_err),
-        .in_z_start(desc_z_start), .in_z_dx(desc_z_dx), .in_z_dy(desc_z_dy), .ztest(ztest),
+        .in_valid(desc_valid && walk_enable), .in_ready(walker_ready), .in_desc(desc), .ztest(ztest),
         .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data),
         .z_wr_en(walker_z_wr_en), .z_wr_addr(walker_z_wr_addr), .z_wr_data(walker_z_wr_data),
         .z_wr_mask(walker_z_wr_mask),
@@ -197,39 +154,26 @@ module gpu_raster #(
                 done_seq <= 32'd0;
                 frame_count <= 32'd0;
                 errors <= 3'd0;
-                perf_busy_cycles <= 32'd0;
-                perf_tris_in <= 32'd0;
-                perf_tris_drawn <= 32'd0;
-                perf_tris_rejected <= 32'd0;
-                perf_pixels <= 32'd0;
-                perf_samples <= 32'd0;
-                perf_spans_written <= 32'd0;
-                perf_spans_visited <= 32'd0;
+                perf <= '0;
             end
         end else begin
             if (state_q != S_IDLE && state_q != S_VBLANK && state_q != S_FINISH) begin
-                perf_busy_cycles <= perf_busy_cycles + 32'd1;
+                perf.busy_cycles <= perf.busy_cycles + 32'd1;
             end
-            perf_tris_in <= perf_tris_in + 32'(ev_prim_in);
-            perf_tris_drawn <= perf_tris_drawn + 32'(ev_drawn);
-            perf_tris_rejected <= perf_tris_rejected + 32'(ev_rejected);
-            perf_samples <= perf_samples + 32'(ev_samples);
-            perf_pixels <= perf_pixels + 32'(ev_pixels);
-            perf_spans_written <= perf_spans_written + 32'(ev_span_written);
-            perf_spans_visited <= perf_spans_visited + 32'(ev_span_visit);
+            perf.tris_in <= perf.tris_in + 32'(ev_prim_in);
+            perf.tris_drawn <= perf.tris_drawn + 32'(ev_drawn);
+            perf.tris_rejected <= perf.tris_rejected + 32'(ev_rejected);
+            perf.samples <= perf.samples + 32'(ev_samples);
+            perf.pixels <= perf.pixels + 32'(ev_pixels);
+            perf.spans_written <= perf.spans_written + 32'(ev_span_written);
+            perf.spans_visited <= perf.spans_visited + 32'(ev_span_visit);
             if (ev_err_index) errors[0] <= 1'b1;
             if (ev_err_kind) errors[2] <= 1'b1;
             case (state_q)
                 S_IDLE: if (start) begin
                     errors <= 3'd0;
-                    perf_busy_cycles <= 32'd1;
-                    perf_tris_in <= 32'd0;
-                    perf_tris_drawn <= 32'd0;
-                    perf_tris_rejected <= 32'd0;
-                    perf_pixels <= 32'd0;
-                    perf_samples <= 32'd0;
-                    perf_spans_written <= 32'd0;
-                    perf_spans_visited <= 32'd0;
+                    perf <= '0;
+                    perf.busy_cycles <= 32'd1;
                     clear_addr_q <= {WAW{1'b0}};
                     state_q <= S_CHECK;
                 end
@@ -266,13 +210,15 @@ module gpu_raster #(
     end
 
 `ifndef SYNTHESIS
-    // The range argument, checked: every edge value handed to the walker fits 34 bits signed.
+    // The range argument (gpu_pkg), checked: every edge value handed to the walker fits
+    // EDGE_NEED_W bits signed.
+    localparam signed [gpu_pkg::EDGE_W-1:0] EDGE_LIMIT = gpu_pkg::EDGE_W'(1) <<< (gpu_pkg::EDGE_NEED_W - 1);
     always @(posedge clk) begin
-        if (!rst && desc_valid && desc_ready && !desc_is_line) begin
-            assert (desc_e0 < (36'sd1 <<< 33) && desc_e0 >= -(36'sd1 <<< 33)
-                 && desc_e1 < (36'sd1 <<< 33) && desc_e1 >= -(36'sd1 <<< 33)
-                 && desc_e2 < (36'sd1 <<< 33) && desc_e2 >= -(36'sd1 <<< 33))
-                else $error("gpu_raster: edge value exceeds 34 bits");
+        if (!rst && desc_valid && desc_ready && !desc.is_line) begin
+            assert (desc.e0 < EDGE_LIMIT && desc.e0 >= -EDGE_LIMIT
+                 && desc.e1 < EDGE_LIMIT && desc.e1 >= -EDGE_LIMIT
+                 && desc.e2 < EDGE_LIMIT && desc.e2 >= -EDGE_LIMIT)
+                else $error("gpu_raster: edge value exceeds EDGE_NEED_W bits");
         end
     end
 `endif

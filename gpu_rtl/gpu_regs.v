@@ -1,17 +1,17 @@
 // gpu_regs: the GPU's bus slave — register file, window decode and buffer write routing.
 //
-// Contract (contract/gpu-contract.md, offsets from gpu_regs.vh): aligned 32-bit accesses. A write is taken
-// in the cycle bus_valid && bus_write is high (no wait states). A read returns bus_rdata with
-// bus_rvalid one cycle after bus_valid && !bus_write. Writes to the palette, the buffers and the batch
-// registers while busy are dropped and flag ERR_WRITE_BUSY; a DOORBELL write while idle latches its tag
-// and pulses start for one cycle; a RESET write (busy or not) pulses soft_reset. The batch registers
-// hold still while busy, so the rasterizer reads
-// them directly.
+// Contract (contract/gpu-contract.md; offsets and fields are gpu_pkg::GPU_*, generated from the
+// contract): aligned 32-bit accesses. A write is taken in the cycle bus_valid && bus_write is high
+// (no wait states). A read returns bus_rdata with bus_rvalid one cycle after bus_valid && !bus_write.
+// Writes to the palette, the buffers and the batch registers while busy are dropped and flag
+// ERR_WRITE_BUSY; a DOORBELL write while idle latches its tag and pulses start for one cycle; a RESET
+// write (busy or not) pulses soft_reset. The batch registers hold still while busy, so the rasterizer
+// reads them directly.
 `default_nettype none
 
 module gpu_regs #(
-    parameter integer VTX_CAP = 1024,  // vertices; the vertex RAM holds 2 words per vertex
-    parameter integer TRI_CAP = 512,   // primitives; the index RAM holds 2 words per primitive
+    parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,  // vertices; the vertex RAM holds 2 words each
+    parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,  // primitives; the index RAM holds 2 words each
     parameter [31:0]  CAPS = 32'h0,    // value of the CAPS register, set by gpu_top from its parameters
     localparam integer VTX_AW = $clog2(VTX_CAP * 2),
     localparam integer IDX_AW = $clog2(TRI_CAP * 2)
@@ -51,32 +51,24 @@ module gpu_regs #(
     input  wire [31:0]       done_seq,
     input  wire [31:0]       frame_count,
     input  wire [2:0]        raster_errors,  // {ERR_KIND, ERR_COUNT, ERR_VTX_INDEX}
-    input  wire [31:0]       perf_busy_cycles,
-    input  wire [31:0]       perf_tris_in,
-    input  wire [31:0]       perf_tris_drawn,
-    input  wire [31:0]       perf_tris_rejected,
-    input  wire [31:0]       perf_pixels,
-    input  wire [31:0]       perf_samples,
-    input  wire [31:0]       perf_spans_written,
-    input  wire [31:0]       perf_spans_visited
+    input  gpu_pkg::perf_t   perf          // the PERF_* counters
 );
-`include "contract/gpu_regs.vh"  // relative to the repository root, where every tool runs
-
     wire [16:0] byte_addr = {bus_addr, 2'b00};
     wire is_write = bus_valid && bus_write;
 
     // Window decode. Buffer offsets beyond the RAM's capacity are unmapped.
-    wire in_regs = byte_addr < GPU_WIN_REGS + GPU_WIN_REGS_BYTES;
-    wire in_pal  = byte_addr >= GPU_WIN_PALETTE && byte_addr < GPU_WIN_PALETTE + GPU_WIN_PALETTE_BYTES;
-    wire [16:0] vtx_offset = byte_addr - GPU_WIN_VTX;
-    wire [16:0] idx_offset = byte_addr - GPU_WIN_IDX;
-    wire in_vtx = byte_addr >= GPU_WIN_VTX && vtx_offset < 17'(VTX_CAP * 8);
-    wire in_idx = byte_addr >= GPU_WIN_IDX && idx_offset < 17'(TRI_CAP * 8);
+    wire in_regs = byte_addr < gpu_pkg::GPU_WIN_REGS + gpu_pkg::GPU_WIN_REGS_BYTES;
+    wire in_pal  = byte_addr >= gpu_pkg::GPU_WIN_PALETTE
+                && byte_addr < gpu_pkg::GPU_WIN_PALETTE + gpu_pkg::GPU_WIN_PALETTE_BYTES;
+    wire [16:0] vtx_offset = byte_addr - gpu_pkg::GPU_WIN_VTX;
+    wire [16:0] idx_offset = byte_addr - gpu_pkg::GPU_WIN_IDX;
+    wire in_vtx = byte_addr >= gpu_pkg::GPU_WIN_VTX && vtx_offset < 17'(VTX_CAP * 8);
+    wire in_idx = byte_addr >= gpu_pkg::GPU_WIN_IDX && idx_offset < 17'(TRI_CAP * 8);
     wire [7:0] reg_offset = byte_addr[7:0];
-    wire is_batch_reg = in_regs && (reg_offset == GPU_REG_CTRL || reg_offset == GPU_REG_VTX_BASE
-        || reg_offset == GPU_REG_VTX_COUNT || reg_offset == GPU_REG_TRI_BASE
-        || reg_offset == GPU_REG_TRI_COUNT || reg_offset == GPU_REG_CLEAR_COLOR
-        || reg_offset == GPU_REG_DOORBELL);
+    wire is_batch_reg = in_regs && (reg_offset == gpu_pkg::GPU_REG_CTRL
+        || reg_offset == gpu_pkg::GPU_REG_VTX_BASE || reg_offset == gpu_pkg::GPU_REG_VTX_COUNT
+        || reg_offset == gpu_pkg::GPU_REG_TRI_BASE || reg_offset == gpu_pkg::GPU_REG_TRI_COUNT
+        || reg_offset == gpu_pkg::GPU_REG_CLEAR_COLOR || reg_offset == gpu_pkg::GPU_REG_DOORBELL);
     wire write_dropped = is_write && busy && (in_pal || in_vtx || in_idx || is_batch_reg);
     wire write_ok = is_write && !busy;
 
@@ -110,24 +102,24 @@ module gpu_regs #(
             start <= 1'b0;
             soft_reset <= 1'b0;
             // RESET is taken even while busy: it is how a watchdog recovers a stuck batch.
-            if (is_write && in_regs && reg_offset == GPU_REG_RESET) begin
+            if (is_write && in_regs && reg_offset == gpu_pkg::GPU_REG_RESET) begin
                 reset_value_q <= bus_wdata;
                 soft_reset <= 1'b1;
             end
             if (write_ok && in_regs) begin
                 case (reg_offset)
-                    GPU_REG_CTRL: begin
-                        ctrl_clear <= bus_wdata[GPU_CTRL_CLEAR_LSB];
-                        ctrl_swap <= bus_wdata[GPU_CTRL_SWAP_LSB];
-                        ctrl_ztest <= bus_wdata[GPU_CTRL_ZTEST_LSB];
-                        ctrl_zclear <= bus_wdata[GPU_CTRL_ZCLEAR_LSB];
+                    gpu_pkg::GPU_REG_CTRL: begin
+                        ctrl_clear <= bus_wdata[gpu_pkg::GPU_CTRL_CLEAR_LSB];
+                        ctrl_swap <= bus_wdata[gpu_pkg::GPU_CTRL_SWAP_LSB];
+                        ctrl_ztest <= bus_wdata[gpu_pkg::GPU_CTRL_ZTEST_LSB];
+                        ctrl_zclear <= bus_wdata[gpu_pkg::GPU_CTRL_ZCLEAR_LSB];
                     end
-                    GPU_REG_VTX_BASE:    vtx_base <= bus_wdata;
-                    GPU_REG_VTX_COUNT:   vtx_count <= bus_wdata;
-                    GPU_REG_TRI_BASE:    tri_base <= bus_wdata;
-                    GPU_REG_TRI_COUNT:   tri_count <= bus_wdata;
-                    GPU_REG_CLEAR_COLOR: clear_color <= bus_wdata[7:0];
-                    GPU_REG_DOORBELL: begin
+                    gpu_pkg::GPU_REG_VTX_BASE:    vtx_base <= bus_wdata;
+                    gpu_pkg::GPU_REG_VTX_COUNT:   vtx_count <= bus_wdata;
+                    gpu_pkg::GPU_REG_TRI_BASE:    tri_base <= bus_wdata;
+                    gpu_pkg::GPU_REG_TRI_COUNT:   tri_count <= bus_wdata;
+                    gpu_pkg::GPU_REG_CLEAR_COLOR: clear_color <= bus_wdata[7:0];
+                    gpu_pkg::GPU_REG_DOORBELL: begin
                         doorbell_tag <= bus_wdata;
                         start <= 1'b1;
                         err_write_busy_q <= 1'b0;  // errors are per batch
@@ -142,43 +134,47 @@ module gpu_regs #(
     end
 
     // Read mux, registered: one cycle of latency.
+    wire [31:0] ctrl_value = (32'(ctrl_clear) << gpu_pkg::GPU_CTRL_CLEAR_LSB)
+                           | (32'(ctrl_swap) << gpu_pkg::GPU_CTRL_SWAP_LSB)
+                           | (32'(ctrl_ztest) << gpu_pkg::GPU_CTRL_ZTEST_LSB)
+                           | (32'(ctrl_zclear) << gpu_pkg::GPU_CTRL_ZCLEAR_LSB);
+    wire [31:0] status_value = (32'(busy) << gpu_pkg::GPU_STATUS_BUSY_LSB)
+                             | (32'(front) << gpu_pkg::GPU_STATUS_FRONT_LSB);
+    wire [31:0] errors_value = (32'(raster_errors[0]) << gpu_pkg::GPU_ERR_VTX_INDEX_LSB)
+                             | (32'(raster_errors[1]) << gpu_pkg::GPU_ERR_COUNT_LSB)
+                             | (32'(raster_errors[2]) << gpu_pkg::GPU_ERR_KIND_LSB)
+                             | (32'(err_write_busy_q) << gpu_pkg::GPU_ERR_WRITE_BUSY_LSB);
     reg [31:0] reg_value;
     always @(*) begin
         case (reg_offset)
-            GPU_REG_ID:                 reg_value = GPU_ID_VALUE;
-            GPU_REG_VERSION:            reg_value = GPU_VERSION_VALUE;
-            GPU_REG_CAPS:               reg_value = CAPS;
-            GPU_REG_VTX_CAP:            reg_value = 32'(VTX_CAP);
-            GPU_REG_TRI_CAP:            reg_value = 32'(TRI_CAP);
-            GPU_REG_FB_SIZE:            reg_value = {GPU_FB_HEIGHT[15:0], GPU_FB_WIDTH[15:0]};
-            GPU_REG_CTRL:               reg_value = (32'(ctrl_clear) << GPU_CTRL_CLEAR_LSB)
-                                                  | (32'(ctrl_swap) << GPU_CTRL_SWAP_LSB)
-                                                  | (32'(ctrl_ztest) << GPU_CTRL_ZTEST_LSB)
-                                                  | (32'(ctrl_zclear) << GPU_CTRL_ZCLEAR_LSB);
-            GPU_REG_VTX_BASE:           reg_value = vtx_base;
-            GPU_REG_VTX_COUNT:          reg_value = vtx_count;
-            GPU_REG_TRI_BASE:           reg_value = tri_base;
-            GPU_REG_TRI_COUNT:          reg_value = tri_count;
-            GPU_REG_CLEAR_COLOR:        reg_value = {24'd0, clear_color};
-            GPU_REG_DOORBELL:           reg_value = doorbell_tag;
-            GPU_REG_RESET:              reg_value = reset_value_q;
-            GPU_REG_STATUS:             reg_value = (32'(busy) << GPU_STATUS_BUSY_LSB)
-                                                  | (32'(front) << GPU_STATUS_FRONT_LSB);
-            GPU_REG_DONE_SEQ:           reg_value = done_seq;
-            GPU_REG_FRAME_COUNT:        reg_value = frame_count;
-            GPU_REG_ERRORS:             reg_value = (32'(raster_errors[0]) << GPU_ERR_VTX_INDEX_LSB)
-                                                  | (32'(raster_errors[1]) << GPU_ERR_COUNT_LSB)
-                                                  | (32'(raster_errors[2]) << GPU_ERR_KIND_LSB)
-                                                  | (32'(err_write_busy_q) << GPU_ERR_WRITE_BUSY_LSB);
-            GPU_REG_PERF_BUSY_CYCLES:   reg_value = perf_busy_cycles;
-            GPU_REG_PERF_TRIS_IN:       reg_value = perf_tris_in;
-            GPU_REG_PERF_TRIS_DRAWN:    reg_value = perf_tris_drawn;
-            GPU_REG_PERF_TRIS_REJECTED: reg_value = perf_tris_rejected;
-            GPU_REG_PERF_PIXELS:        reg_value = perf_pixels;
-            GPU_REG_PERF_SAMPLES:       reg_value = perf_samples;
-            GPU_REG_PERF_SPANS_WRITTEN: reg_value = perf_spans_written;
-            GPU_REG_PERF_SPANS_VISITED: reg_value = perf_spans_visited;
-            default:                    reg_value = 32'd0;
+            gpu_pkg::GPU_REG_ID:                 reg_value = gpu_pkg::GPU_ID_VALUE;
+            gpu_pkg::GPU_REG_VERSION:            reg_value = gpu_pkg::GPU_VERSION_VALUE;
+            gpu_pkg::GPU_REG_CAPS:               reg_value = CAPS;
+            gpu_pkg::GPU_REG_VTX_CAP:            reg_value = 32'(VTX_CAP);
+            gpu_pkg::GPU_REG_TRI_CAP:            reg_value = 32'(TRI_CAP);
+            gpu_pkg::GPU_REG_FB_SIZE:            reg_value = {16'(gpu_pkg::GPU_FB_HEIGHT),
+                                                              16'(gpu_pkg::GPU_FB_WIDTH)};
+            gpu_pkg::GPU_REG_CTRL:               reg_value = ctrl_value;
+            gpu_pkg::GPU_REG_VTX_BASE:           reg_value = vtx_base;
+            gpu_pkg::GPU_REG_VTX_COUNT:          reg_value = vtx_count;
+            gpu_pkg::GPU_REG_TRI_BASE:           reg_value = tri_base;
+            gpu_pkg::GPU_REG_TRI_COUNT:          reg_value = tri_count;
+            gpu_pkg::GPU_REG_CLEAR_COLOR:        reg_value = {24'd0, clear_color};
+            gpu_pkg::GPU_REG_DOORBELL:           reg_value = doorbell_tag;
+            gpu_pkg::GPU_REG_RESET:              reg_value = reset_value_q;
+            gpu_pkg::GPU_REG_STATUS:             reg_value = status_value;
+            gpu_pkg::GPU_REG_DONE_SEQ:           reg_value = done_seq;
+            gpu_pkg::GPU_REG_FRAME_COUNT:        reg_value = frame_count;
+            gpu_pkg::GPU_REG_ERRORS:             reg_value = errors_value;
+            gpu_pkg::GPU_REG_PERF_BUSY_CYCLES:   reg_value = perf.busy_cycles;
+            gpu_pkg::GPU_REG_PERF_TRIS_IN:       reg_value = perf.tris_in;
+            gpu_pkg::GPU_REG_PERF_TRIS_DRAWN:    reg_value = perf.tris_drawn;
+            gpu_pkg::GPU_REG_PERF_TRIS_REJECTED: reg_value = perf.tris_rejected;
+            gpu_pkg::GPU_REG_PERF_PIXELS:        reg_value = perf.pixels;
+            gpu_pkg::GPU_REG_PERF_SAMPLES:       reg_value = perf.samples;
+            gpu_pkg::GPU_REG_PERF_SPANS_WRITTEN: reg_value = perf.spans_written;
+            gpu_pkg::GPU_REG_PERF_SPANS_VISITED: reg_value = perf.spans_visited;
+            default:                             reg_value = 32'd0;
         endcase
     end
 

@@ -16,44 +16,34 @@
 // covered span plus one per row and per span the boundary moves. Bounding-box limits (col_lo..col_hi,
 // row_lo..row_hi) stop the walk at the screen edge.
 //
-// Widths: edge values at lanes -1 .. SPAN_W of any on-screen span are values at pixel centres within
-// one pixel of the screen, inside the 34-bit bound argued in gpu_raster.v; EDGE_W = 36.
+// Widths: the descriptor is a gpu_pkg::desc_t. Edge values at lanes -1 .. SPAN_W of any on-screen
+// span are values at pixel centres within one pixel of the screen, inside the EDGE_NEED_W-bit bound
+// argued in gpu_pkg.sv; EDGE_W = 36. The depth accumulator's bound (Z_W) is argued there too.
 `default_nettype none
 
 module gpu_span_walker #(
-    parameter integer SPAN_W = 8,
-    parameter integer ENABLE_ZBUF = 0,  // depth test stage and depth-buffer port
-    localparam integer COL_W = $clog2(320 / SPAN_W),
-    localparam integer WORDS_PER_ROW = 320 / SPAN_W,
-    localparam integer WAW = $clog2(320 * 240 / SPAN_W),
+    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,           // build options: see gpu_top
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF, // depth test stage and depth-
+                                                                      // buffer port
+    localparam integer WORDS_PER_ROW = gpu_pkg::GPU_FB_WIDTH / SPAN_W,
+    localparam integer COL_W = $clog2(WORDS_PER_ROW),                 // span column
+    localparam integer WAW = $clog2(gpu_pkg::GPU_FB_PIXELS / SPAN_W),
     localparam integer LANE_AW = (SPAN_W > 1) ? $clog2(SPAN_W) : 1,
     localparam integer CNT_W = $clog2(SPAN_W + 1),
-    localparam integer EDGE_W = 36,
-    localparam integer Z_W = 52,
-    localparam integer ZSTEP_W = 40
+    localparam integer EDGE_W = gpu_pkg::EDGE_W,
+    localparam integer Z_W = gpu_pkg::Z_W,
+    localparam integer ZSTEP_W = gpu_pkg::ZSTEP_W,
+    localparam integer PIX_W = gpu_pkg::PIX_W,                        // line pixel coordinates
+    localparam integer LERR_W = gpu_pkg::LERR_W,
+    localparam integer ROW_W = gpu_pkg::ROW_W,
+    localparam integer X_W = gpu_pkg::X_W                             // a pixel x on screen
 ) (
     input  wire                     clk,
     input  wire                     rst,
     // descriptor (see gpu_prim_setup)
     input  wire                     in_valid,
     output wire                     in_ready,
-    input  wire                     in_is_line,
-    input  wire [7:0]               in_color,
-    input  wire signed [EDGE_W-1:0] in_e0, in_e1, in_e2,
-    input  wire signed [EDGE_W-1:0] in_sx0, in_sx1, in_sx2,
-    input  wire signed [EDGE_W-1:0] in_sy0, in_sy1, in_sy2,
-    input  wire [2:0]               in_top_left,
-    input  wire [COL_W-1:0]         in_col_lo, in_col_hi,
-    input  wire [7:0]               in_row_lo, in_row_hi,
-    input  wire signed [11:0]       in_line_x, in_line_y,
-    input  wire [11:0]              in_line_n,
-    input  wire                     in_line_xmajor,
-    input  wire                     in_line_xneg, in_line_yneg,
-    input  wire [12:0]              in_line_two_a_major,
-    input  wire [12:0]              in_line_two_a_minor,
-    input  wire signed [14:0]       in_line_err,
-    input  wire signed [Z_W-1:0]    in_z_start,
-    input  wire signed [ZSTEP_W-1:0] in_z_dx, in_z_dy,
+    input  gpu_pkg::desc_t          in_desc,      // the primitive; columns in its low COL_W bits
     input  wire                     ztest,        // CTRL.ZTEST of the batch
     // depth buffer (ENABLE_ZBUF): read the span's depths, write the winners'
     output wire                     z_rd_en,
@@ -77,14 +67,14 @@ module gpu_span_walker #(
     localparam [1:0] S_IDLE = 2'd0, S_SEEK = 2'd1, S_SCAN = 2'd2, S_LINE = 2'd3;
     reg [1:0] state_q;
 
-    reg [7:0] color_q;
+    reg [gpu_pkg::COLOR_W-1:0] color_q;
     reg signed [EDGE_W-1:0] e_q [0:2];       // edges at lane 0 of the current span
     reg signed [EDGE_W-1:0] efirst_q [0:2];  // edges at lane 0 of the row's starting span
     reg signed [EDGE_W-1:0] sx_q [0:2];
     reg signed [EDGE_W-1:0] sy_q [0:2];
     reg [2:0] tl_q;
     reg [COL_W-1:0] col_q, col_first_q, col_lo_q, col_hi_q;
-    reg [7:0] row_q, row_hi_q;
+    reg [ROW_W-1:0] row_q, row_hi_q;
     reg [WAW-1:0] row_addr_q;                // word address of (col 0, row_q)
 
     // ---- lane evaluation: edge k at lane l is e + l * step (l = -1 .. SPAN_W) ----
@@ -157,16 +147,19 @@ module gpu_span_walker #(
     wire row_end = row_empty || (draw_span && right_done);
 
     // ---- lines ----
-    reg signed [11:0] lx_q, ly_q;
-    reg [11:0] ln_q;
+    reg signed [PIX_W-1:0] lx_q, ly_q;
+    reg [PIX_W-1:0] ln_q;
     reg lxmajor_q, lxneg_q, lyneg_q;
-    reg [12:0] l2maj_q, l2min_q;
-    reg signed [14:0] lerr_q;
-    wire line_on_screen = lx_q >= 0 && lx_q < 320 && ly_q >= 0 && ly_q < 240;
-    wire [8:0] line_px = lx_q[8:0];
-    wire [7:0] line_py = ly_q[7:0];
+    reg [PIX_W:0] l2maj_q, l2min_q;
+    reg signed [LERR_W-1:0] lerr_q;
+    localparam signed [PIX_W-1:0] LINE_X_END = PIX_W'(gpu_pkg::GPU_FB_WIDTH);   // first column off screen
+    localparam signed [PIX_W-1:0] LINE_Y_END = PIX_W'(gpu_pkg::GPU_FB_HEIGHT);  // first row off screen
+    localparam signed [PIX_W-1:0] PIX_ONE = 1;
+    wire line_on_screen = lx_q >= 0 && lx_q < LINE_X_END && ly_q >= 0 && ly_q < LINE_Y_END;
+    wire [X_W-1:0] line_px = lx_q[X_W-1:0];
+    wire [ROW_W-1:0] line_py = ly_q[ROW_W-1:0];
     wire [WAW-1:0] line_addr = WAW'(32'(line_py) * WORDS_PER_ROW + 32'(line_px) / SPAN_W);
-    wire [LANE_AW-1:0] line_lane = (SPAN_W > 1) ? LANE_AW'(line_px % 9'(SPAN_W)) : {LANE_AW{1'b0}};
+    wire [LANE_AW-1:0] line_lane = (SPAN_W > 1) ? LANE_AW'(line_px % X_W'(SPAN_W)) : {LANE_AW{1'b0}};
 
     // ---- depth of each lane: clamp(floor(Zfix / 2^16), 0, 65535), Zfix stepped like the edges ----
     reg signed [Z_W-1:0] z_q, zfirst_q;
@@ -209,44 +202,44 @@ module gpu_span_walker #(
             ev_span_written <= 1'b0;
             case (state_q)
                 S_IDLE: if (in_valid) begin
-                    color_q <= in_color;
-                    z_q <= in_z_start;
-                    zfirst_q <= in_z_start;
-                    zdx_q <= in_z_dx;
-                    zdy_q <= in_z_dy;
-                    ztest_q <= ztest && !in_is_line;
-                    if (in_is_line) begin
-                        lx_q <= in_line_x;
-                        ly_q <= in_line_y;
-                        ln_q <= in_line_n;
-                        lxmajor_q <= in_line_xmajor;
-                        lxneg_q <= in_line_xneg;
-                        lyneg_q <= in_line_yneg;
-                        l2maj_q <= in_line_two_a_major;
-                        l2min_q <= in_line_two_a_minor;
-                        lerr_q <= in_line_err;
+                    color_q <= in_desc.color;
+                    z_q <= in_desc.z_start;
+                    zfirst_q <= in_desc.z_start;
+                    zdx_q <= in_desc.z_dx;
+                    zdy_q <= in_desc.z_dy;
+                    ztest_q <= ztest && !in_desc.is_line;
+                    if (in_desc.is_line) begin
+                        lx_q <= in_desc.line_x;
+                        ly_q <= in_desc.line_y;
+                        ln_q <= in_desc.line_n;
+                        lxmajor_q <= in_desc.line_xmajor;
+                        lxneg_q <= in_desc.line_xneg;
+                        lyneg_q <= in_desc.line_yneg;
+                        l2maj_q <= in_desc.line_two_a_major;
+                        l2min_q <= in_desc.line_two_a_minor;
+                        lerr_q <= in_desc.line_err;
                         state_q <= S_LINE;
                     end else begin
-                        e_q[0] <= in_e0;
-                        e_q[1] <= in_e1;
-                        e_q[2] <= in_e2;
-                        efirst_q[0] <= in_e0;
-                        efirst_q[1] <= in_e1;
-                        efirst_q[2] <= in_e2;
-                        sx_q[0] <= in_sx0;
-                        sx_q[1] <= in_sx1;
-                        sx_q[2] <= in_sx2;
-                        sy_q[0] <= in_sy0;
-                        sy_q[1] <= in_sy1;
-                        sy_q[2] <= in_sy2;
-                        tl_q <= in_top_left;
-                        col_q <= in_col_lo;
-                        col_first_q <= in_col_lo;
-                        col_lo_q <= in_col_lo;
-                        col_hi_q <= in_col_hi;
-                        row_q <= in_row_lo;
-                        row_hi_q <= in_row_hi;
-                        row_addr_q <= WAW'(32'(in_row_lo) * WORDS_PER_ROW);
+                        e_q[0] <= in_desc.e0;
+                        e_q[1] <= in_desc.e1;
+                        e_q[2] <= in_desc.e2;
+                        efirst_q[0] <= in_desc.e0;
+                        efirst_q[1] <= in_desc.e1;
+                        efirst_q[2] <= in_desc.e2;
+                        sx_q[0] <= in_desc.sx0;
+                        sx_q[1] <= in_desc.sx1;
+                        sx_q[2] <= in_desc.sx2;
+                        sy_q[0] <= in_desc.sy0;
+                        sy_q[1] <= in_desc.sy1;
+                        sy_q[2] <= in_desc.sy2;
+                        tl_q <= in_desc.top_left;
+                        col_q <= COL_W'(in_desc.col_lo);
+                        col_first_q <= COL_W'(in_desc.col_lo);
+                        col_lo_q <= COL_W'(in_desc.col_lo);
+                        col_hi_q <= COL_W'(in_desc.col_hi);
+                        row_q <= in_desc.row_lo;
+                        row_hi_q <= in_desc.row_hi;
+                        row_addr_q <= WAW'(32'(in_desc.row_lo) * WORDS_PER_ROW);
                         state_q <= S_SEEK;
                     end
                 end
@@ -270,7 +263,7 @@ module gpu_span_walker #(
                             state_q <= S_IDLE;
                         end else begin
                             // The next row starts where this one's coverage started.
-                            row_q <= row_q + 8'd1;
+                            row_q <= row_q + 1'b1;
                             row_addr_q <= row_addr_q + WAW'(WORDS_PER_ROW);
                             col_q <= first_span ? col_q : col_first_q;
                             for (k = 0; k < 3; k = k + 1) begin
@@ -304,14 +297,14 @@ module gpu_span_walker #(
                     end
                     // Bresenham: step the minor axis when the error is positive, then the major one.
                     if (lerr_q > 0) begin
-                        if (lxmajor_q) ly_q <= lyneg_q ? ly_q - 12'sd1 : ly_q + 12'sd1;
-                        else lx_q <= lxneg_q ? lx_q - 12'sd1 : lx_q + 12'sd1;
+                        if (lxmajor_q) ly_q <= lyneg_q ? ly_q - PIX_ONE : ly_q + PIX_ONE;
+                        else lx_q <= lxneg_q ? lx_q - PIX_ONE : lx_q + PIX_ONE;
                     end
-                    lerr_q <= lerr_q - ((lerr_q > 0) ? 15'(l2maj_q) : 15'd0) + 15'(l2min_q);
-                    if (lxmajor_q) lx_q <= lxneg_q ? lx_q - 12'sd1 : lx_q + 12'sd1;
-                    else ly_q <= lyneg_q ? ly_q - 12'sd1 : ly_q + 12'sd1;
-                    ln_q <= ln_q - 12'd1;
-                    if (ln_q == 12'd1) begin
+                    lerr_q <= lerr_q - ((lerr_q > 0) ? LERR_W'(l2maj_q) : {LERR_W{1'b0}}) + LERR_W'(l2min_q);
+                    if (lxmajor_q) lx_q <= lxneg_q ? lx_q - PIX_ONE : lx_q + PIX_ONE;
+                    else ly_q <= lyneg_q ? ly_q - PIX_ONE : ly_q + PIX_ONE;
+                    ln_q <= ln_q - 1'b1;
+                    if (ln_q == PIX_W'(1)) begin
                         state_q <= S_IDLE;
                     end
                 end
@@ -363,12 +356,14 @@ module gpu_span_walker #(
     endgenerate
 
 `ifndef SYNTHESIS
-    // The depth range argument (contract, "Depth"), checked: the Q16 accumulator stays below 2^50
-    // in magnitude at every lane of every span a depth-tested triangle writes.
+    // The depth range argument (gpu_pkg, contract "Depth"), checked: the Q16 accumulator stays
+    // below 2^(Z_NEED_W - 1) = 2^50 in magnitude at every lane of every span a depth-tested
+    // triangle writes.
+    localparam signed [Z_W-1:0] Z_LIMIT = Z_W'(1) <<< (gpu_pkg::Z_NEED_W - 1);
     always @(posedge clk) begin
         if (!rst && ztest_q && (seek || scan) && draw_span) begin
             for (k = 0; k < SPAN_W; k = k + 1) begin
-                assert ((z_q + times(Z_W'(zdx_q), k)) < (52'sd1 <<< 50) && (z_q + times(Z_W'(zdx_q), k)) > -(52'sd1 <<< 50))
+                assert ((z_q + times(Z_W'(zdx_q), k)) < Z_LIMIT && (z_q + times(Z_W'(zdx_q), k)) > -Z_LIMIT)
                     else $error("gpu_span_walker: depth accumulator exceeds 2^50");
             end
         end

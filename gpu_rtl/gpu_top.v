@@ -5,22 +5,26 @@
 // reports DONE_SEQ. Data path: bus -> gpu_regs -> vertex/index RAM -> gpu_raster (gpu_prim_setup ->
 // gpu_span_walker) -> gpu_framebuffer (back) ... (front) -> gpu_vga -> palette -> VGA pins. One clock
 // domain; the VGA pixel rate is clk/PIX_DIV. Build options leave out what a scene does not need and
-// are reported in CAPS.
+// are reported in CAPS; their defaults, the capacities and the frame size come from the contract
+// (gpu_pkg::GPU_*, generated from contract/gpu_contract.toml).
 `default_nettype none
 
 module gpu_top #(
-    parameter integer VTX_CAP = 1024,    // vertex buffer capacity (contract default)
-    parameter integer TRI_CAP = 512,     // index buffer capacity (contract default)
-    parameter integer SPAN_W = 8,        // pixels rasterized per clock: 1, 4, 8 or 16
-    parameter integer ENABLE_LINES = 1,  // line primitives (CAPS_LINES)
-    parameter integer ENABLE_ZBUF = 0,   // 16-bit depth buffer (CAPS_ZBUF): 1.2 Mb more block RAM
+    // Capacities and build options; defaults from the contract (limits and [build] table).
+    parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,                    // vertex buffer capacity
+    parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,                    // index buffer capacity
+    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,              // pixels per clock: 1, 4, 8, 16
+    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,  // line primitives (CAPS_LINES)
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,    // 16-bit depth buffer (CAPS_ZBUF):
+                                                                         // 1.2 Mb more block RAM
     parameter integer PIX_DIV = 4,       // system clocks per VGA pixel (100 MHz / 4 = 25 MHz)
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer VTX_AW = $clog2(VTX_CAP * 2),
     localparam integer IDX_AW = $clog2(TRI_CAP * 2),
-    localparam integer FB_WAW = $clog2(320 * 240 / SPAN_W),
-    localparam integer FB_PAW = $clog2(320 * 240)
+    localparam integer FB_WORDS = gpu_pkg::GPU_FB_PIXELS / SPAN_W,  // spans in a frame
+    localparam integer FB_WAW = $clog2(FB_WORDS),
+    localparam integer FB_PAW = $clog2(gpu_pkg::GPU_FB_PIXELS)
 ) (
     input  wire        clk,
     input  wire        rst,           // synchronous, active high
@@ -39,11 +43,9 @@ module gpu_top #(
     output wire [3:0]  vga_g,
     output wire [3:0]  vga_b
 );
-`include "contract/gpu_regs.vh"  // relative to the repository root, where every tool runs
-
-    localparam [31:0] CAPS = (32'(SPAN_W) << GPU_CAPS_SPAN_W_LSB)
-                           | (32'(ENABLE_LINES != 0) << GPU_CAPS_LINES_LSB)
-                           | (32'(ENABLE_ZBUF != 0) << GPU_CAPS_ZBUF_LSB);
+    localparam [31:0] CAPS = (32'(SPAN_W) << gpu_pkg::GPU_CAPS_SPAN_W_LSB)
+                           | (32'(ENABLE_LINES != 0) << gpu_pkg::GPU_CAPS_LINES_LSB)
+                           | (32'(ENABLE_ZBUF != 0) << gpu_pkg::GPU_CAPS_ZBUF_LSB);
 
     // Batch description and status between the register block and the rasterizer.
     wire        ctrl_clear, ctrl_swap, ctrl_ztest, ctrl_zclear, start, soft_reset;
@@ -51,8 +53,7 @@ module gpu_top #(
     wire [31:0] vtx_base, vtx_count, tri_base, tri_count, doorbell_tag, done_seq, frame_count;
     wire [7:0]  clear_color;
     wire [2:0]  raster_errors;
-    wire [31:0] perf_busy_cycles, perf_tris_in, perf_tris_drawn, perf_tris_rejected;
-    wire [31:0] perf_pixels, perf_samples, perf_spans_written, perf_spans_visited;
+    gpu_pkg::perf_t perf;                 // the PERF_* counters
 
     // RAM ports.
     wire              vtx_wr_en, idx_wr_en, pal_wr_en;
@@ -82,11 +83,7 @@ module gpu_top #(
         .vtx_wr_en(vtx_wr_en), .vtx_wr_addr(vtx_wr_addr), .idx_wr_en(idx_wr_en),
         .idx_wr_addr(idx_wr_addr), .pal_wr_en(pal_wr_en), .pal_wr_addr(pal_wr_addr),
         .busy(busy), .front(front), .done_seq(done_seq), .frame_count(frame_count),
-        .raster_errors(raster_errors), .perf_busy_cycles(perf_busy_cycles),
-        .perf_tris_in(perf_tris_in), .perf_tris_drawn(perf_tris_drawn),
-        .perf_tris_rejected(perf_tris_rejected), .perf_pixels(perf_pixels),
-        .perf_samples(perf_samples), .perf_spans_written(perf_spans_written),
-        .perf_spans_visited(perf_spans_visited)
+        .raster_errors(raster_errors), .perf(perf)
     );
 
     // Depth: the vertices' z (word 1) and the depth buffer exist only in a build that tests depth.
@@ -100,10 +97,10 @@ module gpu_top #(
             gpu_ram #(.DEPTH(VTX_CAP), .WIDTH(16)) u_vtx_z_ram (
                 .clk(clk),
                 .wr_en(vtx_wr_en && vtx_wr_addr[0] == 1'b1), .wr_addr(vtx_wr_addr[VTX_AW-1:1]),
-                .wr_data(bus_wdata[GPU_VTX_Z_LSB +: 16]), .wr_mask(1'b1),
+                .wr_data(bus_wdata[gpu_pkg::GPU_VTX_Z_LSB +: 16]), .wr_mask(1'b1),
                 .rd_en(vtx_rd_en), .rd_addr(vtx_rd_addr), .rd_data(vz_rd_data)
             );
-            gpu_ram #(.DEPTH(320 * 240 / SPAN_W), .WIDTH(SPAN_W * 16), .LANES(SPAN_W)) u_depth (
+            gpu_ram #(.DEPTH(FB_WORDS), .WIDTH(SPAN_W * 16), .LANES(SPAN_W)) u_depth (
                 .clk(clk),
                 .wr_en(z_wr_en), .wr_addr(z_wr_addr), .wr_data(z_wr_data), .wr_mask(z_wr_mask),
                 .rd_en(z_rd_en), .rd_addr(z_rd_addr), .rd_data(z_rd_data)
@@ -131,7 +128,7 @@ module gpu_top #(
         .rd_en(idx_rd_en), .rd_addr(idx_rd_addr), .rd_data(idx_rd_data)
     );
 
-    gpu_ram #(.DEPTH(256), .WIDTH(12), .DISTRIBUTED(1)) u_palette (
+    gpu_ram #(.DEPTH(gpu_pkg::GPU_PALETTE_ENTRIES), .WIDTH(12), .DISTRIBUTED(1)) u_palette (
         .clk(clk),
         .wr_en(pal_wr_en), .wr_addr(pal_wr_addr), .wr_data(bus_wdata[11:0]), .wr_mask(1'b1),
         .rd_en(pal_rd_en), .rd_addr(pal_rd_addr), .rd_data(pal_rd_data)
@@ -144,10 +141,7 @@ module gpu_top #(
         .ctrl_zclear(ctrl_zclear), .vtx_base(vtx_base), .vtx_count(vtx_count), .tri_base(tri_base), .tri_count(tri_count),
         .clear_color(clear_color), .doorbell_tag(doorbell_tag),
         .busy(busy), .done_seq(done_seq), .frame_count(frame_count), .errors(raster_errors),
-        .perf_busy_cycles(perf_busy_cycles), .perf_tris_in(perf_tris_in),
-        .perf_tris_drawn(perf_tris_drawn), .perf_tris_rejected(perf_tris_rejected),
-        .perf_pixels(perf_pixels), .perf_samples(perf_samples),
-        .perf_spans_written(perf_spans_written), .perf_spans_visited(perf_spans_visited),
+        .perf(perf),
         .idx_rd_en(idx_rd_en), .idx_rd_addr(idx_rd_addr), .idx_rd_data(idx_rd_data),
         .vtx_rd_en(vtx_rd_en), .vtx_rd_addr(vtx_rd_addr), .vtx_rd_data(vtx_rd_data),
         .vz_rd_data(vz_rd_data), .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data),

@@ -12,9 +12,8 @@
 
 module gpu_vga #(
     parameter integer PIX_DIV = 4,  // system clocks per pixel: 4 for 100 MHz, 1 with a 25 MHz clock
-    localparam integer FB_W = 320,
-    localparam integer FB_H = 240,
-    localparam integer FB_AW = $clog2(FB_W * FB_H)
+    localparam integer FB_W = gpu_pkg::GPU_FB_WIDTH,   // the contract's frame, shown 2x2
+    localparam integer FB_AW = $clog2(gpu_pkg::GPU_FB_PIXELS)
 ) (
     input  wire             clk,
     input  wire             rst,
@@ -65,14 +64,26 @@ module gpu_vga #(
         end
     end
 
-    // Stage 0: position -> framebuffer address. 320 = 256 + 64, a shift-add.
+    // Stage 0: position -> framebuffer address y * FB_W + x, by shifts and adds of the set bits of
+    // the constant FB_W (two for the contract's width): no multiplier for a constant.
+    function automatic [FB_AW-1:0] times_fb_w(input [7:0] y);
+        integer b;
+        begin
+            times_fb_w = {FB_AW{1'b0}};
+            for (b = 0; b < FB_AW; b = b + 1) begin
+                if (((FB_W >> b) & 1) != 0) begin
+                    times_fb_w = times_fb_w + (FB_AW'(y) << b);
+                end
+            end
+        end
+    endfunction
     wire visible = (h_q < 10'(H_VISIBLE)) && (v_q < 10'(V_VISIBLE));
     wire hsync = (h_q >= 10'(H_VISIBLE + H_FRONT)) && (h_q < 10'(H_VISIBLE + H_FRONT + H_SYNC));
     wire vsync = (v_q >= 10'(V_VISIBLE + V_FRONT)) && (v_q < 10'(V_VISIBLE + V_FRONT + V_SYNC));
     wire [8:0] fb_x = h_q[9:1];
     wire [7:0] fb_y = v_q[8:1];
     assign fb_rd_en   = stb;
-    assign fb_rd_addr = FB_AW'({fb_y, 8'd0}) + FB_AW'({fb_y, 6'd0}) + FB_AW'(fb_x);
+    assign fb_rd_addr = times_fb_w(fb_y) + FB_AW'(fb_x);
 
     // Stage 1: framebuffer data -> palette address. Stage 2: palette data -> output register.
     assign pal_rd_en   = stb;

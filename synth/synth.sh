@@ -10,12 +10,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${1:-build}/synth"
 mkdir -p "$out"
-rtl=$(ls gpu_rtl/*.v | grep -v gpu_top.v | tr '\n' ' ')
+# The RTL in compilation order, from the one list (gpu_rtl/files.f; `//` starts a comment).
+rtl=$(sed -e 's://.*::' gpu_rtl/files.f | tr '\n' ' ')
 zbuf="${ZBUF:-0}"
 [ "$zbuf" = 1 ] && zlabel="depth buffer" || zlabel="no z"
 
 echo "synth: yosys synth_xilinx (xc7) on gpu_top, ENABLE_ZBUF=$zbuf ..." >&2
-yosys -q -l "$out/xc7.log" 2>"$out/xc7.warnings" -p "read_verilog -sv -Igpu_rtl $rtl gpu_rtl/gpu_top.v; \
+yosys -q -l "$out/xc7.log" 2>"$out/xc7.warnings" -p "read_verilog -sv $rtl; \
     chparam -set ENABLE_ZBUF $zbuf gpu_top; synth_xilinx -family xc7 -top gpu_top -flatten; tee -q -o $out/xc7_stat.txt stat" >/dev/null
 
 count() { awk -v pat="$1" '$1 ~ pat && $2 ~ /^[0-9]+$/ { n += $2 } END { print n + 0 }' "$out/xc7_stat.txt"; }
@@ -28,7 +29,7 @@ dsps=$(count '^DSP48E1$')
 carry=$(count '^CARRY4$')
 
 echo "synth: yosys synth_ice40 + nextpnr-ice40 (hx8k) on the span walker ..." >&2
-yosys -q -l "$out/ice40.log" 2>"$out/ice40.warnings" -p "read_verilog -sv -Igpu_rtl $rtl synth/ice40_walker_core.v; \
+yosys -q -l "$out/ice40.log" 2>"$out/ice40.warnings" -p "read_verilog -sv $rtl synth/ice40_walker_core.v; \
     synth_ice40 -top ice40_walker_core -json $out/ice40.json" >/dev/null
 nextpnr-ice40 --hx8k --package ct256 --json "$out/ice40.json" --freq 50 --seed 1 \
     --timing-allow-fail --report "$out/ice40_report.json" >"$out/nextpnr.log" 2>&1 || { tail -20 "$out/nextpnr.log"; exit 1; }

@@ -1,0 +1,12 @@
+// The GPU's RTL, in compilation order (the package first): the one list the Makefile (lint,
+// simulators), synth/synth.sh and the tests read. Paths are relative to the repository root.
+gpu_rtl/gpu_pkg.sv
+gpu_rtl/gpu_ram.v
+gpu_rtl/gpu_div.v
+gpu_rtl/gpu_regs.v
+gpu_rtl/gpu_prim_setup.v
+gpu_rtl/gpu_span_walker.v
+gpu_rtl/gpu_raster.v
+gpu_rtl/gpu_framebuffer.v
+gpu_rtl/gpu_vga.v
+gpu_rtl/gpu_top.v
