@@ -10,32 +10,13 @@
 // 1 a difference (the first one is described), 2 a list that does not parse or a usage error.
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "prim_list.h"
+#include "rng.h"
 
 namespace {
-
-bool same_op(const ListOp &a, const ListOp &b)
-{
-    if (a.kind != b.kind || a.color != b.color) {
-        return false;
-    }
-    for (int i = 0; i < 6; i++) {
-        if (a.v[i] != b.v[i]) {
-            return false;
-        }
-    }
-    for (int i = 0; i < 3; i++) {
-        if (a.z[i] != b.z[i]) {
-            return false;
-        }
-    }
-    return true;
-}
 
 // One op, every field as stored (not through the writer under test).
 std::string describe(const ListOp &op)
@@ -55,7 +36,7 @@ std::string compare(const std::vector<ListOp> &a, const std::vector<ListOp> &b)
         return std::to_string(a.size()) + " ops before, " + std::to_string(b.size()) + " after";
     }
     for (size_t i = 0; i < a.size(); i++) {
-        if (!same_op(a[i], b[i])) {
+        if (a[i] != b[i]) {
             std::string line = prim_list_write({a[i]});
             line.pop_back();  // its '\n'
             return "op " + std::to_string(i + 1) + " was " + describe(a[i]) + ", reads back as " + describe(b[i]) +
@@ -100,24 +81,13 @@ int check_ops(const std::string &name, const std::vector<ListOp> &ops)
     return 0;
 }
 
-struct Rng {  // splitmix64, as in rtl_check.cpp
-    uint64_t state;
-    uint64_t next()
-    {
-        uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    int64_t range(int64_t lo, int64_t hi) { return lo + static_cast<int64_t>(next() % static_cast<uint64_t>(hi - lo + 1)); }
-    // A value of lo..hi: an end of the range, a neighbour of an end or of 0, or anything between.
-    int64_t value(int64_t lo, int64_t hi)
-    {
-        const int64_t special[] = {lo, lo + 1, hi - 1, hi, 0, 1, -1};
-        const int64_t v = special[next() % 7];
-        return (next() % 2 == 0 && v >= lo && v <= hi) ? v : range(lo, hi);
-    }
-};
+// A value of lo..hi: an end of the range, a neighbour of an end or of 0, or anything between.
+int32_t edge_value(Rng &r, int32_t lo, int32_t hi)
+{
+    const int32_t special[] = {lo, lo + 1, hi - 1, hi, 0, 1, -1};
+    const int32_t v = special[r.next() % 7];
+    return (r.next() % 2 == 0 && v >= lo && v <= hi) ? v : r.range(lo, hi);
+}
 
 ListOp random_op(Rng &r, ListOp::Kind kind)
 {
@@ -125,14 +95,14 @@ ListOp random_op(Rng &r, ListOp::Kind kind)
     op.kind = kind;
     const int coords = kind == ListOp::Clear ? 0 : (kind == ListOp::Line ? 4 : 6);
     for (int i = 0; i < coords; i++) {
-        op.v[i] = static_cast<int32_t>(r.value(-32768, 32767));
+        op.v[i] = static_cast<int32_t>(edge_value(r, -32768, 32767));
     }
     if (kind == ListOp::ZTri) {
         for (int i = 0; i < 3; i++) {
-            op.z[i] = static_cast<uint32_t>(r.value(0, 65535));
+            op.z[i] = static_cast<uint32_t>(edge_value(r, 0, 65535));
         }
     }
-    op.color = static_cast<uint32_t>(r.value(0, 255));
+    op.color = static_cast<uint32_t>(edge_value(r, 0, 255));
     return op;
 }
 
@@ -155,13 +125,13 @@ std::vector<ListOp> random_list(Rng &r)
             ops.push_back(op);
         }
     }
-    const int64_t more = r.range(0, 200);
-    for (int64_t i = 0; i < more; i++) {
+    const int32_t more = r.range(0, 200);
+    for (int32_t i = 0; i < more; i++) {
         ops.push_back(random_op(r, static_cast<ListOp::Kind>(r.range(0, 3))));
     }
     // Shuffle, so that the kinds also follow each other in every order.
     for (size_t i = ops.size() - 1; i > 0; i--) {
-        std::swap(ops[i], ops[static_cast<size_t>(r.range(0, static_cast<int64_t>(i)))]);
+        std::swap(ops[i], ops[r.below(static_cast<uint32_t>(i + 1))]);
     }
     return ops;
 }
@@ -192,17 +162,10 @@ int list_roundtrip_main(int argc, char **argv)
     }
     int failed = 0;
     for (const std::string &path : files) {
-        std::ifstream in(path);
-        if (!in) {
-            std::fprintf(stderr, "list-roundtrip: cannot read %s\n", path.c_str());
-            return 2;
-        }
-        std::stringstream text;
-        text << in.rdbuf();
         std::vector<ListOp> ops;
         std::string error;
-        if (!prim_list_parse(text.str(), ops, error)) {
-            std::fprintf(stderr, "list-roundtrip: %s:%s\n", path.c_str(), error.c_str());
+        if (!prim_list_read(path, ops, error)) {
+            std::fprintf(stderr, "list-roundtrip: %s\n", error.c_str());
             return 2;
         }
         failed += check_ops(path, ops);

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <sstream>
 
 extern "C" {
@@ -111,6 +112,40 @@ bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops_out, std:
         ops.push_back(op);
     }
     ops_out.insert(ops_out.end(), ops.begin(), ops.end());
+    return true;
+}
+
+bool operator==(const ListOp &a, const ListOp &b)
+{
+    if (a.kind != b.kind || a.color != b.color) {
+        return false;
+    }
+    for (int i = 0; i < 6; i++) {
+        if (a.v[i] != b.v[i]) {
+            return false;
+        }
+    }
+    for (int i = 0; i < 3; i++) {
+        if (a.z[i] != b.z[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool prim_list_read(const std::string &path, std::vector<ListOp> &ops, std::string &error)
+{
+    std::ifstream in(path);
+    if (!in) {
+        error = "cannot read " + path;
+        return false;
+    }
+    std::stringstream text;
+    text << in.rdbuf();
+    if (!prim_list_parse(text.str(), ops, error)) {
+        error = path + ":" + error;
+        return false;
+    }
     return true;
 }
 

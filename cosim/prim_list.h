@@ -20,9 +20,17 @@ struct ListOp {
     uint32_t color;
 };
 
+// Two ops are the same when every field is (the parser leaves the fields a kind does not use 0).
+bool operator==(const ListOp &a, const ListOp &b);
+inline bool operator!=(const ListOp &a, const ListOp &b) { return !(a == b); }
+
 // Parses text and appends its primitives to ops. On error returns false, sets error to
 // "LINE: what is wrong" (LINE counted from 1) and leaves ops as it was.
 bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops, std::string &error);
+
+// Reads the file at path and parses it as above. On error returns false with error set to
+// "cannot read PATH" or "PATH:LINE: what is wrong", ops as it was.
+bool prim_list_read(const std::string &path, std::vector<ListOp> &ops, std::string &error);
 
 // The text of ops, one op per line in the format above (the first value of each field its kind uses;
 // values are expected in their documented ranges, as the parser gives them). The inverse of

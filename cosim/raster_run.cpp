@@ -6,8 +6,6 @@
 // Exit status: 0 equal, 1 RTL and model differ, 2 bad input.
 #include <cerrno>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <sys/stat.h>
 #include <vector>
@@ -63,17 +61,10 @@ int raster_main(int argc, char **argv)
         std::fprintf(stderr, "usage: gpusim raster --in LIST --out DIR\n");
         return 2;
     }
-    std::ifstream in(in_path);
-    if (!in) {
-        std::fprintf(stderr, "raster: cannot read %s\n", in_path.c_str());
-        return 2;
-    }
-    std::stringstream text;
-    text << in.rdbuf();
     std::vector<ListOp> ops;
     std::string error;
-    if (!prim_list_parse(text.str(), ops, error)) {
-        std::fprintf(stderr, "raster: %s:%s\n", in_path.c_str(), error.c_str());
+    if (!prim_list_read(in_path, ops, error)) {
+        std::fprintf(stderr, "raster: %s\n", error.c_str());
         return 2;
     }
     if (mkdir(out_dir.c_str(), 0755) != 0 && errno != EEXIST) {

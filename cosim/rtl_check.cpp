@@ -12,26 +12,13 @@
 
 #include "gpu_sim.h"
 #include "model_check.h"
+#include "rng.h"
 
 extern "C" {
 #include "gpu_regs.h"
 }
 
 namespace {
-
-struct Rng {  // splitmix64: small, seedable, the same on every host
-    uint64_t state;
-    uint64_t next()
-    {
-        uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    uint32_t below(uint32_t n) { return static_cast<uint32_t>(next() % n); }
-    int32_t range(int32_t lo, int32_t hi) { return lo + static_cast<int32_t>(below(static_cast<uint32_t>(hi - lo + 1))); }
-    bool chance(uint32_t percent) { return below(100) < percent; }
-};
 
 struct Vertex {
     int32_t x, y;  // Q12.4, kept within int16

@@ -150,24 +150,6 @@ bool reference_line(std::string line, bool *blank, ListOp *op)
     return true;
 }
 
-bool same_op(const ListOp &a, const ListOp &b)
-{
-    if (a.kind != b.kind || a.color != b.color) {
-        return false;
-    }
-    for (int i = 0; i < 6; i++) {
-        if (a.v[i] != b.v[i]) {
-            return false;
-        }
-    }
-    for (int i = 0; i < 3; i++) {
-        if (a.z[i] != b.z[i]) {
-            return false;
-        }
-    }
-    return true;
-}
-
 void check_batches(const std::vector<ListOp> &ops, uint32_t vtx_cap, uint32_t tri_cap)
 {
     const std::vector<Batch> batches = prim_list_batches(ops, vtx_cap, tri_cap);
@@ -229,7 +211,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const bool ok = prim_list_parse(text, ops, error);
 
     if (!ok) {
-        REQUIRE(ops.size() == 1 && same_op(ops[0], sentinel), "a rejected list changed ops");
+        REQUIRE(ops.size() == 1 && ops[0] == sentinel, "a rejected list changed ops");
         size_t digits = 0;
         while (digits < error.size() && error[digits] >= '0' && error[digits] <= '9') {
             digits++;
@@ -260,7 +242,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
 
     REQUIRE(error.empty(), "accepted with an error message '%s'", error.c_str());
-    REQUIRE(!ops.empty() && same_op(ops[0], sentinel), "the caller's ops were changed");
+    REQUIRE(!ops.empty() && ops[0] == sentinel, "the caller's ops were changed");
     ops.erase(ops.begin());
     size_t next = 0;
     for (size_t i = 0; i < lines.size(); i++) {
@@ -268,7 +250,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         ListOp op{};
         REQUIRE(reference_line(lines[i], &blank, &op), "invalid line %zu accepted", i + 1);
         if (!blank) {
-            REQUIRE(next < ops.size() && same_op(ops[next], op), "line %zu read wrongly", i + 1);
+            REQUIRE(next < ops.size() && ops[next] == op, "line %zu read wrongly", i + 1);
             next++;
         }
     }
@@ -283,7 +265,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     REQUIRE(again.size() == ops.size(), "%zu ops written, %zu read back", ops.size(), again.size());
     for (size_t i = 0; i < ops.size(); i++) {
         const ListOp &a = ops[i], &b = again[i];
-        REQUIRE(same_op(b, a),
+        REQUIRE(b == a,
                 "op %zu (kind %d, v %d %d %d %d %d %d, z %u %u %u, colour %u) is written as '%s' and reads "
                 "back as kind %d, v %d %d %d %d %d %d, z %u %u %u, colour %u",
                 i + 1, a.kind, a.v[0], a.v[1], a.v[2], a.v[3], a.v[4], a.v[5], a.z[0], a.z[1], a.z[2], a.color,
