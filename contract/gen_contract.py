@@ -189,6 +189,8 @@ def main():
         stale = [p for p, text in outputs.items() if not p.exists() or p.read_text() != text]
         for p in stale:
             print(f"contract: {p.relative_to(ROOT)} is stale or hand-edited; run contract/gen_contract.py")
+        if not stale:
+            print(f"contract: {len(outputs)} generated files current with {SOURCE.relative_to(ROOT)}")
         sys.exit(1 if stale else 0)
     for p, text in outputs.items():
         p.parent.mkdir(parents=True, exist_ok=True)
