@@ -131,14 +131,14 @@ int raster_main(int argc, char **argv)
     }
 
     // VGA colours back to palette indices; every 2x2 block must be one pixel.
-    std::vector<uint8_t> rtl_raw(320 * 240);
+    std::vector<uint8_t> rtl_raw(GPU_FB_PIXELS);
     std::vector<int> index_of(4096, -1);
     for (uint32_t p = 0; p < 256; p++) {
         index_of[raster_palette(p)] = static_cast<int>(p);
     }
     const uint8_t *rgb = sim.frame_rgb();
-    for (int y = 0; y < 240; y++) {
-        for (int x = 0; x < 320; x++) {
+    for (int y = 0; y < static_cast<int>(GPU_FB_HEIGHT); y++) {
+        for (int x = 0; x < static_cast<int>(GPU_FB_WIDTH); x++) {
             uint32_t colours[4];
             for (int q = 0; q < 4; q++) {
                 const uint8_t *c = &rgb[((2 * y + q / 2) * 640 + 2 * x + q % 2) * 3];
@@ -149,18 +149,18 @@ int raster_main(int argc, char **argv)
                 std::fprintf(stderr, "raster: VGA pixel (%d,%d) is not a clean 2x2 palette colour\n", x, y);
                 return 1;
             }
-            rtl_raw[y * 320 + x] = static_cast<uint8_t>(index_of[colours[0]]);
+            rtl_raw[y * GPU_FB_WIDTH + x] = static_cast<uint8_t>(index_of[colours[0]]);
         }
     }
     const uint8_t *model_raw = gpu_model_front(model.model());
     long differ = 0;
-    for (int i = 0; i < 320 * 240; i++) {
+    for (uint32_t i = 0; i < GPU_FB_PIXELS; i++) {
         differ += rtl_raw[i] != model_raw[i];
     }
 
     const std::string dir = out_dir + "/";
     bool ok = write_file(dir + "rtl.raw", rtl_raw.data(), rtl_raw.size()) &&
-              write_file(dir + "model.raw", model_raw, 320 * 240) &&
+              write_file(dir + "model.raw", model_raw, GPU_FB_PIXELS) &&
               png_write_rgb((dir + "rtl.png").c_str(), rgb, 640, 480) == 0;
     FILE *json = std::fopen((dir + "stats.json").c_str(), "w");
     if (json != nullptr) {

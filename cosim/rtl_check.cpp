@@ -20,6 +20,8 @@ extern "C" {
 
 namespace {
 
+constexpr int32_t kFbW = GPU_FB_WIDTH, kFbH = GPU_FB_HEIGHT;  // the frame, in pixels
+
 struct Vertex {
     int32_t x, y;  // Q12.4, kept within int16
 };
@@ -31,13 +33,13 @@ Vertex random_vertex(Rng &r, int family, Vertex anchor)
 {
     switch (family) {
     case 0:  // anywhere on screen and a little beyond
-        return {r.range(-32 * 16, 352 * 16), r.range(-32 * 16, 272 * 16)};
+        return {r.range(-32 * 16, (kFbW + 32) * 16), r.range(-32 * 16, (kFbH + 32) * 16)};
     case 1:  // near the anchor: small and sub-pixel triangles
         return {anchor.x + r.range(-40, 40), anchor.y + r.range(-40, 40)};
     case 2:  // exactly on pixel centres, to land edges on sample points
-        return {r.range(-2, 322) * 16 + 8, r.range(-2, 242) * 16 + 8};
+        return {r.range(-2, kFbW + 2) * 16 + 8, r.range(-2, kFbH + 2) * 16 + 8};
     case 3:  // centres shifted by +-1/16 px
-        return {r.range(0, 319) * 16 + 8 + r.range(-1, 1), r.range(0, 239) * 16 + 8 + r.range(-1, 1)};
+        return {r.range(0, kFbW - 1) * 16 + 8 + r.range(-1, 1), r.range(0, kFbH - 1) * 16 + 8 + r.range(-1, 1)};
     default:  // the whole Q12.4 range, guard-band corners included
         if (r.chance(30)) {
             return {r.chance(50) ? -32768 : 32767, r.chance(50) ? -32768 : 32767};
@@ -133,10 +135,10 @@ int rtl_check_main(int argc, char **argv)
         const uint32_t vbase = r.below(GPU_VTX_CAP - nv + 1);
         const uint32_t tbase = r.below(GPU_TRI_CAP - nt + 1);
         const int family = static_cast<int>(r.below(5));
-        Vertex anchor = {r.range(0, 320 * 16), r.range(0, 240 * 16)};
+        Vertex anchor = {r.range(0, kFbW * 16), r.range(0, kFbH * 16)};
         for (uint32_t v = 0; v < nv; v++) {
             if (family == 1 && r.chance(20)) {
-                anchor = {r.range(0, 320 * 16), r.range(0, 240 * 16)};
+                anchor = {r.range(0, kFbW * 16), r.range(0, kFbH * 16)};
             }
             Vertex vx = random_vertex(r, r.chance(80) ? family : static_cast<int>(r.below(5)), anchor);
             const uint32_t word = static_cast<uint16_t>(clamp16(vx.x)) | static_cast<uint32_t>(static_cast<uint16_t>(clamp16(vx.y))) << 16;

@@ -39,9 +39,12 @@ import shutil
 import struct
 import subprocess
 import sys
+import tomllib
 import zlib
 
-FB_PIXELS = 320 * 240
+with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contract", "gpu_contract.toml"), "rb") as _f:
+    _LIMITS = tomllib.load(_f)["limits"]
+FB_PIXELS = _LIMITS["fb_width"] * _LIMITS["fb_height"]  # the contract's frame
 
 # Configurations: key -> (firmware, BUILD/fw-error/<scene>-<firmware>.elf; simulator, BUILD/<sim>/gpusim;
 # plot label). "-z" firmware starts with the depth test on and runs on a GPU that has the buffer.

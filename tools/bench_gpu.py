@@ -20,21 +20,28 @@ import os
 import random
 import subprocess
 import sys
+import tomllib
 
 WIDTHS = [1, 4, 8, 16]
+
+
+# The frame, from the contract (contract/gpu_contract.toml).
+with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contract", "gpu_contract.toml"), "rb") as _f:
+    _LIMITS = tomllib.load(_f)["limits"]
+FB_W, FB_H = _LIMITS["fb_width"], _LIMITS["fb_height"]
 
 
 def write_large(path, rng):
     with open(path, "w") as f:
         for _ in range(24):
-            pts = [(rng.randint(-40, 360) * 16, rng.randint(-40, 280) * 16) for _ in range(3)]
+            pts = [(rng.randint(-40, FB_W + 40) * 16, rng.randint(-40, FB_H + 40) * 16) for _ in range(3)]
             f.write("tri %d %d %d %d %d %d %d\n" % (*pts[0], *pts[1], *pts[2], rng.randint(1, 255)))
 
 
 def write_tiny(path, rng):
     with open(path, "w") as f:
         for _ in range(10000):
-            x, y = rng.randint(0, 319 * 16), rng.randint(0, 239 * 16)
+            x, y = rng.randint(0, (FB_W - 1) * 16), rng.randint(0, (FB_H - 1) * 16)
             pts = [(x + rng.randint(0, 32), y + rng.randint(0, 32)) for _ in range(3)]
             f.write("tri %d %d %d %d %d %d %d\n" % (*pts[0], *pts[1], *pts[2], rng.randint(1, 255)))
 
@@ -79,7 +86,7 @@ def main():
             print("bench-gpu: %s, SPAN_W=%d ..." % (name, width), file=sys.stderr, flush=True)
             subprocess.run([sim, "raster", "--in", path, "--out", out], check=True, stdout=subprocess.DEVNULL)
             s = json.load(open(os.path.join(out, "stats.json")))
-            cycles = s["busy_cycles"] - (320 * 240 // width if name.startswith("z") else 0)
+            cycles = s["busy_cycles"] - (FB_W * FB_H // width if name.startswith("z") else 0)
             rows.append((name, width, s["prims_in"], s["pixels"], cycles, s["spans_visited"]))
 
     print("| workload | SPAN_W | primitives | pixels written | busy cycles | covered px/clk | clk/primitive |")
