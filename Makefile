@@ -73,7 +73,10 @@ contract:
 check-contract:
 	$(PYTHON) contract/gen_contract.py --check
 
+# files.f is the one list, so a source left out of it would be neither linted nor built: refused.
+RTL_UNLISTED = $(filter-out $(RTL_V),$(wildcard gpu_rtl/*.v gpu_rtl/*.sv))
 lint:
+	@test -z "$(RTL_UNLISTED)" || { echo "lint: not in $(RTL_FILES): $(RTL_UNLISTED)"; exit 1; }
 	$(VERILATOR) --lint-only -Wall --top-module gpu_top $(RTL_LINT) -f $(RTL_FILES)
 	@echo "lint: $(words $(RTL_V)) files of $(RTL_FILES) clean under -Wall"
 
@@ -139,7 +142,7 @@ define verilate
 	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(dir $(1))obj -o $(abspath $(1)) \
 	  >$(dir $(1))verilator.log 2>&1 || { tail -40 $(dir $(1))verilator.log; exit 1; }
 endef
-SIM_DEPS := $(RTL_FILES) $(RTL_V) contract/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) $(COSIM_C_LIB) $(GPU_MODEL_LIB)
+SIM_DEPS := $(RTL_FILES) $(RTL_V) contract/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) bsp/qemu_virt/platform.h $(COSIM_C_LIB) $(GPU_MODEL_LIB)
 
 $(BUILD)/sim-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$*)

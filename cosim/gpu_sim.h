@@ -30,7 +30,7 @@ public:
     // Capture the next complete frame from the VGA pins. False on timeout or a timing error.
     bool capture_frame(uint64_t max_cycles);
 
-    // The framebuffer being drawn (the back bank, !STATUS.FRONT), as 320x240 palette indices,
+    // The framebuffer being drawn (the back bank, !STATUS.FRONT), as GPU_FB_WIDTH x GPU_FB_HEIGHT palette indices,
     // row-major: read from the framebuffer's block-RAM arrays in the Verilated model (their
     // Verilator names, gpu_top.u_framebuffer.g_bank[b].u_main / g_tail.u_tail .mem, are checked at
     // compile time). Takes no clock and no bus cycle, so it changes nothing the GPU does.

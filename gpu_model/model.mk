@@ -26,7 +26,7 @@ $(GPU_MODEL_LIB): $(BUILD)/gpu_model/gpu_model.o
 	ar rcs $@ $^
 
 # The unit-test runner: prints one line per failed check, then
-# "N passed, N failed"; exits non-zero on any failure.  No libraries needed.
+# "N passed, N failed"; exits non-zero on any failure. Needs only the model's library.
 $(GPU_MODEL_UNIT): $(GPU_MODEL_TEST_SRC) $(GPU_MODEL_TEST_HDR) $(GPU_MODEL_LIB)
 	@mkdir -p $(dir $@)
 	$(HOST_CC) $(HOST_CFLAGS) $(GPU_MODEL_INC) $(GPU_MODEL_TEST_SRC) $(GPU_MODEL_LIB) -o $@

@@ -9,6 +9,7 @@
 #   fail MESSAGE                 print MESSAGE and end the test with status 1
 #   expect_status WANT [WHAT]    fail unless $status is WANT
 #   expect_eq GOT WANT WHAT      fail unless two numbers are equal
+#   png_count DIR                the PNG files in DIR
 #   count PATTERN FILE           lines of FILE matching the extended regex (0 when none, or no file)
 #   expect_line PATTERN FILE     fail unless some line of FILE matches the extended regex
 #   expect_no_line PATTERN FILE  fail if any line of FILE matches
@@ -47,7 +48,7 @@ run_to() {
 }
 
 fail() {
-    echo "FAILED: $*"
+    echo "FAILED: $*" >&2  # stderr: a fail inside $(...) must still be seen
     exit 1
 }
 
@@ -57,6 +58,10 @@ expect_status() {
 
 expect_eq() {
     [ "$1" -eq "$2" ] || fail "$3: got $1, expected $2"
+}
+
+png_count() {
+    find "$1" -maxdepth 1 -name '*.png' | wc -l
 }
 
 count() {
@@ -74,8 +79,8 @@ expect_no_line() {
 
 same_pngs() {
     local a="$1" b="$2" what="$3" f n_a n_b
-    n_a=$(find "$a" -maxdepth 1 -name '*.png' | wc -l)
-    n_b=$(find "$b" -maxdepth 1 -name '*.png' | wc -l)
+    n_a=$(png_count "$a")
+    n_b=$(png_count "$b")
     [ "$n_a" -eq "$n_b" ] || fail "$what: $n_a frames against $n_b"
     [ "$n_a" -gt 0 ] || fail "$what: no frames"
     for f in "$a"/*.png; do

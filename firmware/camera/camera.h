@@ -78,7 +78,8 @@ void cam_set_mode(struct camera *cam, enum cam_mode mode);
 /* Apply one frame's moves, each a signed count of steps (a key press is one; the key bindings
  * are the caller's, scene_camera_keys): fwd forward (fly) or zoom in (orbit, object), side to the
  * right, rise up, look_x to the right and look_y up (object mode: turn the scene), roll (object
- * mode), then mode_steps steps along fly -> orbit -> object -> fly (first). Counts stay small
+ * mode). The mode_steps steps along fly -> orbit -> object -> fly are taken first, so the moves
+ * act in the new mode. Counts stay small
  * (a frame reads at most 32 keys), so count * step cannot overflow. */
 void cam_move(struct camera *cam, int32_t fwd, int32_t side, int32_t rise, int32_t look_x,
               int32_t look_y, int32_t roll, uint32_t mode_steps);

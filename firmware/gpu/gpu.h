@@ -2,9 +2,9 @@
  * gpu.h — driver for the memory-mapped GPU of contract/gpu-contract.md.
  *
  * Two layers:
- *   - a pure core (static inline, below): packs vertex and primitive words exactly as the
- *     contract's field macros in gpu_regs.h say. No hardware access; render code and host tests
- *     use it.
+ *   - a pure core (below): the batch descriptor and the vertex and primitive word formats, which
+ *     are the contract's (gpu_regs.h); render code builds the words in that layout and batch.c
+ *     copies them whole (a build check there keeps the layouts equal). No hardware access.
  *   - a thin edge (gpu.c): every access to the device goes through the platform's accessors
  *     bsp_gpu_write(offset, value) / bsp_gpu_read(offset) / bsp_gpu_write_words() (bsp.h).
  *

@@ -130,6 +130,7 @@ static void knot_update(struct scene *s, const struct input_counts *keys, struct
 const struct scene_desc scene_knot_desc = {
     .name = "knot",
     .keys = 0,
+    .state_bytes = sizeof(struct knot_state),
     .init = knot_init,
     .update = knot_update,
 };

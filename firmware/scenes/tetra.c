@@ -57,6 +57,7 @@ static void tetra_update(struct scene *s, const struct input_counts *keys, struc
 const struct scene_desc scene_tetra_desc = {
     .name = "tetra",
     .keys = 0,
+    .state_bytes = sizeof(struct tetra_state),
     .init = tetra_init,
     .update = tetra_update,
 };

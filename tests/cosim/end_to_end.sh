@@ -14,6 +14,7 @@ done
 
 frames=$(summary frames "$work/a.summary")
 [ "$frames" -ge 2 ] || fail "only $frames frames written"
+expect_eq "$(png_count "$work/a")" "$frames" "PNG files written"
 expect_eq "$(summary frames_model_checked "$work/a.summary")" "$frames" "frames checked against the model"
 same_pngs "$work/a" "$work/b" "two runs"
 # Per-frame firmware lines, minus nothing: instruction counts are exact under -icount.

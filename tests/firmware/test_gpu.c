@@ -1,6 +1,6 @@
 /*
- * test_gpu.c — the driver: word packing per the contract macros (pure core) and, against a fake
- * aperture (fake_bsp/bsp.h), init checks, tags, batch programming, fencing and timeouts.
+ * test_gpu.c — the driver: the word layout per the contract macros (pure core) and, against a fake
+ * aperture (fake_bsp/bsp_platform.h), init checks, tags, batch programming, fencing and timeouts.
  */
 #include <stdint.h>
 #include <string.h>

@@ -112,6 +112,23 @@ void test_scene_object_range(void)
 }
 
 /* The sizes of issue #4: a 16^3 voxel world, a 5000-triangle model. */
+/* The shared state storage is the largest scene's state rounded up to 64 bytes: no scene's state
+ * exceeds it (SCENE_STATE_FITS also stops the compile), and it is not larger than it needs to be,
+ * so SCENE_STATE_BYTES follows the scenes instead of growing stale. */
+void test_scene_state_storage(void)
+{
+    size_t largest = 0;
+
+    for (uint32_t k = 0; k < SCENE_COUNT; k++) {
+        const size_t bytes = scene_at(k)->state_bytes;
+
+        CHECK(bytes > 0u);
+        CHECK(bytes <= SCENE_STATE_BYTES);
+        largest = bytes > largest ? bytes : largest;
+    }
+    CHECK_EQ(SCENE_STATE_BYTES, (largest + 63u) / 64u * 64u);
+}
+
 void test_scene_sizes(void)
 {
     scene_start(&scene, scene_find("knot"));

@@ -87,9 +87,10 @@ static uint64_t sort_reverse_work(uint32_t n)
 }
 
 /* Linear cost on reverse order: the work sort.c counts (items read and moved, histogram slots)
- * is at most 6 per item plus 3 x 256 per sort (two counting passes: 2 reads for the histograms,
- * 2 moves, 1 copy back at most; clearing, scanning and prefix sums of 256 slots), and doubling n
- * at most doubles it (+256). An insertion sort on this input would do n^2 / 2. */
+ * is at most 6 per item (two counting passes: 2 reads for the histograms, 2 moves, 1 copy back at
+ * most) plus a fixed cost per sort for the slots of its two 256-slot histograms (cleared, checked
+ * and prefix-summed; bounded here by 3 x 1024 with room to spare), and doubling n at most doubles
+ * it (+256: the fixed cost is not doubled). An insertion sort on this input would do n^2 / 2. */
 void test_sort_reverse_input(void)
 {
     const uint64_t w1 = sort_reverse_work(SORT_TEST_MAX / 2u);

@@ -53,6 +53,7 @@ void unit_srand(uint32_t seed);
     X(test_q30_ops)                   \
     X(test_vec_rotation_conventions)  \
     X(test_vec_yaw_pitch_exact)       \
+    X(test_vec_yaw_pitch_accuracy)    \
     X(test_vec_mat3_vs_double)        \
     X(test_vec_xf_apply_error)        \
     X(test_vec_xf_apply_box_exact)    \
@@ -101,6 +102,7 @@ void unit_srand(uint32_t seed);
     X(test_voxel_raycast)             \
     X(test_scene_meshes_valid)        \
     X(test_scene_object_range)        \
+    X(test_scene_state_storage)       \
     X(test_scene_sizes)               \
     X(test_scene_frames)              \
     X(test_scene_voxel_place_break)   \

@@ -123,6 +123,7 @@ static void voxel_scene_update(struct scene *s, const struct input_counts *keys,
 const struct scene_desc scene_voxel_desc = {
     .name = "voxel",
     .keys = "P place block, B break block, N next block type (crosshair at the screen centre)",
+    .state_bytes = sizeof(struct voxel_scene_state),
     .init = voxel_scene_init,
     .update = voxel_scene_update,
 };

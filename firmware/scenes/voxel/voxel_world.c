@@ -1,5 +1,5 @@
 /*
- * voxel.c — see voxel.h.
+ * voxel_world.c — see voxel_world.h.
  */
 #include "scenes/voxel/voxel_world.h"
 

@@ -1,5 +1,5 @@
 /*
- * voxel.h — a 16 x 16 x 16 block world: terrain, meshing without hidden faces, and the ray cast
+ * voxel_world.h — a 16 x 16 x 16 block world: terrain, meshing without hidden faces, and the ray cast
  * that finds the block under the crosshair. Pure code.
  *
  * Blocks are unit cubes; block (x, y, z) spans [x, x+1] x [y, y+1] x [z, z+1] in world units, y up.
