@@ -103,19 +103,29 @@ module gpu_span_walker #(
 
     reg [SPAN_W-1:0] lane_cov;              // pixels of this span inside the triangle
     reg [2:0] pass_left, pass_last, pass_next, pass_first;  // per edge: at lane -1, SPAN_W-1, SPAN_W, 0
+    // Edge k at lane l (0 .. SPAN_W) in lane_e[(k * (SPAN_W + 1) + l) * EDGE_W +: EDGE_W]: lane l
+    // is lane (l with its lowest set bit cleared) plus that bit times the step, one two-operand add
+    // each (the same sums, mod 2^EDGE_W, as e + l * step), so yosys builds each as one carry chain.
+    reg [3*(SPAN_W+1)*EDGE_W-1:0] lane_e;
     integer k, l;
     always @(*) begin
         lane_cov = {SPAN_W{1'b1}};
         for (k = 0; k < 3; k = k + 1) begin
+            lane_e[(k * (SPAN_W + 1)) * EDGE_W +: EDGE_W] = e_q[k];
+            for (l = 1; l <= SPAN_W; l = l + 1) begin
+                lane_e[(k * (SPAN_W + 1) + l) * EDGE_W +: EDGE_W] =
+                    $signed(lane_e[(k * (SPAN_W + 1) + (l & (l - 1))) * EDGE_W +: EDGE_W])
+                    + edge_times(EDGE_W'(sx_q[k]), l - (l & (l - 1)));
+            end
             for (l = 0; l < SPAN_W; l = l + 1) begin
-                if (!covered(e_q[k] + edge_times(EDGE_W'(sx_q[k]), l), tl_q[k])) begin
+                if (!covered(lane_e[(k * (SPAN_W + 1) + l) * EDGE_W +: EDGE_W], tl_q[k])) begin
                     lane_cov[l] = 1'b0;
                 end
             end
             pass_left[k]  = covered(e_q[k] - EDGE_W'(sx_q[k]), tl_q[k]);
             pass_first[k] = covered(e_q[k], tl_q[k]);
-            pass_last[k]  = covered(e_q[k] + edge_times(EDGE_W'(sx_q[k]), SPAN_W - 1), tl_q[k]);
-            pass_next[k]  = covered(e_q[k] + edge_times(EDGE_W'(sx_q[k]), SPAN_W), tl_q[k]);
+            pass_last[k]  = covered(lane_e[(k * (SPAN_W + 1) + SPAN_W - 1) * EDGE_W +: EDGE_W], tl_q[k]);
+            pass_next[k]  = covered(lane_e[(k * (SPAN_W + 1) + SPAN_W) * EDGE_W +: EDGE_W], tl_q[k]);
         end
     end
 
