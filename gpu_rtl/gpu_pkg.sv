@@ -24,6 +24,11 @@ package gpu_pkg;
     // descriptor in simulation.
     localparam integer EDGE_NEED_W = 34;
     localparam integer EDGE_W = 36;
+    // An edge's steps (per pixel right, per row down) are 16 times a difference of two coordinates:
+    // STEP_W = GPU_VTX_X_WIDTH + 1 + GPU_SUBPIXEL_BITS = 21 bits signed, exactly. They travel and
+    // are held at that width, and widen (sign-extend) where they meet an edge value: synthesis then
+    // sees how narrow the walker's lane multiples of a step are.
+    localparam integer STEP_W = GPU_VTX_X_WIDTH + 1 + GPU_SUBPIXEL_BITS;
 
     // Depth plane (ENABLE_ZBUF): the Q16 depth accumulator, 2^16 z0 + ZA dx + ZB dy, stays below
     // 2^50 in magnitude at every pixel centre a depth-tested triangle covers (contract, "Depth"),
@@ -62,12 +67,12 @@ package gpu_pkg;
         logic signed [EDGE_W-1:0]  e0;                // edge values at lane 0 of the first span
         logic signed [EDGE_W-1:0]  e1;
         logic signed [EDGE_W-1:0]  e2;
-        logic signed [EDGE_W-1:0]  sx0;               // edge steps per pixel right
-        logic signed [EDGE_W-1:0]  sx1;
-        logic signed [EDGE_W-1:0]  sx2;
-        logic signed [EDGE_W-1:0]  sy0;               // edge steps per row down
-        logic signed [EDGE_W-1:0]  sy1;
-        logic signed [EDGE_W-1:0]  sy2;
+        logic signed [STEP_W-1:0]  sx0;               // edge steps per pixel right
+        logic signed [STEP_W-1:0]  sx1;
+        logic signed [STEP_W-1:0]  sx2;
+        logic signed [STEP_W-1:0]  sy0;               // edge steps per row down
+        logic signed [STEP_W-1:0]  sy1;
+        logic signed [STEP_W-1:0]  sy2;
         logic [2:0]                top_left;          // per edge: E = 0 counts as inside
         logic [DESC_COL_W-1:0]     col_lo;            // span columns of the clamped box
         logic [DESC_COL_W-1:0]     col_hi;

@@ -38,6 +38,7 @@ module gpu_prim_setup #(
     localparam integer PRIM_W = $clog2(TRI_CAP + 1),
     localparam integer COL_W = $clog2(gpu_pkg::GPU_FB_WIDTH / SPAN_W),  // span column
     localparam integer EDGE_W = gpu_pkg::EDGE_W,
+    localparam integer STEP_W = gpu_pkg::STEP_W,   // edge steps
     localparam integer Z_W = gpu_pkg::Z_W,
     localparam integer ZSTEP_W = gpu_pkg::ZSTEP_W
 ) (
@@ -327,11 +328,11 @@ module gpu_prim_setup #(
                                 input signed [15:0] bx, input signed [15:0] by);
         top_left = (by < ay) || ((by == ay) && (bx > ax));
     endfunction
-    function automatic signed [EDGE_W-1:0] step_right(input signed [15:0] ay, input signed [15:0] by);
-        step_right = (EDGE_W'(ay) - EDGE_W'(by)) <<< 4;
+    function automatic signed [STEP_W-1:0] step_right(input signed [15:0] ay, input signed [15:0] by);
+        step_right = (STEP_W'(ay) - STEP_W'(by)) <<< gpu_pkg::GPU_SUBPIXEL_BITS;
     endfunction
-    function automatic signed [EDGE_W-1:0] step_down(input signed [15:0] ax, input signed [15:0] bx);
-        step_down = (EDGE_W'(bx) - EDGE_W'(ax)) <<< 4;
+    function automatic signed [STEP_W-1:0] step_down(input signed [15:0] ax, input signed [15:0] bx);
+        step_down = (STEP_W'(bx) - STEP_W'(ax)) <<< gpu_pkg::GPU_SUBPIXEL_BITS;
     endfunction
 
     // Lines: endpoint pixels by arithmetic shift, Bresenham set-up per the contract.

@@ -31,6 +31,7 @@ module gpu_span_walker #(
     localparam integer LANE_AW = (SPAN_W > 1) ? $clog2(SPAN_W) : 1,
     localparam integer CNT_W = $clog2(SPAN_W + 1),
     localparam integer EDGE_W = gpu_pkg::EDGE_W,
+    localparam integer STEP_W = gpu_pkg::STEP_W,                      // edge steps, sign-extended
     localparam integer Z_W = gpu_pkg::Z_W,
     localparam integer ZSTEP_W = gpu_pkg::ZSTEP_W,
     localparam integer PIX_W = gpu_pkg::PIX_W,                        // line pixel coordinates
@@ -70,8 +71,8 @@ module gpu_span_walker #(
     reg [gpu_pkg::COLOR_W-1:0] color_q;
     reg signed [EDGE_W-1:0] e_q [0:2];       // edges at lane 0 of the current span
     reg signed [EDGE_W-1:0] efirst_q [0:2];  // edges at lane 0 of the row's starting span
-    reg signed [EDGE_W-1:0] sx_q [0:2];
-    reg signed [EDGE_W-1:0] sy_q [0:2];
+    reg signed [STEP_W-1:0] sx_q [0:2];      // steps at their exact width (gpu_pkg::STEP_W)
+    reg signed [STEP_W-1:0] sy_q [0:2];
     reg [2:0] tl_q;
     reg [COL_W-1:0] col_q, col_first_q, col_lo_q, col_hi_q;
     reg [ROW_W-1:0] row_q, row_hi_q;
@@ -102,19 +103,29 @@ module gpu_span_walker #(
 
     reg [SPAN_W-1:0] lane_cov;              // pixels of this span inside the triangle
     reg [2:0] pass_left, pass_last, pass_next, pass_first;  // per edge: at lane -1, SPAN_W-1, SPAN_W, 0
+    // Edge k at lane l (0 .. SPAN_W) in lane_e[(k * (SPAN_W + 1) + l) * EDGE_W +: EDGE_W]: lane l
+    // is lane (l with its lowest set bit cleared) plus that bit times the step, one two-operand add
+    // each (the same sums, mod 2^EDGE_W, as e + l * step), so yosys builds each as one carry chain.
+    reg [3*(SPAN_W+1)*EDGE_W-1:0] lane_e;
     integer k, l;
     always @(*) begin
         lane_cov = {SPAN_W{1'b1}};
         for (k = 0; k < 3; k = k + 1) begin
+            lane_e[(k * (SPAN_W + 1)) * EDGE_W +: EDGE_W] = e_q[k];
+            for (l = 1; l <= SPAN_W; l = l + 1) begin
+                lane_e[(k * (SPAN_W + 1) + l) * EDGE_W +: EDGE_W] =
+                    $signed(lane_e[(k * (SPAN_W + 1) + (l & (l - 1))) * EDGE_W +: EDGE_W])
+                    + edge_times(EDGE_W'(sx_q[k]), l - (l & (l - 1)));
+            end
             for (l = 0; l < SPAN_W; l = l + 1) begin
-                if (!covered(e_q[k] + edge_times(sx_q[k], l), tl_q[k])) begin
+                if (!covered(lane_e[(k * (SPAN_W + 1) + l) * EDGE_W +: EDGE_W], tl_q[k])) begin
                     lane_cov[l] = 1'b0;
                 end
             end
-            pass_left[k]  = covered(e_q[k] - sx_q[k], tl_q[k]);
+            pass_left[k]  = covered(e_q[k] - EDGE_W'(sx_q[k]), tl_q[k]);
             pass_first[k] = covered(e_q[k], tl_q[k]);
-            pass_last[k]  = covered(e_q[k] + edge_times(sx_q[k], SPAN_W - 1), tl_q[k]);
-            pass_next[k]  = covered(e_q[k] + edge_times(sx_q[k], SPAN_W), tl_q[k]);
+            pass_last[k]  = covered(lane_e[(k * (SPAN_W + 1) + SPAN_W - 1) * EDGE_W +: EDGE_W], tl_q[k]);
+            pass_next[k]  = covered(lane_e[(k * (SPAN_W + 1) + SPAN_W) * EDGE_W +: EDGE_W], tl_q[k]);
         end
     end
 
@@ -267,8 +278,8 @@ module gpu_span_walker #(
                             row_addr_q <= row_addr_q + WAW'(WORDS_PER_ROW);
                             col_q <= first_span ? col_q : col_first_q;
                             for (k = 0; k < 3; k = k + 1) begin
-                                efirst_q[k] <= (first_span ? e_q[k] : efirst_q[k]) + sy_q[k];
-                                e_q[k] <= (first_span ? e_q[k] : efirst_q[k]) + sy_q[k];
+                                efirst_q[k] <= (first_span ? e_q[k] : efirst_q[k]) + EDGE_W'(sy_q[k]);
+                                e_q[k] <= (first_span ? e_q[k] : efirst_q[k]) + EDGE_W'(sy_q[k]);
                             end
                             zfirst_q <= (first_span ? z_q : zfirst_q) + Z_W'(zdy_q);
                             z_q <= (first_span ? z_q : zfirst_q) + Z_W'(zdy_q);
@@ -276,11 +287,11 @@ module gpu_span_walker #(
                         end
                     end else if (go_left) begin
                         col_q <= col_q - 1'b1;
-                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] - edge_times(sx_q[k], SPAN_W);
+                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] - edge_times(EDGE_W'(sx_q[k]), SPAN_W);
                         z_q <= z_q - times(Z_W'(zdx_q), SPAN_W);
                     end else begin  // seeking right past a rejected span, or the scan's next span
                         col_q <= col_q + 1'b1;
-                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] + edge_times(sx_q[k], SPAN_W);
+                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] + edge_times(EDGE_W'(sx_q[k]), SPAN_W);
                         z_q <= z_q + times(Z_W'(zdx_q), SPAN_W);
                         if (draw_span) begin
                             state_q <= S_SCAN;
