@@ -3,11 +3,15 @@
 # the golden model's rendering of the same buffers (the harness checks each one and fails otherwise).
 # Two runs must produce byte-identical PNG files and the same per-frame firmware statistics.
 source "$(dirname "$0")/../lib.sh"
-need GPUSIM FW_ELF BUILD
+need GPUSIM BUILD
+# The test build of the default scene (FW_TEST_FRAMES frames): the same firmware as `make run`'s,
+# with fewer frames, since the property does not grow with their number.
+elf="$BUILD/fw-test/tetra.elf"
+need_file "$elf"
 work=$(fresh_dir cosim-end-to-end)
 
 for run in a b; do
-    run_to "$work/$run.out" 120 "$GPUSIM" cosim --fw "$FW_ELF" --frames "$work/$run" \
+    run_to "$work/$run.out" 120 "$GPUSIM" cosim --fw "$elf" --frames "$work/$run" \
         --uart-log "$work/$run.uart" --summary "$work/$run.summary"
     expect_status 0 "co-simulation run $run"
 done
