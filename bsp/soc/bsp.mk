@@ -1,0 +1,33 @@
+# bsp/soc/bsp.mk — what firmware/firmware.mk needs to build for the FPGA SoC (soc_rtl/soc_top:
+# VexRiscv_Full, rv32im, on-chip RAM at 0). Set on the command line:
+#   SOC_RAM_KIB   on-chip RAM in KiB (default: contract/soc_map.h SOC_RAM_DEFAULT_BYTES). The linker
+#                 (--defsym=__ram_size) and the RTL (RAM_BYTES, cosim/soc/socsim.mk) get the same
+#                 number, so the image and the RAM agree.
+#   FW_MAX_POLLS  the watchdog's DONE_SEQ reads per batch (default: about one second at 50 MHz).
+
+SOC_MAP_H          := contract/soc_map.h
+SOC_RAM_DEFAULT_KIB := $(shell printf '%d' $$(( $$(sed -n 's/^\#define SOC_RAM_DEFAULT_BYTES *\(0x[0-9A-Fa-f]*\).*/\1/p' $(SOC_MAP_H)) / 1024 )))
+SOC_RAM_KIB        ?= $(SOC_RAM_DEFAULT_KIB)
+SOC_RAM_BYTES      := $(shell echo $$(( $(SOC_RAM_KIB) * 1024 )))
+
+FW_CC         = $(RV_CC)
+FW_OBJDUMP    = $(patsubst %gcc,%objdump,$(RV_CC))
+FW_ARCH_FLAGS = -march=rv32im -misa-spec=2.2 -mabi=ilp32 -mcmodel=medlow --specs=picolibc.specs \
+                -DPICOLIBC_INTEGER_PRINTF_SCANF
+FW_BSP_SRCS   = $(wildcard bsp/soc/*.c)
+FW_LDSCRIPT   = linker/soc.ld
+# crt0 "hosted" calls exit(main()); the BSP's _exit() writes SYS EXIT.
+FW_BSP_LDFLAGS = --crt0=hosted -Wl,--no-warn-rwx-segments -Wl,--defsym=__ram_size=$(SOC_RAM_BYTES)
+# After linking: <elf>.hex (RAM_INIT, one 32-bit word per line), or a build error with the sizes
+# when the image, its bss and the stack do not fit the RAM (the ELF is then deleted).
+FW_POSTLINK   = $(or $(PYTHON),python3) bsp/soc/postlink.py --ram-bytes $(SOC_RAM_BYTES) \
+                --size $(patsubst %gcc,%size,$(RV_CC)) --nm $(patsubst %gcc,%nm,$(RV_CC)) \
+                --objcopy $(patsubst %gcc,%objcopy,$(RV_CC))
+# One DONE_SEQ poll is an uncached bus read plus the loop: ~10 cycles measured in socsim
+# (cosim/soc/README.md), so 5,000,000 polls are about one second at 50 MHz.
+ifeq ($(strip $(FW_MAX_POLLS)),)
+FW_MAX_POLLS := 5000000
+endif
+
+# How to run an ELF: append `-kernel ELF` (the soc simulator, built for SOC_RAM_KIB).
+FW_RUN        = $(BUILD)/socsim-$(SOC_RAM_KIB)k/socsim

@@ -1,0 +1,62 @@
+/*
+ * uart.c — the SoC's UART (115200 8N1, contract/soc_map.h SOC_UART_*) and picolibc's
+ * stdin/stdout/stderr on it.
+ *
+ * DATA: a write queues a TX byte (dropped when the TX FIFO is full, so putc waits on TX_FULL
+ * first); a read returns [7:0] the byte and bit 8 "valid", popping it. Output is unbuffered and
+ * '\n' is sent as is (no CR added) so a captured log compares byte for byte with a golden file.
+ */
+#include <stdint.h>
+#include <stdio.h>
+
+#include "bsp.h"
+#include "bsp_internal.h"
+
+#define UART_REG(offset) BSP_MMIO32(SOC_UART_BASE, offset)
+#define UART_DATA_VALID  0x100u  /* DATA read: bit 8, a byte was waiting */
+
+void bsp_uart_init(void)
+{
+    /* The divider's reset value already gives SOC_UART_BAUD at the RTL's CLK_HZ: nothing to set. */
+}
+
+void bsp_uart_putc(char c)
+{
+    while ((UART_REG(SOC_UART_REG_STATUS) & SOC_UART_STATUS_TX_FULL_MASK) != 0u) {
+    }
+    UART_REG(SOC_UART_REG_DATA) = (uint8_t)c;
+}
+
+int bsp_uart_getc_nonblock(void)
+{
+    const uint32_t d = UART_REG(SOC_UART_REG_DATA);  /* one read: pops the byte when valid */
+
+    if ((d & UART_DATA_VALID) == 0u) {
+        return -1;
+    }
+    return (int)(d & 0xFFu);
+}
+
+static int uart_stream_put(char c, FILE *stream)
+{
+    (void)stream;
+    bsp_uart_putc(c);
+    return (unsigned char)c;
+}
+
+static int uart_stream_get(FILE *stream)
+{
+    int c;
+
+    (void)stream;
+    do {
+        c = bsp_uart_getc_nonblock();
+    } while (c < 0);
+    return c;
+}
+
+static FILE uart_stream = FDEV_SETUP_STREAM(uart_stream_put, uart_stream_get, NULL, _FDEV_SETUP_RW);
+
+FILE *const stdin = &uart_stream;
+FILE *const stdout = &uart_stream;
+FILE *const stderr = &uart_stream;
