@@ -240,8 +240,11 @@ def soc_gen_c(m):
     s = m["soc"]
     out = [f"/* {SOC_BANNER} */", "#ifndef SOC_MAP_H", "#define SOC_MAP_H", "",
            "/* Addresses with bit 31 clear are cached by the CPU, with bit 31 set uncached. Every address",
-           " * outside the regions, and every register offset not listed, answers a bus error (the core",
-           " * traps: mcause 5 load, 7 store, 1 instruction fetch). */", ""]
+           " * outside the regions, and every register offset not listed, is a bus error: the access",
+           " * completes (a load reads 0, a store is dropped), SYS BUS_ERR / BUS_ERR_ADDR record it and the",
+           " * core's external interrupt SOC_IRQ_BUS_ERROR is raised until BUS_ERR is written (mcause",
+           " * 0x8000000B once enabled; VexRiscv cannot take a precise access fault). A fetch from an",
+           " * unmapped address reads 0x00000000: illegal instruction, mcause 2. */", ""]
 
     def define(name, value, comment=None):
         text = f"#define {name:<32} {value}"
@@ -252,6 +255,9 @@ def soc_gen_c(m):
     define("SOC_SYS_ID_VALUE", f"0x{s['sys_id']:08X}u", "read from SYS ID")
     define("SOC_UART_RX_FIFO_DEPTH", f"{s['uart_rx_fifo_depth']}u")
     define("SOC_UART_TX_FIFO_DEPTH", f"{s['uart_tx_fifo_depth']}u")
+    define("SOC_IRQ_BUS_ERROR", f"{s['irq_bus_error']}u", "bit of VexRiscv's external interrupt lines and of its mask CSR 0xBC0")
+    define("SOC_CSR_IRQ_MASK", "0xBC0u", "VexRiscv's machine external interrupt mask CSR (0xFC0: pending)")
+    define("SOC_CSR_IRQ_PENDING", "0xFC0u")
     out += ["", "/* Regions: base address and decode window. */"]
     for r in m["region"]:
         define(f"SOC_{r['name']}_BASE", f"0x{r['base']:08X}u", ("cached: " if r["cached"] else "uncached: ") + r["doc"])
@@ -296,6 +302,7 @@ def soc_gen_v(m):
     lp("SOC_SYS_ID_VALUE", 32, s["sys_id"])
     lpi("SOC_UART_RX_FIFO_DEPTH", s["uart_rx_fifo_depth"])
     lpi("SOC_UART_TX_FIFO_DEPTH", s["uart_tx_fifo_depth"])
+    lpi("SOC_IRQ_BUS_ERROR", s["irq_bus_error"], "bit of the core's externalInterruptArray")
     for r in m["region"]:
         lp(f"SOC_{r['name']}_BASE", 32, r["base"], "cached" if r["cached"] else "uncached")
         lpi(f"SOC_{r['name']}_WINDOW_BYTES", r["window_bytes"])
@@ -315,8 +322,13 @@ def soc_gen_md(m):
     out = [f"<!-- {SOC_BANNER} -->", "# SoC memory map", "",
            "Addresses as the CPU issues them. The CPU caches addresses with bit 31 clear and sends those with",
            "bit 31 set uncached. Every address outside the regions below, and every offset of UART or SYS that",
-           "names no register, answers a Wishbone ERR: the core traps (mcause 5 load access fault, 7 store,",
-           "1 instruction fetch). Reads of write-only registers return 0; writes to read-only ones are ignored.",
+           "names no register, is a bus error (the slaves answer Wishbone ERR). The packaged VexRiscv ignores",
+           "ERR, so it cannot trap precisely; soc_top completes the access instead (a load reads 0, a store is",
+           "dropped), SYS `BUS_ERR` / `BUS_ERR_ADDR` record the first error and the core's external interrupt",
+           f"line {s['irq_bus_error']} (`SOC_IRQ_BUS_ERROR`) stays high until `BUS_ERR` is written: mcause 0x8000000B once",
+           "enabled (mstatus.MIE, mie.MEIE and the bit in VexRiscv's mask CSR 0xBC0). A fetch from an unmapped",
+           "address reads 0x00000000, an illegal instruction (mcause 2, precise).",
+           "Reads of write-only registers return 0; writes to read-only ones are ignored.",
            "The RTL: [soc_rtl/README.md](../soc_rtl/README.md); the GPU window: [gpu-contract.md](gpu-contract.md).", "",
            "## Regions", "", "| region | base | window | cached | contents |", "|---|---|---|---|---|"]
     for r in m["region"]:
@@ -339,7 +351,8 @@ def soc_gen_md(m):
     out += ["", "## Constants", "", "| name | value |", "|---|---|",
             f"| SOC_CLK_HZ_DEFAULT | {s['clk_hz_default']} |", f"| SOC_UART_BAUD | {s['uart_baud']} (8N1) |",
             f"| SOC_SYS_ID_VALUE | 0x{s['sys_id']:08X} |", f"| SOC_UART_RX_FIFO_DEPTH | {s['uart_rx_fifo_depth']} |",
-            f"| SOC_UART_TX_FIFO_DEPTH | {s['uart_tx_fifo_depth']} |", ""]
+            f"| SOC_UART_TX_FIFO_DEPTH | {s['uart_tx_fifo_depth']} |",
+            f"| SOC_IRQ_BUS_ERROR | {s['irq_bus_error']} (VexRiscv external interrupt line; mask CSR 0xBC0, pending 0xFC0) |", ""]
     return "\n".join(out)
 
 

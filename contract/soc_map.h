@@ -3,14 +3,20 @@
 #define SOC_MAP_H
 
 /* Addresses with bit 31 clear are cached by the CPU, with bit 31 set uncached. Every address
- * outside the regions, and every register offset not listed, answers a bus error (the core
- * traps: mcause 5 load, 7 store, 1 instruction fetch). */
+ * outside the regions, and every register offset not listed, is a bus error: the access
+ * completes (a load reads 0, a store is dropped), SYS BUS_ERR / BUS_ERR_ADDR record it and the
+ * core's external interrupt SOC_IRQ_BUS_ERROR is raised until BUS_ERR is written (mcause
+ * 0x8000000B once enabled; VexRiscv cannot take a precise access fault). A fetch from an
+ * unmapped address reads 0x00000000: illegal instruction, mcause 2. */
 
 #define SOC_CLK_HZ_DEFAULT               50000000u  /* system clock in Hz (SYS CLK_HZ reads a build's own) */
 #define SOC_UART_BAUD                    115200u  /* 8N1 */
 #define SOC_SYS_ID_VALUE                 0x534F4330u  /* read from SYS ID */
 #define SOC_UART_RX_FIFO_DEPTH           16u
 #define SOC_UART_TX_FIFO_DEPTH           16u
+#define SOC_IRQ_BUS_ERROR                0u  /* bit of VexRiscv's external interrupt lines and of its mask CSR 0xBC0 */
+#define SOC_CSR_IRQ_MASK                 0xBC0u  /* VexRiscv's machine external interrupt mask CSR (0xFC0: pending) */
+#define SOC_CSR_IRQ_PENDING              0xFC0u
 
 /* Regions: base address and decode window. */
 #define SOC_RAM_BASE                     0x00000000u  /* cached: On-chip RAM: code, data, stack. Addresses from the RAM's size to the window's end answer ERR. */
@@ -39,6 +45,8 @@
 #define SOC_SYS_REG_MTIME_HI             0x1Cu  /* ro: Cycle counter, high word as latched by the last MTIME_LO read. */
 #define SOC_SYS_REG_MTIMECMP_LO          0x20u  /* rw: Timer compare, low word: the core's timer interrupt is pending while mtime >= mtimecmp (unsigned, 64 bits). Resets to all ones. */
 #define SOC_SYS_REG_MTIMECMP_HI          0x24u  /* rw: Timer compare, high word. Resets to all ones. */
+#define SOC_SYS_REG_BUS_ERR_ADDR         0x28u  /* ro: Byte address of the first bus error since BUS_ERR was last cleared (0 if none). */
+#define SOC_SYS_REG_BUS_ERR              0x2Cu  /* rw: Bus-error status: VALID, WRITE, FETCH of the first error, COUNT of errors. Any write clears it (and releases the interrupt line). */
 
 /* Register bit fields: _LSB and _MASK (in place); a one-bit field also by its bare name (= _MASK). */
 #define SOC_UART_DATA_BYTE_LSB           0u  /* in UART DATA: TX byte written, RX byte read. */
@@ -61,6 +69,17 @@
 #define SOC_UART_ERRORS_OVERRUN_MASK     0xFFFF0000u
 #define SOC_SYS_EXIT_CODE_LSB            0u  /* in SYS EXIT: Exit status, 0 = success. */
 #define SOC_SYS_EXIT_CODE_MASK           0x000000FFu
+#define SOC_SYS_BUS_ERR_VALID_LSB        0u  /* in SYS BUS_ERR: A bus error happened; while set, the core's external interrupt line irq_bus_error is high. */
+#define SOC_SYS_BUS_ERR_VALID_MASK       0x00000001u
+#define SOC_SYS_BUS_ERR_VALID            0x00000001u
+#define SOC_SYS_BUS_ERR_WRITE_LSB        1u  /* in SYS BUS_ERR: The first error was a store (its data was dropped); 0: a load or fetch (it read 0). */
+#define SOC_SYS_BUS_ERR_WRITE_MASK       0x00000002u
+#define SOC_SYS_BUS_ERR_WRITE            0x00000002u
+#define SOC_SYS_BUS_ERR_FETCH_LSB        2u  /* in SYS BUS_ERR: The first error was an instruction fetch (the instruction bus). */
+#define SOC_SYS_BUS_ERR_FETCH_MASK       0x00000004u
+#define SOC_SYS_BUS_ERR_FETCH            0x00000004u
+#define SOC_SYS_BUS_ERR_COUNT_LSB        16u  /* in SYS BUS_ERR: Bus errors since the last clear, saturating (a cache-line refill of an unmapped line counts 8). */
+#define SOC_SYS_BUS_ERR_COUNT_MASK       0xFFFF0000u
 #define SOC_SYS_LEDS_VALUE_LSB           0u  /* in SYS LEDS: One bit per LED, 1 = lit. */
 #define SOC_SYS_LEDS_VALUE_MASK          0x000000FFu
 
