@@ -74,7 +74,7 @@ check-contract:
 	$(PYTHON) contract/gen_contract.py --check
 
 # files.f is the one list, so a source left out of it would be neither linted nor built: refused.
-RTL_BUS_SLAVES := gpu_wb_slave
+RTL_BUS_SLAVES := gpu_wb_slave gpu_axil_slave
 RTL_UNLISTED = $(filter-out $(RTL_V),$(wildcard gpu_rtl/*.v gpu_rtl/*.sv))
 lint:
 	@test -z "$(RTL_UNLISTED)" || { echo "lint: not in $(RTL_FILES): $(RTL_UNLISTED)"; exit 1; }
