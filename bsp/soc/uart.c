@@ -13,7 +13,6 @@
 #include "bsp_internal.h"
 
 #define UART_REG(offset) BSP_MMIO32(SOC_UART_BASE, offset)
-#define UART_DATA_VALID  0x100u  /* DATA read: bit 8, a byte was waiting */
 
 void bsp_uart_init(void)
 {
@@ -31,10 +30,10 @@ int bsp_uart_getc_nonblock(void)
 {
     const uint32_t d = UART_REG(SOC_UART_REG_DATA);  /* one read: pops the byte when valid */
 
-    if ((d & UART_DATA_VALID) == 0u) {
+    if ((d & SOC_UART_DATA_VALID_MASK) == 0u) {
         return -1;
     }
-    return (int)(d & 0xFFu);
+    return (int)((d & SOC_UART_DATA_BYTE_MASK) >> SOC_UART_DATA_BYTE_LSB);
 }
 
 static int uart_stream_put(char c, FILE *stream)
