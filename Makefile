@@ -36,6 +36,8 @@ RTL_V      := $(shell sed -e 's://.*::' $(RTL_FILES))
 RTL_LINT   := gpu_rtl/lint.vlt
 COSIM_CPP  := $(sort $(wildcard cosim/*.cpp))
 HOST_INC   := -Icosim -Igpu_model -Icontract -Ibsp/qemu_virt
+# The SoC simulator (socsim), run-soc, bench-soc and the soc firmware builds.
+include cosim/soc/socsim.mk
 
 .PHONY: all setup run run-headless test test-quick test-list lint check-contract contract random-long raster \
         bench-gpu bench-error bench-error-run synth clean
@@ -49,9 +51,14 @@ setup:
 run: setup
 	@$(MAKE) --no-print-directory run-headless
 
+# PLATFORM=soc: the whole SoC in socsim instead of QEMU + the GPU (cosim/soc/socsim.mk).
+ifeq ($(PLATFORM),soc)
+run-headless: run-soc
+else
 run-headless: $(FW_ELF) $(GPUSIM)
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
 	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log
+endif
 
 # ---- test: every suite (or those matching SUITE, e.g. SUITE='rtl-* fw-unit'), with a summary line ----
 SUITE ?= *

@@ -5,14 +5,7 @@
 #                 number, so the image and the RAM agree.
 #   FW_MAX_POLLS  the watchdog's DONE_SEQ reads per batch (default: about one second at 50 MHz).
 
-SOC_MAP_H           := contract/soc_map.h
-SOC_RAM_DEFAULT_KIB := $(shell printf '%d' $$(( $$(sed -n 's/^\#define SOC_RAM_DEFAULT_BYTES *\(0x[0-9A-Fa-f]*\).*/\1/p' $(SOC_MAP_H)) / 1024 )))
-SOC_RAM_KIB         ?= $(SOC_RAM_DEFAULT_KIB)
-SOC_RAM_BYTES       := $(shell echo $$(( $(SOC_RAM_KIB) * 1024 )))
-SOC_RAM_WINDOW_KIB := $(shell printf '%d' $$(( $$(sed -n 's/^\#define SOC_RAM_WINDOW_BYTES *\(0x[0-9A-Fa-f]*\).*/\1/p' $(SOC_MAP_H)) / 1024 )))
-ifneq ($(shell test $(SOC_RAM_KIB) -ge 1 -a $(SOC_RAM_KIB) -le $(SOC_RAM_WINDOW_KIB) && echo ok),ok)
-$(error SOC_RAM_KIB=$(SOC_RAM_KIB): the SoC's RAM window holds 1 to $(SOC_RAM_WINDOW_KIB) KiB (contract/soc_map.h))
-endif
+include bsp/soc/soc_ram.mk
 
 FW_CC         = $(RV_CC)
 FW_OBJDUMP    = $(patsubst %gcc,%objdump,$(RV_CC))

@@ -1,0 +1,609 @@
+// socsim: the whole SoC in one Verilated model — soc_top (VexRiscv with its caches, the Wishbone
+// bus, the on-chip RAM, the UART, SYS and the GPU with its VGA output) on its one clock — with the
+// outside world the board would have, at its pins: a UART terminal on uart_tx/uart_rx at the real
+// baud rate and a VGA monitor (cosim/vga_monitor) on the VGA pins. Unlike `gpusim cosim`, nothing is
+// replayed: the firmware's own bus traffic drives the GPU, cycle by cycle.
+//
+//   socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]
+//          [--keys-at N:TEXT]... [--max-cycles N] [--no-model-check]
+//
+// The program: RAM_INIT's format (one 32-bit hex word per line from address 0; --fw FILE.elf reads
+// FILE.elf.hex, the soc platform's post-link output), written into the RAM array after the model's
+// initial blocks ran and before the first clock edge. Loading at run time keeps one simulator per
+// RTL configuration (RAM size, span width are parameters: -G at build time) for every image; the
+// array is found by name (soc_ram's `mem`, made public by socsim.vlt), so no instance path of
+// soc_rtl is written here.
+//
+// What the harness sees besides the pins comes from taps bound into gpu_top and VexRiscv
+// (socsim_taps.sv): the GPU's bus writes, which also feed the golden model (cosim/model_check), and
+// FRAME_COUNT, whose every change arms the monitor: the first complete VGA frame after a swap is
+// captured, compared with the model's front buffer as it was at the swap, and written as
+// FRAMES_DIR/NNNN.png — the names and bytes `gpusim cosim` writes. The model's further writes wait
+// until that frame is compared, since the firmware may already draw (and, in the model, swap) the
+// next frame while the VGA still shows this one.
+//
+// Keys: --keys-at N:TEXT starts sending TEXT on uart_rx when the GPU takes its Nth DOORBELL write
+// (the point where `gpusim cosim` types it); if bytes are still on the line when the firmware next
+// reads UART DATA after the following swap, the firmware's frame saw part of them, so the run would
+// differ from co-simulation: a warning, counted as keys_late in the summary. With a terminal on
+// stdin the keystrokes are sent as well (cosim/uart_terminal); Ctrl-C ends the run.
+//
+// The run ends when the firmware writes SYS EXIT (soc_top's exit_valid): the process exits with its
+// status (0..255). A harness failure — a frame that differs from the model or cannot be captured,
+// the cycle limit, SIGINT/SIGTERM — prints "socsim: error: ..." and exits 1; usage errors exit 2.
+// --summary FILE holds the outcome as key=value lines, with the keys of `gpusim cosim --summary`
+// and the SoC's own counts. Simulation is deterministic: the same image gives the same files.
+#include <cerrno>
+#include <csignal>
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <sys/stat.h>
+
+#include "Vsoc_top.h"
+#include "svdpi.h"
+#include "verilated.h"
+#include "verilated_syms.h"
+
+#include "model_check.h"
+#include "uart_line.h"
+#include "uart_terminal.h"
+
+extern "C" {
+#include "gpu_regs.h"
+#include "png_write.h"
+#include "soc_map.h"
+#include "vga_monitor.h"
+}
+
+#ifndef SOCSIM_SPAN_W
+#define SOCSIM_SPAN_W GPU_DEFAULT_SPAN_W
+#endif
+#ifndef SOCSIM_ENABLE_LINES
+#define SOCSIM_ENABLE_LINES GPU_DEFAULT_ENABLE_LINES
+#endif
+#ifndef SOCSIM_ENABLE_ZBUF
+#define SOCSIM_ENABLE_ZBUF GPU_DEFAULT_ENABLE_ZBUF
+#endif
+#ifndef SOCSIM_CLK_HZ
+#define SOCSIM_CLK_HZ SOC_CLK_HZ_DEFAULT
+#endif
+
+extern "C" long long socsim_read_instret();  // exported by socsim_cpu_tap
+
+namespace {
+
+volatile sig_atomic_t g_signal = 0;
+void on_signal(int sig) { g_signal = sig; }
+
+double now_s()
+{
+    timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+struct Options {
+    std::string hex;
+    std::string frames_dir = "out/frames";
+    std::string uart_log;
+    std::string summary;
+    uint64_t max_cycles = 3000000000ull;  // 60 s of SoC time at 50 MHz
+    uint64_t progress_cycles = 50000000;  // a progress line after this many cycles without a frame
+    uint32_t uart_divider = (SOCSIM_CLK_HZ + SOC_UART_BAUD / 2) / SOC_UART_BAUD;  // as soc_uart rounds
+    bool check_model = true;
+    std::vector<std::pair<uint32_t, std::string>> keys_at;
+};
+
+int usage()
+{
+    std::fprintf(stderr,
+                 "usage: socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]\n"
+                 "              [--keys-at N:TEXT]... [--max-cycles N] [--no-model-check] [--uart-divider N]\n"
+                 "  --fw FILE.elf     run FILE.elf.hex (the soc build's RAM image); -kernel FILE.elf is the same\n"
+                 "  --keys-at N:TEXT  send TEXT on uart_rx when the GPU takes DOORBELL write N (from 1)\n"
+                 "  --max-cycles N    give up after N clocks (default 3e9: 60 s at 50 MHz)\n"
+                 "  --summary FILE    write the run's outcome and counts as key=value lines\n"
+                 "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n"
+                 "  Exit status: the firmware's (SYS EXIT); 1 on a harness error; 2 on a usage error.\n");
+    return 2;
+}
+
+bool parse(int argc, char **argv, Options &o)
+{
+    for (int i = 1; i < argc; i++) {
+        const std::string a = argv[i];
+        const bool has_value = i + 1 < argc;
+        if ((a == "--fw" || a == "-kernel") && has_value) {
+            o.hex = std::string(argv[++i]) + ".hex";
+        } else if (a == "--hex" && has_value) {
+            o.hex = argv[++i];
+        } else if (a == "--frames" && has_value) {
+            o.frames_dir = argv[++i];
+        } else if (a == "--uart-log" && has_value) {
+            o.uart_log = argv[++i];
+        } else if (a == "--summary" && has_value) {
+            o.summary = argv[++i];
+        } else if (a == "--max-cycles" && has_value) {
+            o.max_cycles = static_cast<uint64_t>(std::strtod(argv[++i], nullptr));
+        } else if (a == "--uart-divider" && has_value) {
+            o.uart_divider = static_cast<uint32_t>(std::strtoul(argv[++i], nullptr, 0));
+        } else if (a == "--keys-at" && has_value) {
+            const std::string spec = argv[++i];
+            const size_t colon = spec.find(':');
+            if (colon == std::string::npos || colon == 0) {
+                std::fprintf(stderr, "socsim: --keys-at wants N:TEXT, got '%s'\n", spec.c_str());
+                return false;
+            }
+            o.keys_at.emplace_back(static_cast<uint32_t>(std::strtoul(spec.c_str(), nullptr, 10)),
+                                   spec.substr(colon + 1));
+        } else if (a == "--no-model-check") {
+            o.check_model = false;
+        } else {
+            std::fprintf(stderr, "socsim: unknown or incomplete option '%s'\n", a.c_str());
+            return false;
+        }
+    }
+    return !o.hex.empty() && o.uart_divider >= 4;
+}
+
+uint32_t gpu_caps()
+{
+    return (SOCSIM_SPAN_W << GPU_CAPS_SPAN_W_LSB) | ((SOCSIM_ENABLE_LINES ? 1u : 0u) << GPU_CAPS_LINES_LSB) |
+           ((SOCSIM_ENABLE_ZBUF ? 1u : 0u) << GPU_CAPS_ZBUF_LSB);
+}
+
+class SocRun;
+SocRun *g_run = nullptr;  // the DPI callbacks' target (one run per process)
+svScope g_cpu_scope = nullptr;
+
+class SocRun {
+public:
+    explicit SocRun(const Options &o)
+        : opt_(o), top_(new Vsoc_top(context_.get())), model_(gpu_caps()), rx_(o.uart_divider),
+          tx_(o.uart_divider)
+    {
+        g_run = this;
+        vga_monitor_reset(&monitor_);
+    }
+    ~SocRun()
+    {
+        terminal_.restore();
+        top_->final();
+        g_run = nullptr;
+    }
+    int run();
+
+    // DPI events (socsim_taps.sv), during an eval.
+    void on_gpu_write(uint32_t offset, uint32_t value);
+    void on_gpu_swap(uint32_t frame_count);
+    void on_bus_cycle(bool ibus, uint32_t word_addr, bool write);
+    void on_uart_data_read();
+
+private:
+    struct KeyWatch {
+        uint32_t doorbell;
+        bool sent = false;        // queued on uart_rx
+        bool after_swap = false;  // the frame that saw the doorbell has swapped
+        bool done = false;
+    };
+
+    int fail(const char *kind, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+    bool load_ram(std::string *error);
+    void tick();
+    void uart_byte(uint8_t b);
+    void flush_uart(bool final);
+    bool finish_frame(std::string *error);
+    void write_summary(const char *error);
+    void report_speed();
+    uint64_t instret() const;
+
+    const Options &opt_;
+    std::unique_ptr<VerilatedContext> context_{new VerilatedContext};
+    std::unique_ptr<Vsoc_top> top_;
+    ModelCheck model_;
+    UartLineDecoder rx_;   // the firmware's output: soc_top's uart_tx
+    UartLineSender tx_;    // keys: soc_top's uart_rx
+    UartTerminal terminal_;
+    vga_monitor monitor_;
+    FILE *log_ = nullptr;
+    std::string line_;
+
+    uint64_t cycles_ = 0;
+    double t_start_ = 0;
+    uint64_t last_frame_cycle_ = 0;
+    bool arm_pending_ = false;     // a swap happened in this cycle's eval: arm the monitor after it
+    bool capture_pending_ = false; // armed, waiting for the frame
+    std::vector<std::pair<uint32_t, uint32_t>> deferred_;  // model writes held back during a capture
+    std::vector<uint8_t> expected_;                        // (unused: compare_frame scans out itself)
+    std::vector<KeyWatch> watches_;
+
+    uint32_t doorbells_ = 0, resets_ = 0, frames_ = 0, frames_checked_ = 0, keys_late_ = 0;
+    uint64_t icache_refills_ = 0, dcache_refills_ = 0, uart_reads_ = 0;
+    int firmware_status_ = -1;
+};
+
+void SocRun::on_gpu_write(uint32_t offset, uint32_t value)
+{
+    if (opt_.check_model) {
+        if (capture_pending_ || arm_pending_) {
+            deferred_.emplace_back(offset, value);
+        } else {
+            model_.write(offset, value);
+        }
+    }
+    if (offset == GPU_REG_RESET) {
+        resets_++;
+    }
+    if (offset != GPU_REG_DOORBELL) {
+        return;
+    }
+    doorbells_++;
+    for (const auto &k : opt_.keys_at) {
+        if (k.first == doorbells_) {
+            tx_.queue(k.second);
+            KeyWatch w{doorbells_};
+            w.sent = true;
+            watches_.push_back(w);
+        }
+    }
+}
+
+void SocRun::on_gpu_swap(uint32_t)
+{
+    arm_pending_ = true;
+    for (auto &w : watches_) {
+        w.after_swap = true;
+    }
+}
+
+void SocRun::on_bus_cycle(bool ibus, uint32_t word_addr, bool write)
+{
+    // A cycle to a cached address that is not a store is a cache-line refill (stores go through).
+    if (ibus) {
+        icache_refills_++;
+    } else if (!write && (word_addr << 2) < 0x80000000u) {
+        dcache_refills_++;
+    }
+}
+
+void SocRun::on_uart_data_read()
+{
+    uart_reads_++;
+    for (auto &w : watches_) {
+        if (w.after_swap && !w.done) {
+            w.done = true;
+            if (tx_.busy()) {
+                keys_late_++;
+                std::printf("socsim: warning: the keys of doorbell %u were still being sent when the next "
+                            "frame read the UART (cycle %llu): this run differs from co-simulation\n",
+                            w.doorbell, static_cast<unsigned long long>(cycles_));
+            }
+        }
+    }
+}
+
+uint64_t SocRun::instret() const
+{
+    if (g_cpu_scope == nullptr) {
+        return 0;
+    }
+    svSetScope(g_cpu_scope);
+    return static_cast<uint64_t>(socsim_read_instret());
+}
+
+// The RAM array: the one public variable named `mem` (socsim.vlt makes soc_ram's public).
+bool SocRun::load_ram(std::string *error)
+{
+    uint32_t *mem = nullptr;
+    size_t words = 0;
+    const VerilatedScopeNameMap *scopes = context_->scopeNameMap();
+    for (const auto &entry : *scopes) {
+        VerilatedVarNameMap *vars = entry.second->varsp();
+        if (vars == nullptr) {
+            continue;
+        }
+        const auto it = vars->find("mem");
+        if (it == vars->end()) {
+            continue;
+        }
+        const VerilatedVar &v = it->second;
+        if (mem != nullptr || v.udims() != 1 || v.entSize() != 4) {
+            *error = "cannot tell the RAM array (soc_ram's mem) from other variables";
+            return false;
+        }
+        mem = static_cast<uint32_t *>(v.datap());
+        words = static_cast<size_t>(v.unpacked().elements());
+    }
+    if (mem == nullptr) {
+        *error = "no RAM array (soc_ram's mem) in the model";
+        return false;
+    }
+    std::ifstream in(opt_.hex);
+    if (!in) {
+        *error = "cannot read " + opt_.hex + ": " + std::strerror(errno);
+        return false;
+    }
+    std::string word;
+    size_t n = 0;
+    while (in >> word) {
+        if (n == words) {
+            *error = opt_.hex + " is larger than the RAM (" + std::to_string(words * 4) + " bytes)";
+            return false;
+        }
+        mem[n++] = static_cast<uint32_t>(std::strtoul(word.c_str(), nullptr, 16));
+    }
+    std::printf("socsim: %s: %zu words loaded into %zu KiB of RAM\n", opt_.hex.c_str(), n, words * 4 / 1024);
+    return true;
+}
+
+void SocRun::tick()
+{
+    top_->uart_rx = tx_.tick();
+    top_->clk = 0;
+    top_->eval();
+    const bool pixel_edge = top_->vga_pix_stb;  // outputs change on the edge where it is high
+    top_->clk = 1;
+    top_->eval();
+    cycles_++;
+    if (pixel_edge) {
+        vga_monitor_sample(&monitor_, top_->vga_hsync_n, top_->vga_vsync_n, top_->vga_r, top_->vga_g,
+                           top_->vga_b);
+    }
+    uint8_t b;
+    if (rx_.sample(top_->uart_tx, &b)) {
+        uart_byte(b);
+    }
+}
+
+void SocRun::uart_byte(uint8_t b)
+{
+    if (b == '\r') {
+        return;
+    }
+    line_.push_back(static_cast<char>(b));
+    if (b == '\n') {
+        flush_uart(false);
+    }
+}
+
+// Complete lines to stdout and the log; with final, an unfinished last line too (stdout only).
+void SocRun::flush_uart(bool final)
+{
+    if (line_.empty()) {
+        return;
+    }
+    const bool complete = line_.back() == '\n';
+    if (!complete && !final) {
+        return;
+    }
+    std::fputs(line_.c_str(), stdout);
+    if (!complete) {
+        std::fputc('\n', stdout);
+    }
+    if (log_ != nullptr && complete) {
+        std::fputs(line_.c_str(), log_);
+    }
+    std::fflush(stdout);
+    line_.clear();
+}
+
+bool SocRun::finish_frame(std::string *error)
+{
+    capture_pending_ = false;
+    if (opt_.check_model) {
+        const std::string diff = model_.compare_frame(monitor_.rgb);
+        if (!diff.empty()) {
+            *error = "frame " + std::to_string(frames_) + ": VGA output differs from the golden model: " + diff;
+            return false;
+        }
+        for (const auto &w : deferred_) {
+            model_.write(w.first, w.second);
+        }
+        deferred_.clear();
+    }
+    char path[512];
+    std::snprintf(path, sizeof path, "%s/%04u.png", opt_.frames_dir.c_str(), frames_);
+    if (png_write_rgb(path, monitor_.rgb, VGA_W, VGA_H) != 0) {
+        *error = std::string("cannot write ") + path;
+        return false;
+    }
+    flush_uart(false);
+    std::printf("socsim: frame %04u -> %s | cycle %llu | instructions %llu%s\n", frames_, path,
+                static_cast<unsigned long long>(cycles_), static_cast<unsigned long long>(instret()),
+                opt_.check_model ? " | equals golden model" : "");
+    std::fflush(stdout);
+    frames_++;
+    frames_checked_ += opt_.check_model ? 1 : 0;
+    last_frame_cycle_ = cycles_;
+    return true;
+}
+
+void SocRun::write_summary(const char *error)
+{
+    if (opt_.summary.empty()) {
+        return;
+    }
+    FILE *f = std::fopen(opt_.summary.c_str(), "w");
+    if (f == nullptr) {
+        std::fprintf(stderr, "socsim: warning: cannot write %s: %s\n", opt_.summary.c_str(), std::strerror(errno));
+        return;
+    }
+    std::fprintf(f, "result=%s\nerror=%s\nfirmware_status=%d\n", std::strcmp(error, "none") ? "error" : "ok", error,
+                 firmware_status_);
+    std::fprintf(f, "batches=%u\ndoorbells_dropped=0\ngpu_resets=%u\n", doorbells_, resets_);
+    std::fprintf(f, "frames=%u\nframes_model_checked=%u\ngpu_cycles=%llu\n", frames_, frames_checked_,
+                 static_cast<unsigned long long>(cycles_));
+    std::fprintf(f, "cycles=%llu\ninstructions=%llu\nkeys_late=%u\n", static_cast<unsigned long long>(cycles_),
+                 static_cast<unsigned long long>(instret()), keys_late_);
+    std::fprintf(f, "icache_refills=%llu\ndcache_refills=%llu\nuart_framing_errors=%u\n",
+                 static_cast<unsigned long long>(icache_refills_), static_cast<unsigned long long>(dcache_refills_),
+                 rx_.framing_errors());
+    std::fclose(f);
+}
+
+void SocRun::report_speed()
+{
+    const double wall = now_s() - t_start_;
+    std::printf("socsim: %llu cycles (%.3f s at %.0f MHz) in %.1f s: %.2f M cycles/s\n",
+                static_cast<unsigned long long>(cycles_), cycles_ / static_cast<double>(SOCSIM_CLK_HZ),
+                SOCSIM_CLK_HZ / 1e6, wall, wall > 0 ? cycles_ / wall / 1e6 : 0.0);
+    std::fflush(stdout);
+}
+
+int SocRun::fail(const char *kind, const char *fmt, ...)
+{
+    flush_uart(true);
+    va_list ap;
+    va_start(ap, fmt);
+    std::fflush(stdout);
+    std::fputs("socsim: error: ", stderr);
+    std::vfprintf(stderr, fmt, ap);
+    std::fputc('\n', stderr);
+    va_end(ap);
+    terminal_.restore();
+    write_summary(kind);
+    report_speed();
+    return 1;
+}
+
+int SocRun::run()
+{
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGTERM, on_signal);
+    std::signal(SIGHUP, on_signal);
+    std::signal(SIGPIPE, SIG_IGN);
+    t_start_ = now_s();
+
+    if (mkdir(opt_.frames_dir.c_str(), 0755) != 0 && errno != EEXIST) {
+        return fail("setup", "cannot create %s: %s", opt_.frames_dir.c_str(), std::strerror(errno));
+    }
+    if (!opt_.uart_log.empty()) {
+        log_ = std::fopen(opt_.uart_log.c_str(), "w");
+        if (log_ == nullptr) {
+            return fail("setup", "cannot create %s: %s", opt_.uart_log.c_str(), std::strerror(errno));
+        }
+    }
+    // Initial blocks first (soc_ram zeroes its array), then the image, then the first edge.
+    top_->clk = 0;
+    top_->uart_rx = 1;
+    top_->eval();
+    std::string error;
+    if (!load_ram(&error)) {
+        return fail("setup", "%s", error.c_str());
+    }
+    terminal_.enter_raw();
+
+    uint64_t next_progress = opt_.progress_cycles;
+    for (;;) {
+        tick();
+        if (arm_pending_) {
+            arm_pending_ = false;
+            if (capture_pending_) {
+                return fail("capture", "a second swap before the frame of the first was captured (cycle %llu)",
+                            static_cast<unsigned long long>(cycles_));
+            }
+            vga_monitor_arm(&monitor_);
+            capture_pending_ = true;
+        }
+        if (capture_pending_ && monitor_.frame_ready) {
+            if (!finish_frame(&error)) {
+                return fail(opt_.check_model && error.find("golden") != std::string::npos ? "model-mismatch" : "write",
+                            "%s", error.c_str());
+            }
+        }
+        if (monitor_.error[0] != '\0') {
+            return fail("capture", "VGA timing: %s", monitor_.error);
+        }
+        if (top_->exit_valid) {
+            firmware_status_ = top_->exit_code;
+            flush_uart(true);
+            std::printf("socsim: firmware exited with status %d: %u doorbells, %u frames, %llu cycles, %llu "
+                        "instructions\n",
+                        firmware_status_, doorbells_, frames_, static_cast<unsigned long long>(cycles_),
+                        static_cast<unsigned long long>(instret()));
+            terminal_.restore();
+            write_summary(firmware_status_ == 0 ? "none" : "firmware-status");
+            report_speed();
+            return firmware_status_;
+        }
+        if ((cycles_ & 0xFFFF) != 0) {
+            continue;
+        }
+        if (g_signal) {
+            return fail("signal", "stopped by signal %d", static_cast<int>(g_signal));
+        }
+        bool ctrl_c = false;
+        const std::string keys = terminal_.read_keys(&ctrl_c);
+        if (ctrl_c) {
+            g_signal = SIGINT;
+        }
+        tx_.queue(keys);
+        if (cycles_ >= opt_.max_cycles) {
+            return fail("cycle-limit", "the firmware did not exit within %llu cycles",
+                        static_cast<unsigned long long>(opt_.max_cycles));
+        }
+        if (cycles_ - last_frame_cycle_ >= next_progress) {
+            flush_uart(false);
+            std::printf("socsim: %u frames, %llu M cycles\n", frames_, static_cast<unsigned long long>(cycles_ / 1000000));
+            std::fflush(stdout);
+            next_progress += opt_.progress_cycles;
+        } else if (cycles_ - last_frame_cycle_ < opt_.progress_cycles) {
+            next_progress = opt_.progress_cycles;
+        }
+    }
+}
+
+}  // namespace
+
+// ---- DPI imports of socsim_taps.sv -------------------------------------------------------------
+extern "C" void socsim_gpu_write(unsigned offset, unsigned value)
+{
+    if (g_run != nullptr) {
+        g_run->on_gpu_write(offset, value);
+    }
+}
+
+extern "C" void socsim_gpu_swap(unsigned frame_count)
+{
+    if (g_run != nullptr) {
+        g_run->on_gpu_swap(frame_count);
+    }
+}
+
+extern "C" void socsim_bus_cycle(unsigned ibus, unsigned word_addr, unsigned write)
+{
+    if (g_run != nullptr) {
+        g_run->on_bus_cycle(ibus != 0, word_addr, write != 0);
+    }
+}
+
+extern "C" void socsim_uart_data_read()
+{
+    if (g_run != nullptr) {
+        g_run->on_uart_data_read();
+    }
+}
+
+extern "C" void socsim_cpu_scope()
+{
+    g_cpu_scope = svGetScope();
+}
+
+int main(int argc, char **argv)
+{
+    Verilated::commandArgs(1, argv);
+    Options o;
+    if (!parse(argc, argv, o)) {
+        return usage();
+    }
+    SocRun run(o);
+    return run.run();
+}

@@ -1,0 +1,90 @@
+// socsim_taps: what socsim observes inside soc_top without a port for it, bound in by module name
+// (`bind`), so the harness depends on no instance path of soc_rtl and the RTL is not edited. The
+// taps only watch: every input of theirs is an existing signal of the module they are bound into,
+// and they drive nothing of it. They report through DPI-C calls, on events only (a bus write, a
+// swap, a bus transaction start), so the cost per cycle is a few compares.
+//
+//   socsim_gpu_tap (in gpu_top):  every bus write the GPU takes (byte offset, data) — the golden
+//                                 model is fed the same writes — and each change of FRAME_COUNT (a
+//                                 buffer swap, after which the next VGA frame is captured).
+//   socsim_cpu_tap (in VexRiscv): the start of every Wishbone cycle of either bus (a fetch or load
+//                                 of a cached address starts a cache-line refill: the misses), every
+//                                 acknowledged load of UART DATA (the firmware reading keys), and
+//                                 the retired-instruction counter.
+`default_nettype none
+
+module socsim_gpu_tap (
+    input wire        clk,
+    input wire        bus_valid,    // gpu_top's bus slave port, as gpu_regs takes it
+    input wire        bus_write,
+    input wire [16:2] bus_addr,
+    input wire [31:0] bus_wdata,
+    input wire [31:0] frame_count   // gpu_top's FRAME_COUNT
+);
+    import "DPI-C" function void socsim_gpu_write(input int unsigned offset, input int unsigned value);
+    import "DPI-C" function void socsim_gpu_swap(input int unsigned frame_count);
+
+    reg [31:0] frame_count_q = 32'd0;
+    always @(posedge clk) begin
+        if (bus_valid && bus_write) begin
+            socsim_gpu_write({15'd0, bus_addr, 2'b00}, bus_wdata);
+        end
+        if (frame_count != frame_count_q) begin
+            socsim_gpu_swap(frame_count);
+        end
+        frame_count_q <= frame_count;
+    end
+endmodule
+
+module socsim_cpu_tap #(
+    parameter [31:0] UART_DATA_ADDR = 32'h8100_0000  // soc_map.h SOC_UART_BASE + SOC_UART_REG_DATA
+) (
+    input wire        clk,
+    input wire        i_cyc,        // iBusWishbone_*
+    input wire        d_cyc,        // dBusWishbone_*
+    input wire        d_stb,
+    input wire        d_ack,
+    input wire        d_we,
+    input wire [29:0] d_adr,
+    input wire [63:0] minstret      // CsrPlugin_minstret
+);
+    import "DPI-C" function void socsim_bus_cycle(input int unsigned ibus, input int unsigned word_addr,
+                                                  input int unsigned write);
+    import "DPI-C" function void socsim_uart_data_read();
+    // Called once at time 0 so that the harness learns this instance's scope for the export below
+    // (svGetScope in a context import), wherever soc_top put the core.
+    import "DPI-C" context function void socsim_cpu_scope();
+    initial socsim_cpu_scope();
+
+    reg i_cyc_q = 1'b0;
+    reg d_cyc_q = 1'b0;
+    always @(posedge clk) begin
+        if (i_cyc && !i_cyc_q) begin
+            socsim_bus_cycle(1, 0, 0);
+        end
+        if (d_cyc && !d_cyc_q) begin
+            socsim_bus_cycle(0, {2'b00, d_adr}, {31'd0, d_we});
+        end
+        if (d_cyc && d_stb && d_ack && !d_we && {d_adr, 2'b00} == UART_DATA_ADDR) begin
+            socsim_uart_data_read();
+        end
+        i_cyc_q <= i_cyc;
+        d_cyc_q <= d_cyc;
+    end
+    // The counter as it is now, read by the harness when it reports.
+    export "DPI-C" function socsim_read_instret;
+    function longint unsigned socsim_read_instret();
+        return minstret;
+    endfunction
+endmodule
+
+bind gpu_top socsim_gpu_tap u_socsim_gpu_tap (
+    .clk(clk), .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr),
+    .bus_wdata(bus_wdata), .frame_count(frame_count)
+);
+
+bind VexRiscv socsim_cpu_tap u_socsim_cpu_tap (
+    .clk(clk), .i_cyc(iBusWishbone_CYC), .d_cyc(dBusWishbone_CYC), .d_stb(dBusWishbone_STB),
+    .d_ack(dBusWishbone_ACK), .d_we(dBusWishbone_WE), .d_adr(dBusWishbone_ADR),
+    .minstret(CsrPlugin_minstret)
+);
