@@ -1,0 +1,10 @@
+// The SoC's own RTL, in compilation order (the package first, soc_top last): the one list soc.mk
+// (lint-soc, the simulators) and synth/synth_soc.sh read. The GPU's sources come from
+// gpu_rtl/files.f and the CPU from the pythondata-cpu-vexriscv package (SOC_CPU_V in soc.mk).
+soc_rtl/soc_pkg.sv
+soc_rtl/soc_wb_arbiter.v
+soc_rtl/soc_wb_decoder.v
+soc_rtl/soc_ram.v
+soc_rtl/soc_uart.v
+soc_rtl/soc_sys.v
+soc_rtl/soc_top.v

@@ -1,0 +1,310 @@
+// soc_top: the whole SoC on one clock — VexRiscv (RV32IM, 4 KiB I$ and D$), on-chip RAM, the GPU,
+// a UART and the system registers, on one Wishbone bus. Memory map: contract/soc-memory-map.md.
+//
+//   VexRiscv iBus ─┐                      ┌─ soc_ram (RAM_BYTES, RAM_INIT)
+//                  ├─ soc_wb_arbiter ─ soc_wb_decoder ─┼─ gpu_wb_slave ─ gpu_top ─ VGA pins
+//   VexRiscv dBus ─┘   (round robin,      (regions,    ├─ soc_uart ─ uart_rx / uart_tx
+//                       per CYC)           err for     └─ soc_sys ─ leds, exit, timer, bus errors
+//                                          the rest)
+//
+// Reset: a power-on counter holds everything in reset for POR_CLKS clocks after configuration (the
+// FPGA's flops start at their initial values), and again after ext_rst (a button; two-flop
+// synchronised). The core starts at SOC_RAM_BASE.
+// Bus errors: the packaged VexRiscv ignores Wishbone ERR (its bridges tie the response error to 0),
+// so here a refused beat is answered to the core as an ACK with data 0 (a load reads 0, a fetch
+// reads 0x00000000 = illegal instruction, a store is dropped) and reported to soc_sys, which records
+// it (BUS_ERR, BUS_ERR_ADDR) and raises external interrupt SOC_IRQ_BUS_ERROR: no hang, no silence.
+// The GPU's VGA pixel clock is CLK_HZ / PIX_DIV = 25 MHz: CLK_HZ must be a multiple of 25 MHz.
+`default_nettype none
+
+module soc_top #(
+    parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // on-chip RAM; 192 KiB = 96 ECP5 EBR
+    parameter RAM_INIT = "",                   // $readmemh image of the RAM (one 32-bit word a line)
+    parameter integer CLK_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,  // clk's frequency: UART divider, SYS CLK_HZ
+    parameter integer BAUD = soc_pkg::SOC_UART_BAUD,         // UART bits per second
+    // The GPU's build options (gpu_top), passed through; defaults from the GPU contract.
+    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
+    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
+    localparam integer PIX_HZ = 25000000,      // VGA 640x480@60 pixel rate
+    localparam integer PIX_DIV = CLK_HZ / PIX_HZ,
+    localparam integer RAM_AW = $clog2(RAM_BYTES / 4),
+    localparam integer POR_CLKS = 16           // reset length after power-on or ext_rst
+) (
+    input  wire       clk,            // the one system clock, CLK_HZ
+    input  wire       ext_rst,        // board reset button, active high, asynchronous (tie 0 if none)
+    // UART (8N1, BAUD)
+    input  wire       uart_rx,        // the FPGA receives; asynchronous, idle high
+    output wire       uart_tx,        // the FPGA transmits; idle high
+    // VGA 640x480@60 (gpu_top's pins)
+    output wire       vga_pix_stb,    // the outputs change on the clk edge where this is high
+    output wire       vga_hsync_n,
+    output wire       vga_vsync_n,
+    output wire [3:0] vga_r,
+    output wire [3:0] vga_g,
+    output wire [3:0] vga_b,
+    // board
+    output wire [7:0] leds,           // SYS LEDS
+    output wire       exit_valid,     // SYS EXIT was written (held until reset): a simulator ends
+    output wire [7:0] exit_code       // its status, 0 = success
+);
+    generate if (PIX_DIV < 1 || PIX_DIV * PIX_HZ != CLK_HZ) begin : g_bad_clk
+        $error("soc_top: CLK_HZ must be a multiple of 25 MHz (the GPU's VGA pixel rate)");
+    end endgenerate
+
+    // ---- reset: power-on counter, restarted by the (synchronised) button ----
+    reg [1:0] ext_rst_sync_q = 2'b00;
+    localparam integer POR_W = $clog2(POR_CLKS) + 1;
+    localparam [POR_W-1:0] POR_END = POR_W'(POR_CLKS);
+    reg [POR_W-1:0] por_q = '0;             // counts up to POR_END; in reset until then
+    reg rst = 1'b1;                          // synchronous, active high, for everything
+    always @(posedge clk) begin
+        ext_rst_sync_q <= {ext_rst_sync_q[0], ext_rst};
+        if (ext_rst_sync_q[1]) por_q <= '0;
+        else if (rst) por_q <= por_q + 1'b1;
+        rst <= ext_rst_sync_q[1] || por_q < POR_END;
+    end
+
+    // ---- the core ----
+    wire        ibus_cyc, ibus_stb, ibus_we, ibus_ack, ibus_err;
+    wire [29:0] ibus_adr;
+    wire [31:0] ibus_dat_w, ibus_dat_r;
+    wire [3:0]  ibus_sel;
+    wire [2:0]  ibus_cti;
+    wire [1:0]  ibus_bte;
+    wire        dbus_cyc, dbus_stb, dbus_we, dbus_ack, dbus_err;
+    wire [29:0] dbus_adr;
+    wire [31:0] dbus_dat_w, dbus_dat_r;
+    wire [3:0]  dbus_sel;
+    wire [2:0]  dbus_cti;
+    wire [1:0]  dbus_bte;
+    wire        timer_irq, buserr_irq;
+
+    localparam [31:0] RESET_VECTOR = soc_pkg::SOC_RAM_BASE;
+    wire [31:0] ext_irqs = {31'd0, buserr_irq} << soc_pkg::SOC_IRQ_BUS_ERROR;
+
+    VexRiscv u_cpu (
+        .clk                    (clk),
+        .reset                  (rst),
+        .externalResetVector    (RESET_VECTOR),
+        .timerInterrupt         (timer_irq),
+        .softwareInterrupt      (1'b0),
+        .externalInterruptArray (ext_irqs),
+        .iBusWishbone_CYC       (ibus_cyc),
+        .iBusWishbone_STB       (ibus_stb),
+        .iBusWishbone_ACK       (ibus_ack || ibus_err),        // a refused beat completes (see header)
+        .iBusWishbone_WE        (ibus_we),
+        .iBusWishbone_ADR       (ibus_adr),
+        .iBusWishbone_DAT_MISO  (ibus_err ? 32'd0 : ibus_dat_r),
+        .iBusWishbone_DAT_MOSI  (ibus_dat_w),
+        .iBusWishbone_SEL       (ibus_sel),
+        .iBusWishbone_ERR       (1'b0),                        // ignored by the core
+        .iBusWishbone_CTI       (ibus_cti),
+        .iBusWishbone_BTE       (ibus_bte),
+        .dBusWishbone_CYC       (dbus_cyc),
+        .dBusWishbone_STB       (dbus_stb),
+        .dBusWishbone_ACK       (dbus_ack || dbus_err),
+        .dBusWishbone_WE        (dbus_we),
+        .dBusWishbone_ADR       (dbus_adr),
+        .dBusWishbone_DAT_MISO  (dbus_err ? 32'd0 : dbus_dat_r),
+        .dBusWishbone_DAT_MOSI  (dbus_dat_w),
+        .dBusWishbone_SEL       (dbus_sel),
+        .dBusWishbone_ERR       (1'b0),
+        .dBusWishbone_CTI       (dbus_cti),
+        .dBusWishbone_BTE       (dbus_bte)
+    );
+
+    // ---- the bus: arbiter, decoder ----
+    wire        bus_cyc, bus_stb, bus_we, bus_ack, bus_err;
+    wire [29:0] bus_adr;
+    wire [31:0] bus_dat_w, bus_dat_r;
+    wire [3:0]  bus_sel;
+    wire [2:0]  bus_cti;
+
+    soc_wb_arbiter u_arbiter (
+        .clk      (clk),
+        .rst      (rst),
+        .m0_cyc   (ibus_cyc),
+        .m0_stb   (ibus_stb),
+        .m0_we    (ibus_we),
+        .m0_adr   (ibus_adr),
+        .m0_dat_w (ibus_dat_w),
+        .m0_sel   (ibus_sel),
+        .m0_cti   (ibus_cti),
+        .m0_dat_r (ibus_dat_r),
+        .m0_ack   (ibus_ack),
+        .m0_err   (ibus_err),
+        .m1_cyc   (dbus_cyc),
+        .m1_stb   (dbus_stb),
+        .m1_we    (dbus_we),
+        .m1_adr   (dbus_adr),
+        .m1_dat_w (dbus_dat_w),
+        .m1_sel   (dbus_sel),
+        .m1_cti   (dbus_cti),
+        .m1_dat_r (dbus_dat_r),
+        .m1_ack   (dbus_ack),
+        .m1_err   (dbus_err),
+        .s_cyc    (bus_cyc),
+        .s_stb    (bus_stb),
+        .s_we     (bus_we),
+        .s_adr    (bus_adr),
+        .s_dat_w  (bus_dat_w),
+        .s_sel    (bus_sel),
+        .s_cti    (bus_cti),
+        .s_dat_r  (bus_dat_r),
+        .s_ack    (bus_ack),
+        .s_err    (bus_err)
+    );
+
+    wire        ram_stb, ram_ack;
+    wire [31:0] ram_dat_r;
+    wire        gpu_stb, gpu_ack, gpu_err;
+    wire [31:0] gpu_dat_r;
+    wire        uart_stb, uart_ack, uart_err;
+    wire [31:0] uart_dat_r;
+    wire        sys_stb, sys_ack, sys_err;
+    wire [31:0] sys_dat_r;
+
+    soc_wb_decoder #(
+        .RAM_BYTES (RAM_BYTES)
+    ) u_decoder (
+        .clk        (clk),
+        .rst        (rst),
+        .cyc        (bus_cyc),
+        .stb        (bus_stb),
+        .adr        (bus_adr),
+        .dat_r      (bus_dat_r),
+        .ack        (bus_ack),
+        .err        (bus_err),
+        .ram_stb    (ram_stb),
+        .ram_dat_r  (ram_dat_r),
+        .ram_ack    (ram_ack),
+        .gpu_stb    (gpu_stb),
+        .gpu_dat_r  (gpu_dat_r),
+        .gpu_ack    (gpu_ack),
+        .gpu_err    (gpu_err),
+        .uart_stb   (uart_stb),
+        .uart_dat_r (uart_dat_r),
+        .uart_ack   (uart_ack),
+        .uart_err   (uart_err),
+        .sys_stb    (sys_stb),
+        .sys_dat_r  (sys_dat_r),
+        .sys_ack    (sys_ack),
+        .sys_err    (sys_err)
+    );
+
+    // ---- slaves ----
+    soc_ram #(
+        .RAM_BYTES (RAM_BYTES),
+        .RAM_INIT  (RAM_INIT)
+    ) u_ram (
+        .clk      (clk),
+        .rst      (rst),
+        .wb_cyc   (bus_cyc),
+        .wb_stb   (ram_stb),
+        .wb_we    (bus_we),
+        .wb_adr   (bus_adr[RAM_AW-1:0]),
+        .wb_dat_w (bus_dat_w),
+        .wb_sel   (bus_sel),
+        .wb_cti   (bus_cti),
+        .wb_dat_r (ram_dat_r),
+        .wb_ack   (ram_ack)
+    );
+
+    wire        gpu_bus_valid, gpu_bus_write, gpu_bus_rvalid;
+    wire [16:2] gpu_bus_addr;
+    wire [31:0] gpu_bus_wdata, gpu_bus_rdata;
+
+    gpu_wb_slave u_gpu_wb (
+        .clk        (clk),
+        .rst        (rst),
+        .wb_cyc     (bus_cyc),
+        .wb_stb     (gpu_stb),
+        .wb_we      (bus_we),
+        .wb_adr     (bus_adr[14:0]),
+        .wb_dat_w   (bus_dat_w),
+        .wb_sel     (bus_sel),
+        .wb_dat_r   (gpu_dat_r),
+        .wb_ack     (gpu_ack),
+        .wb_err     (gpu_err),
+        .bus_valid  (gpu_bus_valid),
+        .bus_write  (gpu_bus_write),
+        .bus_addr   (gpu_bus_addr),
+        .bus_wdata  (gpu_bus_wdata),
+        .bus_rdata  (gpu_bus_rdata),
+        .bus_rvalid (gpu_bus_rvalid)
+    );
+
+    gpu_top #(
+        .SPAN_W       (SPAN_W),
+        .ENABLE_LINES (ENABLE_LINES),
+        .ENABLE_ZBUF  (ENABLE_ZBUF),
+        .PIX_DIV      (PIX_DIV)
+    ) u_gpu (
+        .clk         (clk),
+        .rst         (rst),
+        .bus_valid   (gpu_bus_valid),
+        .bus_write   (gpu_bus_write),
+        .bus_addr    (gpu_bus_addr),
+        .bus_wdata   (gpu_bus_wdata),
+        .bus_rdata   (gpu_bus_rdata),
+        .bus_rvalid  (gpu_bus_rvalid),
+        .vga_pix_stb (vga_pix_stb),
+        .vga_hsync_n (vga_hsync_n),
+        .vga_vsync_n (vga_vsync_n),
+        .vga_r       (vga_r),
+        .vga_g       (vga_g),
+        .vga_b       (vga_b)
+    );
+
+    soc_uart #(
+        .CLK_HZ (CLK_HZ),
+        .BAUD   (BAUD)
+    ) u_uart (
+        .clk           (clk),
+        .rst           (rst),
+        .wb_cyc        (bus_cyc),
+        .wb_stb        (uart_stb),
+        .wb_we         (bus_we),
+        .wb_adr        (bus_adr[5:0]),
+        .wb_dat_w      (bus_dat_w[7:0]),
+        .wb_dat_r      (uart_dat_r),
+        .wb_ack        (uart_ack),
+        .wb_err        (uart_err),
+        .uart_rx_async (uart_rx),
+        .uart_tx       (uart_tx)
+    );
+
+    // The refused beats of either bus, for the SYS record (one clock each).
+    wire        buserr_stb   = ibus_err || dbus_err;
+    wire [31:0] buserr_addr  = {ibus_err ? ibus_adr : dbus_adr, 2'b00};
+    wire        buserr_write = dbus_err && dbus_we;
+
+    soc_sys #(
+        .CLK_HZ    (CLK_HZ),
+        .RAM_BYTES (RAM_BYTES)
+    ) u_sys (
+        .clk          (clk),
+        .rst          (rst),
+        .wb_cyc       (bus_cyc),
+        .wb_stb       (sys_stb),
+        .wb_we        (bus_we),
+        .wb_adr       (bus_adr[5:0]),
+        .wb_dat_w     (bus_dat_w),
+        .wb_sel       (bus_sel),
+        .wb_dat_r     (sys_dat_r),
+        .wb_ack       (sys_ack),
+        .wb_err       (sys_err),
+        .buserr_stb   (buserr_stb),
+        .buserr_addr  (buserr_addr),
+        .buserr_write (buserr_write),
+        .buserr_fetch (ibus_err),
+        .timer_irq    (timer_irq),
+        .buserr_irq   (buserr_irq),
+        .leds         (leds),
+        .exit_valid   (exit_valid),
+        .exit_code    (exit_code)
+    );
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,228 @@
+// soc_uart: 8N1 serial port with RX and TX FIFOs, a Wishbone B4 slave (registers: UART in
+// contract/soc-memory-map.md).
+//
+// Contract (bus): every request is answered in the next clock, once: wb_ack for DATA, STATUS, ERRORS,
+// DIVIDER, wb_err for any other offset of the window. A DATA write pushes wb_dat_w[7:0] into the TX
+// FIFO (dropped when full); a DATA read returns the oldest RX byte with bit 8 set and pops it, or 0
+// when the RX FIFO is empty. Reads take effect once per request, in its first clock.
+// Contract (line): DIV = CLK_HZ / BAUD rounded clocks per bit. TX sends start, 8 data bits LSB
+// first, stop, back to back while the FIFO holds bytes. RX synchronises uart_rx with two flops
+// (uart_rx is asynchronous: `_async`), takes a falling edge as a start bit and re-checks it half a
+// bit later (shorter pulses are ignored), samples each data bit and the stop bit in the middle of
+// the bit; a low stop bit is a framing error (counted, the byte dropped, RX waits for the line to go
+// high again); a byte that finds the RX FIFO full is an overrun (counted, dropped). Both counters
+// saturate at 0xFFFF. The bit timing error of the rounding is below 0.5 / DIV of a bit.
+`default_nettype none
+
+module soc_uart #(
+    parameter integer CLK_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,     // system clock, Hz
+    parameter integer BAUD = soc_pkg::SOC_UART_BAUD,            // bits per second
+    parameter integer RX_DEPTH = soc_pkg::SOC_UART_RX_FIFO_DEPTH,  // bytes, a power of two
+    parameter integer TX_DEPTH = soc_pkg::SOC_UART_TX_FIFO_DEPTH,  // bytes, a power of two
+    localparam integer DIV = (CLK_HZ + BAUD / 2) / BAUD,        // clocks per bit
+    localparam integer CW = $clog2(DIV + 1),                    // bit-timer width
+    localparam integer RXW = $clog2(RX_DEPTH),
+    localparam integer TXW = $clog2(TX_DEPTH)
+) (
+    input  wire        clk,
+    input  wire        rst,           // synchronous, active high
+    // Wishbone B4 slave (the UART window)
+    input  wire        wb_cyc,
+    input  wire        wb_stb,        // selected by the decoder
+    input  wire        wb_we,
+    input  wire [7:2]  wb_adr,        // word offset in the window
+    input  wire [7:0]  wb_dat_w,      // a DATA write's byte (the rest of the word is ignored)
+    output reg  [31:0] wb_dat_r,      // valid with wb_ack
+    output wire        wb_ack,
+    output wire        wb_err,
+    // serial lines
+    input  wire        uart_rx_async, // received line, idle high, not synchronous to clk
+    output reg         uart_tx        // transmitted line, idle high
+);
+    generate if (DIV < 4 || (1 << RXW) != RX_DEPTH || (1 << TXW) != TX_DEPTH) begin : g_bad
+        $error("soc_uart: CLK_HZ / BAUD must be at least 4, FIFO depths powers of two");
+    end endgenerate
+
+    localparam [CW-1:0] BIT_CLKS  = DIV[CW-1:0] - 1'b1;       // a whole bit, counted down to 0
+    localparam [CW-1:0] HALF_CLKS = DIV[CW:1] - 1'b1;         // half a bit
+    localparam [7:0] OFF_DATA    = soc_pkg::SOC_UART_REG_DATA;
+    localparam [7:0] OFF_STATUS  = soc_pkg::SOC_UART_REG_STATUS;
+    localparam [7:0] OFF_ERRORS  = soc_pkg::SOC_UART_REG_ERRORS;
+    localparam [7:0] OFF_DIVIDER = soc_pkg::SOC_UART_REG_DIVIDER;
+
+    // ---- bus: registered answer, one clock after the request ----
+    reg  ack_q, err_q;
+    wire req = wb_cyc && wb_stb;
+    wire accept = req && !ack_q && !err_q;   // a request's first clock: its effects happen here
+    wire [7:0] off = {wb_adr, 2'b00};
+    wire is_data = off == OFF_DATA, is_status = off == OFF_STATUS;
+    wire is_errors = off == OFF_ERRORS, is_divider = off == OFF_DIVIDER;
+    wire known = is_data || is_status || is_errors || is_divider;
+    assign wb_ack = ack_q && req;
+    assign wb_err = err_q && req;
+
+    // ---- RX: synchroniser, bit timer, shift register, FIFO ----
+    reg [1:0] rx_sync_q;                  // two flops: rx_sync_q[1] is the synchronous line
+    wire rx = rx_sync_q[1];
+    localparam [1:0] RX_IDLE = 2'd0, RX_START = 2'd1, RX_BITS = 2'd2, RX_STOP = 2'd3;
+    reg [1:0]    rx_state_q;
+    reg [CW-1:0] rx_timer_q;
+    reg [2:0]    rx_bit_q;
+    reg [7:0]    rx_shift_q;
+    reg          rx_wait_high_q;           // after a framing error: wait for the line to idle
+    reg [7:0]    rx_fifo [0:RX_DEPTH-1];
+    reg [RXW:0]  rx_wr_q, rx_rd_q;         // one bit wider than the index: full vs empty
+    wire rx_empty = rx_wr_q == rx_rd_q;
+    wire rx_full  = rx_wr_q == {~rx_rd_q[RXW], rx_rd_q[RXW-1:0]};
+    reg [15:0]   frame_err_q, overrun_q;
+    wire rx_stop_mid  = rx_state_q == RX_STOP && rx_timer_q == 0;   // the stop bit's sample
+    wire rx_push      = rx_stop_mid && rx;     // a good byte ends this clock
+    wire rx_frame_bad = rx_stop_mid && !rx;    // a byte with a low stop bit ends this clock
+    wire rx_pop = accept && !wb_we && is_data && !rx_empty;
+
+    always @(posedge clk) begin
+        if (rst) rx_sync_q <= 2'b11;
+        else     rx_sync_q <= {rx_sync_q[0], uart_rx_async};
+    end
+
+    always @(posedge clk) begin
+        if (rst) begin
+            rx_state_q <= RX_IDLE;
+            rx_timer_q <= '0;
+            rx_bit_q <= 3'd0;
+            rx_shift_q <= 8'd0;
+            rx_wait_high_q <= 1'b0;
+        end else begin
+            case (rx_state_q)
+                RX_IDLE: begin
+                    if (rx) rx_wait_high_q <= 1'b0;
+                    if (!rx && !rx_wait_high_q) begin
+                        rx_state_q <= RX_START;
+                        rx_timer_q <= HALF_CLKS;
+                    end
+                end
+                RX_START: begin   // the middle of the start bit: still low, or it was a glitch
+                    if (rx_timer_q != 0) rx_timer_q <= rx_timer_q - 1'b1;
+                    else if (rx) rx_state_q <= RX_IDLE;
+                    else begin
+                        rx_state_q <= RX_BITS;
+                        rx_timer_q <= BIT_CLKS;
+                        rx_bit_q <= 3'd0;
+                    end
+                end
+                RX_BITS: begin
+                    if (rx_timer_q != 0) rx_timer_q <= rx_timer_q - 1'b1;
+                    else begin
+                        rx_shift_q <= {rx, rx_shift_q[7:1]};   // LSB first
+                        rx_timer_q <= BIT_CLKS;
+                        rx_bit_q <= rx_bit_q + 1'b1;
+                        if (rx_bit_q == 3'd7) rx_state_q <= RX_STOP;
+                    end
+                end
+                default: begin    // RX_STOP: the middle of the stop bit
+                    if (rx_timer_q != 0) rx_timer_q <= rx_timer_q - 1'b1;
+                    else begin
+                        rx_state_q <= RX_IDLE;
+                        if (!rx) rx_wait_high_q <= 1'b1;   // framing error (rx_frame_bad)
+                    end
+                end
+            endcase
+        end
+    end
+
+    always @(posedge clk) begin
+        if (rst) begin
+            rx_wr_q <= '0;
+            rx_rd_q <= '0;
+            frame_err_q <= 16'd0;
+            overrun_q <= 16'd0;
+        end else begin
+            if (rx_push && !rx_full) begin
+                rx_fifo[rx_wr_q[RXW-1:0]] <= rx_shift_q;
+                rx_wr_q <= rx_wr_q + 1'b1;
+            end
+            if (rx_push && rx_full && overrun_q != 16'hFFFF) overrun_q <= overrun_q + 1'b1;
+            if (rx_frame_bad && frame_err_q != 16'hFFFF) frame_err_q <= frame_err_q + 1'b1;
+            if (rx_pop) rx_rd_q <= rx_rd_q + 1'b1;
+        end
+    end
+
+    // ---- TX: FIFO and shifter ----
+    reg [7:0]    tx_fifo [0:TX_DEPTH-1];
+    reg [TXW:0]  tx_wr_q, tx_rd_q;
+    wire tx_empty = tx_wr_q == tx_rd_q;
+    wire tx_full  = tx_wr_q == {~tx_rd_q[TXW], tx_rd_q[TXW-1:0]};
+    reg          tx_busy_q;                // the shifter is sending a frame
+    reg [8:0]    tx_shift_q;               // {stop, data} still to send after the current bit
+    reg [3:0]    tx_bits_q;                // bits left after the current one
+    reg [CW-1:0] tx_timer_q;
+    wire tx_push = accept && wb_we && is_data && !tx_full;
+    wire tx_load = !tx_busy_q && !tx_empty;
+
+    always @(posedge clk) begin
+        if (rst) begin
+            tx_wr_q <= '0;
+            tx_rd_q <= '0;
+            tx_busy_q <= 1'b0;
+            tx_shift_q <= 9'h1FF;
+            tx_bits_q <= 4'd0;
+            tx_timer_q <= '0;
+            uart_tx <= 1'b1;
+        end else begin
+            if (tx_push) begin
+                tx_fifo[tx_wr_q[TXW-1:0]] <= wb_dat_w;
+                tx_wr_q <= tx_wr_q + 1'b1;
+            end
+            if (tx_load) begin             // start bit now, then 8 data bits and the stop bit
+                uart_tx <= 1'b0;
+                tx_shift_q <= {1'b1, tx_fifo[tx_rd_q[TXW-1:0]]};
+                tx_bits_q <= 4'd9;
+                tx_timer_q <= BIT_CLKS;
+                tx_busy_q <= 1'b1;
+                tx_rd_q <= tx_rd_q + 1'b1;
+            end else if (tx_busy_q) begin
+                if (tx_timer_q != 0) tx_timer_q <= tx_timer_q - 1'b1;
+                else if (tx_bits_q != 0) begin
+                    uart_tx <= tx_shift_q[0];
+                    tx_shift_q <= {1'b1, tx_shift_q[8:1]};
+                    tx_bits_q <= tx_bits_q - 1'b1;
+                    tx_timer_q <= BIT_CLKS;
+                end else begin
+                    tx_busy_q <= 1'b0;     // the stop bit has had its whole bit time
+                end
+            end
+        end
+    end
+
+    // ---- register reads and the answer ----
+    // Fields at the contract's positions (soc_pkg::SOC_UART_*_LSB).
+    wire tx_idle = tx_empty && !tx_busy_q;
+    wire [31:0] status = ({31'd0, !rx_empty} << soc_pkg::SOC_UART_STATUS_RX_VALID_LSB)
+                       | ({31'd0, tx_full}   << soc_pkg::SOC_UART_STATUS_TX_FULL_LSB)
+                       | ({31'd0, tx_idle}   << soc_pkg::SOC_UART_STATUS_TX_IDLE_LSB);
+    wire [31:0] rx_word = ({24'd0, rx_fifo[rx_rd_q[RXW-1:0]]} << soc_pkg::SOC_UART_DATA_BYTE_LSB)
+                        | ({31'd0, 1'b1} << soc_pkg::SOC_UART_DATA_VALID_LSB);
+    wire [31:0] errors = ({16'd0, frame_err_q} << soc_pkg::SOC_UART_ERRORS_FRAMING_LSB)
+                       | ({16'd0, overrun_q}   << soc_pkg::SOC_UART_ERRORS_OVERRUN_LSB);
+    always @(posedge clk) begin
+        if (rst) begin
+            ack_q <= 1'b0;
+            err_q <= 1'b0;
+            wb_dat_r <= 32'd0;
+        end else begin
+            ack_q <= accept && known;
+            err_q <= accept && !known;
+            if (accept) begin
+                wb_dat_r <= 32'd0;
+                if (!wb_we) begin
+                    if (is_data && !rx_empty) wb_dat_r <= rx_word;
+                    if (is_status) wb_dat_r <= status;
+                    if (is_errors) wb_dat_r <= errors;
+                    if (is_divider) wb_dat_r <= DIV;
+                end
+            end
+        end
+    end
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,93 @@
+// soc_wb_decoder: the SoC's address decoder (contract/soc-memory-map.md), one Wishbone bus onto the
+// RAM, the GPU, the UART and SYS, with the error responder for every other address.
+//
+// Contract: combinational select, no added latency. A slave's *_stb is cyc && stb && (the address is
+// in its region); the shared request signals (we, adr, dat_w, sel, cti) go to every slave unchanged
+// (wired in soc_top). ack/err/dat_r come from the selected slave; the slaves answer only while
+// selected, so ack and err are ORed and dat_r is multiplexed by the region. The RAM region answers
+// only below RAM_BYTES; the rest of its window, and every address outside the four regions, is
+// answered by the error responder: err one clock after the request, once per request (so a burst
+// there gets one err per beat, two clocks each), dat_r = 0. Offsets inside UART and SYS that name
+// no register are refused by those slaves themselves (they answer err).
+`default_nettype none
+
+module soc_wb_decoder #(
+    parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES  // the RAM's size: above it, err
+) (
+    input  wire        clk,
+    input  wire        rst,         // synchronous, active high
+    // the bus, from the arbiter
+    input  wire        cyc,
+    input  wire        stb,
+    input  wire [29:0] adr,         // word address (byte address [31:2])
+    output wire [31:0] dat_r,
+    output wire        ack,
+    output wire        err,
+    // RAM
+    output wire        ram_stb,
+    input  wire [31:0] ram_dat_r,
+    input  wire        ram_ack,
+    // GPU (gpu_wb_slave; it refuses partial writes with err)
+    output wire        gpu_stb,
+    input  wire [31:0] gpu_dat_r,
+    input  wire        gpu_ack,
+    input  wire        gpu_err,
+    // UART
+    output wire        uart_stb,
+    input  wire [31:0] uart_dat_r,
+    input  wire        uart_ack,
+    input  wire        uart_err,
+    // SYS
+    output wire        sys_stb,
+    input  wire [31:0] sys_dat_r,
+    input  wire        sys_ack,
+    input  wire        sys_err
+);
+    // Each region is a power-of-two window aligned to its size (checked by contract/gen_contract.py):
+    // it is selected by the byte address bits above the window.
+    localparam integer RAM_WB  = $clog2(soc_pkg::SOC_RAM_WINDOW_BYTES);
+    localparam integer GPU_WB  = $clog2(soc_pkg::SOC_GPU_WINDOW_BYTES);
+    localparam integer UART_WB = $clog2(soc_pkg::SOC_UART_WINDOW_BYTES);
+    localparam integer SYS_WB  = $clog2(soc_pkg::SOC_SYS_WINDOW_BYTES);
+    localparam [31:0] RAM_BASE  = soc_pkg::SOC_RAM_BASE;
+    localparam [31:0] GPU_BASE  = soc_pkg::SOC_GPU_BASE;
+    localparam [31:0] UART_BASE = soc_pkg::SOC_UART_BASE;
+    localparam [31:0] SYS_BASE  = soc_pkg::SOC_SYS_BASE;
+    localparam [31:0] RAM_LIMIT = RAM_BYTES;   // bytes of the RAM window that hold RAM
+
+    generate if (RAM_BYTES < 4 || RAM_BYTES % 4 != 0 || RAM_BYTES > soc_pkg::SOC_RAM_WINDOW_BYTES) begin : g_bad_ram
+        $error("soc_wb_decoder: RAM_BYTES must be a multiple of 4 within SOC_RAM_WINDOW_BYTES");
+    end endgenerate
+
+    wire [31:0] byte_adr = {adr, 2'b00};
+    wire [31:0] ram_off  = byte_adr - RAM_BASE;
+    wire hit_ram  = (byte_adr >> RAM_WB) == (RAM_BASE >> RAM_WB) && ram_off < RAM_LIMIT;
+    wire hit_gpu  = (byte_adr >> GPU_WB) == (GPU_BASE >> GPU_WB);
+    wire hit_uart = (byte_adr >> UART_WB) == (UART_BASE >> UART_WB);
+    wire hit_sys  = (byte_adr >> SYS_WB) == (SYS_BASE >> SYS_WB);
+    wire hit_none = !(hit_ram || hit_gpu || hit_uart || hit_sys);
+
+    wire req = cyc && stb;
+    assign ram_stb  = req && hit_ram;
+    assign gpu_stb  = req && hit_gpu;
+    assign uart_stb = req && hit_uart;
+    assign sys_stb  = req && hit_sys;
+
+    // The error responder: answers a request to no region in the next clock, then lets it go (the
+    // master moves on after err), so a request held on is answered again every other clock.
+    reg none_err_q;
+    always @(posedge clk) begin
+        if (rst) none_err_q <= 1'b0;
+        else     none_err_q <= req && hit_none && !none_err_q;
+    end
+    wire none_err = none_err_q && req && hit_none;
+
+    assign ack   = ram_ack || gpu_ack || uart_ack || sys_ack;
+    assign err   = none_err || gpu_err || uart_err || sys_err;
+    assign dat_r = hit_ram  ? ram_dat_r  :
+                   hit_gpu  ? gpu_dat_r  :
+                   hit_uart ? uart_dat_r :
+                   hit_sys  ? sys_dat_r  : 32'd0;
+endmodule
+
+`default_nettype wire
