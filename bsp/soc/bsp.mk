@@ -7,6 +7,9 @@
 
 include bsp/soc/soc_ram.mk
 
+# A chip build holds its boot scene only (firmware.mk FW_SCENE_SET): 192 KiB are not enough for all.
+FW_SCENE_SET ?= one
+
 FW_CC         = $(RV_CC)
 FW_OBJDUMP    = $(patsubst %gcc,%objdump,$(RV_CC))
 FW_ARCH_FLAGS = -march=rv32im -misa-spec=2.2 -mabi=ilp32 -mcmodel=medlow --specs=picolibc.specs \

@@ -8,11 +8,10 @@
 //          [--keys-at N:TEXT]... [--max-cycles N] [--no-model-check]
 //
 // The program: RAM_INIT's format (one 32-bit hex word per line from address 0; --fw FILE.elf reads
-// FILE.elf.hex, the soc platform's post-link output), written into the RAM array after the model's
-// initial blocks ran and before the first clock edge. Loading at run time keeps one simulator per
-// RTL configuration (RAM size, span width are parameters: -G at build time) for every image; the
-// array is found by name (soc_ram's `mem`, made public by socsim.vlt), so no instance path of
-// soc_rtl is written here.
+// FILE.elf.hex, the soc platform's post-link output), loaded at time 0 through soc_ram's
+// simulation plusarg +ram_init=FILE. Loading at run time keeps one simulator per RTL configuration
+// (RAM size and span width are parameters, -G at build time: a Verilator build takes minutes) for
+// every image, instead of one build per image with RAM_INIT.
 //
 // What the harness sees besides the pins comes from taps bound into gpu_top and VexRiscv
 // (socsim_taps.sv): the GPU's bus writes, which also feed the golden model (cosim/model_check), and
@@ -33,6 +32,7 @@
 // the cycle limit, SIGINT/SIGTERM — prints "socsim: error: ..." and exits 1; usage errors exit 2.
 // --summary FILE holds the outcome as key=value lines, with the keys of `gpusim cosim --summary`
 // and the SoC's own counts. Simulation is deterministic: the same image gives the same files.
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdarg>
@@ -50,7 +50,6 @@
 #include "Vsoc_top.h"
 #include "svdpi.h"
 #include "verilated.h"
-#include "verilated_syms.h"
 
 #include "model_check.h"
 #include "uart_line.h"
@@ -71,6 +70,9 @@ extern "C" {
 #endif
 #ifndef SOCSIM_ENABLE_ZBUF
 #define SOCSIM_ENABLE_ZBUF GPU_DEFAULT_ENABLE_ZBUF
+#endif
+#ifndef SOCSIM_RAM_BYTES
+#define SOCSIM_RAM_BYTES SOC_RAM_DEFAULT_BYTES
 #endif
 #ifndef SOCSIM_CLK_HZ
 #define SOCSIM_CLK_HZ SOC_CLK_HZ_DEFAULT
@@ -215,14 +217,21 @@ private:
     vga_monitor monitor_;
     FILE *log_ = nullptr;
     std::string line_;
+    std::string ram_init_arg_;
 
     uint64_t cycles_ = 0;
     double t_start_ = 0;
     uint64_t last_frame_cycle_ = 0;
+    uint64_t last_progress_cycle_ = 0;
+    uint32_t ctrl_ = 0;                // the last CTRL written
+    uint64_t swap_cycle_ = 0;          // of the swap whose frame is being captured
+    uint64_t prev_swap_cycle_ = 0;     // of the swap before it
+    uint64_t swap_doorbell_cycle_ = 0; // the DOORBELL of the last batch with CTRL.SWAP
+    uint64_t frame_doorbell_cycle_ = 0;  // that of the frame being captured
+    uint64_t icache_at_frame_ = 0, dcache_at_frame_ = 0;
     bool arm_pending_ = false;     // a swap happened in this cycle's eval: arm the monitor after it
     bool capture_pending_ = false; // armed, waiting for the frame
     std::vector<std::pair<uint32_t, uint32_t>> deferred_;  // model writes held back during a capture
-    std::vector<uint8_t> expected_;                        // (unused: compare_frame scans out itself)
     std::vector<KeyWatch> watches_;
 
     uint32_t doorbells_ = 0, resets_ = 0, frames_ = 0, frames_checked_ = 0, keys_late_ = 0;
@@ -242,10 +251,16 @@ void SocRun::on_gpu_write(uint32_t offset, uint32_t value)
     if (offset == GPU_REG_RESET) {
         resets_++;
     }
+    if (offset == GPU_REG_CTRL) {
+        ctrl_ = value;
+    }
     if (offset != GPU_REG_DOORBELL) {
         return;
     }
     doorbells_++;
+    if (ctrl_ & GPU_CTRL_SWAP_MASK) {
+        swap_doorbell_cycle_ = cycles_;
+    }
     for (const auto &k : opt_.keys_at) {
         if (k.first == doorbells_) {
             tx_.queue(k.second);
@@ -259,6 +274,9 @@ void SocRun::on_gpu_write(uint32_t offset, uint32_t value)
 void SocRun::on_gpu_swap(uint32_t)
 {
     arm_pending_ = true;
+    prev_swap_cycle_ = swap_cycle_;
+    swap_cycle_ = cycles_;
+    frame_doorbell_cycle_ = swap_doorbell_cycle_;
     for (auto &w : watches_) {
         w.after_swap = true;
     }
@@ -299,33 +317,10 @@ uint64_t SocRun::instret() const
     return static_cast<uint64_t>(socsim_read_instret());
 }
 
-// The RAM array: the one public variable named `mem` (socsim.vlt makes soc_ram's public).
+// The image goes in through soc_ram's own simulation hook, +ram_init=FILE ($readmemh at time 0),
+// after a check here that it fits the RAM this simulator was built with.
 bool SocRun::load_ram(std::string *error)
 {
-    uint32_t *mem = nullptr;
-    size_t words = 0;
-    const VerilatedScopeNameMap *scopes = context_->scopeNameMap();
-    for (const auto &entry : *scopes) {
-        VerilatedVarNameMap *vars = entry.second->varsp();
-        if (vars == nullptr) {
-            continue;
-        }
-        const auto it = vars->find("mem");
-        if (it == vars->end()) {
-            continue;
-        }
-        const VerilatedVar &v = it->second;
-        if (mem != nullptr || v.udims() != 1 || v.entSize() != 4) {
-            *error = "cannot tell the RAM array (soc_ram's mem) from other variables";
-            return false;
-        }
-        mem = static_cast<uint32_t *>(v.datap());
-        words = static_cast<size_t>(v.unpacked().elements());
-    }
-    if (mem == nullptr) {
-        *error = "no RAM array (soc_ram's mem) in the model";
-        return false;
-    }
     std::ifstream in(opt_.hex);
     if (!in) {
         *error = "cannot read " + opt_.hex + ": " + std::strerror(errno);
@@ -334,13 +329,17 @@ bool SocRun::load_ram(std::string *error)
     std::string word;
     size_t n = 0;
     while (in >> word) {
-        if (n == words) {
-            *error = opt_.hex + " is larger than the RAM (" + std::to_string(words * 4) + " bytes)";
-            return false;
-        }
-        mem[n++] = static_cast<uint32_t>(std::strtoul(word.c_str(), nullptr, 16));
+        n++;
     }
-    std::printf("socsim: %s: %zu words loaded into %zu KiB of RAM\n", opt_.hex.c_str(), n, words * 4 / 1024);
+    if (n * 4 > SOCSIM_RAM_BYTES) {
+        *error = opt_.hex + " (" + std::to_string(n * 4) + " bytes) is larger than this simulator's RAM (" +
+                 std::to_string(SOCSIM_RAM_BYTES) + " bytes): build socsim with the firmware's SOC_RAM_KIB";
+        return false;
+    }
+    ram_init_arg_ = "+ram_init=" + opt_.hex;
+    const char *args[] = {"socsim", ram_init_arg_.c_str()};
+    context_->commandArgs(2, args);
+    std::printf("socsim: %s: %zu words, RAM %u KiB\n", opt_.hex.c_str(), n, SOCSIM_RAM_BYTES / 1024);
     return true;
 }
 
@@ -416,9 +415,19 @@ bool SocRun::finish_frame(std::string *error)
         return false;
     }
     flush_uart(false);
-    std::printf("socsim: frame %04u -> %s | cycle %llu | instructions %llu%s\n", frames_, path,
-                static_cast<unsigned long long>(cycles_), static_cast<unsigned long long>(instret()),
+    // swap: the cycle of the swap, since the previous one; ready: from the previous swap to the
+    // doorbell of this frame's last batch (what the frame's work took before its swap waited).
+    std::printf("socsim: frame %04u -> %s | swap at cycle %llu, +%llu | ready +%llu | instructions %llu | "
+                "refills I$ %llu D$ %llu%s\n",
+                frames_, path, static_cast<unsigned long long>(swap_cycle_),
+                static_cast<unsigned long long>(swap_cycle_ - prev_swap_cycle_),
+                static_cast<unsigned long long>(frame_doorbell_cycle_ - prev_swap_cycle_),
+                static_cast<unsigned long long>(instret()),
+                static_cast<unsigned long long>(icache_refills_ - icache_at_frame_),
+                static_cast<unsigned long long>(dcache_refills_ - dcache_at_frame_),
                 opt_.check_model ? " | equals golden model" : "");
+    icache_at_frame_ = icache_refills_;
+    dcache_at_frame_ = dcache_refills_;
     std::fflush(stdout);
     frames_++;
     frames_checked_ += opt_.check_model ? 1 : 0;
@@ -491,17 +500,16 @@ int SocRun::run()
             return fail("setup", "cannot create %s: %s", opt_.uart_log.c_str(), std::strerror(errno));
         }
     }
-    // Initial blocks first (soc_ram zeroes its array), then the image, then the first edge.
-    top_->clk = 0;
-    top_->uart_rx = 1;
-    top_->eval();
     std::string error;
     if (!load_ram(&error)) {
         return fail("setup", "%s", error.c_str());
     }
+    top_->clk = 0;
+    top_->ext_rst = 0;
+    top_->uart_rx = 1;
+    top_->eval();  // initial blocks: soc_ram reads the image
     terminal_.enter_raw();
 
-    uint64_t next_progress = opt_.progress_cycles;
     for (;;) {
         tick();
         if (arm_pending_) {
@@ -550,13 +558,12 @@ int SocRun::run()
             return fail("cycle-limit", "the firmware did not exit within %llu cycles",
                         static_cast<unsigned long long>(opt_.max_cycles));
         }
-        if (cycles_ - last_frame_cycle_ >= next_progress) {
+        // Slow frames: a line every progress_cycles without one.
+        if (cycles_ - std::max(last_frame_cycle_, last_progress_cycle_) >= opt_.progress_cycles) {
             flush_uart(false);
             std::printf("socsim: %u frames, %llu M cycles\n", frames_, static_cast<unsigned long long>(cycles_ / 1000000));
             std::fflush(stdout);
-            next_progress += opt_.progress_cycles;
-        } else if (cycles_ - last_frame_cycle_ < opt_.progress_cycles) {
-            next_progress = opt_.progress_cycles;
+            last_progress_cycle_ = cycles_;
         }
     }
 }

@@ -9,32 +9,30 @@
 #   soc-fw         that firmware only; soc-fw-test: the FW_TEST_FRAMES builds of every scene
 #   bench-soc      per scene: instructions, cycles, CPI, refills, GPU cycles, fps (tools/bench_soc.py)
 #
-# The RTL's sources come from soc_rtl/soc.mk (SOC_RTL_V, SOC_CPU_V) and gpu_rtl/files.f.
+# The RTL's sources and flags come from soc_rtl/soc.mk (SOC_VFLAGS: gpu_rtl/files.f, the core from
+# the venv, soc_rtl/files.f, their lint waivers), included before this file.
 
 include bsp/soc/soc_ram.mk
--include soc_rtl/soc.mk
 
 SOCSIM_DIR   := $(BUILD)/socsim-$(SOC_RAM_KIB)k$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
 SOCSIM       := $(SOCSIM_DIR)/socsim
 SOCSIM_SRC   := $(wildcard cosim/soc/*.cpp) cosim/model_check.cpp cosim/uart_terminal.cpp
 SOCSIM_SV    := cosim/soc/socsim_taps.sv
-SOCSIM_VLT   := cosim/soc/socsim.vlt
 # soc firmware: the same sources as `make run`, built by a recursive make for FW_PLATFORM=soc.
 SOC_FW_DIR   := $(BUILD)/firmware-soc
 SOC_FW_ELF   := $(SOC_FW_DIR)/$(SCENE)$(if $(filter float,$(FW_BACKEND)),-float).elf
 SOC_FW_MAKE   = $(MAKE) --no-print-directory FW_PLATFORM=soc BUILD=$(BUILD) SOC_RAM_KIB=$(SOC_RAM_KIB)
 
-SOCSIM_DEPS := $(SOC_RTL_V) $(SOC_CPU_V) $(RTL_V) $(RTL_FILES) contract/gpu_regs.vh contract/soc_map.h \
-               $(SOCSIM_SRC) $(SOCSIM_SV) $(SOCSIM_VLT) $(wildcard cosim/soc/*.h) cosim/model_check.h \
-               $(COSIM_C_LIB) $(GPU_MODEL_LIB) cosim/soc/socsim.mk
+SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_FILES) contract/gpu_regs.vh \
+               contract/soc_map.vh contract/soc_map.h $(SOCSIM_SRC) $(SOCSIM_SV) $(wildcard cosim/soc/*.h) \
+               cosim/model_check.h $(COSIM_C_LIB) $(GPU_MODEL_LIB) cosim/soc/socsim.mk
 
 $(SOCSIM): $(SOCSIM_DEPS)
-	@test -n "$(SOC_RTL_V)" || { echo "socsim: soc_rtl/soc.mk (SOC_RTL_V) not found"; exit 1; }
 	@mkdir -p $(SOCSIM_DIR)
-	$(VERILATOR) --cc --exe --build -j 2 -O3 --x-assign fast --x-initial fast -Wno-fatal -Wno-lint -Wno-style \
+	$(VERILATOR) --cc --exe --build -j 2 -O3 --x-assign fast --x-initial fast \
 	  --top-module soc_top -GRAM_BYTES=$(SOC_RAM_BYTES) -GSPAN_W=$(SPAN_W) \
-	  $(SOCSIM_VLT) -f $(RTL_FILES) $(SOC_CPU_V) $(SOC_RTL_V) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) \
-	  -CFLAGS "-O2 -std=c++17 -ffunction-sections -DSOCSIM_SPAN_W=$(SPAN_W)u \
+	  $(SOC_VFLAGS) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) \
+	  -CFLAGS "-O2 -std=c++17 -ffunction-sections -DSOCSIM_SPAN_W=$(SPAN_W)u -DSOCSIM_RAM_BYTES=$(SOC_RAM_BYTES)u \
 	           $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract)" \
 	  -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
 	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(SOCSIM_DIR)/obj -o $(abspath $(SOCSIM)) \

@@ -1,0 +1,29 @@
+# tests/soc/tests.mk — the soc test programs, built by a recursive make for FW_PLATFORM=soc
+# (`make soc-test-deps`, cosim/soc/socsim.mk: `$(MAKE) FW_PLATFORM=soc -f Makefile -f
+# tests/soc/tests.mk soc-test-elfs`), so that the platform's flags and objects are firmware.mk's:
+#   $(SOC_TEST_DIR)/<scene>.elf            the FW_TEST_FRAMES builds of every scene (firmware.mk's)
+#   $(SOC_TEST_DIR)/tetra-watchdog-tiny.elf  tetra, 5 frames, a watchdog of SOC_TINY_POLLS DONE_SEQ
+#                                          reads: every batch outlasts it (tests/soc/watchdog.sh)
+#   $(SOC_TEST_DIR)/bus_error.elf          tests/soc/bus_error.c with the soc BSP
+ifneq ($(FW_PLATFORM),soc)
+$(error tests/soc/tests.mk is for FW_PLATFORM=soc)
+endif
+
+SOC_TEST_DIR   := $(FW_TEST_DIR)
+SOC_TINY_POLLS := 16
+$(eval $(call FW_ELF_RULES,$(SOC_TEST_DIR)/tetra-watchdog-tiny.elf,tetra,fixed,5,$(SOC_TINY_POLLS)))
+
+SOC_BSP_OBJS := $(patsubst %.c,$(FW_OBJ_DIR_fixed)/%.o,$(FW_BSP_SRCS))
+$(SOC_TEST_DIR)/bus_error.o: tests/soc/bus_error.c $(FW_OBJ_DIR_fixed)/cflags.txt
+	@mkdir -p $(@D)
+	$(FW_CC) $(FW_CFLAGS_fixed) -MMD -MP -c $< -o $@
+
+$(SOC_TEST_DIR)/bus_error.elf: $(SOC_TEST_DIR)/bus_error.o $(SOC_BSP_OBJS) $(FW_LDSCRIPT)
+	$(FW_CC) $(FW_LDFLAGS_BASE) -o $@ $(SOC_TEST_DIR)/bus_error.o $(SOC_BSP_OBJS)
+	$(if $(FW_POSTLINK),$(FW_POSTLINK) $@)
+
+-include $(SOC_TEST_DIR)/bus_error.d
+
+.PHONY: soc-test-elfs
+soc-test-elfs: $(foreach s,$(FW_SCENES),$(SOC_TEST_DIR)/$(s).elf) $(SOC_TEST_DIR)/tetra-watchdog-tiny.elf \
+               $(SOC_TEST_DIR)/bus_error.elf
