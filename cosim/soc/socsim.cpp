@@ -532,6 +532,22 @@ int SocRun::run()
         }
         if (top_->exit_valid) {
             firmware_status_ = top_->exit_code;
+            // The last swap's frame may still be on its way to the pins (the firmware printed its
+            // line and left): the monitor gets it, as co-simulation captures every swapped frame.
+            const uint64_t limit = cycles_ + 3ull * 800 * 525 * (SOCSIM_CLK_HZ / 25000000);
+            while (capture_pending_ && !monitor_.frame_ready && monitor_.error[0] == '\0' && cycles_ < limit) {
+                tick();
+            }
+            if (capture_pending_) {
+                if (!monitor_.frame_ready) {
+                    return fail("capture", "the last frame did not reach the VGA pins: %s",
+                                monitor_.error[0] ? monitor_.error : "timeout");
+                }
+                if (!finish_frame(&error)) {
+                    return fail(error.find("golden") != std::string::npos ? "model-mismatch" : "write", "%s",
+                                error.c_str());
+                }
+            }
             flush_uart(true);
             std::printf("socsim: firmware exited with status %d: %u doorbells, %u frames, %llu cycles, %llu "
                         "instructions\n",

@@ -38,11 +38,22 @@ $(SOCSIM): $(SOCSIM_DEPS)
 	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(SOCSIM_DIR)/obj -o $(abspath $(SOCSIM)) \
 	  >$(SOCSIM_DIR)/verilator.log 2>&1 || { tail -40 $(SOCSIM_DIR)/verilator.log; exit 1; }
 
-.PHONY: socsim run-soc soc-fw soc-fw-test bench-soc
+.PHONY: socsim run-soc soc-fw soc-test-deps bench-soc
 socsim: $(SOCSIM)
 
 soc-fw:
-	@$(SOC_FW_MAKE) SCENE=$(SCENE) FRAMES=$(FRAMES) $(SOC_FW_ELF)
+	+@$(SOC_FW_MAKE) SCENE=$(SCENE) FRAMES=$(FRAMES) FW_BACKEND=$(FW_BACKEND) $(SOC_FW_ELF)
+
+# What tests/soc/*.sh need: socsim and the soc test programs (tests/soc/tests.mk); the suites
+# comparing with co-simulation also use make test's QEMU builds. make test builds them too.
+soc-test-deps: $(SOCSIM)
+	+@$(SOC_FW_MAKE) -f Makefile -f tests/soc/tests.mk soc-test-elfs
+test-quick: soc-test-deps
+
+# The benchmark builds (firmware.mk's FW_BENCH_FRAMES frames of every scene) on socsim.
+bench-soc: $(SOCSIM)
+	+@$(SOC_FW_MAKE) $(foreach s,$(FW_SCENES),$(BUILD)/fw-bench-soc/$(s).elf)
+	@$(PYTHON) tools/bench_soc.py --socsim $(SOCSIM) --dir $(BUILD)/fw-bench-soc --out $(BUILD)/bench-soc $(FW_SCENES)
 
 run-soc: $(SOCSIM) soc-fw
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames

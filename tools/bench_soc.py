@@ -1,0 +1,108 @@
+#!/usr/bin/env python3
+"""bench_soc.py — `make bench-soc`: each scene's benchmark build (firmware.mk's FW_BENCH_FRAMES
+frames, FW_PLATFORM=soc) on socsim, the whole SoC at 50 MHz, as one Markdown table.
+
+Per scene, averaged over the frames after the first (frame 0 carries the boot: banner, scene set-up):
+  instr/frame     the firmware's "fw instr" (minstret over the frame's work, DONE_SEQ polls excluded)
+  CPU cycles      the firmware's "cpu cycles" (mcycle over the same span)
+  CPI             CPU cycles / instructions
+  I$ / D$ refills cache-line refills per frame, counted by socsim on the core's Wishbone buses
+                  (VexRiscv_Full has no miss counters of its own)
+  GPU busy        the GPU's PERF_BUSY_CYCLES summed over the frame's batches
+  ready           cycles from the previous swap to the doorbell of the frame's last batch
+  frame cycles    cycles from swap to swap (the GPU swaps at vertical blank: a multiple of the
+                  VGA frame, 840,000 clocks at 50 MHz, is the floor)
+  fps 50 MHz      50e6 / frame cycles, measured
+  fps 100 MHz     estimated: the CPU's and GPU's cycles take half the time, the UART's bytes
+                  (115,200 baud) and the 60 Hz scan-out do not, and the swap waits for the next
+                  vertical blank: 60 / ceil(60 * t), t = (ready - cpu - gpu) / 50e6 + (cpu + gpu) / 100e6
+"""
+import argparse
+import math
+import os
+import re
+import subprocess
+import sys
+import time
+
+FW_LINE = re.compile(r"^frame (\d+): .*\| fw instr (\d+) \| gpu cycles (\d+) .*\| cpu cycles (\d+)")
+SIM_LINE = re.compile(r"^socsim: frame (\d+) -> .* \| swap at cycle (\d+), \+(\d+) \| ready \+(\d+) \| "
+                      r"instructions (\d+) \| refills I\$ (\d+) D\$ (\d+)")
+SPEED_LINE = re.compile(r"^socsim: (\d+) cycles .* in ([\d.]+) s: ([\d.]+) M cycles/s")
+CLK = 50e6
+
+
+def mean(xs):
+    return sum(xs) / len(xs) if xs else float("nan")
+
+
+def run_scene(socsim, elf, out_dir):
+    frames_dir = os.path.join(out_dir, "frames")
+    os.makedirs(frames_dir, exist_ok=True)
+    t0 = time.monotonic()
+    p = subprocess.run([socsim, "--fw", elf, "--frames", frames_dir, "--no-model-check",
+                        "--uart-log", os.path.join(out_dir, "uart.log"),
+                        "--summary", os.path.join(out_dir, "summary")],
+                       capture_output=True, text=True)
+    wall = time.monotonic() - t0
+    if p.returncode != 0:
+        sys.exit(f"bench-soc: {elf}: socsim exited with {p.returncode}:\n{p.stdout[-2000:]}{p.stderr[-2000:]}")
+    fw, sim, speed = {}, {}, None
+    for line in p.stdout.splitlines():
+        m = FW_LINE.match(line)
+        if m:
+            fw[int(m[1])] = [int(v) for v in m.groups()[1:]]
+        m = SIM_LINE.match(line)
+        if m:
+            sim[int(m[1])] = [int(v) for v in m.groups()[1:]]
+        m = SPEED_LINE.match(line)
+        if m:
+            speed = (int(m[1]), float(m[2]), float(m[3]))
+    return fw, sim, speed, wall
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--socsim", required=True)
+    ap.add_argument("--dir", required=True, help="folder of the soc benchmark ELFs (<scene>.elf)")
+    ap.add_argument("--out", required=True)
+    ap.add_argument("scenes", nargs="+")
+    a = ap.parse_args()
+
+    rows, total_cycles, total_wall = [], 0, 0.0
+    for scene in a.scenes:
+        fw, sim, speed, wall = run_scene(a.socsim, os.path.join(a.dir, scene + ".elf"), os.path.join(a.out, scene))
+        # firmware frame numbers count the frames drawn; socsim's the frames captured: the same
+        # sequence when no frame is lost (benchmark builds lose none).
+        keys = sorted(k for k in fw if k >= 1 and k in sim)
+        if not keys:
+            sys.exit(f"bench-soc: {scene}: fewer than two frames")
+        instr = mean([fw[k][0] for k in keys])
+        gpu = mean([fw[k][1] for k in keys])
+        cpu = mean([fw[k][2] for k in keys])
+        frame = mean([sim[k][1] for k in keys])
+        ready = mean([sim[k][2] for k in keys])
+        irefill = mean([sim[k][4] for k in keys])
+        drefill = mean([sim[k][5] for k in keys])
+        t100 = (ready - cpu - gpu) / CLK + (cpu + gpu) / (2 * CLK)
+        fps100 = 60.0 / max(1, math.ceil(60.0 * t100 - 1e-9))
+        rows.append((scene, len(keys), instr, cpu, cpu / instr, irefill, drefill, gpu, ready, frame,
+                     CLK / frame, fps100))
+        if speed:
+            total_cycles += speed[0]
+            total_wall += speed[1]
+
+    print("| scene | frames | instr/frame | CPU cycles/frame | CPI | I$ refills | D$ refills | GPU busy cycles "
+          "| ready (cycles) | frame cycles (swap to swap) | fps 50 MHz | fps 100 MHz (est.) |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for r in rows:
+        print(f"| {r[0]} | {r[1]} | {r[2]:,.0f} | {r[3]:,.0f} | {r[4]:.2f} | {r[5]:,.0f} | {r[6]:,.0f} | "
+              f"{r[7]:,.0f} | {r[8]:,.0f} | {r[9]:,.0f} | {r[10]:.1f} | {r[11]:.1f} |")
+    if total_wall > 0:
+        print(f"\nsocsim: {total_cycles:,} cycles simulated in {total_wall:.1f} s: "
+              f"{total_cycles / total_wall / 1e6:.2f} M cycles/s")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
