@@ -35,7 +35,7 @@ $(SOCSIM): $(SOCSIM_DEPS)
 	  -CFLAGS "-O2 -std=c++17 -ffunction-sections -DSOCSIM_SPAN_W=$(SPAN_W)u -DSOCSIM_RAM_BYTES=$(SOC_RAM_BYTES)u \
 	           $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract)" \
 	  -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
-	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(SOCSIM_DIR)/obj -o $(abspath $(SOCSIM)) \
+	  --MAKEFLAGS "OPT_FAST=-O3 -march=native OPT_SLOW=-O1" --Mdir $(SOCSIM_DIR)/obj -o $(abspath $(SOCSIM)) \
 	  >$(SOCSIM_DIR)/verilator.log 2>&1 || { tail -40 $(SOCSIM_DIR)/verilator.log; exit 1; }
 
 .PHONY: socsim run-soc soc-fw soc-test-deps bench-soc

@@ -2,6 +2,9 @@
 # (`make soc-test-deps`, cosim/soc/socsim.mk: `$(MAKE) FW_PLATFORM=soc -f Makefile -f
 # tests/soc/tests.mk soc-test-elfs`), so that the platform's flags and objects are firmware.mk's:
 #   $(SOC_TEST_DIR)/<scene>.elf            the FW_TEST_FRAMES builds of every scene (firmware.mk's)
+#   $(SOC_TEST_DIR)/<scene>-2f.elf         every scene with SOC_SHORT_FRAMES (2) frames: a scene whose
+#                                          start-up costs millions of simulated cycles (landscape
+#                                          builds its terrain) is compared on fewer frames
 #   $(SOC_TEST_DIR)/tetra-watchdog-tiny.elf  tetra, 5 frames, a watchdog of SOC_TINY_POLLS DONE_SEQ
 #                                          reads: every batch outlasts it (tests/soc/watchdog.sh)
 #   $(SOC_TEST_DIR)/bus_error.elf          tests/soc/bus_error.c with the soc BSP
@@ -11,6 +14,8 @@ endif
 
 SOC_TEST_DIR   := $(FW_TEST_DIR)
 SOC_TINY_POLLS := 16
+SOC_SHORT_FRAMES := 2
+$(foreach s,$(FW_SCENES),$(eval $(call FW_ELF_RULES,$(SOC_TEST_DIR)/$(s)-2f.elf,$(s),fixed,$(SOC_SHORT_FRAMES),)))
 $(eval $(call FW_ELF_RULES,$(SOC_TEST_DIR)/tetra-watchdog-tiny.elf,tetra,fixed,5,$(SOC_TINY_POLLS)))
 
 SOC_BSP_OBJS := $(patsubst %.c,$(FW_OBJ_DIR_fixed)/%.o,$(FW_BSP_SRCS))
@@ -25,5 +30,6 @@ $(SOC_TEST_DIR)/bus_error.elf: $(SOC_TEST_DIR)/bus_error.o $(SOC_BSP_OBJS) $(FW_
 -include $(SOC_TEST_DIR)/bus_error.d
 
 .PHONY: soc-test-elfs
-soc-test-elfs: $(foreach s,$(FW_SCENES),$(SOC_TEST_DIR)/$(s).elf) $(SOC_TEST_DIR)/tetra-watchdog-tiny.elf \
+soc-test-elfs: $(foreach s,$(FW_SCENES),$(SOC_TEST_DIR)/$(s).elf $(SOC_TEST_DIR)/$(s)-2f.elf) \
+               $(SOC_TEST_DIR)/tetra-watchdog-tiny.elf \
                $(SOC_TEST_DIR)/bus_error.elf
