@@ -16,7 +16,9 @@
 #   FW_SCENE_SET   one: an ELF holds only its boot scene SCENE (code, data, and memory sized for
 #                  it: scenes/scene_set.h); all: every scene of the table, keys 1..N switch
 #                  (default all; a platform's bsp.mk may set another default: FW_SCENE_SET ?= one)
-#   FW_STACK_BYTES the stack a chip build reserves, for `make fw-size` (default 8192)
+#   FW_STACK_BYTES the stack a chip build reserves, for `make fw-size` (default 4096: the deepest
+#                  call chain of every scene's image, trap handler on top, is 1664 bytes by
+#                  firmware/tools/stack_depth.py, and fw-size fails if one reaches the reserve)
 #   FW_MAX_POLLS   optional -DFW_GPU_MAX_POLLS override (the watchdog: DONE_SEQ reads per batch)
 #   FW_PROFILE     1: every frame also prints where its instructions went (app.c)
 #   FW_SUBPIXEL_BITS  fraction bits kept in projected vertices, 0..4 (default: 4, the contract's
@@ -67,7 +69,7 @@ FW_PROFILE  ?=
 FW_SUBPIXEL_BITS ?=
 FW_DEFS     ?=
 GPUSIM      ?= $(BUILD)/sim/gpusim
-FW_STACK_BYTES ?= 8192
+FW_STACK_BYTES ?= 4096
 
 include bsp/$(FW_PLATFORM)/bsp.mk
 
@@ -146,6 +148,11 @@ FW_LEAN_DEFS := -DFW_WITH_WIREFRAME=0 -DFW_WITH_ANAGLYPH=0 -DFW_WITH_DEPTH=0 -DF
 FW_BACKEND_DEFS_fixed-lean :=
 FW_VARIANT_DEFS_fixed-lean := $(FW_LEAN_DEFS)
 FW_SP_VARIANTS += fixed-lean
+# fixed-nowire: the fixed backend without the wireframe (FW_WITH_WIREFRAME=0), whose frame needs
+# only the filled columns of scenes/scene_list.h: `make fw-size`'s second row per scene.
+FW_BACKEND_DEFS_fixed-nowire :=
+FW_VARIANT_DEFS_fixed-nowire := -DFW_WITH_WIREFRAME=0
+FW_SP_VARIANTS += fixed-nowire
 # -ffp-contract=off: no fused multiply-adds, so the float backend rounds identically on the host
 # and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
 # -fno-tree-loop-distribute-patterns: GCC would turn the pipeline's clearing loops (the sort's
@@ -303,10 +310,14 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2,\
 # chip runs: FW_SCENE_SET=one) and, for comparison, the all-scene build of the default scene.
 # Frames 0 (until Q), the chip's setting; the frame count changes no size.
 FW_SIZE_DIR    := $(BUILD)/fw-size$(FW_PSUFFIX)
-FW_SIZE_ELFS   := $(foreach s,$(FW_SCENES),$(FW_SIZE_DIR)/$(s).elf) $(FW_SIZE_DIR)/all-$(SCENE).elf
+FW_SIZE_ELFS   := $(foreach s,$(FW_SCENES),$(FW_SIZE_DIR)/$(s).elf $(FW_SIZE_DIR)/$(s)-nowire.elf) \
+                  $(FW_SIZE_DIR)/all-$(SCENE).elf
 $(foreach s,$(FW_SCENES),$(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/$(s).elf,$(s),fixed,0,,,one)))
+$(foreach s,$(FW_SCENES),\
+  $(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/$(s)-nowire.elf,$(s),fixed-nowire,0,,,one)))
 $(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/all-$(SCENE).elf,$(SCENE),fixed,0,,,all))
 # The targets of issue #9: the default scene's image in 64 KiB, every other scene's in 192 KiB.
+FW_TEST_DEPS += $(FW_SIZE_ELFS)
 FW_SIZE_TARGET_DEFAULT := 65536
 FW_SIZE_TARGET_OTHER   := 196608
 FW_SIZE_ENV = SIZE=$(patsubst %gcc,%size,$(FW_CC)) NM=$(patsubst %gcc,%nm,$(FW_CC)) \

@@ -27,7 +27,7 @@
  *
  *     name       state   objects  verts  prims  wverts  wprims */
 SCENE(tetra,        320,     1,      32,    21,    140,     54)
-SCENE(cubes,        384,    64,     640,   512,   5760,   2624)
+SCENE(cubes,        384,    64,     640,   512,   5376,   2432)
 SCENE(landscape,  64768,    16,    1536,  2304,  29120,  13824)
 SCENE(voxel,     322752,     8,    2048,  2048,  17024,   7808)
 SCENE(knot,      140160,     1,    2880,  2816,  36480,  16832)

@@ -3,8 +3,10 @@
 #
 #   fw_size.sh [--check] DIR SCENE...
 #
-# DIR holds <scene>.elf (the one-scene build, FW_SCENE_SET=one: what a chip runs) for every SCENE
-# and all-<scene>.elf (the all-scene build of the default scene, for comparison). Per image:
+# DIR holds <scene>.elf (the one-scene build, FW_SCENE_SET=one: what a chip runs) for every SCENE,
+# <scene>-nowire.elf (the same without the wireframe, FW_WITH_WIREFRAME=0, whose frame needs only
+# the filled columns: shown when present, not checked) and all-<scene>.elf (the all-scene build of
+# the default scene, for comparison). Per image:
 # text (.init .text .rodata ...: every allocated read-only section), data (.data .sdata, which a
 # RAM-only chip holds once: the image is loaded into RAM), bss (.bss .sbss .tbss, without the
 # linker script's own .stack/.heap reservations), stack (STACK_BYTES, what the chip's BSP
@@ -92,9 +94,15 @@ row() {
 }
 for s in "$@"; do
     if [ "$s" = "$DEFAULT_SCENE" ]; then
-        row "$s" "$dir/$s.elf" "$TARGET_DEFAULT"
+        target=$TARGET_DEFAULT
     else
-        row "$s" "$dir/$s.elf" "$TARGET_OTHER"
+        target=$TARGET_OTHER
+    fi
+    row "$s" "$dir/$s.elf" "$target"
+    if [ -f "$dir/$s-nowire.elf" ]; then
+        keep=$fail
+        row "$s, no wireframe" "$dir/$s-nowire.elf" "$target"
+        fail=$keep  # shown for comparison: the build with every feature is the one checked
     fi
 done
 row "all scenes (boot $DEFAULT_SCENE)" "$dir/all-$DEFAULT_SCENE.elf" ""

@@ -35,7 +35,7 @@ for s in $scenes; do
     fi
 done
 
-STACK_BYTES=${FW_STACK_BYTES:-4096}
+STACK_BYTES=${FW_STACK_BYTES:-4096}  # firmware.mk's default
 SIZE=${SIZE:-riscv64-unknown-elf-size} STACK_BYTES=$STACK_BYTES DEFAULT_SCENE=tetra \
     bash firmware/tools/fw_size.sh --check "$dir" $scenes > "$work/table.md"
 status=$?
