@@ -25,7 +25,10 @@
 
 /* BSP_NAME       the platform's name, a string, printed in the boot banner
  * BSP_GPU_BASE   base address of the GPU's 128 KiB bus window (contract/gpu-contract.md)
- * BSP_EXIT_TRAP  exit status when a CPU trap ends the program */
+ * BSP_EXIT_TRAP  exit status when a CPU trap ends the program
+ * BSP_GPU_BUFFERS_MAPPED  1: bsp_gpu_buffer returns CPU-writable memory for the vertex and index
+ *                buffers, so the firmware builds batches in place and compiles no staging arrays
+ *                (12 KiB); 0: it may return NULL, and batches are staged and copied */
 #ifndef BSP_NAME
 #error "bsp_platform.h must define BSP_NAME"
 #endif
@@ -34,6 +37,9 @@
 #endif
 #ifndef BSP_EXIT_TRAP
 #error "bsp_platform.h must define BSP_EXIT_TRAP"
+#endif
+#ifndef BSP_GPU_BUFFERS_MAPPED
+#error "bsp_platform.h must define BSP_GPU_BUFFERS_MAPPED (1: bsp_gpu_buffer never returns NULL)"
 #endif
 
 /* ---- start and end ------------------------------------------------------------------------ */
@@ -60,6 +66,11 @@ void bsp_uart_putc(char c);
 /* Retired instructions, 64 bits, read consistently (a platform without such a counter returns a
  * cycle counter, and says so in its name, or 0). */
 uint64_t bsp_instret(void);
+
+/* Clock cycles, 64 bits, read consistently (RISC-V: mcycle/mcycleh). A platform without a cycle
+ * counter returns 0 and says so here in its bsp_platform.h. Under QEMU the count follows the
+ * emulation (with -icount, one per instruction), not a core: a board's figure is the real one. */
+uint64_t bsp_cycles(void);
 
 /* Full memory barrier: every earlier load and store is ordered before every later one (the
  * driver's fence before DOORBELL and after seeing DONE_SEQ). */

@@ -10,7 +10,15 @@
 #   RV_CC          cross compiler                         (default riscv64-unknown-elf-gcc)
 #   HOST_CC        host compiler for the host build and the unit tests (default gcc)
 #   HOST_CFLAGS    host flags, extended by the firmware's warnings and include paths
-#   FW_PLATFORM    bsp/<platform>/ to build for           (default qemu_virt)
+#   FW_PLATFORM    bsp/<platform>/ to build for           (default qemu_virt); another platform's
+#                  objects and ELFs go to $(BUILD)/firmware-<p>/, fw-test-<p>/, ... so that both
+#                  coexist in one tree
+#   FW_SCENE_SET   one: an ELF holds only its boot scene SCENE (code, data, and memory sized for
+#                  it: scenes/scene_set.h); all: every scene of the table, keys 1..N switch
+#                  (default all; a platform's bsp.mk may set another default: FW_SCENE_SET ?= one)
+#   FW_STACK_BYTES the stack a chip build reserves, for `make fw-size` (default 4096: the deepest
+#                  call chain of every scene's image, trap handler on top, is 1664 bytes by
+#                  firmware/tools/stack_depth.py, and fw-size fails if one reaches the reserve)
 #   FW_MAX_POLLS   optional -DFW_GPU_MAX_POLLS override (the watchdog: DONE_SEQ reads per batch)
 #   FW_PROFILE     1: every frame also prints where its instructions went (app.c)
 #   FW_SUBPIXEL_BITS  fraction bits kept in projected vertices, 0..4 (default: 4, the contract's
@@ -19,24 +27,34 @@
 #                  the FW_WITH_* features a scene may not need)
 #   GPUSIM         the co-simulator (set by the top-level Makefile), for bench-fw
 #
+# From bsp/<platform>/bsp.mk: FW_CC FW_OBJDUMP FW_ARCH_FLAGS FW_BSP_SRCS FW_LDSCRIPT FW_BSP_LDFLAGS
+# FW_RUN, and optionally FW_POSTLINK (a command run as `$(FW_POSTLINK) <elf>` after every link,
+# e.g. to make a memory image and refuse one larger than the chip's RAM) and FW_SCENE_SET.
+#
 # Outputs:
-#   $(FW_ELF)       = $(BUILD)/firmware/$(SCENE)[-float].elf (+ .map, .lst): what `make run` runs
+#   $(FW_ELF)       = $(FW_DIR)/$(SCENE)[-float].elf (+ .map, .lst): what `make run` runs;
+#                     FW_DIR = $(BUILD)/firmware, or $(BUILD)/firmware-<p> for FW_PLATFORM=<p>
 #   $(FW_HOST)      = $(BUILD)/fw-host/$(SCENE)[-float]: the same firmware on the host, rendering
 #                     through the golden model (bsp/host)
 #   $(FW_UNIT)      = $(BUILD)/tests/fw_unit, host unit tests of the pure code (fixed backend)
 #   $(FW_UNIT_FLOAT)= $(BUILD)/tests/fw_unit_float, the same tests on the float backend
 #   fw-test-deps    everything tests/scenes/*.sh needs (scene ELFs and host builds with
-#                   FW_TEST_FRAMES frames under $(BUILD)/fw-test, the watchdog test ELF, the
+#                   FW_TEST_FRAMES frames under $(FW_TEST_DIR) = $(BUILD)/fw-test[-<p>], the
+#                   watchdog test ELF, the
 #                   explicit FW_SUBPIXEL_BITS=4 build of tetra)
 #   $(FW_ERR_ELFS)  `make bench-error`'s firmware under $(BUILD)/fw-error: FW_ERR_FRAMES frames of
 #                   every scene, fixed and float, and with the depth test on from the start
 #                   (FW_DEPTH_TEST=1) fixed, float and float with 2 and 0 sub-pixel bits
+#   fw-size         the memory table of every scene's one-scene build (and the all-scene one):
+#                   text, data, bss, stack against the chip targets (firmware/tools/fw_size.sh)
 # Convenience targets: fw, fw-all (every scene, both backends), fw-host, fw-unit, fw-smoke,
 # bench-fw (the instruction-count table of every scene and backend, measured in co-simulation),
 # profile-fw (one scene's instructions per function and frame).
 #
-# Objects are shared per backend; only app.c, which carries the scene name, the frame count and
-# the watchdog bound, is compiled per ELF. A change of flags rebuilds by itself (cflags.txt).
+# Objects are shared per backend; only app.c, which carries the scene name, the frame count, the
+# watchdog bound and the scene set (FW_BUILT_SCENES: which descriptors the table references, and
+# the memory sized for them), is compiled per ELF; an ELF links the objects of its scenes only.
+# A change of flags rebuilds by itself (cflags.txt).
 
 BUILD       ?= build
 SCENE       ?= tetra
@@ -51,15 +69,29 @@ FW_PROFILE  ?=
 FW_SUBPIXEL_BITS ?=
 FW_DEFS     ?=
 GPUSIM      ?= $(BUILD)/sim/gpusim
+FW_STACK_BYTES ?= 4096
 
 include bsp/$(FW_PLATFORM)/bsp.mk
+
+# After bsp.mk, which may choose another default for its platform.
+FW_SCENE_SET ?= all
+FW_POSTLINK  ?=
+ifeq ($(filter $(FW_SCENE_SET),one all),)
+$(error FW_SCENE_SET=$(FW_SCENE_SET) is not one of: one all)
+endif
+
+# Where this platform's firmware goes: qemu_virt (the co-simulated default) keeps the historical
+# folders; any other platform gets its own, so both platforms' builds coexist in one tree.
+FW_PSUFFIX   := $(if $(filter qemu_virt,$(FW_PLATFORM)),,-$(FW_PLATFORM))
+FW_DIR       := $(BUILD)/firmware$(FW_PSUFFIX)
 
 # The scenes: the names of the scene table's SCENE(name) lines, in its order (keys 1..9 follow
 # it). A scene's sources are firmware/scenes/<name>.c, or every .c file of firmware/scenes/<name>/.
 FW_SCENE_TABLE := firmware/scenes/scene_list.h
-FW_SCENES   := $(shell sed -n 's/^SCENE(\([A-Za-z0-9_]*\)).*/\1/p' $(FW_SCENE_TABLE))
+FW_SCENES   := $(shell sed -n 's/^SCENE(\([A-Za-z0-9_]*\)[,)].*/\1/p' $(FW_SCENE_TABLE))
 FW_BACKENDS := fixed float
 fw_scene_srcs = $(wildcard firmware/scenes/$(1).c firmware/scenes/$(1)/*.c)
+FW_ALL_SCENE_SRCS = $(foreach s,$(FW_SCENES),$(call fw_scene_srcs,$(s)))
 $(foreach s,$(FW_SCENES),$(if $(call fw_scene_srcs,$(s)),,\
   $(error scene '$(s)' of $(FW_SCENE_TABLE) has no firmware/scenes/$(s).c nor firmware/scenes/$(s)/*.c)))
 
@@ -76,7 +108,7 @@ endif
 # name of a (scene, backend) build: tetra, tetra-float
 fw_name = $(1)$(if $(filter float,$(2)),-float)
 
-FW_ELF        := $(BUILD)/firmware/$(call fw_name,$(SCENE),$(FW_BACKEND)).elf
+FW_ELF        := $(FW_DIR)/$(call fw_name,$(SCENE),$(FW_BACKEND)).elf
 FW_HOST       := $(BUILD)/fw-host/$(call fw_name,$(SCENE),$(FW_BACKEND))
 FW_UNIT       := $(BUILD)/tests/fw_unit
 FW_UNIT_FLOAT := $(BUILD)/tests/fw_unit_float
@@ -89,7 +121,7 @@ FW_PURE_SRCS := firmware/math/fixed.c firmware/math/vec.c firmware/camera/camera
                 firmware/input/input.c \
                 $(addprefix firmware/render/,palette.c mesh.c proj.c clip.c sort.c render.c) \
                 firmware/gpu/batch.c firmware/scenes/scene.c \
-                $(foreach s,$(FW_SCENES),$(call fw_scene_srcs,$(s)))
+                $(FW_ALL_SCENE_SRCS)
 FW_DRIVER_SRC := firmware/gpu/gpu.c
 FW_APP_SRC    := firmware/app/app.c
 FW_MAIN_SRC   := firmware/app/main.c
@@ -116,6 +148,11 @@ FW_LEAN_DEFS := -DFW_WITH_WIREFRAME=0 -DFW_WITH_ANAGLYPH=0 -DFW_WITH_DEPTH=0 -DF
 FW_BACKEND_DEFS_fixed-lean :=
 FW_VARIANT_DEFS_fixed-lean := $(FW_LEAN_DEFS)
 FW_SP_VARIANTS += fixed-lean
+# fixed-nowire: the fixed backend without the wireframe (FW_WITH_WIREFRAME=0), whose frame needs
+# only the filled columns of scenes/scene_list.h: `make fw-size`'s second row per scene.
+FW_BACKEND_DEFS_fixed-nowire :=
+FW_VARIANT_DEFS_fixed-nowire := -DFW_WITH_WIREFRAME=0
+FW_SP_VARIANTS += fixed-nowire
 # -ffp-contract=off: no fused multiply-adds, so the float backend rounds identically on the host
 # and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
 # -fno-tree-loop-distribute-patterns: GCC would turn the pipeline's clearing loops (the sort's
@@ -138,15 +175,20 @@ endef
 # ---- per backend: shared objects, target and host ----------------------------------------------
 # $(1) = backend
 define FW_BACKEND_RULES
-FW_OBJ_DIR_$(1)   := $(BUILD)/firmware/obj-$(1)
+FW_OBJ_DIR_$(1)   := $(FW_DIR)/obj-$(1)
 FW_CFLAGS_$(1)    := $(FW_CFLAGS_BASE) $(FW_BACKEND_DEFS_$(1)) $(FW_VARIANT_DEFS_$(1))
 FW_OBJS_$(1)      := $$(patsubst %.c,$$(FW_OBJ_DIR_$(1))/%.o,$(FW_PURE_SRCS) $(FW_DRIVER_SRC) \
                      $(FW_MAIN_SRC) $(FW_BSP_SRCS))
+# ... without the scenes' objects: an ELF adds those of the scenes it is built with.
+FW_CORE_OBJS_$(1) := $$(filter-out $$(patsubst %.c,$$(FW_OBJ_DIR_$(1))/%.o,$(FW_ALL_SCENE_SRCS)),\
+                     $$(FW_OBJS_$(1)))
 HOST_OBJ_DIR_$(1) := $(BUILD)/fw-host/obj-$(1)
 FW_HOST_CFLAGS_$(1) = $(FW_HOST_CFLAGS_BASE) $(FW_BACKEND_DEFS_$(1)) $(FW_VARIANT_DEFS_$(1)) \
                       $(FW_PNG_CFLAGS)
 FW_HOST_OBJS_$(1) := $$(patsubst %.c,$$(HOST_OBJ_DIR_$(1))/%.o,$(FW_PURE_SRCS) $(FW_DRIVER_SRC) \
                      $(FW_HOST_SRCS))
+FW_HOST_CORE_OBJS_$(1) := $$(filter-out \
+                     $$(patsubst %.c,$$(HOST_OBJ_DIR_$(1))/%.o,$(FW_ALL_SCENE_SRCS)),$$(FW_HOST_OBJS_$(1)))
 
 $$(FW_OBJ_DIR_$(1))/cflags.txt: fw-force
 	$$(call fw_flags_file,$$@,$$(FW_CC) $$(FW_CFLAGS_$(1)))
@@ -166,36 +208,51 @@ FW_DEP_FILES += $$(FW_OBJS_$(1):.o=.d) $$(FW_HOST_OBJS_$(1):.o=.d)
 endef
 
 # ---- per program: app.c with its settings, linked with a backend's objects ---------------------
+# The scene set of a program: one (only its boot scene) or all (every scene of the table).
+# fw_set_scenes = the scenes, fw_set_defs = app.c's -DFW_BUILT_SCENES (none: scene_set.h's default,
+# the whole table). $(1) = set, $(2) = boot scene.
+fw_set_scenes = $(if $(filter one,$(1)),$(2),$(FW_SCENES))
+fw_set_defs   = $(if $(filter one,$(1)),-DFW_BUILT_SCENES='SCENE($(2))')
+fw_set_objs   = $(patsubst %.c,$(3)/%.o,$(foreach s,$(call fw_set_scenes,$(1),$(2)),$(call fw_scene_srcs,$(s))))
+
 # $(1) = ELF path, $(2) = scene, $(3) = backend, $(4) = frames, $(5) = max polls (may be empty),
-# $(6) = further -D settings of app.c (may be empty)
+# $(6) = further -D settings of app.c (may be empty), $(7) = scene set (default FW_SCENE_SET)
 define FW_ELF_RULES
 $(1:.elf=)/app.o: $(FW_APP_SRC) $(1:.elf=)/cflags.txt
 	$$(FW_CC) $$(FW_CFLAGS_$(3)) -DFW_SCENE='"$(2)"' -DFW_FRAMES=$(4) \
 	  $(if $(5),-DFW_GPU_MAX_POLLS=$(5)) $(if $(FW_PROFILE),-DFW_PROFILE=$(FW_PROFILE)) $(6) \
-	  -MMD -MP -c $$< -o $$@
+	  $(call fw_set_defs,$(or $(7),$(FW_SCENE_SET)),$(2)) -MMD -MP -c $$< -o $$@
 
 $(1:.elf=)/cflags.txt: fw-force
-	$$(call fw_flags_file,$$@,$$(FW_CC) $$(FW_CFLAGS_$(3)) $(2) $(4) $(5) $(FW_PROFILE) $(6))
+	$$(call fw_flags_file,$$@,$$(FW_CC) $$(FW_CFLAGS_$(3)) $(2) $(4) $(5) $(FW_PROFILE) $(6) \
+	  $(or $(7),$(FW_SCENE_SET)) $(FW_POSTLINK))
 
-$(1): $$(FW_OBJS_$(3)) $(1:.elf=)/app.o $(FW_LDSCRIPT)
-	$$(FW_CC) $$(FW_LDFLAGS_BASE) -Wl,-Map=$(1:.elf=.map) -o $$@ $$(FW_OBJS_$(3)) \
-	  $(1:.elf=)/app.o -lm
+$(1): $$(FW_CORE_OBJS_$(3)) $(call fw_set_objs,$(or $(7),$(FW_SCENE_SET)),$(2),$$(FW_OBJ_DIR_$(3))) \
+      $(1:.elf=)/app.o $(FW_LDSCRIPT)
+	$$(FW_CC) $$(FW_LDFLAGS_BASE) -Wl,-Map=$(1:.elf=.map) -o $$@ $$(FW_CORE_OBJS_$(3)) \
+	  $(call fw_set_objs,$(or $(7),$(FW_SCENE_SET)),$(2),$$(FW_OBJ_DIR_$(3))) $(1:.elf=)/app.o -lm
 	$$(FW_OBJDUMP) -d -S $$@ > $(1:.elf=.lst)
+	$(if $(FW_POSTLINK),$(FW_POSTLINK) $$@)
 
 FW_DEP_FILES += $(1:.elf=)/app.d
 endef
 
-# $(1) = host program path, $(2) = scene, $(3) = backend, $(4) = frames
+# $(1) = host program path, $(2) = scene, $(3) = backend, $(4) = frames (the scene set is
+# FW_SCENE_SET's, as the ELFs')
 define FW_HOST_RULES
 $(1).obj/app.o: $(FW_APP_SRC) $(1).obj/cflags.txt
 	@mkdir -p $$(@D)
-	$$(HOST_CC) $$(FW_HOST_CFLAGS_$(3)) -DFW_SCENE='"$(2)"' -DFW_FRAMES=$(4) -MMD -MP -c $$< -o $$@
+	$$(HOST_CC) $$(FW_HOST_CFLAGS_$(3)) -DFW_SCENE='"$(2)"' -DFW_FRAMES=$(4) \
+	  $(call fw_set_defs,$(FW_SCENE_SET),$(2)) -MMD -MP -c $$< -o $$@
 
 $(1).obj/cflags.txt: fw-force
-	$$(call fw_flags_file,$$@,$$(HOST_CC) $$(FW_HOST_CFLAGS_$(3)) $(2) $(4))
+	$$(call fw_flags_file,$$@,$$(HOST_CC) $$(FW_HOST_CFLAGS_$(3)) $(2) $(4) $(FW_SCENE_SET))
 
-$(1): $$(FW_HOST_OBJS_$(3)) $(1).obj/app.o $(FW_HOST_LIBS)
-	$$(HOST_CC) -o $$@ $$(FW_HOST_OBJS_$(3)) $(1).obj/app.o $(FW_HOST_LIBS) $(FW_PNG_LIBS) -lm
+$(1): $$(FW_HOST_CORE_OBJS_$(3)) $(call fw_set_objs,$(FW_SCENE_SET),$(2),$$(HOST_OBJ_DIR_$(3))) \
+      $(1).obj/app.o $(FW_HOST_LIBS)
+	$$(HOST_CC) -o $$@ $$(FW_HOST_CORE_OBJS_$(3)) \
+	  $(call fw_set_objs,$(FW_SCENE_SET),$(2),$$(HOST_OBJ_DIR_$(3))) $(1).obj/app.o \
+	  $(FW_HOST_LIBS) $(FW_PNG_LIBS) -lm
 
 FW_DEP_FILES += $(1).obj/app.d
 endef
@@ -206,15 +263,15 @@ $(foreach b,$(FW_BACKENDS) $(FW_SP_VARIANTS),$(eval $(call FW_BACKEND_RULES,$(b)
 FW_ALL_ELFS :=
 FW_ALL_HOSTS :=
 $(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
-  $(eval $(call FW_ELF_RULES,$(BUILD)/firmware/$(call fw_name,$(s),$(b)).elf,$(s),$(b),$(FRAMES),$(FW_MAX_POLLS)))\
+  $(eval $(call FW_ELF_RULES,$(FW_DIR)/$(call fw_name,$(s),$(b)).elf,$(s),$(b),$(FRAMES),$(FW_MAX_POLLS)))\
   $(eval $(call FW_HOST_RULES,$(BUILD)/fw-host/$(call fw_name,$(s),$(b)),$(s),$(b),$(FRAMES)))\
-  $(eval FW_ALL_ELFS += $(BUILD)/firmware/$(call fw_name,$(s),$(b)).elf)\
+  $(eval FW_ALL_ELFS += $(FW_DIR)/$(call fw_name,$(s),$(b)).elf)\
   $(eval FW_ALL_HOSTS += $(BUILD)/fw-host/$(call fw_name,$(s),$(b)))))
 
 # Test builds: few frames, independent of FRAMES, so `make test` does not depend on what the last
 # `make run` asked for. The watchdog test gets a short watchdog (2^28 polls, ~3 s under QEMU).
 FW_TEST_FRAMES := 4
-FW_TEST_DIR    := $(BUILD)/fw-test
+FW_TEST_DIR    := $(BUILD)/fw-test$(FW_PSUFFIX)
 FW_TEST_DEPS   :=
 $(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
   $(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/$(call fw_name,$(s),$(b)).elf,$(s),$(b),$(FW_TEST_FRAMES),))\
@@ -231,7 +288,7 @@ FW_TEST_DEPS += $(FW_TEST_DIR)/tetra-fixed-sp4.elf
 
 # Benchmark builds: FW_BENCH_FRAMES frames of every scene, both backends.
 FW_BENCH_FRAMES := 8
-FW_BENCH_DIR    := $(BUILD)/fw-bench
+FW_BENCH_DIR    := $(BUILD)/fw-bench$(FW_PSUFFIX)
 FW_BENCH_ELFS   :=
 $(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
   $(eval $(call FW_ELF_RULES,$(FW_BENCH_DIR)/$(call fw_name,$(s),$(b)).elf,$(s),$(b),$(FW_BENCH_FRAMES),))\
@@ -240,7 +297,7 @@ $(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
 # bench-error builds: FW_ERR_FRAMES frames of every scene, <scene>-<variant>[-z].elf; -z: the
 # depth test on from the first frame (FW_DEPTH_TEST=1, for a GPU built with the depth buffer).
 FW_ERR_FRAMES := 3
-FW_ERR_DIR    := $(BUILD)/fw-error
+FW_ERR_DIR    := $(BUILD)/fw-error$(FW_PSUFFIX)
 FW_ERR_ELFS   :=
 $(foreach s,$(FW_SCENES),$(foreach v,fixed float,\
   $(eval $(call FW_ELF_RULES,$(FW_ERR_DIR)/$(s)-$(v).elf,$(s),$(v),$(FW_ERR_FRAMES),))\
@@ -248,6 +305,25 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float,\
 $(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2,\
   $(eval $(call FW_ELF_RULES,$(FW_ERR_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_ERR_FRAMES),,-DFW_DEPTH_TEST=1))\
   $(eval FW_ERR_ELFS += $(FW_ERR_DIR)/$(s)-$(v)-z.elf)))
+
+# Memory per scene (`make fw-size`, tests/firmware/fit.sh): every scene's one-scene build (what a
+# chip runs: FW_SCENE_SET=one) and, for comparison, the all-scene build of the default scene.
+# Frames 0 (until Q), the chip's setting; the frame count changes no size.
+FW_SIZE_DIR    := $(BUILD)/fw-size$(FW_PSUFFIX)
+FW_SIZE_ELFS   := $(foreach s,$(FW_SCENES),$(FW_SIZE_DIR)/$(s).elf $(FW_SIZE_DIR)/$(s)-nowire.elf) \
+                  $(FW_SIZE_DIR)/all-$(SCENE).elf
+$(foreach s,$(FW_SCENES),$(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/$(s).elf,$(s),fixed,0,,,one)))
+$(foreach s,$(FW_SCENES),\
+  $(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/$(s)-nowire.elf,$(s),fixed-nowire,0,,,one)))
+$(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/all-$(SCENE).elf,$(SCENE),fixed,0,,,all))
+# The targets of issue #9: the default scene's image in 64 KiB, every other scene's in 192 KiB.
+FW_TEST_DEPS += $(FW_SIZE_ELFS)
+FW_SIZE_TARGET_DEFAULT := 65536
+FW_SIZE_TARGET_OTHER   := 196608
+FW_SIZE_ENV = SIZE=$(patsubst %gcc,%size,$(FW_CC)) NM=$(patsubst %gcc,%nm,$(FW_CC)) \
+              OBJDUMP=$(FW_OBJDUMP) STACK_BYTES=$(FW_STACK_BYTES) DEFAULT_SCENE=tetra \
+              TARGET_DEFAULT=$(FW_SIZE_TARGET_DEFAULT) TARGET_OTHER=$(FW_SIZE_TARGET_OTHER) \
+              PLATFORM=$(FW_PLATFORM)
 
 # ---- host unit tests -------------------------------------------------------------------------
 # The pure sources and gpu.c, built against tests/firmware/fake_bsp/bsp_platform.h (the GPU aperture is an
@@ -291,7 +367,8 @@ FW_FAKE_GPU_REGS := \
   -device loader,addr=0x87000010,data=512,data-len=4 \
   -device loader,addr=0x87000014,data=0x00f00140,data-len=4
 
-.PHONY: fw fw-all fw-host fw-unit fw-smoke fw-test-deps bench-fw profile-fw fw-force
+.PHONY: fw fw-all fw-host fw-unit fw-smoke fw-test-deps bench-fw profile-fw fw-force fw-size \
+        fw-size-deps
 fw: $(FW_ELF)
 
 fw-all: $(FW_ALL_ELFS) $(FW_ALL_HOSTS)
@@ -304,20 +381,26 @@ fw-unit: $(FW_UNIT) $(FW_UNIT_FLOAT)
 
 fw-test-deps: $(FW_TEST_DEPS)
 
+# The memory table (Markdown) of every scene; fails if a one-scene build misses its target.
+fw-size: $(FW_SIZE_ELFS)
+	@$(FW_SIZE_ENV) bash firmware/tools/fw_size.sh $(FW_SIZE_DIR) $(FW_SCENES)
+
+fw-size-deps: $(FW_SIZE_ELFS)
+
 # Boots the short-watchdog ELF without a GPU: "GPU not found" (status 2); then with the identity
 # registers preloaded and nothing answering: FW_WATCHDOG_GIVE_UP watchdog resets, then status 4.
 fw-smoke: $(FW_TEST_DIR)/tetra-watchdog.elf
 	@echo "fw-smoke: no GPU -> expect 'GPU not found' and exit status 2"
-	@timeout 20 $(FW_RUN) -kernel $< > $(BUILD)/fw-test/smoke-nogpu.log; rc=$$?; \
-	  cat $(BUILD)/fw-test/smoke-nogpu.log; \
-	  grep -q '^tetra fw' $(BUILD)/fw-test/smoke-nogpu.log && \
-	  grep -q 'GPU not found' $(BUILD)/fw-test/smoke-nogpu.log && test $$rc -eq 2 || \
+	@timeout 20 $(FW_RUN) -kernel $< > $(FW_TEST_DIR)/smoke-nogpu.log; rc=$$?; \
+	  cat $(FW_TEST_DIR)/smoke-nogpu.log; \
+	  grep -q '^tetra fw' $(FW_TEST_DIR)/smoke-nogpu.log && \
+	  grep -q 'GPU not found' $(FW_TEST_DIR)/smoke-nogpu.log && test $$rc -eq 2 || \
 	  { echo "fw-smoke: FAILED (status $$rc)"; exit 1; }
 	@echo "fw-smoke: silent GPU -> expect watchdog resets, then exit status 4"
-	@timeout 60 $(FW_RUN) $(FW_FAKE_GPU_REGS) -kernel $< > $(BUILD)/fw-test/smoke-timeout.log; \
-	  rc=$$?; cat $(BUILD)/fw-test/smoke-timeout.log; \
-	  test "$$(grep -c '^watchdog: frame' $(BUILD)/fw-test/smoke-timeout.log)" -eq 3 && \
-	  grep -q 'still hung' $(BUILD)/fw-test/smoke-timeout.log && test $$rc -eq 4 || \
+	@timeout 60 $(FW_RUN) $(FW_FAKE_GPU_REGS) -kernel $< > $(FW_TEST_DIR)/smoke-timeout.log; \
+	  rc=$$?; cat $(FW_TEST_DIR)/smoke-timeout.log; \
+	  test "$$(grep -c '^watchdog: frame' $(FW_TEST_DIR)/smoke-timeout.log)" -eq 3 && \
+	  grep -q 'still hung' $(FW_TEST_DIR)/smoke-timeout.log && test $$rc -eq 4 || \
 	  { echo "fw-smoke: FAILED (status $$rc)"; exit 1; }
 	@echo "fw-smoke: passed"
 

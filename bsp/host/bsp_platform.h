@@ -9,7 +9,8 @@
  *   - bsp_uart_getc_nonblock() returns keys scheduled with --keys-at N:TEXT, delivered just
  *     before the N-th doorbell is serviced — the co-simulation harness's rule, so a host run and a
  *     co-simulation run with the same key script render the same frames.
- *   - bsp_instret() has nothing to count and returns 0.
+ *   - bsp_instret() and bsp_cycles() have nothing to count and return 0.
+ *   - the GPU's buffers are not memory (BSP_GPU_BUFFERS_MAPPED 0): batches are staged.
  *
  * bsp/host/host_main.c parses the options and calls app_run().
  */
@@ -21,8 +22,14 @@
 #define BSP_NAME      "host"
 #define BSP_GPU_BASE  0u  /* offsets go straight to the model; printed only in error messages */
 #define BSP_EXIT_TRAP 126
+#define BSP_GPU_BUFFERS_MAPPED 0  /* bsp_gpu_buffer returns NULL: batches are staged, then copied */
 
 static inline uint64_t bsp_instret(void)
+{
+    return 0u;
+}
+
+static inline uint64_t bsp_cycles(void)
 {
     return 0u;
 }

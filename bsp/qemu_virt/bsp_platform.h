@@ -24,6 +24,10 @@
 /* Exit status used when a CPU trap (exception or unexpected interrupt) ends the program. */
 #define BSP_EXIT_TRAP 126
 
+/* The GPU window is memory (shared RAM in co-simulation): bsp_gpu_buffer never returns NULL, so
+ * the firmware builds batches in place and has no staging arrays. */
+#define BSP_GPU_BUFFERS_MAPPED 1
+
 /* bsp_init (bsp.c): the trap vector (trap.c), the UART (uart.c). bsp_exit (bsp.c): the QEMU process
  * exits with status & 0xFF through sifive_test; a non-zero status that would read as 0 becomes 1.
  * bsp_uart_getc_nonblock, bsp_uart_putc (uart.c): the NS16550. */
@@ -40,6 +44,22 @@ static inline uint64_t bsp_instret(void)
         __asm__ volatile("csrr %0, minstreth" : "=r"(hi));
         __asm__ volatile("csrr %0, minstret" : "=r"(lo));
         __asm__ volatile("csrr %0, minstreth" : "=r"(hi2));
+    } while (hi != hi2);
+    return ((uint64_t)hi << 32) | lo;
+}
+
+/* Cycle counter, 64 bits, read like bsp_instret. QEMU 7.2 implements mcycle; under -icount it
+ * advances with the instruction count (so it is reproducible, but it is not a core's cycles). */
+static inline uint64_t bsp_cycles(void)
+{
+    uint32_t hi;
+    uint32_t lo;
+    uint32_t hi2;
+
+    do {
+        __asm__ volatile("csrr %0, mcycleh" : "=r"(hi));
+        __asm__ volatile("csrr %0, mcycle" : "=r"(lo));
+        __asm__ volatile("csrr %0, mcycleh" : "=r"(hi2));
     } while (hi != hi2);
     return ((uint64_t)hi << 32) | lo;
 }

@@ -19,9 +19,12 @@
  * Output, one line per frame:
  *   frame N: tris submitted S drawn D | fw instr I | gpu cycles C | errors 0xE | prims P batches B
  *     | culled object O frustum F back K clipped L
+ *     | cpu cycles Y
  * "fw instr" counts the frame's CPU work (steps 1-4, including the buffer copies and the counter
  * reads) with bsp_instret(), minus the DONE_SEQ polling: exact and reproducible under QEMU -icount.
- * Printing is not counted.
+ * "cpu cycles" is bsp_cycles() over the same span, minus the same polling: the clock cycles the
+ * work took on a real core (0 where the platform has no cycle counter; under QEMU it follows the
+ * emulation, not a core). Printing is not counted.
  */
 #include <stdbool.h>
 #include <stdint.h>
@@ -42,9 +45,12 @@
 #include "render/render.h"
 #include "scenes/scene.h"
 #include "app/pipeline.h"
+/* This program's scenes (FW_BUILT_SCENES, from firmware.mk: every scene, or only FW_SCENE) and
+ * their memory, sized for the largest of them: app.c is the one file of the program that says. */
+#include "scenes/scene_set.h"
 
-/* Everything the loop owns. One instance, static (about 1 MiB: frame buffers and scene meshes),
- * handed to the pure code by pointer. */
+/* Everything the loop owns. One instance, static, handed to the pure code by pointer; the frame's
+ * arrays and the scene's state are this program's storage (scene_set.h), sized per build. */
 struct app {
     struct gpu_dev gpu;
     struct scene scene;
@@ -66,6 +72,7 @@ struct frame_totals {
     uint32_t busy_cycles;
     uint32_t errors;
     uint64_t wait_instr;  /* instructions spent polling DONE_SEQ (excluded from fw instr) */
+    uint64_t wait_cycles; /* cycles spent polling DONE_SEQ (excluded from cpu cycles) */
     /* Where the instructions went (FW_PROFILE=1 prints them): */
     uint64_t t_update;    /* keys, camera, scene update */
     uint64_t t_draw;      /* transform, project, cull, clip, light, emit */
@@ -76,9 +83,12 @@ struct frame_totals {
 };
 
 static struct app app_state;
-/* Batch staging, for platforms whose GPU buffers are not CPU memory (bsp_gpu_buffer NULL). */
+#if !BSP_GPU_BUFFERS_MAPPED
+/* Batch staging, for platforms whose GPU buffers are not CPU memory (bsp_gpu_buffer NULL); where
+ * they are (BSP_GPU_BUFFERS_MAPPED), batches are built in place and these 12 KiB are not needed. */
 static uint32_t app_vtx_staging[GPU_VTX_CAP * GPU_VTX_WORDS];
 static uint32_t app_prim_staging[GPU_TRI_CAP * GPU_PRIM_WORDS];
+#endif
 
 static void app_fail(int status) __attribute__((noreturn));
 static void app_fail(int status)
@@ -98,12 +108,18 @@ static const char *const app_key_map =
 static void app_print_keys(const struct scene *s)
 {
     fputs(app_key_map, stdout);
-    /* "1-5 scene (tetra, cubes, landscape, voxel, knot)": the scene table's names. */
-    printf("      1-%u scene (", (unsigned)SCENE_COUNT);
-    for (uint32_t k = 0; k < SCENE_COUNT; k++) {
-        printf("%s%s", (k == 0u) ? "" : ", ", scene_at(k)->name);
+    /* "1-5 scene (tetra, cubes, landscape, voxel, knot)": the names of the scenes this program is
+     * built with (all of the table's, or one: "1 scene (tetra; the only one built in)"). */
+    if (scene_count() == 1u) {
+        printf("      1 scene (%s: the only one built in)", scene_at(0)->name);
+    } else {
+        printf("      1-%u scene (", (unsigned)scene_count());
+        for (uint32_t k = 0; k < scene_count(); k++) {
+            printf("%s%s", (k == 0u) ? "" : ", ", scene_at(k)->name);
+        }
+        fputs(")", stdout);
     }
-    fputs("), H this help, Q quit\n", stdout);
+    fputs(", H this help, Q quit\n", stdout);
     if (s->desc->keys != 0) {
         printf("      %s: %s\n", s->desc->name, s->desc->keys);
     }
@@ -187,6 +203,19 @@ static void app_note(struct app_notes *notes, const char *msg)
     }
 }
 
+/* Start a scene, or stop: a scene this program's storage cannot hold is a build error. */
+static void app_start_scene(struct app *app, const struct scene_desc *desc)
+{
+    if (!scene_start(&app->scene, desc)) {
+        printf("error: scene %s does not fit this build (state %lu of %lu bytes, objects %lu of "
+               "%lu, %lu refused)\n",
+               desc->name, (unsigned long)desc->state_bytes, (unsigned long)app->scene.state_cap,
+               (unsigned long)desc->max_objects, (unsigned long)app->scene.object_cap,
+               (unsigned long)app->scene.objects_refused);
+        app_fail(FW_EXIT_CONFIG);
+    }
+}
+
 /* Keys that belong to the loop rather than the scene. Returns false to quit. */
 static bool app_global_keys(struct app *app, const struct input_counts *keys,
                             struct app_notes *notes)
@@ -197,9 +226,9 @@ static bool app_global_keys(struct app *app, const struct input_counts *keys,
     if (keys->n[KEY_QUIT] != 0u) {
         return false;
     }
-    for (uint32_t k = 0; k < SCENE_COUNT; k++) {
+    for (uint32_t k = 0; k < scene_count(); k++) {
         if (keys->n[KEY_SCENE_1 + k] != 0u) {
-            scene_start(&app->scene, scene_at(k));
+            app_start_scene(app, scene_at(k));
             notes->scene_changed = true;
         }
     }
@@ -256,6 +285,7 @@ static bool app_submit(struct app *app, unsigned frame_no, bool first_pass, bool
         uint64_t t0;
         uint64_t t1;
         uint64_t t_wait;
+        uint64_t c_wait;
         bool last;
         int rc;
 
@@ -278,10 +308,12 @@ static bool app_submit(struct app *app, unsigned frame_no, bool first_pass, bool
         tot->batches++;
         tot->prims += batch.prim_count;
 
+        c_wait = bsp_cycles();
         t_wait = bsp_instret();
         tot->t_submit += t_wait - t1;
         rc = gpu_wait(&app->gpu, tag, FW_GPU_MAX_POLLS);
         t0 = bsp_instret();
+        tot->wait_cycles += bsp_cycles() - c_wait;
         tot->wait_instr += t0 - t_wait;
         if (rc != GPU_OK) {
             printf("watchdog: frame %u batch %lu: GPU did not finish (DONE_SEQ=0x%08lx, expected "
@@ -353,15 +385,18 @@ int app_run(void)
     int rc;
 
     bsp_init();
+    scene_set_attach(&app->scene, &app->frame);
     palette_build(app->palette);
     rc = gpu_init(&app->gpu, app->palette, PAL_ENTRIES);
     /* Batches are built in the GPU's own buffers where the platform maps them, else staged. */
     app->words.vtx = gpu_buffer_words(GPU_WIN_VTX);
     app->words.prim = gpu_buffer_words(GPU_WIN_IDX);
+#if !BSP_GPU_BUFFERS_MAPPED
     if (app->words.vtx == NULL || app->words.prim == NULL) {
         app->words.vtx = app_vtx_staging;
         app->words.prim = app_prim_staging;
     }
+#endif
     printf("%s fw (%s, %s): GPU id 0x%08lx version 0x%08lx caps 0x%08lx vtx_cap %lu tri_cap %lu "
            "fb %lux%lu | frames %u\n",
            FW_SCENE, BSP_NAME, REAL_BACKEND_NAME, (unsigned long)app->gpu.info.id,
@@ -373,9 +408,16 @@ int app_run(void)
         app_report_init_error(rc, &app->gpu.info);
         app_fail(FW_EXIT_GPU_INIT);
     }
+#if BSP_GPU_BUFFERS_MAPPED
+    if (app->words.vtx == NULL || app->words.prim == NULL) {
+        printf("error: the platform says its GPU buffers are mapped (BSP_GPU_BUFFERS_MAPPED) but "
+               "bsp_gpu_buffer returned NULL\n");
+        app_fail(FW_EXIT_CONFIG);
+    }
+#endif
     desc = scene_find(FW_SCENE);
     if (desc == 0) {
-        printf("error: no scene named '%s'\n", FW_SCENE);
+        printf("error: no scene named '%s' built in\n", FW_SCENE);
         app_fail(FW_EXIT_CONFIG);
     }
     input_decoder_init(&app->decoder);
@@ -386,7 +428,7 @@ int app_run(void)
         printf("depth buffer on (FW_DEPTH_TEST)\n");
     }
     app->lost_in_a_row = 0;
-    scene_start(&app->scene, desc);
+    app_start_scene(app, desc);
     app_report_lines(app);
     app_print_keys(&app->scene);
     printf("scene %s: %lu triangles, camera %s\n", app->scene.desc->name,
@@ -402,8 +444,11 @@ int app_run(void)
         bool completed = true;
         uint64_t t_start;
         uint64_t t_end;
+        uint64_t c_start;
+        uint64_t c_end;
         int passes;
 
+        c_start = bsp_cycles();
         t_start = bsp_instret();
         app_read_keys(app, &keys);
         if (!app_global_keys(app, &keys, &notes)) {
@@ -428,6 +473,7 @@ int app_run(void)
             tot.render.dropped += app->frame.stats.dropped;
         }
         t_end = bsp_instret();
+        c_end = bsp_cycles();
 
         if (notes.scene_changed) {
             printf("scene %s: %lu triangles, camera %s\n", app->scene.desc->name,
@@ -456,14 +502,15 @@ int app_run(void)
         app->lost_in_a_row = 0;
         printf("frame %u: tris submitted %lu drawn %lu | fw instr %lu | gpu cycles %lu | errors "
                "0x%lx | prims %lu batches %lu | culled object %lu frustum %lu back %lu | clipped "
-               "%lu\n",
+               "%lu | cpu cycles %lu\n",
                frame, (unsigned long)tot.render.faces_in, (unsigned long)tot.drawn,
                (unsigned long)((t_end - t_start) - tot.wait_instr),
                (unsigned long)tot.busy_cycles, (unsigned long)tot.errors,
                (unsigned long)tot.prims, (unsigned long)tot.batches,
                (unsigned long)tot.render.faces_culled_object,
                (unsigned long)tot.render.faces_frustum, (unsigned long)tot.render.faces_back,
-               (unsigned long)tot.render.faces_clipped);
+               (unsigned long)tot.render.faces_clipped,
+               (unsigned long)((c_end - c_start) - tot.wait_cycles));
         if (FW_PROFILE) {
             printf("profile %u: update %lu draw %lu sort %lu batch %lu submit %lu\n", frame,
                    (unsigned long)tot.t_update, (unsigned long)tot.t_draw,
@@ -471,8 +518,12 @@ int app_run(void)
                    (unsigned long)tot.t_submit);
         }
         if (tot.render.dropped != 0u) {
-            printf("warning: frame %u: %lu primitives or vertices did not fit the frame buffers\n",
-                   frame, (unsigned long)tot.render.dropped);
+            /* A capacity of this build (scene_list.h) was too small: what did not fit was not
+             * drawn. Reported on every such frame; the run goes on. */
+            printf("error: frame %u: %lu primitives or vertices dropped: the frame holds %lu "
+                   "vertices and %lu primitives in this build (scenes/scene_list.h)\n",
+                   frame, (unsigned long)tot.render.dropped, (unsigned long)app->frame.vert_cap,
+                   (unsigned long)app->frame.prim_cap);
         }
         if (tot.errors != 0u) {
             app_report_gpu_errors(frame, tot.errors);

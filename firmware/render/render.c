@@ -103,6 +103,25 @@ void render_stats_clear(struct render_stats *s)
     s->dropped = 0;
 }
 
+void render_frame_init(struct render_frame *f, struct proj_vertex *vert, uint32_t vert_cap,
+                       struct render_prim *prim, uint32_t *sort_item, uint32_t *sort_tmp,
+                       uint32_t prim_cap, struct sort_scratch *scratch)
+{
+    f->vert = vert;
+    f->prim = prim;
+    f->sort_item = sort_item;
+    f->sort_tmp = sort_tmp;
+    f->vert_cap = (vert_cap > RENDER_INDEX_LIMIT) ? RENDER_INDEX_LIMIT : vert_cap;
+    f->prim_cap = (prim_cap > RENDER_INDEX_LIMIT) ? RENDER_INDEX_LIMIT : prim_cap;
+    /* Without scratch the sort takes the insertion path, which it may only for small lists. */
+    if (scratch == 0 && f->prim_cap >= SORT_SMALL_N) {
+        f->prim_cap = SORT_SMALL_N - 1u;
+    }
+    f->sort = scratch;
+    render_stats_clear(&f->stats);
+    render_frame_begin(f);
+}
+
 void render_frame_begin(struct render_frame *f)
 {
     f->vert_count = 0;
@@ -145,7 +164,8 @@ enum render_sphere_class render_sphere_classify(const struct proj_setup *ps, vec
 /* ---- emission ----------------------------------------------------------------------------- */
 
 /* The sort item of primitive `index` with depth key `key` (larger = farther): draw key
- * 65535 - key in the upper half, so ascending items run far to near. index < 2^14. */
+ * 65535 - key in the upper half, so ascending items run far to near. index < prim_cap <=
+ * RENDER_INDEX_LIMIT = 2^16. */
 static inline uint32_t render_sort_item(uint32_t key, uint32_t index)
 {
     return (~key << 16) | index;  /* ~key << 16 = (65535 - key) << 16 for key < 2^16 */
@@ -157,7 +177,7 @@ static void render_emit_prim(struct render_frame *f, uint32_t i0, uint32_t i1, u
     struct render_prim *p;
     const uint32_t n = f->prim_count;
 
-    if (n >= RENDER_MAX_PRIMS) {
+    if (n >= f->prim_cap) {
         f->stats.dropped++;
         return;
     }
@@ -178,7 +198,7 @@ static int32_t render_add_screen_vertex(struct render_frame *f, int32_t sx, int3
 {
     struct proj_vertex *v;
 
-    if (f->vert_count >= RENDER_MAX_VERTS) {
+    if (f->vert_count >= f->vert_cap) {
         f->stats.dropped++;
         return -1;
     }
@@ -307,7 +327,7 @@ static void render_clipped_face(struct render_frame *f, const struct render_pass
         f->stats.faces_clipped_away++;
         return;
     }
-    if (f->vert_count + n > RENDER_MAX_VERTS) {
+    if (f->vert_count + n > f->vert_cap) {
         f->stats.dropped++;
         return;
     }
@@ -440,6 +460,7 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     const bool general = FW_WITH_WIREFRAME && job->pass->wireframe;
     struct render_prim *prim = f->prim;
     uint32_t *sort_item = f->sort_item;
+    const uint32_t prim_cap = f->prim_cap;
     const uint32_t np_start = f->prim_count;
     uint32_t np = np_start;
     uint32_t np_general = 0;  /* primitives the general path added (not one per face) */
@@ -471,7 +492,7 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
             n_back++;
             continue;
         }
-        if (np >= RENDER_MAX_PRIMS) {
+        if (np >= prim_cap) {
             f->stats.dropped++;
             continue;
         }
@@ -530,7 +551,7 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
         f->stats.faces_culled_object += nf;
         return;
     }
-    if (f->vert_count + nv > RENDER_MAX_VERTS) {
+    if (f->vert_count + nv > f->vert_cap) {
         f->stats.dropped++;
         return;
     }
@@ -571,7 +592,7 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
 
 void render_sort(struct render_frame *f)
 {
-    sort_items(f->sort_item, f->sort_tmp, f->prim_count, &f->sort);
+    sort_items(f->sort_item, f->sort_tmp, f->prim_count, f->sort);
     f->sorted_count = f->prim_count;
 }
 

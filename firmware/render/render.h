@@ -34,8 +34,12 @@
 #include "render/sort.h"
 #include "math/vec.h"
 
-#define RENDER_MAX_VERTS 16384u
-#define RENDER_MAX_PRIMS 16384u
+/* A frame's capacities are the program's (render_frame_init): each scene states what it needs in
+ * scenes/scene_list.h and the program sizes its frame for the largest of the scenes it is built
+ * with (scenes/scene_set.h). The index formats bound them: vertex numbers are uint16 (render_prim),
+ * primitive numbers the low 16 bits of a sort item. Anything beyond a capacity is not drawn and is
+ * counted in stats.dropped, which the frame loop reports. */
+#define RENDER_INDEX_LIMIT 65536u
 
 struct render_prim {
     union {
@@ -64,15 +68,17 @@ struct render_stats {
 };
 
 struct render_frame {
-    struct proj_vertex vert[RENDER_MAX_VERTS];
-    struct render_prim prim[RENDER_MAX_PRIMS];
+    struct proj_vertex *vert;  /* vert_cap entries */
+    struct render_prim *prim;  /* prim_cap entries */
     /* (draw key << 16) | primitive index, one per primitive, in emission order; after
      * render_sort, the first sorted_count in draw order. Primitives emitted after the sort (the
      * overlay) keep items naming themselves, so sort_item[i]'s index is the i-th primitive to
      * draw for every i. The draw key is 65535 minus the depth key: ascending = far to near. */
-    uint32_t sort_item[RENDER_MAX_PRIMS];
-    uint32_t sort_tmp[RENDER_MAX_PRIMS];
-    struct sort_scratch sort;
+    uint32_t *sort_item;       /* prim_cap entries */
+    uint32_t *sort_tmp;        /* prim_cap entries */
+    struct sort_scratch *sort; /* NULL when prim_cap < SORT_SMALL_N (the sort never needs it) */
+    uint32_t vert_cap;
+    uint32_t prim_cap;
     uint32_t vert_count;
     uint32_t prim_count;
     uint32_t sorted_count;  /* primitives covered by render_sort; later ones are overlay */
@@ -136,6 +142,29 @@ struct render_object {
 void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,
                       const struct cam_view *view, const mat3 *scene_rot, vec3 focus,
                       uvec3 light, uint32_t ambient);
+
+/* Attach storage to a frame and empty it: vert_cap vertices, prim_cap primitives (each at most
+ * RENDER_INDEX_LIMIT; larger capacities are cut to it), sort_item and sort_tmp prim_cap words each,
+ * scratch the sort's (may be NULL only when prim_cap < SORT_SMALL_N). RENDER_FRAME_STORAGE defines
+ * such storage statically and RENDER_FRAME_ATTACH attaches it. */
+void render_frame_init(struct render_frame *f, struct proj_vertex *vert, uint32_t vert_cap,
+                       struct render_prim *prim, uint32_t *sort_item, uint32_t *sort_tmp,
+                       uint32_t prim_cap, struct sort_scratch *scratch);
+
+#define RENDER_FRAME_STORAGE(id, nv, np) \
+    _Static_assert((nv) >= 1u && (nv) <= RENDER_INDEX_LIMIT && (np) >= 1u && \
+                       (np) <= RENDER_INDEX_LIMIT, \
+                   "frame capacities must be 1 .. RENDER_INDEX_LIMIT"); \
+    static struct proj_vertex id##_vert[nv]; \
+    static struct render_prim id##_prim[np]; \
+    static uint32_t id##_sort_item[np]; \
+    static uint32_t id##_sort_tmp[np]; \
+    static struct sort_scratch id##_sort_scratch[((np) >= SORT_SMALL_N) ? 1 : 0]
+#define RENDER_FRAME_ATTACH(f, id) \
+    render_frame_init((f), id##_vert, (uint32_t)(sizeof id##_vert / sizeof id##_vert[0]), \
+                      id##_prim, id##_sort_item, id##_sort_tmp, \
+                      (uint32_t)(sizeof id##_prim / sizeof id##_prim[0]), \
+                      (sizeof id##_sort_scratch != 0u) ? id##_sort_scratch : (void *)0)
 
 /* Empty the frame's vertices and primitives (statistics are kept: render_stats_clear). */
 void render_frame_begin(struct render_frame *f);

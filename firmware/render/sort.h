@@ -26,7 +26,8 @@ struct sort_scratch {
     uint32_t *next[256];  /* during a pass: where the next item of each digit goes */
 };
 
-/* Sort item[0 .. n-1] ascending by item >> 16, stable; tmp must hold n words. */
+/* Sort item[0 .. n-1] ascending by item >> 16, stable; tmp must hold n words. scratch may be NULL
+ * when n < SORT_SMALL_N (a frame too small ever to need it has none: render_frame_init). */
 void sort_items(uint32_t *item, uint32_t *tmp, uint32_t n, struct sort_scratch *scratch);
 
 #endif /* SORT_H */

@@ -11,7 +11,7 @@ struct cubes_state {
     struct mesh_face faces[12];
     uvec3 normals[6];
 };
-SCENE_STATE_FITS(struct cubes_state);
+SCENE_STATE_FITS(cubes, struct cubes_state);
 
 #define CUBES_PER_SIDE 4
 #define CUBES_SPACING REAL_C(2.5)
@@ -81,6 +81,7 @@ const struct scene_desc scene_cubes_desc = {
     .name = "cubes",
     .keys = 0,
     .state_bytes = sizeof(struct cubes_state),
+    SCENE_DESC_NEEDS(cubes),
     .init = cubes_init,
     .update = cubes_update,
 };

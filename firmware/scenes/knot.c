@@ -16,7 +16,7 @@ struct knot_state {
     uvec3 normals[KNOT_SEGMENTS * KNOT_SIDES * 2];
     mat3 spin;
 };
-SCENE_STATE_FITS(struct knot_state);
+SCENE_STATE_FITS(knot, struct knot_state);
 
 #define KNOT_R      REAL_C(2.0)    /* torus radius the knot winds around */
 #define KNOT_r      REAL_C(0.85)   /* torus tube radius the knot lies on */
@@ -131,6 +131,7 @@ const struct scene_desc scene_knot_desc = {
     .name = "knot",
     .keys = 0,
     .state_bytes = sizeof(struct knot_state),
+    SCENE_DESC_NEEDS(knot),
     .init = knot_init,
     .update = knot_update,
 };

@@ -25,7 +25,7 @@ struct landscape_tile {
 struct landscape_state {
     struct landscape_tile tile[LANDSCAPE_TILES * LANDSCAPE_TILES];
 };
-SCENE_STATE_FITS(struct landscape_state);
+SCENE_STATE_FITS(landscape, struct landscape_state);
 
 #define LAND_CELLS (LANDSCAPE_TILES * LANDSCAPE_TILE_CELLS)  /* 32 */
 #define LAND_CELL_SIZE 2                                      /* units */
@@ -140,6 +140,7 @@ const struct scene_desc scene_landscape_desc = {
     .name = "landscape",
     .keys = 0,
     .state_bytes = sizeof(struct landscape_state),
+    SCENE_DESC_NEEDS(landscape),
     .init = land_init,
     .update = land_update,
 };

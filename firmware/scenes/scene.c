@@ -5,11 +5,8 @@
 
 #include "render/palette.h"
 
-static const struct scene_desc *const scene_table[SCENE_COUNT] = {
-#define SCENE(name) &scene_##name##_desc,
-#include "scenes/scene_list.h"
-#undef SCENE
-};
+/* The table itself, scene_built[], is the program's: scenes/scene_set.h, included by one file of
+ * each program, lists the scenes it is built with, so a one-scene build links no other scene. */
 
 _Static_assert(SCENE_COUNT >= 1 && SCENE_COUNT <= KEY_SCENE_LAST - KEY_SCENE_1 + 1,
                "scene_list.h: 1 to 9 scenes (the keys 1..9 choose them)");
@@ -25,9 +22,9 @@ static int scene_name_equal(const char *a, const char *b)
 
 const struct scene_desc *scene_find(const char *name)
 {
-    for (uint32_t i = 0; i < SCENE_COUNT; i++) {
-        if (scene_name_equal(scene_table[i]->name, name)) {
-            return scene_table[i];
+    for (uint32_t i = 0; i < scene_built_count; i++) {
+        if (scene_name_equal(scene_built[i]->name, name)) {
+            return scene_built[i];
         }
     }
     return 0;
@@ -35,7 +32,23 @@ const struct scene_desc *scene_find(const char *name)
 
 const struct scene_desc *scene_at(uint32_t index)
 {
-    return (index < SCENE_COUNT) ? scene_table[index] : 0;
+    return (index < scene_built_count) ? scene_built[index] : 0;
+}
+
+uint32_t scene_count(void)
+{
+    return scene_built_count;
+}
+
+void scene_attach(struct scene *s, struct render_object *objects, uint32_t object_cap,
+                  unsigned char *state, size_t state_cap)
+{
+    s->object = objects;
+    s->object_cap = object_cap;
+    s->object_count = 0;
+    s->state = state;
+    s->state_cap = state_cap;
+    s->desc = 0;
 }
 
 void scene_camera_keys(struct camera *cam, const struct input_counts *keys)
@@ -90,7 +103,8 @@ void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, ve
 {
     struct render_object *o;
 
-    if (s->object_count >= SCENE_MAX_OBJECTS) {
+    if (s->object_count >= s->object_cap) {
+        s->objects_refused++;  /* scene_start reports it: never a silently missing object */
         return;
     }
     pos = vec3_make(scene_world_coord(pos.x), scene_world_coord(pos.y), scene_world_coord(pos.z));
@@ -102,10 +116,14 @@ void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, ve
     o->levels = 0;
 }
 
-void scene_start(struct scene *s, const struct scene_desc *desc)
+bool scene_start(struct scene *s, const struct scene_desc *desc)
 {
+    if (desc->state_bytes > s->state_cap || desc->max_objects > s->object_cap) {
+        return false;  /* this program's storage was not sized for it: *s is left as it was */
+    }
     s->desc = desc;
     s->object_count = 0;
+    s->objects_refused = 0;
     s->frame = 0;
     s->animate = true;
     s->crosshair = false;
@@ -120,6 +138,11 @@ void scene_start(struct scene *s, const struct scene_desc *desc)
     for (uint32_t i = 0; i < s->object_count; i++) {
         render_level_cache_fill(&s->object[i], &s->cam.scene_rot, s->light, s->ambient);
     }
+    if (s->objects_refused != 0u || s->object_count > desc->max_objects) {
+        s->desc = 0;  /* its objects column is wrong: refuse rather than draw part of it */
+        return false;
+    }
+    return true;
 }
 
 void scene_update(struct scene *s, const struct input_counts *keys, struct scene_event *ev)

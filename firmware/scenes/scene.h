@@ -20,45 +20,71 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "app/fw_config.h"
 #include "camera/camera.h"
 #include "input/input.h"
 #include "render/mesh.h"
 #include "render/render.h"
 #include "math/vec.h"
 
-#define SCENE_MAX_OBJECTS 64u
-
 /* ---- the scene table ----------------------------------------------------------------------- */
 
-/* SCENE_INDEX_<name>, in the order of scene_list.h; SCENE_COUNT scenes. */
+/* SCENE_INDEX_<name>, in the order of scene_list.h; SCENE_COUNT scenes (the whole table: a program
+ * may be built with fewer, scene_count()). */
 enum scene_index {
-#define SCENE(name) SCENE_INDEX_##name,
+#define SCENE(name, state, objects, verts, prims, wverts, wprims) SCENE_INDEX_##name,
 #include "scenes/scene_list.h"
 #undef SCENE
     SCENE_COUNT
 };
 
+/* What each scene needs (scene_list.h's columns): SCENE_STATE_BYTES_<name>,
+ * SCENE_MAX_OBJECTS_<name>, and the frame a pass needs in this build, SCENE_MAX_VERTS_<name> and
+ * SCENE_MAX_PRIMS_<name>: the wireframe columns where the build has wireframe (FW_WITH_WIREFRAME),
+ * else the filled ones; SCENE_FILLED_VERTS/PRIMS_<name> and SCENE_WIRE_VERTS/PRIMS_<name> are the
+ * columns themselves. */
+enum scene_needs {
+#define SCENE(name, state, objects, verts, prims, wverts, wprims) \
+    SCENE_STATE_BYTES_##name = (state), SCENE_MAX_OBJECTS_##name = (objects), \
+    SCENE_FILLED_VERTS_##name = (verts), SCENE_FILLED_PRIMS_##name = (prims), \
+    SCENE_WIRE_VERTS_##name = (wverts), SCENE_WIRE_PRIMS_##name = (wprims), \
+    SCENE_MAX_VERTS_##name = FW_WITH_WIREFRAME ? (wverts) : (verts), \
+    SCENE_MAX_PRIMS_##name = FW_WITH_WIREFRAME ? (wprims) : (prims),
+#include "scenes/scene_list.h"
+#undef SCENE
+    SCENE_NEEDS_END
+};
+
 /* Each scene's descriptor, defined in its own file (scenes/<name>.c or scenes/<name>/). */
-#define SCENE(name) extern const struct scene_desc scene_##name##_desc;
+#define SCENE(name, state, objects, verts, prims, wverts, wprims) extern const struct scene_desc scene_##name##_desc;
 struct scene_desc;
 #include "scenes/scene_list.h"
 #undef SCENE
 
+/* The scenes this program is built with, in table order (keys 1..scene_count()): defined by the
+ * one file of the program that includes scenes/scene_set.h. */
+extern const struct scene_desc *const scene_built[];
+extern const uint32_t scene_built_count;
+
 /* ---- a scene's private state --------------------------------------------------------------- */
 
 /* Each scene declares its state (meshes, animation, ...) as a struct of its own file and keeps it
- * inside struct scene, which holds one scene at a time (the scenes share the memory, which matters
- * on a chip): SCENE_STATE(s, struct tetra_state) is that scene's view of the storage.
- * SCENE_STATE_FITS(type) in the scene's file makes a state too big for the storage a compile error;
- * the scene's descriptor gives its size (state_bytes), and test_scene_state_storage checks that the
- * largest one fills the storage but for its rounding up to 64 bytes, so the number below stays the
- * largest scene's state (today the voxel scene's, sized on a 64-bit host, a little larger than on
- * rv32). */
-#define SCENE_STATE_BYTES 322752u
+ * in the storage struct scene points to, which holds one scene at a time (the scenes share the
+ * memory, which matters on a chip): SCENE_STATE(s, struct tetra_state) is that scene's view of it.
+ * SCENE_STATE_FITS(tetra, struct tetra_state) in the scene's file makes a state larger than its
+ * scene_list.h column a compile error; the program's storage is the largest column of the scenes
+ * it is built with (scene_set.h), and scene_start refuses a scene whose state or objects do not
+ * fit the storage it is given. */
 #define SCENE_STATE(s, type) ((type *)(void *)(s)->state)
-#define SCENE_STATE_FITS(type) \
-    _Static_assert(sizeof(type) <= SCENE_STATE_BYTES, \
-                   #type " does not fit SCENE_STATE_BYTES: raise it in scenes/scene.h")
+#define SCENE_STATE_FITS(name, type) \
+    _Static_assert(sizeof(type) <= (size_t)SCENE_STATE_BYTES_##name, \
+                   #type " does not fit its state column of scenes/scene_list.h: raise it")
+/* A descriptor's capacities from the scene's scene_list.h line (its .state_bytes is the sizeof). */
+#define SCENE_DESC_NEEDS(name) \
+    .max_objects = SCENE_MAX_OBJECTS_##name, .max_verts = SCENE_MAX_VERTS_##name, \
+    .max_prims = SCENE_MAX_PRIMS_##name, .filled_verts = SCENE_FILLED_VERTS_##name, \
+    .filled_prims = SCENE_FILLED_PRIMS_##name, .wire_verts = SCENE_WIRE_VERTS_##name, \
+    .wire_prims = SCENE_WIRE_PRIMS_##name
 
 /* ---- the running scene -------------------------------------------------------------------- */
 
@@ -96,27 +122,48 @@ struct scene {
     bool crosshair;
     bool animate;
     uint32_t frame;       /* frames updated since the scene started */
-    struct render_object object[SCENE_MAX_OBJECTS];
+    /* The program's storage (scene_set.h: scene_set_attach), kept by scene_start: */
+    struct render_object *object;  /* object_cap entries */
+    uint32_t object_cap;
     uint32_t object_count;
-    _Alignas(8) unsigned char state[SCENE_STATE_BYTES];  /* the scene's own: SCENE_STATE */
+    uint32_t objects_refused;      /* scene_add_object calls beyond object_cap */
+    unsigned char *state;          /* state_cap bytes, 8-aligned: the scene's own, SCENE_STATE */
+    size_t state_cap;
     struct proj_setup proj;  /* the projection of focal_px and far, set by scene_start */
 };
 
 struct scene_desc {
     const char *name;
     const char *keys;   /* scene-specific keys for the key map, or NULL */
-    size_t state_bytes; /* sizeof its state struct (SCENE_STATE_FITS) */
+    /* What it needs (SCENE_DESC_NEEDS: its scene_list.h line): */
+    size_t state_bytes;   /* sizeof its state struct (<= its column: SCENE_STATE_FITS) */
+    uint32_t max_objects; /* objects its init adds */
+    uint32_t max_verts;   /* frame vertices and primitives a pass can need in this build */
+    uint32_t max_prims;
+    uint32_t filled_verts;  /* ... a filled pass (scene_list.h's columns) */
+    uint32_t filled_prims;
+    uint32_t wire_verts;    /* ... a wireframe pass */
+    uint32_t wire_prims;
     void (*init)(struct scene *s);
     /* Animation and scene keys, once per frame (camera keys are already applied). */
     void (*update)(struct scene *s, const struct input_counts *keys, struct scene_event *ev);
 };
 
-/* Scene by name (NULL if unknown) or by number 0 .. SCENE_COUNT-1. */
+/* Among the scenes this program is built with: by name (NULL if unknown or not built in), by number
+ * 0 .. scene_count()-1 (NULL beyond), and how many. */
 const struct scene_desc *scene_find(const char *name);
 const struct scene_desc *scene_at(uint32_t index);
+uint32_t scene_count(void);
 
-/* Build the scene's meshes and set its camera; every field of *s is (re)initialised. */
-void scene_start(struct scene *s, const struct scene_desc *desc);
+/* Give a scene its storage (kept across scene_start): objects and state bytes (8-aligned). */
+void scene_attach(struct scene *s, struct render_object *objects, uint32_t object_cap,
+                  unsigned char *state, size_t state_cap);
+
+/* Build the scene's meshes and set its camera; every field of *s but its storage is
+ * (re)initialised. Returns false when the scene needs more state or objects than s's storage
+ * holds (a program built without room for it: *s is left as it was), or when its init added more
+ * objects than its max_objects column or the storage took (s->desc is then NULL). */
+bool scene_start(struct scene *s, const struct scene_desc *desc);
 
 /* One frame: camera keys, view reset, animation toggle, then the scene's own update. */
 void scene_update(struct scene *s, const struct input_counts *keys, struct scene_event *ev);

@@ -1,14 +1,33 @@
 /*
- * scene_list.h — the scene table: one SCENE(name) line per scene, nothing else.
+ * scene_list.h — the scene table: one SCENE(name, state, objects, verts, prims, wverts, wprims) line per scene,
+ * nothing else.
  *
- * The order is the order of the keys 1..9 and of the key map. Scene `name` is the file
- * scenes/<name>.c (or the folder scenes/<name>/), which defines `const struct scene_desc
- * scene_<name>_desc` with .name = "<name>". firmware/firmware.mk reads the names from these lines
- * (FW_SCENES: what `make SCENE=` accepts, the builds of every scene); scene.c includes this file
- * to build its table. At most 9 scenes (the keys 1..9).
- */
-SCENE(tetra)
-SCENE(cubes)
-SCENE(landscape)
-SCENE(voxel)
-SCENE(knot)
+ * The order is the order of the keys 1..9 and of the key map (in a program built with every
+ * scene; a program built with some of them, scene_set.h, numbers those in this order). Scene
+ * `name` is the file scenes/<name>.c (or the folder scenes/<name>/), which defines `const struct
+ * scene_desc scene_<name>_desc` with .name = "<name>". firmware/firmware.mk reads the names from
+ * these lines (FW_SCENES: what `make SCENE=` accepts, the builds of every scene); scene.h includes
+ * this file to declare the table, scene_set.h to size a program's memory. At most 9 scenes.
+ *
+ * The columns are what the scene needs, its build's memory (firmware/README.md, "Memory per
+ * scene", has the argument for each number):
+ *   state    bytes of its state struct (SCENE_STATE_FITS checks it at compile time; the unit tests,
+ *            that it is the host's sizeof rounded up to 64, the larger of the two ABIs)
+ *   objects  scene_add_object calls its init makes
+ *   verts    frame vertices one filled pass can need: the visible objects' mesh vertices, the
+ *            clipper's new ones, 4 for the crosshair
+ *   prims    frame primitives one filled pass can need: triangles (a clipped face's fan), the
+ *            crosshair's 2 lines
+ *   wverts   the same for a wireframe pass, lines drawn by the GPU or emulated (4 vertices and 2
+ *   wprims   triangles per edge, the larger): what a build with FW_WITH_WIREFRAME reserves
+ * A frame that would need more drops the rest and counts it (render_stats.dropped: the frame
+ * loop prints an error line); test_scene_capacities (tests/firmware/test_scene.c) drives every
+ * scene through camera sweeps in filled, wireframe (GPU lines and emulated) and anaglyph passes,
+ * and requires every pass to fit its columns.
+ *
+ *     name       state   objects  verts  prims  wverts  wprims */
+SCENE(tetra,        320,     1,      32,    21,    140,     54)
+SCENE(cubes,        384,    64,     640,   512,   5376,   2432)
+SCENE(landscape,  64768,    16,    1536,  2304,  29120,  13824)
+SCENE(voxel,     322752,     8,    2048,  2048,  17024,   7808)
+SCENE(knot,      140160,     1,    2880,  2816,  36480,  16832)

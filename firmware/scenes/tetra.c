@@ -12,7 +12,7 @@ struct tetra_state {
     uvec3 normals[4];
     mat3 spin;      /* rotation applied every animated frame */
 };
-SCENE_STATE_FITS(struct tetra_state);
+SCENE_STATE_FITS(tetra, struct tetra_state);
 
 static void tetra_init(struct scene *s)
 {
@@ -58,6 +58,7 @@ const struct scene_desc scene_tetra_desc = {
     .name = "tetra",
     .keys = 0,
     .state_bytes = sizeof(struct tetra_state),
+    SCENE_DESC_NEEDS(tetra),
     .init = tetra_init,
     .update = tetra_update,
 };

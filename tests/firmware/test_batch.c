@@ -12,7 +12,17 @@
 #include "test_util.h"
 #include "unit.h"
 
+/* The tests' frame: the historical 16384 vertices and primitives (a firmware build sizes its own,
+ * scenes/scene_set.h), attached before any case runs. */
+#define TEST_FRAME_VERTS 16384u
+#define TEST_FRAME_PRIMS 16384u
+RENDER_FRAME_STORAGE(test_frame, TEST_FRAME_VERTS, TEST_FRAME_PRIMS);
 static struct render_frame frame;
+static void attach_frame(void) __attribute__((constructor));
+static void attach_frame(void)
+{
+    RENDER_FRAME_ATTACH(&frame, test_frame);
+}
 static uint32_t vtx_words[GPU_VTX_CAP * GPU_VTX_WORDS];
 static uint32_t prim_words[GPU_TRI_CAP * GPU_PRIM_WORDS];
 static struct batch_words words = {vtx_words, prim_words, 0, 0};

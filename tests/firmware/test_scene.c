@@ -11,6 +11,8 @@
 #include "render/palette.h"
 #include "render/render.h"
 #include "scenes/scene.h"
+/* The unit tests' program has every scene (no FW_BUILT_SCENES): its table and storage. */
+#include "scenes/scene_set.h"
 #include "scenes/voxel/voxel_scene.h"
 #include "app/pipeline.h"
 #include "test_util.h"
@@ -18,6 +20,13 @@
 
 static struct scene scene;
 static struct render_frame frame;
+
+/* The program's storage, as app.c gives it, before any case runs. */
+static void attach_storage(void) __attribute__((constructor));
+static void attach_storage(void)
+{
+    scene_set_attach(&scene, &frame);
+}
 
 /* The frame loop's pass (pipeline.h), with GPU lines. */
 static void render_scene(const struct scene *s, struct render_frame *f, bool wire)
@@ -61,12 +70,13 @@ void test_scene_meshes_valid(void)
 {
     /* The table's names, in its order: each scene's .name is its SCENE(name) line's. */
     static const char *const table_names[] = {
-#define SCENE(name) #name,
+#define SCENE(name, state, objects, verts, prims, wverts, wprims) #name,
 #include "scenes/scene_list.h"
 #undef SCENE
     };
 
     CHECK_EQ(sizeof table_names / sizeof table_names[0], SCENE_COUNT);
+    CHECK_EQ(scene_count(), SCENE_COUNT);  /* this program is built with every scene */
     for (uint32_t k = 0; k < SCENE_COUNT; k++) {
         const struct scene_desc *d = scene_at(k);
 
@@ -111,23 +121,84 @@ void test_scene_object_range(void)
     fx_overflow_clear();
 }
 
-/* The sizes of issue #4: a 16^3 voxel world, a 5000-triangle model. */
-/* The shared state storage is the largest scene's state rounded up to 64 bytes: no scene's state
- * exceeds it (SCENE_STATE_FITS also stops the compile), and it is not larger than it needs to be,
- * so SCENE_STATE_BYTES follows the scenes instead of growing stale. */
+/* Each scene's state column (scene_list.h) is its state's size on this host, rounded up to 64
+ * bytes: no state exceeds its column (SCENE_STATE_FITS also stops the compile), and no column is
+ * larger than it needs to be (on the 64-bit host, whose pointers make every state at least as
+ * large as on rv32), so the columns follow the scenes instead of growing stale. The program's
+ * storage is the largest column of its scenes (scene_set.h). */
 void test_scene_state_storage(void)
 {
+    static const size_t column[] = {
+#define SCENE(name, state, objects, verts, prims, wverts, wprims) (state),
+#include "scenes/scene_list.h"
+#undef SCENE
+    };
     size_t largest = 0;
 
     for (uint32_t k = 0; k < SCENE_COUNT; k++) {
         const size_t bytes = scene_at(k)->state_bytes;
 
         CHECK(bytes > 0u);
-        CHECK(bytes <= SCENE_STATE_BYTES);
-        largest = bytes > largest ? bytes : largest;
+        CHECK(bytes <= column[k]);
+        if ((bytes + 63u) / 64u * 64u != column[k]) {
+            unit_fail(__FILE__, __LINE__, "scene %s: state column %lu, sizeof %lu: make it %lu",
+                      scene_at(k)->name, (unsigned long)column[k], (unsigned long)bytes,
+                      (unsigned long)((bytes + 63u) / 64u * 64u));
+        }
+        largest = column[k] > largest ? column[k] : largest;
     }
-    CHECK_EQ(SCENE_STATE_BYTES, (largest + 63u) / 64u * 64u);
+    CHECK_EQ(SCENE_SET_STATE_BYTES, largest);
+    CHECK_EQ(scene.state_cap, largest);
 }
+
+/* A scene whose state or objects do not fit the storage it is given is refused by scene_start,
+ * which leaves the running scene as it was; one whose init adds more objects than its column
+ * says is refused too (never drawn with objects missing). */
+void test_scene_storage_refused(void)
+{
+    static _Alignas(8) unsigned char small_state[64];
+    static struct render_object objects[SCENE_SET_OBJECTS];
+    static const struct scene_desc greedy = {
+        .name = "greedy", .keys = 0, .state_bytes = 8, .max_objects = 1, .max_verts = 8,
+        .max_prims = 8, .init = 0, .update = 0,
+    };
+    struct scene s;
+    const struct scene_desc *tetra = scene_find("tetra");
+    const struct scene_desc *knot = scene_find("knot");
+    struct scene_desc greedy_run;
+
+    memset(&s, 0, sizeof s);
+    CHECK(tetra != 0 && knot != 0);
+    CHECK(tetra->state_bytes > sizeof small_state || knot->state_bytes > sizeof small_state);
+    scene_attach(&s, objects, SCENE_SET_OBJECTS, small_state, sizeof small_state);
+    CHECK(!scene_start(&s, knot));          /* 140 KB of state into 64 bytes */
+    CHECK(s.desc == 0 && s.object_count == 0u);
+    /* Enough state but too few objects: refused before init runs. */
+    scene_attach(&s, objects, 0, scene_set_state, sizeof scene_set_state);
+    CHECK(!scene_start(&s, tetra));
+    /* Storage that fits: started. */
+    scene_attach(&s, objects, SCENE_SET_OBJECTS, scene_set_state, sizeof scene_set_state);
+    CHECK(scene_start(&s, tetra));
+    CHECK(s.desc == tetra);
+    /* Now a scene that does not fit: tetra keeps running, untouched. */
+    s.state_cap = 64;
+    CHECK(!scene_start(&s, knot));
+    CHECK(s.desc == tetra && s.object_count == 1u);
+    /* An init adding more objects than its column: refused, nothing half-built left running. */
+    greedy_run = greedy;
+    greedy_run.init = tetra->init;   /* tetra's init adds one object... */
+    greedy_run.update = tetra->update;
+    greedy_run.max_objects = 0;      /* ...which this descriptor does not declare */
+    greedy_run.state_bytes = tetra->state_bytes;
+    s.state_cap = sizeof scene_set_state;
+    CHECK(!scene_start(&s, &greedy_run));
+    CHECK(s.desc == 0);
+    /* The table's own storage is back for the other cases. */
+    scene_set_attach(&scene, &frame);
+    fx_overflow_clear();
+}
+
+/* The sizes of issue #4: a 16^3 voxel world, a 5000-triangle model. */
 
 void test_scene_sizes(void)
 {
@@ -243,4 +314,113 @@ void test_scene_voxel_place_break(void)
     scene_update(&scene, &c, &ev);
     CHECK_EQ(ev.kind, SCENE_EVENT_NO_TARGET);
     CHECK_EQ(fx_overflow_count(), 0);
+}
+
+/* ---- capacities ---------------------------------------------------------------------------- */
+
+/* A frame larger than any scene declares, to measure what a pass really needs. */
+RENDER_FRAME_STORAGE(measure_frame, RENDER_INDEX_LIMIT, RENDER_INDEX_LIMIT);
+static struct render_frame measure;
+
+struct cap_need {
+    uint32_t verts;
+    uint32_t prims;
+    uint32_t kind_verts[3];  /* filled (both eyes too), wireframe with lines, emulated */
+    uint32_t kind_prims[3];
+};
+
+static void cap_pass(const struct scene *s, bool wire, bool lines, int eye, struct cap_need *need)
+{
+    const struct pipeline_opts opts = {.wireframe = wire, .depth_test = false, .gpu_lines = lines};
+
+    pipeline_pass(&measure, s, &opts, eye, NULL, NULL);
+    CHECK_EQ(measure.stats.dropped, 0);
+    const int kind = !wire ? 0 : (lines ? 1 : 2);
+
+    need->verts = (measure.vert_count > need->verts) ? measure.vert_count : need->verts;
+    need->prims = (measure.prim_count > need->prims) ? measure.prim_count : need->prims;
+    if (measure.vert_count > need->kind_verts[kind]) {
+        need->kind_verts[kind] = measure.vert_count;
+    }
+    if (measure.prim_count > need->kind_prims[kind]) {
+        need->kind_prims[kind] = measure.prim_count;
+    }
+}
+
+/*
+ * Each scene's declared frame capacities (scene_list.h's verts and prims columns) hold under
+ * stress: camera sweeps (the scene's own mode, orbit and fly; five distances over the camera's
+ * range, sixteen headings, five pitches), the animation running, and every pass kind a frame can
+ * make: filled, wireframe with GPU lines, wireframe emulated by triangle pairs (the largest: 4
+ * vertices and 2 triangles per edge), and the anaglyph's two eyes, filled and emulated
+ * wireframe. No pass may exceed a column; the measured largest needs are printed (the README's
+ * capacity table quotes them). A pass through the program's own frame (sized by scene_set.h for
+ * the largest column) drops nothing either.
+ */
+void test_scene_capacities(void)
+{
+    const enum cam_mode modes[] = {CAM_ORBIT, CAM_FLY, CAM_OBJECT};
+
+    RENDER_FRAME_ATTACH(&measure, measure_frame);
+    for (uint32_t k = 0; k < SCENE_COUNT; k++) {
+        const struct scene_desc *d = scene_at(k);
+        struct cap_need need;
+        struct input_counts none;
+        struct scene_event ev;
+
+        memset(&need, 0, sizeof need);
+        CHECK(scene_start(&scene, d));
+        input_counts_clear(&none);
+        for (uint32_t mi = 0; mi < 4u; mi++) {
+            const enum cam_mode mode = (mi == 0u) ? scene.mode_default : modes[mi - 1u];
+
+            for (int32_t di = 0; di < 5; di++) {
+                const real_t dist =
+                    scene.cam_default.dist_min +
+                    (real_t)((scene.cam_default.dist_max - scene.cam_default.dist_min) / 4 * di);
+
+                for (uint32_t yi = 0; yi < 16u; yi++) {
+                    for (int32_t pi = -2; pi <= 2; pi++) {
+                        cam_init(&scene.cam, &scene.cam_default, mode, scene.target_default, dist,
+                                 (fx_angle)(yi * (FX_TURN / 16u)),
+                                 pi * (CAM_PITCH_LIMIT / 5) * 2);
+                        scene_update(&scene, &none, &ev);  /* the animation moves on */
+                        cap_pass(&scene, false, true, 0, &need);
+                        cap_pass(&scene, true, true, 0, &need);
+                        cap_pass(&scene, true, false, 0, &need);
+                        cap_pass(&scene, false, true, -1, &need);
+                        cap_pass(&scene, false, true, 1, &need);
+                        cap_pass(&scene, true, false, 1, &need);
+                    }
+                }
+            }
+        }
+        printf("capacity %-9s verts %5lu of %5lu, prims %5lu of %5lu (filled %lu/%lu, lines "
+               "%lu/%lu, emulated lines %lu/%lu)\n", d->name,
+               (unsigned long)need.verts, (unsigned long)d->max_verts, (unsigned long)need.prims,
+               (unsigned long)d->max_prims, (unsigned long)need.kind_verts[0],
+               (unsigned long)need.kind_prims[0], (unsigned long)need.kind_verts[1],
+               (unsigned long)need.kind_prims[1], (unsigned long)need.kind_verts[2],
+               (unsigned long)need.kind_prims[2]);
+        if (need.kind_verts[0] > d->filled_verts || need.kind_prims[0] > d->filled_prims) {
+            unit_fail(__FILE__, __LINE__, "scene %s: a filled pass needs %lu vertices and %lu "
+                      "primitives: its scene_list.h columns say %lu and %lu", d->name,
+                      (unsigned long)need.kind_verts[0], (unsigned long)need.kind_prims[0],
+                      (unsigned long)d->filled_verts, (unsigned long)d->filled_prims);
+        }
+        CHECK(need.verts <= d->wire_verts && need.prims <= d->wire_prims);
+        if (need.verts > d->max_verts || need.prims > d->max_prims) {
+            unit_fail(__FILE__, __LINE__, "scene %s needs %lu vertices and %lu primitives: its "
+                      "scene_list.h columns say %lu and %lu", d->name, (unsigned long)need.verts,
+                      (unsigned long)need.prims, (unsigned long)d->max_verts,
+                      (unsigned long)d->max_prims);
+        }
+        CHECK(d->max_verts <= SCENE_SET_VERTS && d->max_prims <= SCENE_SET_PRIMS);
+        /* The program's own frame, sized for the largest column, at the default view. */
+        scene_start(&scene, d);
+        render_scene(&scene, &frame, true);
+        CHECK_EQ(frame.stats.dropped, 0);
+        CHECK_EQ(fx_overflow_count(), 0);
+        fx_overflow_clear();
+    }
 }

@@ -103,6 +103,8 @@ void unit_srand(uint32_t seed);
     X(test_scene_meshes_valid)        \
     X(test_scene_object_range)        \
     X(test_scene_state_storage)       \
+    X(test_scene_storage_refused)     \
+    X(test_scene_capacities)          \
     X(test_scene_sizes)               \
     X(test_scene_frames)              \
     X(test_scene_voxel_place_break)   \

@@ -156,7 +156,15 @@ static uint32_t take_value(struct reader *r)
 
 static uint32_t vtx_words[WIN_VTX_MAX * GPU_VTX_WORDS];
 static uint32_t prim_words[WIN_IDX_MAX * GPU_PRIM_WORDS];
-static struct render_frame frame;
+/* A frame of 3000 vertices and primitives (make_frame's largest); this program links batch.c
+ * without render.c, so the storage is attached by hand (as render_frame_init would). */
+static struct proj_vertex frame_vert[3000];
+static struct render_prim frame_prim[3000];
+static uint32_t frame_sort_item[3000];
+static struct render_frame frame = {
+    .vert = frame_vert, .prim = frame_prim, .sort_item = frame_sort_item, .sort_tmp = NULL,
+    .sort = NULL, .vert_cap = 3000u, .prim_cap = 3000u,
+};
 static uint32_t batch_vtx[GPU_VTX_CAP * GPU_VTX_WORDS];
 static uint32_t batch_prim[GPU_TRI_CAP * GPU_PRIM_WORDS];
 static struct batch_words words = {batch_vtx, batch_prim, 0, 0};

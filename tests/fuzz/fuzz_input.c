@@ -38,6 +38,8 @@
 #include "math/real.h"
 #include "render/render.h"
 #include "scenes/scene.h"
+/* This program has every scene (no FW_BUILT_SCENES): the table and its storage. */
+#include "scenes/scene_set.h"
 #include "scenes/voxel/voxel_scene.h"
 #include "app/pipeline.h"
 #include "fuzz_common.h"
@@ -45,10 +47,13 @@
 #define FUZZ_MAX_BACKLOG 4096u  /* the simulated UART holds what has arrived and not been read */
 
 static struct scene scene;          /* large: static, like app.c's */
-/* scene_start(&scene, scene_at(k)) as it leaves `scene`: building the meshes (normals, square
- * roots) costs far more than the keys, and has no input, so it is done once per scene and then
- * copied back. The copy lands at the same address, so the scene's pointers into itself hold. */
+/* scene_start(&scene, scene_at(k)) as it leaves `scene` and its state storage: building the
+ * meshes (normals, square roots) costs far more than the keys, and has no input, so it is done
+ * once per scene and then copied back. The copies land at the same addresses (the struct, its
+ * objects and its state: scene_set.h's storage), so the scene's pointers into itself hold. */
 static struct scene started[SCENE_COUNT];
+static struct render_object started_objects[SCENE_COUNT][SCENE_SET_OBJECTS];
+static _Alignas(8) unsigned char started_state[SCENE_COUNT][SCENE_SET_STATE_BYTES];
 static bool started_valid[SCENE_COUNT];
 static struct render_frame frame;
 static uint32_t batch_vtx[GPU_VTX_CAP * GPU_VTX_WORDS];
@@ -138,12 +143,19 @@ static void check_camera(const struct scene *s)
 
 static void start_scene(uint32_t k)
 {
+    if (scene.state == NULL) {
+        scene_set_attach(&scene, &frame);
+    }
     if (!started_valid[k]) {
-        scene_start(&scene, scene_at(k));
+        REQUIRE(scene_start(&scene, scene_at(k)), "scene %s refused", scene_at(k)->name);
         memcpy(&started[k], &scene, sizeof scene);
+        memcpy(started_objects[k], scene.object, sizeof started_objects[k]);
+        memcpy(started_state[k], scene.state, sizeof started_state[k]);
         started_valid[k] = true;
     }
     memcpy(&scene, &started[k], sizeof scene);
+    memcpy(scene.object, started_objects[k], sizeof started_objects[k]);
+    memcpy(scene.state, started_state[k], sizeof started_state[k]);
 }
 
 /* One render pass (the frame loop's, pipeline.h) and its batches, as app_submit cuts them (without

@@ -31,7 +31,7 @@ check_case() {
     expect_eq "$(summary frames_model_checked "$work/$name.summary")" "$frames" "$name: frames checked against the model"
     same_pngs "$work/$name-cosim" "$work/$name-host" "$name: co-simulation against host"
     # Frame lines: identical but for the co-simulation-only fields.
-    strip() { grep '^frame ' "$1" | sed -E 's/fw instr [0-9]+/fw instr -/; s/gpu cycles [0-9]+/gpu cycles -/'; }
+    strip() { grep '^frame ' "$1" | sed -E 's/fw instr [0-9]+/fw instr -/; s/gpu cycles [0-9]+/gpu cycles -/; s/cpu cycles [0-9]+/cpu cycles -/'; }
     if ! diff <(strip "$work/$name-cosim.uart") <(strip "$work/$name-host.uart") >"$work/$name.diff"; then
         head -n 6 "$work/$name.diff"; fail "$name: frame statistics differ"
     fi

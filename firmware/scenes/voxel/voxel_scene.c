@@ -9,7 +9,7 @@
 
 #define VOXEL_REACH REAL_C(32.0)  /* units the crosshair reaches: the whole world from the default view */
 
-SCENE_STATE_FITS(struct voxel_scene_state);
+SCENE_STATE_FITS(voxel, struct voxel_scene_state);
 
 static const char *const voxel_block_names[BLOCK_TYPES] = {
     "air", "grass", "dirt", "stone", "sand", "wood", "leaves",
@@ -124,6 +124,7 @@ const struct scene_desc scene_voxel_desc = {
     .name = "voxel",
     .keys = "P place block, B break block, N next block type (crosshair at the screen centre)",
     .state_bytes = sizeof(struct voxel_scene_state),
+    SCENE_DESC_NEEDS(voxel),
     .init = voxel_scene_init,
     .update = voxel_scene_update,
 };

@@ -13,6 +13,7 @@
 
 #define BSP_NAME "host-test"
 #define BSP_EXIT_TRAP 126
+#define BSP_GPU_BUFFERS_MAPPED 1  /* bsp_gpu_buffer: the aperture array itself */
 
 #define FAKE_GPU_WORDS (0x20000u / 4u)  /* the 128 KiB aperture */
 #define FAKE_REG_WORDS (0x100u / 4u)    /* the register window */
@@ -76,6 +77,12 @@ static inline void bsp_uart_putc(char c)
 }
 
 static inline uint64_t bsp_instret(void)
+{
+    return 0u;
+}
+
+/* No cycles either: 0. */
+static inline uint64_t bsp_cycles(void)
 {
     return 0u;
 }

@@ -13,6 +13,7 @@
 #define BSP_NAME "fuzz"
 #define BSP_GPU_BASE 0u
 #define BSP_EXIT_TRAP 126
+#define BSP_GPU_BUFFERS_MAPPED 0  /* bsp_gpu_buffer returns NULL: every word through the bus */
 
 void fuzz_bus_write(uint32_t offset, uint32_t value);
 uint32_t fuzz_bus_read(uint32_t offset);
@@ -69,6 +70,12 @@ static inline void bsp_uart_putc(char c)
 }
 
 static inline uint64_t bsp_instret(void)
+{
+    return 0u;
+}
+
+/* No cycles either: 0. */
+static inline uint64_t bsp_cycles(void)
 {
     return 0u;
 }
