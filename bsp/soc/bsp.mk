@@ -17,7 +17,8 @@ FW_ARCH_FLAGS = -march=rv32im -misa-spec=2.2 -mabi=ilp32 -mcmodel=medlow --specs
 FW_BSP_SRCS   = $(wildcard bsp/soc/*.c)
 FW_LDSCRIPT   = linker/soc.ld
 # crt0 "hosted" calls exit(main()); the BSP's _exit() writes SYS EXIT.
-FW_BSP_LDFLAGS = --crt0=hosted -Wl,--no-warn-rwx-segments -Wl,--defsym=__ram_size=$(SOC_RAM_BYTES)
+FW_BSP_LDFLAGS = --crt0=hosted -Wl,--no-warn-rwx-segments -Wl,--defsym=__ram_size=$(SOC_RAM_BYTES) \
+                 -Wl,--defsym=__stack_size=$(FW_STACK_BYTES)
 # After linking: <elf>.hex (RAM_INIT, one 32-bit word per line), or a build error with the sizes
 # when the image, its bss and the stack do not fit the RAM (the ELF is then deleted).
 FW_POSTLINK   = $(or $(PYTHON),python3) bsp/soc/postlink.py --ram-bytes $(SOC_RAM_BYTES) \

@@ -25,18 +25,24 @@ SOC_FW_MAKE   = $(MAKE) --no-print-directory FW_PLATFORM=soc BUILD=$(BUILD) SOC_
 
 SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_FILES) contract/gpu_regs.vh \
                contract/soc_map.vh contract/soc_map.h $(SOCSIM_SRC) $(SOCSIM_SV) $(wildcard cosim/soc/*.h) \
-               cosim/model_check.h $(COSIM_C_LIB) $(GPU_MODEL_LIB) cosim/soc/socsim.mk
+               cosim/model_check.h $(COSIM_C_LIB) $(GPU_MODEL_LIB)
 
-$(SOCSIM): $(SOCSIM_DEPS)
+# The Verilator command, recorded in $(SOCSIM_DIR)/cmd.txt (rewritten only when it changes) so that a
+# change of parameters or flags rebuilds, and an edit elsewhere in this file does not.
+SOCSIM_CMD = $(VERILATOR) --cc --exe --build -j 2 -O3 --x-assign fast --x-initial fast \
+  --top-module soc_top -GRAM_BYTES=$(SOC_RAM_BYTES) -GSPAN_W=$(SPAN_W) \
+  $(SOC_VFLAGS) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) \
+  -CFLAGS "-O2 -std=c++17 -ffunction-sections -DSOCSIM_SPAN_W=$(SPAN_W)u -DSOCSIM_RAM_BYTES=$(SOC_RAM_BYTES)u \
+           $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract)" \
+  -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
+  --MAKEFLAGS "OPT_FAST=-O3 -march=native OPT_SLOW=-O1" --Mdir $(SOCSIM_DIR)/obj -o $(abspath $(SOCSIM))
+
+$(SOCSIM_DIR)/cmd.txt: fw-force
+	$(call fw_flags_file,$@,$(SOCSIM_CMD))
+
+$(SOCSIM): $(SOCSIM_DEPS) $(SOCSIM_DIR)/cmd.txt
 	@mkdir -p $(SOCSIM_DIR)
-	$(VERILATOR) --cc --exe --build -j 2 -O3 --x-assign fast --x-initial fast \
-	  --top-module soc_top -GRAM_BYTES=$(SOC_RAM_BYTES) -GSPAN_W=$(SPAN_W) \
-	  $(SOC_VFLAGS) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) \
-	  -CFLAGS "-O2 -std=c++17 -ffunction-sections -DSOCSIM_SPAN_W=$(SPAN_W)u -DSOCSIM_RAM_BYTES=$(SOC_RAM_BYTES)u \
-	           $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract)" \
-	  -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
-	  --MAKEFLAGS "OPT_FAST=-O3 -march=native OPT_SLOW=-O1" --Mdir $(SOCSIM_DIR)/obj -o $(abspath $(SOCSIM)) \
-	  >$(SOCSIM_DIR)/verilator.log 2>&1 || { tail -40 $(SOCSIM_DIR)/verilator.log; exit 1; }
+	$(SOCSIM_CMD) >$(SOCSIM_DIR)/verilator.log 2>&1 || { tail -40 $(SOCSIM_DIR)/verilator.log; exit 1; }
 
 .PHONY: socsim run-soc soc-fw soc-test-deps bench-soc
 socsim: $(SOCSIM)
@@ -46,8 +52,13 @@ soc-fw:
 
 # What tests/soc/*.sh need: socsim and the soc test programs (tests/soc/tests.mk); the suites
 # comparing with co-simulation also use make test's QEMU builds. make test builds them too.
+# landscape fits the 192 KiB only without the wireframe (firmware.mk's fw-size table): its test
+# build comes from a tree of its own built with FW_WITH_WIREFRAME=0 (objects are per tree).
+SOC_NOWIRE_BUILD := $(BUILD)/soc-nowire
 soc-test-deps: $(SOCSIM)
 	+@$(SOC_FW_MAKE) -f Makefile -f tests/soc/tests.mk soc-test-elfs
+	+@$(SOC_FW_MAKE) BUILD=$(SOC_NOWIRE_BUILD) FW_DEFS=-DFW_WITH_WIREFRAME=0 -f Makefile -f tests/soc/tests.mk \
+	  $(SOC_NOWIRE_BUILD)/fw-test-soc/landscape-2f.elf
 test-quick: soc-test-deps
 
 # The benchmark builds (firmware.mk's FW_BENCH_FRAMES frames of every scene) on socsim.
