@@ -32,10 +32,10 @@ SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_
 SOCSIM_CMD = $(VERILATOR) --cc --exe --build -j 2 -O3 --x-assign fast --x-initial fast \
   --top-module soc_top -GRAM_BYTES=$(SOC_RAM_BYTES) -GSPAN_W=$(SPAN_W) \
   $(SOC_VFLAGS) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) \
-  -CFLAGS "-O2 -std=c++17 -ffunction-sections -DSOCSIM_SPAN_W=$(SPAN_W)u -DSOCSIM_RAM_BYTES=$(SOC_RAM_BYTES)u \
+  -CFLAGS "-O2 -march=native -std=c++17 -ffunction-sections -DSOCSIM_SPAN_W=$(SPAN_W)u -DSOCSIM_RAM_BYTES=$(SOC_RAM_BYTES)u \
            $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract)" \
   -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
-  --MAKEFLAGS "OPT_FAST=-O3 -march=native OPT_SLOW=-O1" --Mdir $(SOCSIM_DIR)/obj -o $(abspath $(SOCSIM))
+  --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1" --Mdir $(SOCSIM_DIR)/obj -o $(abspath $(SOCSIM))
 
 $(SOCSIM_DIR)/cmd.txt: fw-force
 	$(call fw_flags_file,$@,$(SOCSIM_CMD))
