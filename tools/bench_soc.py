@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
-"""bench_soc.py — `make bench-soc`: each scene's benchmark build (firmware.mk's FW_BENCH_FRAMES
-frames, FW_PLATFORM=soc) on socsim, the whole SoC at 50 MHz, as one Markdown table.
+"""bench_soc.py — `make bench-soc`: benchmark builds (firmware.mk's FW_BENCH_FRAMES frames,
+FW_PLATFORM=soc) on socsim, the whole SoC at 50 MHz, as one Markdown table.
+
+usage: bench_soc.py --socsim SOCSIM --out DIR SCENE=ELF...
 
 Per scene, averaged over the frames after the first (frame 0 carries the boot: banner, scene set-up):
   instr/frame     the firmware's "fw instr" (minstret over the frame's work, DONE_SEQ polls excluded)
@@ -40,7 +42,7 @@ def run_scene(socsim, elf, out_dir):
     frames_dir = os.path.join(out_dir, "frames")
     os.makedirs(frames_dir, exist_ok=True)
     t0 = time.monotonic()
-    p = subprocess.run([socsim, "--fw", elf, "--frames", frames_dir, "--no-model-check",
+    p = subprocess.run([socsim, "--fw", elf, "--frames", frames_dir,
                         "--uart-log", os.path.join(out_dir, "uart.log"),
                         "--summary", os.path.join(out_dir, "summary")],
                        capture_output=True, text=True)
@@ -64,14 +66,14 @@ def run_scene(socsim, elf, out_dir):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--socsim", required=True)
-    ap.add_argument("--dir", required=True, help="folder of the soc benchmark ELFs (<scene>.elf)")
     ap.add_argument("--out", required=True)
-    ap.add_argument("scenes", nargs="+")
+    ap.add_argument("runs", nargs="+", metavar="SCENE=ELF")
     a = ap.parse_args()
 
     rows, total_cycles, total_wall = [], 0, 0.0
-    for scene in a.scenes:
-        fw, sim, speed, wall = run_scene(a.socsim, os.path.join(a.dir, scene + ".elf"), os.path.join(a.out, scene))
+    for run in a.runs:
+        scene, elf = run.split("=", 1)
+        fw, sim, speed, wall = run_scene(a.socsim, elf, os.path.join(a.out, scene))
         # firmware frame numbers count the frames drawn; socsim's the frames captured: the same
         # sequence when no frame is lost (benchmark builds lose none).
         keys = sorted(k for k in fw if k >= 1 and k in sim)
