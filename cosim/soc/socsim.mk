@@ -50,6 +50,10 @@ socsim: $(SOCSIM)
 soc-fw:
 	+@$(SOC_FW_MAKE) SCENE=$(SCENE) FRAMES=$(FRAMES) FW_BACKEND=$(FW_BACKEND) $(SOC_FW_ELF)
 
+run-soc: $(SOCSIM) soc-fw
+	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
+	$(SOCSIM) --fw $(SOC_FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log
+
 # What tests/soc/*.sh need: socsim and the soc test programs (tests/soc/tests.mk); the suites
 # comparing with co-simulation also use make test's QEMU builds. make test builds them too.
 # landscape fits the 192 KiB only without the wireframe (firmware.mk's fw-size table): its test
