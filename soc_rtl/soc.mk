@@ -60,4 +60,4 @@ $(SOC_SIM): $(SOC_VENV) $(RTL_FILES) $(RTL_V) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LI
 	  >$(dir $@)verilator.log 2>&1 || { tail -40 $(dir $@)verilator.log; exit 1; }
 
 soc-smoke: $(SOC_SIM) $(SOC_SMOKE_HEX)
-	@SOC_SIM=$(SOC_SIM) SOC_SMOKE_HEX=$(SOC_SMOKE_HEX) bash tests/soc/smoke.sh
+	@BUILD=$(BUILD) SOC_SIM=$(SOC_SIM) SOC_SMOKE_HEX=$(SOC_SMOKE_HEX) bash tests/soc/smoke.sh
