@@ -97,7 +97,7 @@ struct Op {
     bool refuse = false;           // a partial write: expect err / SLVERR and no native access
     bool known = false;            // a read whose value the model knows
     uint32_t expect = 0;
-    bool abort = false;            // Wishbone: the master abandons this read after one clock
+    bool abort = false;            // Wishbone: the master abandons this request after one clock
     int aw_delay = 0, w_delay = 0; // AXI: clocks before the channel's valid rises
     uint64_t pushed = 0;
     // progress, filled in by the monitors
@@ -193,6 +193,10 @@ static std::deque<Op *> native_reads;      // native reads waiting for bus_rvali
 static bool prev_bvalid_stall = false, prev_rvalid_stall = false;
 static uint32_t prev_bresp = 0, prev_rdata = 0, prev_rresp = 0;
 static long completed[2] = {0, 0}, refused[2] = {0, 0};
+// Coverage of the situations the slaves must handle; each must have happened, or the test says so.
+static long cov_wb_back_to_back = 0, cov_wb_abort = 0, cov_wb_cyc_gap = 0, cov_w_first = 0, cov_aw_first = 0,
+            cov_aw_w_same = 0, cov_b_stall = 0, cov_r_stall = 0, cov_rw_same_clock = 0;
+static uint64_t batch_pixels = 0;
 static int pending_w[GPU_APERTURE_BYTES / 4], pending_r[GPU_APERTURE_BYTES / 4];
 
 static void complete(Op *op)
@@ -295,6 +299,12 @@ static void monitor_native()
             return;
         }
     }
+    if (proto == AXI) {  // the other direction also held and waiting: the arbiter chose
+        Op *w = wq.empty() ? nullptr : wq.front(), *r = rq.empty() ? nullptr : rq.front();
+        const bool w_waits = w && w != op && w->aw_done && w->w_done && w->native == 0 && !top->s_axi_bvalid;
+        const bool r_waits = r && r != op && r->a_done && r->native == 0;
+        cov_rw_same_clock += we ? r_waits : w_waits;
+    }
     op->native++;
     if (op->refuse) fail(true, "partial write 0x%05x (strobes %x) reached the GPU", op->addr, op->strb);
     if (we != op->we || addr != op->addr || (we && top->mon_wdata != op->data)) {
@@ -326,6 +336,7 @@ static void wishbone_clock()
         complete(op);
         wb_cur = nullptr;
         if (!queue_wb.empty() && chance(0.4)) {  // next request straight away: stb stays high
+            cov_wb_back_to_back++;
             wb_cur = queue_wb.front();
             queue_wb.pop_front();
             wb_age = 0;
@@ -340,7 +351,7 @@ static void wishbone_clock()
             Op *op = wb_cur;
             wb_cur = nullptr;
             if (op->native > 1) fail(true, "abandoned request made %d native accesses", op->native);
-            op->abort = true;
+            cov_wb_abort++;
             complete(op);
             wb_gap = 1 + stall();
             wb_gap_cyc = chance(0.5);
@@ -353,6 +364,7 @@ static void wishbone_clock()
         return;
     }
     if (wb_gap > 0) {
+        cov_wb_cyc_gap += top->wb_cyc;
         wb_gap--;
         return;
     }
@@ -414,13 +426,20 @@ static void axi_clock()
         complete(op);
     }
     prev_bvalid_stall = bvalid && !top->s_axi_bready;
+    cov_b_stall += prev_bvalid_stall;
+    cov_r_stall += rvalid && !top->s_axi_rready;
+
     prev_bresp = top->s_axi_bresp;
     prev_rvalid_stall = rvalid && !top->s_axi_rready;
     prev_rdata = top->s_axi_rdata;
     prev_rresp = top->s_axi_rresp;
     // AW, W, AR handshakes; then the next valid of each channel, after its op's stall.
-    if (aw_cur && top->s_axi_awready) { aw_cur->aw_done = true; aw_cur = nullptr; }
-    if (w_cur && top->s_axi_wready) { w_cur->w_done = true; w_cur = nullptr; }
+    const bool aw_hs = aw_cur && top->s_axi_awready, w_hs = w_cur && top->s_axi_wready;
+    if (aw_hs && w_hs && aw_cur == w_cur) cov_aw_w_same++;
+    else if (aw_hs && !aw_cur->w_done) cov_aw_first++;
+    else if (w_hs && !w_cur->aw_done) cov_w_first++;
+    if (aw_hs) { aw_cur->aw_done = true; aw_cur = nullptr; }
+    if (w_hs) { w_cur->w_done = true; w_cur = nullptr; }
     if (ar_cur && top->s_axi_arready) { ar_cur->a_done = true; ar_cur = nullptr; }
     if (!aw_cur) aw_cur = next_for(wq, &Op::aw_done, &Op::aw_delay);
     if (!w_cur) w_cur = next_for(wq, &Op::w_done, &Op::w_delay);
@@ -572,6 +591,7 @@ static void batch()
         }
     }
     const Expect e = rasterize(v[0], v[1], v[2]);
+    batch_pixels += e.pixels;
     check_read(GPU_REG_ERRORS, 0, "ERRORS");
     check_read(GPU_REG_PERF_TRIS_IN, 1, "PERF_TRIS_IN");
     check_read(GPU_REG_PERF_TRIS_DRAWN, e.drawn, "PERF_TRIS_DRAWN");
@@ -599,7 +619,10 @@ static void random_traffic(long n)
     while (made < n || outstanding()) {
         if (!next && made < n && chance(0.8)) {
             next = random_op();
-            next->abort = proto == WB && !next->we && chance(0.03);
+            // Wishbone masters may abandon a request: reads, and writes whose effect the model does
+            // not need (refused, or to addresses that read back 0 or a constant).
+            next->abort = proto == WB && (!next->we || next->refuse || Model::rw_mask(next->addr) == 0) &&
+                          chance(0.03);
             made++;
         }
         if (next && push(next)) {
@@ -624,7 +647,7 @@ int main(int argc, char **argv)
     rng.seed(seed);
     top = new Vbus_slaves_top;
     long per_proto_batches[2] = {0, 0};
-    const int rounds = 4;
+    const int rounds = 8;  // batches per protocol
     for (Proto p : {WB, AXI}) {
         proto = p;
         reset_all();
@@ -637,6 +660,16 @@ int main(int argc, char **argv)
         per_proto_batches[p] = batches - before;
     }
     delete top;
+    std::printf("bus-slaves coverage: wishbone back-to-back %ld, cyc held between %ld, abandoned %ld; axi AW first %ld, "
+                "W first %ld, together %ld, B stalled %ld, R stalled %ld, read and write waiting together %ld; "
+                "%llu pixels drawn\n",
+                cov_wb_back_to_back, cov_wb_cyc_gap, cov_wb_abort, cov_aw_first, cov_w_first, cov_aw_w_same,
+                cov_b_stall, cov_r_stall, cov_rw_same_clock, (unsigned long long)batch_pixels);
+    for (long c : {cov_wb_back_to_back, cov_wb_cyc_gap, cov_wb_abort, cov_aw_first, cov_w_first, cov_aw_w_same,
+                   cov_b_stall, cov_r_stall, cov_rw_same_clock}) {
+        if (c == 0) fail(false, "a situation of the coverage line never happened");
+    }
+    if (batch_pixels == 0) fail(false, "no batch drew a pixel");
     std::printf("bus-slaves: wishbone %ld accesses (%ld refused, %ld batches), axi4-lite %ld accesses "
                 "(%ld refused, %ld batches), %llu clocks, seed %llu, %ld protocol errors, %ld failures\n",
                 completed[WB], refused[WB], per_proto_batches[WB], completed[AXI], refused[AXI],
