@@ -7,9 +7,9 @@ set -euo pipefail
 dir="$BUILD/tests/bus-slaves"
 mkdir -p "$dir"
 dir="$(cd "$dir" && pwd)"
-verilator --cc --exe --build -j 2 --assert --x-assign fast --x-initial fast --top-module bus_slaves_top \
+verilator --cc --exe --build -j 2 --output-split 20000 --assert --x-assign fast --x-initial fast --top-module bus_slaves_top \
     -f gpu_rtl/files.f tests/rtl/bus_slaves_top.v "$PWD/tests/rtl/bus_slaves_tb.cpp" \
-    -CFLAGS "-O1 -std=c++17 -I$PWD/contract" --MAKEFLAGS "OPT_FAST=-O1 OPT_SLOW=-O0" \
+    -CFLAGS "-O0 -std=c++17 -I$PWD/contract" --MAKEFLAGS "OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0" \
     --Mdir "$dir/obj" -o "$dir/bus_slaves_tb" \
     >"$dir/verilator.log" 2>&1 || { tail -30 "$dir/verilator.log"; exit 1; }
 "$dir/bus_slaves_tb" "${1:-20000}" "${2:-1}"
