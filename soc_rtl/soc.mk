@@ -41,7 +41,7 @@ RV_CC          ?= riscv64-unknown-elf-gcc
 SOC_RV_FLAGS   := -march=rv32im -misa-spec=2.2 -mabi=ilp32 -mcmodel=medany
 SOC_SMOKE_SRC  := tests/soc/smoke_crt0.S tests/soc/smoke.c
 
-$(SOC_SMOKE_ELF): $(SOC_SMOKE_SRC) tests/soc/smoke.ld contract/soc_map.h
+$(SOC_SMOKE_ELF): $(SOC_SMOKE_SRC) tests/soc/smoke.ld contract/soc_map.h contract/gpu_regs.h
 	@mkdir -p $(dir $@)
 	$(RV_CC) $(SOC_RV_FLAGS) -Os -g -ffreestanding -nostdlib -nostartfiles -Wall -Wextra -Werror \
 	  -Icontract -T tests/soc/smoke.ld -Wl,--no-warn-rwx-segments $(SOC_SMOKE_SRC) -o $@

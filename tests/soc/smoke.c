@@ -2,12 +2,13 @@
  * contract/soc-memory-map.md says, without the firmware's BSP. Bare metal, no C library.
  *
  * Prints over the UART (the testbench checks the text): hello; SYS ID, CLK_HZ, RAM_BYTES and the
- * UART divider; then provokes and checks each kind of bus error (a load and a store to unmapped
- * I/O addresses, a cached line refill beyond the RAM, an instruction fetch from nowhere), a timer
+ * UART divider; the GPU's ID through its Wishbone slave; then provokes and checks each kind of bus error (a load and a store to unmapped
+ * I/O addresses, a cached line refill beyond the RAM, an instruction fetch from nowhere, a byte store to the GPU), a timer
  * interrupt, a received byte (the testbench answers "rx?" with 'Z'), and the LEDs; returns 0 (to
  * SYS EXIT) when all passed, 1 at the first failure. */
 #include <stdint.h>
 
+#include "gpu_regs.h"
 #include "soc_map.h"
 
 #define SOC_REG(base, off) (*(volatile uint32_t *)(uintptr_t)((base) + (off)))
@@ -167,6 +168,8 @@ static void store_unmapped(void) { SOC_REG(SOC_SYS_BASE + SOC_SYS_WINDOW_BYTES, 
 static void refill_beyond_ram(void) { sink = SOC_REG(SOC_RAM_BASE + SOC_RAM_DEFAULT_BYTES, 0); }
 #define SYS_HOLE 0x14u /* between LEDS and MTIME_LO */
 static void load_sys_hole(void) { sink = SOC_REG(SOC_SYS_BASE, SYS_HOLE); }
+/* The GPU takes whole words only: a byte store is refused (gpu_wb_slave). */
+static void gpu_byte_store(void) { *(volatile uint8_t *)(uintptr_t)(SOC_GPU_BASE + GPU_WIN_PALETTE) = 0x5Au; }
 
 int main(void)
 {
@@ -191,6 +194,13 @@ int main(void)
     if (SYS(EXIT) != 0) {
         return fail("EXIT reads 0", 1);
     }
+    uint32_t gpu_id = SOC_REG(SOC_GPU_BASE, GPU_REG_ID);
+    uart_puts("soc: gpu id ");
+    uart_hex(gpu_id);
+    uart_puts("\n");
+    if (gpu_id != GPU_ID_VALUE) {
+        return fail("GPU ID", gpu_id);
+    }
 
     /* Traps: the handler, then machine external (bus errors) and timer interrupts. */
     CSR_WRITE(mtvec, (uint32_t)(uintptr_t)&smoke_trap);
@@ -209,7 +219,8 @@ int main(void)
         return fail("refused loads read 0", sink);
     }
     /* An offset inside SYS that names no register is refused too. */
-    if (check_bus_error("SYS hole", load_sys_hole, SOC_SYS_BASE + SYS_HOLE, 0, 1)) {
+    if (check_bus_error("SYS hole", load_sys_hole, SOC_SYS_BASE + SYS_HOLE, 0, 1) ||
+        check_bus_error("GPU byte store", gpu_byte_store, SOC_GPU_BASE + GPU_WIN_PALETTE, SOC_SYS_BUS_ERR_WRITE_MASK, 1)) {
         return 1;
     }
 

@@ -14,13 +14,14 @@ grep -E '^[a-z_]+=' "$work/uart.txt" >"$work/summary.txt" || true
 cat "$work/uart.txt"
 expect_status 0 "soc_sim (its status is the SoC's exit code; 124: no exit in time)"
 expect_no_line '^soc: FAIL' "$work/uart.txt"
-for line in '^soc: hello$' '^soc: id 534f4330 clk 50000000 ram 196608 div 434$' \
+for line in '^soc: hello$' '^soc: id 534f4330 clk 50000000 ram 196608 div 434$' '^soc: gpu id 47505530$' \
             '^soc: load fault ok' '^soc: store fault ok' '^soc: refill fault ok \(addr 00030000, 8 refused\)' \
-            '^soc: SYS hole ok' '^soc: fetch fault ok' '^soc: timer ok$' '^soc: rx Z ok$' '^soc: done$'; do
+            '^soc: SYS hole ok' '^soc: GPU byte store ok' '^soc: fetch fault ok' '^soc: timer ok$' '^soc: rx Z ok$' '^soc: done$'; do
     expect_line "$line" "$work/uart.txt"
 done
 expect_eq "$(summary exit_valid "$work/summary.txt")" 1 "exit_valid"
 expect_eq "$(summary uart_framing_errors "$work/summary.txt")" 0 "UART framing errors seen by the testbench"
+[ "$(summary vga_frames "$work/summary.txt")" -ge 1 ] || fail "no VGA vertical sync from the GPU"
 [ "$(summary leds "$work/summary.txt")" = 0xa5 ] || fail "leds: $(summary leds "$work/summary.txt"), expected 0xa5"
 pass "soc smoke: $(grep -c ' ok' "$work/uart.txt") checks ok, exit 0 after $(summary cycles "$work/summary.txt") cycles" \
      "($(summary cycles_per_second "$work/summary.txt") cycles/s)"
