@@ -4,7 +4,8 @@
  * Prints over the UART (the testbench checks the text): hello; SYS ID, CLK_HZ, RAM_BYTES and the
  * UART divider; the GPU's ID through its Wishbone slave; then provokes and checks each kind of bus error (a load and a store to unmapped
  * I/O addresses, a cached line refill beyond the RAM, an instruction fetch from nowhere, a byte store to the GPU), a timer
- * interrupt, a received byte (the testbench answers "rx?" with 'Z'), and the LEDs; returns 0 (to
+ * interrupt, the UART's receiver (the testbench answers "rx?" with 'Z', "burst?" with 20 bytes
+ * for an overrun, "break?" with a frame whose stop bit is low), and the LEDs; returns 0 (to
  * SYS EXIT) when all passed, 1 at the first failure. */
 #include <stdint.h>
 
@@ -65,10 +66,16 @@ static void uart_dec(uint32_t v)
     }
 }
 
-void smoke_exit(uint32_t code)
+/* Waits until everything written has left the pin. */
+static void uart_flush(void)
 {
     while (!(UART(STATUS) & SOC_UART_STATUS_TX_IDLE_MASK)) {
     }
+}
+
+void smoke_exit(uint32_t code)
+{
+    uart_flush();
     SYS(EXIT) = code;
     for (;;) {
     }
@@ -260,6 +267,7 @@ int main(void)
 
     /* The UART's receiver: the testbench sends 'Z' after "rx?". */
     uart_puts("soc: rx?\n");
+    uart_flush(); /* the testbench answers once it has seen the prompt */
     uint64_t deadline = mtime() + 20u * 10u * div;   /* 20 character times */
     while (!(UART(STATUS) & SOC_UART_STATUS_RX_VALID_MASK)) {
         if (mtime() > deadline) {
@@ -277,6 +285,44 @@ int main(void)
         return fail("uart errors", UART(ERRORS));
     }
     uart_puts("soc: rx Z ok\n");
+
+    /* Overrun: 20 bytes arrive unread; the FIFO keeps the first SOC_UART_RX_FIFO_DEPTH. */
+    uart_puts("soc: burst?\n");
+    uart_flush(); /* the testbench answers once it has seen the prompt */
+    uint64_t until = mtime() + 30u * 10u * div;   /* the reply's 20 frames and some */
+    while (mtime() < until) {
+    }
+    uint32_t overruns = (UART(ERRORS) & SOC_UART_ERRORS_OVERRUN_MASK) >> SOC_UART_ERRORS_OVERRUN_LSB;
+    if (overruns != 20u - SOC_UART_RX_FIFO_DEPTH) {
+        return fail("rx overruns", UART(ERRORS));
+    }
+    for (uint32_t i = 0; i < SOC_UART_RX_FIFO_DEPTH; i++) {
+        d = UART(DATA);
+        if (d != (SOC_UART_DATA_VALID_MASK | ('A' + i))) {
+            return fail("rx FIFO order", d);
+        }
+    }
+    if (UART(STATUS) & SOC_UART_STATUS_RX_VALID_MASK) {
+        return fail("rx FIFO drained", UART(STATUS));
+    }
+    uart_puts("soc: rx overrun ok (");
+    uart_dec(overruns);
+    uart_puts(" dropped)\n");
+
+    /* Framing: a frame with a low stop bit is counted and dropped. */
+    uart_puts("soc: break?\n");
+    uart_flush(); /* the testbench answers once it has seen the prompt */
+    until = mtime() + 20u * 10u * div;
+    while (!(UART(ERRORS) & SOC_UART_ERRORS_FRAMING_MASK)) {
+        if (mtime() > until) {
+            return fail("framing error not counted", UART(ERRORS));
+        }
+    }
+    if ((UART(ERRORS) & SOC_UART_ERRORS_FRAMING_MASK) >> SOC_UART_ERRORS_FRAMING_LSB != 1u ||
+        (UART(STATUS) & SOC_UART_STATUS_RX_VALID_MASK)) {
+        return fail("framing error", UART(ERRORS));
+    }
+    uart_puts("soc: rx framing ok\n");
 
     SYS(LEDS) = 0xA5u;
     if (SYS(LEDS) != 0xA5u) {

@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # The SoC smoke test: tests/soc/smoke.c on the Verilated soc_top (tests/soc/soc_tb.cpp), RAM loaded
-# at run time. Checks the UART text decoded at the real baud rate, every "ok" line (bus errors of
-# each kind, timer, UART receive), no failure line, and SYS EXIT = 0. `make soc-smoke` builds both
-# and runs it; a suite gets SOC_SIM and SOC_SMOKE_HEX from the environment.
+# at run time. Checks the UART text decoded at the real baud rate, every "ok" line (registers, the
+# GPU's ID, bus errors of each kind, timer, UART receive, overrun and framing error), no failure
+# line, a VGA frame, the LEDs and SYS EXIT = 0. `make soc-smoke` builds both and runs it (with
+# SOC_SIM, SOC_SMOKE_HEX and BUILD set).
 source "$(dirname "$0")/../lib.sh"
 need SOC_SIM SOC_SMOKE_HEX
 need_file "$SOC_SIM" "$SOC_SMOKE_HEX"
 work=$(fresh_dir soc-smoke)
 
-run_to "$work/uart.txt" 120 "$SOC_SIM" +ram_init="$SOC_SMOKE_HEX" --max-cycles 20000000 --reply 'rx?\n=Z'
+run_to "$work/uart.txt" 120 "$SOC_SIM" +ram_init="$SOC_SMOKE_HEX" --max-cycles 20000000 --reply 'rx?\n=Z' \
+    --reply 'burst?\n=ABCDEFGHIJKLMNOPQRST' --reply 'break?\n=\f'
 # The summary (key=value) is on stderr, interleaved after the text: split it off.
 grep -E '^[a-z_]+=' "$work/uart.txt" >"$work/summary.txt" || true
 cat "$work/uart.txt"
@@ -16,7 +18,8 @@ expect_status 0 "soc_sim (its status is the SoC's exit code; 124: no exit in tim
 expect_no_line '^soc: FAIL' "$work/uart.txt"
 for line in '^soc: hello$' '^soc: id 534f4330 clk 50000000 ram 196608 div 434$' '^soc: gpu id 47505530$' \
             '^soc: load fault ok' '^soc: store fault ok' '^soc: refill fault ok \(addr 00030000, 8 refused\)' \
-            '^soc: SYS hole ok' '^soc: GPU byte store ok' '^soc: fetch fault ok' '^soc: timer ok$' '^soc: rx Z ok$' '^soc: done$'; do
+            '^soc: SYS hole ok' '^soc: GPU byte store ok' '^soc: fetch fault ok' '^soc: timer ok$' '^soc: rx Z ok$' \
+            '^soc: rx overrun ok \(4 dropped\)$' '^soc: rx framing ok$' '^soc: done$'; do
     expect_line "$line" "$work/uart.txt"
 done
 expect_eq "$(summary exit_valid "$work/summary.txt")" 1 "exit_valid"

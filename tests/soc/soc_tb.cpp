@@ -4,8 +4,8 @@
 //   soc_sim +ram_init=PROGRAM.hex [--max-cycles N] [--reply PROMPT=TEXT] [--quiet]
 //
 // +ram_init loads the RAM image (tools/elf_to_hex.py) at time 0 (soc_ram's plusarg). --reply: once
-// the received text ends with PROMPT (C escapes \n allowed), TEXT is sent to uart_rx, 8N1 at the
-// baud rate. The summary goes to stderr as key=value lines (exit_valid, exit_code, cycles,
+// the received text ends with PROMPT, TEXT is sent to uart_rx, 8N1 at the baud rate (\n is a
+// newline, \f a frame with a low stop bit); several --reply options may be given. The summary goes to stderr as key=value lines (exit_valid, exit_code, cycles,
 // wall_seconds, cycles_per_second, uart_framing_errors, leds, vga_frames: vertical syncs seen). Exit status: the SoC's exit code,
 // or 124 when --max-cycles (default 100 M) pass first.
 #include <chrono>
@@ -16,6 +16,8 @@
 #include <deque>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "Vsoc_top.h"
 #include "soc_map.h"
@@ -29,6 +31,9 @@ std::string unescape(const char *s)
     for (; *s; s++) {
         if (s[0] == '\\' && s[1] == 'n') {
             out += '\n';
+            s++;
+        } else if (s[0] == '\\' && s[1] == 'f') {
+            out += '\f';   // UartSender: a frame with a low stop bit
             s++;
         } else {
             out += *s;
@@ -79,7 +84,8 @@ struct UartDecoder {
     }
 };
 
-// Sends queued bytes as 8N1 frames with one idle bit between them.
+// Sends queued bytes as 8N1 frames with one idle bit between them; '\f' is sent as 0x55 with a low
+// stop bit (a framing error for the receiver).
 struct UartSender {
     double bit_clocks;
     std::deque<uint8_t> queue;
@@ -93,7 +99,8 @@ struct UartSender {
             if (queue.empty()) {
                 return true;
             }
-            frame = (1u << 10) | (1u << 9) | ((unsigned)queue.front() << 1);
+            bool bad_stop = queue.front() == '\f';
+            frame = (1u << 10) | (bad_stop ? 0u : 1u << 9) | ((bad_stop ? 0x55u : (unsigned)queue.front()) << 1);
             queue.pop_front();
             busy = true;
             start = cycle;
@@ -113,7 +120,7 @@ int main(int argc, char **argv)
 {
     Verilated::commandArgs(argc, argv);   // +ram_init=FILE reaches soc_ram
     uint64_t max_cycles = 100000000ull;
-    std::string prompt, reply;
+    std::vector<std::pair<std::string, std::string>> replies;   // prompt, text
     bool quiet = false;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--max-cycles") && i + 1 < argc) {
@@ -125,8 +132,7 @@ int main(int argc, char **argv)
                 fprintf(stderr, "soc_tb: --reply wants PROMPT=TEXT\n");
                 return 2;
             }
-            prompt = arg.substr(0, eq);
-            reply = arg.substr(eq + 1);
+            replies.emplace_back(arg.substr(0, eq), arg.substr(eq + 1));
         } else if (!strcmp(argv[i], "--quiet")) {
             quiet = true;
         } else if (argv[i][0] != '+') {
@@ -161,9 +167,11 @@ int main(int argc, char **argv)
                 putchar(c);
                 fflush(stdout);
             }
-            if (!prompt.empty() && text.size() >= prompt.size() &&
-                text.compare(text.size() - prompt.size(), prompt.size(), prompt) == 0) {
-                tx.queue.insert(tx.queue.end(), reply.begin(), reply.end());
+            for (const auto &[prompt, reply] : replies) {
+                if (!prompt.empty() && text.size() >= prompt.size() &&
+                    text.compare(text.size() - prompt.size(), prompt.size(), prompt) == 0) {
+                    tx.queue.insert(tx.queue.end(), reply.begin(), reply.end());
+                }
             }
         }
         top->uart_rx = tx.step(cycle);
