@@ -27,4 +27,4 @@ expect_eq "$(summary uart_framing_errors "$work/summary.txt")" 0 "UART framing e
 [ "$(summary vga_frames "$work/summary.txt")" -ge 1 ] || fail "no VGA vertical sync from the GPU"
 [ "$(summary leds "$work/summary.txt")" = 0xa5 ] || fail "leds: $(summary leds "$work/summary.txt"), expected 0xa5"
 pass "soc smoke: $(grep -c ' ok' "$work/uart.txt") checks ok, exit 0 after $(summary cycles "$work/summary.txt") cycles" \
-     "($(summary cycles_per_second "$work/summary.txt") cycles/s)"
+     "($(summary cycles_per_cpu_second "$work/summary.txt") cycles per CPU second)"

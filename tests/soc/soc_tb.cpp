@@ -5,13 +5,16 @@
 //
 // +ram_init loads the RAM image (tools/elf_to_hex.py) at time 0 (soc_ram's plusarg). --reply: once
 // the received text ends with PROMPT, TEXT is sent to uart_rx, 8N1 at the baud rate (\n is a
-// newline, \f a frame with a low stop bit); several --reply options may be given. The summary goes to stderr as key=value lines (exit_valid, exit_code, cycles,
-// wall_seconds, cycles_per_second, uart_framing_errors, leds, vga_frames: vertical syncs seen). Exit status: the SoC's exit code,
-// or 124 when --max-cycles (default 100 M) pass first.
+// newline, \f a frame with a low stop bit); several --reply options may be given. The summary
+// goes to stderr as key=value lines: exit_valid, exit_code, cycles, wall_seconds,
+// cycles_per_second, cpu_seconds, cycles_per_cpu_second, uart_framing_errors, leds, vga_frames
+// (vertical syncs seen). Exit status: the SoC's exit code, or 124 when --max-cycles (default
+// 100 M) pass first.
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <cstring>
 #include <deque>
 #include <memory>
@@ -153,6 +156,7 @@ int main(int argc, char **argv)
     top->eval();
 
     auto t0 = std::chrono::steady_clock::now();
+    std::clock_t c0 = std::clock();
     uint64_t cycle = 0, vga_frames = 0;
     bool vsync_n = true;
     for (; cycle < max_cycles && !top->exit_valid; cycle++) {
@@ -181,11 +185,13 @@ int main(int argc, char **argv)
         vsync_n = top->vga_vsync_n;
     }
     double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    double cpu = (double)(std::clock() - c0) / CLOCKS_PER_SEC;   // the rate on a shared machine
 
     fprintf(stderr, "exit_valid=%d\nexit_code=%d\ncycles=%llu\nwall_seconds=%.2f\ncycles_per_second=%.0f\n"
+            "cpu_seconds=%.2f\ncycles_per_cpu_second=%.0f\n"
             "uart_framing_errors=%u\nleds=0x%02x\nvga_frames=%llu\n",
             (int)top->exit_valid, (int)top->exit_code, (unsigned long long)cycle, wall,
-            wall > 0 ? cycle / wall : 0.0, rx.framing_errors, (unsigned)top->leds,
+            wall > 0 ? cycle / wall : 0.0, cpu, cpu > 0 ? cycle / cpu : 0.0, rx.framing_errors, (unsigned)top->leds,
             (unsigned long long)vga_frames);
     int status = top->exit_valid ? (int)top->exit_code : 124;
     top->final();
