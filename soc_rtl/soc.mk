@@ -13,7 +13,7 @@ SOC_LINT      := soc_rtl/lint.vlt
 # Everything under soc_top, in compilation order: the GPU's list, the core, the SoC's list.
 SOC_VFLAGS     = $(RTL_LINT) $(SOC_LINT) -f $(RTL_FILES) $(SOC_CPU_V) -f $(SOC_FILES)
 
-$(SOC_VENV): tools/requirements.txt tools/setup.sh
+$(SOC_VENV): tools/requirements.txt
 	@bash tools/setup.sh
 	@touch $@
 

@@ -16,7 +16,7 @@ ram_bytes=$(sed -n 's/^#define SOC_RAM_DEFAULT_BYTES *\(0x[0-9A-Fa-f]*\)u.*/\1/p
 echo "synth-soc: yosys synth_ecp5 on soc_top (takes minutes) ..." >&2
 start=$SECONDS
 yosys -q -l "$out/ecp5.log" 2>"$out/ecp5.warnings" -p "read_verilog -sv $rtl; \
-    synth_ecp5 -top soc_top; tee -q -o $out/ecp5_stat.txt stat" >/dev/null
+    synth_ecp5 -top soc_top; tee -q -o $out/ecp5_stat.txt stat; tee -q -o $out/ebr_cells.txt select -list t:DP16KD" >/dev/null
 secs=$((SECONDS - start))
 
 count() { awk -v pat="$1" '$1 ~ pat && $2 ~ /^[0-9]+$/ { n += $2 } END { print n + 0 }' "$out/ecp5_stat.txt"; }
@@ -27,9 +27,12 @@ dpr=$(count '^TRELLIS_DPR16X4$')
 ebr=$(count '^DP16KD$')
 mult=$(count '^MULT18X18D$')
 
-# EBR per memory: memory_libmap's mapping lines name each memory and the cells it became; the
-# flattened cell names keep the memory's hierarchical name, so count DP16KD cells per name.
-per_mem=$(grep -oE 'mapping memory [^ ]+ via \$__ECP5_DP16KD_' "$out/ecp5.log" | awk '{print $3}' | sort -u || true)
+# EBR per memory: memory_libmap names each block it makes <memory>.<row>.<column>, so the DP16KD
+# cells (the pseudo-dual-port PDPW16KD ones included) grouped by <memory> are each memory's count.
+per_mem=$(sed -n 's:^soc_top/::p' "$out/ebr_cells.txt" | sed -E 's/\.[0-9]+\.[0-9]+$//' | sort | uniq -c)
+ram_ebr=$(echo "$per_mem" | awk '$2 == "u_ram.mem" { print $1 }')
+fb_ebr=$(echo "$per_mem" | awk '$2 ~ /^u_gpu\.u_framebuffer\./ { n += $1 } END { print n + 0 }')
+ram_want=$((ram_bytes / 2048))
 
 echo "| design | LUT4 | FF | CCU2C | LUT RAM (DPR16X4) | DP16KD (EBR) | MULT18X18D | yosys time |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|"
@@ -37,7 +40,8 @@ echo "| soc_top (ECP5, synth_ecp5) | $luts | $ffs | $ccu | $dpr | $ebr | $mult |
 echo
 echo "| memory | DP16KD |"
 echo "|---|---:|"
-for m in $per_mem; do
-    n=$(grep -cE "^ *cell .*DP16KD" /dev/null || true)
-    echo "| $m | $n |"
-done
+echo "$per_mem" | awk '{ printf "| %s | %d |\n", $2, $1 }'
+echo "| (framebuffers, both banks) | $fb_ebr |"
+[ "${ram_ebr:-0}" -eq "$ram_want" ] || { echo "synth-soc: the RAM took ${ram_ebr:-0} EBR, expected $ram_want (RAM_BYTES / 2 KiB)" >&2; exit 1; }
+echo
+echo "synth-soc: RAM $ram_ebr EBR = $ram_bytes bytes / 2 KiB, as expected" >&2
