@@ -6,11 +6,12 @@
 // from one request into the next or drop it between them; registered-feedback bursts (CTI/BTE) are
 // served as classic cycles (this slave has no CTI port).
 //   write: the native write is issued combinationally in the request's first cycle (gpu_regs takes
-//          writes with no wait state); wb_ack follows in the next cycle. 1 wait-free write per 2 clocks.
+//          writes with no wait state); wb_ack follows in the next cycle.
 //   read:  the native read is issued in the request's first cycle; wb_ack comes with bus_rvalid
 //          (gpu_regs: one cycle later), wb_dat_r = bus_rdata. wb_sel is ignored for reads.
 //   error: the contract allows aligned 32-bit words only. A write with wb_sel != 4'b1111 never
 //          reaches the GPU and is answered with wb_err in the next cycle.
+// Throughput: one access per 2 clocks (the classic handshake: request, then answer).
 // A master that drops wb_cyc (or wb_stb) before the answer abandons the request: the native access
 // may already have been made, its answer is swallowed, and the next request starts clean.
 // Address bits [16:2] select a word of the GPU's 128 KiB window; the byte address bits do not exist.

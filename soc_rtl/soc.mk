@@ -13,7 +13,7 @@ SOC_LINT      := soc_rtl/lint.vlt
 # Everything under soc_top, in compilation order: the GPU's list, the core, the SoC's list.
 SOC_VFLAGS     = $(RTL_LINT) $(SOC_LINT) -f $(RTL_FILES) $(SOC_CPU_V) -f $(SOC_FILES)
 
-$(SOC_VENV): tools/requirements.txt tools/setup.sh
+$(SOC_VENV): tools/requirements.txt
 	@bash tools/setup.sh
 	@touch $@
 
@@ -41,7 +41,7 @@ RV_CC          ?= riscv64-unknown-elf-gcc
 SOC_RV_FLAGS   := -march=rv32im -misa-spec=2.2 -mabi=ilp32 -mcmodel=medany
 SOC_SMOKE_SRC  := tests/soc/smoke_crt0.S tests/soc/smoke.c
 
-$(SOC_SMOKE_ELF): $(SOC_SMOKE_SRC) tests/soc/smoke.ld contract/soc_map.h
+$(SOC_SMOKE_ELF): $(SOC_SMOKE_SRC) tests/soc/smoke.ld contract/soc_map.h contract/gpu_regs.h
 	@mkdir -p $(dir $@)
 	$(RV_CC) $(SOC_RV_FLAGS) -Os -g -ffreestanding -nostdlib -nostartfiles -Wall -Wextra -Werror \
 	  -Icontract -T tests/soc/smoke.ld -Wl,--no-warn-rwx-segments $(SOC_SMOKE_SRC) -o $@
@@ -60,4 +60,4 @@ $(SOC_SIM): $(SOC_VENV) $(RTL_FILES) $(RTL_V) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LI
 	  >$(dir $@)verilator.log 2>&1 || { tail -40 $(dir $@)verilator.log; exit 1; }
 
 soc-smoke: $(SOC_SIM) $(SOC_SMOKE_HEX)
-	@SOC_SIM=$(SOC_SIM) SOC_SMOKE_HEX=$(SOC_SMOKE_HEX) bash tests/soc/smoke.sh
+	@BUILD=$(BUILD) SOC_SIM=$(SOC_SIM) SOC_SMOKE_HEX=$(SOC_SMOKE_HEX) bash tests/soc/smoke.sh
