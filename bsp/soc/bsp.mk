@@ -22,8 +22,7 @@ FW_BSP_LDFLAGS = --crt0=hosted -Wl,--no-warn-rwx-segments -Wl,--defsym=__ram_siz
 # After linking: <elf>.hex (RAM_INIT, one 32-bit word per line), or a build error with the sizes
 # when the image, its bss and the stack do not fit the RAM (the ELF is then deleted).
 FW_POSTLINK   = $(or $(PYTHON),python3) bsp/soc/postlink.py --ram-bytes $(SOC_RAM_BYTES) \
-                --size $(patsubst %gcc,%size,$(RV_CC)) --nm $(patsubst %gcc,%nm,$(RV_CC)) \
-                --objcopy $(patsubst %gcc,%objcopy,$(RV_CC))
+                --size $(patsubst %gcc,%size,$(RV_CC)) --nm $(patsubst %gcc,%nm,$(RV_CC))
 # One DONE_SEQ poll is an uncached bus read plus the loop: 9.00 cycles, measured on socsim by
 # tests/soc/poll_cycles.c (suite soc-poll-cycles), so 5,000,000 polls are 0.9 s at 50 MHz.
 ifeq ($(strip $(FW_MAX_POLLS)),)

@@ -1,20 +1,19 @@
 #!/usr/bin/env python3
 """postlink.py — FW_POSTLINK of the soc platform (bsp/soc/bsp.mk): ELF -> ELF.hex for the RTL's
-RAM_INIT ($readmemh: one 32-bit little-endian word per line, in hex, from address 0), after
-checking that the program fits the on-chip RAM.
+RAM_INIT ($readmemh: one 32-bit little-endian word per line, from address 0; written by
+tools/elf_to_hex.py), after checking that the program, its bss and its stack fit the on-chip RAM.
 
 The linker script (linker/soc.ld) links into the whole address range on purpose; this is where an
 image too large is refused, with the numbers: text (code and read-only data), data, bss, the stack
 and the RAM. On refusal the ELF is deleted, so that make does not take it as built, and the status
 is 1.
 
-usage: postlink.py --ram-bytes N [--size S] [--nm N] [--objcopy O] FILE.elf
+usage: postlink.py --ram-bytes N [--size S] [--nm N] FILE.elf
 """
 import argparse
 import os
 import subprocess
 import sys
-import tempfile
 
 
 def symbols(nm, elf):
@@ -38,7 +37,6 @@ def main():
     p.add_argument("--ram-bytes", type=int, required=True)
     p.add_argument("--size", default="riscv64-unknown-elf-size")
     p.add_argument("--nm", default="riscv64-unknown-elf-nm")
-    p.add_argument("--objcopy", default="riscv64-unknown-elf-objcopy")
     p.add_argument("elf")
     a = p.parse_args()
 
@@ -59,20 +57,11 @@ def main():
             f"SOC_RAM_KIB or smaller capacities/scenes.\n")
         return 1
 
-    image_end = sym["__soc_image_end"] - ram_base
-    with tempfile.NamedTemporaryFile(suffix=".bin") as binf:
-        subprocess.run([a.objcopy, "-O", "binary", "--only-section=.init", "--only-section=.text",
-                        "--only-section=.data", "--only-section=.tdata", a.elf, binf.name], check=True)
-        image = open(binf.name, "rb").read()
-    if len(image) > image_end + 8:
-        sys.exit(f"postlink: the binary image ({len(image)} bytes) runs past __soc_image_end ({image_end})")
-    image += bytes((-len(image)) % 4)
-    words = [int.from_bytes(image[i:i + 4], "little") for i in range(0, len(image), 4)]
-    tmp = a.elf + ".hex.tmp"
-    with open(tmp, "w") as f:
-        f.write("".join(f"{w:08x}\n" for w in words))
-    os.replace(tmp, a.elf + ".hex")
-    print(f"postlink: {a.elf}.hex: {len(words)} words; RAM use {needed} of {a.ram_bytes} bytes "
+    # The image itself: tools/elf_to_hex.py, the SoC's one ELF -> RAM_INIT converter.
+    tool = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "elf_to_hex.py")
+    subprocess.run([sys.executable, tool, a.elf, a.elf + ".hex", "--ram-bytes", str(a.ram_bytes),
+                    "--base", str(ram_base)], check=True, stdout=subprocess.DEVNULL)
+    print(f"postlink: {a.elf}.hex: RAM use {needed} of {a.ram_bytes} bytes "
           f"(text {text}, data {data}, bss {bss}, stack {stack})")
     return 0
 
