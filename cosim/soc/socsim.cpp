@@ -19,7 +19,9 @@
 // captured, compared with the model's front buffer as it was at the swap, and written as
 // FRAMES_DIR/NNNN.png — the names and bytes `gpusim cosim` writes. The model's further writes wait
 // until that frame is compared, since the firmware may already draw (and, in the model, swap) the
-// next frame while the VGA still shows this one.
+// next frame while the VGA still shows this one. The read-only registers the firmware reads after
+// a batch (ERRORS, the PERF_* counters but the cycle and span counts, STATUS, ...) are compared
+// with the model's too (registers_model_checked in the summary).
 //
 // Keys: --keys-at N:TEXT starts sending TEXT on uart_rx when the GPU takes its Nth DOORBELL write
 // (the point where `gpusim cosim` types it); if bytes are still on the line when the firmware next
@@ -185,6 +187,7 @@ public:
 
     // DPI events (socsim_taps.sv), during an eval.
     void on_gpu_write(uint32_t offset, uint32_t value);
+    void on_gpu_read(uint32_t offset, uint32_t value);
     void on_gpu_swap(uint32_t frame_count);
     void on_bus_cycle(bool ibus, uint32_t word_addr, bool write);
     void on_uart_data_read();
@@ -235,6 +238,10 @@ private:
     std::vector<KeyWatch> watches_;
 
     uint32_t doorbells_ = 0, resets_ = 0, frames_ = 0, frames_checked_ = 0, keys_late_ = 0;
+    uint32_t last_tag_ = 0;       // the last DOORBELL value
+    bool batch_done_ = true;      // the firmware has read DONE_SEQ == last_tag_ since (or no batch yet)
+    uint64_t regs_checked_ = 0;   // register reads compared with the model
+    std::string reg_error_;       // the first register that differed
     uint64_t icache_refills_ = 0, dcache_refills_ = 0, uart_reads_ = 0;
     int firmware_status_ = -1;
 };
@@ -258,6 +265,8 @@ void SocRun::on_gpu_write(uint32_t offset, uint32_t value)
         return;
     }
     doorbells_++;
+    last_tag_ = value;
+    batch_done_ = false;
     if (ctrl_ & GPU_CTRL_SWAP_MASK) {
         swap_doorbell_cycle_ = cycles_;
     }
@@ -268,6 +277,35 @@ void SocRun::on_gpu_write(uint32_t offset, uint32_t value)
             w.sent = true;
             watches_.push_back(w);
         }
+    }
+}
+
+// A register the firmware reads, against the model's: only once the firmware has seen the last
+// batch done (the model finishes a batch at its doorbell, the RTL later) and while no model write
+// is held back, and never the implementation-specific counters (as ModelCheck::compare_registers).
+void SocRun::on_gpu_read(uint32_t offset, uint32_t value)
+{
+    if (offset == GPU_REG_DONE_SEQ && value == last_tag_) {
+        batch_done_ = true;
+    }
+    if (!opt_.check_model || !batch_done_ || !deferred_.empty() || !reg_error_.empty() ||
+        offset == GPU_REG_PERF_BUSY_CYCLES || offset == GPU_REG_PERF_SPANS_VISITED) {
+        return;
+    }
+    bool read_only = false;
+    for (int i = 0; i < kReadOnlyRegCount; i++) {
+        read_only = read_only || kReadOnlyRegs[i] == offset;
+    }
+    if (!read_only) {
+        return;
+    }
+    regs_checked_++;
+    const uint32_t model = gpu_model_read(model_.model(), offset);
+    if (model != value) {
+        char text[160];
+        std::snprintf(text, sizeof text, "register 0x%03X read by the firmware at cycle %llu: RTL 0x%08X, model 0x%08X",
+                      offset, static_cast<unsigned long long>(cycles_), value, model);
+        reg_error_ = text;
     }
 }
 
@@ -452,6 +490,7 @@ void SocRun::write_summary(const char *error)
                  static_cast<unsigned long long>(cycles_));
     std::fprintf(f, "cycles=%llu\ninstructions=%llu\nkeys_late=%u\n", static_cast<unsigned long long>(cycles_),
                  static_cast<unsigned long long>(instret()), keys_late_);
+    std::fprintf(f, "registers_model_checked=%llu\n", static_cast<unsigned long long>(regs_checked_));
     std::fprintf(f, "icache_refills=%llu\ndcache_refills=%llu\nuart_framing_errors=%u\n",
                  static_cast<unsigned long long>(icache_refills_), static_cast<unsigned long long>(dcache_refills_),
                  rx_.framing_errors());
@@ -530,6 +569,9 @@ int SocRun::run()
         if (monitor_.error[0] != '\0') {
             return fail("capture", "VGA timing: %s", monitor_.error);
         }
+        if (!reg_error_.empty()) {
+            return fail("model-mismatch", "RTL and golden model disagree: %s", reg_error_.c_str());
+        }
         if (top_->exit_valid) {
             firmware_status_ = top_->exit_code;
             // The last swap's frame may still be on its way to the pins (the firmware printed its
@@ -591,6 +633,13 @@ extern "C" void socsim_gpu_write(unsigned offset, unsigned value)
 {
     if (g_run != nullptr) {
         g_run->on_gpu_write(offset, value);
+    }
+}
+
+extern "C" void socsim_gpu_read(unsigned offset, unsigned value)
+{
+    if (g_run != nullptr) {
+        g_run->on_gpu_read(offset, value);
     }
 }
 

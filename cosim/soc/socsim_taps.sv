@@ -5,7 +5,8 @@
 // swap, a bus transaction start), so the cost per cycle is a few compares.
 //
 //   socsim_gpu_tap (in gpu_top):  every bus write the GPU takes (byte offset, data) — the golden
-//                                 model is fed the same writes — and each change of FRAME_COUNT (a
+//                                 model is fed the same writes —, every read's answer (compared
+//                                 with the model's registers), and each change of FRAME_COUNT (a
 //                                 buffer swap, after which the next VGA frame is captured).
 //   socsim_cpu_tap (in VexRiscv): the start of every Wishbone cycle of either bus (a fetch or load
 //                                 of a cached address starts a cache-line refill: the misses), every
@@ -19,15 +20,25 @@ module socsim_gpu_tap (
     input wire        bus_write,
     input wire [16:2] bus_addr,
     input wire [31:0] bus_wdata,
+    input wire [31:0] bus_rdata,    // valid with bus_rvalid, the cycle after the read request
+    input wire        bus_rvalid,
     input wire [31:0] frame_count   // gpu_top's FRAME_COUNT
 );
     import "DPI-C" function void socsim_gpu_write(input int unsigned offset, input int unsigned value);
+    import "DPI-C" function void socsim_gpu_read(input int unsigned offset, input int unsigned value);
     import "DPI-C" function void socsim_gpu_swap(input int unsigned frame_count);
 
     reg [31:0] frame_count_q = 32'd0;
+    reg [16:2] read_addr_q = 15'd0;   // the address of the read whose data comes next
     always @(posedge clk) begin
         if (bus_valid && bus_write) begin
             socsim_gpu_write({15'd0, bus_addr, 2'b00}, bus_wdata);
+        end
+        if (bus_rvalid) begin
+            socsim_gpu_read({15'd0, read_addr_q, 2'b00}, bus_rdata);
+        end
+        if (bus_valid && !bus_write) begin
+            read_addr_q <= bus_addr;
         end
         if (frame_count != frame_count_q) begin
             socsim_gpu_swap(frame_count);
@@ -80,7 +91,7 @@ endmodule
 
 bind gpu_top socsim_gpu_tap u_socsim_gpu_tap (
     .clk(clk), .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr),
-    .bus_wdata(bus_wdata), .frame_count(frame_count)
+    .bus_wdata(bus_wdata), .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid), .frame_count(frame_count)
 );
 
 bind VexRiscv socsim_cpu_tap u_socsim_cpu_tap (

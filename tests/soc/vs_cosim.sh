@@ -2,7 +2,7 @@
 # The SoC against co-simulation: every scene runs on socsim (the whole SoC: VexRiscv, caches,
 # Wishbone bus, RAM, UART, the GPU and its VGA pins) and on `gpusim cosim` (QEMU and the Verilated
 # GPU), with the same scripted keys at the same doorbell. Both must end with status 0 and check every
-# frame against the golden model; socsim's PNG files must be byte-identical to co-simulation's of the
+# frame (socsim: also the registers the firmware reads after each batch) against the golden model; socsim's PNG files must be byte-identical to co-simulation's of the
 # same names, and the keys must have arrived whole before the firmware read them (keys_late 0).
 #
 # The scenes that fit the SoC's 192 KiB (firmware.mk's `make fw-size`): tetra, cubes, and landscape
@@ -48,6 +48,8 @@ one_scene() {
     expect_eq "$(summary frames_model_checked "$work/$s.cosim.summary")" \
         "$(summary frames "$work/$s.cosim.summary")" "$s: co-simulated frames equal to the model"
     expect_eq "$(summary keys_late "$work/$s.soc.summary")" 0 "$s: keys still on the line when read"
+    [ "$(summary registers_model_checked "$work/$s.soc.summary")" -gt 0 ] ||
+        fail "$s: no register read compared with the model"
     for f in "$work/$s-soc"/*.png; do
         [ -f "$work/$s-cosim/$(basename "$f")" ] || fail "$s: co-simulation has no $(basename "$f")"
         cmp -s "$f" "$work/$s-cosim/$(basename "$f")" || fail "$s: $(basename "$f") differs from co-simulation"
