@@ -141,10 +141,13 @@ $(COSIM_C_LIB): $(HOST_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
+# SIM_CXX compiles the simulators' C++: clang's code of the Verilated model runs about 9 % faster
+# than GCC 12's (rtl-vs-model-seed1: 10.0 s of CPU against 10.9 s), for the same build time.
+SIM_CXX        ?= clang++-14
+
 # The co-simulator's C++ apart from the Verilated model's two neighbours (gpu_sim.cpp includes the
 # model's headers, main.cpp Verilator's): the same in every configuration, so compiled once for all
 # the simulators, with the code-generation flags Verilator's make gives its user files.
-COSIM_CXX      ?= g++
 COSIM_CXXFLAGS := -O2 -std=c++17 -faligned-new -fcf-protection=none
 COSIM_CPP_SIM  := cosim/gpu_sim.cpp cosim/main.cpp
 COSIM_CPP_LIB  := $(filter-out $(COSIM_CPP_SIM),$(COSIM_CPP))
@@ -153,7 +156,7 @@ COSIM_CXX_LIB  := $(BUILD)/host/libcosim_sim.a
 
 $(BUILD)/host/%.o: %.cpp
 	@mkdir -p $(dir $@)
-	$(COSIM_CXX) $(COSIM_CXXFLAGS) -MMD -MP $(HOST_INC) -c $< -o $@
+	$(SIM_CXX) $(COSIM_CXXFLAGS) -MMD -MP $(HOST_INC) -c $< -o $@
 
 $(COSIM_CXX_LIB): $(COSIM_CXX_OBJ)
 	@rm -f $@
@@ -172,7 +175,7 @@ define verilate
 	  --top-module gpu_top $(2) -f $(RTL_FILES) $(abspath $(COSIM_CPP_SIM)) \
 	  -CFLAGS "-O2 -std=c++17 $(addprefix -I$(CURDIR)/,$(patsubst -I%,%,$(HOST_INC)))" \
 	  -LDFLAGS "$(abspath $(COSIM_CXX_LIB) $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
-	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(dir $(1))obj -o $(abspath $(1)) \
+	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1 CXX=$(SIM_CXX) LINK=$(SIM_CXX)" --Mdir $(dir $(1))obj -o $(abspath $(1)) \
 	  >$(dir $(1))verilator.log 2>&1 || { tail -40 $(dir $(1))verilator.log; exit 1; }
 endef
 SIM_DEPS := $(RTL_FILES) $(RTL_V) contract/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) bsp/qemu_virt/platform.h $(COSIM_CXX_LIB) $(COSIM_C_LIB) $(GPU_MODEL_LIB)
