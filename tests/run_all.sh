@@ -13,10 +13,10 @@
 #   NAME     starts with its group: contract, rtl (RTL units and RTL against the model), model (the
 #            golden model), fw (firmware units and boot), raster (the GPU without firmware), fuzz,
 #            cosim (the harness), scene (whole system, firmware + GPU), bench (benchmark machinery).
-#   COST     about how many seconds the suite takes on an idle core of the reference machine (2
-#            cores); without it, 30. The longest start first, so that the lanes end together; the
-#            duration recorded by the last run ($BUILD/test-logs/durations) takes its place when
-#            there is one.
+#   COST     the suite's CPU seconds on the reference machine (2 cores; what its NAME.cpu file
+#            below says, rounded); without it, 30. The costliest start first, so that the lanes end
+#            together; the duration recorded by the last run ($BUILD/test-logs/durations) takes its
+#            place when there is one.
 #   COMMAND  runs from the repository root, stdin /dev/null, stdout and stderr to
 #            $BUILD/test-logs/NAME.log, in a session of its own; status 0 = passed. Its CPU time
 #            (user and system seconds) goes to $BUILD/test-logs/NAME.cpu.
@@ -71,38 +71,38 @@ suite() { add_suite 0 "$@"; }
 suite_alone() { add_suite 1 "$@"; }
 
 set -f  # the globs in SUITE are matched by `selected`, not expanded against file names
-suite contract-generated      1 "$PYTHON" contract/gen_contract.py --check
-suite rtl-lint                1 make --no-print-directory lint
-suite rtl-div-unit           20 bash tests/rtl/div.sh
-suite fw-unit                 1 "$BUILD/tests/fw_unit"
-suite fw-unit-float           1 "$BUILD/tests/fw_unit_float"
-suite fw-no-gpu               1 bash tests/firmware/no_gpu.sh
-suite model-unit              2 "$BUILD/tests/model_unit"
-suite rtl-vs-model-seed1     50 "$GPUSIM" random --seed 1 --batches 40
-suite rtl-vs-model-seed2     30 "$GPUSIM" random --seed 2 --batches 40 --tris 200
-suite rtl-vs-model-100k      90 "$GPUSIM" random --seed 3 --batches 500 --tris 500 --swap-percent 10 --min-prims 100000
-suite rtl-vs-model-span1     10 "$BUILD/sim-w1/gpusim" random --seed 4 --batches 20 --tris 100
-suite rtl-vs-model-span4     10 "$BUILD/sim-w4/gpusim" random --seed 5 --batches 20 --tris 100
-suite rtl-vs-model-span16    10 "$BUILD/sim-w16/gpusim" random --seed 6 --batches 20 --tris 100
-suite rtl-vs-model-zbuf      30 "$BUILD/sim-z-w8/gpusim" random --seed 7 --batches 40 --tris 300
-suite raster-mesh-exact-once 10 bash tests/raster/mesh.sh
-suite raster-bad-input        1 bash tests/raster/bad_input.sh
-suite raster-list-roundtrip   1 bash tests/raster/roundtrip.sh
-suite fuzz-prim-list          5 bash tests/fuzz/run_fuzz.sh short prim_list
-suite fuzz-input              5 bash tests/fuzz/run_fuzz.sh short input
-suite fuzz-gpu-model          5 bash tests/fuzz/run_fuzz.sh short gpu_model
-suite fuzz-gpu-driver         5 bash tests/fuzz/run_fuzz.sh short gpu_driver
-suite cosim-end-to-end       20 bash tests/cosim/end_to_end.sh
-suite cosim-kill-qemu         5 bash tests/cosim/kill.sh qemu
-suite cosim-kill-harness      5 bash tests/cosim/kill.sh harness
-suite cosim-stop-signal       5 bash tests/cosim/kill.sh sigterm
-suite cosim-gpu-timeout       2 bash tests/cosim/gpu_timeout.sh
-suite scene-host-vs-cosim   120 bash tests/scenes/host_vs_cosim.sh
-suite scene-watchdog         10 bash tests/scenes/watchdog.sh
-suite scene-keys-burst       10 bash tests/scenes/keys_burst.sh
-suite scene-host-features    30 bash tests/scenes/host_features.sh
-suite scene-lean-build       10 bash tests/scenes/lean_build.sh
-suite bench-error-machinery   2 bash tests/bench/error_machinery.sh
+suite contract-generated       1 "$PYTHON" contract/gen_contract.py --check
+suite rtl-lint                 1 make --no-print-directory lint
+suite rtl-div-unit            36 bash tests/rtl/div.sh
+suite fw-unit                  1 "$BUILD/tests/fw_unit"
+suite fw-unit-float            1 "$BUILD/tests/fw_unit_float"
+suite fw-no-gpu                1 bash tests/firmware/no_gpu.sh
+suite model-unit               2 "$BUILD/tests/model_unit"
+suite rtl-vs-model-seed1      40 "$GPUSIM" random --seed 1 --batches 40
+suite rtl-vs-model-seed2      33 "$GPUSIM" random --seed 2 --batches 40 --tris 200
+suite rtl-vs-model-100k      105 "$GPUSIM" random --seed 3 --batches 500 --tris 500 --swap-percent 10 --min-prims 100000
+suite rtl-vs-model-span1      11 "$BUILD/sim-w1/gpusim" random --seed 4 --batches 20 --tris 100
+suite rtl-vs-model-span4      14 "$BUILD/sim-w4/gpusim" random --seed 5 --batches 20 --tris 100
+suite rtl-vs-model-span16     32 "$BUILD/sim-w16/gpusim" random --seed 6 --batches 20 --tris 100
+suite rtl-vs-model-zbuf       49 "$BUILD/sim-z-w8/gpusim" random --seed 7 --batches 40 --tris 300
+suite raster-mesh-exact-once  19 bash tests/raster/mesh.sh
+suite raster-bad-input         1 bash tests/raster/bad_input.sh
+suite raster-list-roundtrip    1 bash tests/raster/roundtrip.sh
+suite fuzz-prim-list           2 bash tests/fuzz/run_fuzz.sh short prim_list
+suite fuzz-input               4 bash tests/fuzz/run_fuzz.sh short input
+suite fuzz-gpu-model           6 bash tests/fuzz/run_fuzz.sh short gpu_model
+suite fuzz-gpu-driver          6 bash tests/fuzz/run_fuzz.sh short gpu_driver
+suite cosim-end-to-end        20 bash tests/cosim/end_to_end.sh
+suite cosim-kill-qemu          3 bash tests/cosim/kill.sh qemu
+suite cosim-kill-harness       1 bash tests/cosim/kill.sh harness
+suite cosim-stop-signal        4 bash tests/cosim/kill.sh sigterm
+suite cosim-gpu-timeout        1 bash tests/cosim/gpu_timeout.sh
+suite scene-host-vs-cosim     67 bash tests/scenes/host_vs_cosim.sh
+suite scene-watchdog          15 bash tests/scenes/watchdog.sh
+suite scene-keys-burst         9 bash tests/scenes/keys_burst.sh
+suite scene-host-features     13 bash tests/scenes/host_features.sh
+suite scene-lean-build        12 bash tests/scenes/lean_build.sh
+suite bench-error-machinery    1 bash tests/bench/error_machinery.sh
 set +f
 
 [ "$list_only" -eq 1 ] && exit 0
