@@ -37,7 +37,7 @@ RTL_LINT   := gpu_rtl/lint.vlt
 COSIM_CPP  := $(sort $(wildcard cosim/*.cpp))
 HOST_INC   := -Icosim -Igpu_model -Icontract -Ibsp/qemu_virt
 
-.PHONY: all setup run run-headless test test-deps test-quick test-list lint check-contract contract random-long raster \
+.PHONY: all setup run run-headless test test-quick test-list lint check-contract contract random-long raster \
         bench-gpu bench-error bench-error-run synth clean
 
 all: $(FW_ELF) $(GPUSIM)
@@ -54,9 +54,10 @@ run-headless: $(FW_ELF) $(GPUSIM)
 	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log
 
 # ---- test: every suite (or those matching SUITE, e.g. SUITE='rtl-* fw-unit'), with a summary line ----
-# `make test` builds what the suites need BUILD_JOBS recipes at a time (default: the cores), then
-# tests/run_all.sh runs the suites TEST_JOBS at a time (default: the cores). `make test-quick`
-# builds as the command line says (-j) and runs the suites.
+# `make test` builds what the suites need (every prerequisite of test-quick, wherever it is added)
+# BUILD_JOBS recipes at a time (default: the cores), then tests/run_all.sh runs the suites TEST_JOBS
+# at a time (default: the cores). `make test-quick` builds as the command line says (-j) and runs
+# the suites; TEST_BUILD_ONLY=1 only builds.
 SUITE ?= *
 BUILD_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 TEST_ENV = GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUITE='$(SUITE)' \
@@ -65,13 +66,11 @@ TEST_ENV = GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUI
 TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
              fw-test-deps $(PNG_DIFF)
 test: setup
-	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) VERILATOR_JOBS=1 test-deps
+	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) VERILATOR_JOBS=1 TEST_BUILD_ONLY=1 test-quick
 	@$(MAKE) --no-print-directory test-quick
 
-test-deps: $(TEST_DEPS)
-
 test-quick: $(TEST_DEPS)
-	@$(TEST_ENV) bash tests/run_all.sh
+	@$(if $(TEST_BUILD_ONLY),:,$(TEST_ENV) bash tests/run_all.sh)
 
 test-list:
 	@$(TEST_ENV) bash tests/run_all.sh --list
