@@ -63,14 +63,23 @@ run-headless: $(FW_ELF) $(GPUSIM)
 endif
 
 # ---- test: every suite (or those matching SUITE, e.g. SUITE='rtl-* fw-unit'), with a summary line ----
+# `make test` builds what the suites need (every prerequisite of test-quick, wherever it is added)
+# BUILD_JOBS recipes at a time (default: the cores), then tests/run_all.sh runs the suites TEST_JOBS
+# at a time (default: the cores). `make test-quick` builds as the command line says (-j) and runs
+# the suites; TEST_BUILD_ONLY=1 only builds.
 SUITE ?= *
-TEST_ENV = GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUITE='$(SUITE)'
+BUILD_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
+TEST_ENV = GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUITE='$(SUITE)' \
+           $(if $(TEST_JOBS),TEST_JOBS=$(TEST_JOBS))
+# The simulators first: the longest builds, started early so that the short ones fill the tail.
+TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
+             fw-test-deps $(PNG_DIFF)
 test: setup
+	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) VERILATOR_JOBS=1 TEST_BUILD_ONLY=1 test-quick
 	@$(MAKE) --no-print-directory test-quick
 
-test-quick: $(FW_ELF) $(BENCH_SIMS) $(ZBUF_SIM) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit fw-test-deps \
-            fuzz-build $(PNG_DIFF)
-	@$(TEST_ENV) bash tests/run_all.sh
+test-quick: $(TEST_DEPS)
+	@$(if $(TEST_BUILD_ONLY),:,$(TEST_ENV) bash tests/run_all.sh)
 
 test-list:
 	@$(TEST_ENV) bash tests/run_all.sh --list
@@ -143,18 +152,44 @@ $(COSIM_C_LIB): $(HOST_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
+# SIM_CXX compiles the simulators' C++: clang's code of the Verilated model runs about 9 % faster
+# than GCC 12's (rtl-vs-model-seed1: 10.0 s of CPU against 10.9 s), for the same build time.
+SIM_CXX        ?= clang++-14
+
+# The co-simulator's C++ apart from the Verilated model's two neighbours (gpu_sim.cpp includes the
+# model's headers, main.cpp Verilator's): the same in every configuration, so compiled once for all
+# the simulators, with the code-generation flags Verilator's make gives its user files.
+COSIM_CXXFLAGS := -O2 -std=c++17 -faligned-new -fcf-protection=none
+COSIM_CPP_SIM  := cosim/gpu_sim.cpp cosim/main.cpp
+COSIM_CPP_LIB  := $(filter-out $(COSIM_CPP_SIM),$(COSIM_CPP))
+COSIM_CXX_OBJ  := $(patsubst %.cpp,$(BUILD)/host/%.o,$(COSIM_CPP_LIB))
+COSIM_CXX_LIB  := $(BUILD)/host/libcosim_sim.a
+
+$(BUILD)/host/%.o: %.cpp
+	@mkdir -p $(dir $@)
+	$(SIM_CXX) $(COSIM_CXXFLAGS) -MMD -MP $(HOST_INC) -c $< -o $@
+
+$(COSIM_CXX_LIB): $(COSIM_CXX_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
 # One simulator per configuration: $(BUILD)/sim-w<SPAN_W>/gpusim, and sim-z-w<SPAN_W> with the depth
 # buffer built in. $(call verilate,OUTPUT,VERILATOR PARAMETER FLAGS)
+# VERILATOR_JOBS: compilers each build runs at once (its own make, outside this make's -j); `make
+# test` sets 1, since it builds the simulators side by side already. The old program is removed
+# first: Verilator's make relinks only for its own objects, not for a changed library.
+VERILATOR_JOBS ?= 2
 define verilate
 	@mkdir -p $(dir $(1))
-	$(VERILATOR) --cc --exe --build -j 2 --assert -O3 --x-assign fast --x-initial fast \
-	  --top-module gpu_top $(2) -f $(RTL_FILES) $(abspath $(COSIM_CPP)) \
+	@rm -f $(1)
+	$(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) --assert -O3 --x-assign fast --x-initial fast \
+	  --top-module gpu_top $(2) -f $(RTL_FILES) $(abspath $(COSIM_CPP_SIM)) \
 	  -CFLAGS "-O2 -std=c++17 $(addprefix -I$(CURDIR)/,$(patsubst -I%,%,$(HOST_INC)))" \
-	  -LDFLAGS "$(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
-	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(dir $(1))obj -o $(abspath $(1)) \
+	  -LDFLAGS "$(abspath $(COSIM_CXX_LIB) $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
+	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1 CXX=$(SIM_CXX) LINK=$(SIM_CXX)" --Mdir $(dir $(1))obj -o $(abspath $(1)) \
 	  >$(dir $(1))verilator.log 2>&1 || { tail -40 $(dir $(1))verilator.log; exit 1; }
 endef
-SIM_DEPS := $(RTL_FILES) $(RTL_V) contract/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) bsp/qemu_virt/platform.h $(COSIM_C_LIB) $(GPU_MODEL_LIB)
+SIM_DEPS := $(RTL_FILES) $(RTL_V) contract/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) bsp/qemu_virt/platform.h $(COSIM_CXX_LIB) $(COSIM_C_LIB) $(GPU_MODEL_LIB)
 
 $(BUILD)/sim-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$*)
@@ -165,4 +200,4 @@ $(BUILD)/sim-z-w%/gpusim: $(SIM_DEPS)
 clean:
 	rm -rf $(BUILD) $(OUT)
 
--include $(HOST_OBJ:.o=.d)
+-include $(HOST_OBJ:.o=.d) $(COSIM_CXX_OBJ:.o=.d)

@@ -15,10 +15,15 @@
 #   expect_no_line PATTERN FILE  fail if any line of FILE matches
 #   same_pngs DIR_A DIR_B WHAT   fail unless both hold the same PNG names with identical bytes
 #   summary KEY FILE             a field of a `gpusim cosim --summary` file (key=value lines)
-#   no_qemu_left                 fail if a co-simulation QEMU started from this checkout still runs
+#   no_qemu_left                 fail if a co-simulation QEMU started by this test still runs (other
+#                                suites run beside it: their QEMUs do not count)
 #   pass MESSAGE                 the summary line; the test ends with status 0
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+# This test's mark, inherited by everything it starts (the harness, and the harness's QEMU): how
+# no_qemu_left tells its own QEMUs from those of the suites running meanwhile.
+TEST_RUN_TAG="$BASHPID.${EPOCHREALTIME/./}"
+export TEST_RUN_TAG
 
 need() {
     local v
@@ -96,10 +101,13 @@ summary() {
 }
 
 no_qemu_left() {
-    # Only a QEMU started from this checkout counts: other checkouts may be co-simulating meanwhile.
+    # Only a QEMU that carries this test's TEST_RUN_TAG in its environment counts: other suites and
+    # other checkouts may be co-simulating meanwhile.
     local pid
     for pid in $(pgrep -f "mem-path=/proc/self/fd" || true); do
-        [ "$(readlink "/proc/$pid/cwd" 2>/dev/null)" != "$PWD" ] || fail "a QEMU is still running (pid $pid)"
+        if tr '\0' '\n' <"/proc/$pid/environ" 2>/dev/null | grep -qxF "TEST_RUN_TAG=$TEST_RUN_TAG"; then
+            fail "a QEMU is still running (pid $pid)"
+        fi
     done
 }
 

@@ -1,26 +1,40 @@
 #!/usr/bin/env bash
 # The test suites, one line each, and the runner. `make test` calls it with GPUSIM, FW_ELF, BUILD,
-# PYTHON set (and SUITE when given); it prints one line per suite (the log's tail on failure) and
-# ends with "N passed, N failed".
+# PYTHON set (and SUITE when given); it prints one line per suite as each one ends (the log's tail
+# on failure) and ends with "N passed, N failed".
 #
 #   tests/run_all.sh               every suite
 #   SUITE='rtl-* fw-unit' ...      only the suites whose names match one of the globs
+#   TEST_JOBS=N ...                N suites at a time (default: the number of cores, `nproc`);
+#                                  TEST_JOBS=1: one after another, in the list's order
 #   tests/run_all.sh --list        the names, one per line (with SUITE: the selected ones)
 #
-# A suite's name starts with its group: contract, rtl (RTL units and RTL against the model), model
-# (the golden model), fw (firmware units and boot), raster (the GPU without firmware), fuzz, cosim
-# (the harness), scene (whole system, firmware + GPU), bench (benchmark machinery).
+# A suite's line:   suite NAME [COST] COMMAND...
+#   NAME     starts with its group: contract, rtl (RTL units and RTL against the model), model (the
+#            golden model), fw (firmware units and boot), raster (the GPU without firmware), fuzz,
+#            cosim (the harness), scene (whole system, firmware + GPU), bench (benchmark machinery).
+#   COST     the suite's CPU seconds on the reference machine (2 cores; what its NAME.cpu file
+#            below says, rounded); without it, 30. The costliest start first, so that the lanes end
+#            together; the duration recorded by the last run ($BUILD/test-logs/durations) takes its
+#            place when there is one.
+#   COMMAND  runs from the repository root, stdin /dev/null, stdout and stderr to
+#            $BUILD/test-logs/NAME.log, in a session of its own; status 0 = passed. Its CPU time
+#            (user and system seconds) goes to $BUILD/test-logs/NAME.cpu.
+# `suite_alone` instead of `suite`: nothing else runs beside this suite (one that needs every core,
+# or whose timing another suite would disturb); such suites run first, one at a time.
+#
+# Suites run side by side, so each keeps to its own files: tests/lib.sh's fresh_dir NAME gives
+# $BUILD/tests-run/NAME, and no_qemu_left counts only the QEMUs the calling suite started.
 set -u
 cd "$(dirname "$0")/.."
 : "${GPUSIM:?}" "${FW_ELF:?}" "${BUILD:?}" "${PYTHON:=python3}" "${SUITE:=*}"
+: "${TEST_JOBS:=$(nproc 2>/dev/null || echo 1)}"
 export GPUSIM FW_ELF BUILD PYTHON
+[[ "$TEST_JOBS" =~ ^[1-9][0-9]*$ ]] || { echo "TEST_JOBS=$TEST_JOBS: expected a number of suites (1 or more)"; exit 2; }
 list_only=0
 [ "${1:-}" = "--list" ] && list_only=1
 logs="$BUILD/test-logs"
 mkdir -p "$logs"
-passed=0
-failed=0
-selected=0
 
 selected() {
     local glob
@@ -31,62 +45,163 @@ selected() {
     return 1
 }
 
-suite() {
-    local name="$1"
-    shift
+# The selected suites, in the list's order: name, cost, alone (0/1), command (quoted for eval).
+names=()
+costs=()
+alone=()
+cmds=()
+add_suite() {
+    local solo="$1" name="$2" cost=30
+    shift 2
+    if [[ "$1" =~ ^[0-9]+$ ]]; then
+        cost=$1
+        shift
+    fi
     selected "$name" || return 0
-    selected=$((selected + 1))
     if [ "$list_only" -eq 1 ]; then
         echo "$name"
         return 0
     fi
-    local start=$SECONDS
-    if "$@" >"$logs/$name.log" 2>&1; then
+    names+=("$name")
+    costs+=("$cost")
+    alone+=("$solo")
+    cmds+=("$(printf '%q ' "$@")")
+}
+suite() { add_suite 0 "$@"; }
+suite_alone() { add_suite 1 "$@"; }
+
+set -f  # the globs in SUITE are matched by `selected`, not expanded against file names
+suite contract-generated       1 "$PYTHON" contract/gen_contract.py --check
+suite rtl-lint                 1 make --no-print-directory lint
+suite rtl-div-unit            36 bash tests/rtl/div.sh
+suite fw-unit                  1 "$BUILD/tests/fw_unit"
+suite fw-unit-float            1 "$BUILD/tests/fw_unit_float"
+suite fw-no-gpu                1 bash tests/firmware/no_gpu.sh
+suite model-unit               2 "$BUILD/tests/model_unit"
+suite rtl-vs-model-seed1      40 "$GPUSIM" random --seed 1 --batches 40
+suite rtl-vs-model-seed2      33 "$GPUSIM" random --seed 2 --batches 40 --tris 200
+suite rtl-vs-model-100k      105 "$GPUSIM" random --seed 3 --batches 500 --tris 500 --swap-percent 10 --min-prims 100000
+suite rtl-vs-model-span1      11 "$BUILD/sim-w1/gpusim" random --seed 4 --batches 20 --tris 100
+suite rtl-vs-model-span4      14 "$BUILD/sim-w4/gpusim" random --seed 5 --batches 20 --tris 100
+suite rtl-vs-model-span16     32 "$BUILD/sim-w16/gpusim" random --seed 6 --batches 20 --tris 100
+suite rtl-vs-model-zbuf       49 "$BUILD/sim-z-w8/gpusim" random --seed 7 --batches 40 --tris 300
+suite raster-mesh-exact-once  19 bash tests/raster/mesh.sh
+suite raster-bad-input         1 bash tests/raster/bad_input.sh
+suite raster-list-roundtrip    1 bash tests/raster/roundtrip.sh
+suite fuzz-prim-list           2 bash tests/fuzz/run_fuzz.sh short prim_list
+suite fuzz-input               4 bash tests/fuzz/run_fuzz.sh short input
+suite fuzz-gpu-model           6 bash tests/fuzz/run_fuzz.sh short gpu_model
+suite fuzz-gpu-driver          6 bash tests/fuzz/run_fuzz.sh short gpu_driver
+suite cosim-end-to-end        20 bash tests/cosim/end_to_end.sh
+suite cosim-kill-qemu          3 bash tests/cosim/kill.sh qemu
+suite cosim-kill-harness       1 bash tests/cosim/kill.sh harness
+suite cosim-stop-signal        4 bash tests/cosim/kill.sh sigterm
+suite cosim-gpu-timeout        1 bash tests/cosim/gpu_timeout.sh
+suite scene-host-vs-cosim     67 bash tests/scenes/host_vs_cosim.sh
+suite scene-watchdog          15 bash tests/scenes/watchdog.sh
+suite scene-keys-burst         9 bash tests/scenes/keys_burst.sh
+suite scene-host-features     13 bash tests/scenes/host_features.sh
+suite scene-lean-build        12 bash tests/scenes/lean_build.sh
+suite bench-error-machinery    1 bash tests/bench/error_machinery.sh
+set +f
+
+[ "$list_only" -eq 1 ] && exit 0
+count=${#names[@]}
+[ "$count" -gt 0 ] || { echo "no suite matches SUITE='$SUITE' (tests/run_all.sh --list names them)"; exit 2; }
+
+# The order: with one lane the list's; otherwise the suites to run alone first, then the longest
+# first (recorded duration, else cost), ties in the list's order.
+declare -A recorded=()
+if [ -f "$logs/durations" ]; then
+    while read -r n s; do
+        [[ "$s" =~ ^[0-9]+$ ]] && recorded[$n]=$s
+    done <"$logs/durations"
+fi
+if [ "$TEST_JOBS" -eq 1 ]; then
+    order=$(seq 0 $((count - 1)))
+else
+    order=$(for i in "${!names[@]}"; do
+                echo "${alone[$i]} ${recorded[${names[$i]}]:-${costs[$i]}} $i"
+            done | sort -k1,1nr -k2,2nr -k3,3n | cut -d' ' -f3)
+fi
+
+passed=0
+failed=0
+declare -A running=()  # pid -> suite index
+started=()             # suite index -> $SECONDS at its start
+took=()                # suite index -> seconds
+
+# Each suite in its own session (setsid): its processes can be told from the other suites', and
+# stopped together if the run is interrupted. `times` after the command: the CPU its processes took.
+start_suite() {
+    local i=$1 name=${names[$1]}
+    started[$i]=$SECONDS
+    rm -f "$logs/$name.cpu"
+    setsid -w bash -c "${cmds[$i]}"'
+rc=$?; times >"$0"; exit $rc' "$logs/$name.cpu" </dev/null >"$logs/$name.log" 2>&1 &
+    running[$!]=$i
+}
+
+# User + system seconds of a suite, from its .cpu file (the children's line of `times`).
+cpu_of() {
+    sed -n 2p "$logs/$1.cpu" 2>/dev/null | tr 'ms' '  ' | awk 'NF == 4 { printf "%.1f\n", 60 * $1 + $2 + 60 * $3 + $4 }'
+}
+
+# Waits for one running suite to end and prints its line.
+finish_one() {
+    local pid=0 rc i name
+    wait -n -p pid "${!running[@]}"
+    rc=$?
+    i=${running[$pid]}
+    unset "running[$pid]"
+    name=${names[$i]}
+    took[$i]=$((SECONDS - started[$i]))
+    if [ "$rc" -eq 0 ]; then
         passed=$((passed + 1))
-        printf 'PASS  %-26s %4ss  %s\n' "$name" $((SECONDS - start)) "$(tail -n 1 "$logs/$name.log")"
+        printf 'PASS  %-26s %4ss  %s\n' "$name" "${took[$i]}" "$(tail -n 1 "$logs/$name.log")"
     else
         failed=$((failed + 1))
-        printf 'FAIL  %-26s %4ss  (log: %s)\n' "$name" $((SECONDS - start)) "$logs/$name.log"
+        printf 'FAIL  %-26s %4ss  (log: %s)\n' "$name" "${took[$i]}" "$logs/$name.log"
         tail -n 15 "$logs/$name.log" | sed 's/^/      | /'
     fi
 }
 
-set -f  # the globs in SUITE are matched by `selected`, not expanded against file names
-suite contract-generated     "$PYTHON" contract/gen_contract.py --check
-suite rtl-lint               make --no-print-directory lint
-suite rtl-div-unit           bash tests/rtl/div.sh
-suite fw-unit                "$BUILD/tests/fw_unit"
-suite fw-unit-float          "$BUILD/tests/fw_unit_float"
-suite fw-no-gpu              bash tests/firmware/no_gpu.sh
-suite model-unit             "$BUILD/tests/model_unit"
-suite rtl-vs-model-seed1     "$GPUSIM" random --seed 1 --batches 40
-suite rtl-vs-model-seed2     "$GPUSIM" random --seed 2 --batches 40 --tris 200
-suite rtl-vs-model-100k      "$GPUSIM" random --seed 3 --batches 500 --tris 500 --swap-percent 10 --min-prims 100000
-suite rtl-vs-model-span1     "$BUILD/sim-w1/gpusim" random --seed 4 --batches 20 --tris 100
-suite rtl-vs-model-span4     "$BUILD/sim-w4/gpusim" random --seed 5 --batches 20 --tris 100
-suite rtl-vs-model-span16    "$BUILD/sim-w16/gpusim" random --seed 6 --batches 20 --tris 100
-suite rtl-vs-model-zbuf      "$BUILD/sim-z-w8/gpusim" random --seed 7 --batches 40 --tris 300
-suite raster-mesh-exact-once bash tests/raster/mesh.sh
-suite raster-bad-input       bash tests/raster/bad_input.sh
-suite raster-list-roundtrip  bash tests/raster/roundtrip.sh
-suite fuzz-prim-list         bash tests/fuzz/run_fuzz.sh short prim_list
-suite fuzz-input             bash tests/fuzz/run_fuzz.sh short input
-suite fuzz-gpu-model         bash tests/fuzz/run_fuzz.sh short gpu_model
-suite fuzz-gpu-driver        bash tests/fuzz/run_fuzz.sh short gpu_driver
-suite cosim-end-to-end       bash tests/cosim/end_to_end.sh
-suite cosim-kill-qemu        bash tests/cosim/kill.sh qemu
-suite cosim-kill-harness     bash tests/cosim/kill.sh harness
-suite cosim-stop-signal      bash tests/cosim/kill.sh sigterm
-suite cosim-gpu-timeout      bash tests/cosim/gpu_timeout.sh
-suite scene-host-vs-cosim    bash tests/scenes/host_vs_cosim.sh
-suite scene-watchdog         bash tests/scenes/watchdog.sh
-suite scene-keys-burst       bash tests/scenes/keys_burst.sh
-suite scene-host-features    bash tests/scenes/host_features.sh
-suite scene-lean-build       bash tests/scenes/lean_build.sh
-suite bench-error-machinery  bash tests/bench/error_machinery.sh
-set +f
+stop_all() {
+    local pid
+    for pid in "${!running[@]}"; do
+        # The suite's session, if setsid made it one (it did unless it had to fork: then only pid).
+        if [ "$(ps -o sid= -p "$pid" 2>/dev/null | tr -d ' ')" = "$pid" ]; then
+            pkill -TERM -s "$pid" 2>/dev/null
+        else
+            kill -TERM "$pid" 2>/dev/null
+        fi
+    done
+    echo "interrupted: $passed passed, $failed failed, ${#running[@]} stopped"
+    exit 130
+}
+trap stop_all INT TERM
 
-[ "$list_only" -eq 1 ] && exit 0
-[ "$selected" -gt 0 ] || { echo "no suite matches SUITE='$SUITE' (tests/run_all.sh --list names them)"; exit 2; }
+for i in $order; do
+    if [ "${alone[$i]}" -eq 1 ]; then
+        while [ ${#running[@]} -gt 0 ]; do finish_one; done
+        start_suite "$i"
+        finish_one
+        continue
+    fi
+    while [ ${#running[@]} -ge "$TEST_JOBS" ]; do finish_one; done
+    start_suite "$i"
+done
+while [ ${#running[@]} -gt 0 ]; do finish_one; done
+
+# Record the durations for the next run's order (the suites that did not run keep theirs).
+for i in "${!names[@]}"; do
+    recorded[${names[$i]}]=${took[$i]}
+done
+for n in "${!recorded[@]}"; do
+    echo "$n ${recorded[$n]}"
+done | sort >"$logs/durations.tmp" && mv "$logs/durations.tmp" "$logs/durations"
+
+cpu=$(for n in "${names[@]}"; do cpu_of "$n"; done | awk '{ t += $1 } END { printf "%.0f", t }')
+echo "suites: ${cpu} s of CPU in $SECONDS s, $TEST_JOBS at a time"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
