@@ -53,7 +53,7 @@ $(SOC_SMOKE_HEX): $(SOC_SMOKE_ELF) tools/elf_to_hex.py
 $(SOC_SIM): $(SOC_VENV) $(RTL_FILES) $(RTL_V) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) contract/gpu_regs.vh \
             contract/soc_map.vh contract/soc_map.h $(SOC_TB_CPP)
 	@mkdir -p $(dir $@)
-	$(VERILATOR) --cc --exe --build -j 2 -O3 --x-assign fast --x-initial fast \
+	$(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign fast --x-initial fast \
 	  --top-module soc_top $(SOC_VFLAGS) $(abspath $(SOC_TB_CPP)) \
 	  -CFLAGS "-O2 -std=c++17 -I$(CURDIR)/contract" \
 	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(dir $@)obj -o $(abspath $@) \
@@ -61,3 +61,6 @@ $(SOC_SIM): $(SOC_VENV) $(RTL_FILES) $(RTL_V) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LI
 
 soc-smoke: $(SOC_SIM) $(SOC_SMOKE_HEX)
 	@BUILD=$(BUILD) SOC_SIM=$(SOC_SIM) SOC_SMOKE_HEX=$(SOC_SMOKE_HEX) bash tests/soc/smoke.sh
+
+# make test's suite rtl-soc-smoke runs the smoke program: built in make test's build phase.
+test-quick: $(SOC_SIM) $(SOC_SMOKE_HEX)

@@ -12,7 +12,8 @@
 # A suite's line:   suite NAME [COST] COMMAND...
 #   NAME     starts with its group: contract, rtl (RTL units and RTL against the model), model (the
 #            golden model), fw (firmware units and boot), raster (the GPU without firmware), fuzz,
-#            cosim (the harness), scene (whole system, firmware + GPU), bench (benchmark machinery).
+#            cosim (the harness), scene (whole system, firmware + GPU), soc (the whole SoC in RTL:
+#            firmware on VexRiscv + GPU, socsim), bench (benchmark machinery).
 #   COST     the suite's CPU seconds on the reference machine (2 cores; what its NAME.cpu file
 #            below says, rounded); without it, 30. The costliest start first, so that the lanes end
 #            together; the duration recorded by the last run ($BUILD/test-logs/durations) takes its
@@ -74,9 +75,13 @@ set -f  # the globs in SUITE are matched by `selected`, not expanded against fil
 suite contract-generated       1 "$PYTHON" contract/gen_contract.py --check
 suite rtl-lint                 1 make --no-print-directory lint
 suite rtl-div-unit            36 bash tests/rtl/div.sh
+suite rtl-bus-slaves           8 bash tests/rtl/bus_slaves.sh
+suite rtl-soc-lint             3 make --no-print-directory lint-soc
+suite rtl-soc-smoke            6 make --no-print-directory soc-smoke
 suite fw-unit                  1 "$BUILD/tests/fw_unit"
 suite fw-unit-float            1 "$BUILD/tests/fw_unit_float"
 suite fw-no-gpu                1 bash tests/firmware/no_gpu.sh
+suite fw-fit                   5 bash tests/firmware/fit.sh
 suite model-unit               2 "$BUILD/tests/model_unit"
 suite rtl-vs-model-seed1      40 "$GPUSIM" random --seed 1 --batches 40
 suite rtl-vs-model-seed2      33 "$GPUSIM" random --seed 2 --batches 40 --tris 200
@@ -102,6 +107,12 @@ suite scene-watchdog          15 bash tests/scenes/watchdog.sh
 suite scene-keys-burst         9 bash tests/scenes/keys_burst.sh
 suite scene-host-features     13 bash tests/scenes/host_features.sh
 suite scene-lean-build        12 bash tests/scenes/lean_build.sh
+suite soc-vs-cosim            75 bash tests/soc/vs_cosim.sh
+suite soc-determinism         12 bash tests/soc/determinism.sh
+suite soc-watchdog             7 bash tests/soc/watchdog.sh
+suite soc-bus-error            1 bash tests/soc/bus_error.sh
+suite soc-too-big              1 bash tests/soc/too_big.sh
+suite soc-poll-cycles          1 bash tests/soc/poll_cycles.sh
 suite bench-error-machinery    1 bash tests/bench/error_machinery.sh
 set +f
 

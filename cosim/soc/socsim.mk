@@ -29,7 +29,7 @@ SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_
 
 # The Verilator command, recorded in $(SOCSIM_DIR)/cmd.txt (rewritten only when it changes) so that a
 # change of parameters or flags rebuilds, and an edit elsewhere in this file does not.
-SOCSIM_CMD = $(VERILATOR) --cc --exe --build -j 2 -O3 --x-assign fast --x-initial fast \
+SOCSIM_CMD = $(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign fast --x-initial fast \
   --top-module soc_top -GRAM_BYTES=$(SOC_RAM_BYTES) -GSPAN_W=$(SPAN_W) \
   $(SOC_VFLAGS) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) \
   -CFLAGS "-O2 -march=native -std=c++17 -ffunction-sections -DSOCSIM_SPAN_W=$(SPAN_W)u -DSOCSIM_RAM_BYTES=$(SOC_RAM_BYTES)u \
