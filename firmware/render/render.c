@@ -127,6 +127,7 @@ void render_frame_begin(struct render_frame *f)
     f->vert_count = 0;
     f->prim_count = 0;
     f->sorted_count = 0;
+    f->outline_count = 0;
     f->batch_stamp = 0;  /* every vertex made from now on starts with stamp 0 */
 }
 
@@ -257,19 +258,33 @@ static void render_emit_line(struct render_frame *f, const struct render_pass *p
                      (uint8_t)GPU_PRIM_KIND_TRI, key);
 }
 
-/* A convex polygon (front-facing, already projected): a fan of triangles, or its outline. */
+/* A convex polygon (front-facing, already projected): a fan of triangles, or its outline. With
+ * GPU lines the outline is the same fan as RENDER_PRIM_OUTLINE primitives, each with the edges that
+ * are the polygon's: triangle (0, k, k+1) has edge 0 (0 -> k) only when k = 1 and edge 2 (k+1 -> 0)
+ * only when k + 1 = n - 1, edge 1 always. Expanded in order, they are the polygon's edges 0 -> 1,
+ * 1 -> 2, ..., n-1 -> 0, in that order, all with the polygon's key. */
 static void render_emit_polygon(struct render_frame *f, const struct render_pass *pass,
                                 const uint32_t *idx, uint32_t n, uint8_t color, uint16_t key)
 {
-    if (FW_WITH_WIREFRAME && pass->wireframe) {
-        for (uint32_t k = 0; k < n; k++) {
-            render_emit_line(f, pass, idx[k], idx[(k + 1u) % n], color, key);
+    const bool wire = FW_WITH_WIREFRAME && pass->wireframe;
+
+    if (wire && !pass->gpu_lines) {
+        if (FW_WITH_LINE_EMULATION) {
+            for (uint32_t k = 0; k < n; k++) {
+                render_emit_line(f, pass, idx[k], idx[(k + 1u) % n], color, key);
+            }
         }
-    } else {
-        for (uint32_t k = 1; k + 1u < n; k++) {
-            render_emit_prim(f, idx[0], idx[k], idx[k + 1u], color, (uint8_t)GPU_PRIM_KIND_TRI,
-                             key);
+        return;  /* without emulation app.c keeps the wireframe off on such a GPU */
+    }
+    for (uint32_t k = 1; k + 1u < n; k++) {
+        uint8_t kind = (uint8_t)GPU_PRIM_KIND_TRI;
+
+        if (wire) {
+            kind = (uint8_t)(RENDER_PRIM_OUTLINE | 0x02u | ((k == 1u) ? 0x01u : 0u) |
+                             ((k + 2u == n) ? 0x04u : 0u));
+            f->outline_count += (f->prim_count < f->prim_cap) ? 1u : 0u;  /* else dropped */
         }
+        render_emit_prim(f, idx[0], idx[k], idx[k + 1u], color, kind, key);
     }
 }
 
