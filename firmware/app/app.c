@@ -381,6 +381,10 @@ static void app_print_event(const struct scene *s, const struct scene_event *ev)
     case SCENE_EVENT_BLOCK_TYPE:
         printf("%s: placing %s\n", name, block);
         break;
+    case SCENE_EVENT_MESH_FULL:
+        printf("error: %s: mesh storage full (%ld faces, %ld vertices): %ld chunk(s) not drawn "
+               "until edits make room\n", name, (long)ev->y, (long)ev->z, (long)ev->x);
+        break;
     default:
         break;
     }

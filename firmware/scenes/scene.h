@@ -95,6 +95,8 @@ enum scene_event_kind {
     SCENE_EVENT_PLACED,   /* a block of type `block` was placed at x, y, z */
     SCENE_EVENT_NO_TARGET,/* place/break with nothing under the crosshair */
     SCENE_EVENT_BLOCK_TYPE,
+    SCENE_EVENT_MESH_FULL,/* a rebuilt mesh found no room: x chunks not drawn (storage: y faces,
+                           * z vertices) — an error line */
 };
 
 struct scene_event {

@@ -109,6 +109,7 @@ void unit_srand(uint32_t seed);
     X(test_scene_sizes)               \
     X(test_scene_frames)              \
     X(test_scene_voxel_place_break)   \
+    X(test_scene_voxel_pool)          \
     X(test_gpu_native_words)          \
     X(test_gpu_init_checks)           \
     X(test_gpu_init_first_tag)        \
