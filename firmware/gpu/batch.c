@@ -32,7 +32,7 @@ static inline void batch_put_vertex(uint32_t *w, const struct proj_vertex *v)
 
 /* The vertex's slot in the current batch, writing it there first if the batch lacks it.
  * *nv counts the batch's vertices so far. */
-static inline uint32_t batch_vertex(struct proj_vertex *v, uint16_t stamp, uint32_t *vtx,
+static inline uint32_t batch_vertex(struct proj_vertex *v, uint8_t stamp, uint32_t *vtx,
                                     uint32_t *nv)
 {
     if (v->batch_stamp != stamp) {
@@ -94,7 +94,7 @@ static inline uint32_t batch_put_outline(uint32_t *pw, const uint32_t s[3], uint
 void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_cap,
                 uint32_t tri_cap, struct batch_words *out)
 {
-    uint16_t stamp;
+    uint8_t stamp;
     const uint32_t first = cur->next;
     uint32_t i = first;
     uint32_t nv = 0;  /* locals, not out->..., so the stores to the word arrays cannot alias them */
@@ -120,9 +120,10 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
         return;
     }
 
-    /* A fresh stamp: 0 marks "in no batch" (every new vertex's), so on wrapping past 65535 the
-     * old stamps are cleared first — after 65535 batches of one frame, i.e. never in practice. */
-    stamp = (uint16_t)(f->batch_stamp + 1u);
+    /* A fresh stamp: 0 marks "in no batch" (every new vertex's), so on wrapping past 255 the
+     * old stamps are cleared first — after 255 batches of one frame (a frame of the largest
+     * scene needs about 6; the clearing costs one store per vertex then). */
+    stamp = (uint8_t)(f->batch_stamp + 1u);
     if (stamp == 0u) {
         for (uint32_t v = 0; v < f->vert_count; v++) {
             f->vert[v].batch_stamp = 0;

@@ -54,7 +54,50 @@ struct mesh {
     vec3 box_lo;
     vec3 box_hi;
     bool full;      /* an add did not fit its array: the mesh is incomplete */
+    /* A grid mesh (mesh_set_grid): faces implicit, not stored; faces is then unused. */
+    struct mesh_grid {
+        uint16_t rows;           /* 0: not a grid mesh */
+        uint16_t cols;
+        bool flip;
+        const uint8_t *material; /* rows entries: the material of row i's faces */
+    } grid;
 };
+
+/*
+ * A grid mesh: a closed tube (the knot) whose vertices are rows x cols, vertex (i, j) at
+ * i * cols + j, each row a ring. Quad q = i * cols + j has corners a = (i, j), b = (i+1, j),
+ * c = (i+1, j+1), d = (i, j+1), indices modulo rows and cols; its faces are 2q and 2q + 1:
+ * (a, b, c) and (a, c, d), or with flip (a, d, c) and (a, c, b) — the other winding. Both take
+ * normal q (one per quad: normal_count = rows * cols) and material[i]. Nothing per face is
+ * stored: 10 bytes a face less (the knot: 50 KB). mesh_face_at gives any face; render.c walks
+ * them in order with mesh_grid_face.
+ */
+void mesh_set_grid(struct mesh *m, uint32_t rows, uint32_t cols, bool flip,
+                   const uint8_t *row_material);
+
+/* Face (i, j, half) of a grid mesh, as mesh_set_grid defines it, into *out. */
+static inline void mesh_grid_face(const struct mesh_grid *g, uint32_t i, uint32_t j, uint32_t half,
+                                  struct mesh_face *out)
+{
+    const uint32_t i1 = (i + 1u == g->rows) ? 0u : i + 1u;
+    const uint32_t j1 = (j + 1u == g->cols) ? 0u : j + 1u;
+    const uint32_t a = i * g->cols + j;
+    const uint32_t b = i1 * g->cols + j;
+    const uint32_t c = i1 * g->cols + j1;
+    const uint32_t d = i * g->cols + j1;
+    const uint32_t second = (half == 0u) ? (g->flip ? d : b) : c;
+    const uint32_t third = (half == 0u) ? c : (g->flip ? b : d);
+
+    out->v[0] = (uint16_t)a;
+    out->v[1] = (uint16_t)second;
+    out->v[2] = (uint16_t)third;
+    out->normal = (uint16_t)a;
+    out->material = g->material[i];
+    out->flags = 0;
+}
+
+/* Face fi of any mesh: a pointer into faces[], or for a grid mesh *tmp filled. */
+const struct mesh_face *mesh_face_at(const struct mesh *m, uint32_t fi, struct mesh_face *tmp);
 
 /* Point the mesh at caller-owned arrays and empty it. */
 void mesh_init(struct mesh *m, vec3 *verts, uint32_t vert_cap, struct mesh_face *faces,

@@ -462,7 +462,7 @@ struct render_faces_job {
  */
 static inline __attribute__((always_inline)) void render_faces(struct render_frame *f,
                                                                const struct render_faces_job *job,
-                                                               bool check, bool cached)
+                                                               bool check, bool cached, bool grid)
 {
     const struct mesh *mesh = job->mesh;
     const uint32_t nf = mesh->face_count;
@@ -481,9 +481,23 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     uint32_t np_general = 0;  /* primitives the general path added (not one per face) */
     uint32_t n_frustum = 0;
     uint32_t n_back = 0;
+    uint32_t gi = 0;  /* grid meshes: the face's row, column and half, walked in face order */
+    uint32_t gj = 0;
+    uint32_t gh = 0;
 
     for (uint32_t fi = 0; fi < nf; fi++) {
+        struct mesh_face gface;
         const struct mesh_face *face = &faces[fi];
+
+        if (grid) {
+            mesh_grid_face(&mesh->grid, gi, gj, gh, &gface);
+            face = &gface;
+            gh ^= 1u;
+            if (gh == 0u && ++gj == mesh->grid.cols) {
+                gj = 0;
+                gi++;
+            }
+        }
         const struct proj_vertex *a = &vert[face->v[0]];
         const struct proj_vertex *b = &vert[face->v[1]];
         const struct proj_vertex *c = &vert[face->v[2]];
@@ -589,18 +603,22 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
     job.mesh = mesh;
     job.light = &light;
     job.material_override = render_material_override(pass, obj);
-    /* Four specialisations of the face loop, so that neither test costs a face anything. */
-    if (where == RENDER_SPHERE_INSIDE) {
+    /* Four specialisations of the face loop, so that neither test costs a face anything; a grid
+     * mesh (implicit faces, mesh.h) takes a fifth, with every test on and no cache. */
+    if (mesh->grid.rows != 0u) {
+        job.levels = 0;
+        render_faces(f, &job, true, false, true);
+    } else if (where == RENDER_SPHERE_INSIDE) {
         if (job.levels != 0) {
-            render_faces(f, &job, false, true);
+            render_faces(f, &job, false, true, false);
         } else {
-            render_faces(f, &job, false, false);
+            render_faces(f, &job, false, false, false);
         }
     } else {
         if (job.levels != 0) {
-            render_faces(f, &job, true, true);
+            render_faces(f, &job, true, true, false);
         } else {
-            render_faces(f, &job, true, false);
+            render_faces(f, &job, true, false, false);
         }
     }
 }

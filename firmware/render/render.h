@@ -94,7 +94,7 @@ struct render_frame {
     uint32_t prim_count;
     uint32_t sorted_count;  /* primitives covered by render_sort; later ones are overlay */
     uint32_t outline_count; /* RENDER_PRIM_OUTLINE primitives among them (batch.c expands them) */
-    uint16_t batch_stamp;   /* batch.c: stamp of the last batch filled from these vertices */
+    uint8_t batch_stamp;    /* batch.c: stamp of the last batch filled from these vertices */
     struct render_stats stats;
 };
 

@@ -52,7 +52,8 @@ static void check_mesh(const struct mesh *m, const struct render_object *o)
         CHECK(fabs(len - 1.0) < 1e-3);
     }
     for (uint32_t i = 0; i < m->face_count; i++) {
-        const struct mesh_face *f = &m->faces[i];
+        struct mesh_face tmp;
+        const struct mesh_face *f = mesh_face_at(m, i, &tmp);  /* grid meshes: implicit faces */
         uvec3 w;
         uvec3 s;
 
