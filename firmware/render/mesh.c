@@ -22,6 +22,7 @@ void mesh_clear(struct mesh *m)
     m->grid.cols = 0;
     m->grid.flip = false;
     m->grid.material = 0;
+    m->grid.normal14 = 0;
     m->vert_count = 0;
     m->face_count = 0;
     m->normal_count = 0;
@@ -171,10 +172,10 @@ uvec3 mesh_cube_face_normal(uint32_t dir)
 }
 
 void mesh_set_grid(struct mesh *m, uint32_t rows, uint32_t cols, bool flip,
-                   const uint8_t *row_material)
+                   const uint8_t *row_material, const int16_t *normal14)
 {
-    /* Every vertex and normal must exist: rows * cols of each (indices are uint16). */
-    if (rows * cols != m->vert_count || rows * cols != m->normal_count || rows * cols > 65536u ||
+    /* Every vertex must exist: rows * cols (indices are uint16); normal14 holds as many. */
+    if (rows * cols != m->vert_count || rows * cols > 65536u ||
         rows < 2u || cols < 2u) {
         m->full = true;
         return;
@@ -183,6 +184,8 @@ void mesh_set_grid(struct mesh *m, uint32_t rows, uint32_t cols, bool flip,
     m->grid.cols = (uint16_t)cols;
     m->grid.flip = flip;
     m->grid.material = row_material;
+    m->grid.normal14 = normal14;
+    m->normal_count = rows * cols;
     m->face_count = 2u * rows * cols;
 }
 

@@ -56,7 +56,7 @@ void render_level_cache_init(struct render_level_cache *c, uint8_t *storage, uin
 static uint8_t *render_level_cache_for(struct render_level_cache *c, const struct mesh *mesh,
                                        uvec3 light_model, uint32_t ambient)
 {
-    if (c == 0 || c->cap < mesh->normal_count) {
+    if (c == 0 || c->cap < mesh->normal_count || mesh->grid.rows != 0u) {
         return 0;
     }
     if (!c->valid || c->light.x != light_model.x || c->light.y != light_model.y ||
@@ -297,7 +297,7 @@ static inline uint8_t render_face_color(const struct palette_light *light,
 {
     const uint32_t mat = (material_override != 0u) ? material_override : face->material;
 
-    return PAL_INDEX(mat, palette_light_level(light, mesh->normals[face->normal]));
+    return PAL_INDEX(mat, palette_light_level(light, mesh_normal(mesh, face->normal)));
 }
 
 /* Depth key of a face: the sum of its three sort depths (3x the mean), or for half a quad 3/2 of
@@ -536,6 +536,8 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
                 level = palette_light_level(job->light, normals[face->normal]);
                 levels[face->normal] = (uint8_t)level;
             }
+        } else if (grid) {
+            level = palette_light_level(job->light, mesh_normal(mesh, face->normal));
         } else {
             level = palette_light_level(job->light, normals[face->normal]);
         }

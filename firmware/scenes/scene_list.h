@@ -28,6 +28,6 @@
  *     name       state   objects  verts  prims  wverts  wprims */
 SCENE(tetra,        320,     1,      32,    21,    140,     54)
 SCENE(cubes,        448,    64,     640,   512,   5376,   2432)
-SCENE(landscape,  65024,    16,    1536,  2304,  29120,  13824)
-SCENE(voxel,      65024,     8,    2048,  2048,  17024,   7808)
-SCENE(knot,       60288,     1,    2880,  2816,  36480,  16832)
+SCENE(landscape,  65152,    16,    1536,  2304,  29120,  13824)
+SCENE(voxel,      65088,     8,    2048,  2048,  17024,   7808)
+SCENE(knot,       45312,     1,    2880,  2816,  36480,  16832)

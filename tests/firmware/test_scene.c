@@ -46,7 +46,7 @@ static void check_mesh(const struct mesh *m, const struct render_object *o)
         CHECK(rd(vec3_length(vec3_sub(m->verts[i], m->center))) <= rd(m->radius));
     }
     for (uint32_t i = 0; i < m->normal_count; i++) {
-        const uvec3 n = m->normals[i];
+        const uvec3 n = mesh_normal(m, i);
         const double len = sqrt(ud(n.x) * ud(n.x) + ud(n.y) * ud(n.y) + ud(n.z) * ud(n.z));
 
         CHECK(fabs(len - 1.0) < 1e-3);
@@ -62,7 +62,7 @@ static void check_mesh(const struct mesh *m, const struct render_object *o)
         CHECK((f->material > 0u && f->material < MAT_ANAGLYPH_LEFT) || o->material != 0u);
         /* The winding's normal is the stored one: front faces keep a positive screen area. */
         w = vec3_triangle_normal(m->verts[f->v[0]], m->verts[f->v[1]], m->verts[f->v[2]]);
-        s = m->normals[f->normal];
+        s = mesh_normal(m, f->normal);
         CHECK(ud(w.x) * ud(s.x) + ud(w.y) * ud(s.y) + ud(w.z) * ud(s.z) > 0.99);
     }
 }
