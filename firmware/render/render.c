@@ -487,11 +487,12 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
 
     for (uint32_t fi = 0; fi < nf; fi++) {
         struct mesh_face gface;
-        const struct mesh_face *face = &faces[fi];
+        const struct mesh_face *face = &gface;
 
-        if (grid) {
+        if (!grid) {
+            face = &faces[fi];  /* (a grid mesh has no faces array) */
+        } else {
             mesh_grid_face(&mesh->grid, gi, gj, gh, &gface);
-            face = &gface;
             gh ^= 1u;
             if (gh == 0u && ++gj == mesh->grid.cols) {
                 gj = 0;
