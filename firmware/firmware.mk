@@ -298,6 +298,10 @@ $(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
   $(eval FW_TEST_DEPS += $(FW_TEST_DIR)/$(call fw_name,$(s),$(b)).elf $(FW_TEST_DIR)/host-$(call fw_name,$(s),$(b)))))
 $(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/tetra-watchdog.elf,tetra,fixed,5,268435456))
 FW_TEST_DEPS += $(FW_TEST_DIR)/tetra-watchdog.elf $(FW_UNIT) $(FW_UNIT_FLOAT)
+# voxel without line emulation, as a chip whose GPU draws lines builds it (tests/scenes/host_features.sh:
+# on a GPU without lines its F key refuses; with lines its frames equal the default build's).
+$(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-voxel-chip,voxel,fixed-chip,$(FW_TEST_FRAMES)))
+FW_TEST_DEPS += $(FW_TEST_DIR)/host-voxel-chip
 # cubes without any optional feature (tests/scenes/lean_build.sh).
 $(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/cubes-lean.elf,cubes,fixed-lean,$(FW_TEST_FRAMES),))
 FW_TEST_DEPS += $(FW_TEST_DIR)/cubes-lean.elf

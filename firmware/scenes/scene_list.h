@@ -17,9 +17,10 @@
  *   verts    frame vertices one filled pass can need: the visible objects' mesh vertices, the
  *            clipper's new ones, 4 for the crosshair
  *   prims    frame primitives one filled pass can need: triangles (a clipped face's fan), the
- *            crosshair's 2 lines
- *   wverts   the same for a wireframe pass, lines drawn by the GPU or emulated (4 vertices and 2
- *   wprims   triangles per edge, the larger): what a build with FW_WITH_WIREFRAME reserves
+ *            crosshair's 2 lines. A wireframe pass with GPU lines needs exactly these two (one
+ *            outline primitive per triangle, render.h)
+ *   wverts   the same for a wireframe pass with emulated lines (4 vertices and 2 triangles per
+ *   wprims   edge): what a build with FW_WITH_WIREFRAME and FW_WITH_LINE_EMULATION reserves
  * A frame that would need more drops the rest and counts it (render_stats.dropped: the frame
  * loop prints an error line); test_scene_capacities (tests/firmware/test_scene.c) drives every
  * scene through camera sweeps in filled, wireframe (GPU lines and emulated) and anaglyph passes,
