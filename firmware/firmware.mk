@@ -23,13 +23,19 @@
 #   FW_PROFILE     1: every frame also prints where its instructions went (app.c)
 #   FW_SUBPIXEL_BITS  fraction bits kept in projected vertices, 0..4 (default: 4, the contract's
 #                  Q12.4); an accuracy knob (proj.h), measured by `make bench-error`
+#   FW_LINE_EMULATION  1: the wireframe on a GPU without line primitives draws each edge as two
+#                  triangles, and every frame reserves room for that (the wireframe columns of
+#                  scenes/scene_list.h); 0: it does not (the F key then says so on such a GPU) and
+#                  the frame needs only the filled columns: -DFW_WITH_LINE_EMULATION (default 1;
+#                  a platform whose GPU has CAPS_LINES may set FW_LINE_EMULATION ?= 0 in bsp.mk)
 #   FW_DEFS        further -D settings of every object, e.g. "-DFW_WITH_LIGHTING=0" (fw_config.h:
 #                  the FW_WITH_* features a scene may not need)
 #   GPUSIM         the co-simulator (set by the top-level Makefile), for bench-fw
 #
 # From bsp/<platform>/bsp.mk: FW_CC FW_OBJDUMP FW_ARCH_FLAGS FW_BSP_SRCS FW_LDSCRIPT FW_BSP_LDFLAGS
 # FW_RUN, and optionally FW_POSTLINK (a command run as `$(FW_POSTLINK) <elf>` after every link,
-# e.g. to make a memory image and refuse one larger than the chip's RAM) and FW_SCENE_SET.
+# e.g. to make a memory image and refuse one larger than the chip's RAM), FW_SCENE_SET and
+# FW_LINE_EMULATION.
 #
 # Outputs:
 #   $(FW_ELF)       = $(FW_DIR)/$(SCENE)[-float].elf (+ .map, .lst): what `make run` runs;
@@ -75,6 +81,10 @@ include bsp/$(FW_PLATFORM)/bsp.mk
 
 # After bsp.mk, which may choose another default for its platform.
 FW_SCENE_SET ?= all
+FW_LINE_EMULATION ?= 1
+ifeq ($(filter $(FW_LINE_EMULATION),0 1),)
+$(error FW_LINE_EMULATION=$(FW_LINE_EMULATION) is not 0 or 1)
+endif
 FW_POSTLINK  ?=
 ifeq ($(filter $(FW_SCENE_SET),one all),)
 $(error FW_SCENE_SET=$(FW_SCENE_SET) is not one of: one all)
@@ -138,7 +148,8 @@ FW_BACKEND_DEFS_fixed :=
 FW_BACKEND_DEFS_float := -DFW_BACKEND_FLOAT=1
 # Object variants: the two backends take the command line's FW_SUBPIXEL_BITS; <backend>-sp<N>
 # (bench-error, and one test) are a backend with N sub-pixel bits, whatever the command line says.
-FW_VARIANT_DEFS_fixed := $(if $(FW_SUBPIXEL_BITS),-DFW_SUBPIXEL_BITS=$(FW_SUBPIXEL_BITS)) $(FW_DEFS)
+FW_VARIANT_DEFS_fixed := $(if $(FW_SUBPIXEL_BITS),-DFW_SUBPIXEL_BITS=$(FW_SUBPIXEL_BITS)) \
+                         -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION) $(FW_DEFS)
 FW_VARIANT_DEFS_float := $(FW_VARIANT_DEFS_fixed)
 FW_SP_VARIANTS := fixed-sp4 float-sp0 float-sp2
 $(foreach v,$(FW_SP_VARIANTS),  $(eval FW_BACKEND_DEFS_$(v) := $(FW_BACKEND_DEFS_$(word 1,$(subst -, ,$(v)))))  $(eval FW_VARIANT_DEFS_$(v) := -DFW_SUBPIXEL_BITS=$(patsubst sp%,%,$(word 2,$(subst -, ,$(v))))))
@@ -153,6 +164,14 @@ FW_SP_VARIANTS += fixed-lean
 FW_BACKEND_DEFS_fixed-nowire :=
 FW_VARIANT_DEFS_fixed-nowire := -DFW_WITH_WIREFRAME=0
 FW_SP_VARIANTS += fixed-nowire
+# fixed-chip / fixed-emul: the fixed backend with line emulation left out / built in, whatever
+# FW_LINE_EMULATION says: `make fw-size`'s rows (the chip's GPU draws lines: the checked row has
+# no emulation; the emulated row is shown for comparison).
+FW_BACKEND_DEFS_fixed-chip :=
+FW_VARIANT_DEFS_fixed-chip := -DFW_WITH_LINE_EMULATION=0
+FW_BACKEND_DEFS_fixed-emul :=
+FW_VARIANT_DEFS_fixed-emul := -DFW_WITH_LINE_EMULATION=1
+FW_SP_VARIANTS += fixed-chip fixed-emul
 # -ffp-contract=off: no fused multiply-adds, so the float backend rounds identically on the host
 # and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
 # -fno-tree-loop-distribute-patterns: GCC would turn the pipeline's clearing loops (the sort's
@@ -279,6 +298,10 @@ $(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
   $(eval FW_TEST_DEPS += $(FW_TEST_DIR)/$(call fw_name,$(s),$(b)).elf $(FW_TEST_DIR)/host-$(call fw_name,$(s),$(b)))))
 $(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/tetra-watchdog.elf,tetra,fixed,5,268435456))
 FW_TEST_DEPS += $(FW_TEST_DIR)/tetra-watchdog.elf $(FW_UNIT) $(FW_UNIT_FLOAT)
+# voxel without line emulation, as a chip whose GPU draws lines builds it (tests/scenes/host_features.sh:
+# on a GPU without lines its F key refuses; with lines its frames equal the default build's).
+$(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-voxel-chip,voxel,fixed-chip,$(FW_TEST_FRAMES)))
+FW_TEST_DEPS += $(FW_TEST_DIR)/host-voxel-chip
 # cubes without any optional feature (tests/scenes/lean_build.sh).
 $(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/cubes-lean.elf,cubes,fixed-lean,$(FW_TEST_FRAMES),))
 FW_TEST_DEPS += $(FW_TEST_DIR)/cubes-lean.elf
@@ -307,12 +330,16 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2,\
   $(eval FW_ERR_ELFS += $(FW_ERR_DIR)/$(s)-$(v)-z.elf)))
 
 # Memory per scene (`make fw-size`, tests/firmware/fit.sh): every scene's one-scene build (what a
-# chip runs: FW_SCENE_SET=one) and, for comparison, the all-scene build of the default scene.
-# Frames 0 (until Q), the chip's setting; the frame count changes no size.
+# chip runs: FW_SCENE_SET=one, and no line emulation: the chip's GPU has CAPS_LINES), and for
+# comparison the same with line emulation, without the wireframe, and the all-scene build of the
+# default scene. Frames 0 (until Q), the chip's setting; the frame count changes no size.
 FW_SIZE_DIR    := $(BUILD)/fw-size$(FW_PSUFFIX)
-FW_SIZE_ELFS   := $(foreach s,$(FW_SCENES),$(FW_SIZE_DIR)/$(s).elf $(FW_SIZE_DIR)/$(s)-nowire.elf) \
+FW_SIZE_ELFS   := $(foreach s,$(FW_SCENES),$(FW_SIZE_DIR)/$(s).elf $(FW_SIZE_DIR)/$(s)-emul.elf \
+                    $(FW_SIZE_DIR)/$(s)-nowire.elf) \
                   $(FW_SIZE_DIR)/all-$(SCENE).elf
-$(foreach s,$(FW_SCENES),$(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/$(s).elf,$(s),fixed,0,,,one)))
+$(foreach s,$(FW_SCENES),$(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/$(s).elf,$(s),fixed-chip,0,,,one)))
+$(foreach s,$(FW_SCENES),\
+  $(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/$(s)-emul.elf,$(s),fixed-emul,0,,,one)))
 $(foreach s,$(FW_SCENES),\
   $(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/$(s)-nowire.elf,$(s),fixed-nowire,0,,,one)))
 $(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/all-$(SCENE).elf,$(SCENE),fixed,0,,,all))

@@ -168,9 +168,12 @@ static void app_report_lines(const struct app *app)
 {
     if (gpu_caps_lines(app->gpu.info.caps)) {
         printf("wireframe: GPU line primitives\n");
-    } else {
+    } else if (FW_WITH_LINE_EMULATION) {
         printf("wireframe: the GPU has no lines (CAPS_LINES = 0): edges drawn as 1-pixel-wide "
                "triangle pairs\n");
+    } else {
+        printf("wireframe: the GPU has no lines (CAPS_LINES = 0) and this build no line "
+               "emulation (FW_WITH_LINE_EMULATION=0): F stays off\n");
     }
 }
 
@@ -233,7 +236,12 @@ static bool app_global_keys(struct app *app, const struct input_counts *keys,
         }
     }
     if (input_toggled(keys, KEY_WIREFRAME)) {
-        if (FW_WITH_WIREFRAME) {
+        if (FW_WITH_WIREFRAME && !FW_WITH_LINE_EMULATION &&
+            !gpu_caps_lines(app->gpu.info.caps)) {
+            /* Its frame is sized for GPU lines only: emulated edges would not fit it. */
+            app_note(notes, "wireframe: the GPU has no lines and line emulation is not built in "
+                            "(FW_WITH_LINE_EMULATION=0)");
+        } else if (FW_WITH_WIREFRAME) {
             app->wireframe = !app->wireframe;
             app_note(notes, app->wireframe ? "wireframe on" : "wireframe off");
         } else {
@@ -372,6 +380,10 @@ static void app_print_event(const struct scene *s, const struct scene_event *ev)
         break;
     case SCENE_EVENT_BLOCK_TYPE:
         printf("%s: placing %s\n", name, block);
+        break;
+    case SCENE_EVENT_MESH_FULL:
+        printf("error: %s: mesh storage full (%ld faces, %ld vertices): %ld chunk(s) not drawn "
+               "until edits make room\n", name, (long)ev->y, (long)ev->z, (long)ev->x);
         break;
     default:
         break;

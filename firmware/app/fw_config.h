@@ -36,11 +36,19 @@
 /* Features a scene may not need: 1 builds them in (the default), 0 leaves their code out, and
  * their key then says so. make FW_DEFS="-DFW_WITH_LIGHTING=0 ..." (firmware/README.md):
  *   FW_WITH_WIREFRAME  the F key's outline mode (the crosshair's lines stay)
+ *   FW_WITH_LINE_EMULATION  the wireframe on a GPU without line primitives (CAPS_LINES = 0): each
+ *                      edge as two triangles on four new vertices, so the wireframe columns of
+ *                      scenes/scene_list.h (wverts, wprims) are reserved; 0 (a platform whose GPU
+ *                      draws lines: bsp/<platform>/bsp.mk) reserves only the filled columns, and
+ *                      the F key on a GPU without lines then says so and stays off
  *   FW_WITH_ANAGLYPH   the G key's red/cyan stereo (a second pass per frame)
  *   FW_WITH_DEPTH      the GPU's depth test: VTX_Z per vertex and the Z key
  *   FW_WITH_LIGHTING   flat light per face; without, every face shows its material at full level */
 #ifndef FW_WITH_WIREFRAME
 #define FW_WITH_WIREFRAME 1
+#endif
+#ifndef FW_WITH_LINE_EMULATION
+#define FW_WITH_LINE_EMULATION 1
 #endif
 #ifndef FW_WITH_ANAGLYPH
 #define FW_WITH_ANAGLYPH 1

@@ -32,7 +32,7 @@ static inline void batch_put_vertex(uint32_t *w, const struct proj_vertex *v)
 
 /* The vertex's slot in the current batch, writing it there first if the batch lacks it.
  * *nv counts the batch's vertices so far. */
-static inline uint32_t batch_vertex(struct proj_vertex *v, uint16_t stamp, uint32_t *vtx,
+static inline uint32_t batch_vertex(struct proj_vertex *v, uint8_t stamp, uint32_t *vtx,
                                     uint32_t *nv)
 {
     if (v->batch_stamp != stamp) {
@@ -71,13 +71,34 @@ static void batch_fill_whole(struct render_frame *f, struct batch_words *out)
     out->prim_count = np;
 }
 
+/* An outline primitive's edges as GPU LINE primitives at pw (render.h, RENDER_PRIM_OUTLINE): edge
+ * k from slot s[k] to s[(k + 1) % 3], in the order 0, 1, 2. Returns how many it wrote (1 .. 3). */
+static inline uint32_t batch_put_outline(uint32_t *pw, const uint32_t s[3], uint32_t w1)
+{
+    const uint32_t edges = (w1 >> GPU_PRIM_KIND_LSB) & RENDER_PRIM_OUTLINE_EDGES;
+    const uint32_t hi = (w1 & 0x00FF0000u) | ((uint32_t)GPU_PRIM_KIND_LINE << GPU_PRIM_KIND_LSB);
+    uint32_t n = 0;
+
+    for (uint32_t k = 0; k < 3u; k++) {
+        if ((edges & (1u << k)) != 0u) {
+            const uint32_t b = s[(k + 1u) % 3u];
+
+            pw[n * GPU_PRIM_WORDS] = s[k] | (b << 16);
+            pw[n * GPU_PRIM_WORDS + 1u] = b | hi;
+            n++;
+        }
+    }
+    return n;
+}
+
 void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_cap,
                 uint32_t tri_cap, struct batch_words *out)
 {
-    uint16_t stamp;
+    uint8_t stamp;
     const uint32_t first = cur->next;
     uint32_t i = first;
     uint32_t nv = 0;  /* locals, not out->..., so the stores to the word arrays cannot alias them */
+    uint32_t np = 0;  /* GPU primitives written (an outline writes up to 3) */
     uint32_t end;
     uint32_t vtx_room;
     const uint32_t total = f->prim_count;
@@ -90,16 +111,19 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
     tri_cap = (tri_cap > GPU_TRI_CAP) ? GPU_TRI_CAP : tri_cap;
     vtx_cap = (vtx_cap < 3u) ? 3u : vtx_cap;
     tri_cap = (tri_cap < 1u) ? 1u : tri_cap;
+    /* With outlines, at least 3: an outline's three lines always fit an empty batch. */
+    tri_cap = (tri_cap < 3u && f->outline_count != 0u) ? 3u : tri_cap;
 
-    if (first == 0u && f->vert_count <= vtx_cap && total <= tri_cap) {
+    if (first == 0u && f->outline_count == 0u && f->vert_count <= vtx_cap && total <= tri_cap) {
         batch_fill_whole(f, out);
         cur->next = total;
         return;
     }
 
-    /* A fresh stamp: 0 marks "in no batch" (every new vertex's), so on wrapping past 65535 the
-     * old stamps are cleared first — after 65535 batches of one frame, i.e. never in practice. */
-    stamp = (uint16_t)(f->batch_stamp + 1u);
+    /* A fresh stamp: 0 marks "in no batch" (every new vertex's), so on wrapping past 255 the
+     * old stamps are cleared first — after 255 batches of one frame (a frame of the largest
+     * scene needs about 6; the clearing costs one store per vertex then). */
+    stamp = (uint8_t)(f->batch_stamp + 1u);
     if (stamp == 0u) {
         for (uint32_t v = 0; v < f->vert_count; v++) {
             f->vert[v].batch_stamp = 0;
@@ -109,7 +133,8 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
     f->batch_stamp = stamp;
 
     /* Primitives [first, end) in draw order (render_draw_index) at most; the batch closes early
-     * when fewer than three vertex slots are left (nv > vtx_room). */
+     * when fewer than three vertex slots are left (nv > vtx_room), or, before an outline, fewer
+     * than three primitive slots. */
     end = (total - first > tri_cap) ? first + tri_cap : total;
     vtx_room = vtx_cap - 3u;
     while (i < end && nv <= vtx_room) {
@@ -118,16 +143,33 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
          * indices, so the compiler would otherwise reload the primitive after every store. */
         const uint32_t w0 = p->w[0];
         const uint32_t w1 = p->w[1];
-        const uint32_t s0 = batch_vertex(&vert[w0 & 0xFFFFu], stamp, vtx, &nv);
-        const uint32_t s1 = batch_vertex(&vert[w0 >> 16], stamp, vtx, &nv);
-        const uint32_t s2 = batch_vertex(&vert[w1 & 0xFFFFu], stamp, vtx, &nv);
-        uint32_t *pw = &prim_words[(i - first) * GPU_PRIM_WORDS];
+        const bool outline = ((w1 >> GPU_PRIM_KIND_LSB) & RENDER_PRIM_OUTLINE) != 0u;
+        uint32_t *pw = &prim_words[np * GPU_PRIM_WORDS];
 
-        pw[0] = s0 | (s1 << 16);
-        pw[1] = s2 | (w1 & 0xFFFF0000u);
+        if (outline && np + 3u > tri_cap) {
+            break;
+        }
+        {
+            const uint32_t s0 = batch_vertex(&vert[w0 & 0xFFFFu], stamp, vtx, &nv);
+            const uint32_t s1 = batch_vertex(&vert[w0 >> 16], stamp, vtx, &nv);
+            const uint32_t s2 = batch_vertex(&vert[w1 & 0xFFFFu], stamp, vtx, &nv);
+
+            if (outline) {
+                const uint32_t s[3] = {s0, s1, s2};
+
+                np += batch_put_outline(pw, s, w1);
+            } else {
+                pw[0] = s0 | (s1 << 16);
+                pw[1] = s2 | (w1 & 0xFFFF0000u);
+                np++;
+            }
+        }
         i++;
+        if (np >= tri_cap) {
+            break;
+        }
     }
     out->vtx_count = nv;
-    out->prim_count = i - first;
+    out->prim_count = np;
     cur->next = i;
 }

@@ -14,7 +14,11 @@
  * stay shared inside a batch and a batch never names a vertex it does not carry. A batch is closed
  * while it still has room for three more vertices, so every primitive fits whole.
  *
- * A frame whose vertices and primitives all fit one batch skips the renumbering: its vertices are
+ * An outline primitive (render.h, RENDER_PRIM_OUTLINE: a wireframe triangle with GPU lines) becomes
+ * one GPU LINE primitive per edge it names, up to three, in the batch that takes it; a batch is
+ * closed before an outline that would not fit it whole.
+ *
+ * A frame without outlines whose vertices and primitives all fit one batch skips the renumbering: its vertices are
  * copied in order and the primitives keep the frame's vertex numbers.
  */
 #ifndef BATCH_H
@@ -43,7 +47,7 @@ void batch_begin(struct batch_cursor *cur);
 
 /* Fill one batch from the frame's draw list (render_draw_index order). vtx_cap/tri_cap are the
  * GPU's reported capacities, clamped to the header's (the size of batch_words) and to a minimum of
- * 3 vertices and 1 primitive. Writes the frame's per-vertex stamps. */
+ * 3 vertices and 1 primitive (3 in a frame with outlines: an outline's lines). Writes the frame's per-vertex stamps. */
 void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_cap,
                 uint32_t tri_cap, struct batch_words *out);
 

@@ -18,6 +18,11 @@ void mesh_init(struct mesh *m, vec3 *verts, uint32_t vert_cap, struct mesh_face 
 
 void mesh_clear(struct mesh *m)
 {
+    m->grid.rows = 0;
+    m->grid.cols = 0;
+    m->grid.flip = false;
+    m->grid.material = 0;
+    m->grid.normal14 = 0;
     m->vert_count = 0;
     m->face_count = 0;
     m->normal_count = 0;
@@ -164,4 +169,31 @@ uvec3 mesh_cube_face_normal(uint32_t dir)
     uvec3 r = {UNIT_ONE * n[0], UNIT_ONE * n[1], UNIT_ONE * n[2]};
 
     return r;
+}
+
+void mesh_set_grid(struct mesh *m, uint32_t rows, uint32_t cols, bool flip,
+                   const uint8_t *row_material, const int16_t *normal14)
+{
+    /* Every vertex must exist: rows * cols (indices are uint16); normal14 holds as many. */
+    if (rows * cols != m->vert_count || rows * cols > 65536u ||
+        rows < 2u || cols < 2u) {
+        m->full = true;
+        return;
+    }
+    m->grid.rows = (uint16_t)rows;
+    m->grid.cols = (uint16_t)cols;
+    m->grid.flip = flip;
+    m->grid.material = row_material;
+    m->grid.normal14 = normal14;
+    m->normal_count = rows * cols;
+    m->face_count = 2u * rows * cols;
+}
+
+const struct mesh_face *mesh_face_at(const struct mesh *m, uint32_t fi, struct mesh_face *tmp)
+{
+    if (m->grid.rows == 0u) {
+        return &m->faces[fi];
+    }
+    mesh_grid_face(&m->grid, (fi / 2u) / m->grid.cols, (fi / 2u) % m->grid.cols, fi & 1u, tmp);
+    return tmp;
 }

@@ -54,7 +54,78 @@ struct mesh {
     vec3 box_lo;
     vec3 box_hi;
     bool full;      /* an add did not fit its array: the mesh is incomplete */
+    /* A grid mesh (mesh_set_grid): faces implicit, not stored; faces is then unused. */
+    struct mesh_grid {
+        uint16_t rows;           /* 0: not a grid mesh */
+        uint16_t cols;
+        bool flip;
+        const uint8_t *material; /* rows entries: the material of row i's faces */
+        const int16_t *normal14; /* 3 per quad: its unit normal in Q1.14 (mesh_normal_q14) */
+    } grid;
 };
+
+/* A unit vector component in Q1.14: |c| <= 1, so |c| * 2^14 <= 16384 fits int16 with room;
+ * rounded to nearest, within 2^-15 of the component (a light level, 1/16 of the range, moves
+ * only where the exact dot product lies within about 2^-14 of a level's edge). */
+static inline int16_t mesh_q14_from_unit(unit_t c)
+{
+    const int32_t q16 = real_to_q16(real_from_unit(c));  /* |q16| <= 65536 */
+
+    return (int16_t)((q16 >= 0) ? (q16 + 2) / 4 : -((2 - q16) / 4));
+}
+
+/* Normal i of a mesh: the stored uvec3, or a grid mesh's Q1.14 one widened (exact: q14 * 4 is
+ * a Q16.16 value within +-65536). */
+static inline uvec3 mesh_normal(const struct mesh *m, uint32_t i)
+{
+    if (m->grid.normal14 != 0) {
+        const int16_t *n = &m->grid.normal14[3u * i];
+        uvec3 u;
+
+        u.x = unit_from_q16((q16_16)n[0] * 4);
+        u.y = unit_from_q16((q16_16)n[1] * 4);
+        u.z = unit_from_q16((q16_16)n[2] * 4);
+        return u;
+    }
+    return m->normals[i];
+}
+
+/*
+ * A grid mesh: a closed tube (the knot) whose vertices are rows x cols, vertex (i, j) at
+ * i * cols + j, each row a ring. Quad q = i * cols + j has corners a = (i, j), b = (i+1, j),
+ * c = (i+1, j+1), d = (i, j+1), indices modulo rows and cols; its faces are 2q and 2q + 1:
+ * (a, b, c) and (a, c, d), or with flip (a, d, c) and (a, c, b) — the other winding. Both take
+ * normal q (one per quad: rows * cols normals, given as normal14, 3 int16 each in Q1.14, not in
+ * the normals table: 6 bytes a normal instead of 12) and material[i]. Nothing per face is stored:
+ * 10 bytes a face less (the knot: 50 KB). mesh_face_at gives any face, mesh_normal any normal;
+ * render.c walks the faces in order with mesh_grid_face. A grid mesh takes no level cache.
+ */
+void mesh_set_grid(struct mesh *m, uint32_t rows, uint32_t cols, bool flip,
+                   const uint8_t *row_material, const int16_t *normal14);
+
+/* Face (i, j, half) of a grid mesh, as mesh_set_grid defines it, into *out. */
+static inline void mesh_grid_face(const struct mesh_grid *g, uint32_t i, uint32_t j, uint32_t half,
+                                  struct mesh_face *out)
+{
+    const uint32_t i1 = (i + 1u == g->rows) ? 0u : i + 1u;
+    const uint32_t j1 = (j + 1u == g->cols) ? 0u : j + 1u;
+    const uint32_t a = i * g->cols + j;
+    const uint32_t b = i1 * g->cols + j;
+    const uint32_t c = i1 * g->cols + j1;
+    const uint32_t d = i * g->cols + j1;
+    const uint32_t second = (half == 0u) ? (g->flip ? d : b) : c;
+    const uint32_t third = (half == 0u) ? c : (g->flip ? b : d);
+
+    out->v[0] = (uint16_t)a;
+    out->v[1] = (uint16_t)second;
+    out->v[2] = (uint16_t)third;
+    out->normal = (uint16_t)a;
+    out->material = g->material[i];
+    out->flags = 0;
+}
+
+/* Face fi of any mesh: a pointer into faces[], or for a grid mesh *tmp filled. */
+const struct mesh_face *mesh_face_at(const struct mesh *m, uint32_t fi, struct mesh_face *tmp);
 
 /* Point the mesh at caller-owned arrays and empty it. */
 void mesh_init(struct mesh *m, vec3 *verts, uint32_t vert_cap, struct mesh_face *faces,

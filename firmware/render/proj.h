@@ -116,11 +116,14 @@ struct proj_vertex {
         };
         uint32_t zd;         /* the pair as one word (little-endian), for one store */
     };
-    uint16_t batch_stamp;  /* batch.c: the last batch this vertex was written to (0: none) */
-    uint16_t batch_slot;   /* batch.c: its index in that batch's vertex buffer */
-    uint8_t code;        /* enum proj_outcode bits */
-    uint8_t spare[3];
+    uint8_t batch_stamp;   /* batch.c: the last batch this vertex was written to (0: none) */
+    uint8_t code;          /* enum proj_outcode bits */
+    uint16_t batch_slot;   /* batch.c: its index in that batch's vertex buffer (< GPU_VTX_CAP) */
 };
+/* 12 bytes a frame vertex (the frame's largest array with the primitives): the GPU's two words,
+ * then an 8-bit batch stamp (batch.c clears the stamps when its counter wraps past 255, which
+ * takes 255 batches of one frame), the outcode, and the slot. */
+_Static_assert(sizeof(struct proj_vertex) == 12u, "proj_vertex: 12 bytes");
 
 /* Position and depths of a vertex as two word stores (little-endian: the two halfword pairs;
  * elsewhere field by field). sx, sy within int16; zbuf, depth within uint16. */

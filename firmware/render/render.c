@@ -56,7 +56,7 @@ void render_level_cache_init(struct render_level_cache *c, uint8_t *storage, uin
 static uint8_t *render_level_cache_for(struct render_level_cache *c, const struct mesh *mesh,
                                        uvec3 light_model, uint32_t ambient)
 {
-    if (c == 0 || c->cap < mesh->normal_count) {
+    if (c == 0 || c->cap < mesh->normal_count || mesh->grid.rows != 0u) {
         return 0;
     }
     if (!c->valid || c->light.x != light_model.x || c->light.y != light_model.y ||
@@ -127,6 +127,7 @@ void render_frame_begin(struct render_frame *f)
     f->vert_count = 0;
     f->prim_count = 0;
     f->sorted_count = 0;
+    f->outline_count = 0;
     f->batch_stamp = 0;  /* every vertex made from now on starts with stamp 0 */
 }
 
@@ -257,19 +258,33 @@ static void render_emit_line(struct render_frame *f, const struct render_pass *p
                      (uint8_t)GPU_PRIM_KIND_TRI, key);
 }
 
-/* A convex polygon (front-facing, already projected): a fan of triangles, or its outline. */
+/* A convex polygon (front-facing, already projected): a fan of triangles, or its outline. With
+ * GPU lines the outline is the same fan as RENDER_PRIM_OUTLINE primitives, each with the edges that
+ * are the polygon's: triangle (0, k, k+1) has edge 0 (0 -> k) only when k = 1 and edge 2 (k+1 -> 0)
+ * only when k + 1 = n - 1, edge 1 always. Expanded in order, they are the polygon's edges 0 -> 1,
+ * 1 -> 2, ..., n-1 -> 0, in that order, all with the polygon's key. */
 static void render_emit_polygon(struct render_frame *f, const struct render_pass *pass,
                                 const uint32_t *idx, uint32_t n, uint8_t color, uint16_t key)
 {
-    if (FW_WITH_WIREFRAME && pass->wireframe) {
-        for (uint32_t k = 0; k < n; k++) {
-            render_emit_line(f, pass, idx[k], idx[(k + 1u) % n], color, key);
+    const bool wire = FW_WITH_WIREFRAME && pass->wireframe;
+
+    if (wire && !pass->gpu_lines) {
+        if (FW_WITH_LINE_EMULATION) {
+            for (uint32_t k = 0; k < n; k++) {
+                render_emit_line(f, pass, idx[k], idx[(k + 1u) % n], color, key);
+            }
         }
-    } else {
-        for (uint32_t k = 1; k + 1u < n; k++) {
-            render_emit_prim(f, idx[0], idx[k], idx[k + 1u], color, (uint8_t)GPU_PRIM_KIND_TRI,
-                             key);
+        return;  /* without emulation app.c keeps the wireframe off on such a GPU */
+    }
+    for (uint32_t k = 1; k + 1u < n; k++) {
+        uint8_t kind = (uint8_t)GPU_PRIM_KIND_TRI;
+
+        if (wire) {
+            kind = (uint8_t)(RENDER_PRIM_OUTLINE | 0x02u | ((k == 1u) ? 0x01u : 0u) |
+                             ((k + 2u == n) ? 0x04u : 0u));
+            f->outline_count += (f->prim_count < f->prim_cap) ? 1u : 0u;  /* else dropped */
         }
+        render_emit_prim(f, idx[0], idx[k], idx[k + 1u], color, kind, key);
     }
 }
 
@@ -282,7 +297,7 @@ static inline uint8_t render_face_color(const struct palette_light *light,
 {
     const uint32_t mat = (material_override != 0u) ? material_override : face->material;
 
-    return PAL_INDEX(mat, palette_light_level(light, mesh->normals[face->normal]));
+    return PAL_INDEX(mat, palette_light_level(light, mesh_normal(mesh, face->normal)));
 }
 
 /* Depth key of a face: the sum of its three sort depths (3x the mean), or for half a quad 3/2 of
@@ -447,7 +462,7 @@ struct render_faces_job {
  */
 static inline __attribute__((always_inline)) void render_faces(struct render_frame *f,
                                                                const struct render_faces_job *job,
-                                                               bool check, bool cached)
+                                                               bool check, bool cached, bool grid)
 {
     const struct mesh *mesh = job->mesh;
     const uint32_t nf = mesh->face_count;
@@ -466,9 +481,24 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     uint32_t np_general = 0;  /* primitives the general path added (not one per face) */
     uint32_t n_frustum = 0;
     uint32_t n_back = 0;
+    uint32_t gi = 0;  /* grid meshes: the face's row, column and half, walked in face order */
+    uint32_t gj = 0;
+    uint32_t gh = 0;
 
     for (uint32_t fi = 0; fi < nf; fi++) {
-        const struct mesh_face *face = &faces[fi];
+        struct mesh_face gface;
+        const struct mesh_face *face = &gface;
+
+        if (!grid) {
+            face = &faces[fi];  /* (a grid mesh has no faces array) */
+        } else {
+            mesh_grid_face(&mesh->grid, gi, gj, gh, &gface);
+            gh ^= 1u;
+            if (gh == 0u && ++gj == mesh->grid.cols) {
+                gj = 0;
+                gi++;
+            }
+        }
         const struct proj_vertex *a = &vert[face->v[0]];
         const struct proj_vertex *b = &vert[face->v[1]];
         const struct proj_vertex *c = &vert[face->v[2]];
@@ -507,6 +537,8 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
                 level = palette_light_level(job->light, normals[face->normal]);
                 levels[face->normal] = (uint8_t)level;
             }
+        } else if (grid) {
+            level = palette_light_level(job->light, mesh_normal(mesh, face->normal));
         } else {
             level = palette_light_level(job->light, normals[face->normal]);
         }
@@ -574,18 +606,22 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
     job.mesh = mesh;
     job.light = &light;
     job.material_override = render_material_override(pass, obj);
-    /* Four specialisations of the face loop, so that neither test costs a face anything. */
-    if (where == RENDER_SPHERE_INSIDE) {
+    /* Four specialisations of the face loop, so that neither test costs a face anything; a grid
+     * mesh (implicit faces, mesh.h) takes a fifth, with every test on and no cache. */
+    if (mesh->grid.rows != 0u) {
+        job.levels = 0;
+        render_faces(f, &job, true, false, true);
+    } else if (where == RENDER_SPHERE_INSIDE) {
         if (job.levels != 0) {
-            render_faces(f, &job, false, true);
+            render_faces(f, &job, false, true, false);
         } else {
-            render_faces(f, &job, false, false);
+            render_faces(f, &job, false, false, false);
         }
     } else {
         if (job.levels != 0) {
-            render_faces(f, &job, true, true);
+            render_faces(f, &job, true, true, false);
         } else {
-            render_faces(f, &job, true, false);
+            render_faces(f, &job, true, false, false);
         }
     }
 }

@@ -13,9 +13,13 @@
  * Then render_sort orders the primitives far to near (sort.h), and overlay primitives (the
  * crosshair) are appended unsorted, drawn last.
  *
- * Emission: a triangle, or in wireframe its three edges as lines — GPU line primitives when the
- * GPU has them (CAPS_LINES), else each edge as a one-pixel-wide quad of two triangles, so the
- * toggle degrades instead of failing.
+ * Emission: a triangle, or in wireframe its outline. With GPU lines (CAPS_LINES) the outline is
+ * one frame primitive per triangle, kind RENDER_PRIM_OUTLINE with a mask of the edges to draw
+ * (a clipped polygon's fan leaves its inner diagonals out), which batch.c expands into one GPU
+ * LINE primitive per edge: a wireframe pass needs exactly the frame a filled pass needs. Without
+ * GPU lines, in a build with FW_WITH_LINE_EMULATION, each edge becomes a one-pixel-wide quad of
+ * two triangles on four new vertices, so the toggle degrades instead of failing (a build without
+ * it refuses the wireframe on such a GPU: app.c).
  *
  * Colour: flat lighting per face (palette.h), the light taken into model space once per object.
  * In anaglyph mode the face's material is replaced by the eye's red or cyan ramp.
@@ -46,13 +50,20 @@ struct render_prim {
         struct {
             uint16_t v[3];   /* indices into render_frame.vert; v[2] repeats v[1] for a line */
             uint8_t color;   /* palette index */
-            uint8_t kind;    /* GPU_PRIM_KIND_TRI or GPU_PRIM_KIND_LINE */
+            uint8_t kind;    /* GPU_PRIM_KIND_TRI, GPU_PRIM_KIND_LINE, or RENDER_PRIM_OUTLINE | edges */
         };
         /* The same 8 bytes as two words: on a little-endian CPU they are the contract's primitive
          * words with frame vertex numbers in place of batch ones (batch.c uses that). */
         uint32_t w[2];
     };
 };
+
+/* A frame primitive that is not a GPU one: the outline of triangle v[0] v[1] v[2], edge k (from
+ * v[k] to v[(k + 1) % 3]) drawn when bit k of the kind is set, as a GPU LINE primitive (v[k],
+ * v[k+1], v[k+1]) — batch.c expands it, edges in the order 0, 1, 2. The GPU's kinds are 0 and 1, so
+ * bit 7 cannot be mistaken for one. */
+#define RENDER_PRIM_OUTLINE 0x80u
+#define RENDER_PRIM_OUTLINE_EDGES 0x07u
 
 struct render_stats {
     uint32_t faces_in;            /* faces of every object offered: "triangles submitted" */
@@ -82,7 +93,8 @@ struct render_frame {
     uint32_t vert_count;
     uint32_t prim_count;
     uint32_t sorted_count;  /* primitives covered by render_sort; later ones are overlay */
-    uint16_t batch_stamp;   /* batch.c: stamp of the last batch filled from these vertices */
+    uint32_t outline_count; /* RENDER_PRIM_OUTLINE primitives among them (batch.c expands them) */
+    uint8_t batch_stamp;    /* batch.c: stamp of the last batch filled from these vertices */
     struct render_stats stats;
 };
 

@@ -2,6 +2,14 @@
  * knot.c — a (2, 3) torus knot swept by a tube: 100 rings of 25 vertices, 5000 triangles,
  * the procedural stand-in for an imported model. The tube crosses over itself, so the painter's
  * sort decides what is in front. Object mode, spinning.
+ *
+ * Stored compactly (issue #9: its one-scene image in 192 KiB): the tube is a grid mesh (mesh.h),
+ * its faces implicit in (ring, side) rather than 5000 stored faces (50 KB), and the two
+ * triangles of a quad share the quad's normal, kept in Q1.14 (2500 normals of 6 bytes, not 5000
+ * of 12: 45 KB less). The quad's normal is that of its diagonals' cross product, the usual flat
+ * normal of a slightly non-planar quad; each triangle's own normal differed from it by a few
+ * degrees, so the knot's shading changed with this (deliberately: both halves of a quad now show
+ * one level). 140160 bytes of state became 45 KB.
  */
 #include "render/palette.h"
 #include "scenes/scene.h"
@@ -12,8 +20,8 @@
 struct knot_state {
     struct mesh mesh;
     vec3 verts[KNOT_SEGMENTS * KNOT_SIDES];
-    struct mesh_face faces[KNOT_SEGMENTS * KNOT_SIDES * 2];
-    uvec3 normals[KNOT_SEGMENTS * KNOT_SIDES * 2];
+    int16_t normal14[KNOT_SEGMENTS * KNOT_SIDES * 3];  /* one per quad, Q1.14 (mesh.h) */
+    uint8_t row_material[KNOT_SEGMENTS];
     mat3 spin;
 };
 SCENE_STATE_FITS(knot, struct knot_state);
@@ -51,8 +59,7 @@ static void knot_init(struct scene *s)
     const mat3 start = mat3_rotation(0, FX_ANGLE_DEG(-35));
     bool flip = false;
 
-    mesh_init(m, k->verts, KNOT_SEGMENTS * KNOT_SIDES, k->faces, KNOT_SEGMENTS * KNOT_SIDES * 2,
-              k->normals, KNOT_SEGMENTS * KNOT_SIDES * 2);
+    mesh_init(m, k->verts, KNOT_SEGMENTS * KNOT_SIDES, 0, 0, 0, 0);
     for (int32_t i = 0; i < KNOT_SEGMENTS; i++) {
         const fx_angle t = (fx_angle)((uint32_t)i * FX_TURN / KNOT_SEGMENTS);
         const fx_angle dt = (fx_angle)(FX_TURN / (KNOT_SEGMENTS * 4u));
@@ -85,27 +92,35 @@ static void knot_init(struct scene *s)
 
         flip = uvec3_dot(fn, out) < 0;
     }
+    /* Quad (i, j)'s normal, index i * KNOT_SIDES + j as mesh_set_grid wants: the unit cross
+     * product of its diagonals, (c - a) x (d - b), in the winding's sense (flip: the other one).
+     * The vertices are within 3.2 units of the origin, so the differences and their sums fit
+     * vec3_triangle_normal's range with room to spare. */
+    /* Quad (i, j)'s normal, index i * KNOT_SIDES + j as mesh_set_grid wants: the unit cross
+     * product of its diagonals, (c - a) x (d - b), in the winding's sense (flip: the other one),
+     * kept in Q1.14. The vertices are within 3.2 units of the origin, so the differences and
+     * their sums are well inside vec3_triangle_normal's range. */
     for (int32_t i = 0; i < KNOT_SEGMENTS; i++) {
         const int32_t i1 = (i + 1) % KNOT_SEGMENTS;
 
         for (int32_t j = 0; j < KNOT_SIDES; j++) {
             const int32_t j1 = (j + 1) % KNOT_SIDES;
-            const uint16_t a = (uint16_t)(i * KNOT_SIDES + j);
-            const uint16_t b = (uint16_t)(i1 * KNOT_SIDES + j);
-            const uint16_t c = (uint16_t)(i1 * KNOT_SIDES + j1);
-            const uint16_t d = (uint16_t)(i * KNOT_SIDES + j1);
-            /* Alternate bands of colour along the curve, so its crossings read clearly. */
-            const uint8_t mat = ((i / 10) & 1) ? MAT_ORANGE : MAT_CYAN;
+            const vec3 a = m->verts[i * KNOT_SIDES + j];
+            const vec3 b = m->verts[i1 * KNOT_SIDES + j];
+            const vec3 c = m->verts[i1 * KNOT_SIDES + j1];
+            const vec3 d = m->verts[i * KNOT_SIDES + j1];
+            const vec3 diag = flip ? vec3_sub(b, d) : vec3_sub(d, b);
+            const uvec3 n = vec3_triangle_normal(a, c, vec3_add(a, diag));
+            int16_t *q = &k->normal14[3 * (i * KNOT_SIDES + j)];
 
-            if (flip) {
-                mesh_add_face(m, a, d, c, mat);
-                mesh_add_face(m, a, c, b, mat);
-            } else {
-                mesh_add_face(m, a, b, c, mat);
-                mesh_add_face(m, a, c, d, mat);
-            }
+            q[0] = mesh_q14_from_unit(n.x);
+            q[1] = mesh_q14_from_unit(n.y);
+            q[2] = mesh_q14_from_unit(n.z);
         }
+        /* Alternate bands of colour along the curve, so its crossings read clearly. */
+        k->row_material[i] = ((i / 10) & 1) ? MAT_ORANGE : MAT_CYAN;
     }
+    mesh_set_grid(m, KNOT_SEGMENTS, KNOT_SIDES, flip, k->row_material, k->normal14);
     mesh_finish(m);
 
     k->spin = mat3_mul(&spin_y, &spin_x);

@@ -40,16 +40,16 @@ enum scene_index {
 
 /* What each scene needs (scene_list.h's columns): SCENE_STATE_BYTES_<name>,
  * SCENE_MAX_OBJECTS_<name>, and the frame a pass needs in this build, SCENE_MAX_VERTS_<name> and
- * SCENE_MAX_PRIMS_<name>: the wireframe columns where the build has wireframe (FW_WITH_WIREFRAME),
- * else the filled ones; SCENE_FILLED_VERTS/PRIMS_<name> and SCENE_WIRE_VERTS/PRIMS_<name> are the
+ * SCENE_MAX_PRIMS_<name>: the (emulated) wireframe columns where the build has wireframe and line
+ * emulation (FW_WITH_WIREFRAME, FW_WITH_LINE_EMULATION), else the filled ones; SCENE_FILLED_VERTS/PRIMS_<name> and SCENE_WIRE_VERTS/PRIMS_<name> are the
  * columns themselves. */
 enum scene_needs {
 #define SCENE(name, state, objects, verts, prims, wverts, wprims) \
     SCENE_STATE_BYTES_##name = (state), SCENE_MAX_OBJECTS_##name = (objects), \
     SCENE_FILLED_VERTS_##name = (verts), SCENE_FILLED_PRIMS_##name = (prims), \
     SCENE_WIRE_VERTS_##name = (wverts), SCENE_WIRE_PRIMS_##name = (wprims), \
-    SCENE_MAX_VERTS_##name = FW_WITH_WIREFRAME ? (wverts) : (verts), \
-    SCENE_MAX_PRIMS_##name = FW_WITH_WIREFRAME ? (wprims) : (prims),
+    SCENE_MAX_VERTS_##name = (FW_WITH_WIREFRAME && FW_WITH_LINE_EMULATION) ? (wverts) : (verts), \
+    SCENE_MAX_PRIMS_##name = (FW_WITH_WIREFRAME && FW_WITH_LINE_EMULATION) ? (wprims) : (prims),
 #include "scenes/scene_list.h"
 #undef SCENE
     SCENE_NEEDS_END
@@ -95,6 +95,8 @@ enum scene_event_kind {
     SCENE_EVENT_PLACED,   /* a block of type `block` was placed at x, y, z */
     SCENE_EVENT_NO_TARGET,/* place/break with nothing under the crosshair */
     SCENE_EVENT_BLOCK_TYPE,
+    SCENE_EVENT_MESH_FULL,/* a rebuilt mesh found no room: x chunks not drawn (storage: y faces,
+                           * z vertices) — an error line */
 };
 
 struct scene_event {

@@ -17,9 +17,10 @@
  *   verts    frame vertices one filled pass can need: the visible objects' mesh vertices, the
  *            clipper's new ones, 4 for the crosshair
  *   prims    frame primitives one filled pass can need: triangles (a clipped face's fan), the
- *            crosshair's 2 lines
- *   wverts   the same for a wireframe pass, lines drawn by the GPU or emulated (4 vertices and 2
- *   wprims   triangles per edge, the larger): what a build with FW_WITH_WIREFRAME reserves
+ *            crosshair's 2 lines. A wireframe pass with GPU lines needs exactly these two (one
+ *            outline primitive per triangle, render.h)
+ *   wverts   the same for a wireframe pass with emulated lines (4 vertices and 2 triangles per
+ *   wprims   edge): what a build with FW_WITH_WIREFRAME and FW_WITH_LINE_EMULATION reserves
  * A frame that would need more drops the rest and counts it (render_stats.dropped: the frame
  * loop prints an error line); test_scene_capacities (tests/firmware/test_scene.c) drives every
  * scene through camera sweeps in filled, wireframe (GPU lines and emulated) and anaglyph passes,
@@ -27,7 +28,7 @@
  *
  *     name       state   objects  verts  prims  wverts  wprims */
 SCENE(tetra,        320,     1,      32,    21,    140,     54)
-SCENE(cubes,        384,    64,     640,   512,   5376,   2432)
-SCENE(landscape,  64768,    16,    1536,  2304,  29120,  13824)
-SCENE(voxel,     322752,     8,    2048,  2048,  17024,   7808)
-SCENE(knot,      140160,     1,    2880,  2816,  36480,  16832)
+SCENE(cubes,        448,    64,     640,   512,   5376,   2432)
+SCENE(landscape,  65152,    16,    1536,  2304,  29120,  13824)
+SCENE(voxel,      65088,     8,    2048,  2048,  17024,   7808)
+SCENE(knot,       45312,     1,    2880,  2816,  36480,  16832)

@@ -14,8 +14,9 @@
  *                                      the largest column of the listed scenes (scene_list.h)
  *   scene_set_attach(scene, frame)     gives a scene and a frame this program's storage
  * The storage is static: SCENE_SET_STATE_BYTES of scene state, SCENE_SET_OBJECTS objects, a
- * frame of SCENE_SET_VERTS vertices and SCENE_SET_PRIMS primitives (a pass's needs: the wireframe
- * columns in a build with FW_WITH_WIREFRAME, else the filled ones).
+ * frame of SCENE_SET_VERTS vertices and SCENE_SET_PRIMS primitives (a pass's needs: the emulated
+ * wireframe's columns in a build with FW_WITH_WIREFRAME and FW_WITH_LINE_EMULATION, else the filled
+ * ones, which a wireframe with GPU lines needs exactly: render.h).
  */
 #ifndef SCENE_SET_H
 #define SCENE_SET_H
@@ -39,13 +40,13 @@ union scene_set_objects_max {
 };
 union scene_set_verts_max {
 #define SCENE(name, state, objects, verts, prims, wverts, wprims) \
-    unsigned char name[FW_WITH_WIREFRAME ? (wverts) : (verts)];
+    unsigned char name[(FW_WITH_WIREFRAME && FW_WITH_LINE_EMULATION) ? (wverts) : (verts)];
 #include "scenes/scene_list.h"
 #undef SCENE
 };
 union scene_set_prims_max {
 #define SCENE(name, state, objects, verts, prims, wverts, wprims) \
-    unsigned char name[FW_WITH_WIREFRAME ? (wprims) : (prims)];
+    unsigned char name[(FW_WITH_WIREFRAME && FW_WITH_LINE_EMULATION) ? (wprims) : (prims)];
 #include "scenes/scene_list.h"
 #undef SCENE
 };

@@ -3,8 +3,10 @@
 #
 #   fw_size.sh [--check] DIR SCENE...
 #
-# DIR holds <scene>.elf (the one-scene build, FW_SCENE_SET=one: what a chip runs) for every SCENE,
-# <scene>-nowire.elf (the same without the wireframe, FW_WITH_WIREFRAME=0, whose frame needs only
+# DIR holds <scene>.elf (the one-scene build, FW_SCENE_SET=one, without line emulation,
+# FW_WITH_LINE_EMULATION=0: what a chip whose GPU draws lines runs) for every SCENE,
+# <scene>-emul.elf (the same with line emulation, whose frame needs the emulated wireframe's columns:
+# shown when present, not checked), <scene>-nowire.elf (the same without the wireframe, FW_WITH_WIREFRAME=0, whose frame needs only
 # the filled columns: shown when present, not checked) and all-<scene>.elf (the all-scene build of
 # the default scene, for comparison). Per image:
 # text (.init .text .rodata ...: every allocated read-only section), data (.data .sdata, which a
@@ -99,6 +101,11 @@ for s in "$@"; do
         target=$TARGET_OTHER
     fi
     row "$s" "$dir/$s.elf" "$target"
+    if [ -f "$dir/$s-emul.elf" ]; then
+        keep=$fail
+        row "$s, line emulation" "$dir/$s-emul.elf" "$target"
+        fail=$keep  # shown for comparison
+    fi
     if [ -f "$dir/$s-nowire.elf" ]; then
         keep=$fail
         row "$s, no wireframe" "$dir/$s-nowire.elf" "$target"

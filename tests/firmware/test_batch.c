@@ -3,6 +3,7 @@
  * once and in draw order, each batch's vertex words and renumbered indices decoding back to the
  * frame's vertices, shared vertices written once per batch.
  */
+#include <stdbool.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -51,7 +52,7 @@ static void build_grid(struct mesh *m, vec3 *v, struct mesh_face *f, uvec3 *nrm,
     mesh_finish(m);
 }
 
-static void render_grid(int n)
+static void render_grid_pass(int n, bool wireframe)
 {
     static struct mesh m;
     static vec3 v[41 * 41];
@@ -68,6 +69,7 @@ static void render_grid(int n)
     view.rot = mat3_identity();
     view.eye = v3(0, 0, 0);
     render_pass_init(&pass, &ps, &view, &id, v3(0, 0, 0), u3(0, 0, -1), 4);
+    pass.wireframe = wireframe;
     o.mesh = &m;
     o.rot = mat3_identity();
     o.pos = v3(0, 0, 0);
@@ -78,6 +80,11 @@ static void render_grid(int n)
     render_object(&frame, &pass, &o);
     render_sort(&frame);
     render_overlay_crosshair(&frame, &pass, 4, PAL_WHITE);
+}
+
+static void render_grid(int n)
+{
+    render_grid_pass(n, false);
 }
 
 /* Run all batches with the given capacities and check everything about them. */
@@ -160,4 +167,62 @@ void test_batch_shares_vertices(void)
     batch_fill(&cur, &frame, GPU_VTX_CAP, GPU_TRI_CAP, &words);
     CHECK_EQ(words.prim_count, 0);
     CHECK(batch_done(&cur, &frame));
+}
+
+/* A wireframe frame with GPU lines: each outline primitive becomes its edges' LINE primitives
+ * (three per triangle here), never split across batches, however small the batches are; every
+ * line's vertices decode back to the outline's. */
+void test_batch_outlines(void)
+{
+    static const uint32_t caps[][2] = {{GPU_VTX_CAP, GPU_TRI_CAP}, {30, 7}, {3, 1}, {3, 3}};
+
+    render_grid_pass(10, true);  /* 200 outlines, plus the crosshair's 2 lines */
+    CHECK_EQ(frame.prim_count, 202);
+    CHECK_EQ(frame.outline_count, 200);
+    for (uint32_t c = 0; c < sizeof caps / sizeof caps[0]; c++) {
+        struct batch_cursor cur;
+        uint32_t lines = 0;
+        uint32_t next = 0;
+
+        batch_begin(&cur);
+        do {
+            uint32_t i = 0;
+
+            batch_fill(&cur, &frame, caps[c][0], caps[c][1], &words);
+            CHECK(words.prim_count >= 1u);
+            CHECK(words.prim_count <= ((caps[c][1] < 3u) ? 3u : caps[c][1]));
+            CHECK(words.vtx_count <= ((caps[c][0] < 3u) ? 3u : caps[c][0]));
+            /* Walk the frame's primitives this batch took, matching its lines in order. */
+            while (next < cur.next) {
+                const struct render_prim *p = &frame.prim[render_draw_index(&frame, next)];
+                const uint32_t edges = ((p->kind & RENDER_PRIM_OUTLINE) != 0u)
+                                           ? (p->kind & RENDER_PRIM_OUTLINE_EDGES) : 0u;
+
+                for (uint32_t k = 0; k < 3u; k++) {
+                    const uint32_t *pw = &words.prim[i * GPU_PRIM_WORDS];
+                    const uint32_t a = pw[0] & 0xFFFFu;
+                    const uint32_t b = pw[0] >> 16;
+
+                    if (edges != 0u && (edges & (1u << k)) == 0u) {
+                        continue;
+                    }
+                    CHECK(i < words.prim_count);
+                    CHECK_EQ(pw[1] >> GPU_PRIM_KIND_LSB, GPU_PRIM_KIND_LINE);
+                    CHECK_EQ((pw[1] >> GPU_PRIM_COLOR_LSB) & GPU_PRIM_COLOR_MASK, p->color);
+                    if (edges != 0u) {
+                        CHECK_EQ(words.vtx[a * GPU_VTX_WORDS], frame.vert[p->v[k]].sxy);
+                        CHECK_EQ(words.vtx[b * GPU_VTX_WORDS], frame.vert[p->v[(k + 1u) % 3u]].sxy);
+                    }
+                    i++;
+                    lines++;
+                    if (edges == 0u) {
+                        break;  /* a plain LINE primitive (the crosshair) */
+                    }
+                }
+                next++;
+            }
+            CHECK_EQ(i, words.prim_count);
+        } while (!batch_done(&cur, &frame));
+        CHECK_EQ(lines, 200u * 3u + 2u);
+    }
 }

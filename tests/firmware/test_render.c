@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "gpu/batch.h"
 #include "render/palette.h"
 #include "render/render.h"
 #include "test_util.h"
@@ -365,12 +366,50 @@ void test_render_painter_order(void)
     }
 }
 
-/* Wireframe: three GPU lines per front face; without GPU lines, each edge becomes two thin
- * triangles on four new vertices; back faces draw nothing either way. */
+/* The GPU LINE primitives batch.c makes of the frame (in draw order), as (from, to) pairs of
+ * frame vertices: a batch's slots mapped back through the vertices' positions. */
+static uint32_t wire_lines(uint32_t lines[][2], uint32_t max)
+{
+    static uint32_t vtx[GPU_VTX_CAP * GPU_VTX_WORDS];
+    static uint32_t prim[GPU_TRI_CAP * GPU_PRIM_WORDS];
+    struct batch_words w = {vtx, prim, 0, 0};
+    struct batch_cursor cur;
+    uint32_t n = 0;
+
+    batch_begin(&cur);
+    while (!batch_done(&cur, &frame)) {
+        batch_fill(&cur, &frame, GPU_VTX_CAP, GPU_TRI_CAP, &w);
+        for (uint32_t i = 0; i < w.prim_count && n < max; i++) {
+            const uint32_t *pw = &prim[i * GPU_PRIM_WORDS];
+            const uint32_t slot[2] = {pw[0] & 0xFFFFu, pw[0] >> 16};
+
+            CHECK_EQ(pw[1] >> GPU_PRIM_KIND_LSB, GPU_PRIM_KIND_LINE);
+            CHECK_EQ(pw[1] & 0xFFFFu, slot[1]);  /* I2 repeats I1 */
+            for (int k = 0; k < 2; k++) {
+                uint32_t v = 0;
+
+                while (v < frame.vert_count && frame.vert[v].sxy != vtx[slot[k] * GPU_VTX_WORDS]) {
+                    v++;
+                }
+                lines[n][k] = v;
+            }
+            n++;
+        }
+    }
+    return n;
+}
+
+/* Wireframe: with GPU lines, one outline primitive per front triangle (the frame a filled pass
+ * needs), which the batch expands into its three lines, a closed loop; a clipped polygon's fan
+ * outlines the polygon only (n lines for n vertices, no inner diagonal). Without GPU lines, each
+ * edge becomes two thin triangles on four new vertices; back faces draw nothing either way. */
 void test_render_wireframe(void)
 {
     static struct tri_mesh t;
+    static struct tri_mesh floor;
     struct render_pass pass;
+    uint32_t lines[64][2];
+    uint32_t n;
 
     setup_pass(&pass);
     tri_mesh_init(&t);
@@ -381,19 +420,40 @@ void test_render_wireframe(void)
     pass.gpu_lines = true;
     begin();
     draw(&pass, &t.m, v3(0, 0, 0), 0);
-    CHECK_EQ(frame.prim_count, 3);
-    for (uint32_t i = 0; i < 3; i++) {
-        CHECK_EQ(frame.prim[i].kind, GPU_PRIM_KIND_LINE);
-    }
-    CHECK_EQ(frame.prim[0].v[1], frame.prim[1].v[0]);  /* a closed outline */
-    CHECK_EQ(frame.prim[2].v[1], frame.prim[0].v[0]);
+    CHECK_EQ(frame.prim_count, 1);
+    CHECK_EQ(frame.outline_count, 1);
+    CHECK_EQ(frame.prim[0].kind, RENDER_PRIM_OUTLINE | 0x07u);
     CHECK_EQ(frame.stats.faces_back, 1);
+    render_sort(&frame);
+    n = wire_lines(lines, 64);
+    CHECK_EQ(n, 3);
+    for (uint32_t i = 0; i < 3; i++) {
+        CHECK_EQ(lines[i][0], frame.prim[0].v[i]);
+        CHECK_EQ(lines[i][1], lines[(i + 1u) % 3u][0]);  /* a closed outline */
+    }
+
+    /* A floor crossing the near plane: each face clipped to a polygon, outlined edge by edge. */
+    tri_mesh_init(&floor);
+    tri_mesh_add(&floor, v3(-2, -1, -3), v3(-2, -1, 10), v3(2, -1, 10), MAT_GREEN);
+    mesh_finish(&floor.m);
+    begin();
+    draw(&pass, &floor.m, v3(0, 0, 0), 0);
+    CHECK_EQ(frame.stats.faces_clipped, 1);
+    CHECK(frame.prim_count >= 2u);  /* a fan: the polygon has 4 or more vertices */
+    render_sort(&frame);
+    n = wire_lines(lines, 64);
+    CHECK_EQ(n, frame.prim_count + 2u);  /* n - 2 triangles outline n edges */
+    for (uint32_t i = 0; i < n; i++) {
+        CHECK_EQ(lines[i][1], lines[(i + 1u) % n][0]);  /* one closed loop, in order */
+        CHECK(lines[i][0] != lines[i][1]);
+    }
 
     pass.gpu_lines = false;
     begin();
     draw(&pass, &t.m, v3(0, 0, 0), 0);
     CHECK_EQ(frame.prim_count, 6);
     CHECK_EQ(frame.vert_count, 6u + 12u);
+    CHECK_EQ(frame.outline_count, 0);
     for (uint32_t i = 0; i < 6; i++) {
         const struct render_prim *p = &frame.prim[i];
 

@@ -46,13 +46,14 @@ static void check_mesh(const struct mesh *m, const struct render_object *o)
         CHECK(rd(vec3_length(vec3_sub(m->verts[i], m->center))) <= rd(m->radius));
     }
     for (uint32_t i = 0; i < m->normal_count; i++) {
-        const uvec3 n = m->normals[i];
+        const uvec3 n = mesh_normal(m, i);
         const double len = sqrt(ud(n.x) * ud(n.x) + ud(n.y) * ud(n.y) + ud(n.z) * ud(n.z));
 
         CHECK(fabs(len - 1.0) < 1e-3);
     }
     for (uint32_t i = 0; i < m->face_count; i++) {
-        const struct mesh_face *f = &m->faces[i];
+        struct mesh_face tmp;
+        const struct mesh_face *f = mesh_face_at(m, i, &tmp);  /* grid meshes: implicit faces */
         uvec3 w;
         uvec3 s;
 
@@ -61,7 +62,7 @@ static void check_mesh(const struct mesh *m, const struct render_object *o)
         CHECK((f->material > 0u && f->material < MAT_ANAGLYPH_LEFT) || o->material != 0u);
         /* The winding's normal is the stored one: front faces keep a positive screen area. */
         w = vec3_triangle_normal(m->verts[f->v[0]], m->verts[f->v[1]], m->verts[f->v[2]]);
-        s = m->normals[f->normal];
+        s = mesh_normal(m, f->normal);
         CHECK(ud(w.x) * ud(s.x) + ud(w.y) * ud(s.y) + ud(w.z) * ud(s.z) > 0.99);
     }
 }
@@ -423,4 +424,78 @@ void test_scene_capacities(void)
         CHECK_EQ(fx_overflow_count(), 0);
         fx_overflow_clear();
     }
+}
+
+/*
+ * Voxel: the chunks share one pool (voxel_scene.h). The generated world needs exactly
+ * VOXEL_POOL_GEN_FACES faces and VOXEL_POOL_GEN_VERTS vertices (the README's argument quotes
+ * them), packed without gaps; an edit that makes the world need more than the pool leaves whole
+ * chunks out and says so (SCENE_EVENT_MESH_FULL), never draws half a chunk, and undoing it draws
+ * everything again.
+ */
+void test_scene_voxel_pool(void)
+{
+    struct voxel_scene_state *v = voxel_scene_state(&scene);
+    struct input_counts none;
+    struct scene_event ev;
+    uint32_t faces = 0;
+    uint32_t verts = 0;
+
+    CHECK(scene_start(&scene, scene_find("voxel")));
+    for (uint32_t i = 0; i < VOXEL_CHUNK_COUNT; i++) {
+        const struct mesh *m = &v->chunk[i].mesh;
+
+        CHECK(m->verts == &v->pool_verts[verts]);  /* packed in chunk order */
+        CHECK(m->faces == &v->pool_faces[faces]);
+        faces += m->face_count;
+        verts += m->vert_count;
+    }
+    printf("voxel pool: generated world %lu faces of %u, %lu vertices of %u\n",
+           (unsigned long)faces, VOXEL_POOL_FACES, (unsigned long)verts, VOXEL_POOL_VERTS);
+    CHECK_EQ(faces, VOXEL_POOL_GEN_FACES);
+    CHECK_EQ(verts, VOXEL_POOL_GEN_VERTS);
+    CHECK_EQ(v->left_out_mask, 0);
+
+    /* A 3-D checkerboard over the air above the terrain: far more faces than the pool holds. */
+    for (int32_t y = 10; y < VOXEL_NY; y++) {
+        for (int32_t z = 0; z < VOXEL_NZ; z++) {
+            for (int32_t x = 0; x < VOXEL_NX; x++) {
+                if (((x + y + z) & 1) == 0) {
+                    voxel_set(&v->world, x, y, z, BLOCK_STONE);
+                }
+            }
+        }
+    }
+    input_counts_clear(&none);
+    scene_update(&scene, &none, &ev);
+    CHECK_EQ(ev.kind, SCENE_EVENT_MESH_FULL);
+    CHECK(ev.x >= 1 && ev.x == __builtin_popcount(v->left_out_mask));
+    faces = 0;
+    for (uint32_t i = 0; i < VOXEL_CHUNK_COUNT; i++) {
+        const struct mesh *m = &v->chunk[i].mesh;
+
+        CHECK(!m->full);
+        if ((v->left_out_mask >> i) & 1u) {
+            CHECK_EQ(m->face_count, 0);  /* whole chunks left out */
+        }
+        faces += m->face_count;
+    }
+    CHECK(faces <= VOXEL_POOL_FACES);
+    /* Undo: everything fits and is drawn again, with no error. */
+    for (int32_t y = 10; y < VOXEL_NY; y++) {
+        for (int32_t z = 0; z < VOXEL_NZ; z++) {
+            for (int32_t x = 0; x < VOXEL_NX; x++) {
+                voxel_set(&v->world, x, y, z, BLOCK_AIR);
+            }
+        }
+    }
+    voxel_generate(&v->world);
+    scene_update(&scene, &none, &ev);
+    CHECK(ev.kind != SCENE_EVENT_MESH_FULL);
+    CHECK_EQ(v->left_out_mask, 0);
+    faces = 0;
+    for (uint32_t i = 0; i < VOXEL_CHUNK_COUNT; i++) {
+        faces += v->chunk[i].mesh.face_count;
+    }
+    CHECK_EQ(faces, VOXEL_POOL_GEN_FACES);
 }

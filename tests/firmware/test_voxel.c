@@ -14,6 +14,8 @@
 static struct voxel_world world;
 static struct voxel_chunk chunk;
 static uint16_t grid[VOXEL_CHUNK_MAX_VERTS];
+static vec3 chunk_verts[VOXEL_CHUNK_MAX_VERTS];            /* one chunk's worst case */
+static struct mesh_face chunk_faces[VOXEL_CHUNK_MAX_FACES];
 
 static void clear_world(void)
 {
@@ -23,6 +25,8 @@ static void clear_world(void)
 static void build(int cx, int cy, int cz)
 {
     voxel_chunk_init(&chunk, cx, cy, cz);
+    voxel_chunk_attach(&chunk, chunk_verts, VOXEL_CHUNK_MAX_VERTS, chunk_faces,
+                       VOXEL_CHUNK_MAX_FACES);
     voxel_build_chunk(&world, cx, cy, cz, &chunk, grid);
 }
 

@@ -95,6 +95,7 @@ void unit_srand(uint32_t seed);
     X(test_render_inside_shortcut)    \
     X(test_batch_split_and_renumber)  \
     X(test_batch_shares_vertices)     \
+    X(test_batch_outlines)            \
     X(test_voxel_hidden_faces)        \
     X(test_voxel_chunk_border)        \
     X(test_voxel_worst_case)          \
@@ -108,6 +109,7 @@ void unit_srand(uint32_t seed);
     X(test_scene_sizes)               \
     X(test_scene_frames)              \
     X(test_scene_voxel_place_break)   \
+    X(test_scene_voxel_pool)          \
     X(test_gpu_native_words)          \
     X(test_gpu_init_checks)           \
     X(test_gpu_init_first_tag)        \

@@ -242,8 +242,8 @@ static void make_frame(struct reader *r)
     const uint32_t np = take16(r) % 3000u;
 
     /* As render_frame_begin and the projection leave it (every new vertex has stamp 0), except
-     * that the frame's stamp counter starts anywhere, so its wrap past 65535 is exercised. */
-    frame.batch_stamp = (uint16_t)(0xFFFFu - take8(r));
+     * that the frame's stamp counter starts anywhere, so its wrap past 255 is exercised. */
+    frame.batch_stamp = (uint8_t)(0xFFu - (take8(r) & 0x0Fu));
     frame.vert_count = nv;
     for (uint32_t i = 0; i < nv; i++) {
         /* Signed, but within a pixel or two of the origin: the model then rejects or draws

@@ -2,6 +2,9 @@
 # Features that depend on how the GPU was built, and runtime scene switching:
 #  1. A GPU without line primitives (CAPS_LINES = 0): wireframe still works, edges drawn as thin
 #     triangle pairs; no GPU error (a LINE primitive would set ERR_KIND and stop the firmware).
+#     A build without line emulation (FW_LINE_EMULATION=0, a chip's) refuses the wireframe on such
+#     a GPU, with a message, and draws on; with GPU lines its wireframe frames equal the default
+#     build's (the same outline primitives and lines).
 #  2. A GPU with the depth buffer (the RTL built with ENABLE_ZBUF, $BUILD/sim-z-w8): Z turns the
 #     depth test on; co-simulation and the host build (model with --zbuf) agree on every frame.
 #  3. Keys 1-5 switch scenes while running.
@@ -11,7 +14,7 @@ source "$(dirname "$0")/../lib.sh"
 need BUILD
 dir="$BUILD/fw-test"
 zsim="$BUILD/sim-z-w8/gpusim"
-need_file "$dir/host-voxel" "$dir/host-knot" "$dir/host-tetra" "$dir/knot.elf" "$zsim"
+need_file "$dir/host-voxel" "$dir/host-voxel-chip" "$dir/host-knot" "$dir/host-tetra" "$dir/knot.elf" "$zsim"
 work=$(fresh_dir scene-host-features)
 
 # 1. no lines
@@ -25,6 +28,18 @@ p_lines=$(grep '^frame 3:' "$work/lines.log" | sed -E 's/.*prims ([0-9]+).*/\1/'
 p_tris=$(grep '^frame 3:' "$work/nolines.log" | sed -E 's/.*prims ([0-9]+).*/\1/')
 expect_eq "$p_tris" $((2 * p_lines)) "primitives without lines (two triangles per line)"
 echo "no-lines: wireframe as $p_tris triangles instead of $p_lines lines"
+"$dir/host-voxel-chip" --no-lines --frames "$work/chip-nolines" --keys-at 2:f >"$work/chip-nolines.log"
+expect_line "line emulation is not built in" "$work/chip-nolines.log"
+if grep -q "^wireframe on" "$work/chip-nolines.log"; then
+    fail "a build without line emulation turned the wireframe on on a GPU without lines"
+fi
+expect_eq "$(count '^frame ' "$work/chip-nolines.log")" 4 "frames of the chip build without GPU lines"
+"$dir/host-voxel-chip" --frames "$work/chip-lines" --keys-at 2:f >"$work/chip-lines.log"
+expect_line "^wireframe on" "$work/chip-lines.log"
+for f in "$work"/lines/*; do
+    cmp -s "$f" "$work/chip-lines/$(basename "$f")" ||
+        fail "chip build (no line emulation) frame $(basename "$f") differs from the default build's"
+done
 
 # 2. depth buffer, co-simulated against the host build
 run_to "$work/z-cosim.out" 300 "$zsim" cosim --fw "$dir/knot.elf" --frames "$work/z-cosim" \

@@ -15,19 +15,59 @@ static const char *const voxel_block_names[BLOCK_TYPES] = {
     "air", "grass", "dirt", "stone", "sand", "wood", "leaves",
 };
 
-static void voxel_rebuild_dirty(struct voxel_scene_state *v)
+/*
+ * Rebuild the chunks from the first dirty one on, packed into the pool in chunk order after the
+ * chunks before it (which keep their place): a chunk's size changes with an edit, so every later
+ * one moves. A chunk that does not fit the rest of the pool is left out (an empty mesh: not
+ * drawn), marked in left_out_mask and reported through ev; later chunks still get their turn.
+ */
+static void voxel_rebuild_dirty(struct voxel_scene_state *v, struct scene_event *ev)
 {
-    for (int32_t cy = 0; cy < VOXEL_CHUNKS_Y; cy++) {
-        for (int32_t cz = 0; cz < VOXEL_CHUNKS_Z; cz++) {
-            for (int32_t cx = 0; cx < VOXEL_CHUNKS_X; cx++) {
-                const uint32_t i = voxel_chunk_index(cx, cy, cz);
+    uint32_t first = 0;
+    uint32_t vert_at = 0;
+    uint32_t face_at = 0;
+    uint32_t left_out = 0;
 
-                if (v->world.chunk_dirty[i]) {
-                    voxel_build_chunk(&v->world, cx, cy, cz, &v->chunk[i], v->grid_index);
-                    v->world.chunk_dirty[i] = false;
-                }
-            }
+    while (first < VOXEL_CHUNK_COUNT && !v->world.chunk_dirty[first]) {
+        first++;
+    }
+    if (first == VOXEL_CHUNK_COUNT) {
+        return;
+    }
+    if (first > 0u) {
+        const struct mesh *prev = &v->chunk[first - 1u].mesh;
+
+        /* Where the previous chunk's storage ends (an empty one began where it would have). */
+        vert_at = (uint32_t)(prev->verts - v->pool_verts) + prev->vert_count;
+        face_at = (uint32_t)(prev->faces - v->pool_faces) + prev->face_count;
+    }
+    for (uint32_t i = first; i < VOXEL_CHUNK_COUNT; i++) {
+        struct voxel_chunk *c = &v->chunk[i];
+        const int32_t cx = (int32_t)(i % VOXEL_CHUNKS_X);
+        const int32_t cz = (int32_t)((i / VOXEL_CHUNKS_X) % VOXEL_CHUNKS_Z);
+        const int32_t cy = (int32_t)(i / (VOXEL_CHUNKS_X * VOXEL_CHUNKS_Z));
+
+        voxel_chunk_attach(c, &v->pool_verts[vert_at], VOXEL_POOL_VERTS - vert_at,
+                           &v->pool_faces[face_at], VOXEL_POOL_FACES - face_at);
+        voxel_build_chunk(&v->world, cx, cy, cz, c, v->grid_index);
+        v->left_out_mask = (uint8_t)(v->left_out_mask & ~(1u << i));
+        if (c->mesh.full) {
+            mesh_clear(&c->mesh);  /* left out whole, never drawn half */
+            v->left_out_mask = (uint8_t)(v->left_out_mask | (1u << i));
         }
+        vert_at += c->mesh.vert_count;
+        face_at += c->mesh.face_count;
+        v->world.chunk_dirty[i] = false;
+    }
+    /* Chunks before `first` were not rebuilt: any left out before stay so until they are. */
+    for (uint32_t i = 0; i < VOXEL_CHUNK_COUNT; i++) {
+        left_out += (v->left_out_mask >> i) & 1u;
+    }
+    if (left_out != 0u && ev != 0) {
+        ev->kind = SCENE_EVENT_MESH_FULL;
+        ev->x = (int32_t)left_out;
+        ev->y = (int32_t)VOXEL_POOL_FACES;
+        ev->z = (int32_t)VOXEL_POOL_VERTS;
     }
 }
 
@@ -48,7 +88,8 @@ static void voxel_scene_init(struct scene *s)
             }
         }
     }
-    voxel_rebuild_dirty(v);
+    v->left_out_mask = 0;
+    voxel_rebuild_dirty(v, 0);
     v->place_block = BLOCK_STONE;
     s->crosshair = true;
     cfg.box_min = vec3_make(REAL_C(-32), REAL_C(-16), REAL_C(-32));
@@ -117,7 +158,7 @@ static void voxel_scene_update(struct scene *s, const struct input_counts *keys,
         ev->z = hit.pz;
         ev->block_name = voxel_block_names[v->place_block];
     }
-    voxel_rebuild_dirty(v);
+    voxel_rebuild_dirty(v, ev);
 }
 
 const struct scene_desc scene_voxel_desc = {

@@ -113,10 +113,15 @@ uint8_t voxel_face_material(uint8_t block, uint32_t face)
 
 void voxel_chunk_init(struct voxel_chunk *c, int32_t cx, int32_t cy, int32_t cz)
 {
-    mesh_init(&c->mesh, c->verts, VOXEL_CHUNK_MAX_VERTS, c->faces, VOXEL_CHUNK_MAX_FACES,
-              c->normals, 6);
+    voxel_chunk_attach(c, 0, 0, 0, 0);
     c->origin = vec3_make(real_from_int(cx * VOXEL_CHUNK), real_from_int(cy * VOXEL_CHUNK),
                           real_from_int(cz * VOXEL_CHUNK));
+}
+
+void voxel_chunk_attach(struct voxel_chunk *c, vec3 *verts, uint32_t vert_cap,
+                        struct mesh_face *faces, uint32_t face_cap)
+{
+    mesh_init(&c->mesh, verts, vert_cap, faces, face_cap, c->normals, 6);
 }
 
 /* Grid corner (chunk-local, 0 .. 8 per axis) -> mesh vertex, created on first use. */

@@ -54,10 +54,11 @@ struct voxel_world {
     bool chunk_dirty[VOXEL_CHUNK_COUNT];
 };
 
+/* A chunk's mesh. Its vertices and faces live in storage the caller attaches
+ * (voxel_chunk_attach): the scene packs every chunk into one pool sized for the world's realistic
+ * need (voxel_scene.h), not each for its worst case (VOXEL_CHUNK_MAX_*: 39 KiB a chunk). */
 struct voxel_chunk {
     struct mesh mesh;
-    vec3 verts[VOXEL_CHUNK_MAX_VERTS];
-    struct mesh_face faces[VOXEL_CHUNK_MAX_FACES];
     uvec3 normals[6];
     vec3 origin;  /* world position of the chunk's corner */
 };
@@ -81,9 +82,13 @@ static inline bool voxel_inside(int32_t x, int32_t y, int32_t z)
 /* Rolling terrain (stone, dirt, grass, sand) with two trees; all chunks dirty. Deterministic. */
 void voxel_generate(struct voxel_world *w);
 
-/* Empty chunk cx, cy, cz's mesh arrays and set its origin. Call once before building. */
+/* Set chunk cx, cy, cz's origin and give it no storage yet. Call once before building. */
 void voxel_chunk_init(struct voxel_chunk *c, int32_t cx, int32_t cy, int32_t cz);
-/* Rebuild chunk (cx, cy, cz) from the world. grid_index is scratch of VOXEL_CHUNK_MAX_VERTS. */
+/* Give the chunk's mesh vert_cap vertices and face_cap faces of storage, and empty it. */
+void voxel_chunk_attach(struct voxel_chunk *c, vec3 *verts, uint32_t vert_cap,
+                        struct mesh_face *faces, uint32_t face_cap);
+/* Rebuild chunk (cx, cy, cz) from the world into its attached storage (mesh.full when it did not
+ * fit: the mesh is then incomplete). grid_index is scratch of VOXEL_CHUNK_MAX_VERTS. */
 void voxel_build_chunk(const struct voxel_world *w, int32_t cx, int32_t cy, int32_t cz,
                        struct voxel_chunk *c, uint16_t *grid_index);
 /* Chunk number of chunk coordinates (x fastest). */
