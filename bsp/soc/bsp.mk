@@ -9,6 +9,8 @@ include bsp/soc/soc_ram.mk
 
 # A chip build holds its boot scene only (firmware.mk FW_SCENE_SET): 192 KiB are not enough for all.
 FW_SCENE_SET ?= one
+# The SoC's GPU draws lines (CAPS_LINES, the contract's default): no room for emulated ones.
+FW_LINE_EMULATION ?= 0
 
 FW_CC         = $(RV_CC)
 FW_OBJDUMP    = $(patsubst %gcc,%objdump,$(RV_CC))

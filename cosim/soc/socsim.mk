@@ -7,7 +7,7 @@
 #   run-soc        `make run PLATFORM=soc [SCENE=… FRAMES=…]`: the soc firmware of SCENE (a
 #                  recursive make with FW_PLATFORM=soc) on socsim -> $(OUT)/frames, $(OUT)/uart.log
 #   soc-fw         that firmware only; soc-fw-test: the FW_TEST_FRAMES builds of every scene
-#   bench-soc      per scene that fits: instructions, cycles, CPI, refills, GPU cycles, fps (tools/bench_soc.py)
+#   bench-soc      per scene: instructions, cycles, CPI, refills, GPU cycles, fps (tools/bench_soc.py)
 #
 # The RTL's sources and flags come from soc_rtl/soc.mk (SOC_VFLAGS: gpu_rtl/files.f, the core from
 # the venv, soc_rtl/files.f, their lint waivers), included before this file.
@@ -56,20 +56,13 @@ run-soc: $(SOCSIM) soc-fw
 
 # What tests/soc/*.sh need: socsim and the soc test programs (tests/soc/tests.mk); the suites
 # comparing with co-simulation also use make test's QEMU builds. make test builds them too.
-# landscape fits the 192 KiB only without the wireframe (firmware.mk's fw-size table): its test
-# build comes from a tree of its own built with FW_WITH_WIREFRAME=0 (objects are per tree).
-SOC_NOWIRE_BUILD := $(BUILD)/soc-nowire
 soc-test-deps: $(SOCSIM)
 	+@$(SOC_FW_MAKE) -f Makefile -f tests/soc/tests.mk soc-test-elfs
-	+@$(SOC_FW_MAKE) BUILD=$(SOC_NOWIRE_BUILD) FW_DEFS=-DFW_WITH_WIREFRAME=0 -f Makefile -f tests/soc/tests.mk \
-	  $(SOC_NOWIRE_BUILD)/fw-test-soc/landscape-2f.elf
 test-quick: soc-test-deps
 
-# The benchmark builds (firmware.mk's FW_BENCH_FRAMES frames) of the scenes that fit the SoC: tetra,
-# cubes, and landscape without the wireframe; each on socsim, one table (tools/bench_soc.py).
-SOC_BENCH_ELFS := tetra=$(BUILD)/fw-bench-soc/tetra.elf cubes=$(BUILD)/fw-bench-soc/cubes.elf \
-                  landscape=$(SOC_NOWIRE_BUILD)/fw-bench-soc/landscape.elf
+# The benchmark builds (firmware.mk's FW_BENCH_FRAMES frames) of every scene, each on socsim, one
+# table (tools/bench_soc.py).
+SOC_BENCH_ELFS := $(foreach s,$(FW_SCENES),$(s)=$(BUILD)/fw-bench-soc/$(s).elf)
 bench-soc: $(SOCSIM)
-	+@$(SOC_FW_MAKE) $(BUILD)/fw-bench-soc/tetra.elf $(BUILD)/fw-bench-soc/cubes.elf
-	+@$(SOC_FW_MAKE) BUILD=$(SOC_NOWIRE_BUILD) FW_DEFS=-DFW_WITH_WIREFRAME=0 $(SOC_NOWIRE_BUILD)/fw-bench-soc/landscape.elf
+	+@$(SOC_FW_MAKE) $(foreach s,$(FW_SCENES),$(BUILD)/fw-bench-soc/$(s).elf)
 	@$(PYTHON) tools/bench_soc.py --socsim $(SOCSIM) --out $(BUILD)/bench-soc $(SOC_BENCH_ELFS)

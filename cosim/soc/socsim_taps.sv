@@ -48,7 +48,8 @@ module socsim_gpu_tap (
 endmodule
 
 module socsim_cpu_tap #(
-    parameter [31:0] UART_DATA_ADDR = 32'h8100_0000  // soc_map.h SOC_UART_BASE + SOC_UART_REG_DATA
+    // The memory map's UART DATA register (contract/soc_map.toml, through soc_pkg).
+    parameter [31:0] UART_DATA_ADDR = soc_pkg::SOC_UART_BASE + 32'(soc_pkg::SOC_UART_REG_DATA)
 ) (
     input wire        clk,
     input wire        i_cyc,        // iBusWishbone_*

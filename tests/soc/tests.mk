@@ -1,7 +1,7 @@
 # tests/soc/tests.mk — the soc test programs, built by a recursive make for FW_PLATFORM=soc
 # (`make soc-test-deps`, cosim/soc/socsim.mk: `$(MAKE) FW_PLATFORM=soc -f Makefile -f
 # tests/soc/tests.mk soc-test-elfs`), so that the platform's flags and objects are firmware.mk's:
-#   $(SOC_TEST_DIR)/<scene>.elf            the FW_TEST_FRAMES builds (firmware.mk's) of SOC_FIT_SCENES
+#   $(SOC_TEST_DIR)/<scene>.elf            the FW_TEST_FRAMES builds (firmware.mk's) of every scene
 #   $(SOC_TEST_DIR)/<scene>-2f.elf         the same with SOC_SHORT_FRAMES (2) frames: a scene whose
 #                                          start-up costs millions of simulated cycles (landscape
 #                                          builds its terrain) is compared on fewer frames
@@ -38,10 +38,7 @@ $(eval $(call SOC_TEST_PROGRAM,bus_error,))
 $(eval $(call SOC_TEST_PROGRAM,poll_cycles,$(SOC_DRIVER_OBJ)))
 
 .PHONY: soc-test-elfs
-# The scenes whose full build fits the default 192 KiB (`make fw-size`); landscape fits without the
-# wireframe and is built so by cosim/soc/socsim.mk (soc-test-deps) in a tree of its own; voxel and
-# knot do not fit.
-SOC_FIT_SCENES := tetra cubes
-soc-test-elfs: $(foreach s,$(SOC_FIT_SCENES),$(SOC_TEST_DIR)/$(s).elf $(SOC_TEST_DIR)/$(s)-2f.elf) \
+# Every scene's one-scene build fits the default 192 KiB (`make fw-size`, suite fw-fit).
+soc-test-elfs: $(foreach s,$(FW_SCENES),$(SOC_TEST_DIR)/$(s).elf $(SOC_TEST_DIR)/$(s)-2f.elf) \
                $(SOC_TEST_DIR)/tetra-watchdog-tiny.elf \
                $(SOC_TEST_DIR)/bus_error.elf $(SOC_TEST_DIR)/poll_cycles.elf

@@ -5,13 +5,13 @@
 # frame (socsim: also the registers the firmware reads after each batch) against the golden model; socsim's PNG files must be byte-identical to co-simulation's of the
 # same names, and the keys must have arrived whole before the firmware read them (keys_late 0).
 #
-# The scenes that fit the SoC's 192 KiB (firmware.mk's `make fw-size`): tetra, cubes, and landscape
-# built without the wireframe (FW_WITH_WIREFRAME=0, the F key's outlines: never pressed here, so
-# its frames are those of the full build); voxel and knot do not fit, even without it, and are not
-# run. Co-simulation runs make test's FW_TEST_FRAMES (4) builds; on socsim tetra and cubes run
-# theirs, landscape its 2-frame build (tests/soc/tests.mk): its start-up alone is 10 M simulated
-# cycles (the terrain), and frames 0-1 already cover the keys (read at frame 1). Two scenes run at
-# a time. SOC_SCENES='tetra cubes' limits the scenes.
+# Every scene: their one-scene chip builds fit the SoC's 192 KiB (`make fw-size`, suite fw-fit).
+# Co-simulation runs make test's FW_TEST_FRAMES (4) builds (all scenes in one image, line emulation
+# compiled in: neither changes a frame, as no scene or wireframe key is pressed); on socsim tetra and
+# cubes run theirs, landscape, voxel and knot their 2-frame builds (tests/soc/tests.mk): their
+# start-up alone is millions of simulated cycles (terrain, chunk meshes, the knot's grid), and frames
+# 0-1 already cover the keys (read at frame 1). Two scenes run at a time. SOC_SCENES='tetra cubes'
+# limits the scenes.
 source "$(dirname "$0")/../lib.sh"
 source "$(dirname "$0")/soc_lib.sh"
 need GPUSIM BUILD
@@ -21,12 +21,11 @@ need_file "$socsim"
 keys='1:jjjw'
 work=$(fresh_dir soc-vs-cosim)
 # The slowest first, so that it overlaps the others.
-scenes=${SOC_SCENES:-landscape cubes tetra}
+scenes=${SOC_SCENES:-knot voxel landscape cubes tetra}
 
 soc_elf_of() {
     case "$1" in
     tetra | cubes) echo "$soc_test_dir/$1.elf" ;;
-    landscape) echo "$BUILD/soc-nowire/fw-test-soc/$1-2f.elf" ;;
     *) echo "$soc_test_dir/$1-2f.elf" ;;
     esac
 }
