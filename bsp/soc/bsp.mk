@@ -16,7 +16,7 @@ FW_CC         = $(RV_CC)
 FW_OBJDUMP    = $(patsubst %gcc,%objdump,$(RV_CC))
 FW_ARCH_FLAGS = -march=rv32im -misa-spec=2.2 -mabi=ilp32 -mcmodel=medlow --specs=picolibc.specs \
                 -DPICOLIBC_INTEGER_PRINTF_SCANF
-FW_BSP_SRCS   = $(wildcard bsp/soc/*.c)
+FW_BSP_SRCS   = $(wildcard bsp/soc/*.c) $(wildcard bsp/rv32/*.c)
 FW_LDSCRIPT   = linker/soc.ld
 # crt0 "hosted" calls exit(main()); the BSP's _exit() writes SYS EXIT.
 FW_BSP_LDFLAGS = --crt0=hosted -Wl,--no-warn-rwx-segments -Wl,--defsym=__ram_size=$(SOC_RAM_BYTES) \

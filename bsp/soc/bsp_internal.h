@@ -2,7 +2,8 @@
 #ifndef BSP_INTERNAL_H
 #define BSP_INTERNAL_H
 
+#include "rv32/trap.h"  /* bsp_trap_install and the platform's trap hooks */
+
 void bsp_uart_init(void);
-void bsp_trap_install(void);
 
 #endif /* BSP_INTERNAL_H */

@@ -1,13 +1,11 @@
 /*
- * uart.c — the SoC's UART (115200 8N1, contract/soc_map.h SOC_UART_*) and picolibc's
- * stdin/stdout/stderr on it.
+ * uart.c — the SoC's UART (115200 8N1, contract/soc_map.h SOC_UART_*), polled (picolibc's streams
+ * on it: rv32/stdio_uart.c).
  *
  * DATA: a write queues a TX byte (dropped when the TX FIFO is full, so putc waits on TX_FULL
- * first); a read returns [7:0] the byte and bit 8 "valid", popping it. Output is unbuffered and
- * '\n' is sent as is (no CR added) so a captured log compares byte for byte with a golden file.
+ * first); a read returns [7:0] the byte and bit 8 "valid", popping it.
  */
 #include <stdint.h>
-#include <stdio.h>
 
 #include "bsp.h"
 #include "bsp_internal.h"
@@ -35,27 +33,3 @@ int bsp_uart_getc_nonblock(void)
     }
     return (int)((d & SOC_UART_DATA_BYTE_MASK) >> SOC_UART_DATA_BYTE_LSB);
 }
-
-static int uart_stream_put(char c, FILE *stream)
-{
-    (void)stream;
-    bsp_uart_putc(c);
-    return (unsigned char)c;
-}
-
-static int uart_stream_get(FILE *stream)
-{
-    int c;
-
-    (void)stream;
-    do {
-        c = bsp_uart_getc_nonblock();
-    } while (c < 0);
-    return c;
-}
-
-static FILE uart_stream = FDEV_SETUP_STREAM(uart_stream_put, uart_stream_get, NULL, _FDEV_SETUP_RW);
-
-FILE *const stdin = &uart_stream;
-FILE *const stdout = &uart_stream;
-FILE *const stderr = &uart_stream;

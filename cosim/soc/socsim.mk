@@ -37,8 +37,9 @@ SOCSIM_CMD = $(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign
   -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
   --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1" --Mdir $(SOCSIM_DIR)/obj -o $(abspath $(SOCSIM))
 
+# Recorded without the job count: make test builds with VERILATOR_JOBS=1, then runs with the default.
 $(SOCSIM_DIR)/cmd.txt: fw-force
-	$(call fw_flags_file,$@,$(SOCSIM_CMD))
+	$(call fw_flags_file,$@,$(subst -j $(VERILATOR_JOBS) ,,$(SOCSIM_CMD)))
 
 $(SOCSIM): $(SOCSIM_DEPS) $(SOCSIM_DIR)/cmd.txt
 	@mkdir -p $(SOCSIM_DIR)
