@@ -7,6 +7,7 @@ sources of truth:
     gen_contract.py            write the six generated files
     gen_contract.py --check    exit 1 if any generated file differs from what is committed
 """
+import functools
 import pathlib
 import sys
 import tomllib
@@ -59,13 +60,28 @@ def read_only_regs(c):
     return sorted((r for r in c["reg"] if r["access"] == "ro"), key=lambda r: r["offset"])
 
 
+# The emitters of the generated lines, shared by the GPU's and the SoC's files: `out` is the list
+# of lines, `col` the width of the name column.
+def c_define(out, col, name, value, comment=None):
+    text = f"#define {name:<{col}} {value}"
+    out.append(text + (f"  /* {comment} */" if comment else ""))
+
+
+def v_lpi(out, col, name, value, comment=None):
+    text = f"localparam integer {name:<{col}} = {value};"
+    out.append(text + (f"  // {comment}" if comment else ""))
+
+
+def v_lp(out, col, name, width, value, comment=None):
+    text = f"localparam [{width - 1}:0] {name:<{col}} = {width}'h{value:X};"
+    out.append(text + (f"  // {comment}" if comment else ""))
+
+
 def gen_c(c):
     d, lim = c["device"], c["limits"]
     out = [f"/* {BANNER} */", "#ifndef GPU_REGS_H", "#define GPU_REGS_H", ""]
 
-    def define(name, value, comment=None):
-        text = f"#define {name:<28} {value}"
-        out.append(text + (f"  /* {comment} */" if comment else ""))
+    define = functools.partial(c_define, out, 28)
 
     define("GPU_ID_VALUE", f"0x{d['id']:08X}u")
     define("GPU_VERSION_VALUE", f"0x{d['version']:08X}u")
@@ -123,13 +139,8 @@ def gen_v(c):
            "// gpu_pkg::GPU_*. Not every build uses every constant:",
            "/* verilator lint_off UNUSEDPARAM */"]
 
-    def lpi(name, value, comment=None):
-        text = f"localparam integer {name:<28} = {value};"
-        out.append(text + (f"  // {comment}" if comment else ""))
-
-    def lp(name, width, value, comment=None):
-        text = f"localparam [{width - 1}:0] {name:<28} = {width}'h{value:X};"
-        out.append(text + (f"  // {comment}" if comment else ""))
+    lpi = functools.partial(v_lpi, out, 28)
+    lp = functools.partial(v_lp, out, 28)
 
     lp("GPU_ID_VALUE", 32, d["id"])
     lp("GPU_VERSION_VALUE", 32, d["version"])
@@ -246,9 +257,7 @@ def soc_gen_c(m):
            " * 0x8000000B once enabled; VexRiscv cannot take a precise access fault). A fetch from an",
            " * unmapped address reads 0x00000000: illegal instruction, mcause 2. */", ""]
 
-    def define(name, value, comment=None):
-        text = f"#define {name:<32} {value}"
-        out.append(text + (f"  /* {comment} */" if comment else ""))
+    define = functools.partial(c_define, out, 32)
 
     define("SOC_CLK_HZ_DEFAULT", f"{s['clk_hz_default']}u", "system clock in Hz (SYS CLK_HZ reads a build's own)")
     define("SOC_UART_BAUD", f"{s['uart_baud']}u", "8N1")
@@ -289,13 +298,8 @@ def soc_gen_v(m):
            "// soc_pkg::SOC_*. Not every module uses every constant:",
            "/* verilator lint_off UNUSEDPARAM */"]
 
-    def lpi(name, value, comment=None):
-        text = f"localparam integer {name:<32} = {value};"
-        out.append(text + (f"  // {comment}" if comment else ""))
-
-    def lp(name, width, value, comment=None):
-        text = f"localparam [{width - 1}:0] {name:<32} = {width}'h{value:X};"
-        out.append(text + (f"  // {comment}" if comment else ""))
+    lpi = functools.partial(v_lpi, out, 32)
+    lp = functools.partial(v_lp, out, 32)
 
     lpi("SOC_CLK_HZ_DEFAULT", s["clk_hz_default"], "system clock in Hz")
     lpi("SOC_UART_BAUD", s["uart_baud"], "8N1")

@@ -29,6 +29,7 @@
 #include <unistd.h>
 
 #include "batch_bridge.h"
+#include "keys_at.h"
 #include "qemu_process.h"
 #include "shared_ram.h"
 #include "uart_pump.h"
@@ -45,7 +46,7 @@ struct Options {
     std::string uart_log;
     std::string summary;
     double idle_timeout_s = 60.0;
-    std::vector<std::pair<uint32_t, std::string>> keys_at;  // (batch number, text) to type
+    KeysAt keys_at;  // (batch number, text) to type
     BridgeOptions bridge;
 };
 
@@ -90,13 +91,9 @@ bool parse(int argc, char **argv, Options &o)
         } else if (a == "--max-batch-cycles" && has_value) {
             o.bridge.max_batch_cycles = std::strtoull(argv[++i], nullptr, 0);
         } else if (a == "--keys-at" && has_value) {
-            const std::string spec = argv[++i];
-            const size_t colon = spec.find(':');
-            if (colon == std::string::npos || colon == 0) {
-                std::fprintf(stderr, "cosim: --keys-at wants N:TEXT, got '%s'\n", spec.c_str());
+            if (!parse_keys_at("cosim", argv[++i], &o.keys_at)) {
                 return false;
             }
-            o.keys_at.emplace_back(static_cast<uint32_t>(std::strtoul(spec.c_str(), nullptr, 10)), spec.substr(colon + 1));
         } else if (a == "--dump-lists" && has_value) {
             o.bridge.dump_lists = argv[++i];
         } else if (a == "--drop-doorbell" && has_value) {

@@ -35,7 +35,8 @@ synth-soc: $(SOC_VENV)
 SOC_SIM        := $(BUILD)/soc/sim/soc_sim
 SOC_SMOKE_ELF  := $(BUILD)/soc/smoke.elf
 SOC_SMOKE_HEX  := $(BUILD)/soc/smoke.hex
-SOC_TB_CPP     := tests/soc/soc_tb.cpp
+# The testbench and the UART line codec it shares with socsim (cosim/soc/uart_line).
+SOC_TB_CPP     := tests/soc/soc_tb.cpp cosim/soc/uart_line.cpp
 RV_CC          ?= riscv64-unknown-elf-gcc
 # Flags the SoC's firmware needs (docs: /work/shared PLATFORM-NOTES): RV32IM, CSR instructions.
 SOC_RV_FLAGS   := -march=rv32im -misa-spec=2.2 -mabi=ilp32 -mcmodel=medany
@@ -51,11 +52,11 @@ $(SOC_SMOKE_HEX): $(SOC_SMOKE_ELF) tools/elf_to_hex.py
 
 # One model runs any program: the RAM image is loaded at run time (+ram_init=FILE).
 $(SOC_SIM): $(SOC_VENV) $(RTL_FILES) $(RTL_V) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) contract/gpu_regs.vh \
-            contract/soc_map.vh contract/soc_map.h $(SOC_TB_CPP)
+            contract/soc_map.vh contract/soc_map.h $(SOC_TB_CPP) cosim/soc/uart_line.h
 	@mkdir -p $(dir $@)
 	$(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign fast --x-initial fast \
 	  --top-module soc_top $(SOC_VFLAGS) $(abspath $(SOC_TB_CPP)) \
-	  -CFLAGS "-O2 -std=c++17 -I$(CURDIR)/contract" \
+	  -CFLAGS "-O2 -std=c++17 -I$(CURDIR)/contract -I$(CURDIR)/cosim/soc" \
 	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(dir $@)obj -o $(abspath $@) \
 	  >$(dir $@)verilator.log 2>&1 || { tail -40 $(dir $@)verilator.log; exit 1; }
 

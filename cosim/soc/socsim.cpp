@@ -53,6 +53,7 @@
 #include "svdpi.h"
 #include "verilated.h"
 
+#include "keys_at.h"
 #include "model_check.h"
 #include "uart_line.h"
 #include "uart_terminal.h"
@@ -103,7 +104,7 @@ struct Options {
     uint64_t progress_cycles = 50000000;  // a progress line after this many cycles without a frame
     uint32_t uart_divider = (SOCSIM_CLK_HZ + SOC_UART_BAUD / 2) / SOC_UART_BAUD;  // as soc_uart rounds
     bool check_model = true;
-    std::vector<std::pair<uint32_t, std::string>> keys_at;
+    KeysAt keys_at;
 };
 
 int usage()
@@ -140,14 +141,9 @@ bool parse(int argc, char **argv, Options &o)
         } else if (a == "--uart-divider" && has_value) {
             o.uart_divider = static_cast<uint32_t>(std::strtoul(argv[++i], nullptr, 0));
         } else if (a == "--keys-at" && has_value) {
-            const std::string spec = argv[++i];
-            const size_t colon = spec.find(':');
-            if (colon == std::string::npos || colon == 0) {
-                std::fprintf(stderr, "socsim: --keys-at wants N:TEXT, got '%s'\n", spec.c_str());
+            if (!parse_keys_at("socsim", argv[++i], &o.keys_at)) {
                 return false;
             }
-            o.keys_at.emplace_back(static_cast<uint32_t>(std::strtoul(spec.c_str(), nullptr, 10)),
-                                   spec.substr(colon + 1));
         } else if (a == "--no-model-check") {
             o.check_model = false;
         } else {

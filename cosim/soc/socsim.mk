@@ -25,7 +25,7 @@ SOC_FW_MAKE   = $(MAKE) --no-print-directory FW_PLATFORM=soc BUILD=$(BUILD) SOC_
 
 SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_FILES) contract/gpu_regs.vh \
                contract/soc_map.vh contract/soc_map.h $(SOCSIM_SRC) $(SOCSIM_SV) $(wildcard cosim/soc/*.h) \
-               cosim/model_check.h $(COSIM_C_LIB) $(GPU_MODEL_LIB)
+               cosim/model_check.h cosim/keys_at.h $(COSIM_C_LIB) $(GPU_MODEL_LIB)
 
 # The Verilator command, recorded in $(SOCSIM_DIR)/cmd.txt (rewritten only when it changes) so that a
 # change of parameters or flags rebuilds, and an edit elsewhere in this file does not.

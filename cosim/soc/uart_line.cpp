@@ -54,7 +54,7 @@ int UartLineSender::tick()
         if (queue_.empty()) {
             return 1;
         }
-        frame_ = static_cast<uint16_t>((1u << 9) | (static_cast<uint32_t>(queue_.front()) << 1));  // stop, data, start
+        frame_ = queue_.front();
         queue_.pop_front();
         bit_ = 0;
         left_ = cpb_;

@@ -16,7 +16,6 @@
 #include <cstdlib>
 #include <ctime>
 #include <cstring>
-#include <deque>
 #include <memory>
 #include <string>
 #include <utility>
@@ -24,6 +23,7 @@
 
 #include "Vsoc_top.h"
 #include "soc_map.h"
+#include "uart_line.h"
 #include "verilated.h"
 
 namespace {
@@ -36,7 +36,7 @@ std::string unescape(const char *s)
             out += '\n';
             s++;
         } else if (s[0] == '\\' && s[1] == 'f') {
-            out += '\f';   // UartSender: a frame with a low stop bit
+            out += '\f';   // sent as a frame with a low stop bit
             s++;
         } else {
             out += *s;
@@ -44,78 +44,6 @@ std::string unescape(const char *s)
     }
     return out;
 }
-
-// Receives 8N1 frames from a line sampled once per clock: the middle of each bit from the start
-// bit's falling edge, at the nominal rate (not the RTL's rounded divider).
-struct UartDecoder {
-    double bit_clocks;
-    bool busy = false, last = true;
-    uint64_t start = 0;
-    int bit = 0;
-    unsigned value = 0;
-    unsigned framing_errors = 0;
-
-    // Returns a received byte, or -1.
-    int step(uint64_t cycle, bool line)
-    {
-        int got = -1;
-        if (!busy) {
-            if (last && !line) {
-                busy = true;
-                start = cycle;
-                bit = 0;
-                value = 0;
-            }
-        } else {
-            double at = start + (1.5 + bit) * bit_clocks;   // middle of data bit `bit` (8 = stop)
-            if (cycle >= (uint64_t)at) {
-                if (bit < 8) {
-                    value |= (line ? 1u : 0u) << bit;
-                    bit++;
-                } else {
-                    if (line) {
-                        got = (int)value;
-                    } else {
-                        framing_errors++;
-                    }
-                    busy = false;
-                }
-            }
-        }
-        last = line;
-        return got;
-    }
-};
-
-// Sends queued bytes as 8N1 frames with one idle bit between them; '\f' is sent as 0x55 with a low
-// stop bit (a framing error for the receiver).
-struct UartSender {
-    double bit_clocks;
-    std::deque<uint8_t> queue;
-    bool busy = false;
-    uint64_t start = 0;
-    unsigned frame = 0;   // start bit, 8 data bits, stop bit, idle bit
-
-    bool step(uint64_t cycle)
-    {
-        if (!busy) {
-            if (queue.empty()) {
-                return true;
-            }
-            bool bad_stop = queue.front() == '\f';
-            frame = (1u << 10) | (bad_stop ? 0u : 1u << 9) | ((bad_stop ? 0x55u : (unsigned)queue.front()) << 1);
-            queue.pop_front();
-            busy = true;
-            start = cycle;
-        }
-        unsigned bit = (unsigned)((cycle - start) / bit_clocks);
-        if (bit >= 11) {
-            busy = false;
-            return true;
-        }
-        return (frame >> bit) & 1u;
-    }
-};
 
 }  // namespace
 
@@ -144,9 +72,10 @@ int main(int argc, char **argv)
         }
     }
 
-    const double bit_clocks = (double)SOC_CLK_HZ_DEFAULT / SOC_UART_BAUD;
-    UartDecoder rx{bit_clocks};
-    UartSender tx{bit_clocks};
+    // The RTL's divider (soc_uart: CLK_HZ / BAUD, rounded), as socsim decodes the line.
+    const uint32_t bit_clocks = (SOC_CLK_HZ_DEFAULT + SOC_UART_BAUD / 2) / SOC_UART_BAUD;
+    UartLineDecoder rx(bit_clocks);
+    UartLineSender tx(bit_clocks);
     std::string text;
 
     auto top = std::make_unique<Vsoc_top>();
@@ -164,8 +93,8 @@ int main(int argc, char **argv)
         top->eval();
         top->clk = 0;
         top->eval();
-        int c = rx.step(cycle, top->uart_tx);
-        if (c >= 0) {
+        uint8_t c;
+        if (rx.sample(top->uart_tx, &c)) {
             text += (char)c;
             if (!quiet) {
                 putchar(c);
@@ -174,11 +103,17 @@ int main(int argc, char **argv)
             for (const auto &[prompt, reply] : replies) {
                 if (!prompt.empty() && text.size() >= prompt.size() &&
                     text.compare(text.size() - prompt.size(), prompt.size(), prompt) == 0) {
-                    tx.queue.insert(tx.queue.end(), reply.begin(), reply.end());
+                    for (const char r : reply) {
+                        if (r == '\f') {
+                            tx.queue_bad_stop(0x55);
+                        } else {
+                            tx.queue(std::string(1, r));
+                        }
+                    }
                 }
             }
         }
-        top->uart_rx = tx.step(cycle);
+        top->uart_rx = tx.tick();
         if (vsync_n && !top->vga_vsync_n) {
             vga_frames++;   // the GPU's scan-out runs: one vertical sync a frame
         }
@@ -191,7 +126,7 @@ int main(int argc, char **argv)
             "cpu_seconds=%.2f\ncycles_per_cpu_second=%.0f\n"
             "uart_framing_errors=%u\nleds=0x%02x\nvga_frames=%llu\n",
             (int)top->exit_valid, (int)top->exit_code, (unsigned long long)cycle, wall,
-            wall > 0 ? cycle / wall : 0.0, cpu, cpu > 0 ? cycle / cpu : 0.0, rx.framing_errors, (unsigned)top->leds,
+            wall > 0 ? cycle / wall : 0.0, cpu, cpu > 0 ? cycle / cpu : 0.0, rx.framing_errors(), (unsigned)top->leds,
             (unsigned long long)vga_frames);
     int status = top->exit_valid ? (int)top->exit_code : 124;
     top->final();
