@@ -38,11 +38,12 @@ void GpuSim::reset()
 
 void GpuSim::tick()
 {
-    // Outputs change on the edge at which vga_pix_stb is high; sample them right after it.
-    top_->clk = 0;
+    // Outputs change on the edge at which vga_pix_stb is high; sample them right after it. The
+    // scan-out's clock is the system clock here (PIX_DIV clocks a pixel), its crossings still in.
+    top_->clk = top_->clk_pix = 0;
     top_->eval();
     const bool pixel_edge = top_->vga_pix_stb;
-    top_->clk = 1;
+    top_->clk = top_->clk_pix = 1;
     top_->eval();
     cycles_++;
     if (pixel_edge) {

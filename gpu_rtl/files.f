@@ -2,6 +2,8 @@
 // simulators), synth/synth.sh and the tests read. Paths are relative to the repository root.
 gpu_rtl/gpu_pkg.sv
 gpu_rtl/gpu_ram.v
+gpu_rtl/gpu_cdc_sync.v
+gpu_rtl/gpu_cdc_pulse.v
 gpu_rtl/gpu_div.v
 gpu_rtl/gpu_regs.v
 gpu_rtl/gpu_prim_setup.v

@@ -4,9 +4,16 @@
 // Contract: each bank is stored as words of SPAN_W pixels (a span: SPAN_W neighbours in one row, the
 // first at a multiple of SPAN_W), so the rasterizer writes a whole span per clock with a per-pixel
 // mask and never reads. The write port always targets the back bank, the read port always the front
-// bank; the read port takes a pixel index (y * GPU_FB_WIDTH + x) and returns that pixel one cycle
-// later. swap (one-cycle pulse) exchanges the banks on the clock edge; a read issued on that edge
-// still comes from the old front. front is the bank being shown (STATUS.FRONT).
+// bank; the read port takes a pixel index (y * GPU_FB_WIDTH + x) and returns that pixel one clk_pix
+// cycle later. swap (one-cycle pulse) exchanges the banks on the clk edge; front is the bank being
+// shown (STATUS.FRONT).
+//
+// Two clock domains: writes and swap on clk (the system clock), reads on clk_pix (the scan-out's).
+// The read side selects its bank by front_pix, front crossed by gpu_cdc_sync: it follows a swap two
+// or three clk_pix cycles later. That is safe because swaps happen only at vertical blank (gpu_raster
+// waits for vblank_start), 45 lines before the scan-out reads a visible pixel again, and the one bit
+// is constant while it crosses. Until then a blanking read may come from the new back bank: its data
+// is never shown.
 //
 // Block RAM economy: a bank of GPU_FB_PIXELS / SPAN_W words is not a multiple of the 1024-word depth
 // 36 Kb block RAMs come in, and a tool that rounds it up wastes a whole column of them (20 instead of
@@ -24,8 +31,9 @@ module gpu_framebuffer #(
     localparam integer PAW = $clog2(PIXELS),
     localparam integer LANE_AW = (SPAN_W > 1) ? $clog2(SPAN_W) : 1
 ) (
-    input  wire                clk,
-    input  wire                rst,
+    input  wire                clk,        // system clock: writes, swap
+    input  wire                rst,        // synchronous to clk
+    input  wire                clk_pix,    // scan-out clock: reads
     // bank control
     input  wire                swap,       // exchange front and back
     output wire                front,      // bank currently shown
@@ -34,7 +42,7 @@ module gpu_framebuffer #(
     input  wire [WAW-1:0]      wr_addr,    // span index: y * GPU_FB_WIDTH / SPAN_W + x / SPAN_W
     input  wire [SPAN_W*8-1:0] wr_data,    // pixel i of the span in bits [8i +: 8]
     input  wire [SPAN_W-1:0]   wr_mask,    // pixels to write
-    // read port (scan-out, front bank): one pixel
+    // read port (scan-out, front bank): one pixel, clk_pix domain
     input  wire                rd_en,
     input  wire [PAW-1:0]      rd_addr,    // pixel index y * GPU_FB_WIDTH + x
     output wire [7:0]          rd_data
@@ -54,8 +62,14 @@ module gpu_framebuffer #(
         end else if (swap) begin
             front_q <= ~front_q;
         end
+    end
+
+    wire front_pix;
+    gpu_cdc_sync u_front_sync (.clk(clk_pix), .in(front_q), .out(front_pix));
+
+    always @(posedge clk_pix) begin
         if (rd_en) begin
-            rd_bank_q <= front_q;
+            rd_bank_q <= front_pix;
             rd_tail_q <= rd_in_tail;
             rd_lane_q <= rd_lane;
         end
@@ -69,9 +83,9 @@ module gpu_framebuffer #(
         for (bank = 0; bank < 2; bank = bank + 1) begin : g_bank
             // Bank b is the back bank (written) when front is !b, and the front bank (read) when b.
             wire wr_this = wr_en && (front_q != bank[0]);
-            wire rd_this = rd_en && (front_q == bank[0]);
+            wire rd_this = rd_en && (front_pix == bank[0]);
             gpu_ram #(.DEPTH(MAIN_WORDS), .WIDTH(SPAN_W * 8), .LANES(SPAN_W)) u_main (
-                .clk(clk),
+                .wr_clk(clk), .rd_clk(clk_pix),
                 .wr_en(wr_this && !wr_in_tail), .wr_addr($clog2(MAIN_WORDS)'(wr_addr)),
                 .wr_data(wr_data), .wr_mask(wr_mask),
                 .rd_en(rd_this && !rd_in_tail), .rd_addr($clog2(MAIN_WORDS)'(rd_word)),
@@ -80,7 +94,7 @@ module gpu_framebuffer #(
             if (TAIL_WORDS > 0) begin : g_tail
                 localparam integer TAW = (TAIL_WORDS > 1) ? $clog2(TAIL_WORDS) : 1;
                 gpu_ram #(.DEPTH(TAIL_WORDS), .WIDTH(SPAN_W * 8), .LANES(SPAN_W)) u_tail (
-                    .clk(clk),
+                    .wr_clk(clk), .rd_clk(clk_pix),
                     .wr_en(wr_this && wr_in_tail), .wr_addr(TAW'(wr_addr - WAW'(MAIN_WORDS))),
                     .wr_data(wr_data), .wr_mask(wr_mask),
                     .rd_en(rd_this && rd_in_tail), .rd_addr(TAW'(rd_word - WAW'(MAIN_WORDS))),

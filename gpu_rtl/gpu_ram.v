@@ -1,10 +1,12 @@
-// gpu_ram: simple dual-port synchronous RAM, one write port with lane enables and one read port.
+// gpu_ram: simple dual-port synchronous RAM, one write port with lane enables and one read port,
+// each on its own clock (the same clock for every RAM but the framebuffer's, read by the scan-out).
 //
 // Contract: a write with wr_en stores the lanes of wr_data whose wr_mask bit is set (lane i is bits
 // [i*WIDTH/LANES +: WIDTH/LANES]) at wr_addr on the clock edge; the other lanes keep their contents, so
 // a span of pixels is written without reading it first. A read with rd_en presents mem[rd_addr] on
-// rd_data after that edge (one cycle latency) and holds it while rd_en is low. Reading and writing
-// the same address in one cycle returns the old data. Power-on contents are zero (FPGA RAM honours
+// rd_data after that rd_clk edge (one cycle latency) and holds it while rd_en is low. With one clock,
+// reading and writing the same address in one cycle returns the old data; with two, a read of the
+// word being written is undefined (the framebuffer never reads the bank it writes). Power-on contents are zero (FPGA RAM honours
 // initial values; it has no reset, so neither does this). Written in the template that yosys and
 // Vivado map to block RAM with byte-write enables, or to LUT RAM when DISTRIBUTED is set.
 `default_nettype none
@@ -17,13 +19,14 @@ module gpu_ram #(
     localparam integer AW = (DEPTH > 1) ? $clog2(DEPTH) : 1,
     localparam integer LANE_W = WIDTH / LANES
 ) (
-    input  wire             clk,
     // write port
+    input  wire             wr_clk,
     input  wire             wr_en,
     input  wire [AW-1:0]    wr_addr,
     input  wire [WIDTH-1:0] wr_data,
     input  wire [LANES-1:0] wr_mask,
     // read port
+    input  wire             rd_clk,
     input  wire             rd_en,
     input  wire [AW-1:0]    rd_addr,
     output reg  [WIDTH-1:0] rd_data
@@ -40,10 +43,12 @@ module gpu_ram #(
             initial begin
                 for (i = 0; i < DEPTH; i = i + 1) mem[i] = {WIDTH{1'b0}};
             end
-            always @(posedge clk) begin
+            always @(posedge wr_clk) begin
                 for (i = 0; i < LANES; i = i + 1) begin
                     if (wr_en && wr_mask[i]) mem[wr_addr][i*LANE_W +: LANE_W] <= wr_data[i*LANE_W +: LANE_W];
                 end
+            end
+            always @(posedge rd_clk) begin
                 if (rd_en) rd_data <= mem[rd_addr];
             end
         end else begin : g_block
@@ -51,10 +56,12 @@ module gpu_ram #(
             initial begin
                 for (i = 0; i < DEPTH; i = i + 1) mem[i] = {WIDTH{1'b0}};
             end
-            always @(posedge clk) begin
+            always @(posedge wr_clk) begin
                 for (i = 0; i < LANES; i = i + 1) begin
                     if (wr_en && wr_mask[i]) mem[wr_addr][i*LANE_W +: LANE_W] <= wr_data[i*LANE_W +: LANE_W];
                 end
+            end
+            always @(posedge rd_clk) begin
                 if (rd_en) rd_data <= mem[rd_addr];
             end
         end

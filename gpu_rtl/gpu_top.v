@@ -3,8 +3,15 @@
 // Contract: contract/gpu-contract.md. The CPU writes buffers and registers over the bus and rings
 // DOORBELL; the GPU clears and draws into the back buffer, swaps at vertical blank when asked, and
 // reports DONE_SEQ. Data path: bus -> gpu_regs -> vertex/index RAM -> gpu_raster (gpu_prim_setup ->
-// gpu_span_walker) -> gpu_framebuffer (back) ... (front) -> gpu_vga -> palette -> VGA pins. One clock
-// domain; the VGA pixel rate is clk/PIX_DIV. Build options leave out what a scene does not need and
+// gpu_span_walker) -> gpu_framebuffer (back) ... (front) -> gpu_vga -> palette -> VGA pins.
+// Two clock domains: everything on clk but the scan-out — the framebuffer's and the palette's read
+// ports and gpu_vga — on clk_pix, one pixel every PIX_DIV clk_pix cycles (a board gives a 25 MHz
+// clk_pix and PIX_DIV 1; a simulation may tie clk_pix to clk). They cross in three places, each
+// with its argument: vblank_start (gpu_cdc_pulse, one a frame), the front bank (gpu_cdc_sync in
+// gpu_framebuffer: it changes only at vertical blank) and the reset (gpu_cdc_sync below: rst_pix
+// follows rst two clk_pix cycles later). The palette is written on clk and read on clk_pix without
+// a handshake: a palette write during the visible area may show one wrong colour for one pixel (the
+// firmware writes it at start and when a scene changes). Build options leave out what a scene does not need and
 // are reported in CAPS; their defaults, the capacities and the frame size come from the contract
 // (gpu_pkg::GPU_*, generated from contract/gpu_contract.toml).
 `default_nettype none
@@ -17,7 +24,7 @@ module gpu_top #(
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,  // line primitives (CAPS_LINES)
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,    // 16-bit depth buffer (CAPS_ZBUF):
                                                                          // 1.2 Mb more block RAM
-    parameter integer PIX_DIV = 4,       // system clocks per VGA pixel (100 MHz / 4 = 25 MHz)
+    parameter integer PIX_DIV = 4,       // clk_pix clocks per VGA pixel (1 for a 25 MHz clk_pix)
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer VTX_AW = $clog2(VTX_CAP * 2),
@@ -26,8 +33,9 @@ module gpu_top #(
     localparam integer FB_WAW = $clog2(FB_WORDS),
     localparam integer FB_PAW = $clog2(gpu_pkg::GPU_FB_PIXELS)
 ) (
-    input  wire        clk,
-    input  wire        rst,           // synchronous, active high
+    input  wire        clk,           // system clock: bus, rasterizer, framebuffer writes
+    input  wire        rst,           // synchronous to clk, active high
+    input  wire        clk_pix,       // scan-out clock (may be clk itself)
     // bus slave (see gpu_regs)
     input  wire        bus_valid,
     input  wire        bus_write,
@@ -35,8 +43,12 @@ module gpu_top #(
     input  wire [31:0] bus_wdata,
     output wire [31:0] bus_rdata,
     output wire        bus_rvalid,
-    // VGA connector
-    output wire        vga_pix_stb,   // outputs change on the clk edge where this is high
+    // status, clk domain (board LEDs)
+    output wire        frame_swapped, // one cycle at each buffer swap
+    output wire        error,         // ERRORS non-zero: the last batch refused something
+    // VGA connector, clk_pix domain
+    output wire        vga_pix_stb,   // outputs change on the clk_pix edge where this is high
+    output wire        vga_de,        // visible area (for a DVI encoder)
     output wire        vga_hsync_n,
     output wire        vga_vsync_n,
     output wire [3:0]  vga_r,
@@ -49,7 +61,7 @@ module gpu_top #(
 
     // Batch description and status between the register block and the rasterizer.
     wire        ctrl_clear, ctrl_swap, ctrl_ztest, ctrl_zclear, start, soft_reset;
-    wire        busy, front, swap, vblank_start;
+    wire        busy, front, swap, vblank_start_sys, vblank_start_pix;
     wire [31:0] vtx_base, vtx_count, tri_base, tri_count, doorbell_tag, done_seq, frame_count;
     wire [7:0]  clear_color;
     wire [2:0]  raster_errors;
@@ -95,13 +107,13 @@ module gpu_top #(
     generate
         if (ENABLE_ZBUF != 0) begin : g_zbuf
             gpu_ram #(.DEPTH(VTX_CAP), .WIDTH(16)) u_vtx_z_ram (
-                .clk(clk),
+                .wr_clk(clk), .rd_clk(clk),
                 .wr_en(vtx_wr_en && vtx_wr_addr[0] == 1'b1), .wr_addr(vtx_wr_addr[VTX_AW-1:1]),
                 .wr_data(bus_wdata[gpu_pkg::GPU_VTX_Z_LSB +: 16]), .wr_mask(1'b1),
                 .rd_en(vtx_rd_en), .rd_addr(vtx_rd_addr), .rd_data(vz_rd_data)
             );
             gpu_ram #(.DEPTH(FB_WORDS), .WIDTH(SPAN_W * 16), .LANES(SPAN_W)) u_depth (
-                .clk(clk),
+                .wr_clk(clk), .rd_clk(clk),
                 .wr_en(z_wr_en), .wr_addr(z_wr_addr), .wr_data(z_wr_data), .wr_mask(z_wr_mask),
                 .rd_en(z_rd_en), .rd_addr(z_rd_addr), .rd_data(z_rd_data)
             );
@@ -114,7 +126,7 @@ module gpu_top #(
 
     // Vertex word 0 (x, y) is all the rasterizer reads for coverage.
     gpu_ram #(.DEPTH(VTX_CAP), .WIDTH(32)) u_vtx_xy_ram (
-        .clk(clk),
+        .wr_clk(clk), .rd_clk(clk),
         .wr_en(vtx_wr_en && vtx_wr_addr[0] == 1'b0), .wr_addr(vtx_wr_addr[VTX_AW-1:1]),
         .wr_data(bus_wdata), .wr_mask(1'b1),
         .rd_en(vtx_rd_en), .rd_addr(vtx_rd_addr), .rd_data(vtx_rd_data)
@@ -122,14 +134,14 @@ module gpu_top #(
 
     // The two words of a primitive sit side by side so that one read returns both.
     gpu_ram #(.DEPTH(TRI_CAP), .WIDTH(64), .LANES(2)) u_idx_ram (
-        .clk(clk),
+        .wr_clk(clk), .rd_clk(clk),
         .wr_en(idx_wr_en), .wr_addr(idx_wr_addr[IDX_AW-1:1]), .wr_data({bus_wdata, bus_wdata}),
         .wr_mask({idx_wr_addr[0], !idx_wr_addr[0]}),
         .rd_en(idx_rd_en), .rd_addr(idx_rd_addr), .rd_data(idx_rd_data)
     );
 
     gpu_ram #(.DEPTH(gpu_pkg::GPU_PALETTE_ENTRIES), .WIDTH(12), .DISTRIBUTED(1)) u_palette (
-        .clk(clk),
+        .wr_clk(clk), .rd_clk(clk_pix),
         .wr_en(pal_wr_en), .wr_addr(pal_wr_addr), .wr_data(bus_wdata[11:0]), .wr_mask(1'b1),
         .rd_en(pal_rd_en), .rd_addr(pal_rd_addr), .rd_data(pal_rd_data)
     );
@@ -147,24 +159,35 @@ module gpu_top #(
         .vz_rd_data(vz_rd_data), .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data),
         .z_wr_en(z_wr_en), .z_wr_addr(z_wr_addr), .z_wr_data(z_wr_data), .z_wr_mask(z_wr_mask),
         .fb_wr_en(fb_wr_en), .fb_wr_addr(fb_wr_addr), .fb_wr_data(fb_wr_data),
-        .fb_wr_mask(fb_wr_mask), .vblank_start(vblank_start), .swap(swap)
+        .fb_wr_mask(fb_wr_mask), .vblank_start(vblank_start_sys), .swap(swap)
     );
 
     gpu_framebuffer #(.SPAN_W(SPAN_W)) u_framebuffer (
-        .clk(clk), .rst(rst),
+        .clk(clk), .rst(rst), .clk_pix(clk_pix),
         .swap(swap), .front(front),
         .wr_en(fb_wr_en), .wr_addr(fb_wr_addr), .wr_data(fb_wr_data), .wr_mask(fb_wr_mask),
         .rd_en(fb_rd_en), .rd_addr(fb_rd_addr), .rd_data(fb_rd_data)
     );
 
+    // ---- the scan-out's clock domain ----
+    wire rst_pix;
+    gpu_cdc_sync #(.RESET_VALUE(1'b1)) u_rst_pix_sync (.clk(clk_pix), .in(rst), .out(rst_pix));
+    gpu_cdc_pulse u_vblank_sync (
+        .clk_src(clk_pix), .rst_src(rst_pix), .src_pulse(vblank_start_pix),
+        .clk_dst(clk), .dst_pulse(vblank_start_sys)
+    );
+
     gpu_vga #(.PIX_DIV(PIX_DIV)) u_vga (
-        .clk(clk), .rst(rst),
+        .clk(clk_pix), .rst(rst_pix),
         .fb_rd_en(fb_rd_en), .fb_rd_addr(fb_rd_addr), .fb_rd_data(fb_rd_data),
         .pal_rd_en(pal_rd_en), .pal_rd_addr(pal_rd_addr), .pal_rd_data(pal_rd_data),
-        .vblank_start(vblank_start),
-        .vga_pix_stb(vga_pix_stb), .vga_hsync_n(vga_hsync_n), .vga_vsync_n(vga_vsync_n),
+        .vblank_start(vblank_start_pix),
+        .vga_pix_stb(vga_pix_stb), .vga_de(vga_de), .vga_hsync_n(vga_hsync_n), .vga_vsync_n(vga_vsync_n),
         .vga_r(vga_r), .vga_g(vga_g), .vga_b(vga_b)
     );
+
+    assign frame_swapped = swap;
+    assign error = |raster_errors;
 endmodule
 
 `default_nettype wire

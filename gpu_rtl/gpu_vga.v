@@ -1,22 +1,24 @@
 // gpu_vga: 640x480@60 VGA scan-out of the front framebuffer through the palette.
 //
 // Contract: standard 800x525 timing (h: 640 visible, 16 front porch, 96 sync, 48 back porch;
-// v: 480, 10, 2, 33; both syncs active low). One pixel every PIX_DIV system clocks; vga_pix_stb is high
-// in the cycle whose clock edge updates the outputs, so a DAC clocked by clk with vga_pix_stb as enable
-// (or a monitor model sampling when vga_pix_stb is high) sees each pixel exactly once. Each framebuffer
-// pixel covers 2x2 screen pixels. RGB is 0 outside the visible area. vblank_start pulses for one cycle
-// when the last visible pixel has been read, the moment a buffer swap becomes invisible.
+// v: 480, 10, 2, 33; both syncs active low). One pixel every PIX_DIV clocks of clk — the pixel clock
+// gpu_top gives it, 25 MHz on a board, or a faster clock in simulation; vga_pix_stb is high in the
+// cycle whose clock edge updates the outputs, so a DAC clocked by clk with vga_pix_stb as enable (or a
+// monitor model sampling when vga_pix_stb is high) sees each pixel exactly once. Each framebuffer
+// pixel covers 2x2 screen pixels. RGB is 0 outside the visible area, where vga_de (data enable, for a
+// DVI transmitter) is low. vblank_start pulses for one cycle when the last visible pixel has been
+// read, the moment a buffer swap becomes invisible.
 // Latency: the read pipeline (framebuffer, palette, output register) advances only on pixel strobes,
 // so outputs trail the counters by two pixels with the syncs delayed to match, for any PIX_DIV >= 1.
 `default_nettype none
 
 module gpu_vga #(
-    parameter integer PIX_DIV = 4,  // system clocks per pixel: 4 for 100 MHz, 1 with a 25 MHz clock
+    parameter integer PIX_DIV = 4,  // clocks per pixel: 1 with a 25 MHz pixel clock, 4 at 100 MHz
     localparam integer FB_W = gpu_pkg::GPU_FB_WIDTH,   // the contract's frame, shown 2x2
     localparam integer FB_AW = $clog2(gpu_pkg::GPU_FB_PIXELS)
 ) (
-    input  wire             clk,
-    input  wire             rst,
+    input  wire             clk,        // the pixel clock (gpu_top's clk_pix)
+    input  wire             rst,        // synchronous to clk
     // framebuffer read port (front bank, one-cycle latency)
     output wire             fb_rd_en,
     output wire [FB_AW-1:0] fb_rd_addr,
@@ -25,10 +27,11 @@ module gpu_vga #(
     output wire             pal_rd_en,
     output wire [7:0]       pal_rd_addr,
     input  wire [11:0]      pal_rd_data,
-    // frame timing for the swap
+    // frame timing for the swap (clk domain: gpu_top crosses it)
     output wire             vblank_start,
     // VGA connector
     output wire             vga_pix_stb,
+    output reg              vga_de,
     output reg              vga_hsync_n,
     output reg              vga_vsync_n,
     output reg  [3:0]       vga_r,
@@ -95,6 +98,7 @@ module gpu_vga #(
             visible_pipe_q <= 2'b00;
             hsync_pipe_q <= 2'b00;
             vsync_pipe_q <= 2'b00;
+            vga_de <= 1'b0;
             vga_hsync_n <= 1'b1;
             vga_vsync_n <= 1'b1;
             vga_r <= 4'd0;
@@ -105,6 +109,7 @@ module gpu_vga #(
             hsync_pipe_q <= {hsync_pipe_q[0], hsync};
             vsync_pipe_q <= {vsync_pipe_q[0], vsync};
             // pal_rd_data belongs to the pixel two strobes back, as does index [1] of the pipes.
+            vga_de <= visible_pipe_q[1];
             vga_hsync_n <= ~hsync_pipe_q[1];
             vga_vsync_n <= ~vsync_pipe_q[1];
             vga_r <= visible_pipe_q[1] ? pal_rd_data[11:8] : 4'd0;

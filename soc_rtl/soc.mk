@@ -12,6 +12,10 @@ SOC_RTL_V     := $(shell sed -e 's://.*::' $(SOC_FILES))
 SOC_LINT      := soc_rtl/lint.vlt
 # Everything under soc_top, in compilation order: the GPU's list, the core, the SoC's list.
 SOC_VFLAGS     = $(RTL_LINT) $(SOC_LINT) -f $(RTL_FILES) $(SOC_CPU_V) -f $(SOC_FILES)
+# The simulators (the smoke testbench, socsim) run soc_top at the contract's default clock and tie
+# the GPU's scan-out clock to it; a board gives a separate 25 MHz one (boards/).
+SOC_SIM_CLK_HZ := $(shell sed -n 's/^clk_hz_default *= *\([0-9]*\).*/\1/p' contract/soc_map.toml)
+SOC_SIM_TIED   := -GPIX_CLK_HZ=$(SOC_SIM_CLK_HZ)
 
 $(SOC_VENV): tools/requirements.txt
 	@bash tools/setup.sh
@@ -55,7 +59,7 @@ $(SOC_SIM): $(SOC_VENV) $(RTL_FILES) $(RTL_V) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LI
             contract/soc_map.vh contract/soc_map.h $(SOC_TB_CPP) cosim/soc/uart_line.h
 	@mkdir -p $(dir $@)
 	$(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign fast --x-initial fast \
-	  --top-module soc_top $(SOC_VFLAGS) $(abspath $(SOC_TB_CPP)) \
+	  --top-module soc_top $(SOC_SIM_TIED) $(SOC_VFLAGS) $(abspath $(SOC_TB_CPP)) \
 	  -CFLAGS "-O2 -std=c++17 -I$(CURDIR)/contract -I$(CURDIR)/cosim/soc" \
 	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" --Mdir $(dir $@)obj -o $(abspath $@) \
 	  >$(dir $@)verilator.log 2>&1 || { tail -40 $(dir $@)verilator.log; exit 1; }

@@ -1,4 +1,4 @@
-// soc_top: the whole SoC on one clock — VexRiscv (RV32IM, 4 KiB I$ and D$), on-chip RAM, the GPU,
+// soc_top: the whole SoC on its system clock — VexRiscv (RV32IM, 4 KiB I$ and D$), on-chip RAM, the GPU,
 // a UART and the system registers, on one Wishbone bus. Memory map: contract/soc-memory-map.md.
 //
 //   VexRiscv iBus ─┐                      ┌─ soc_ram (RAM_BYTES, RAM_INIT)
@@ -14,30 +14,35 @@
 // so here a refused beat is answered to the core as an ACK with data 0 (a load reads 0, a fetch
 // reads 0x00000000 = illegal instruction, a store is dropped) and reported to soc_sys, which records
 // it (BUS_ERR, BUS_ERR_ADDR) and raises external interrupt SOC_IRQ_BUS_ERROR: no hang, no silence.
-// The GPU's VGA pixel clock is CLK_HZ / PIX_DIV = 25 MHz: CLK_HZ must be a multiple of 25 MHz.
+// Clocks: clk runs everything but the GPU's scan-out, which runs on clk_pix (gpu_top crosses between
+// them): a board gives a 25 MHz pixel clock; a simulation may tie clk_pix to clk and say so with
+// PIX_CLK_HZ = CLK_HZ. PIX_CLK_HZ must be a multiple of the 25 MHz VGA pixel rate.
 `default_nettype none
 
 module soc_top #(
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // on-chip RAM; 192 KiB = 96 ECP5 EBR
     parameter RAM_INIT = "",                   // $readmemh image of the RAM (one 32-bit word a line)
     parameter integer CLK_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,  // clk's frequency: UART divider, SYS CLK_HZ
+    parameter integer PIX_CLK_HZ = 25000000,   // clk_pix's frequency: 25 MHz, or CLK_HZ when tied to clk
     parameter integer BAUD = soc_pkg::SOC_UART_BAUD,         // UART bits per second
     // The GPU's build options (gpu_top), passed through; defaults from the GPU contract.
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
     localparam integer PIX_HZ = 25000000,      // VGA 640x480@60 pixel rate
-    localparam integer PIX_DIV = CLK_HZ / PIX_HZ,
+    localparam integer PIX_DIV = PIX_CLK_HZ / PIX_HZ,
     localparam integer RAM_AW = $clog2(RAM_BYTES / 4),
     localparam integer POR_CLKS = 16           // reset length after power-on or ext_rst
 ) (
-    input  wire       clk,            // the one system clock, CLK_HZ
+    input  wire       clk,            // the system clock, CLK_HZ
+    input  wire       clk_pix,        // the GPU's scan-out clock, PIX_CLK_HZ (may be clk)
     input  wire       ext_rst,        // board reset button, active high, asynchronous (tie 0 if none)
     // UART (8N1, BAUD)
     input  wire       uart_rx,        // the FPGA receives; asynchronous, idle high
     output wire       uart_tx,        // the FPGA transmits; idle high
-    // VGA 640x480@60 (gpu_top's pins)
-    output wire       vga_pix_stb,    // the outputs change on the clk edge where this is high
+    // VGA 640x480@60 (gpu_top's pins), clk_pix domain
+    output wire       vga_pix_stb,    // the outputs change on the clk_pix edge where this is high
+    output wire       vga_de,         // visible area (for a DVI encoder)
     output wire       vga_hsync_n,
     output wire       vga_vsync_n,
     output wire [3:0] vga_r,
@@ -45,11 +50,13 @@ module soc_top #(
     output wire [3:0] vga_b,
     // board
     output wire [7:0] leds,           // SYS LEDS
+    output wire       gpu_frame_swapped,  // one clk cycle at each GPU buffer swap
+    output wire       gpu_error,      // the GPU's ERRORS register is non-zero
     output wire       exit_valid,     // SYS EXIT was written (held until reset): a simulator ends
     output wire [7:0] exit_code       // its status, 0 = success
 );
-    generate if (PIX_DIV < 1 || PIX_DIV * PIX_HZ != CLK_HZ) begin : g_bad_clk
-        $error("soc_top: CLK_HZ must be a multiple of 25 MHz (the GPU's VGA pixel rate)");
+    generate if (PIX_DIV < 1 || PIX_DIV * PIX_HZ != PIX_CLK_HZ) begin : g_bad_clk
+        $error("soc_top: PIX_CLK_HZ must be a multiple of 25 MHz (the GPU's VGA pixel rate)");
     end endgenerate
 
     // ---- reset: power-on counter, restarted by the (synchronised) button ----
@@ -243,13 +250,17 @@ module soc_top #(
     ) u_gpu (
         .clk         (clk),
         .rst         (rst),
+        .clk_pix     (clk_pix),
         .bus_valid   (gpu_bus_valid),
         .bus_write   (gpu_bus_write),
         .bus_addr    (gpu_bus_addr),
         .bus_wdata   (gpu_bus_wdata),
         .bus_rdata   (gpu_bus_rdata),
         .bus_rvalid  (gpu_bus_rvalid),
+        .frame_swapped (gpu_frame_swapped),
+        .error       (gpu_error),
         .vga_pix_stb (vga_pix_stb),
+        .vga_de      (vga_de),
         .vga_hsync_n (vga_hsync_n),
         .vga_vsync_n (vga_vsync_n),
         .vga_r       (vga_r),

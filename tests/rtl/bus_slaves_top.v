@@ -77,16 +77,18 @@ module bus_slaves_top (
     assign mon_addr  = sel ? ax_bus_addr : wb_bus_addr;
     assign mon_wdata = sel ? ax_bus_wdata : wb_bus_wdata;
 
-    wire vga_pix_stb, vga_hsync_n, vga_vsync_n;
+    wire vga_pix_stb, vga_de, vga_hsync_n, vga_vsync_n, frame_swapped, error;
     wire [3:0] vga_r, vga_g, vga_b;
     gpu_top u_gpu (
-        .clk(clk), .rst(rst),
+        .clk(clk), .rst(rst), .clk_pix(clk),
         .bus_valid(mon_valid), .bus_write(mon_write), .bus_addr(mon_addr), .bus_wdata(mon_wdata),
         .bus_rdata(mon_rdata), .bus_rvalid(mon_rvalid),
-        .vga_pix_stb(vga_pix_stb), .vga_hsync_n(vga_hsync_n), .vga_vsync_n(vga_vsync_n),
+        .frame_swapped(frame_swapped), .error(error),
+        .vga_pix_stb(vga_pix_stb), .vga_de(vga_de), .vga_hsync_n(vga_hsync_n), .vga_vsync_n(vga_vsync_n),
         .vga_r(vga_r), .vga_g(vga_g), .vga_b(vga_b)
     );
-    wire unused_vga = vga_pix_stb | vga_hsync_n | vga_vsync_n | (|vga_r) | (|vga_g) | (|vga_b);
+    wire unused_vga = vga_pix_stb | vga_de | vga_hsync_n | vga_vsync_n | (|vga_r) | (|vga_g) | (|vga_b)
+                    | frame_swapped | error;
 endmodule
 
 `default_nettype wire

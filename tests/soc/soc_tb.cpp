@@ -79,7 +79,7 @@ int main(int argc, char **argv)
     std::string text;
 
     auto top = std::make_unique<Vsoc_top>();
-    top->clk = 0;
+    top->clk = top->clk_pix = 0;  // the scan-out's clock tied to the system clock (soc.mk)
     top->ext_rst = 0;
     top->uart_rx = 1;
     top->eval();
@@ -89,9 +89,9 @@ int main(int argc, char **argv)
     uint64_t cycle = 0, vga_frames = 0;
     bool vsync_n = true;
     for (; cycle < max_cycles && !top->exit_valid; cycle++) {
-        top->clk = 1;
+        top->clk = top->clk_pix = 1;
         top->eval();
-        top->clk = 0;
+        top->clk = top->clk_pix = 0;
         top->eval();
         uint8_t c;
         if (rx.sample(top->uart_tx, &c)) {
