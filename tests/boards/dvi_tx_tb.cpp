@@ -2,7 +2,10 @@
 // seeded phase offsets between clk_pix and clk_tmds (exactly 1:5, including coinciding edges) a seeded
 // random pixel stream (blanking of random length and sync levels, data periods of random bytes and
 // of the DC-balance worst cases) must come back out of the decoder exactly, at a constant latency,
-// with no decoder error. Usage: dvi_tx_tb [seed] [pixels per phase]
+// with no decoder error.
+// The latency must be the 6..7 clk_tmds dvi_tx's crossing gives (which a missing synchroniser
+// flop would shorten; a zero-delay simulation cannot see metastability itself).
+// Usage: dvi_tx_tb [seed] [pixels per phase]
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -19,6 +22,8 @@ namespace {
 
 constexpr int kTmdsTicks = 10;  // one clk_tmds period
 constexpr int kPixTicks = 50;   // one clk_pix period = 5 clk_tmds
+constexpr int kMinLatency = 6 * kTmdsTicks;  // capturing clk_pix edge -> decoder has the pixel
+constexpr int kMaxLatency = 7 * kTmdsTicks;
 
 // Seeded video source: blanking and data periods, each of a random kind and length.
 class Source {
@@ -180,6 +185,13 @@ PhaseResult run_phase(int phase, uint64_t seed, uint64_t npix) {
                     return res;
                 }
                 int64_t lat = t - captured_at[decoded];
+                // dvi_tx's contract: load 2..3 clk_tmds after the symbol edge (two synchroniser flops
+                // and the change detector), the last bit pair 4 clk_tmds after the load.
+                if (lat < kMinLatency || lat > kMaxLatency) {
+                    std::printf("phase %d: pixel %llu: latency %lld ticks outside the contract's %d..%d\n", phase,
+                                (unsigned long long)decoded, (long long)lat, kMinLatency, kMaxLatency);
+                    return res;
+                }
                 if (res.latency_ticks < 0) res.latency_ticks = lat;
                 if (lat != res.latency_ticks) {
                     std::printf("phase %d: pixel %llu: latency %lld ticks, was %lld\n", phase,
