@@ -40,6 +40,9 @@ COSIM_CPP  := $(sort $(wildcard cosim/*.cpp))
 HOST_INC   := -Icosim -Igpu_model -Icontract -Ibsp/qemu_virt
 # The SoC simulator (socsim), run-soc, bench-soc and the soc firmware builds.
 include cosim/soc/socsim.mk
+# Boards: bitstream, synth-board, flash, load, term, lint-board (boards/<board>/board.mk).
+BOARD      ?= ulx3s
+include boards/ulx3s/board.mk
 
 .PHONY: all setup run run-headless test test-quick test-list lint check-contract contract random-long raster \
         bench-gpu bench-error bench-error-run synth clean

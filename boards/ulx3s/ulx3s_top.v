@@ -1,0 +1,83 @@
+// ulx3s_top: the SoC on the Radiona ULX3S (LFE5U-85F) — the board's pins (boards/ulx3s/ulx3s.lpf),
+// its one PLL and the four DDR output registers of the GPDI (DVI) connector around ulx3s_system.
+//
+// Contract: from the 25 MHz oscillator, ulx3s_pll makes the system clock (SYS_MHZ), the 25 MHz
+// pixel clock and the 125 MHz TMDS clock; each TMDS channel leaves through an ODDRX1F (D0 after the
+// rising edge, D1 after the falling one: 250 Mbit/s = 10 bits per 25 MHz pixel) on a gpdi_dp pin,
+// whose complement the LVCMOS33D standard drives on the paired dn pin. The FT231X carries the
+// UART (keys in, the firmware's text out). FIRE1 resets. wifi_gpio0 stays high so the ESP32 does
+// not reset the FPGA. Only the primitives live here; the logic is in ulx3s_system.
+`default_nettype none
+
+module ulx3s_top #(
+    parameter integer SYS_MHZ = 50,                                // a divisor of 750 (ulx3s_pll)
+    parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // the firmware's SOC_RAM_KIB
+    parameter RAM_INIT = "",                                       // the firmware's RAM image
+    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
+    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF
+) (
+    input  wire       clk_25mhz,      // G2
+    // FT231X USB serial
+    input  wire       ftdi_txd,       // the FPGA receives (M1)
+    output wire       ftdi_rxd,       // the FPGA transmits (L4)
+    // buttons and LEDs
+    input  wire       btn_fire1,      // R1, active high: reset
+    output wire [7:0] led,
+    // GPDI: blue, green, red, clock
+    output wire [3:0] gpdi_dp,
+    // ESP32
+    output wire       wifi_gpio0      // held high
+);
+    wire clk_tmds, clk_pix, clk_sys, pll_locked;
+    ulx3s_pll #(.SYS_MHZ(SYS_MHZ)) u_pll (
+        .clk_25mhz (clk_25mhz),
+        .clk_tmds  (clk_tmds),
+        .clk_pix   (clk_pix),
+        .clk_sys   (clk_sys),
+        .locked    (pll_locked)
+    );
+
+    wire [3:0] tmds_d0, tmds_d1;
+    wire       exit_valid;
+    wire [7:0] exit_code;
+    ulx3s_system #(
+        .SYS_HZ       (SYS_MHZ * 1000000),
+        .RAM_BYTES    (RAM_BYTES),
+        .RAM_INIT     (RAM_INIT),
+        .SPAN_W       (SPAN_W),
+        .ENABLE_LINES (ENABLE_LINES),
+        .ENABLE_ZBUF  (ENABLE_ZBUF)
+    ) u_system (
+        .clk_sys    (clk_sys),
+        .clk_pix    (clk_pix),
+        .clk_tmds   (clk_tmds),
+        .pll_locked (pll_locked),
+        .btn_reset  (btn_fire1),
+        .uart_rx    (ftdi_txd),
+        .uart_tx    (ftdi_rxd),
+        .led        (led),
+        .tmds_d0    (tmds_d0),
+        .tmds_d1    (tmds_d1),
+        .exit_valid (exit_valid),
+        .exit_code  (exit_code)
+    );
+    wire unused_exit = exit_valid | (|exit_code);  // the board runs the firmware for ever
+
+    genvar ch;
+    generate
+        for (ch = 0; ch < 4; ch = ch + 1) begin : g_tmds_out
+            ODDRX1F u_ddr (
+                .SCLK (clk_tmds),
+                .RST  (1'b0),
+                .D0   (tmds_d0[ch]),
+                .D1   (tmds_d1[ch]),
+                .Q    (gpdi_dp[ch])
+            );
+        end
+    endgenerate
+
+    assign wifi_gpio0 = 1'b1;
+endmodule
+
+`default_nettype wire

