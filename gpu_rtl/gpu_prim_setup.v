@@ -8,7 +8,12 @@
 // pixel centres, top-left edges) or the line rule. Throughput: one primitive per 3 clocks (the vertex
 // RAM has one read port and a primitive needs three vertices); the index read of the next primitive
 // and the setup arithmetic overlap with the vertex reads, so the walker is fed while it draws.
-// Latency from a primitive's index read to its descriptor: 6 clocks. Rejected primitives take 1-2.
+// The index words are decoded (kind and index checks, fields) into registers in the clock after they
+// leave the RAM, and the check uses those: the RAM's output never reaches a comparator and the vertex
+// RAM's read enable in one clock (the path that limited fmax on the ECP5). In the steady state that
+// clock is F_V2's, so it costs nothing; the first primitive of a batch and the one after a rejected
+// primitive wait one clock for it (F_DECODE).
+// Latency from a primitive's index read to its descriptor: 6 clocks. Rejected primitives take 2-3.
 // A depth-tested triangle (ENABLE_ZBUF, CTRL.ZTEST) holds stage B for the depth-plane division:
 // ceil(31 / DIV_QBITS) + 2 clocks (18), its throughput then; the fetch of the next primitives and
 // the walk of the previous ones go on meanwhile, so large triangles hide it completely.
@@ -75,7 +80,7 @@ module gpu_prim_setup #(
 );
     // ------------------------------------------------------------------ fetch
     localparam [2:0] F_IDLE = 3'd0, F_ISSUE = 3'd1, F_CHECK = 3'd2, F_V1 = 3'd3, F_V2 = 3'd4,
-                     F_DRAIN = 3'd5;
+                     F_DRAIN = 3'd5, F_DECODE = 3'd6;
     reg [2:0] fstate_q;
     reg [PRIM_W-1:0] prim_q;           // next primitive whose index words are read
     reg [15:0] i1_q, i2_q;
@@ -88,6 +93,7 @@ module gpu_prim_setup #(
     reg idx_was_read_q;                // F_V1 read the next primitive's index words
 
     wire more_prims = 32'(prim_q) < tri_count;
+    // The index words as they leave the RAM (the clock after idx_rd_en) ...
     wire [15:0] w_i0 = idx_rd_data[gpu_pkg::GPU_PRIM_I0_LSB +: gpu_pkg::GPU_PRIM_I0_WIDTH];
     wire [15:0] w_i1 = idx_rd_data[gpu_pkg::GPU_PRIM_I1_LSB +: gpu_pkg::GPU_PRIM_I1_WIDTH];
     wire [15:0] w_i2 = idx_rd_data[32 + gpu_pkg::GPU_PRIM_I2_LSB +: gpu_pkg::GPU_PRIM_I2_WIDTH];
@@ -98,18 +104,35 @@ module gpu_prim_setup #(
     wire w_kind_ok = (w_kind == gpu_pkg::GPU_PRIM_KIND_TRI) || (w_is_line && ENABLE_LINES != 0);
     wire w_index_ok = (32'(w_i0) < vtx_count) && (32'(w_i1) < vtx_count)
                    && (w_is_line || 32'(w_i2) < vtx_count);
+    // ... and decoded, one clock later, for F_CHECK.
+    reg idx_fresh_q;                   // idx_rd_data holds words read in the previous clock
+    reg [15:0] d_i0_q, d_i1_q, d_i2_q;
+    reg [gpu_pkg::COLOR_W-1:0] d_color_q;
+    reg d_is_line_q, d_kind_ok_q, d_index_ok_q;
+    always @(posedge clk) begin
+        idx_fresh_q <= idx_rd_en;
+        if (idx_fresh_q) begin
+            d_i0_q <= w_i0;
+            d_i1_q <= w_i1;
+            d_i2_q <= w_i2;
+            d_color_q <= w_color;
+            d_is_line_q <= w_is_line;
+            d_kind_ok_q <= w_kind_ok;
+            d_index_ok_q <= w_index_ok;
+        end
+    end
 
     wire stage_a_free;                 // stage A can take the pending vertex set this cycle
     wire check_stall = (fstate_q == F_CHECK || fstate_q == F_DRAIN) && v2_pending_q && !stage_a_free;
     wire handoff = v2_pending_q && stage_a_free && (fstate_q == F_CHECK || fstate_q == F_DRAIN);
     wire decode = (fstate_q == F_CHECK) && !check_stall;
-    wire reject_now = decode && !(w_kind_ok && w_index_ok);
+    wire reject_now = decode && !(d_kind_ok_q && d_index_ok_q);
 
     assign idx_rd_en = (fstate_q == F_ISSUE && more_prims) || (reject_now && more_prims)
                     || (fstate_q == F_V1 && more_prims);
     assign idx_rd_addr = tri_base[TI_W-1:0] + TI_W'(prim_q);
 
-    wire [15:0] vtx_index = (fstate_q == F_CHECK) ? w_i0 : (fstate_q == F_V1) ? i1_q : i2_q;
+    wire [15:0] vtx_index = (fstate_q == F_CHECK) ? d_i0_q : (fstate_q == F_V1) ? i1_q : i2_q;
     assign vtx_rd_en = (decode && !reject_now) || fstate_q == F_V1 || (fstate_q == F_V2 && !is_line_q);
     assign vtx_rd_addr = vtx_base[VI_W-1:0] + vtx_index[VI_W-1:0];
 
@@ -132,23 +155,25 @@ module gpu_prim_setup #(
                 F_ISSUE: begin
                     if (more_prims) begin
                         prim_q <= prim_q + 1'b1;
-                        fstate_q <= F_CHECK;
+                        fstate_q <= F_DECODE;
                     end else begin
                         fstate_q <= F_DRAIN;
                     end
                 end
+                F_DECODE: fstate_q <= F_CHECK;  // the words arrive; decoded at this clock's edge
                 F_CHECK: if (!check_stall) begin
                     if (reject_now) begin
                         if (more_prims) begin
                             prim_q <= prim_q + 1'b1;
+                            fstate_q <= F_DECODE;
                         end else begin
                             fstate_q <= F_DRAIN;
                         end
                     end else begin
-                        i1_q <= w_i1;
-                        i2_q <= w_i2;
-                        color_q <= w_color;
-                        is_line_q <= w_is_line;
+                        i1_q <= d_i1_q;
+                        i2_q <= d_i2_q;
+                        color_q <= d_color_q;
+                        is_line_q <= d_is_line_q;
                         fstate_q <= F_V1;
                     end
                 end
@@ -451,8 +476,8 @@ module gpu_prim_setup #(
     // ------------------------------------------------------------------ events
     always @(posedge clk) begin
         ev_prim_in <= !rst && fetch_ev_in;
-        ev_err_kind <= !rst && fetch_ev_reject && !w_kind_ok;
-        ev_err_index <= !rst && fetch_ev_reject && w_kind_ok;
+        ev_err_kind <= !rst && fetch_ev_reject && !d_kind_ok_q;
+        ev_err_index <= !rst && fetch_ev_reject && d_kind_ok_q;
         ev_rejected <= (!rst && fetch_ev_reject ? 2'd1 : 2'd0)
                      + (!rst && b_leaves && !b_drawable ? 2'd1 : 2'd0);
         ev_drawn <= !rst && c_free && c_load_valid;
