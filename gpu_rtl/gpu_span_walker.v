@@ -73,6 +73,10 @@ module gpu_span_walker #(
     reg signed [EDGE_W-1:0] efirst_q [0:2];  // edges at lane 0 of the row's starting span
     reg signed [STEP_W-1:0] sx_q [0:2];      // steps at their exact width (gpu_pkg::STEP_W)
     reg signed [STEP_W-1:0] sy_q [0:2];
+    // (SPAN_W - 1) * sx per edge, set with the triangle: the span's last lane in one add from registers
+    // (lane_e builds it as a chain of adds), since it decides the seek (left_rejected) and so sits on
+    // the clock's longest path. Same value, mod 2^EDGE_W, as lane_e's.
+    reg signed [EDGE_W-1:0] sx_last_q [0:2];
     reg [2:0] tl_q;
     reg [COL_W-1:0] col_q, col_first_q, col_lo_q, col_hi_q;
     reg [ROW_W-1:0] row_q, row_hi_q;
@@ -124,7 +128,7 @@ module gpu_span_walker #(
             end
             pass_left[k]  = covered(e_q[k] - EDGE_W'(sx_q[k]), tl_q[k]);
             pass_first[k] = covered(e_q[k], tl_q[k]);
-            pass_last[k]  = covered(lane_e[(k * (SPAN_W + 1) + SPAN_W - 1) * EDGE_W +: EDGE_W], tl_q[k]);
+            pass_last[k]  = covered(e_q[k] + sx_last_q[k], tl_q[k]);
             pass_next[k]  = covered(lane_e[(k * (SPAN_W + 1) + SPAN_W) * EDGE_W +: EDGE_W], tl_q[k]);
         end
     end
@@ -190,6 +194,20 @@ module gpu_span_walker #(
         end
     end
 
+    // The next row's start from either candidate, both summed while the seek decides between them
+    // (first_span), so that the decision meets a multiplexer, not an adder.
+    wire signed [EDGE_W-1:0] e_down [0:2];
+    wire signed [EDGE_W-1:0] efirst_down [0:2];
+    genvar d;
+    generate
+        for (d = 0; d < 3; d = d + 1) begin : g_down
+            assign e_down[d] = e_q[d] + EDGE_W'(sy_q[d]);
+            assign efirst_down[d] = efirst_q[d] + EDGE_W'(sy_q[d]);
+        end
+    endgenerate
+    wire signed [Z_W-1:0] z_down = z_q + Z_W'(zdy_q);
+    wire signed [Z_W-1:0] zfirst_down = zfirst_q + Z_W'(zdy_q);
+
     // ---- stage 2: the candidate span, written one clock after it was found ----
     reg cand_valid_q, cand_depth_q;      // a span to write; whether it is depth-tested
     reg [WAW-1:0] cand_addr_q;
@@ -243,6 +261,9 @@ module gpu_span_walker #(
                         sy_q[0] <= in_desc.sy0;
                         sy_q[1] <= in_desc.sy1;
                         sy_q[2] <= in_desc.sy2;
+                        sx_last_q[0] <= edge_times(EDGE_W'(in_desc.sx0), SPAN_W - 1);
+                        sx_last_q[1] <= edge_times(EDGE_W'(in_desc.sx1), SPAN_W - 1);
+                        sx_last_q[2] <= edge_times(EDGE_W'(in_desc.sx2), SPAN_W - 1);
                         tl_q <= in_desc.top_left;
                         col_q <= COL_W'(in_desc.col_lo);
                         col_first_q <= COL_W'(in_desc.col_lo);
@@ -278,11 +299,11 @@ module gpu_span_walker #(
                             row_addr_q <= row_addr_q + WAW'(WORDS_PER_ROW);
                             col_q <= first_span ? col_q : col_first_q;
                             for (k = 0; k < 3; k = k + 1) begin
-                                efirst_q[k] <= (first_span ? e_q[k] : efirst_q[k]) + EDGE_W'(sy_q[k]);
-                                e_q[k] <= (first_span ? e_q[k] : efirst_q[k]) + EDGE_W'(sy_q[k]);
+                                efirst_q[k] <= first_span ? e_down[k] : efirst_down[k];
+                                e_q[k] <= first_span ? e_down[k] : efirst_down[k];
                             end
-                            zfirst_q <= (first_span ? z_q : zfirst_q) + Z_W'(zdy_q);
-                            z_q <= (first_span ? z_q : zfirst_q) + Z_W'(zdy_q);
+                            zfirst_q <= first_span ? z_down : zfirst_down;
+                            z_q <= first_span ? z_down : zfirst_down;
                             state_q <= S_SEEK;
                         end
                     end else if (go_left) begin
