@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # yosys synth_xilinx (xc7) of a Digilent Artix-7 board top (boards/<board>/<board>_top.v around
 # soc_top, digilent_system and digilent_clocks), firmware-less (RAM_INIT ""), no place and route
-# (Vivado's job: boards/<board>/build.tcl). Prints Markdown table rows: LUT (LUT1..LUT6), FF
+# (Vivado's job: boards/<board>/build.tcl). Prints Markdown table rows: LUT (LUT1..LUT6 and INV), FF
 # (FDRE/FDSE/FDCE/FDPE), block RAM in RAMB36 equivalents (RAMB36E1 + RAMB18E1 / 2), DSP48E1, LUT RAM
 # (cells, and the LUTs they occupy), each against the part's capacity (Xilinx DS180), and a fits
 # column per resource; then the block RAM per memory.
@@ -44,15 +44,21 @@ if [ -z "${REPORT_ONLY:-}" ]; then
     echo "synth_xilinx: yosys synth_xilinx -family xc7 on $top, RAM $ram_desc (takes minutes) ..." >&2
     start=$SECONDS
     yosys -q -l "$out/xc7-$tag.log" 2>"$out/xc7-$tag.warnings" -p "read_verilog -sv -I. $rtl; $chparam \
-        synth_xilinx -family xc7 -top $top; tee -q -o $out/xc7-${tag}_stat.txt stat; \
+        synth_xilinx -family xc7 -top $top; flatten; tee -q -o $out/xc7-${tag}_stat.txt stat; \
         tee -q -o $out/xc7-${tag}_ramb36.txt select -list t:RAMB36E1; \
         tee -q -o $out/xc7-${tag}_ramb18.txt select -list t:RAMB18E1" >/dev/null
     echo $((SECONDS - start)) > "$out/xc7-${tag}_seconds.txt"
 fi
 secs=$(cat "$out/xc7-${tag}_seconds.txt" 2>/dev/null || echo "?")
 
-count() { awk -v pat="$1" '$1 ~ pat && $2 ~ /^[0-9]+$/ { n += $2 } END { print n + 0 }' "$out/xc7-${tag}_stat.txt"; }
-luts=$(count '^LUT[1-6]$')
+# The counts of the whole design: stat's one module (flattened after synthesis, for the instance
+# paths below), or an unflattened stat's "design hierarchy" totals.
+stat_total() { awk '{ l[n++] = $0 } /=== design hierarchy ===/ { s = n } END { for (i = s; i < n; i++) print l[i] }' "$out/xc7-${tag}_stat.txt"; }
+# The RAM size synthesised, from the log's name of the soc_ram it elaborated (RAM_BYTES in binary).
+ram_bin=$(grep -m1 -o "soc_ram.RAM_BYTES=s32'[01]*" "$out/xc7-$tag.log" | head -1 | sed "s/.*'//")
+[ -z "$ram_bin" ] || ram_desc="$(( 2#$ram_bin / 1024 )) KiB$([ -n "${RAM_BYTES:-}" ] || echo ", the top's default")"
+count() { stat_total | awk -v pat="$1" '$1 ~ pat && $2 ~ /^[0-9]+$/ { n += $2 } END { print n + 0 }'; }
+luts=$(count '^(LUT[1-6]|INV)$')             # yosys' INV cells become LUT1s in Vivado
 ffs=$(count '^FD[RSCP]E$')
 b36=$(count '^RAMB36E1$')
 b18=$(count '^RAMB18E1$')
@@ -66,9 +72,9 @@ lutram_luts=$(awk '$2 ~ /^[0-9]+$/ {
         else if ($1 == "RAM256X1D" || $1 == "RAM512X1S") w = 8
         else if ($1 == "RAM16X1D" || $1 == "RAM32X1D" || $1 == "RAM64X1D" || $1 == "RAM128X1S") w = 2
         else if ($1 == "RAM16X1S" || $1 == "RAM32X1S" || $1 == "RAM64X1S") w = 1
-        n += w * $2 } END { print n + 0 }' "$out/xc7-${tag}_stat.txt")
+        n += w * $2 } END { print n + 0 }' <(stat_total))
 bram_x2=$((2 * b36 + b18))                     # in RAMB18 halves
-bram="$((bram_x2 / 2))$([ $((bram_x2 % 2)) -eq 1 ] && echo .5)"
+bram=$((bram_x2 / 2)); [ $((bram_x2 % 2)) -eq 0 ] || bram="$bram.5"
 fits() { [ "$1" -le "$2" ] && echo yes || echo "**no**"; }
 lut_all=$((luts + lutram_luts))
 f_lut=$(fits "$lut_all" "$cap_lut")
