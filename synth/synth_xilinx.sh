@@ -56,7 +56,7 @@ secs=$(cat "$out/xc7-${tag}_seconds.txt" 2>/dev/null || echo "?")
 stat_total() { awk '{ l[n++] = $0 } /=== design hierarchy ===/ { s = n } END { for (i = s; i < n; i++) print l[i] }' "$out/xc7-${tag}_stat.txt"; }
 # The RAM size synthesised, from the log's name of the soc_ram it elaborated (RAM_BYTES in binary).
 ram_bin=$(grep -o "soc_ram.RAM_BYTES=s32'[01]*" "$out/xc7-$tag.log" | tail -n 1 | sed "s/.*'//")   # the last: the one used
-[ -z "$ram_bin" ] || ram_desc="$(( 2#$ram_bin / 1024 )) KiB$([ -n "${RAM_BYTES:-}" ] || echo ", the top's default")"
+[ -n "${RAM_BYTES:-}" ] || [ -z "$ram_bin" ] || ram_desc="$(( 2#$ram_bin / 1024 )) KiB$([ -n "${RAM_BYTES:-}" ] || echo ", the top's default")"
 count() { stat_total | awk -v pat="$1" '$1 ~ pat && $2 ~ /^[0-9]+$/ { n += $2 } END { print n + 0 }'; }
 luts=$(count '^(LUT[1-6]|INV)$')             # yosys' INV cells become LUT1s in Vivado
 ffs=$(count '^FD[RSCP]E$')

@@ -6,14 +6,17 @@
 // (btnC, active high) is pressed. The FT2232's second channel carries the UART (RsRx in, RsTx out,
 // 115200 8N1). The 12-bit VGA connector shows the GPU's 640x480@60 picture. The 16 LEDs are
 // digilent_system's (0 heartbeat, 1 frames, 2 GPU error, 3 exited, 11:4 SYS LEDS, 15:12 exit code).
-// Block RAM: the XC7A35T has 50 RAMB36; the two framebuffers take about 35 of them, so the default
-// 192 KiB RAM does not fit — RAM_BYTES defaults to 64 KiB here (see boards/basys3/README.md).
+// Block RAM: the XC7A35T has 50 RAMB36. The two framebuffers take 38 of them (19 a bank), the CPU's
+// caches and register file 5 (1 RAMB36 + 8 RAMB18), the GPU's vertex and index RAMs 2: 45 before
+// the SoC's RAM (8 KiB a RAMB36). So RAM_BYTES defaults to 16 KiB here, the largest that fits (49
+// of 50; 24 KiB needs 51, the SoC's default 192 KiB 93): too small for any scene (tetra needs
+// 57.5 KiB), enough for small test programs. yosys synth_xilinx counts: boards/basys3/README.md.
 // Only the pin names and the reset polarity live here; the logic is in digilent_system.
 `default_nettype none
 
 module basys3_top #(
     parameter integer SYS_MHZ = 50,                    // a divisor of 8000 (digilent_clocks)
-    parameter integer RAM_BYTES = 64 * 1024,           // the firmware's SOC_RAM_KIB (see above)
+    parameter integer RAM_BYTES = 16 * 1024,           // the firmware's SOC_RAM_KIB (see above)
     parameter RAM_INIT = "",                           // the firmware's RAM image
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
