@@ -1,0 +1,110 @@
+// digilent_system: everything of the Digilent Artix-7 builds (Basys3, Nexys A7) between the MMCM and
+// the pins — the SoC, the registered 12-bit VGA outputs and the status LEDs — without a vendor
+// primitive, so that Verilator lints (or runs) it as it is. basys3_top and nexys_a7_top add the
+// MMCME2_BASE, the BUFGs and the board's pin names.
+//
+// Contract: clk_sys (SYS_HZ) and clk_pix (25 MHz) come from one MMCM; until mmcm_locked the SoC is
+// held in reset, and again while btn_reset (active high, asynchronous) is pressed: soc_top
+// synchronises ext_rst to clk_sys and gpu_top the reset of its scan-out to clk_pix.
+// VGA: the GPU's 4:4:4 colours and syncs go to the boards' resistor-ladder VGA connector through one
+// register in the clk_pix domain (loaded on vga_pix_stb, which with a 25 MHz clk_pix is every cycle),
+// blanked outside the visible area; the syncs stay active low.
+// LEDs: 0 heartbeat (about 0.7 s on, 0.7 s off at 50 MHz: the system clock runs), 1 frames (toggles
+// every 16 buffer swaps: about 2 Hz at 60 fps), 2 GPU error (ERRORS non-zero), 3 the firmware has
+// exited (SYS EXIT), 11:4 SYS LEDS 7:0 (the firmware's), 15:12 the exit code's low nibble. A board
+// with 8 LEDs wires led[7:0].
+// Clock domains: clk_sys and clk_pix; every crossing is soc_top's / gpu_top's own (gpu_cdc_sync,
+// gpu_cdc_pulse). The only logic here on clk_pix is the output register, fed by gpu_top's clk_pix
+// outputs.
+`default_nettype none
+
+module digilent_system #(
+    parameter integer SYS_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,        // clk_sys: the SoC's CLK_HZ
+    parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // on-chip RAM (soc_top)
+    parameter RAM_INIT = "",                                       // the firmware image (soc_top)
+    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,        // the GPU's build options
+    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
+    localparam integer HEARTBEAT_BIT = $clog2(SYS_HZ) - 1,        // toggles every 2^bit clocks
+    localparam integer FRAME_LED_BIT = 4                           // toggles every 16 swaps
+) (
+    // clocks (the board top's MMCM)
+    input  wire        clk_sys,
+    input  wire        clk_pix,        // 25 MHz
+    input  wire        mmcm_locked,    // asynchronous
+    // board
+    input  wire        btn_reset,      // active high, asynchronous
+    input  wire        uart_rx,        // from the USB-UART bridge
+    output wire        uart_tx,        // to the USB-UART bridge
+    output wire [15:0] led,
+    // VGA connector, 4:4:4, clk_pix domain (registered)
+    output reg  [3:0]  vga_r,
+    output reg  [3:0]  vga_g,
+    output reg  [3:0]  vga_b,
+    output reg         vga_hs_n,
+    output reg         vga_vs_n
+);
+    wire       pix_stb, de, hsync_n, vsync_n;
+    wire [3:0] r, g, b;
+    wire [7:0] sys_leds, exit_code;
+    wire       frame_swapped, gpu_error, exit_valid;
+
+    soc_top #(
+        .RAM_BYTES    (RAM_BYTES),
+        .RAM_INIT     (RAM_INIT),
+        .CLK_HZ       (SYS_HZ),
+        .PIX_CLK_HZ   (25000000),
+        .SPAN_W       (SPAN_W),
+        .ENABLE_LINES (ENABLE_LINES),
+        .ENABLE_ZBUF  (ENABLE_ZBUF)
+    ) u_soc (
+        .clk               (clk_sys),
+        .clk_pix           (clk_pix),
+        .ext_rst           (!mmcm_locked || btn_reset),
+        .uart_rx           (uart_rx),
+        .uart_tx           (uart_tx),
+        .vga_pix_stb       (pix_stb),
+        .vga_de            (de),
+        .vga_hsync_n       (hsync_n),
+        .vga_vsync_n       (vsync_n),
+        .vga_r             (r),
+        .vga_g             (g),
+        .vga_b             (b),
+        .leds              (sys_leds),
+        .gpu_frame_swapped (frame_swapped),
+        .gpu_error         (gpu_error),
+        .exit_valid        (exit_valid),
+        .exit_code         (exit_code)
+    );
+
+    // ---- VGA: one output register in the clk_pix domain ----
+    initial begin
+        vga_r = 4'd0;
+        vga_g = 4'd0;
+        vga_b = 4'd0;
+        vga_hs_n = 1'b1;
+        vga_vs_n = 1'b1;
+    end
+    always @(posedge clk_pix) begin
+        if (pix_stb) begin
+            vga_r    <= de ? r : 4'd0;
+            vga_g    <= de ? g : 4'd0;
+            vga_b    <= de ? b : 4'd0;
+            vga_hs_n <= hsync_n;
+            vga_vs_n <= vsync_n;
+        end
+    end
+
+    // ---- LEDs (clk_sys) ----
+    reg [HEARTBEAT_BIT:0] heartbeat_q = '0;
+    reg [FRAME_LED_BIT:0] frames_q = '0;
+    always @(posedge clk_sys) begin
+        heartbeat_q <= heartbeat_q + 1'b1;
+        if (frame_swapped) frames_q <= frames_q + 1'b1;
+    end
+    assign led = {exit_code[3:0], sys_leds, exit_valid, gpu_error,
+                  frames_q[FRAME_LED_BIT], heartbeat_q[HEARTBEAT_BIT]};
+    wire unused_exit = |exit_code[7:4];
+endmodule
+
+`default_nettype wire
