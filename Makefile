@@ -43,6 +43,7 @@ include cosim/soc/socsim.mk
 # Boards: bitstream, synth-board, flash, load, term, lint-board (boards/<board>/board.mk).
 BOARD      ?= ulx3s
 include boards/ulx3s/board.mk
+include boards/digilent/board.mk
 
 .PHONY: all setup run run-headless test test-quick test-list lint check-contract contract random-long raster \
         bench-gpu bench-error bench-error-run synth clean

