@@ -3,7 +3,7 @@
 for the default build, the depth-buffer build and every scene's lean build, as one Markdown table
 with the LFE5U-45F and -85F fit.
 
-usage: board_fit.py --build BUILD [--pnr] [--scenes S ...] [--make make]
+usage: board_fit.py --build BUILD [--pnr] [--jobs N] [--scenes S ...] [--make make]
 
 Builds, each through `make synth-board BOARD=ulx3s` (or `make bitstream`, with --pnr):
   default      SCENE tetra, the contract's 192 KiB RAM, SPAN_W 8, lines, no depth buffer
@@ -12,7 +12,8 @@ Builds, each through `make synth-board BOARD=ulx3s` (or `make bitstream`, with -
                and stack (postlink's "RAM use") rounded up to 8 KiB — the RAM's four byte lanes of
                2 KiB EBR each
   zbuf-<scene>-lean  the depth-buffer build with the smallest lean RAM (a depth buffer fits only so)
-Each build's numbers come from synth/ecp5_bitstream.py's resources.json and fmax.json in its
+The firmware of every build is made first, one after another (they share object files); then the
+builds run JOBS at a time (default 2: yosys and nextpnr use one core each). Each build's numbers come from synth/ecp5_bitstream.py's resources.json and fmax.json in its
 directory; a build that does not fit the 85F is reported as such (no place and route).
 """
 import argparse
@@ -23,6 +24,7 @@ import re
 import subprocess
 import sys
 import time
+from concurrent.futures import ThreadPoolExecutor
 
 RAM_USE = re.compile(r"RAM use (\d+) of (\d+) bytes")
 SCENES = ["tetra", "cubes", "landscape", "voxel", "knot"]
@@ -55,6 +57,7 @@ def main():
     ap.add_argument("--pnr", action="store_true", help="place and route each build that fits: fmax per clock")
     ap.add_argument("--scenes", nargs="*", default=SCENES)
     ap.add_argument("--make", default="make")
+    ap.add_argument("--jobs", type=int, default=2)
     args = ap.parse_args()
     logdir = os.path.join(args.build, "board-fit")
     os.makedirs(logdir, exist_ok=True)
@@ -65,14 +68,19 @@ def main():
     builds += [(f"{s}-lean", s, kib[s], 0) for s in args.scenes]
     builds += [(f"zbuf-{smallest}-lean", smallest, kib[smallest], 1)]
 
-    rows = []
     for name, scene, ram, zbuf in builds:
+        status, _ = make(args, ["board-fw"], {"BOARD": "ulx3s", "SCENE": scene, "SOC_RAM_KIB": ram, "BUILD": args.build},
+                         os.path.join(logdir, f"fw-{name}.log"))
+        if status != 0:
+            sys.exit(f"board_fit: {name}: the firmware does not build (see {logdir}/fw-{name}.log)")
+
+    def one(build):
+        name, scene, ram, zbuf = build
         target = "bitstream" if args.pnr else "synth-board"
         variables = {"BOARD": "ulx3s", "SCENE": scene, "SOC_RAM_KIB": ram, "ZBUF": zbuf, "BUILD": args.build}
         print(f"board_fit: {name}: {target} SCENE={scene} SOC_RAM_KIB={ram} ZBUF={zbuf} ...", flush=True)
         start = time.monotonic()
         status, _ = make(args, [target], variables, os.path.join(logdir, f"{name}.log"))
-        secs = time.monotonic() - start
         out = os.path.join(args.build, "board-ulx3s", f"{scene}-{ram}k-50mhz" + ("-z" if zbuf else ""))
         res_path = os.path.join(out, "resources.json")
         if not os.path.exists(res_path):
@@ -80,11 +88,14 @@ def main():
         with open(res_path) as f:
             res = json.load(f)
         fmax = {}
-        if os.path.exists(os.path.join(out, "fmax.json")) and args.pnr:
+        if args.pnr and os.path.exists(os.path.join(out, "fmax.json")):
             with open(os.path.join(out, "fmax.json")) as f:
                 fmax = json.load(f)
-        print(f"board_fit: {name}: status {status} in {secs:.0f} s", flush=True)
-        rows.append((name, scene, ram, zbuf, res, fmax, status))
+        print(f"board_fit: {name}: status {status} in {time.monotonic() - start:.0f} s", flush=True)
+        return (name, scene, ram, zbuf, res, fmax, status)
+
+    with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        rows = list(pool.map(one, builds))
 
     print()
     print("| build | RAM | LUT4 | FF | EBR | MULT18 | fits 45F | fits 85F | fmax sys / pix / tmds (MHz) |")
