@@ -2,7 +2,7 @@
 # constraints for Vivado users; included by the top-level Makefile.
 #   synth-board BOARD=basys3|nexys_a7   yosys synth_xilinx resource counts against the part
 #                                       (synth/synth_xilinx.sh, about 4½ minutes; RAM_BYTES=…)
-#   bitstream BOARD=basys3|nexys_a7     not here: Vivado's (boards/<board>/build.tcl)
+#   bitstream BOARD=basys3|nexys_a7     not here: Vivado's (boards/digilent/build.tcl)
 #   lint-board                          also lints these tops (boards/digilent/lint.sh)
 DIGILENT_BOARDS := basys3 nexys_a7
 
@@ -13,6 +13,6 @@ synth-board: $(SOC_VENV)
 
 bitstream flash load:
 	@echo "$@ BOARD=$(BOARD): needs Vivado, which is not part of this project's set-up:"
-	@echo "  vivado -mode batch -source boards/$(BOARD)/build.tcl   (see boards/$(BOARD)/README.md)"
+	@echo "  vivado -mode batch -source boards/digilent/build.tcl -tclargs $(BOARD)   (see boards/$(BOARD)/README.md)"
 	@exit 1
 endif

@@ -24,9 +24,7 @@ module digilent_system #(
     parameter RAM_INIT = "",                                       // the firmware image (soc_top)
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,        // the GPU's build options
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
-    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
-    localparam integer HEARTBEAT_BIT = $clog2(SYS_HZ) - 1,        // toggles every 2^bit clocks
-    localparam integer FRAME_LED_BIT = 4                           // toggles every 16 swaps
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF
 ) (
     // clocks (the board top's MMCM)
     input  wire        clk_sys,
@@ -96,14 +94,11 @@ module digilent_system #(
     end
 
     // ---- LEDs (clk_sys) ----
-    reg [HEARTBEAT_BIT:0] heartbeat_q = '0;
-    reg [FRAME_LED_BIT:0] frames_q = '0;
-    always @(posedge clk_sys) begin
-        heartbeat_q <= heartbeat_q + 1'b1;
-        if (frame_swapped) frames_q <= frames_q + 1'b1;
-    end
-    assign led = {exit_code[3:0], sys_leds, exit_valid, gpu_error,
-                  frames_q[FRAME_LED_BIT], heartbeat_q[HEARTBEAT_BIT]};
+    wire heartbeat, frames;
+    board_status #(.SYS_HZ(SYS_HZ)) u_status (
+        .clk_sys(clk_sys), .frame_swapped(frame_swapped), .heartbeat(heartbeat), .frames(frames)
+    );
+    assign led = {exit_code[3:0], sys_leds, exit_valid, gpu_error, frames, heartbeat};
     wire unused_exit = |exit_code[7:4];
 endmodule
 

@@ -2,4 +2,5 @@
 // compilation order (boards/ulx3s/board.mk, the board's socsim build and lint read it).
 boards/common/tmds_encoder.v
 boards/common/dvi_tx.v
+boards/common/board_status.v
 boards/ulx3s/ulx3s_system.v

@@ -20,9 +20,7 @@ module ulx3s_system #(
     parameter RAM_INIT = "",                                       // the firmware image (soc_top)
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,        // the GPU's build options
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
-    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
-    localparam integer HEARTBEAT_BIT = $clog2(SYS_HZ) - 1,        // toggles every 2^bit clocks
-    localparam integer FRAME_LED_BIT = 4                           // toggles every 16 swaps
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF
 ) (
     // clocks (ulx3s_pll)
     input  wire       clk_sys,
@@ -100,13 +98,11 @@ module ulx3s_system #(
     );
 
     // ---- status LEDs, system clock ----
-    reg [HEARTBEAT_BIT:0] heartbeat_q = '0;
-    reg [FRAME_LED_BIT:0] frames_q = '0;
-    always @(posedge clk_sys) begin
-        heartbeat_q <= heartbeat_q + 1'b1;
-        if (gpu_frame_swapped) frames_q <= frames_q + 1'b1;
-    end
-    assign led = {soc_leds[3:0], exit_valid, gpu_error, frames_q[FRAME_LED_BIT], heartbeat_q[HEARTBEAT_BIT]};
+    wire heartbeat, frames;
+    board_status #(.SYS_HZ(SYS_HZ)) u_status (
+        .clk_sys(clk_sys), .frame_swapped(gpu_frame_swapped), .heartbeat(heartbeat), .frames(frames)
+    );
+    assign led = {soc_leds[3:0], exit_valid, gpu_error, frames, heartbeat};
     wire unused_leds = |soc_leds[7:4];
 endmodule
 
