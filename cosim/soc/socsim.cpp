@@ -215,6 +215,7 @@ private:
     int fail(const char *kind, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
     bool load_ram(std::string *error);
     void tick();
+    void clock_once();   // the model's clocks up to the system clock's next rising edge
     void uart_byte(uint8_t b);
     void flush_uart(bool final);
     bool finish_frame(std::string *error);
@@ -406,9 +407,8 @@ bool SocRun::load_ram(std::string *error)
 // One system clock: every edge of the three clocks up to and including the system clock's next
 // rising one, in time order (edges at the same instant in one eval); the TMDS bit pairs are read
 // after each rising edge of the TMDS clock, which the ODDRX1Fs send during the period that follows.
-void SocRun::tick()
+void SocRun::clock_once()
 {
-    top_->uart_rx = tx_.tick();
     for (;;) {
         const uint64_t t = std::min({next_sys_ps_, next_pix_ps_, next_tmds_ps_});
         bool sys_rose = false, tmds_rose = false;
@@ -435,22 +435,29 @@ void SocRun::tick()
             break;
         }
     }
-    cycles_++;
+}
 #else
-void SocRun::tick()
+// One clock of soc_top, the scan-out's clock tied to the system clock (soc.mk); the VGA pins are
+// sampled after the edges where vga_pix_stb was high.
+void SocRun::clock_once()
 {
-    top_->uart_rx = tx_.tick();
-    top_->clk = top_->clk_pix = 0;  // the scan-out's clock tied to the system clock (soc.mk)
+    top_->clk = top_->clk_pix = 0;
     top_->eval();
     const bool pixel_edge = top_->vga_pix_stb;  // outputs change on the edge where it is high
     top_->clk = top_->clk_pix = 1;
     top_->eval();
-    cycles_++;
     if (pixel_edge) {
         vga_monitor_sample(&monitor_, top_->vga_hsync_n, top_->vga_vsync_n, top_->vga_r, top_->vga_g,
                            top_->vga_b);
     }
+}
 #endif
+
+void SocRun::tick()
+{
+    top_->uart_rx = tx_.tick();
+    clock_once();
+    cycles_++;
     uint8_t b;
     if (rx_.sample(top_->uart_tx, &b)) {
         uart_byte(b);
