@@ -3,7 +3,7 @@
 // so that Verilator runs it as it is (cosim/soc/socsim.mk's board build drives its three clocks).
 //
 // Contract: clk_sys, clk_pix (25 MHz) and clk_tmds (5 x clk_pix, the same PLL) come from
-// ulx3s_pll; until pll_locked every domain is held in reset, and again while btn_reset is pressed.
+// ulx3s_pll; until pll_locked every domain is held in reset, and the SoC while btn_reset is pressed.
 // tmds_d0/tmds_d1 are, per TMDS channel (0 blue, 1 green, 2 red, 3 clock), the bit pair an
 // ODDRX1F sends in one clk_tmds period (dvi_tx). The SoC's 4-bit VGA colours go out as 8-bit DVI
 // colours by repeating the nibble (0xF -> 0xFF), so white stays white.
