@@ -63,16 +63,14 @@ def run_step(n, total, what, cmd, log):
 
 
 def yosys_counts(stat_path):
-    """Cell counts of yosys' `stat` for the design's top (the last 'Number of cells' block)."""
+    """Cell counts of yosys' `stat` (YoWASP's yosys prints "<count> <cell>"; synth_ecp5 flattens, so
+    there is one block, the top's)."""
     counts = {}
     with open(stat_path) as f:
         for line in f:
             m = re.match(r"\s+(\d+)\s+(?:[\d.]+\s+)?(\$?[A-Za-z_][\w$]*)\s*$", line)
-            m2 = re.match(r"\s+([A-Za-z_$][\w$]*)\s+(\d+)\s*$", line)
             if m:
                 counts[m.group(2)] = counts.get(m.group(2), 0) + int(m.group(1))
-            elif m2:
-                counts[m2.group(1)] = counts.get(m2.group(1), 0) + int(m2.group(2))
     return counts
 
 

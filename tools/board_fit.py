@@ -81,7 +81,8 @@ def main():
         print(f"board_fit: {name}: {target} SCENE={scene} SOC_RAM_KIB={ram} ZBUF={zbuf} ...", flush=True)
         start = time.monotonic()
         status, _ = make(args, [target], variables, os.path.join(logdir, f"{name}.log"))
-        out = os.path.join(args.build, "board-ulx3s", f"{scene}-{ram}k-50mhz" + ("-z" if zbuf else ""))
+        out = subprocess.run([args.make, "-s", "--no-print-directory", "ulx3s-dir"] + [f"{k}={v}" for k, v in variables.items()],
+                             check=True, capture_output=True, text=True).stdout.strip()
         res_path = os.path.join(out, "resources.json")
         if not os.path.exists(res_path):
             sys.exit(f"board_fit: {name}: no {res_path} (see {logdir}/{name}.log)")

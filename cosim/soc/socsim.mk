@@ -51,18 +51,20 @@ ULX3S_SIM_FILES  := boards/ulx3s/files.f
 SOCSIM_ULX3S_CMD  = $(call socsim_cmd,$(SOCSIM_ULX3S_DIR),ulx3s_system,-f $(ULX3S_SIM_FILES) \
   $(abspath cosim/soc/tmds_decoder.cpp),-DSOCSIM_BOARD_ULX3S)
 
-# Recorded without the job count: make test builds with VERILATOR_JOBS=1, then runs with the default.
-$(SOCSIM_DIR)/cmd.txt $(SOCSIM_ULX3S_DIR)/cmd.txt: fw-force
-	$(call fw_flags_file,$@,$(subst -j $(VERILATOR_JOBS) ,,$(if $(findstring ulx3s,$@),$(SOCSIM_ULX3S_CMD),$(SOCSIM_CMD))))
+# The rules of one socsim build: its recorded command (without the job count: make test builds with
+# VERILATOR_JOBS=1, then runs with the default) and the simulator. $(1) = directory, $(2) = the name
+# of its command variable, $(3) = further prerequisites.
+define SOCSIM_BUILD_RULES
+$(1)/cmd.txt: fw-force
+	$$(call fw_flags_file,$$@,$$(subst -j $$(VERILATOR_JOBS) ,,$$($(2))))
 
-$(SOCSIM): $(SOCSIM_DEPS) $(SOCSIM_DIR)/cmd.txt
-	@mkdir -p $(SOCSIM_DIR)
-	$(SOCSIM_CMD) >$(SOCSIM_DIR)/verilator.log 2>&1 || { tail -40 $(SOCSIM_DIR)/verilator.log; exit 1; }
-
-$(SOCSIM_ULX3S): $(SOCSIM_DEPS) $(SOCSIM_ULX3S_DIR)/cmd.txt $(ULX3S_SIM_FILES) $(shell sed -e 's://.*::' $(ULX3S_SIM_FILES)) \
-                 cosim/soc/tmds_decoder.cpp
-	@mkdir -p $(SOCSIM_ULX3S_DIR)
-	$(SOCSIM_ULX3S_CMD) >$(SOCSIM_ULX3S_DIR)/verilator.log 2>&1 || { tail -40 $(SOCSIM_ULX3S_DIR)/verilator.log; exit 1; }
+$(1)/socsim: $$(SOCSIM_DEPS) $(1)/cmd.txt $(3)
+	@mkdir -p $(1)
+	$$($(2)) >$(1)/verilator.log 2>&1 || { tail -40 $(1)/verilator.log; exit 1; }
+endef
+$(eval $(call SOCSIM_BUILD_RULES,$(SOCSIM_DIR),SOCSIM_CMD,))
+$(eval $(call SOCSIM_BUILD_RULES,$(SOCSIM_ULX3S_DIR),SOCSIM_ULX3S_CMD,$(ULX3S_SIM_FILES) \
+  $(shell sed -e 's://.*::' $(ULX3S_SIM_FILES)) cosim/soc/tmds_decoder.cpp))
 
 .PHONY: socsim socsim-ulx3s run-soc soc-fw soc-test-deps bench-soc
 socsim: $(SOCSIM)
