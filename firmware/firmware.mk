@@ -145,7 +145,7 @@ FW_PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 FW_PNG_LIBS   := $(or $(shell pkg-config --libs libpng 2>/dev/null),-lpng)
 
 # ---- the model scene's built-in model -----------------------------------------------------------
-# MODEL (any file assimp reads) converted by tools/meshconv to the build's capacity
+# MODEL (any file assimp reads, or a .gmsh) converted by tools/meshconv to the build's capacity
 # (FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES: every object sees them, scenes/model/model.h), simplified
 # to it where larger, then assembled into an object of its own (.incbin) that an ELF links where
 # its scene set has the model scene. The file's name carries the capacity, so builds of two
@@ -160,9 +160,12 @@ FW_MODEL_GMSH      := $(BUILD)/model/$(FW_MODEL_TAG).gmsh
 FW_MODEL_OBJ       := $(FW_DIR)/model/$(FW_MODEL_TAG).o
 FW_MODEL_HOST_OBJ  := $(BUILD)/fw-host/model/$(FW_MODEL_TAG).o
 
+# A .gmsh MODEL is taken as it is once the validator accepts it at this capacity.
 $(FW_MODEL_GMSH): $(MODEL) $(MESHCONV)
 	@mkdir -p $(@D)
-	$(MESHCONV) $(MODEL) $@ --max-verts $(FW_MODEL_MAX_VERTS) --max-faces $(FW_MODEL_MAX_FACES)
+	$(if $(filter .gmsh,$(suffix $(MODEL))),\
+	  $(MESHCONV) --check $(MODEL) --max-verts $(FW_MODEL_MAX_VERTS) --max-faces $(FW_MODEL_MAX_FACES) && cp $(MODEL) $@,\
+	  $(MESHCONV) $(MODEL) $@ --max-verts $(FW_MODEL_MAX_VERTS) --max-faces $(FW_MODEL_MAX_FACES))
 
 # The blob's assembly: the file between two symbols (scenes/model/model.c reads them).
 $(BUILD)/model/$(FW_MODEL_TAG).S: $(FW_MODEL_GMSH)
