@@ -486,3 +486,11 @@ profile-fw: $(FW_BENCH_DIR)/$(call fw_name,$(SCENE),$(FW_BACKEND)).elf $(GPUSIM)
 	@$(or $(PYTHON),python3) firmware/tools/profile_fw.py $(GPUSIM) $<
 
 fw-force:
+
+# ---- the upload receiver on a pty, for tools/mesh_upload.py's tests (tests/upload/) -------------
+UPLOAD_PEER := $(BUILD)/tests/upload_peer
+$(UPLOAD_PEER): tests/upload/upload_peer.c $(addprefix firmware/model/,crc32.c meshfile.c upload.c) \
+                firmware/render/mesh.c firmware/math/vec.c firmware/math/fixed.c \
+                $(wildcard firmware/model/*.h)
+	@mkdir -p $(@D)
+	$(HOST_CC) $(HOST_CFLAGS) -Ifirmware -Icontract $(FW_MODEL_DEFS) $(filter %.c,$^) -o $@ -lm
