@@ -404,7 +404,7 @@ FW_SIZE_ENV = SIZE=$(patsubst %gcc,%size,$(FW_CC)) NM=$(patsubst %gcc,%nm,$(FW_C
 
 FW_UNIT_TEST_SRCS := $(wildcard tests/firmware/*.c)
 FW_UNIT_CFLAGS     = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Itests/firmware/fake_bsp -Ibsp \
-                     -Itests/firmware -Icontract -Ifirmware -DSORT_COUNT_WORK $(FW_MODEL_DEFS)
+                     -Itests/firmware -Itests -Icontract -Ifirmware -DSORT_COUNT_WORK $(FW_MODEL_DEFS)
 
 # $(1) = binary, $(2) = backend
 define FW_UNIT_RULES
