@@ -151,8 +151,8 @@ FW_PNG_LIBS   := $(or $(shell pkg-config --libs libpng 2>/dev/null),-lpng)
 # its scene set has the model scene. The file's name carries the capacity, so builds of two
 # capacities coexist.
 MODEL              ?= /usr/share/assimp/models/OBJ/spider.obj
-FW_MODEL_MAX_VERTS ?= 2048
-FW_MODEL_MAX_FACES ?= 2048
+FW_MODEL_MAX_VERTS ?= 1024
+FW_MODEL_MAX_FACES ?= 1024
 MESHCONV           ?= $(BUILD)/tools/meshconv
 FW_MODEL_DEFS      := -DFW_MODEL_MAX_VERTS=$(FW_MODEL_MAX_VERTS)u -DFW_MODEL_MAX_FACES=$(FW_MODEL_MAX_FACES)u
 FW_MODEL_TAG       := $(basename $(notdir $(MODEL)))-v$(FW_MODEL_MAX_VERTS)f$(FW_MODEL_MAX_FACES)
@@ -220,7 +220,7 @@ FW_SP_VARIANTS += fixed-chip fixed-emul
 # measured on a cubes frame, the sort fell from 25,059 to 17,869 instructions without the call.
 FW_CFLAGS_BASE := $(FW_ARCH_FLAGS) -O2 -g $(FW_WARN) -ffp-contract=off -ffunction-sections \
                   -fdata-sections -fno-tree-loop-distribute-patterns \
-                  -Ibsp/$(FW_PLATFORM) -Ibsp -Icontract -Ifirmware
+                  -Ibsp/$(FW_PLATFORM) -Ibsp -Icontract -Ifirmware $(FW_MODEL_DEFS)
 FW_HOST_CFLAGS_BASE = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Ibsp/host -Ibsp -Icontract \
                       -Ifirmware -Igpu_model -Icosim $(FW_MODEL_DEFS)
 FW_LDFLAGS_BASE := $(FW_ARCH_FLAGS) $(FW_BSP_LDFLAGS) -T$(FW_LDSCRIPT) -Wl,--gc-sections
