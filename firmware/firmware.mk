@@ -157,8 +157,8 @@ MESHCONV           ?= $(BUILD)/tools/meshconv
 FW_MODEL_DEFS      := -DFW_MODEL_MAX_VERTS=$(FW_MODEL_MAX_VERTS)u -DFW_MODEL_MAX_FACES=$(FW_MODEL_MAX_FACES)u
 FW_MODEL_TAG       := $(basename $(notdir $(MODEL)))-v$(FW_MODEL_MAX_VERTS)f$(FW_MODEL_MAX_FACES)
 FW_MODEL_GMSH      := $(BUILD)/model/$(FW_MODEL_TAG).gmsh
-FW_MODEL_OBJ       := $(FW_DIR)/model/$(FW_MODEL_TAG).o
-FW_MODEL_HOST_OBJ  := $(BUILD)/fw-host/model/$(FW_MODEL_TAG).o
+FW_MODEL_OBJ       := $(FW_DIR)/model-blob/$(FW_MODEL_TAG).o
+FW_MODEL_HOST_OBJ  := $(BUILD)/fw-host/model-blob/$(FW_MODEL_TAG).o
 
 # A .gmsh MODEL is taken as it is once the validator accepts it at this capacity.
 $(FW_MODEL_GMSH): $(MODEL) $(MESHCONV)
