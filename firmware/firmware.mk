@@ -343,6 +343,15 @@ $(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
   $(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-$(call fw_name,$(s),$(b)),$(s),$(b),$(FW_TEST_FRAMES)))\
   $(eval FW_TEST_DEPS += $(FW_TEST_DIR)/$(call fw_name,$(s),$(b)).elf $(FW_TEST_DIR)/host-$(call fw_name,$(s),$(b)))))
 $(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/tetra-watchdog.elf,tetra,fixed,5,268435456))
+# The upload test (tests/upload/cosim_upload.sh): tetra with every scene, long enough for two
+# uploads, and the host builds that render its references (before the swap: tetra; after: the
+# model scene from the uploaded file, fw-host --model).
+FW_UPLOAD_TEST_FRAMES := 16
+$(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/upload-tetra.elf,tetra,fixed,$(FW_UPLOAD_TEST_FRAMES),))
+$(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-upload-tetra,tetra,fixed,$(FW_UPLOAD_TEST_FRAMES)))
+$(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-upload-model,model,fixed,$(FW_UPLOAD_TEST_FRAMES)))
+FW_TEST_DEPS += $(FW_TEST_DIR)/upload-tetra.elf $(FW_TEST_DIR)/host-upload-tetra \
+                $(FW_TEST_DIR)/host-upload-model
 FW_TEST_DEPS += $(FW_TEST_DIR)/tetra-watchdog.elf $(FW_UNIT) $(FW_UNIT_FLOAT)
 # voxel without line emulation, as a chip whose GPU draws lines builds it (tests/scenes/host_features.sh:
 # on a GPU without lines its F key refuses; with lines its frames equal the default build's).
