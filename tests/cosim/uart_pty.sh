@@ -15,57 +15,9 @@ timeout 120 "$GPUSIM" cosim --fw "$FW_ELF" --frames "$work/frames" --uart-log "$
     --summary "$work/summary" --uart-pty "$link" >"$work/out" 2>&1 &
 sim=$!
 
-# The client: plain termios, nothing but the standard library, so that the test depends on the
-# pty alone. Status 0 when the help came back after H and "quit at frame" after Q.
+# The client (tests/cosim/pty_keys.py): H after the first frame, Q after the help.
 client=0
-python3 - "$link" "$work/transcript" >"$work/client.out" 2>&1 <<'PY' || client=$?
-import errno, os, select, sys, termios, time, tty
-
-link, transcript_path = sys.argv[1], sys.argv[2]
-deadline = time.monotonic() + 60
-while not os.path.exists(link):
-    if time.monotonic() > deadline:
-        sys.exit("no pty at " + link)
-    time.sleep(0.05)
-fd = os.open(link, os.O_RDWR | os.O_NOCTTY)
-tty.setraw(fd, termios.TCSANOW)  # not the default TCSAFLUSH: it would discard the boot lines
-got = b""
-
-def read_until(marker, start, limit):
-    """Reads into got until marker appears at or after offset start; False on timeout or hang-up."""
-    global got
-    end = time.monotonic() + limit
-    while got.find(marker, start) < 0:
-        left = end - time.monotonic()
-        if left <= 0:
-            return False
-        if select.select([fd], [], [], left)[0]:
-            try:
-                data = os.read(fd, 4096)
-            except OSError as e:
-                if e.errno == errno.EIO:
-                    return False
-                raise
-            if not data:
-                return False
-            got += data
-    return True
-
-ok = read_until(b"frame 0:", 0, 60)  # booted: the boot's own help is behind us
-if ok:
-    mark = len(got)
-    os.write(fd, b"h")
-    ok = read_until(b"H this help", mark, 30)
-    print("help after H:", ok)
-if ok:
-    mark = len(got)
-    os.write(fd, b"q")
-    ok = read_until(b"quit at frame", mark, 30)
-    print("quit after Q:", ok)
-read_until(b"\0never", 0, 10)  # the rest, until the harness closes the pty
-open(transcript_path, "wb").write(got)
-sys.exit(0 if ok else 1)
-PY
+python3 tests/cosim/pty_keys.py "$link" "$work/transcript" >"$work/client.out" 2>&1 || client=$?
 status=0
 wait "$sim" || status=$?
 cat "$work/client.out"
