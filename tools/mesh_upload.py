@@ -337,7 +337,7 @@ class PortClosed(Exception):
 class Progress:
     """One line per tenth of the file acknowledged, unless quiet."""
 
-    def __init__(self, total, quiet, out=sys.stdout):
+    def __init__(self, total, quiet, out=None):
         self.total, self.quiet, self.out, self.step = max(total, 1), quiet, out, 0
 
     def update(self, acked):
@@ -346,7 +346,7 @@ class Progress:
             self.step = tenth
             if not self.quiet:
                 print("mesh_upload: %3d%% (%d of %d bytes acknowledged)" % (tenth * 10, acked, self.total),
-                      file=self.out, flush=True)
+                      file=self.out or sys.stdout, flush=True)
 
 
 class Stats:
