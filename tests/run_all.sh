@@ -105,6 +105,7 @@ suite cosim-kill-qemu          3 bash tests/cosim/kill.sh qemu
 suite cosim-kill-harness       1 bash tests/cosim/kill.sh harness
 suite cosim-stop-signal        4 bash tests/cosim/kill.sh sigterm
 suite cosim-gpu-timeout        1 bash tests/cosim/gpu_timeout.sh
+suite upload-cosim            60 bash tests/upload/cosim_upload.sh
 suite scene-host-vs-cosim     67 bash tests/scenes/host_vs_cosim.sh
 suite scene-watchdog          15 bash tests/scenes/watchdog.sh
 suite scene-keys-burst         9 bash tests/scenes/keys_burst.sh
