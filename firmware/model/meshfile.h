@@ -29,6 +29,8 @@
 #define MESHFILE_FACE_FLAGS_KNOWN 0x01u
 /* |n|^2 of a stored normal within 2^-8 of 16384^2 (rounding moves it by about 2^-13). */
 #define MESHFILE_NORMAL_TOLERANCE_SHIFT 8u
+#define MESHFILE_DEFAULT_MAX_FACES 4096u  /* the firmware's model capacity: meshconv's defaults */
+#define MESHFILE_DEFAULT_MAX_VERTS 4096u
 
 /* Header field offsets. */
 #define MESHFILE_OFF_VERSION 4u
