@@ -13,6 +13,8 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>
+#include <signal.h>
+#include <sys/resource.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
@@ -40,7 +42,37 @@
 /* --check reads at most this much: more than any capacity a uint16 index allows. */
 #define MESHCONV_MAX_FILE_BYTES (64u << 20)
 
+/* Limits that turn a hostile file's huge claims into an error rather than a hang: assimp reserves
+ * what a header claims (invalid/OutOfMemory.off: 353535235358 vertices), which a limit on the
+ * address space makes fail as std::bad_alloc, reported by assimp; and a wall-clock limit for
+ * importers that loop. */
+#define MESHCONV_MEMORY_LIMIT (8ull << 30)
+#define MESHCONV_TIME_LIMIT_S 120u
+
 static bool quiet;
+
+static void on_alarm(int sig)
+{
+    static const char msg[] = "meshconv: error: gave up after the time limit (120 s)\n";
+
+    (void)sig;
+    if (write(STDERR_FILENO, msg, sizeof msg - 1u) < 0) {
+        _exit(1);
+    }
+    _exit(1);
+}
+
+static void set_limits(void)
+{
+    struct rlimit r;
+
+    if (getrlimit(RLIMIT_AS, &r) == 0 && (r.rlim_cur == RLIM_INFINITY || r.rlim_cur > MESHCONV_MEMORY_LIMIT)) {
+        r.rlim_cur = MESHCONV_MEMORY_LIMIT;
+        setrlimit(RLIMIT_AS, &r);
+    }
+    signal(SIGALRM, on_alarm);
+    alarm(MESHCONV_TIME_LIMIT_S);
+}
 
 static int error(int status, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 static int error(int status, const char *fmt, ...)
@@ -424,8 +456,9 @@ static int convert(const char *in, const char *outp, const struct meshconv_optio
         return rc;
     }
     if (s.faces == 0) {
+        const size_t ignored = s.ignored;
         soup_free(&s);
-        return error(1, "%s: no triangles (%zu points or lines ignored)", in, s.ignored);
+        return error(1, "%s: no triangles (%zu points or lines ignored)", in, ignored);
     }
     say("read %s: %zu faces in %zu meshes (%zu polygons triangulated, %zu points/lines ignored)",
         in, faces_raw, s.meshes, polygons, s.ignored);
@@ -534,5 +567,6 @@ int main(int argc, char **argv)
     if (npos != 2) {
         return usage("expected an input model and an output .gmsh file");
     }
+    set_limits();
     return convert(pos[0], pos[1], &opt);
 }

@@ -236,7 +236,10 @@ static int normalise(const double *p, size_t verts, const uint32_t *f, const uin
             if (used[v] && half > 0.0) {
                 t = ((p[3 * v + i] - centre[i]) / half) * units;
             }
-            t = fmax(-32767.0, fmin(32767.0, nearbyint(t)));
+            /* Halves away from zero: symmetric (a mirrored model gives the mirrored file), and a
+             * source already on the half-unit grid (Spider_binary.stl) lands where its decimal
+             * print (Spider_ascii.stl, rounded away from the half) does. */
+            t = fmax(-32767.0, fmin(32767.0, round(t)));
             q[3 * v + i] = (int16_t)t;
         }
     }
@@ -405,7 +408,8 @@ static int simplify(struct work *w, const struct meshconv_options *opt, struct m
         }
         sidx[keys[i].index] = (uint32_t)(sv - 1u);
     }
-    size_t target = opt->max_faces;
+    /* meshoptimizer asserts a target no larger than its input (over capacity by vertices only). */
+    size_t target = (opt->max_faces < w->faces) ? opt->max_faces : w->faces;
     for (int attempt = 0; attempt < 64 && target > 0; attempt++) {
         size_t got = 0;
         float err = 1e-3f, res = 0.0f;
