@@ -11,7 +11,7 @@ MESHCONV_TIMEOUT ?= 30
 # The firmware's pure code it links: the validator it checks its output with, the CRC, and the
 # palette it maps colours to (so that the converter and the screen agree by construction).
 MESHCONV_FW_SRCS ?= firmware/model/meshfile.c firmware/model/crc32.c
-MESHCONV_SRCS    := tools/meshconv/meshconv.c tools/meshconv/meshconv_core.c \
+MESHCONV_SRCS    := tools/meshconv/meshconv.c tools/meshconv/meshconv_scene.c tools/meshconv/meshconv_core.c \
                     firmware/render/palette.c $(MESHCONV_FW_SRCS)
 MESHCONV_CFLAGS  := $(HOST_CFLAGS) -Itools/meshconv -Ifirmware -Icontract $(MESHCONV_EXTRA_CFLAGS) \
                     $$(pkg-config --cflags assimp)
