@@ -131,6 +131,7 @@ FW_PURE_SRCS := firmware/math/fixed.c firmware/math/vec.c firmware/camera/camera
                 firmware/input/input.c \
                 $(addprefix firmware/render/,palette.c mesh.c proj.c clip.c sort.c render.c) \
                 firmware/gpu/batch.c firmware/scenes/scene.c \
+                $(addprefix firmware/model/,crc32.c meshfile.c upload.c) \
                 $(FW_ALL_SCENE_SRCS)
 FW_DRIVER_SRC := firmware/gpu/gpu.c
 FW_APP_SRC    := firmware/app/app.c
@@ -142,6 +143,43 @@ FW_HOST_LIBS  := $(COSIM_C_LIB) $(GPU_MODEL_LIB)
 
 FW_PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 FW_PNG_LIBS   := $(or $(shell pkg-config --libs libpng 2>/dev/null),-lpng)
+
+# ---- the model scene's built-in model -----------------------------------------------------------
+# MODEL (any file assimp reads) converted by tools/meshconv to the build's capacity
+# (FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES: every object sees them, scenes/model/model.h), simplified
+# to it where larger, then assembled into an object of its own (.incbin) that an ELF links where
+# its scene set has the model scene. The file's name carries the capacity, so builds of two
+# capacities coexist.
+MODEL              ?= /usr/share/assimp/models/OBJ/spider.obj
+FW_MODEL_MAX_VERTS ?= 2048
+FW_MODEL_MAX_FACES ?= 2048
+MESHCONV           ?= $(BUILD)/tools/meshconv
+FW_MODEL_DEFS      := -DFW_MODEL_MAX_VERTS=$(FW_MODEL_MAX_VERTS)u -DFW_MODEL_MAX_FACES=$(FW_MODEL_MAX_FACES)u
+FW_MODEL_TAG       := $(basename $(notdir $(MODEL)))-v$(FW_MODEL_MAX_VERTS)f$(FW_MODEL_MAX_FACES)
+FW_MODEL_GMSH      := $(BUILD)/model/$(FW_MODEL_TAG).gmsh
+FW_MODEL_OBJ       := $(FW_DIR)/model/$(FW_MODEL_TAG).o
+FW_MODEL_HOST_OBJ  := $(BUILD)/fw-host/model/$(FW_MODEL_TAG).o
+
+$(FW_MODEL_GMSH): $(MODEL) $(MESHCONV)
+	@mkdir -p $(@D)
+	$(MESHCONV) $(MODEL) $@ --max-verts $(FW_MODEL_MAX_VERTS) --max-faces $(FW_MODEL_MAX_FACES)
+
+# The blob's assembly: the file between two symbols (scenes/model/model.c reads them).
+$(BUILD)/model/$(FW_MODEL_TAG).S: $(FW_MODEL_GMSH)
+	@printf '\t.section .rodata.model_builtin,"a"\n\t.balign 4\n\t.globl model_builtin\nmodel_builtin:\n\t.incbin "%s"\n\t.globl model_builtin_end\nmodel_builtin_end:\n\t.section .note.GNU-stack,"",@progbits\n' \
+	  '$(abspath $(FW_MODEL_GMSH))' > $@
+
+$(FW_MODEL_OBJ): $(BUILD)/model/$(FW_MODEL_TAG).S
+	@mkdir -p $(@D)
+	$(FW_CC) $(FW_ARCH_FLAGS) -c $< -o $@
+
+$(FW_MODEL_HOST_OBJ): $(BUILD)/model/$(FW_MODEL_TAG).S
+	@mkdir -p $(@D)
+	$(HOST_CC) -c $< -o $@
+
+# The built-in model's object where scene set $(1) with boot scene $(2) has the model scene;
+# $(3) = the object of the platform (FW_MODEL_OBJ or FW_MODEL_HOST_OBJ).
+fw_model_obj = $(if $(filter model,$(call fw_set_scenes,$(1),$(2))),$(3))
 
 FW_WARN := -std=c11 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes
 FW_BACKEND_DEFS_fixed :=
@@ -181,7 +219,7 @@ FW_CFLAGS_BASE := $(FW_ARCH_FLAGS) -O2 -g $(FW_WARN) -ffp-contract=off -ffunctio
                   -fdata-sections -fno-tree-loop-distribute-patterns \
                   -Ibsp/$(FW_PLATFORM) -Ibsp -Icontract -Ifirmware
 FW_HOST_CFLAGS_BASE = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Ibsp/host -Ibsp -Icontract \
-                      -Ifirmware -Igpu_model -Icosim
+                      -Ifirmware -Igpu_model -Icosim $(FW_MODEL_DEFS)
 FW_LDFLAGS_BASE := $(FW_ARCH_FLAGS) $(FW_BSP_LDFLAGS) -T$(FW_LDSCRIPT) -Wl,--gc-sections
 
 # Record a command line in a file, rewriting it only when it changed: objects depend on it.
@@ -240,16 +278,19 @@ define FW_ELF_RULES
 $(1:.elf=)/app.o: $(FW_APP_SRC) $(1:.elf=)/cflags.txt
 	$$(FW_CC) $$(FW_CFLAGS_$(3)) -DFW_SCENE='"$(2)"' -DFW_FRAMES=$(4) \
 	  $(if $(5),-DFW_GPU_MAX_POLLS=$(5)) $(if $(FW_PROFILE),-DFW_PROFILE=$(FW_PROFILE)) $(6) \
-	  $(call fw_set_defs,$(or $(7),$(FW_SCENE_SET)),$(2)) -MMD -MP -c $$< -o $$@
+	  $(call fw_set_defs,$(or $(7),$(FW_SCENE_SET)),$(2)) \
+	  $(if $(call fw_model_obj,$(or $(7),$(FW_SCENE_SET)),$(2),1),-DFW_MODEL_SCENE_BUILT=1) \
+	  -MMD -MP -c $$< -o $$@
 
 $(1:.elf=)/cflags.txt: fw-force
 	$$(call fw_flags_file,$$@,$$(FW_CC) $$(FW_CFLAGS_$(3)) $(2) $(4) $(5) $(FW_PROFILE) $(6) \
 	  $(or $(7),$(FW_SCENE_SET)) $(FW_POSTLINK))
 
 $(1): $$(FW_CORE_OBJS_$(3)) $(call fw_set_objs,$(or $(7),$(FW_SCENE_SET)),$(2),$$(FW_OBJ_DIR_$(3))) \
-      $(1:.elf=)/app.o $(FW_LDSCRIPT)
+      $(call fw_model_obj,$(or $(7),$(FW_SCENE_SET)),$(2),$(FW_MODEL_OBJ)) $(1:.elf=)/app.o $(FW_LDSCRIPT)
 	$$(FW_CC) $$(FW_LDFLAGS_BASE) -Wl,-Map=$(1:.elf=.map) -o $$@ $$(FW_CORE_OBJS_$(3)) \
-	  $(call fw_set_objs,$(or $(7),$(FW_SCENE_SET)),$(2),$$(FW_OBJ_DIR_$(3))) $(1:.elf=)/app.o -lm
+	  $(call fw_set_objs,$(or $(7),$(FW_SCENE_SET)),$(2),$$(FW_OBJ_DIR_$(3))) \
+	  $(call fw_model_obj,$(or $(7),$(FW_SCENE_SET)),$(2),$(FW_MODEL_OBJ)) $(1:.elf=)/app.o -lm
 	$$(FW_OBJDUMP) -d -S $$@ > $(1:.elf=.lst)
 	$(if $(FW_POSTLINK),$(FW_POSTLINK) $$@)
 
@@ -262,15 +303,17 @@ define FW_HOST_RULES
 $(1).obj/app.o: $(FW_APP_SRC) $(1).obj/cflags.txt
 	@mkdir -p $$(@D)
 	$$(HOST_CC) $$(FW_HOST_CFLAGS_$(3)) -DFW_SCENE='"$(2)"' -DFW_FRAMES=$(4) \
-	  $(call fw_set_defs,$(FW_SCENE_SET),$(2)) -MMD -MP -c $$< -o $$@
+	  $(call fw_set_defs,$(FW_SCENE_SET),$(2)) \
+	  $(if $(call fw_model_obj,$(FW_SCENE_SET),$(2),1),-DFW_MODEL_SCENE_BUILT=1) -MMD -MP -c $$< -o $$@
 
 $(1).obj/cflags.txt: fw-force
 	$$(call fw_flags_file,$$@,$$(HOST_CC) $$(FW_HOST_CFLAGS_$(3)) $(2) $(4) $(FW_SCENE_SET))
 
 $(1): $$(FW_HOST_CORE_OBJS_$(3)) $(call fw_set_objs,$(FW_SCENE_SET),$(2),$$(HOST_OBJ_DIR_$(3))) \
-      $(1).obj/app.o $(FW_HOST_LIBS)
+      $(call fw_model_obj,$(FW_SCENE_SET),$(2),$(FW_MODEL_HOST_OBJ)) $(1).obj/app.o $(FW_HOST_LIBS)
 	$$(HOST_CC) -o $$@ $$(FW_HOST_CORE_OBJS_$(3)) \
-	  $(call fw_set_objs,$(FW_SCENE_SET),$(2),$$(HOST_OBJ_DIR_$(3))) $(1).obj/app.o \
+	  $(call fw_set_objs,$(FW_SCENE_SET),$(2),$$(HOST_OBJ_DIR_$(3))) \
+	  $(call fw_model_obj,$(FW_SCENE_SET),$(2),$(FW_MODEL_HOST_OBJ)) $(1).obj/app.o \
 	  $(FW_HOST_LIBS) $(FW_PNG_LIBS) -lm
 
 FW_DEP_FILES += $(1).obj/app.d
@@ -358,7 +401,7 @@ FW_SIZE_ENV = SIZE=$(patsubst %gcc,%size,$(FW_CC)) NM=$(patsubst %gcc,%nm,$(FW_C
 
 FW_UNIT_TEST_SRCS := $(wildcard tests/firmware/*.c)
 FW_UNIT_CFLAGS     = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Itests/firmware/fake_bsp -Ibsp \
-                     -Itests/firmware -Icontract -Ifirmware -DSORT_COUNT_WORK
+                     -Itests/firmware -Icontract -Ifirmware -DSORT_COUNT_WORK $(FW_MODEL_DEFS)
 
 # $(1) = binary, $(2) = backend
 define FW_UNIT_RULES
@@ -372,8 +415,8 @@ $$($(1)_OBJ)/%.o: %.c $$($(1)_OBJ)/cflags.txt
 	@mkdir -p $$(@D)
 	$$(HOST_CC) $$(FW_UNIT_CFLAGS) $$(FW_BACKEND_DEFS_$(2)) -MMD -MP -c $$< -o $$@
 
-$(1): $$($(1)_OBJS)
-	$$(HOST_CC) -o $$@ $$($(1)_OBJS) -lm
+$(1): $$($(1)_OBJS) $(FW_MODEL_HOST_OBJ)
+	$$(HOST_CC) -o $$@ $$($(1)_OBJS) $(FW_MODEL_HOST_OBJ) -lm
 
 FW_DEP_FILES += $$($(1)_OBJS:.o=.d)
 endef

@@ -4,8 +4,11 @@
  * the platform (bsp.h); everything they call is pure and host-tested.
  *
  * Per frame:
- *   1. read at most INPUT_MAX_BYTES_PER_FRAME bytes from the UART (never blocks; the rest waits
- *      for the next frame) and decode them into key counts;
+ *   0. a model uploaded over the UART and committed in the last frame is swapped in: the model
+ *      scene starts from it (model/upload.h; FW_WITH_UPLOAD);
+ *   1. read at most INPUT_MAX_BYTES_PER_FRAME bytes from the UART (FW_UART_BYTES_PER_FRAME where
+ *      uploads are built in; never blocks, the rest waits for the next frame); the upload's
+ *      receiver takes its frames, the rest is decoded into key counts;
  *   2. global keys (quit, scene, wireframe, anaglyph, depth buffer, help), then scene_update
  *      (camera keys, animation, scene keys);
  *   3. per pass (two for anaglyph: left eye red, right eye cyan): render the scene into the
@@ -16,7 +19,8 @@
  *      dropped and the loop goes on with the next frame; after FW_WATCHDOG_GIVE_UP consecutive
  *      lost frames the firmware stops with FW_EXIT_GPU_TIMEOUT.
  *
- * Output, one line per frame:
+ * Output, one line per frame, then the upload's responses of the frame ("@up ...", one per
+ * protocol frame received):
  *   frame N: tris submitted S drawn D | fw instr I | gpu cycles C | errors 0xE | prims P batches B
  *     | culled object O frustum F back K clipped L
  *     | cpu cycles Y
@@ -36,6 +40,7 @@
 #include "bsp.h"
 #include "camera/camera.h"
 #include "math/fixed.h"
+#include "model/upload.h"
 #include "app/fw_config.h"
 #include "gpu/gpu.h"
 #include "input/input.h"
@@ -62,6 +67,9 @@ struct app {
     bool anaglyph;
     bool depth_test;
     uint32_t lost_in_a_row;  /* consecutive frames dropped by the watchdog */
+#if FW_WITH_UPLOAD
+    struct upload_rx upload;
+#endif
 };
 
 /* What one frame sent and what the GPU reported, summed over its batches and passes. */
@@ -83,6 +91,16 @@ struct frame_totals {
 };
 
 static struct app app_state;
+#if FW_WITH_UPLOAD
+/* The upload's staging buffer: one mesh file of the model scene's capacity, and its chunk map. */
+#define APP_UPLOAD_BYTES (MESHFILE_HEADER_BYTES + MESHFILE_VERT_BYTES * FW_MODEL_MAX_VERTS + \
+                          MESHFILE_FACE_BYTES * FW_MODEL_MAX_FACES + MESHFILE_CRC_BYTES)
+static uint8_t app_upload_file[APP_UPLOAD_BYTES];
+static uint8_t app_upload_map[UPLOAD_MAP_BYTES(APP_UPLOAD_BYTES)];
+#define APP_UART_BYTES_PER_FRAME FW_UART_BYTES_PER_FRAME
+#else
+#define APP_UART_BYTES_PER_FRAME INPUT_MAX_BYTES_PER_FRAME
+#endif
 #if !BSP_GPU_BUFFERS_MAPPED
 /* Batch staging, for platforms whose GPU buffers are not CPU memory (bsp_gpu_buffer NULL); where
  * they are (BSP_GPU_BUFFERS_MAPPED), batches are built in place and these 12 KiB are not needed. */
@@ -177,19 +195,47 @@ static void app_report_lines(const struct app *app)
     }
 }
 
-/* Read this frame's keys: at most INPUT_MAX_BYTES_PER_FRAME bytes, never waiting. */
-static void app_read_keys(struct app *app, struct input_counts *keys)
+/* Read this frame's UART bytes, never waiting: the upload's frames to its receiver, the rest
+ * decoded into keys. */
+static void app_read_uart(struct app *app, struct input_counts *keys)
 {
     input_counts_clear(keys);
-    for (uint32_t i = 0; i < INPUT_MAX_BYTES_PER_FRAME; i++) {
+    for (uint32_t i = 0; i < APP_UART_BYTES_PER_FRAME; i++) {
         const int c = bsp_uart_getc_nonblock();
 
         if (c < 0) {
             break;
         }
+#if FW_WITH_UPLOAD
+        if (upload_feed(&app->upload, (uint8_t)c)) {
+            continue;
+        }
+#endif
         input_counts_add(keys, input_decode(&app->decoder, (uint8_t)c));
     }
+#if FW_WITH_UPLOAD
+    upload_frame_end(&app->upload);
+    if (!app->upload.staging_valid) {
+        /* The staging buffer is being (or was never) filled: the model scene's key restarts it
+         * from the built-in model instead. */
+        model_scene_source(0, 0);
+    }
+#endif
 }
+
+#if FW_WITH_UPLOAD
+/* This frame's upload responses, one line each (after the frame line: printing is not counted). */
+static void app_print_upload(struct app *app)
+{
+    char line[112];
+
+    for (uint32_t i = 0; i < app->upload.resp_count; i++) {
+        upload_response_line(&app->upload, i, line, sizeof line);
+        puts(line);
+    }
+    upload_responses_clear(&app->upload);
+}
+#endif
 
 /* What the global keys changed, printed after the frame so printing stays out of the count. */
 struct app_notes {
@@ -219,12 +265,27 @@ static void app_start_scene(struct app *app, const struct scene_desc *desc)
     }
 }
 
+#if FW_WITH_UPLOAD
+/* A model committed in the last frame: the model scene starts from it, at this frame boundary. */
+static void app_swap_upload(struct app *app, struct app_notes *notes)
+{
+    const struct scene_desc *model = scene_find("model");
+
+    if (!upload_ready(&app->upload) || model == 0) {
+        return;
+    }
+    model_scene_source(app->upload.buf, app->upload.total);
+    app_start_scene(app, model);
+    upload_taken(&app->upload);
+    notes->scene_changed = true;
+}
+#endif
+
 /* Keys that belong to the loop rather than the scene. Returns false to quit. */
 static bool app_global_keys(struct app *app, const struct input_counts *keys,
                             struct app_notes *notes)
 {
     notes->help = keys->n[KEY_HELP] != 0u;
-    notes->scene_changed = false;
     notes->msg_count = 0;
     if (keys->n[KEY_QUIT] != 0u) {
         return false;
@@ -361,6 +422,33 @@ static void app_render_pass(struct app *app, int eye, struct frame_totals *tot)
     tot->t_sort = times.sort;
 }
 
+/* The running scene's line; the model scene's says where its model came from, or why it has
+ * none. */
+static void app_print_scene(const struct app *app)
+{
+    const struct scene *s = &app->scene;
+
+    printf("scene %s: %lu triangles, camera %s\n", s->desc->name,
+           (unsigned long)scene_triangle_count(s), cam_mode_name(s->cam.mode));
+#if FW_MODEL_SCENE_BUILT
+    if (s->desc == &scene_model_desc) {
+        struct meshfile_info info;
+        const int rc = model_scene_status(s, &info);
+
+        if (rc == MESHFILE_OK) {
+            printf("model: %lu faces, %lu vertices, %s\n", (unsigned long)info.faces,
+                   (unsigned long)info.verts, model_scene_uploaded(s) ? "uploaded" : "built in");
+        } else {
+            char why[80];
+
+            meshfile_message(rc, &info, why, sizeof why);
+            printf("error: model: %s model refused: %s\n",
+                   model_scene_uploaded(s) ? "the uploaded" : "the built-in", why);
+        }
+    }
+#endif
+}
+
 /* What the scene reported (the voxel scene's edits), prefixed with its name. */
 static void app_print_event(const struct scene *s, const struct scene_event *ev)
 {
@@ -433,6 +521,10 @@ int app_run(void)
         app_fail(FW_EXIT_CONFIG);
     }
     input_decoder_init(&app->decoder);
+#if FW_WITH_UPLOAD
+    upload_init(&app->upload, app_upload_file, sizeof app_upload_file, app_upload_map,
+                sizeof app_upload_map, FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES);
+#endif
     app->wireframe = false;
     app->anaglyph = false;
     app->depth_test = FW_WITH_DEPTH && FW_DEPTH_TEST && gpu_caps_zbuf(app->gpu.info.caps);
@@ -443,8 +535,7 @@ int app_run(void)
     app_start_scene(app, desc);
     app_report_lines(app);
     app_print_keys(&app->scene);
-    printf("scene %s: %lu triangles, camera %s\n", app->scene.desc->name,
-           (unsigned long)scene_triangle_count(&app->scene), cam_mode_name(app->scene.cam.mode));
+    app_print_scene(app);
 
     /* FW_FRAMES frames, or (FW_FRAMES = 0) until Q; the frame number wraps after 2^32 frames. */
     for (unsigned frame = 0, left = FW_FRAMES; FW_FRAMES == 0 || left > 0u; frame++, left--) {
@@ -462,7 +553,11 @@ int app_run(void)
 
         c_start = bsp_cycles();
         t_start = bsp_instret();
-        app_read_keys(app, &keys);
+        notes.scene_changed = false;
+#if FW_WITH_UPLOAD
+        app_swap_upload(app, &notes);
+#endif
+        app_read_uart(app, &keys);
         if (!app_global_keys(app, &keys, &notes)) {
             printf("quit at frame %u\n", frame);
             break;
@@ -488,9 +583,7 @@ int app_run(void)
         c_end = bsp_cycles();
 
         if (notes.scene_changed) {
-            printf("scene %s: %lu triangles, camera %s\n", app->scene.desc->name,
-                   (unsigned long)scene_triangle_count(&app->scene),
-                   cam_mode_name(app->scene.cam.mode));
+            app_print_scene(app);
         }
         for (uint32_t m = 0; m < notes.msg_count; m++) {
             printf("%s\n", notes.msg[m]);
@@ -502,6 +595,9 @@ int app_run(void)
         if (notes.help) {
             app_print_keys(&app->scene);
         }
+#if FW_WITH_UPLOAD
+        app_print_upload(app);
+#endif
         if (!completed) {
             app->lost_in_a_row++;
             if (app->lost_in_a_row >= FW_WATCHDOG_GIVE_UP) {

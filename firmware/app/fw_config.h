@@ -60,6 +60,23 @@
 #define FW_WITH_LIGHTING 1
 #endif
 
+/* 1: models can be uploaded over the UART while the firmware runs (model/upload.c,
+ * docs/upload-protocol.md); they are drawn by the model scene, so the default is 1 exactly where
+ * that scene is built in (firmware.mk passes FW_MODEL_SCENE_BUILT). The staging buffer is one mesh
+ * file of the model scene's capacity (41 KiB at the defaults). */
+#ifndef FW_MODEL_SCENE_BUILT
+#define FW_MODEL_SCENE_BUILT 0
+#endif
+#ifndef FW_WITH_UPLOAD
+#define FW_WITH_UPLOAD FW_MODEL_SCENE_BUILT
+#endif
+/* UART bytes a frame takes while uploads are built in: at 60 frames/s, 60 KiB/s, five times a
+ * 115200-baud line, so the line's rate is never the firmware's limit; the work stays bounded (the
+ * receiver's CRC is about 20 instructions a byte). */
+#ifndef FW_UART_BYTES_PER_FRAME
+#define FW_UART_BYTES_PER_FRAME 1024u
+#endif
+
 /* The watchdog: reads of DONE_SEQ before a batch counts as lost. One poll is 4 instructions
  * (lw, addi, bne, beq); under QEMU -icount 2^28 polls take about 3 s of host time (measured); 2^31
  * would then take ~25 s (extrapolated), two orders of magnitude more than a co-simulated batch needs (the vsync wait is

@@ -32,6 +32,11 @@
 #define MESHFILE_DEFAULT_MAX_FACES 4096u  /* the firmware's model capacity: meshconv's defaults */
 #define MESHFILE_DEFAULT_MAX_VERTS 4096u
 
+/* The firmware's default model capacity (scenes/model/model.h: FW_MODEL_MAX_*), which the SoC's
+ * 192 KiB hold, and tools/meshconv's default budget. */
+#define MESHFILE_DEFAULT_MAX_VERTS 2048u
+#define MESHFILE_DEFAULT_MAX_FACES 2048u
+
 /* Header field offsets. */
 #define MESHFILE_OFF_VERSION 4u
 #define MESHFILE_OFF_FRAC_BITS 6u
@@ -47,5 +52,60 @@ static inline uint32_t meshfile_bytes(uint32_t verts, uint32_t faces)
     return MESHFILE_HEADER_BYTES + MESHFILE_VERT_BYTES * verts + MESHFILE_FACE_BYTES * faces +
            MESHFILE_CRC_BYTES;
 }
+
+
+/* ---- validation -------------------------------------------------------------------------- */
+
+/* Why a file was refused: each names one rule of docs/mesh-format.md. */
+enum meshfile_error {
+    MESHFILE_OK = 0,
+    MESHFILE_E_SHORT,         /* shorter than a header and its CRC */
+    MESHFILE_E_MAGIC,
+    MESHFILE_E_VERSION,       /* value: the file's version */
+    MESHFILE_E_FRAC_BITS,     /* value: the file's frac_bits */
+    MESHFILE_E_FLAGS,         /* value: the header's flags */
+    MESHFILE_E_VERT_COUNT,    /* value: count, limit: the build's capacity (or 3, the least) */
+    MESHFILE_E_FACE_COUNT,    /* value: count, limit: the build's capacity */
+    MESHFILE_E_SIZE,          /* value: the file's length, limit: what its counts make it */
+    MESHFILE_E_CRC,           /* value: the stored CRC, limit: the computed one */
+    MESHFILE_E_BOX,           /* item: the axis whose box_lo > box_hi */
+    MESHFILE_E_VERTEX_OUTSIDE,/* item: the vertex, value: its axis */
+    MESHFILE_E_INDEX,         /* item: the face, value: the index, limit: vert_count */
+    MESHFILE_E_REPEATED_INDEX,/* item: the face (two of its corners are one vertex) */
+    MESHFILE_E_NORMAL,        /* item: the face (a component over 1.0 or |n| not 1) */
+    MESHFILE_E_MATERIAL,      /* item: the face, value: the material */
+    MESHFILE_E_FACE_FLAGS,    /* item: the face, value: its flags */
+    MESHFILE_E_MISSING,       /* no file at all (a program without a built-in model) */
+    MESHFILE_E_COUNT
+};
+
+struct meshfile_info {
+    uint32_t verts;        /* the header's counts (valid from MESHFILE_E_VERT_COUNT on) */
+    uint32_t faces;
+    int16_t box_lo[3];
+    int16_t box_hi[3];
+    uint32_t item;         /* what the error names (above) */
+    uint32_t value;
+    uint32_t limit;
+};
+
+/* Check buf[0..len) against every rule, the counts against the build's capacities; fills *info
+ * (counts and box on success). Returns MESHFILE_OK or the first rule broken. Reads nothing
+ * outside buf; O(len). */
+int meshfile_check(const uint8_t *buf, size_t len, uint32_t max_verts, uint32_t max_faces,
+                   struct meshfile_info *info);
+
+/* A one-line reason for err ("face 12: index 4000 out of range (1200 vertices)"), NUL-terminated
+ * within cap bytes. */
+void meshfile_message(int err, const struct meshfile_info *info, char *out, size_t cap);
+
+/* ---- loading ------------------------------------------------------------------------------ */
+
+struct mesh;
+
+/* Fill m (mesh_init'ed by the caller with room for info->verts vertices, info->faces faces and as
+ * many normals) from a file meshfile_check accepted, then mesh_finish it. Returns false (m then
+ * holds nothing usable) when m's arrays are too small. */
+bool meshfile_load(const uint8_t *buf, const struct meshfile_info *info, struct mesh *m);
 
 #endif /* MESHFILE_H */

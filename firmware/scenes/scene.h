@@ -7,6 +7,8 @@
  *   landscape  a lit low-poly height field, 2048 triangles in 16 tiles (fly mode)
  *   voxel      a 16 x 16 x 16 block world with place/break under the crosshair (fly mode)
  *   knot       a (2, 3) torus knot of exactly 5000 triangles, the large-model benchmark (object mode)
+ *   model      a model from a file: built in (MODEL=, tools/meshconv) or uploaded over the UART
+ *              (object mode)
  *
  * A scene owns its meshes (built once by init into its own state, SCENE_STATE below), its
  * camera and its objects. The frame loop calls scene_update once per frame with the keys, then
@@ -26,6 +28,7 @@
 #include "render/mesh.h"
 #include "render/render.h"
 #include "math/vec.h"
+#include "scenes/model/model.h"  /* the model line's columns (scene_list.h) */
 
 /* ---- the scene table ----------------------------------------------------------------------- */
 

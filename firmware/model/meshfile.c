@@ -1,0 +1,249 @@
+/*
+ * meshfile.c — see meshfile.h and docs/mesh-format.md.
+ */
+#include "model/meshfile.h"
+
+#include <stdio.h>
+
+#include "math/real.h"
+#include "model/crc32.h"
+#include "render/mesh.h"
+
+static uint32_t rd16(const uint8_t *p) { return (uint32_t)p[0] | ((uint32_t)p[1] << 8); }
+static int32_t rd16s(const uint8_t *p) { return (int32_t)(int16_t)rd16(p); }
+static uint32_t rd32(const uint8_t *p) { return rd16(p) | (rd16(p + 2) << 16); }
+
+static int meshfile_fail(struct meshfile_info *info, int err, uint32_t item, uint32_t value,
+                         uint32_t limit)
+{
+    info->item = item;
+    info->value = value;
+    info->limit = limit;
+    return err;
+}
+
+/* One face record's rules: indices, normal, material, flags. */
+static int meshfile_check_face(const uint8_t *f, uint32_t fi, uint32_t verts,
+                               struct meshfile_info *info)
+{
+    uint32_t v[3];
+    int64_t n2 = 0;
+    /* 16384^2 = 2^28; the tolerance is 2^28 >> 8 = 2^20. */
+    const int64_t one2 = (int64_t)MESHFILE_NORMAL_ONE * MESHFILE_NORMAL_ONE;
+    const int64_t tol = one2 >> MESHFILE_NORMAL_TOLERANCE_SHIFT;
+
+    for (uint32_t k = 0; k < 3u; k++) {
+        v[k] = rd16(f + 2u * k);
+        if (v[k] >= verts) {
+            return meshfile_fail(info, MESHFILE_E_INDEX, fi, v[k], verts);
+        }
+    }
+    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
+        return meshfile_fail(info, MESHFILE_E_REPEATED_INDEX, fi, 0, 0);
+    }
+    for (uint32_t k = 0; k < 3u; k++) {
+        const int32_t c = rd16s(f + 6u + 2u * k);
+
+        if (c > MESHFILE_NORMAL_ONE || c < -MESHFILE_NORMAL_ONE) {
+            return meshfile_fail(info, MESHFILE_E_NORMAL, fi, (uint32_t)c, 0);
+        }
+        n2 += (int64_t)c * c;  /* at most 3 * 2^28: int64 */
+    }
+    if (n2 < one2 - tol || n2 > one2 + tol) {
+        return meshfile_fail(info, MESHFILE_E_NORMAL, fi, (uint32_t)(n2 >> 14), 0);
+    }
+    if (f[12] < MESHFILE_MAT_MIN || f[12] > MESHFILE_MAT_MAX) {
+        return meshfile_fail(info, MESHFILE_E_MATERIAL, fi, f[12], MESHFILE_MAT_MAX);
+    }
+    if ((f[13] & ~MESHFILE_FACE_FLAGS_KNOWN) != 0u) {
+        return meshfile_fail(info, MESHFILE_E_FACE_FLAGS, fi, f[13], 0);
+    }
+    return MESHFILE_OK;
+}
+
+int meshfile_check(const uint8_t *buf, size_t len, uint32_t max_verts, uint32_t max_faces,
+                   struct meshfile_info *info)
+{
+    uint32_t verts;
+    uint32_t faces;
+    uint32_t size;
+    uint32_t stored;
+    uint32_t crc;
+    const uint8_t *p;
+
+    info->verts = 0;
+    info->faces = 0;
+    if (len < (size_t)MESHFILE_HEADER_BYTES + MESHFILE_CRC_BYTES) {
+        return meshfile_fail(info, MESHFILE_E_SHORT, 0, (uint32_t)len,
+                             MESHFILE_HEADER_BYTES + MESHFILE_CRC_BYTES);
+    }
+    if (buf[0] != MESHFILE_MAGIC0 || buf[1] != MESHFILE_MAGIC1 || buf[2] != MESHFILE_MAGIC2 ||
+        buf[3] != MESHFILE_MAGIC3) {
+        return meshfile_fail(info, MESHFILE_E_MAGIC, 0, 0, 0);
+    }
+    if (rd16(buf + MESHFILE_OFF_VERSION) != MESHFILE_VERSION) {
+        return meshfile_fail(info, MESHFILE_E_VERSION, 0, rd16(buf + MESHFILE_OFF_VERSION),
+                             MESHFILE_VERSION);
+    }
+    if (rd16(buf + MESHFILE_OFF_FRAC_BITS) != MESHFILE_FRAC_BITS) {
+        return meshfile_fail(info, MESHFILE_E_FRAC_BITS, 0, rd16(buf + MESHFILE_OFF_FRAC_BITS),
+                             MESHFILE_FRAC_BITS);
+    }
+    if (rd32(buf + MESHFILE_OFF_FLAGS) != 0u) {
+        return meshfile_fail(info, MESHFILE_E_FLAGS, 0, rd32(buf + MESHFILE_OFF_FLAGS), 0);
+    }
+    verts = rd32(buf + MESHFILE_OFF_VERT_COUNT);
+    faces = rd32(buf + MESHFILE_OFF_FACE_COUNT);
+    info->verts = verts;
+    info->faces = faces;
+    if (verts < 3u || verts > max_verts || verts > 65536u) {
+        return meshfile_fail(info, MESHFILE_E_VERT_COUNT, 0, verts, (verts < 3u) ? 3u : max_verts);
+    }
+    if (faces < 1u || faces > max_faces || faces > (1u << 24)) {
+        return meshfile_fail(info, MESHFILE_E_FACE_COUNT, 0, faces, max_faces);
+    }
+    /* Both counts are now below 2^24 (65536 and 2^24), so the size cannot overflow. */
+    size = meshfile_bytes(verts, faces);
+    if (len != (size_t)size) {
+        return meshfile_fail(info, MESHFILE_E_SIZE, 0, (uint32_t)len, size);
+    }
+    stored = rd32(buf + size - MESHFILE_CRC_BYTES);
+    crc = crc32_update(0, buf, size - MESHFILE_CRC_BYTES);
+    if (stored != crc) {
+        return meshfile_fail(info, MESHFILE_E_CRC, 0, stored, crc);
+    }
+    for (uint32_t k = 0; k < 3u; k++) {
+        info->box_lo[k] = (int16_t)rd16s(buf + MESHFILE_OFF_BOX_LO + 2u * k);
+        info->box_hi[k] = (int16_t)rd16s(buf + MESHFILE_OFF_BOX_HI + 2u * k);
+        if (info->box_lo[k] > info->box_hi[k]) {
+            return meshfile_fail(info, MESHFILE_E_BOX, k, 0, 0);
+        }
+    }
+    p = buf + MESHFILE_HEADER_BYTES;
+    for (uint32_t vi = 0; vi < verts; vi++, p += MESHFILE_VERT_BYTES) {
+        for (uint32_t k = 0; k < 3u; k++) {
+            const int32_t c = rd16s(p + 2u * k);
+
+            if (c < info->box_lo[k] || c > info->box_hi[k]) {
+                return meshfile_fail(info, MESHFILE_E_VERTEX_OUTSIDE, vi, k, 0);
+            }
+        }
+    }
+    for (uint32_t fi = 0; fi < faces; fi++, p += MESHFILE_FACE_BYTES) {
+        const int rc = meshfile_check_face(p, fi, verts, info);
+
+        if (rc != MESHFILE_OK) {
+            return rc;
+        }
+    }
+    info->item = 0;
+    info->value = 0;
+    info->limit = 0;
+    return MESHFILE_OK;
+}
+
+void meshfile_message(int err, const struct meshfile_info *info, char *out, size_t cap)
+{
+    static const char axis[3] = {'x', 'y', 'z'};
+    const unsigned long item = info->item;
+    const unsigned long value = info->value;
+    const unsigned long limit = info->limit;
+
+    if (cap == 0u) {
+        return;
+    }
+    switch (err) {
+    case MESHFILE_OK:
+        snprintf(out, cap, "valid: %lu vertices, %lu faces", (unsigned long)info->verts,
+                 (unsigned long)info->faces);
+        break;
+    case MESHFILE_E_SHORT:
+        snprintf(out, cap, "%lu bytes: shorter than a header and its CRC (%lu)", value, limit);
+        break;
+    case MESHFILE_E_MAGIC:
+        snprintf(out, cap, "not a mesh file (magic is not GMSH)");
+        break;
+    case MESHFILE_E_VERSION:
+        snprintf(out, cap, "version %lu (this firmware reads version %lu)", value, limit);
+        break;
+    case MESHFILE_E_FRAC_BITS:
+        snprintf(out, cap, "frac_bits %lu (version 1 has %lu)", value, limit);
+        break;
+    case MESHFILE_E_FLAGS:
+        snprintf(out, cap, "header flags 0x%lx (reserved: 0)", value);
+        break;
+    case MESHFILE_E_VERT_COUNT:
+        snprintf(out, cap, "%lu vertices (this build holds %s%lu)", value,
+                 (value < 3u) ? "at least " : "at most ", limit);
+        break;
+    case MESHFILE_E_FACE_COUNT:
+        snprintf(out, cap, "%lu faces (this build holds 1 to %lu)", value, limit);
+        break;
+    case MESHFILE_E_SIZE:
+        snprintf(out, cap, "%lu bytes, but its counts make it %lu", value, limit);
+        break;
+    case MESHFILE_E_CRC:
+        snprintf(out, cap, "CRC 0x%08lx stored, 0x%08lx computed", value, limit);
+        break;
+    case MESHFILE_E_BOX:
+        snprintf(out, cap, "box: lo > hi on %c", axis[item % 3u]);
+        break;
+    case MESHFILE_E_VERTEX_OUTSIDE:
+        snprintf(out, cap, "vertex %lu: %c outside the header's box", item, axis[value % 3u]);
+        break;
+    case MESHFILE_E_INDEX:
+        snprintf(out, cap, "face %lu: index %lu out of range (%lu vertices)", item, value, limit);
+        break;
+    case MESHFILE_E_REPEATED_INDEX:
+        snprintf(out, cap, "face %lu: two corners are the same vertex", item);
+        break;
+    case MESHFILE_E_NORMAL:
+        snprintf(out, cap, "face %lu: normal not a unit vector in Q1.14", item);
+        break;
+    case MESHFILE_E_MATERIAL:
+        snprintf(out, cap, "face %lu: material %lu (1 to %lu)", item, value, limit);
+        break;
+    case MESHFILE_E_FACE_FLAGS:
+        snprintf(out, cap, "face %lu: unknown flags 0x%lx", item, value);
+        break;
+    case MESHFILE_E_MISSING:
+        snprintf(out, cap, "no file (this program was built without a model)");
+        break;
+    default:
+        snprintf(out, cap, "error %d", err);
+        break;
+    }
+}
+
+bool meshfile_load(const uint8_t *buf, const struct meshfile_info *info, struct mesh *m)
+{
+    const uint8_t *p = buf + MESHFILE_HEADER_BYTES;
+
+    mesh_clear(m);
+    if (m->vert_cap < info->verts || m->face_cap < info->faces || m->normal_cap < info->faces) {
+        return false;
+    }
+    /* Q3.12 -> Q16.16 is a shift by 4 (|c| < 8 units: far inside the +-8192 model range). */
+    for (uint32_t vi = 0; vi < info->verts; vi++, p += MESHFILE_VERT_BYTES) {
+        mesh_add_vertex(m, vec3_make(real_from_q16(rd16s(p) * 16),
+                                     real_from_q16(rd16s(p + 2) * 16),
+                                     real_from_q16(rd16s(p + 4) * 16)));
+    }
+    /* Face fi takes normal fi: Q1.14 -> Q16.16 is a shift by 2 (|n_i| <= 1). */
+    for (uint32_t fi = 0; fi < info->faces; fi++, p += MESHFILE_FACE_BYTES) {
+        uvec3 n;
+        uint16_t ni;
+
+        n.x = unit_from_q16(rd16s(p + 6) * 4);
+        n.y = unit_from_q16(rd16s(p + 8) * 4);
+        n.z = unit_from_q16(rd16s(p + 10) * 4);
+        ni = mesh_add_normal(m, n);
+        mesh_add_face_normal(m, (uint16_t)rd16(p), (uint16_t)rd16(p + 2), (uint16_t)rd16(p + 4),
+                             ni, p[12]);
+        if ((p[13] & MESHFILE_FACE_FLAG_QUAD) != 0u) {
+            m->faces[m->face_count - 1u].flags |= MESH_FACE_QUAD;
+        }
+    }
+    mesh_finish(m);
+    return !m->full;
+}
