@@ -29,8 +29,6 @@
 #define MESHFILE_FACE_FLAGS_KNOWN 0x01u
 /* |n|^2 of a stored normal within 2^-8 of 16384^2 (rounding moves it by about 2^-13). */
 #define MESHFILE_NORMAL_TOLERANCE_SHIFT 8u
-#define MESHFILE_DEFAULT_MAX_FACES 4096u  /* the firmware's model capacity: meshconv's defaults */
-#define MESHFILE_DEFAULT_MAX_VERTS 4096u
 
 /* The firmware's default model capacity (scenes/model/model.h: FW_MODEL_MAX_*), which the SoC's
  * 192 KiB hold, and tools/meshconv's default budget. */

@@ -17,6 +17,11 @@ need BUILD
 MODELS=${MESHCONV_MODELS:-/usr/share/assimp/models}
 need_file "$MESHCONV" "$MODELS/OBJ/spider.obj"
 work=$(fresh_dir meshconv)
+# The converter's default capacity: the firmware's (meshfile.h).
+cap_faces=$(sed -n 's/^#define MESHFILE_DEFAULT_MAX_FACES \([0-9]*\)u.*/\1/p' firmware/model/meshfile.h)
+cap_verts=$(sed -n 's/^#define MESHFILE_DEFAULT_MAX_VERTS \([0-9]*\)u.*/\1/p' firmware/model/meshfile.h)
+[ -n "$cap_faces" ] && [ -n "$cap_verts" ] || fail "no MESHFILE_DEFAULT_MAX_* in firmware/model/meshfile.h"
+[ "$cap_faces" -lt 4992 ] || fail "the capacity test's sphere (4992 faces) is within $cap_faces faces"
 checks=0
 
 # convert NAME IN [OPTIONS]: IN -> $work/NAME.gmsh, status 0 and a valid file required.
@@ -79,7 +84,7 @@ cmp -s "$work/ply.gmsh" "$work/ply_bin.gmsh" || fail "cube.ply and cube_binary.p
 expect_eq "$(faces_of ply)" 12 "cube.ply's faces (6 quads)"
 convert gltf2 "$MODELS/glTF2/BoxTextured-glTF/BoxTextured.gltf"
 expect_eq "$(faces_of gltf2)" 12 "the glTF 2 box's faces"
-convert wuson "$MODELS/PLY/Wuson.ply"
+convert wuson "$MODELS/PLY/Wuson.ply" --max-faces "$cap_faces"
 
 # ---- assimp's invalid models: refused cleanly, or converted to a valid file ----
 invalid=0
@@ -169,14 +174,14 @@ sphere() {
     }'
 }
 sphere 40 64 >"$gen/sphere5k.obj"   # 4992 faces, 2498 vertices
-refused over "$gen/sphere5k.obj" 3 '4992 faces and 2498 vertices after merging; the firmware holds 4096 and 4096: pass --max-faces N'
+refused over "$gen/sphere5k.obj" 3 "4992 faces and 2498 vertices after merging; the firmware holds $cap_faces and $cap_verts: pass --max-faces N"
 convert simplified "$gen/sphere5k.obj" --max-faces 500
 [ "$(faces_of simplified)" -le 500 ] || fail "--max-faces 500 gave $(faces_of simplified) faces"
 [ "$(faces_of simplified)" -ge 250 ] || fail "--max-faces 500 gave only $(faces_of simplified) faces"
 # --max-verts alone is a capacity, not a licence to simplify.
 refused over_verts "$gen/sphere5k.obj" 3 'pass --max-faces N' --max-verts 100
 sphere 251 200 >"$gen/sphere100k.obj"  # 100000 faces
-convert big "$gen/sphere100k.obj" --max-faces 4096
+convert big "$gen/sphere100k.obj" --max-faces 4096 --max-verts 4096
 [ "$(faces_of big)" -le 4096 ] || fail "the 100k sphere gave $(faces_of big) faces"
 big_line=$(grep '^meshconv: simplification' "$work/big.log")
 echo "100k-face sphere: $big_line; $(ms_of big) ms"

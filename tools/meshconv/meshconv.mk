@@ -8,9 +8,11 @@
 MESHCONV         := $(BUILD)/tools/meshconv
 MESHCONV_MODELS  ?= /usr/share/assimp/models
 MESHCONV_TIMEOUT ?= 30
-# The firmware's pure code it links: the validator it checks its output with, the CRC, and the
-# palette it maps colours to (so that the converter and the screen agree by construction).
-MESHCONV_FW_SRCS ?= firmware/model/meshfile.c firmware/model/crc32.c
+# The firmware's pure code it links: the validator it checks its output with (the loader in the
+# same file brings mesh.c and the arithmetic), the CRC, and the palette it maps colours to (so
+# that the converter and the screen agree by construction).
+MESHCONV_FW_SRCS ?= firmware/model/meshfile.c firmware/model/crc32.c firmware/render/mesh.c \
+                    firmware/math/fixed.c firmware/math/vec.c
 MESHCONV_SRCS    := tools/meshconv/meshconv.c tools/meshconv/meshconv_scene.c tools/meshconv/meshconv_core.c \
                     firmware/render/palette.c $(MESHCONV_FW_SRCS)
 MESHCONV_CFLAGS  := $(HOST_CFLAGS) -Itools/meshconv -Ifirmware -Icontract $(MESHCONV_EXTRA_CFLAGS) \
