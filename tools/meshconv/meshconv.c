@@ -15,6 +15,8 @@
 #include <errno.h>
 #include <signal.h>
 #include <sys/resource.h>
+#include <sys/types.h>
+#include <sys/wait.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
@@ -132,6 +134,12 @@ static int usage(const char *why)
 
 /* ---- output --------------------------------------------------------------------------------- */
 
+/* The temporary name of OUT while process pid writes it. */
+static void temp_name(char *buf, size_t cap, const char *path, pid_t pid)
+{
+    snprintf(buf, cap, "%s.tmp%ld", path, (long)pid);
+}
+
 static int write_atomic(const char *path, const uint8_t *buf, size_t len)
 {
     const size_t n = strlen(path) + 32u;
@@ -141,7 +149,7 @@ static int write_atomic(const char *path, const uint8_t *buf, size_t len)
     if (!tmp) {
         return error(1, "out of memory");
     }
-    snprintf(tmp, n, "%s.tmp%ld", path, (long)getpid());
+    temp_name(tmp, n, path, getpid());
     f = fopen(tmp, "wb");
     if (!f) {
         int e = errno;
@@ -287,6 +295,48 @@ static int convert(const char *in, const char *outp, const struct meshconv_optio
     return rc;
 }
 
+/*
+ * The conversion in a child process: assimp's readers crash on some malformed files (a binary PLY
+ * found by fuzz_meshconv: SIGSEGV inside libassimp), and a crash must still end as one error
+ * line, a status and no OUT. The limits apply to the child only.
+ */
+static int convert_isolated(const char *in, const char *outp, const struct meshconv_options *opt)
+{
+    int st = 0;
+    pid_t pid;
+
+    fflush(NULL);
+    pid = fork();
+    if (pid < 0) {
+        set_limits();  /* no child: convert here, unprotected from a crash */
+        return convert(in, outp, opt);
+    }
+    if (pid == 0) {
+        set_limits();
+        const int rc = convert(in, outp, opt);
+        fflush(NULL);
+        _exit(rc);
+    }
+    while (waitpid(pid, &st, 0) < 0) {
+        if (errno != EINTR) {
+            return error(1, "%s: lost the converting process: %s", in, strerror(errno));
+        }
+    }
+    if (WIFEXITED(st)) {
+        return WEXITSTATUS(st);
+    }
+    /* Killed: whatever it had begun to write goes. */
+    const size_t n = strlen(outp) + 32u;
+    char *tmp = malloc(n);
+    if (tmp) {
+        temp_name(tmp, n, outp, pid);
+        unlink(tmp);
+        free(tmp);
+    }
+    return error(1, "%s: the importer crashed (signal %d, %s): assimp cannot read this file", in,
+                 WTERMSIG(st), strsignal(WTERMSIG(st)));
+}
+
 int main(int argc, char **argv)
 {
     struct meshconv_options opt;
@@ -346,6 +396,5 @@ int main(int argc, char **argv)
     if (npos != 2) {
         return usage("expected an input model and an output .gmsh file");
     }
-    set_limits();
-    return convert(pos[0], pos[1], &opt);
+    return convert_isolated(pos[0], pos[1], &opt);
 }
