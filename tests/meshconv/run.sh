@@ -2,7 +2,8 @@
 # tests/meshconv/run.sh — the model converter (tools/meshconv) on real models and on bad ones.
 #
 #   - real models convert and pass --check (the firmware's validator): spider.obj, the binary and
-#     ASCII spider STL (identical files), cube.ply and cube_binary.ply (identical), a glTF 2 box;
+#     ASCII spider STL (identical files), cube.ply and cube_binary.ply (identical), a glTF 2 box,
+#     a glTF with a node transform and a base colour (tests/fuzz/meshconv_seeds.py's), Wuson.ply;
 #   - every file of assimp's invalid/ set: a non-zero status with one "meshconv: error:" line and
 #     no output, or a valid file;
 #   - generated bad input: empty, random bytes, NaN and infinite coordinates, indices out of range,
@@ -84,6 +85,12 @@ cmp -s "$work/ply.gmsh" "$work/ply_bin.gmsh" || fail "cube.ply and cube_binary.p
 expect_eq "$(faces_of ply)" 12 "cube.ply's faces (6 quads)"
 convert gltf2 "$MODELS/glTF2/BoxTextured-glTF/BoxTextured.gltf"
 expect_eq "$(faces_of gltf2)" 12 "the glTF 2 box's faces"
+# A node's transform (scale 2 in x) is applied, and a glTF base colour picks its material.
+"$PYTHON" -c 'import sys; sys.path.insert(0, "tests/fuzz"); import meshconv_seeds as s; sys.stdout.buffer.write(s.gltf())' \
+    >"$work/scaled.gltf"
+convert scaled "$work/scaled.gltf"
+expect_line 'box \(-16384 -8192 -8192\) \.\. \(16384 8192 8192\)' "$work/scaled.check"
+expect_line '^meshconv: materials: 12 faces coloured.*: green 12$' "$work/scaled.log"
 convert wuson "$MODELS/PLY/Wuson.ply" --max-faces "$cap_faces"
 
 # ---- assimp's invalid models: refused cleanly, or converted to a valid file ----
