@@ -3,11 +3,14 @@
 #
 #   make meshconv          $(MESHCONV) = $(BUILD)/tools/meshconv
 #   make meshconv-sweep    every model under MESHCONV_MODELS converted (MESHCONV_TIMEOUT seconds
-#                          each): a Markdown table and the totals; a crash or a timeout fails it
+#                          each) as the firmware build converts MODEL= (to its capacity, simplifying:
+#                          MESHCONV_SWEEP_ARGS): a Markdown table and the totals; a crash or a
+#                          timeout fails it
 
 MESHCONV         := $(BUILD)/tools/meshconv
 MESHCONV_MODELS  ?= /usr/share/assimp/models
 MESHCONV_TIMEOUT ?= 30
+MESHCONV_SWEEP_ARGS ?= --max-verts $(FW_MODEL_MAX_VERTS) --max-faces $(FW_MODEL_MAX_FACES)
 # The firmware's pure code it links: the validator it checks its output with (the loader in the
 # same file brings mesh.c and the arithmetic), the CRC, and the palette it maps colours to (so
 # that the converter and the screen agree by construction).
@@ -28,4 +31,4 @@ $(MESHCONV): $(MESHCONV_SRCS) $(wildcard tools/meshconv/*.h firmware/model/*.h f
 
 meshconv-sweep: $(MESHCONV)
 	@MESHCONV=$(MESHCONV) BUILD=$(BUILD) MESHCONV_TIMEOUT=$(MESHCONV_TIMEOUT) \
-	  bash tools/meshconv/sweep.sh $(MESHCONV_MODELS)
+	  MESHCONV_ARGS='$(MESHCONV_SWEEP_ARGS)' bash tools/meshconv/sweep.sh $(MESHCONV_MODELS)

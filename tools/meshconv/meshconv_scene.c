@@ -84,6 +84,10 @@ static int add_mesh(struct meshconv_soup *s, const struct aiScene *sc, const str
     if (s->faces + tris > MESHCONV_MAX_SOURCE_FACES) {
         return soup_error(s, "more than %u faces in the scene", MESHCONV_MAX_SOURCE_FACES);
     }
+    /* Indices are uint32 and UINT32_MAX marks a bad one: the vertices stay well below. */
+    if (s->verts + m->mNumVertices > 3u * MESHCONV_MAX_SOURCE_FACES) {
+        return soup_error(s, "more than %u vertices in the scene", 3u * MESHCONV_MAX_SOURCE_FACES);
+    }
     const size_t base = s->verts;
     const size_t old_vcap = s->vert_cap;
     if (!grow((void **)&s->pos, &s->vert_cap, base + m->mNumVertices, 3u * sizeof(double)) ||
@@ -112,7 +116,10 @@ static int add_mesh(struct meshconv_soup *s, const struct aiScene *sc, const str
         }
         for (size_t f = 0; f < s->faces; f++) {
             for (int k = 0; k < 3; k++) {
-                memcpy(&s->vert_rgb[3u * s->idx[3 * f + k]], &s->face_rgb[3 * f], 3u * sizeof(float));
+                if (s->idx[3 * f + k] < s->verts) {  /* a bad index stays for the core to drop */
+                    memcpy(&s->vert_rgb[3u * s->idx[3 * f + k]], &s->face_rgb[3 * f],
+                           3u * sizeof(float));
+                }
             }
         }
     }

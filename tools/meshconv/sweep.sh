@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # tools/meshconv/sweep.sh DIR... — `make meshconv-sweep`: converts every file under DIR (models,
 # textures, readmes alike: whatever assimp is handed, it must refuse cleanly or convert), each
-# under `timeout $MESHCONV_TIMEOUT`, and prints a Markdown table and the totals. A crash (a signal,
+# under `timeout $MESHCONV_TIMEOUT` with the options $MESHCONV_ARGS, and prints a Markdown table and the totals. A crash (a signal,
 # or a failure without the one "meshconv: error:" line) or a timeout fails the sweep.
 set -uo pipefail
-: "${MESHCONV:?}" "${BUILD:=build}" "${MESHCONV_TIMEOUT:=30}"
+: "${MESHCONV:?}" "${BUILD:=build}" "${MESHCONV_TIMEOUT:=30}" "${MESHCONV_ARGS:=}"
 [ $# -gt 0 ] || { echo "usage: sweep.sh DIR..."; exit 2; }
 work="$BUILD/meshconv-sweep"
 rm -rf "$work" && mkdir -p "$work"
@@ -15,7 +15,8 @@ echo "|---|---:|---:|---:|---|---:|"
 while IFS= read -r -d '' f; do
     log="$work/log"
     t0=$(date +%s%N)
-    timeout -k 5 "$MESHCONV_TIMEOUT" "$MESHCONV" "$f" "$work/out.gmsh" >"$log" 2>&1
+    # shellcheck disable=SC2086 # the options are words
+    timeout -k 5 "$MESHCONV_TIMEOUT" "$MESHCONV" "$f" "$work/out.gmsh" $MESHCONV_ARGS >"$log" 2>&1
     rc=$?
     ms=$(( ($(date +%s%N) - t0) / 1000000 ))
     faces_in=$(sed -n 's/^meshconv: read .*: \([0-9]*\) faces in .*/\1/p' "$log" | tail -n 1)
@@ -24,7 +25,8 @@ while IFS= read -r -d '' f; do
     case $rc in
         0)
             status=ok
-            if ! "$MESHCONV" --check "$work/out.gmsh" >"$work/check" 2>&1; then
+            # shellcheck disable=SC2086
+            if ! "$MESHCONV" --check "$work/out.gmsh" $MESHCONV_ARGS >"$work/check" 2>&1; then
                 status="crashed: written file invalid: $(head -c 200 "$work/check")"
                 crashed=$((crashed + 1))
             else
