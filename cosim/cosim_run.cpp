@@ -3,7 +3,9 @@
 // firmware rings the GPU's DOORBELL the batch bridge (batch_bridge) forwards the firmware's stores to
 // the Verilated GPU, runs it, checks it against the golden model, writes the frame as a PNG and
 // copies the read-only registers back so the firmware sees DONE_SEQ. Between batches the loop pumps
-// the firmware's UART output and forwards typed or scripted keys (uart_pump, uart_terminal).
+// the firmware's UART output and forwards typed or scripted keys (uart_pump, uart_terminal). With
+// --uart-pty LINK the UART is also a pseudo-terminal (uart_pty): what a client writes there goes
+// the keys' way, and the firmware's output goes to it raw, as a board's serial port would carry it.
 //
 // Determinism: simulated time advances only while a batch is serviced, so the same firmware gives
 // the same frames byte for byte whatever the host's timing. Robustness: the shared-memory file is
@@ -13,7 +15,8 @@
 // the terminal, flushes the UART's last output and returns 1; usage errors return 2; a firmware that
 // ends with status 0 returns 0. With --summary FILE the run's outcome is also written as key=value
 // lines (result, error, firmware_status, batches, doorbells_dropped, gpu_resets, frames,
-// frames_model_checked, gpu_cycles) for tests and scripts to read instead of the prose.
+// frames_model_checked, gpu_cycles, uart_pty_in, uart_pty_dropped) for tests and scripts to read
+// instead of the prose.
 #include <cerrno>
 #include <cstdarg>
 #include <csignal>
@@ -24,6 +27,9 @@
 #include <string>
 #include <vector>
 
+#include <climits>
+
+#include <poll.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -32,6 +38,7 @@
 #include "keys_at.h"
 #include "qemu_process.h"
 #include "shared_ram.h"
+#include "uart_pty.h"
 #include "uart_pump.h"
 #include "uart_terminal.h"
 
@@ -45,6 +52,7 @@ struct Options {
     std::string qemu = "qemu-system-riscv32";
     std::string uart_log;
     std::string summary;
+    std::string uart_pty;  // the pseudo-terminal's link, or empty
     double idle_timeout_s = 60.0;
     KeysAt keys_at;  // (batch number, text) to type
     BridgeOptions bridge;
@@ -63,10 +71,13 @@ int usage()
                  "usage: gpusim cosim --fw FIRMWARE.elf [--frames DIR] [--qemu PATH] [--uart-log FILE]\n"
                  "                    [--idle-timeout SECONDS] [--max-batch-cycles N] [--no-model-check]\n"
                  "                    [--keys-at N:TEXT]... [--drop-doorbell N] [--dump-lists DIR] [--summary FILE]\n"
+                 "                    [--uart-pty LINK]\n"
                  "  --keys-at N:TEXT   type TEXT into the firmware's UART just before servicing doorbell N (from 1)\n"
                  "  --drop-doorbell N  ignore doorbell N, as a hung GPU would (the firmware's watchdog must RESET)\n"
                  "  --dump-lists DIR   write each batch as DIR/batchNNNN.txt in the `make raster` list format\n"
                  "  --summary FILE     write the run's outcome and counts as key=value lines\n"
+                 "  --uart-pty LINK    also offer the UART as a pseudo-terminal, LINK a symlink to it (raw, 8 bits):\n"
+                 "                     what a client writes there is typed, the firmware's output is sent there\n"
                  "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n");
     return 2;
 }
@@ -86,6 +97,8 @@ bool parse(int argc, char **argv, Options &o)
             o.uart_log = argv[++i];
         } else if (a == "--summary" && has_value) {
             o.summary = argv[++i];
+        } else if (a == "--uart-pty" && has_value) {
+            o.uart_pty = argv[++i];
         } else if (a == "--idle-timeout" && has_value) {
             o.idle_timeout_s = std::atof(argv[++i]);
         } else if (a == "--max-batch-cycles" && has_value) {
@@ -121,6 +134,7 @@ private:
     void write_summary(const char *error);
     void shutdown();
     void pump_uart(bool final) { uart_.pump(qemu_.uart_out_fd(), final); }
+    void forward_pty();
 
     const Options &opt_;
     BatchBridge bridge_;
@@ -128,6 +142,7 @@ private:
     QemuProcess qemu_;
     UartPump uart_;
     UartTerminal terminal_;
+    UartPty pty_;
     int firmware_status_ = -1;  // QEMU's exit status once it has ended
 };
 
@@ -148,7 +163,23 @@ void CosimRun::write_summary(const char *error)
                  bridge_.doorbells_dropped(), bridge_.resets());
     std::fprintf(f, "frames=%u\nframes_model_checked=%u\ngpu_cycles=%llu\n", bridge_.frames(),
                  bridge_.frames_model_checked(), static_cast<unsigned long long>(bridge_.cycles()));
+    std::fprintf(f, "uart_pty_in=%llu\nuart_pty_dropped=%llu\n", static_cast<unsigned long long>(pty_.bytes_in()),
+                 static_cast<unsigned long long>(pty_.bytes_dropped()));
     std::fclose(f);
+}
+
+// The pty's bytes, as many as the UART's input pipe takes without blocking (POLLOUT: room for
+// PIPE_BUF): the rest wait in the pty, which then holds its client back, instead of this loop
+// blocking on a full pipe while the firmware waits for its batch.
+void CosimRun::forward_pty()
+{
+    if (!pty_.is_open() || qemu_.uart_in_fd() < 0) {
+        return;
+    }
+    pollfd p = {qemu_.uart_in_fd(), POLLOUT, 0};
+    if (poll(&p, 1, 0) == 1 && (p.revents & POLLOUT) != 0) {
+        uart_.type(qemu_.uart_in_fd(), pty_.read(PIPE_BUF));
+    }
 }
 
 int CosimRun::fail(const char *kind, const char *fmt, ...)
@@ -180,6 +211,15 @@ int CosimRun::run()
     }
     if (!ram_.create()) {
         return fail("setup", "shared RAM setup failed");
+    }
+    if (!opt_.uart_pty.empty()) {
+        std::string error;
+        if (!pty_.open(opt_.uart_pty, &error)) {
+            return fail("setup", "--uart-pty %s: %s", opt_.uart_pty.c_str(), error.c_str());
+        }
+        uart_.tee_to(&pty_);
+        std::printf("cosim: UART on %s (%s)\n", pty_.link().c_str(), pty_.slave_path().c_str());
+        std::fflush(stdout);
     }
     bridge_.attach(ram_.gpu_window());
     bridge_.publish_registers();  // ID, VERSION, CAPS ... are readable before the first doorbell
@@ -218,6 +258,7 @@ int CosimRun::run()
         } else {
             uart_.type(qemu_.uart_in_fd(), keys);
         }
+        forward_pty();
         uint32_t reset;
         if (bridge_.pending_reset(&reset)) {
             bridge_.service_reset(reset);
@@ -254,6 +295,8 @@ void CosimRun::shutdown()
         pump_uart(true);
         qemu_.close_uart_out();
     }
+    uart_.tee_to(nullptr);
+    pty_.close();
     uart_.close_log();
     ram_.close();
 }

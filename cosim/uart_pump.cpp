@@ -6,6 +6,8 @@
 
 #include <unistd.h>
 
+#include "uart_pty.h"
+
 bool UartPump::open_log(const std::string &path)
 {
     log_ = std::fopen(path.c_str(), "w");
@@ -27,6 +29,9 @@ void UartPump::pump(int uart_out_fd, bool final)
         ssize_t n = read(uart_out_fd, buf, sizeof buf);
         if (n <= 0) {
             break;
+        }
+        if (tee_ != nullptr) {
+            tee_->write(buf, static_cast<size_t>(n));
         }
         for (ssize_t i = 0; i < n; i++) {
             if (buf[i] == '\r') {

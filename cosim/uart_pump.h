@@ -6,12 +6,15 @@
 // (with a '\n' added, on stdout only). stdout is flushed on every call, so the firmware's lines and
 // the harness's own "cosim: ..." lines appear in the order they happened. type() writes keys to the
 // UART's input pipe (a failure is a warning, not an error). The pipes belong to QemuProcess; a
-// closed pipe (-1) is simply skipped.
+// closed pipe (-1) is simply skipped. With tee_to(pty), every byte read from the UART also goes to
+// the pty (cosim/uart_pty) as it came, '\r' included: a client there sees the raw line.
 #ifndef UART_PUMP_H
 #define UART_PUMP_H
 
 #include <cstdio>
 #include <string>
+
+class UartPty;
 
 class UartPump {
 public:
@@ -24,10 +27,12 @@ public:
     void close_log();
     void pump(int uart_out_fd, bool final);
     void type(int uart_in_fd, const std::string &text);
+    void tee_to(UartPty *pty) { tee_ = pty; }
 
 private:
     FILE *log_ = nullptr;
     std::string line_;
+    UartPty *tee_ = nullptr;
 };
 
 #endif

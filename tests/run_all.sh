@@ -98,6 +98,8 @@ suite fuzz-prim-list           2 bash tests/fuzz/run_fuzz.sh short prim_list
 suite fuzz-input               4 bash tests/fuzz/run_fuzz.sh short input
 suite fuzz-gpu-model           6 bash tests/fuzz/run_fuzz.sh short gpu_model
 suite fuzz-gpu-driver          6 bash tests/fuzz/run_fuzz.sh short gpu_driver
+suite fuzz-upload              5 bash tests/fuzz/run_fuzz.sh short upload
+suite fuzz-meshfile            2 bash tests/fuzz/run_fuzz.sh short meshfile
 suite cosim-end-to-end        20 bash tests/cosim/end_to_end.sh
 suite cosim-kill-qemu          3 bash tests/cosim/kill.sh qemu
 suite cosim-kill-harness       1 bash tests/cosim/kill.sh harness

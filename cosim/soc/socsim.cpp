@@ -14,7 +14,7 @@
 // the VGA build, byte for byte, when the board's video path is right.
 //
 //   socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]
-//          [--keys-at N:TEXT]... [--max-cycles N] [--no-model-check]
+//          [--keys-at N:TEXT]... [--max-cycles N] [--no-model-check] [--uart-pty LINK]
 //
 // The program: RAM_INIT's format (one 32-bit hex word per line from address 0; --fw FILE.elf reads
 // FILE.elf.hex, the soc platform's post-link output), loaded at time 0 through soc_ram's
@@ -36,7 +36,11 @@
 // (the point where `gpusim cosim` types it); if bytes are still on the line when the firmware next
 // reads UART DATA after the following swap, the firmware's frame saw part of them, so the run would
 // differ from co-simulation: a warning, counted as keys_late in the summary. With a terminal on
-// stdin the keystrokes are sent as well (cosim/uart_terminal); Ctrl-C ends the run.
+// stdin the keystrokes are sent as well (cosim/uart_terminal); Ctrl-C ends the run. With
+// --uart-pty LINK the line is also a pseudo-terminal (cosim/uart_pty): what a client writes there
+// is queued on uart_rx (at most kPtyQueue bytes ahead of the line, so that the pty holds a fast
+// client back instead of this process buffering without bound), and every byte decoded from
+// uart_tx goes to the client as it came.
 //
 // The run ends when the firmware writes SYS EXIT (soc_top's exit_valid): the process exits with its
 // status (0..255). A harness failure — a frame that differs from the model or cannot be captured,
@@ -72,6 +76,7 @@ using SocModel = Vsoc_top;
 #include "keys_at.h"
 #include "model_check.h"
 #include "uart_line.h"
+#include "uart_pty.h"
 #include "uart_terminal.h"
 
 extern "C" {
@@ -116,6 +121,7 @@ struct Options {
     std::string frames_dir = "out/frames";
     std::string uart_log;
     std::string summary;
+    std::string uart_pty;  // the pseudo-terminal's link, or empty
     uint64_t max_cycles = 3000000000ull;  // 60 s of SoC time at 50 MHz
     uint64_t progress_cycles = 50000000;  // a progress line after this many cycles without a frame
     uint32_t uart_divider = (SOCSIM_CLK_HZ + SOC_UART_BAUD / 2) / SOC_UART_BAUD;  // as soc_uart rounds
@@ -128,10 +134,13 @@ int usage()
     std::fprintf(stderr,
                  "usage: socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]\n"
                  "              [--keys-at N:TEXT]... [--max-cycles N] [--no-model-check] [--uart-divider N]\n"
+                 "              [--uart-pty LINK]\n"
                  "  --fw FILE.elf     run FILE.elf.hex (the soc build's RAM image); -kernel FILE.elf is the same\n"
                  "  --keys-at N:TEXT  send TEXT on uart_rx when the GPU takes DOORBELL write N (from 1)\n"
                  "  --max-cycles N    give up after N clocks (default 3e9: 60 s at 50 MHz)\n"
                  "  --summary FILE    write the run's outcome and counts as key=value lines\n"
+                 "  --uart-pty LINK   also offer the UART as a pseudo-terminal, LINK a symlink to it (raw, 8 bits):\n"
+                 "                    what a client writes there is sent on uart_rx, uart_tx's bytes are sent there\n"
                  "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n"
                  "  Exit status: the firmware's (SYS EXIT); 1 on a harness error; 2 on a usage error.\n");
     return 2;
@@ -152,6 +161,8 @@ bool parse(int argc, char **argv, Options &o)
             o.uart_log = argv[++i];
         } else if (a == "--summary" && has_value) {
             o.summary = argv[++i];
+        } else if (a == "--uart-pty" && has_value) {
+            o.uart_pty = argv[++i];
         } else if (a == "--max-cycles" && has_value) {
             o.max_cycles = static_cast<uint64_t>(std::strtod(argv[++i], nullptr));
         } else if (a == "--uart-divider" && has_value) {
@@ -239,6 +250,8 @@ private:
     UartLineDecoder rx_;   // the firmware's output: soc_top's uart_tx
     UartLineSender tx_;    // keys: soc_top's uart_rx
     UartTerminal terminal_;
+    UartPty pty_;
+    static constexpr size_t kPtyQueue = 64;  // bytes from the pty queued ahead of the line, at most
     vga_monitor monitor_;
     FILE *log_ = nullptr;
     std::string line_;
@@ -491,6 +504,7 @@ void SocRun::tmds_clock()
 
 void SocRun::uart_byte(uint8_t b)
 {
+    pty_.write(reinterpret_cast<const char *>(&b), 1);
     if (b == '\r') {
         return;
     }
@@ -580,6 +594,8 @@ void SocRun::write_summary(const char *error)
     std::fprintf(f, "cycles=%llu\ninstructions=%llu\nkeys_late=%u\n", static_cast<unsigned long long>(cycles_),
                  static_cast<unsigned long long>(instret()), keys_late_);
     std::fprintf(f, "registers_model_checked=%llu\n", static_cast<unsigned long long>(regs_checked_));
+    std::fprintf(f, "uart_pty_in=%llu\nuart_pty_dropped=%llu\n", static_cast<unsigned long long>(pty_.bytes_in()),
+                 static_cast<unsigned long long>(pty_.bytes_dropped()));
     std::fprintf(f, "icache_refills=%llu\ndcache_refills=%llu\nuart_framing_errors=%u\n",
                  static_cast<unsigned long long>(icache_refills_), static_cast<unsigned long long>(dcache_refills_),
                  rx_.framing_errors());
@@ -638,6 +654,13 @@ int SocRun::run()
     std::string error;
     if (!load_ram(&error)) {
         return fail("setup", "%s", error.c_str());
+    }
+    if (!opt_.uart_pty.empty()) {
+        if (!pty_.open(opt_.uart_pty, &error)) {
+            return fail("setup", "--uart-pty %s: %s", opt_.uart_pty.c_str(), error.c_str());
+        }
+        std::printf("socsim: UART on %s (%s)\n", pty_.link().c_str(), pty_.slave_path().c_str());
+        std::fflush(stdout);
     }
 #ifdef SOCSIM_BOARD_ULX3S
     top_->clk_sys = top_->clk_pix = top_->clk_tmds = 0;
@@ -717,6 +740,9 @@ int SocRun::run()
             g_signal = SIGINT;
         }
         tx_.queue(keys);
+        if (tx_.queued() < kPtyQueue) {
+            tx_.queue(pty_.read(kPtyQueue - tx_.queued()));
+        }
         if (cycles_ >= opt_.max_cycles) {
             return fail("cycle-limit", "the firmware did not exit within %llu cycles",
                         static_cast<unsigned long long>(opt_.max_cycles));

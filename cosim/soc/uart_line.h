@@ -47,6 +47,7 @@ public:
     // The line's level for the next clock.
     int tick();
     bool busy() const { return bit_ >= 0 || !queue_.empty(); }  // a byte on the line or waiting
+    size_t queued() const { return queue_.size(); }             // bytes waiting, not yet on the line
     uint64_t bytes_sent() const { return sent_; }
 
 private:

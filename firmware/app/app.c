@@ -69,6 +69,7 @@ struct app {
     uint32_t lost_in_a_row;  /* consecutive frames dropped by the watchdog */
 #if FW_WITH_UPLOAD
     struct upload_rx upload;
+    bool model_from_upload;  /* the model scene's source is the staging buffer */
 #endif
 };
 
@@ -215,10 +216,11 @@ static void app_read_uart(struct app *app, struct input_counts *keys)
     }
 #if FW_WITH_UPLOAD
     upload_frame_end(&app->upload);
-    if (!app->upload.staging_valid) {
-        /* The staging buffer is being (or was never) filled: the model scene's key restarts it
-         * from the built-in model instead. */
+    if (app->model_from_upload && !app->upload.staging_valid) {
+        /* A new transfer is filling the staging buffer: the model scene's key restarts the scene
+         * from the built-in model instead (the running scene keeps its own copy). */
         model_scene_source(0, 0);
+        app->model_from_upload = false;
     }
 #endif
 }
@@ -275,6 +277,7 @@ static void app_swap_upload(struct app *app, struct app_notes *notes)
         return;
     }
     model_scene_source(app->upload.buf, app->upload.total);
+    app->model_from_upload = true;
     app_start_scene(app, model);
     upload_taken(&app->upload);
     notes->scene_changed = true;
