@@ -29,6 +29,8 @@ include gpu_model/model.mk
 include firmware/firmware.mk
 # libFuzzer targets (FUZZ_BINS, fuzz-build) and `make fuzz`.
 include tests/fuzz/fuzz.mk
+# The model converter (MESHCONV, meshconv, meshconv-sweep).
+include tools/meshconv/meshconv.mk
 
 # The RTL, in compilation order: gpu_rtl/files.f is the one list (lint, simulators, synth/synth.sh).
 RTL_FILES  := gpu_rtl/files.f

@@ -17,7 +17,7 @@
 FUZZ_CC      ?= clang-14
 FUZZ_CXX     ?= clang++-14
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS ?= prim_list input gpu_model gpu_driver upload meshfile
+FUZZ_TARGETS ?= prim_list input gpu_model gpu_driver upload meshfile meshconv
 FUZZ_DIR     := $(BUILD)/fuzz
 FUZZ_SAN     := -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
 FUZZ_CFLAGS  := -std=c11 -g -O1 -Wall -Wextra $(FUZZ_SAN)
@@ -64,6 +64,20 @@ $(FUZZ_DIR)/fuzz_upload: tests/fuzz/fuzz_upload.c tests/fuzz/fuzz_common.h tests
 $(FUZZ_DIR)/fuzz_meshfile: tests/fuzz/fuzz_meshfile.c tests/fuzz/fuzz_common.h $(FUZZ_MODEL_SRCS) $(FUZZ_FW_HDRS)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -Icontract -Ifirmware $(filter %.c,$^) -lm -o $@
+
+# The converter's path (tools/meshconv) on assimp and meshoptimizer, which are not instrumented.
+# Its seeds are generated into the build directory (meshconv_seeds.py: our own small models).
+FUZZ_MESHCONV_SRCS := tests/fuzz/fuzz_meshconv.c tools/meshconv/meshconv_core.c \
+                      tools/meshconv/meshconv_scene.c firmware/render/palette.c $(FUZZ_MODEL_SRCS)
+$(FUZZ_DIR)/fuzz_meshconv: $(FUZZ_MESHCONV_SRCS) tests/fuzz/fuzz_common.h $(wildcard tools/meshconv/*.h) \
+                           $(FUZZ_FW_HDRS) | $(FUZZ_DIR)/seeds-meshconv
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Itools/meshconv -Ifirmware -Icontract $$(pkg-config --cflags assimp) \
+	  $(filter %.c,$^) -o $@ $$(pkg-config --libs assimp) -lmeshoptimizer -lstdc++ -lm
+
+$(FUZZ_DIR)/seeds-meshconv: tests/fuzz/meshconv_seeds.py
+	@rm -rf $@
+	$(PYTHON) $< $@
 
 .PHONY: fuzz fuzz-build
 fuzz-build: $(FUZZ_BINS)
