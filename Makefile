@@ -26,11 +26,11 @@ COSIM_C_LIB := $(BUILD)/host/libcosim.a
 
 # Golden model (GPU_MODEL_LIB, model_unit), firmware (FW_ELF, fw_unit) rules.
 include gpu_model/model.mk
+# The model converter (MESHCONV, meshconv, meshconv-sweep): before the firmware, which converts MODEL=.
+include tools/meshconv/meshconv.mk
 include firmware/firmware.mk
 # libFuzzer targets (FUZZ_BINS, fuzz-build) and `make fuzz`.
 include tests/fuzz/fuzz.mk
-# The model converter (MESHCONV, meshconv, meshconv-sweep).
-include tools/meshconv/meshconv.mk
 
 # The RTL, in compilation order: gpu_rtl/files.f is the one list (lint, simulators, synth/synth.sh).
 RTL_FILES  := gpu_rtl/files.f
@@ -79,7 +79,7 @@ TEST_ENV = GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUI
            $(if $(TEST_JOBS),TEST_JOBS=$(TEST_JOBS))
 # The simulators first: the longest builds, started early so that the short ones fill the tail.
 TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
-             fw-test-deps $(PNG_DIFF)
+             fw-test-deps $(PNG_DIFF) $(MESHCONV) $(UPLOAD_PEER)
 test: setup
 	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) VERILATOR_JOBS=1 TEST_BUILD_ONLY=1 test-quick
 	@$(MAKE) --no-print-directory test-quick

@@ -153,7 +153,6 @@ FW_PNG_LIBS   := $(or $(shell pkg-config --libs libpng 2>/dev/null),-lpng)
 MODEL              ?= /usr/share/assimp/models/OBJ/spider.obj
 FW_MODEL_MAX_VERTS ?= 1024
 FW_MODEL_MAX_FACES ?= 1024
-MESHCONV           ?= $(BUILD)/tools/meshconv
 FW_MODEL_DEFS      := -DFW_MODEL_MAX_VERTS=$(FW_MODEL_MAX_VERTS)u -DFW_MODEL_MAX_FACES=$(FW_MODEL_MAX_FACES)u
 FW_MODEL_TAG       := $(basename $(notdir $(MODEL)))-v$(FW_MODEL_MAX_VERTS)f$(FW_MODEL_MAX_FACES)
 FW_MODEL_GMSH      := $(BUILD)/model/$(FW_MODEL_TAG).gmsh
