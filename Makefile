@@ -4,7 +4,8 @@
 BUILD       ?= build
 OUT         ?= out
 FRAMES      ?= 24
-SCENE       ?= tetra
+# MODEL=path (a model file, firmware/firmware.mk) alone shows that model: the model scene.
+SCENE       ?= $(if $(filter command line environment,$(origin MODEL)),model,tetra)
 HOST_CC     ?= gcc
 HOST_CFLAGS ?= -std=c11 -O2 -g -Wall -Wextra -Werror
 PYTHON      ?= python3
