@@ -61,12 +61,14 @@ run: setup
 	@$(MAKE) --no-print-directory run-headless
 
 # PLATFORM=soc: the whole SoC in socsim instead of QEMU + the GPU (cosim/soc/socsim.mk).
+# UART_PTY=LINK: the firmware's UART also on a pseudo-terminal, for tools/mesh_upload.py.
 ifeq ($(PLATFORM),soc)
 run-headless: run-soc
 else
 run-headless: $(FW_ELF) $(GPUSIM)
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
-	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log
+	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log \
+	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
 endif
 
 # ---- test: every suite (or those matching SUITE, e.g. SUITE='rtl-* fw-unit'), with a summary line ----
