@@ -19,7 +19,7 @@ TIMEOUT=25
 
 # Generated inputs per target in the short run: about 5 s each on one core of the reference
 # machine (exec/s differ by target: the firmware's scenes and the model's rasterizer are slower).
-declare -A SHORT_RUNS=([prim_list]=50000 [input]=3000 [gpu_model]=2000 [gpu_driver]=8000 [upload]=15000
+declare -A SHORT_RUNS=([prim_list]=50000 [input]=3000 [gpu_model]=2000 [gpu_driver]=8000 [upload]=50000
                        [meshfile]=60000 [meshconv]=300)
 
 mode="${1:?usage: run_fuzz.sh short|long TARGET...}"
