@@ -5,9 +5,10 @@
  * ESC [ A .. D) are understood and every other sequence is swallowed whole instead of leaking its
  * letters as commands. Letters are case-insensitive. Unknown bytes are ignored.
  *
- * A frame collects at most INPUT_MAX_BYTES_PER_FRAME bytes (app.c); the rest stay in the UART for
- * the next frame, so a burst of keys costs a bounded amount of work per frame and never stalls
- * rendering. Keys are counted, not queued: eight presses of W move eight steps in one frame.
+ * A frame collects at most INPUT_MAX_BYTES_PER_FRAME bytes (app.c; FW_UART_BYTES_PER_FRAME in a
+ * build with the UART upload, whose receiver sees every byte first, model/upload.h); the rest stay
+ * in the UART for the next frame, so a burst of keys costs a bounded amount of work per frame and
+ * never stalls rendering. Keys are counted, not queued: eight presses of W move eight steps in one frame.
  */
 #ifndef INPUT_H
 #define INPUT_H
