@@ -108,8 +108,8 @@ def parse_response(line):
             return Response("reject", int(words[1]), reason=reason.strip(), text=text.strip())
         if kind == "ok" and len(words) >= 2:
             return Response("ok", int(words[1]), text=" ".join(words[2:]))
-        if kind == "abandoned" and len(words) == 2:
-            return Response("abandoned", int(words[1]))
+        if kind == "abandoned" and len(words) >= 2:
+            return Response("abandoned", int(words[1]), text=" ".join(words[2:]))
     except (IndexError, ValueError):
         return None
     return None
@@ -127,12 +127,17 @@ class Transfer:
     ends with `@up ok` (done) or `@up reject` (failed). poll(now) gives the frames to send next;
     sent(seq, now) records that one went on the wire (in wire order: the loss detection relies on
     it); on_response() takes every parsed line. A frame is resent on a nak naming it, on an ack of
-    a frame sent after it, on a nak naming no frame (the oldest one), or `timeout` seconds after
-    the later of its sending and the last answer of this session (a slow receiver that keeps
-    answering is not a lost frame). More than `retries` resends of one frame fail the transfer."""
+    a frame sent after it, on a nak naming no frame (the oldest one), or when it has waited
+    `timeout` seconds more than its bytes take at the receiver's rate, counted from the later of
+    its sending and the last answer of this session (a slow receiver that keeps answering is not
+    a lost frame). The rate starts as the line's (rate, bytes a second) and follows what the acks
+    show (first copies only: an ack of a resent frame may answer either copy): a co-simulated
+    firmware takes a few dozen bytes a frame, and a timeout shorter than a frame's service time
+    would resend every frame. More than `retries` resends of one frame fail the transfer."""
 
-    def __init__(self, data, session, chunk=256, window=4, timeout=10.0, retries=8):
+    def __init__(self, data, session, chunk=256, window=4, timeout=10.0, retries=8, rate=11520.0):
         self.session, self.window, self.timeout, self.retries = session, window, timeout, retries
+        self.rate = float(rate)
         self.frames = {seq: (ftype, nbytes, frame) for seq, ftype, nbytes, frame in build_frames(data, session, chunk)}
         self.total_bytes = len(data)
         self.last_seq = max(self.frames)
@@ -143,6 +148,7 @@ class Transfer:
         self.acked = set()
         self.acked_bytes = 0
         self.wire_no = 0
+        self.rate_samples = 0
         self.last_answer = None
         self.done = False
         self.result = None          # the ok Response
@@ -156,7 +162,7 @@ class Transfer:
             return []
         for seq, (_, sent_at, _) in sorted(self.outstanding.items(), key=lambda kv: kv[1][0]):
             since = max(sent_at, self.last_answer or sent_at)
-            if now - since >= self.timeout and seq not in self.resend:
+            if now - since >= self.timeout + len(self.frame(seq)) / self.rate and seq not in self.resend:
                 self._queue_resend(seq)
         out = list(self.resend)
         self.resend = []
@@ -196,9 +202,9 @@ class Transfer:
         if r.session is not None and r.session != self.session:
             self.counts["foreign"] += 1
             return False
-        self.last_answer = now
+        previous, self.last_answer = self.last_answer, now
         if r.kind == "ack":
-            return self._ack(r.seq)
+            return self._ack(r.seq, now, previous)
         if r.kind == "nak":
             self.counts["naks"] += 1
             if r.seq is None:
@@ -223,14 +229,24 @@ class Transfer:
             return True
         return False
 
-    def _ack(self, seq):
+    def _ack(self, seq, now=0.0, previous=None):
         if seq == self.last_seq:
-            return True  # COMMIT is answered with ok or reject; an ack of it proves nothing more
+            # A COMMIT is answered with ok or reject; a repeated one, of a transfer already
+            # committed, with an ack (its ok was lost: the model is in).
+            if self.phase == COMMIT and seq in self.outstanding:
+                self.done = True
+                self.result = Response("ok", self.session, text="(a repeated COMMIT acknowledged)")
+            return True
         entry = self.outstanding.pop(seq, None)
         if entry is None:
             self.counts["duplicate_acks"] += 1  # a resent frame's second ack, or a stray
             return True
         self.acked.add(seq)
+        served = now - max(entry[1], previous if previous is not None else entry[1])
+        if entry[2] == 0 and served > 0:
+            sample = len(self.frame(seq)) / served
+            self.rate = 0.5 * self.rate + 0.5 * sample if self.rate_samples else sample
+            self.rate_samples += 1
         if seq in self.resend:
             self.resend.remove(seq)
         self.acked_bytes += self.frames[seq][1]
@@ -443,7 +459,9 @@ def summary_line(path, transfer, faults, stats, baud):
 def open_port(path, baud):
     import serial  # pyserial (Debian's python3-serial): only the edge needs it
     port = serial.serial_for_url(path, baudrate=baud, timeout=0.02, write_timeout=30)
-    port.reset_input_buffer()  # what the firmware printed before (old sessions' answers) is stale
+    # What the firmware printed before (old sessions' answers) is stale. pyserial flushes on opening
+    # too; this says so where the tool relies on it.
+    port.reset_input_buffer()
     return port
 
 
@@ -468,8 +486,9 @@ def parse_args(argv):
     ap.add_argument("--chunk", type=int, default=256, help="file bytes per DATA frame, %d..%d" % (CHUNK_MIN, CHUNK_MAX))
     ap.add_argument("--window", type=int, default=4, help="DATA frames unacknowledged at most")
     ap.add_argument("--timeout", type=float, default=10.0,
-                    help="seconds without an answer before a frame is sent again (default 10: a co-simulated "
-                    "frame takes about a second of wall time, and answers come at frame ends)")
+                    help="seconds a frame may wait for its answer beyond what its bytes take at the receiver's "
+                    "measured rate, before it is sent again (default 10: a co-simulated frame takes about a "
+                    "second of wall time, and answers come at frame ends)")
     ap.add_argument("--retries", type=int, default=8, help="resends of one frame before giving up")
     ap.add_argument("--session", type=int, help="1..255 (default: from the process id)")
     ap.add_argument("--quiet", action="store_true", help="no progress lines")
@@ -522,7 +541,7 @@ def main(argv=None):
             print("mesh_upload: %s" % e.args[0], file=sys.stderr)
         return 2
     session = a.session if a.session is not None else os.getpid() % 255 + 1
-    transfer = Transfer(data, session, a.chunk, a.window, a.timeout, a.retries)
+    transfer = Transfer(data, session, a.chunk, a.window, a.timeout, a.retries, a.baud / 10.0)
     faults = Faults(a.inject_seed, a.corrupt, a.drop, a.duplicate, a.reorder, a.garbage, a.keys,
                     a.truncate_frame, a.oversize)
     stats = Stats()
