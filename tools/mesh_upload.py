@@ -443,11 +443,12 @@ def summary_line(path, transfer, faults, stats, baud):
     wire_s = stats.wire_bytes * 10.0 / baud
     file_s = transfer.total_bytes * 10.0 / baud
     c = transfer.counts
-    text = ("mesh_upload: %s: %d bytes; on the wire %d bytes (%.1f %% overhead), %d frames sent, "
+    overhead = ("%.1f %% overhead" % (100.0 * (stats.wire_bytes - transfer.total_bytes) / transfer.total_bytes)
+                if stats.wire_bytes >= transfer.total_bytes > 0 else "incomplete")
+    text = ("mesh_upload: %s: %d bytes; on the wire %d bytes (%s), %d frames sent, "
             "%d retransmissions, %d naks, %d duplicate acks; %.2f s; the wire bytes take %.2f s at %d baud "
             "(the file alone %.2f s)"
-            % (os.path.basename(path), transfer.total_bytes, stats.wire_bytes,
-               100.0 * (stats.wire_bytes - transfer.total_bytes) / max(transfer.total_bytes, 1), c["frames"],
+            % (os.path.basename(path), transfer.total_bytes, stats.wire_bytes, overhead, c["frames"],
                c["retransmissions"], c["naks"], c["duplicate_acks"], elapsed, wire_s, baud, file_s))
     injected = ", ".join("%s %d" % (k, v) for k, v in faults.counts.items() if v)
     if injected:
@@ -569,12 +570,11 @@ def main(argv=None):
                 pass
     except PortClosed as e:
         print("mesh_upload: the port closed: %s" % e, file=sys.stderr, flush=True)
-    except OSError as e:  # the port cannot be opened
+    except OSError as e:  # the port cannot be opened or written (pyserial's SerialException is one)
         print("mesh_upload: %s: %s" % (a.port, e), file=sys.stderr, flush=True)
-    except Exception as e:
-        if type(e).__name__ != "SerialException":
-            raise
-        print("mesh_upload: %s: %s" % (a.port, e), file=sys.stderr, flush=True)
+    except ImportError:
+        print("mesh_upload: no pyserial: install python3-serial and run this with the system python3",
+              file=sys.stderr, flush=True)
     finally:
         if log is not None:
             log.close()
