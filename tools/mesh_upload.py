@@ -10,8 +10,9 @@ BEGIN first (alone: DATA before an accepted BEGIN would only be refused), then t
 at most --window of them unacknowledged, then COMMIT once every chunk is acknowledged (a COMMIT
 before that is refused for good). A frame is sent again on its `@up nak`, when a frame sent after
 it is acknowledged (the receiver answers in the order frames arrive, so it was lost), or after
---timeout seconds without an answer; a `@up nak crc` or `nak big`, which names no frame, resends the
-oldest unacknowledged one. After --retries resends of one frame the transfer is given up (ABORT).
+--timeout seconds without an answer beyond what its bytes take at the receiver's measured rate; a
+`@up nak crc` or `nak big`, which names no frame, resends the one unacknowledged frame when there is
+only one. After --retries resends of one frame the transfer is given up (ABORT).
 
 Exit status: 0 on `@up ok` for this session; 1 on `@up reject` (printed), `@up abandoned`, retries
 exhausted or the port closing; 2 on a usage error (options, a missing file, a file that is not a
@@ -127,7 +128,8 @@ class Transfer:
     ends with `@up ok` (done) or `@up reject` (failed). poll(now) gives the frames to send next;
     sent(seq, now) records that one went on the wire (in wire order: the loss detection relies on
     it); on_response() takes every parsed line. A frame is resent on a nak naming it, on an ack of
-    a frame sent after it, on a nak naming no frame (the oldest one), or when it has waited
+    a frame sent after it, on a nak naming no frame when it is the only one unanswered, or when it
+    has waited
     `timeout` seconds more than its bytes take at the receiver's rate, counted from the later of
     its sending and the last answer of this session (a slow receiver that keeps answering is not
     a lost frame). The rate starts as the line's (rate, bytes a second) and follows what the acks
@@ -208,12 +210,15 @@ class Transfer:
         if r.kind == "nak":
             self.counts["naks"] += 1
             if r.seq is None:
-                # nak crc / big: the oldest frame not yet queued again is the likeliest victim;
-                # if it was not, its resend only earns a duplicate ack.
-                for seq, _ in sorted(self.outstanding.items(), key=lambda kv: kv[1][0]):
+                # nak crc / big name no frame, and need not be about one of ours at all (a copy, or
+                # noise that looked like a SOF). With one frame unanswered it is that one's;
+                # with more, a guess would add a resend to the line's backlog each time it is
+                # wrong (a slow link then drowns in copies), while the frame that was mangled
+                # shows itself lost anyway by the ack of the next one, or by its timeout.
+                if len(self.outstanding) == 1:
+                    seq = next(iter(self.outstanding))
                     if seq not in self.resend:
                         self._queue_resend(seq)
-                        break
             elif r.seq in self.outstanding:
                 self._queue_resend(r.seq)
             return True

@@ -327,15 +327,23 @@ class Window(unittest.TestCase):
         self.assertFalse(t.on_response(mu.Response("ok", 7, text="faces 1 verts 3"), 0))
         self.assertFalse(t.done)
 
-    def test_unnamed_nak_resends_oldest(self):
+    def test_unnamed_nak(self):
+        # With several frames unanswered a nak crc names none of them: nothing is resent until the
+        # next ack shows which one was lost. With one unanswered, it is that one's.
         t = mu.Transfer(bytes(64 * 4), 7, 64, 4, 100, 2)
         t.sent(t.poll(0)[0], 0)
+        t.on_response(mu.Response("nak", reason="crc"), 0)
+        self.assertEqual(t.poll(0), [0])  # BEGIN, alone
+        t.sent(0, 0)
         t.on_response(mu.Response("ack", 7, 0), 0)
         for s in t.poll(0):
             t.sent(s, 0)
         t.on_response(mu.Response("ack", 7, 1), 0)
         t.on_response(mu.Response("nak", reason="crc"), 0)
+        self.assertEqual(t.poll(0), [])
+        t.on_response(mu.Response("ack", 7, 3), 0)
         self.assertEqual(t.poll(0), [2])
+        self.assertEqual(t.counts["naks"], 2)
 
     def test_retries_exhausted(self):
         clock = Clock()
