@@ -129,11 +129,10 @@ class Transfer:
     sent(seq, now) records that one went on the wire (in wire order: the loss detection relies on
     it); on_response() takes every parsed line. A frame is resent on a nak naming it, on an ack of
     a frame sent after it, on a nak naming no frame when it is the only one unanswered, or when it
-    has waited
-    `timeout` seconds more than its bytes take at the receiver's rate, counted from the later of
-    its sending and the last answer of this session (a slow receiver that keeps answering is not
-    a lost frame). The rate starts as the line's (rate, bytes a second) and follows what the acks
-    show (first copies only: an ack of a resent frame may answer either copy): a co-simulated
+    has waited `timeout` seconds more than its bytes take at the receiver's rate, counted from the
+    later of its sending and the last answer of this session (a slow receiver that keeps answering
+    is not a lost frame). The rate starts as the line's (rate, bytes a second) and follows what the
+    acks show (timed from a frame's first copy: an ack of a resent frame may answer either): a co-simulated
     firmware takes a few dozen bytes a frame, and a timeout shorter than a frame's service time
     would resend every frame. More than `retries` resends of one frame fail the transfer."""
 
@@ -145,7 +144,7 @@ class Transfer:
         self.last_seq = max(self.frames)
         self.phase = BEGIN
         self.unsent = [0]           # seqs of this phase not yet sent, in order
-        self.outstanding = {}       # seq -> [wire number, time sent, resends]
+        self.outstanding = {}       # seq -> [wire number, time last sent, resends, time first sent]
         self.resend = []            # seqs to send again, in order
         self.acked = set()
         self.acked_bytes = 0
@@ -162,7 +161,7 @@ class Transfer:
         window has room. Raises TransferFailed on a timeout past the retries."""
         if self.done:
             return []
-        for seq, (_, sent_at, _) in sorted(self.outstanding.items(), key=lambda kv: kv[1][0]):
+        for seq, (_, sent_at, _, _) in sorted(self.outstanding.items(), key=lambda kv: kv[1][0]):
             since = max(sent_at, self.last_answer or sent_at)
             if now - since >= self.timeout + len(self.frame(seq)) / self.rate and seq not in self.resend:
                 self._queue_resend(seq)
@@ -178,7 +177,7 @@ class Transfer:
         self.wire_no += 1
         entry = self.outstanding.get(seq)
         if entry is None:
-            self.outstanding[seq] = [self.wire_no, now, 0]
+            self.outstanding[seq] = [self.wire_no, now, 0, now]
         else:
             entry[0], entry[1] = self.wire_no, now
             entry[2] += 1
@@ -247,8 +246,10 @@ class Transfer:
             self.counts["duplicate_acks"] += 1  # a resent frame's second ack, or a stray
             return True
         self.acked.add(seq)
-        served = now - max(entry[1], previous if previous is not None else entry[1])
-        if entry[2] == 0 and served > 0:
+        # The service time from the first copy's sending: for a resent frame the ack may answer
+        # either copy, and the longer time errs on the safe side (a longer timeout).
+        served = now - max(entry[3], previous if previous is not None else entry[3])
+        if served > 0:
             sample = len(self.frame(seq)) / served
             self.rate = 0.5 * self.rate + 0.5 * sample if self.rate_samples else sample
             self.rate_samples += 1
@@ -257,7 +258,7 @@ class Transfer:
         self.acked_bytes += self.frames[seq][1]
         # The receiver answers in wire order: whatever went out before this frame and is still
         # unanswered was lost (a dropped or mangled frame that produced no nak).
-        for other, (wire, _, _) in list(self.outstanding.items()):
+        for other, (wire, _, _, _) in list(self.outstanding.items()):
             if wire < entry[0] and other not in self.resend:
                 self._queue_resend(other)
         if not self.outstanding and not self.unsent and not self.resend:
