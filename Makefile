@@ -4,7 +4,8 @@
 BUILD       ?= build
 OUT         ?= out
 FRAMES      ?= 24
-SCENE       ?= tetra
+# MODEL=path (a model file, firmware/firmware.mk) alone shows that model: the model scene.
+SCENE       ?= $(if $(filter command line environment,$(origin MODEL)),model,tetra)
 HOST_CC     ?= gcc
 HOST_CFLAGS ?= -std=c11 -O2 -g -Wall -Wextra -Werror
 PYTHON      ?= python3
@@ -26,6 +27,8 @@ COSIM_C_LIB := $(BUILD)/host/libcosim.a
 
 # Golden model (GPU_MODEL_LIB, model_unit), firmware (FW_ELF, fw_unit) rules.
 include gpu_model/model.mk
+# The model converter (MESHCONV, meshconv, meshconv-sweep): before the firmware, which converts MODEL=.
+include tools/meshconv/meshconv.mk
 include firmware/firmware.mk
 # libFuzzer targets (FUZZ_BINS, fuzz-build) and `make fuzz`.
 include tests/fuzz/fuzz.mk
@@ -58,12 +61,14 @@ run: setup
 	@$(MAKE) --no-print-directory run-headless
 
 # PLATFORM=soc: the whole SoC in socsim instead of QEMU + the GPU (cosim/soc/socsim.mk).
+# UART_PTY=LINK: the firmware's UART also on a pseudo-terminal, for tools/mesh_upload.py.
 ifeq ($(PLATFORM),soc)
 run-headless: run-soc
 else
 run-headless: $(FW_ELF) $(GPUSIM)
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
-	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log
+	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log \
+	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
 endif
 
 # ---- test: every suite (or those matching SUITE, e.g. SUITE='rtl-* fw-unit'), with a summary line ----
@@ -77,7 +82,7 @@ TEST_ENV = GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUI
            $(if $(TEST_JOBS),TEST_JOBS=$(TEST_JOBS))
 # The simulators first: the longest builds, started early so that the short ones fill the tail.
 TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
-             fw-test-deps $(PNG_DIFF)
+             fw-test-deps $(PNG_DIFF) $(MESHCONV) $(UPLOAD_PEER)
 test: setup
 	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) VERILATOR_JOBS=1 TEST_BUILD_ONLY=1 test-quick
 	@$(MAKE) --no-print-directory test-quick

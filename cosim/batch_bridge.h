@@ -56,6 +56,8 @@ public:
     uint32_t frames_model_checked() const { return frames_checked_; }
     uint64_t cycles() const { return sim_.cycles(); }
     const char *error_kind() const { return error_kind_; }
+    // The harness's UART work during a batch (GpuSim::set_background).
+    void set_background(std::function<void()> fn, uint64_t every) { sim_.set_background(std::move(fn), every); }
 
 private:
     void dump_list();

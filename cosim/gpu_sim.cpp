@@ -50,6 +50,10 @@ void GpuSim::tick()
         vga_monitor_sample(&monitor_, top_->vga_hsync_n, top_->vga_vsync_n, top_->vga_r,
                            top_->vga_g, top_->vga_b);
     }
+    if (background_every_ != 0 && --background_left_ == 0) {
+        background_left_ = background_every_;
+        background_();
+    }
 }
 
 void GpuSim::write(uint32_t offset, uint32_t value)

@@ -5,6 +5,7 @@
 #define GPU_SIM_H
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -40,11 +41,24 @@ public:
     const char *vga_error() const { return monitor_.error; }
     uint64_t cycles() const { return cycles_; }
 
+    // Work of the harness's own while the GPU runs (the co-simulation's UART: the firmware's
+    // output and a client's input must flow during a batch's seconds of simulation, not only
+    // between batches): fn() every `every` clocks of tick(). It must not touch the GPU.
+    void set_background(std::function<void()> fn, uint64_t every)
+    {
+        background_ = std::move(fn);
+        background_every_ = every;
+        background_left_ = every;
+    }
+
 private:
     std::unique_ptr<VerilatedContext> context_;
     std::unique_ptr<Vgpu_top> top_;
     vga_monitor monitor_;
     uint64_t cycles_ = 0;
+    std::function<void()> background_;
+    uint64_t background_every_ = 0;
+    uint64_t background_left_ = 0;
 };
 
 #endif

@@ -145,24 +145,26 @@ FW_PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 FW_PNG_LIBS   := $(or $(shell pkg-config --libs libpng 2>/dev/null),-lpng)
 
 # ---- the model scene's built-in model -----------------------------------------------------------
-# MODEL (any file assimp reads) converted by tools/meshconv to the build's capacity
+# MODEL (any file assimp reads, or a .gmsh) converted by tools/meshconv to the build's capacity
 # (FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES: every object sees them, scenes/model/model.h), simplified
 # to it where larger, then assembled into an object of its own (.incbin) that an ELF links where
 # its scene set has the model scene. The file's name carries the capacity, so builds of two
 # capacities coexist.
 MODEL              ?= /usr/share/assimp/models/OBJ/spider.obj
-FW_MODEL_MAX_VERTS ?= 2048
-FW_MODEL_MAX_FACES ?= 2048
-MESHCONV           ?= $(BUILD)/tools/meshconv
+FW_MODEL_MAX_VERTS ?= 1024
+FW_MODEL_MAX_FACES ?= 1024
 FW_MODEL_DEFS      := -DFW_MODEL_MAX_VERTS=$(FW_MODEL_MAX_VERTS)u -DFW_MODEL_MAX_FACES=$(FW_MODEL_MAX_FACES)u
 FW_MODEL_TAG       := $(basename $(notdir $(MODEL)))-v$(FW_MODEL_MAX_VERTS)f$(FW_MODEL_MAX_FACES)
 FW_MODEL_GMSH      := $(BUILD)/model/$(FW_MODEL_TAG).gmsh
-FW_MODEL_OBJ       := $(FW_DIR)/model/$(FW_MODEL_TAG).o
-FW_MODEL_HOST_OBJ  := $(BUILD)/fw-host/model/$(FW_MODEL_TAG).o
+FW_MODEL_OBJ       := $(FW_DIR)/model-blob/$(FW_MODEL_TAG).o
+FW_MODEL_HOST_OBJ  := $(BUILD)/fw-host/model-blob/$(FW_MODEL_TAG).o
 
+# A .gmsh MODEL is taken as it is once the validator accepts it at this capacity.
 $(FW_MODEL_GMSH): $(MODEL) $(MESHCONV)
 	@mkdir -p $(@D)
-	$(MESHCONV) $(MODEL) $@ --max-verts $(FW_MODEL_MAX_VERTS) --max-faces $(FW_MODEL_MAX_FACES)
+	$(if $(filter .gmsh,$(suffix $(MODEL))),\
+	  $(MESHCONV) --check $(MODEL) --max-verts $(FW_MODEL_MAX_VERTS) --max-faces $(FW_MODEL_MAX_FACES) && cp $(MODEL) $@,\
+	  $(MESHCONV) $(MODEL) $@ --max-verts $(FW_MODEL_MAX_VERTS) --max-faces $(FW_MODEL_MAX_FACES))
 
 # The blob's assembly: the file between two symbols (scenes/model/model.c reads them).
 $(BUILD)/model/$(FW_MODEL_TAG).S: $(FW_MODEL_GMSH)
@@ -217,7 +219,7 @@ FW_SP_VARIANTS += fixed-chip fixed-emul
 # measured on a cubes frame, the sort fell from 25,059 to 17,869 instructions without the call.
 FW_CFLAGS_BASE := $(FW_ARCH_FLAGS) -O2 -g $(FW_WARN) -ffp-contract=off -ffunction-sections \
                   -fdata-sections -fno-tree-loop-distribute-patterns \
-                  -Ibsp/$(FW_PLATFORM) -Ibsp -Icontract -Ifirmware
+                  -Ibsp/$(FW_PLATFORM) -Ibsp -Icontract -Ifirmware $(FW_MODEL_DEFS)
 FW_HOST_CFLAGS_BASE = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Ibsp/host -Ibsp -Icontract \
                       -Ifirmware -Igpu_model -Icosim $(FW_MODEL_DEFS)
 FW_LDFLAGS_BASE := $(FW_ARCH_FLAGS) $(FW_BSP_LDFLAGS) -T$(FW_LDSCRIPT) -Wl,--gc-sections
@@ -340,6 +342,15 @@ $(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
   $(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-$(call fw_name,$(s),$(b)),$(s),$(b),$(FW_TEST_FRAMES)))\
   $(eval FW_TEST_DEPS += $(FW_TEST_DIR)/$(call fw_name,$(s),$(b)).elf $(FW_TEST_DIR)/host-$(call fw_name,$(s),$(b)))))
 $(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/tetra-watchdog.elf,tetra,fixed,5,268435456))
+# The upload test (tests/upload/cosim_upload.sh): tetra with every scene, long enough for two
+# uploads, and the host builds that render its references (before the swap: tetra; after: the
+# model scene from the uploaded file, fw-host --model).
+FW_UPLOAD_TEST_FRAMES := 16
+$(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/upload-tetra.elf,tetra,fixed,$(FW_UPLOAD_TEST_FRAMES),))
+$(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-upload-tetra,tetra,fixed,$(FW_UPLOAD_TEST_FRAMES)))
+$(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-upload-model,model,fixed,$(FW_UPLOAD_TEST_FRAMES)))
+FW_TEST_DEPS += $(FW_TEST_DIR)/upload-tetra.elf $(FW_TEST_DIR)/host-upload-tetra \
+                $(FW_TEST_DIR)/host-upload-model
 FW_TEST_DEPS += $(FW_TEST_DIR)/tetra-watchdog.elf $(FW_UNIT) $(FW_UNIT_FLOAT)
 # voxel without line emulation, as a chip whose GPU draws lines builds it (tests/scenes/host_features.sh:
 # on a GPU without lines its F key refuses; with lines its frames equal the default build's).
@@ -401,7 +412,7 @@ FW_SIZE_ENV = SIZE=$(patsubst %gcc,%size,$(FW_CC)) NM=$(patsubst %gcc,%nm,$(FW_C
 
 FW_UNIT_TEST_SRCS := $(wildcard tests/firmware/*.c)
 FW_UNIT_CFLAGS     = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Itests/firmware/fake_bsp -Ibsp \
-                     -Itests/firmware -Icontract -Ifirmware -DSORT_COUNT_WORK $(FW_MODEL_DEFS)
+                     -Itests/firmware -Itests -Icontract -Ifirmware -DSORT_COUNT_WORK $(FW_MODEL_DEFS)
 
 # $(1) = binary, $(2) = backend
 define FW_UNIT_RULES
@@ -483,3 +494,11 @@ profile-fw: $(FW_BENCH_DIR)/$(call fw_name,$(SCENE),$(FW_BACKEND)).elf $(GPUSIM)
 	@$(or $(PYTHON),python3) firmware/tools/profile_fw.py $(GPUSIM) $<
 
 fw-force:
+
+# ---- the upload receiver on a pty, for tools/mesh_upload.py's tests (tests/upload/) -------------
+UPLOAD_PEER := $(BUILD)/tests/upload_peer
+$(UPLOAD_PEER): tests/upload/upload_peer.c $(addprefix firmware/model/,crc32.c meshfile.c upload.c) \
+                firmware/render/mesh.c firmware/math/vec.c firmware/math/fixed.c \
+                $(wildcard firmware/model/*.h)
+	@mkdir -p $(@D)
+	$(HOST_CC) $(HOST_CFLAGS) -Ifirmware -Icontract $(FW_MODEL_DEFS) $(filter %.c,$^) -o $@ -lm

@@ -14,7 +14,8 @@
 #            golden model), fw (firmware units and boot), raster (the GPU without firmware), fuzz,
 #            cosim (the harness), scene (whole system, firmware + GPU), soc (the whole SoC in RTL:
 #            firmware on VexRiscv + GPU, socsim), boards (a board's build: its video PHY, pins,
-#            tools), bench (benchmark machinery).
+#            tools), upload (models over the UART: the receiver, the host tool, into a running
+#            system), tools (host tools: the model converter), bench (benchmark machinery).
 #   COST     the suite's CPU seconds on the reference machine (2 cores; what its NAME.cpu file
 #            below says, rounded); without it, 30. The costliest start first, so that the lanes end
 #            together; the duration recorded by the last run ($BUILD/test-logs/durations) takes its
@@ -98,11 +99,16 @@ suite fuzz-prim-list           2 bash tests/fuzz/run_fuzz.sh short prim_list
 suite fuzz-input               4 bash tests/fuzz/run_fuzz.sh short input
 suite fuzz-gpu-model           6 bash tests/fuzz/run_fuzz.sh short gpu_model
 suite fuzz-gpu-driver          6 bash tests/fuzz/run_fuzz.sh short gpu_driver
+suite fuzz-upload              5 bash tests/fuzz/run_fuzz.sh short upload
+suite fuzz-meshfile            2 bash tests/fuzz/run_fuzz.sh short meshfile
+suite fuzz-meshconv            7 bash tests/fuzz/run_fuzz.sh short meshconv
+suite tools-meshconv           3 bash tests/meshconv/run.sh
 suite cosim-end-to-end        20 bash tests/cosim/end_to_end.sh
 suite cosim-kill-qemu          3 bash tests/cosim/kill.sh qemu
 suite cosim-kill-harness       1 bash tests/cosim/kill.sh harness
 suite cosim-stop-signal        4 bash tests/cosim/kill.sh sigterm
 suite cosim-gpu-timeout        1 bash tests/cosim/gpu_timeout.sh
+suite upload-cosim            60 bash tests/upload/cosim_upload.sh
 suite scene-host-vs-cosim     67 bash tests/scenes/host_vs_cosim.sh
 suite scene-watchdog          15 bash tests/scenes/watchdog.sh
 suite scene-keys-burst         9 bash tests/scenes/keys_burst.sh

@@ -2,7 +2,7 @@
  * host_main.c — command line of the host build: the firmware's frame loop (app_run) on Linux,
  * rendering through the golden model.
  *
- *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--span-w N]
+ *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--span-w N] [--model FILE]
  *
  *   --frames DIR      write each swapped frame as DIR/NNNN.png (as gpusim cosim does)
  *   --keys-at N:TEXT  type TEXT just before doorbell N (1 = first) is serviced, byte for byte
@@ -10,6 +10,9 @@
  *   --no-lines        model a GPU built without line primitives (CAPS_LINES = 0)
  *   --zbuf            model a GPU built with the depth buffer (CAPS_ZBUF = 1)
  *   --span-w N        SPAN_W the model reports (1, 4, 8, 16; default 8)
+ *   --model FILE      the model scene draws this mesh file (docs/mesh-format.md) instead of the
+ *                     built-in one, as if it had been uploaded before the first frame: the
+ *                     reference renders of the upload test, and a quick look at a converted model
  *
  * The scene and the number of frames are built in, like the target's (make SCENE=... FRAMES=...).
  */
@@ -20,11 +23,29 @@
 
 #include "app/app.h"
 #include "bsp_host.h"
+#include "scenes/model/model.h"
+
+/* A mesh file for --model: read whole (the validator, at the scene's start, says what is wrong). */
+static int host_load_model(const char *path)
+{
+    static uint8_t file[4u << 20];
+    FILE *f = fopen(path, "rb");
+    size_t n;
+
+    if (f == NULL) {
+        fprintf(stderr, "fw-host: cannot open %s\n", path);
+        return -1;
+    }
+    n = fread(file, 1, sizeof file, f);
+    fclose(f);
+    model_scene_source(file, (uint32_t)n);
+    return 0;
+}
 
 static int host_usage(void)
 {
     fprintf(stderr, "usage: fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] "
-                    "[--span-w N]\n");
+                    "[--span-w N] [--model FILE]\n");
     return 2;
 }
 
@@ -65,6 +86,10 @@ int main(int argc, char **argv)
             cfg.lines = false;
         } else if (strcmp(a, "--zbuf") == 0) {
             cfg.zbuf = true;
+        } else if (strcmp(a, "--model") == 0 && has_value) {
+            if (host_load_model(argv[++i]) != 0) {
+                return 2;
+            }
         } else if (strcmp(a, "--span-w") == 0 && has_value) {
             cfg.span_w = (unsigned)strtoul(argv[++i], NULL, 10);
         } else {

@@ -75,7 +75,8 @@ soc-fw:
 
 run-soc: $(SOCSIM) soc-fw
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
-	$(SOCSIM) --fw $(SOC_FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log
+	$(SOCSIM) --fw $(SOC_FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log \
+	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
 
 # What tests/soc/*.sh need: socsim and the soc test programs (tests/soc/tests.mk); the suites
 # comparing with co-simulation also use make test's QEMU builds. make test builds them too.

@@ -19,8 +19,8 @@
  *      dropped and the loop goes on with the next frame; after FW_WATCHDOG_GIVE_UP consecutive
  *      lost frames the firmware stops with FW_EXIT_GPU_TIMEOUT.
  *
- * Output, one line per frame, then the upload's responses of the frame ("@up ...", one per
- * protocol frame received):
+ * Output: the upload's responses to what the frame read ("@up ...", one per protocol frame
+ * received, printed before the frame is drawn), then one line per frame:
  *   frame N: tris submitted S drawn D | fw instr I | gpu cycles C | errors 0xE | prims P batches B
  *     | culled object O frustum F back K clipped L
  *     | cpu cycles Y
@@ -69,6 +69,7 @@ struct app {
     uint32_t lost_in_a_row;  /* consecutive frames dropped by the watchdog */
 #if FW_WITH_UPLOAD
     struct upload_rx upload;
+    bool model_from_upload;  /* the model scene's source is the staging buffer */
 #endif
 };
 
@@ -98,6 +99,13 @@ static struct app app_state;
 static uint8_t app_upload_file[APP_UPLOAD_BYTES];
 static uint8_t app_upload_map[UPLOAD_MAP_BYTES(APP_UPLOAD_BYTES)];
 #define APP_UART_BYTES_PER_FRAME FW_UART_BYTES_PER_FRAME
+/* UART bytes drained while the GPU works (app_drain_uart), read at the next frame's start: a
+ * UART's own FIFO may hold only 16 (QEMU's 16550), far less than a frame's worth of upload. */
+static struct {
+    uint8_t byte[FW_UART_BYTES_PER_FRAME];
+    uint32_t head;   /* next to read */
+    uint32_t count;
+} app_uart_ring;
 #else
 #define APP_UART_BYTES_PER_FRAME INPUT_MAX_BYTES_PER_FRAME
 #endif
@@ -195,13 +203,47 @@ static void app_report_lines(const struct app *app)
     }
 }
 
+#if FW_WITH_UPLOAD
+/* gpu_wait_idle's work: move what the UART holds into the ring, until the ring is full (the rest
+ * waits in the UART). */
+static void app_drain_uart(void *unused)
+{
+    (void)unused;
+    while (app_uart_ring.count < FW_UART_BYTES_PER_FRAME) {
+        const int c = bsp_uart_getc_nonblock();
+
+        if (c < 0) {
+            break;
+        }
+        app_uart_ring.byte[(app_uart_ring.head + app_uart_ring.count) % FW_UART_BYTES_PER_FRAME] =
+            (uint8_t)c;
+        app_uart_ring.count++;
+    }
+}
+
+/* The next UART byte: the ring's first, then the UART's; -1 when neither has one. */
+static int app_uart_getc(void)
+{
+    if (app_uart_ring.count != 0u) {
+        const uint8_t c = app_uart_ring.byte[app_uart_ring.head];
+
+        app_uart_ring.head = (app_uart_ring.head + 1u) % FW_UART_BYTES_PER_FRAME;
+        app_uart_ring.count--;
+        return c;
+    }
+    return bsp_uart_getc_nonblock();
+}
+#else
+#define app_uart_getc bsp_uart_getc_nonblock
+#endif
+
 /* Read this frame's UART bytes, never waiting: the upload's frames to its receiver, the rest
  * decoded into keys. */
 static void app_read_uart(struct app *app, struct input_counts *keys)
 {
     input_counts_clear(keys);
     for (uint32_t i = 0; i < APP_UART_BYTES_PER_FRAME; i++) {
-        const int c = bsp_uart_getc_nonblock();
+        const int c = app_uart_getc();
 
         if (c < 0) {
             break;
@@ -215,16 +257,17 @@ static void app_read_uart(struct app *app, struct input_counts *keys)
     }
 #if FW_WITH_UPLOAD
     upload_frame_end(&app->upload);
-    if (!app->upload.staging_valid) {
-        /* The staging buffer is being (or was never) filled: the model scene's key restarts it
-         * from the built-in model instead. */
+    if (app->model_from_upload && !app->upload.staging_valid) {
+        /* A new transfer is filling the staging buffer: the model scene's key restarts the scene
+         * from the built-in model instead (the running scene keeps its own copy). */
         model_scene_source(0, 0);
+        app->model_from_upload = false;
     }
 #endif
 }
 
 #if FW_WITH_UPLOAD
-/* This frame's upload responses, one line each (after the frame line: printing is not counted). */
+/* This frame's upload responses, one line each. */
 static void app_print_upload(struct app *app)
 {
     char line[112];
@@ -275,6 +318,7 @@ static void app_swap_upload(struct app *app, struct app_notes *notes)
         return;
     }
     model_scene_source(app->upload.buf, app->upload.total);
+    app->model_from_upload = true;
     app_start_scene(app, model);
     upload_taken(&app->upload);
     notes->scene_changed = true;
@@ -380,7 +424,11 @@ static bool app_submit(struct app *app, unsigned frame_no, bool first_pass, bool
         c_wait = bsp_cycles();
         t_wait = bsp_instret();
         tot->t_submit += t_wait - t1;
+#if FW_WITH_UPLOAD
+        rc = gpu_wait_idle(&app->gpu, tag, FW_GPU_MAX_POLLS, app_drain_uart, 0);
+#else
         rc = gpu_wait(&app->gpu, tag, FW_GPU_MAX_POLLS);
+#endif
         t0 = bsp_instret();
         tot->wait_cycles += bsp_cycles() - c_wait;
         tot->wait_instr += t0 - t_wait;
@@ -558,6 +606,18 @@ int app_run(void)
         app_swap_upload(app, &notes);
 #endif
         app_read_uart(app, &keys);
+#if FW_WITH_UPLOAD
+        {
+            /* The upload's answers go out at once, before the frame is drawn: the sender's next
+             * frames then arrive during this frame's GPU wait. Printing is not counted. */
+            const uint64_t p0 = bsp_instret();
+            const uint64_t q0 = bsp_cycles();
+
+            app_print_upload(app);
+            tot.wait_instr += bsp_instret() - p0;
+            tot.wait_cycles += bsp_cycles() - q0;
+        }
+#endif
         if (!app_global_keys(app, &keys, &notes)) {
             printf("quit at frame %u\n", frame);
             break;
@@ -595,9 +655,7 @@ int app_run(void)
         if (notes.help) {
             app_print_keys(&app->scene);
         }
-#if FW_WITH_UPLOAD
-        app_print_upload(app);
-#endif
+
         if (!completed) {
             app->lost_in_a_row++;
             if (app->lost_in_a_row >= FW_WATCHDOG_GIVE_UP) {

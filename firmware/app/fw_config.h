@@ -63,7 +63,7 @@
 /* 1: models can be uploaded over the UART while the firmware runs (model/upload.c,
  * docs/upload-protocol.md); they are drawn by the model scene, so the default is 1 exactly where
  * that scene is built in (firmware.mk passes FW_MODEL_SCENE_BUILT). The staging buffer is one mesh
- * file of the model scene's capacity (41 KiB at the defaults). */
+ * file of the model scene's capacity (20 KiB at the defaults). */
 #ifndef FW_MODEL_SCENE_BUILT
 #define FW_MODEL_SCENE_BUILT 0
 #endif

@@ -146,6 +146,22 @@ int gpu_wait(struct gpu_dev *dev, uint32_t tag, uint32_t max_polls)
     return GPU_E_TIMEOUT;
 }
 
+int gpu_wait_idle(struct gpu_dev *dev, uint32_t tag, uint32_t max_polls, void (*idle)(void *ctx),
+                  void *ctx)
+{
+    for (uint32_t polls = 0; polls < max_polls;) {
+        const uint32_t left = max_polls - polls;
+        const uint32_t n = (left < GPU_WAIT_IDLE_POLLS) ? left : GPU_WAIT_IDLE_POLLS;
+
+        if (gpu_wait(dev, tag, n) == GPU_OK) {
+            return GPU_OK;
+        }
+        polls += n;
+        idle(ctx);
+    }
+    return GPU_E_TIMEOUT;
+}
+
 void gpu_read_stats(const struct gpu_dev *dev, struct gpu_stats *stats)
 {
     (void)dev;

@@ -127,6 +127,14 @@ uint32_t *gpu_buffer_words(uint32_t window_offset);
  * value read is left in dev->last_done_seq). */
 int gpu_wait(struct gpu_dev *dev, uint32_t tag, uint32_t max_polls);
 
+/* gpu_wait with work of the caller's between polls: idle(ctx) after every GPU_WAIT_IDLE_POLLS
+ * polls while the GPU is still busy (the frame loop drains the UART there, so bytes that arrive
+ * during a frame wait in memory rather than in a 16-byte FIFO). max_polls bounds the polls
+ * exactly as gpu_wait's does; the time each takes grows by idle's share. */
+#define GPU_WAIT_IDLE_POLLS 32u
+int gpu_wait_idle(struct gpu_dev *dev, uint32_t tag, uint32_t max_polls, void (*idle)(void *ctx),
+                  void *ctx);
+
 /* Read ERRORS and the PERF_* counters of the last finished batch. */
 void gpu_read_stats(const struct gpu_dev *dev, struct gpu_stats *stats);
 

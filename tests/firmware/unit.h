@@ -120,7 +120,14 @@ void unit_srand(uint32_t seed);
     X(test_gpu_wait_timeout)          \
     X(test_gpu_tag_wrap)              \
     X(test_gpu_read_stats)            \
-    X(test_gpu_reset)
+    X(test_gpu_reset)                 \
+    X(test_crc32_vectors)             \
+    X(test_meshfile_valid_and_loaded) \
+    X(test_meshfile_rules)            \
+    X(test_upload_transfer)           \
+    X(test_upload_line_faults)        \
+    X(test_upload_refusals)           \
+    X(test_upload_response_queue)
 
 #define UNIT_DECLARE(name) void name(void);
 UNIT_TESTS(UNIT_DECLARE)

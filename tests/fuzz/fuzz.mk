@@ -17,7 +17,7 @@
 FUZZ_CC      ?= clang-14
 FUZZ_CXX     ?= clang++-14
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS ?= prim_list input gpu_model gpu_driver
+FUZZ_TARGETS ?= prim_list input gpu_model gpu_driver upload meshfile meshconv
 FUZZ_DIR     := $(BUILD)/fuzz
 FUZZ_SAN     := -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
 FUZZ_CFLAGS  := -std=c11 -g -O1 -Wall -Wextra $(FUZZ_SAN)
@@ -52,6 +52,32 @@ $(FUZZ_DIR)/fuzz_gpu_driver: tests/fuzz/fuzz_gpu_driver.c tests/fuzz/fuzz_common
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -Itests/fuzz/driver_bsp -Ibsp -Igpu_model -Icontract \
 	  -Ifirmware $(filter %.c %.o,$^) -o $@
+
+# The upload's receiver and the mesh file's validator, with the pieces of the pipeline they use.
+FUZZ_MODEL_SRCS := $(addprefix firmware/model/,crc32.c meshfile.c upload.c) firmware/render/mesh.c \
+                   firmware/math/vec.c firmware/math/fixed.c
+$(FUZZ_DIR)/fuzz_upload: tests/fuzz/fuzz_upload.c tests/fuzz/fuzz_common.h tests/upload/test_files.h \
+                         $(FUZZ_MODEL_SRCS) $(FUZZ_FW_HDRS)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Icontract -Ifirmware -Itests $(filter %.c,$^) -lm -o $@
+
+$(FUZZ_DIR)/fuzz_meshfile: tests/fuzz/fuzz_meshfile.c tests/fuzz/fuzz_common.h $(FUZZ_MODEL_SRCS) $(FUZZ_FW_HDRS)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Icontract -Ifirmware $(filter %.c,$^) -lm -o $@
+
+# The converter's path (tools/meshconv) on assimp and meshoptimizer, which are not instrumented.
+# Its seeds are generated into the build directory (meshconv_seeds.py: our own small models).
+FUZZ_MESHCONV_SRCS := tests/fuzz/fuzz_meshconv.c tools/meshconv/meshconv_core.c \
+                      tools/meshconv/meshconv_scene.c firmware/render/palette.c $(FUZZ_MODEL_SRCS)
+$(FUZZ_DIR)/fuzz_meshconv: $(FUZZ_MESHCONV_SRCS) tests/fuzz/fuzz_common.h $(wildcard tools/meshconv/*.h) \
+                           $(FUZZ_FW_HDRS) | $(FUZZ_DIR)/seeds-meshconv
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Itools/meshconv -Ifirmware -Icontract $$(pkg-config --cflags assimp) \
+	  $(filter %.c,$^) -o $@ $$(pkg-config --libs assimp) -lmeshoptimizer -lstdc++ -lm
+
+$(FUZZ_DIR)/seeds-meshconv: tests/fuzz/meshconv_seeds.py
+	@rm -rf $@
+	$(PYTHON) $< $@
 
 .PHONY: fuzz fuzz-build
 fuzz-build: $(FUZZ_BINS)

@@ -19,7 +19,8 @@ TIMEOUT=25
 
 # Generated inputs per target in the short run: about 5 s each on one core of the reference
 # machine (exec/s differ by target: the firmware's scenes and the model's rasterizer are slower).
-declare -A SHORT_RUNS=([prim_list]=50000 [input]=3000 [gpu_model]=2000 [gpu_driver]=8000)
+declare -A SHORT_RUNS=([prim_list]=50000 [input]=3000 [gpu_model]=2000 [gpu_driver]=8000 [upload]=15000
+                       [meshfile]=60000 [meshconv]=300)
 
 mode="${1:?usage: run_fuzz.sh short|long TARGET...}"
 shift
@@ -35,6 +36,8 @@ summary=()
 for t in "$@"; do
     bin="$FUZZ_DIR/fuzz_$t"
     seeds="tests/fuzz/corpus/$t"
+    # A target whose seeds are generated (fuzz.mk: from our own scripts) has them in the build.
+    [ -d "$seeds" ] || seeds="$FUZZ_DIR/seeds-$t"
     log="$FUZZ_DIR/logs/$t-$mode.log"
     [ -x "$bin" ] || { echo "run_fuzz.sh: $bin is not built (make fuzz-build)"; exit 2; }
     [ -d "$seeds" ] || { echo "run_fuzz.sh: no seed corpus $seeds"; exit 2; }

@@ -70,11 +70,12 @@ static void model_init(struct scene *s)
         scene_add_object(s, m, &start, vec3_make(0, 0, 0), 0);
     }
     /* The converter centres the model and scales its largest half-extent to 4 units, so the
-     * radius is at most 4 sqrt 3 < 7: the camera starts 2.75 radii away (the knot's framing). */
+     * radius is at most 4 sqrt 3 < 7: the camera starts 2.2 radii away, where the bounding
+     * sphere fills most of the screen's height. */
     r = (m->radius > REAL_C(0.5)) ? m->radius : REAL_C(0.5);
     cfg.dist_min = real_mul(r, REAL_C(1.1));
     cfg.dist_max = real_mul(r, REAL_C(8.0));
-    scene_set_camera(s, CAM_OBJECT, vec3_make(0, 0, 0), real_mul(r, REAL_C(2.75)), 0, 0, &cfg);
+    scene_set_camera(s, CAM_OBJECT, vec3_make(0, 0, 0), real_mul(r, REAL_C(2.2)), 0, 0, &cfg);
 }
 
 int model_scene_status(const struct scene *s, struct meshfile_info *info)

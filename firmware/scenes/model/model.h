@@ -4,14 +4,16 @@
  * uploaded over the UART (docs/upload-protocol.md). Pure code.
  *
  * Its capacities are build switches, FW_MODEL_MAX_VERTS and FW_MODEL_MAX_FACES (default
- * MESHFILE_DEFAULT_MAX_*: 2048 each, which the SoC's 192 KiB hold); scene_list.h's model line
- * takes its columns from here, so they follow the switches:
+ * MESHFILE_DEFAULT_MAX_*: 1024 each, which the SoC's 192 KiB hold with the upload's staging
+ * buffer, make fw-size); scene_list.h's model line takes its columns from here, so they follow
+ * the switches:
  *   state   the mesh: 12 bytes a vertex, 10 a face and 12 its normal (the unit normal, read from
- *           the file); 70 KiB at the defaults
- *   verts   the mesh's vertices, and two new ones per face the near plane clips, for up to half
- *           the faces (a plane crosses far fewer of a closed mesh's faces), and the crosshair's 4
- *   prims   every face front-facing (a sheet seen face-on), one more per clipped face, the
- *           crosshair's 2 lines
+ *           the file); 35 KiB at the defaults
+ *   verts   the mesh's vertices, two new ones per face the near plane clips for up to a quarter
+ *           of the faces (a plane crosses a closed mesh along one curve: a strip of faces, far
+ *           fewer than that), and the crosshair's 4
+ *   prims   every face front-facing (a sheet seen face-on), one more per clipped face (a
+ *           quarter, as above), the crosshair's 2 lines
  *   wverts, wprims  four vertices and two triangles per edge, three edges per face (the
  *           emulated wireframe: each face's outline)
  * A frame that needs more drops the rest and says so (app.c); test_scene_capacities drives the
@@ -46,10 +48,10 @@ struct model_state {
 
 /* scene_list.h's columns for the model line. */
 #define MODEL_STATE_COLUMN ((sizeof(struct model_state) + 63u) / 64u * 64u)
-#define MODEL_FRAME_VERTS (FW_MODEL_MAX_VERTS + FW_MODEL_MAX_FACES + 4u)
-#define MODEL_FRAME_PRIMS (FW_MODEL_MAX_FACES + FW_MODEL_MAX_FACES / 2u + 2u)
-#define MODEL_WIRE_VERTS (12u * (FW_MODEL_MAX_FACES + FW_MODEL_MAX_FACES / 2u) + 4u)
-#define MODEL_WIRE_PRIMS (6u * (FW_MODEL_MAX_FACES + FW_MODEL_MAX_FACES / 2u) + 2u)
+#define MODEL_FRAME_VERTS (FW_MODEL_MAX_VERTS + FW_MODEL_MAX_FACES / 2u + 4u)
+#define MODEL_FRAME_PRIMS (FW_MODEL_MAX_FACES + FW_MODEL_MAX_FACES / 4u + 2u)
+#define MODEL_WIRE_VERTS (12u * (FW_MODEL_MAX_FACES + FW_MODEL_MAX_FACES / 4u) + 4u)
+#define MODEL_WIRE_PRIMS (6u * (FW_MODEL_MAX_FACES + FW_MODEL_MAX_FACES / 4u) + 2u)
 
 /* The file the scene's init loads: a checked upload (file, len), or NULL for the built-in model.
  * The file must stay as it is while the scene may be started from it (scene_start). */
