@@ -18,6 +18,7 @@
 // frames_model_checked, gpu_cycles, uart_pty_in, uart_pty_dropped) for tests and scripts to read
 // instead of the prose.
 #include <cerrno>
+#include <climits>
 #include <cstdarg>
 #include <csignal>
 #include <cstdio>
@@ -26,8 +27,6 @@
 #include <ctime>
 #include <string>
 #include <vector>
-
-#include <climits>
 
 #include <poll.h>
 #include <sys/stat.h>

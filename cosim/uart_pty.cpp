@@ -63,8 +63,7 @@ bool UartPty::open(const std::string &link, std::string *error)
     struct stat st;
     if (lstat(link.c_str(), &st) == 0) {
         if (!S_ISLNK(st.st_mode)) {
-            errno = EEXIST;
-            *error = failed((link + " exists and is not a symbolic link").c_str());
+            *error = link + " exists and is not a symbolic link";
             close();
             return false;
         }

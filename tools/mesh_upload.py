@@ -10,8 +10,9 @@ BEGIN first (alone: DATA before an accepted BEGIN would only be refused), then t
 at most --window of them unacknowledged, then COMMIT once every chunk is acknowledged (a COMMIT
 before that is refused for good). A frame is sent again on its `@up nak`, when a frame sent after
 it is acknowledged (the receiver answers in the order frames arrive, so it was lost), or after
---timeout seconds without an answer; a `@up nak crc` or `nak big`, which names no frame, resends the
-oldest unacknowledged one. After --retries resends of one frame the transfer is given up (ABORT).
+--timeout seconds without an answer beyond what its bytes take at the receiver's measured rate; a
+`@up nak crc` or `nak big`, which names no frame, resends the one unacknowledged frame when there is
+only one. After --retries resends of one frame the transfer is given up (ABORT).
 
 Exit status: 0 on `@up ok` for this session; 1 on `@up reject` (printed), `@up abandoned`, retries
 exhausted or the port closing; 2 on a usage error (options, a missing file, a file that is not a
@@ -108,8 +109,8 @@ def parse_response(line):
             return Response("reject", int(words[1]), reason=reason.strip(), text=text.strip())
         if kind == "ok" and len(words) >= 2:
             return Response("ok", int(words[1]), text=" ".join(words[2:]))
-        if kind == "abandoned" and len(words) == 2:
-            return Response("abandoned", int(words[1]))
+        if kind == "abandoned" and len(words) >= 2:
+            return Response("abandoned", int(words[1]), text=" ".join(words[2:]))
     except (IndexError, ValueError):
         return None
     return None
@@ -127,22 +128,28 @@ class Transfer:
     ends with `@up ok` (done) or `@up reject` (failed). poll(now) gives the frames to send next;
     sent(seq, now) records that one went on the wire (in wire order: the loss detection relies on
     it); on_response() takes every parsed line. A frame is resent on a nak naming it, on an ack of
-    a frame sent after it, on a nak naming no frame (the oldest one), or `timeout` seconds after
-    the later of its sending and the last answer of this session (a slow receiver that keeps
-    answering is not a lost frame). More than `retries` resends of one frame fail the transfer."""
+    a frame sent after it, on a nak naming no frame when it is the only one unanswered, or when it
+    has waited `timeout` seconds more than its bytes take at the receiver's rate, counted from the
+    later of its sending and the last answer of this session (a slow receiver that keeps answering
+    is not a lost frame). The rate starts as the line's (rate, bytes a second) and follows what the
+    acks show (timed from a frame's first copy: an ack of a resent frame may answer either): a co-simulated
+    firmware takes a few dozen bytes a frame, and a timeout shorter than a frame's service time
+    would resend every frame. More than `retries` resends of one frame fail the transfer."""
 
-    def __init__(self, data, session, chunk=256, window=4, timeout=10.0, retries=8):
+    def __init__(self, data, session, chunk=256, window=4, timeout=10.0, retries=8, rate=11520.0):
         self.session, self.window, self.timeout, self.retries = session, window, timeout, retries
+        self.rate = float(rate)
         self.frames = {seq: (ftype, nbytes, frame) for seq, ftype, nbytes, frame in build_frames(data, session, chunk)}
         self.total_bytes = len(data)
         self.last_seq = max(self.frames)
         self.phase = BEGIN
         self.unsent = [0]           # seqs of this phase not yet sent, in order
-        self.outstanding = {}       # seq -> [wire number, time sent, resends]
+        self.outstanding = {}       # seq -> [wire number, time last sent, resends, time first sent]
         self.resend = []            # seqs to send again, in order
         self.acked = set()
         self.acked_bytes = 0
         self.wire_no = 0
+        self.rate_samples = 0
         self.last_answer = None
         self.done = False
         self.result = None          # the ok Response
@@ -154,9 +161,9 @@ class Transfer:
         window has room. Raises TransferFailed on a timeout past the retries."""
         if self.done:
             return []
-        for seq, (_, sent_at, _) in sorted(self.outstanding.items(), key=lambda kv: kv[1][0]):
+        for seq, (_, sent_at, _, _) in sorted(self.outstanding.items(), key=lambda kv: kv[1][0]):
             since = max(sent_at, self.last_answer or sent_at)
-            if now - since >= self.timeout and seq not in self.resend:
+            if now - since >= self.timeout + len(self.frame(seq)) / self.rate and seq not in self.resend:
                 self._queue_resend(seq)
         out = list(self.resend)
         self.resend = []
@@ -170,7 +177,7 @@ class Transfer:
         self.wire_no += 1
         entry = self.outstanding.get(seq)
         if entry is None:
-            self.outstanding[seq] = [self.wire_no, now, 0]
+            self.outstanding[seq] = [self.wire_no, now, 0, now]
         else:
             entry[0], entry[1] = self.wire_no, now
             entry[2] += 1
@@ -196,18 +203,21 @@ class Transfer:
         if r.session is not None and r.session != self.session:
             self.counts["foreign"] += 1
             return False
-        self.last_answer = now
+        previous, self.last_answer = self.last_answer, now
         if r.kind == "ack":
-            return self._ack(r.seq)
+            return self._ack(r.seq, now, previous)
         if r.kind == "nak":
             self.counts["naks"] += 1
             if r.seq is None:
-                # nak crc / big: the oldest frame not yet queued again is the likeliest victim;
-                # if it was not, its resend only earns a duplicate ack.
-                for seq, _ in sorted(self.outstanding.items(), key=lambda kv: kv[1][0]):
+                # nak crc / big name no frame, and need not be about one of ours at all (a copy, or
+                # noise that looked like a SOF). With one frame unanswered it is that one's;
+                # with more, a guess would add a resend to the line's backlog each time it is
+                # wrong (a slow link then drowns in copies), while the frame that was mangled
+                # shows itself lost anyway by the ack of the next one, or by its timeout.
+                if len(self.outstanding) == 1:
+                    seq = next(iter(self.outstanding))
                     if seq not in self.resend:
                         self._queue_resend(seq)
-                        break
             elif r.seq in self.outstanding:
                 self._queue_resend(r.seq)
             return True
@@ -223,20 +233,32 @@ class Transfer:
             return True
         return False
 
-    def _ack(self, seq):
+    def _ack(self, seq, now=0.0, previous=None):
         if seq == self.last_seq:
-            return True  # COMMIT is answered with ok or reject; an ack of it proves nothing more
+            # A COMMIT is answered with ok or reject; a repeated one, of a transfer already
+            # committed, with an ack (its ok was lost: the model is in).
+            if self.phase == COMMIT and seq in self.outstanding:
+                self.done = True
+                self.result = Response("ok", self.session, text="(a repeated COMMIT acknowledged)")
+            return True
         entry = self.outstanding.pop(seq, None)
         if entry is None:
             self.counts["duplicate_acks"] += 1  # a resent frame's second ack, or a stray
             return True
         self.acked.add(seq)
+        # The service time from the first copy's sending: for a resent frame the ack may answer
+        # either copy, and the longer time errs on the safe side (a longer timeout).
+        served = now - max(entry[3], previous if previous is not None else entry[3])
+        if served > 0:
+            sample = len(self.frame(seq)) / served
+            self.rate = 0.5 * self.rate + 0.5 * sample if self.rate_samples else sample
+            self.rate_samples += 1
         if seq in self.resend:
             self.resend.remove(seq)
         self.acked_bytes += self.frames[seq][1]
         # The receiver answers in wire order: whatever went out before this frame and is still
         # unanswered was lost (a dropped or mangled frame that produced no nak).
-        for other, (wire, _, _) in list(self.outstanding.items()):
+        for other, (wire, _, _, _) in list(self.outstanding.items()):
             if wire < entry[0] and other not in self.resend:
                 self._queue_resend(other)
         if not self.outstanding and not self.unsent and not self.resend:
@@ -427,11 +449,12 @@ def summary_line(path, transfer, faults, stats, baud):
     wire_s = stats.wire_bytes * 10.0 / baud
     file_s = transfer.total_bytes * 10.0 / baud
     c = transfer.counts
-    text = ("mesh_upload: %s: %d bytes; on the wire %d bytes (%.1f %% overhead), %d frames sent, "
+    overhead = ("%.1f %% overhead" % (100.0 * (stats.wire_bytes - transfer.total_bytes) / transfer.total_bytes)
+                if stats.wire_bytes >= transfer.total_bytes > 0 else "incomplete")
+    text = ("mesh_upload: %s: %d bytes; on the wire %d bytes (%s), %d frames sent, "
             "%d retransmissions, %d naks, %d duplicate acks; %.2f s; the wire bytes take %.2f s at %d baud "
             "(the file alone %.2f s)"
-            % (os.path.basename(path), transfer.total_bytes, stats.wire_bytes,
-               100.0 * (stats.wire_bytes - transfer.total_bytes) / max(transfer.total_bytes, 1), c["frames"],
+            % (os.path.basename(path), transfer.total_bytes, stats.wire_bytes, overhead, c["frames"],
                c["retransmissions"], c["naks"], c["duplicate_acks"], elapsed, wire_s, baud, file_s))
     injected = ", ".join("%s %d" % (k, v) for k, v in faults.counts.items() if v)
     if injected:
@@ -443,7 +466,9 @@ def summary_line(path, transfer, faults, stats, baud):
 def open_port(path, baud):
     import serial  # pyserial (Debian's python3-serial): only the edge needs it
     port = serial.serial_for_url(path, baudrate=baud, timeout=0.02, write_timeout=30)
-    port.reset_input_buffer()  # what the firmware printed before (old sessions' answers) is stale
+    # What the firmware printed before (old sessions' answers) is stale. pyserial flushes on opening
+    # too; this says so where the tool relies on it.
+    port.reset_input_buffer()
     return port
 
 
@@ -468,8 +493,9 @@ def parse_args(argv):
     ap.add_argument("--chunk", type=int, default=256, help="file bytes per DATA frame, %d..%d" % (CHUNK_MIN, CHUNK_MAX))
     ap.add_argument("--window", type=int, default=4, help="DATA frames unacknowledged at most")
     ap.add_argument("--timeout", type=float, default=10.0,
-                    help="seconds without an answer before a frame is sent again (default 10: a co-simulated "
-                    "frame takes about a second of wall time, and answers come at frame ends)")
+                    help="seconds a frame may wait for its answer beyond what its bytes take at the receiver's "
+                    "measured rate, before it is sent again (default 10: a co-simulated frame takes about a "
+                    "second of wall time, and answers come at frame ends)")
     ap.add_argument("--retries", type=int, default=8, help="resends of one frame before giving up")
     ap.add_argument("--session", type=int, help="1..255 (default: from the process id)")
     ap.add_argument("--quiet", action="store_true", help="no progress lines")
@@ -522,7 +548,7 @@ def main(argv=None):
             print("mesh_upload: %s" % e.args[0], file=sys.stderr)
         return 2
     session = a.session if a.session is not None else os.getpid() % 255 + 1
-    transfer = Transfer(data, session, a.chunk, a.window, a.timeout, a.retries)
+    transfer = Transfer(data, session, a.chunk, a.window, a.timeout, a.retries, a.baud / 10.0)
     faults = Faults(a.inject_seed, a.corrupt, a.drop, a.duplicate, a.reorder, a.garbage, a.keys,
                     a.truncate_frame, a.oversize)
     stats = Stats()
@@ -550,12 +576,11 @@ def main(argv=None):
                 pass
     except PortClosed as e:
         print("mesh_upload: the port closed: %s" % e, file=sys.stderr, flush=True)
-    except OSError as e:  # the port cannot be opened
+    except OSError as e:  # the port cannot be opened or written (pyserial's SerialException is one)
         print("mesh_upload: %s: %s" % (a.port, e), file=sys.stderr, flush=True)
-    except Exception as e:
-        if type(e).__name__ != "SerialException":
-            raise
-        print("mesh_upload: %s: %s" % (a.port, e), file=sys.stderr, flush=True)
+    except ImportError:
+        print("mesh_upload: no pyserial: install python3-serial and run this with the system python3",
+              file=sys.stderr, flush=True)
     finally:
         if log is not None:
             log.close()

@@ -7,7 +7,7 @@
 source "$(dirname "$0")/../lib.sh"
 py=/usr/bin/python3
 need_file "$py"
-work=$(fresh_dir tools-mesh-upload)
+work=$(fresh_dir upload-host-tool-unit)
 status=0
 "$py" tests/tools/test_mesh_upload.py -v >"$work/out" 2>&1 || status=$?
 tail -n 5 "$work/out"
@@ -15,4 +15,4 @@ expect_status 0 "the unit tests"
 expect_no_line 'skipped' "$work/out"
 ran=$(sed -n 's/^Ran \([0-9]*\) tests.*/\1/p' "$work/out")
 [ "${ran:-0}" -ge 25 ] || fail "only ${ran:-0} tests ran"
-pass "tools-mesh-upload: $ran unit tests of mesh_upload.py passed"
+pass "upload-host-tool-unit: $ran unit tests of mesh_upload.py passed"

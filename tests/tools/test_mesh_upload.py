@@ -98,6 +98,7 @@ class Parser(unittest.TestCase):
             ("@up reject 7 incomplete: 3 of 5 chunks", R("reject", 7, reason="incomplete", text="3 of 5 chunks")),
             ("@up ok 7 faces 2 verts 4", R("ok", 7, text="faces 2 verts 4")),
             ("@up abandoned 7", R("abandoned", 7)),
+            ("@up abandoned 7 (12 stray bytes ignored)", R("abandoned", 7, text="(12 stray bytes ignored)")),
         ]
         for line, want in cases:
             self.assertEqual(mu.parse_response(line), want, line)
@@ -116,6 +117,7 @@ class FakeReceiver:
     nak   {seq: n}  the first n copies are answered `@up nak S Q offset`
     repeat_acks     every ack is printed twice
     silent          nothing is ever answered
+    throttle        bytes taken from the line per read (None: all at once), a slow firmware
     clock           advanced by step on every read (the fake's notion of time passing)."""
 
     def __init__(self, clock=None, step=0.05):
@@ -128,15 +130,25 @@ class FakeReceiver:
         self.chunks = set()
         self.received = []  # (type, seq) of every good frame, in order
         self.closed = False
+        self.throttle = None
+        self.line = b""  # written, not yet taken (throttle)
 
     # the port's side
     def write(self, data):
-        self.buf += data
+        self.line += data
+        self._take()
+
+    def _take(self):
+        n = len(self.line) if self.throttle is None else self.throttle
+        self.buf += self.line[:n]
+        self.line = self.line[n:]
         self._parse()
 
     def read(self, n):
         if self.clock is not None:
             self.clock.t += self.step
+        if self.throttle is not None:
+            self._take()
         if self.closed and not self.out:
             raise OSError(5, "Input/output error")
         data, self.out = self.out[:n], self.out[n:]
@@ -250,12 +262,13 @@ class Window(unittest.TestCase):
     def test_nak_retransmits(self):
         clock = Clock()
         rx = FakeReceiver(clock)
-        rx.nak = {2: 1}
-        t, status = transfer_over(rx, clock, data=bytes(64 * 6), window=4)
+        rx.nak = {6: 1}  # the last DATA frame: no later ack shows it lost, only the nak
+        t, status = transfer_over(rx, clock, data=bytes(64 * 6), window=4, timeout=1000.0)
         self.assertEqual(status, 0)
         self.assertEqual(t.counts["naks"], 1)
         self.assertEqual(t.counts["retransmissions"], 1)
-        self.assertEqual([q for f, q in rx.received if q == 2], [2, 2])
+        self.assertEqual([q for f, q in rx.received if q == 6], [6, 6])
+        self.assertLess(clock.t, 1000.0)  # by the nak, not the timeout
 
     def test_lost_frame_resent_when_a_later_one_is_acked(self):
         clock = Clock()
@@ -276,6 +289,18 @@ class Window(unittest.TestCase):
         self.assertEqual(t.counts["retransmissions"], 1)
         self.assertGreaterEqual(clock.t, 2.0)
 
+    def test_slow_receiver_no_resends(self):
+        # 2 bytes a read, 0.05 s a read: 40 bytes/s, so a DATA frame of 80 bytes takes 2 s, more
+        # than the timeout: the rate learnt from BEGIN's ack must keep the window from resending.
+        clock = Clock()
+        rx = FakeReceiver(clock, step=0.05)
+        rx.throttle = 2
+        t, status = transfer_over(rx, clock, data=bytes(64 * 6), window=4, timeout=1.0)
+        self.assertEqual(status, 0)
+        self.assertEqual(t.counts["retransmissions"], 0)
+        self.assertLess(t.rate, 60)
+        self.assertGreater(clock.t, 10.0)  # it was slow: 550 bytes at 40 bytes/s
+
     def test_duplicate_acks_ignored(self):
         clock = Clock()
         rx = FakeReceiver(clock)
@@ -295,15 +320,30 @@ class Window(unittest.TestCase):
         self.assertTrue(t.on_response(mu.Response("ack", 7, 0), 0))
         self.assertEqual(t.phase, mu.DATA)
 
-    def test_unnamed_nak_resends_oldest(self):
+    def test_ok_only_answers_commit(self):
+        t = mu.Transfer(bytes(64 * 2), 7, 64, 4, 100, 1)
+        t.sent(t.poll(0)[0], 0)
+        t.on_response(mu.Response("ack", 7, 0), 0)
+        self.assertFalse(t.on_response(mu.Response("ok", 7, text="faces 1 verts 3"), 0))
+        self.assertFalse(t.done)
+
+    def test_unnamed_nak(self):
+        # With several frames unanswered a nak crc names none of them: nothing is resent until the
+        # next ack shows which one was lost. With one unanswered, it is that one's.
         t = mu.Transfer(bytes(64 * 4), 7, 64, 4, 100, 2)
         t.sent(t.poll(0)[0], 0)
+        t.on_response(mu.Response("nak", reason="crc"), 0)
+        self.assertEqual(t.poll(0), [0])  # BEGIN, alone
+        t.sent(0, 0)
         t.on_response(mu.Response("ack", 7, 0), 0)
         for s in t.poll(0):
             t.sent(s, 0)
         t.on_response(mu.Response("ack", 7, 1), 0)
         t.on_response(mu.Response("nak", reason="crc"), 0)
+        self.assertEqual(t.poll(0), [])
+        t.on_response(mu.Response("ack", 7, 3), 0)
         self.assertEqual(t.poll(0), [2])
+        self.assertEqual(t.counts["naks"], 2)
 
     def test_retries_exhausted(self):
         clock = Clock()
@@ -377,6 +417,13 @@ class Injection(unittest.TestCase):
         self.assertEqual(f.counts["oversize"], 1)
         self.assertGreater(t.counts["retransmissions"], 0)  # the truncated frame, at least
 
+    def test_oversize_answer_is_not_a_loss(self):
+        # The receiver's `nak big 600` answers the injected header, not BEGIN: nothing is resent.
+        t, f, _ = self.run_with(oversize=True)
+        self.assertEqual(f.counts["oversize"], 1)
+        self.assertEqual(t.counts["naks"], 0)
+        self.assertEqual(t.counts["retransmissions"], 0)
+
     def test_seeded(self):
         a = self.run_with(seed=5, corrupt=0.2, drop=0.2)[1].counts
         b = self.run_with(seed=5, corrupt=0.2, drop=0.2)[1].counts
@@ -442,6 +489,8 @@ class SerialEdge(unittest.TestCase):
                 if out:
                     os.write(master, b"frame 1: noise the tool must skip\r\n" + out)
 
+        # An answer left from an earlier run, waiting in the pty: the tool must discard it on opening.
+        os.write(master, b"@up reject 42 crc: an old session's answer\r\n")
         th = threading.Thread(target=serve, daemon=True)
         th.start()
         with tempfile.TemporaryDirectory() as d:
