@@ -109,6 +109,9 @@ suite cosim-kill-harness       1 bash tests/cosim/kill.sh harness
 suite cosim-stop-signal        4 bash tests/cosim/kill.sh sigterm
 suite cosim-gpu-timeout        1 bash tests/cosim/gpu_timeout.sh
 suite upload-cosim            60 bash tests/upload/cosim_upload.sh
+suite upload-host-tool-unit    1 bash tests/tools/mesh_upload.sh
+suite upload-host-tool         2 bash tests/upload/host_tool.sh
+suite cosim-uart-pty          11 bash tests/cosim/uart_pty.sh
 suite scene-host-vs-cosim     67 bash tests/scenes/host_vs_cosim.sh
 suite scene-watchdog          15 bash tests/scenes/watchdog.sh
 suite scene-keys-burst         9 bash tests/scenes/keys_burst.sh
@@ -120,6 +123,7 @@ suite soc-watchdog             7 bash tests/soc/watchdog.sh
 suite soc-bus-error            1 bash tests/soc/bus_error.sh
 suite soc-too-big              1 bash tests/soc/too_big.sh
 suite soc-poll-cycles          1 bash tests/soc/poll_cycles.sh
+suite soc-uart-pty            10 bash tests/soc/uart_pty.sh
 suite boards-dvi-tx            15 bash tests/boards/dvi_tx.sh
 suite boards-ulx3s-dvi         30 bash tests/boards/ulx3s_dvi.sh
 suite boards-lint               12 make --no-print-directory lint-board

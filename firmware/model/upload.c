@@ -170,7 +170,7 @@ static void upload_frame(struct upload_rx *rx)
     const uint16_t seq = (uint16_t)rd16(&rx->head[2]);
 
     rx->frames_ok++;
-    rx->quiet = UPLOAD_TIMEOUT_FRAMES;
+    rx->quiet = UPLOAD_QUIET_FRAMES;
     if (type == UPLOAD_BEGIN) {
         rx->idle = 0;
         upload_begin(rx, session, seq, rx->payload, rx->len);
@@ -212,7 +212,7 @@ static bool upload_stray(struct upload_rx *rx, uint8_t byte)
 {
     if (byte >= 0x80u) {
         /* Not a key (keys are ASCII): a frame's remains. Keep the next bytes from the keys too. */
-        rx->quiet = UPLOAD_TIMEOUT_FRAMES;
+        rx->quiet = UPLOAD_QUIET_FRAMES;
     }
     if (rx->session != 0u || rx->quiet != 0u) {
         rx->stray++;
@@ -228,7 +228,7 @@ bool upload_feed(struct upload_rx *rx, uint8_t byte)
     case RX_HUNT:
         if (byte == UPLOAD_SOF0) {
             rx->state = RX_SOF1;
-            rx->quiet = UPLOAD_TIMEOUT_FRAMES;
+            rx->quiet = UPLOAD_QUIET_FRAMES;
             return true;
         }
         return upload_stray(rx, byte);

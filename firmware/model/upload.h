@@ -37,6 +37,10 @@ enum upload_type { UPLOAD_BEGIN = 1, UPLOAD_DATA = 2, UPLOAD_COMMIT = 3, UPLOAD_
 #define UPLOAD_TIMEOUT_FRAMES 180u
 #endif
 #define UPLOAD_PARTIAL_TIMEOUT_FRAMES 30u
+/* Frames after the last protocol byte (a frame, a SOF or a byte >= 0x80) in which stray bytes are
+ * discarded rather than taken for keys: a frame's remains arrive within milliseconds of it, and
+ * keys typed after an upload work again half a second later (at 60 frames/s). */
+#define UPLOAD_QUIET_FRAMES 30u
 /* Responses held per frame; more in one frame are lost (counted: the sender's timeout resends). */
 #define UPLOAD_MAX_RESPONSES 32u
 
@@ -102,7 +106,8 @@ struct upload_rx {
     uint32_t chunks;
     uint32_t received;       /* distinct chunks */
     uint32_t idle;           /* frames since the last valid frame */
-    uint32_t quiet;          /* frames left in which stray bytes are discarded, not keys */
+    uint32_t quiet;          /* frames left in which stray bytes are discarded, not keys
+                              * (UPLOAD_QUIET_FRAMES after the last protocol byte) */
     uint32_t stray;          /* bytes discarded outside frames since the transfer opened */
     /* The result: a validated file in buf (upload_ready). */
     bool ready;

@@ -238,9 +238,12 @@ void test_upload_transfer(void)
     CHECK(!upload_ready(&t_rx));
     /* Keys are ignored for the quiet time after a transfer, then pass again. */
     CHECK_EQ(feed((const uint8_t *)"w", 1), 0);
-    for (uint32_t i = 0; i < UPLOAD_TIMEOUT_FRAMES; i++) {
+    for (uint32_t i = 0; i + 1u < UPLOAD_QUIET_FRAMES; i++) {
         upload_frame_end(&t_rx);
     }
+    CHECK_EQ(feed((const uint8_t *)"w", 1), 0);
+    upload_frame_end(&t_rx);
+    upload_frame_end(&t_rx);
     CHECK_EQ(feed((const uint8_t *)"w", 1), 1);
     /* A new BEGIN: the buffer no longer holds the committed file. */
     feed(fr, begin_frame(fr, 8, size, crc, 64));
