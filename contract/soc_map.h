@@ -12,7 +12,7 @@
 #define SOC_CLK_HZ_DEFAULT               50000000u  /* system clock in Hz (SYS CLK_HZ reads a build's own) */
 #define SOC_UART_BAUD                    115200u  /* 8N1 */
 #define SOC_SYS_ID_VALUE                 0x534F4330u  /* read from SYS ID */
-#define SOC_UART_RX_FIFO_DEPTH           16u
+#define SOC_UART_RX_FIFO_DEPTH           2048u
 #define SOC_UART_TX_FIFO_DEPTH           256u
 #define SOC_IRQ_BUS_ERROR                0u  /* bit of VexRiscv's external interrupt lines and of its mask CSR 0xBC0 */
 #define SOC_CSR_IRQ_MASK                 0xBC0u  /* VexRiscv's machine external interrupt mask CSR (0xFC0: pending) */

@@ -5,7 +5,7 @@
 localparam integer SOC_CLK_HZ_DEFAULT               = 50000000;  // system clock in Hz
 localparam integer SOC_UART_BAUD                    = 115200;  // 8N1
 localparam [31:0] SOC_SYS_ID_VALUE                 = 32'h534F4330;
-localparam integer SOC_UART_RX_FIFO_DEPTH           = 16;
+localparam integer SOC_UART_RX_FIFO_DEPTH           = 2048;
 localparam integer SOC_UART_TX_FIFO_DEPTH           = 256;
 localparam integer SOC_IRQ_BUS_ERROR                = 0;  // bit of the core's externalInterruptArray
 localparam [31:0] SOC_RAM_BASE                     = 32'h0;  // cached

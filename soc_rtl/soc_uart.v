@@ -12,6 +12,23 @@
 // the bit; a low stop bit is a framing error (counted, the byte dropped, RX waits for the line to go
 // high again); a byte that finds the RX FIFO full is an overrun (counted, dropped). Both counters
 // saturate at 0xFFFF. The bit timing error of the rounding is below 0.5 / DIV of a bit.
+// Contract (RX FIFO): holds RX_DEPTH bytes exactly (the RX_DEPTH+1-th unread byte is an overrun), in
+// order. A received byte is visible (STATUS RX_VALID, a DATA read) from the second clock after its
+// stop bit's sample, instead of the first: the read-ahead below; software cannot tell.
+//
+// The RX FIFO's storage is block RAM (RX_DEPTH 2048 = one ECP5 DP16KD as 2048x9). Block RAM reads
+// synchronously: the address is taken at a clock edge and the byte comes out after it, in its output
+// register. The bus contract needs the oldest byte in the same clock as the DATA read's request (the
+// answer is registered at that clock's end), so the FIFO reads ahead: the RAM's output register is
+// the head of the FIFO (rx_head_q, valid in rx_head_valid_q), and the RAM holds the bytes behind it.
+// The head is refilled from the RAM at the edge that ends a pop's clock (the read address is the
+// oldest byte still in the RAM), so the next byte is already the head in the ack's clock, one clock
+// before the earliest next request (a request is accepted at most every second clock: its ack comes
+// between). A byte pushed into an empty FIFO is written at one edge and read into the head at the
+// next, hence the one clock of delay; STATUS and DATA both look at rx_head_valid_q, so they always
+// agree. The RAM never reads and writes one address in the same clock (a fetch needs a byte written
+// at an earlier edge, a push a free entry), so its read-during-write behaviour does not matter. Full
+// counts the head too (rx_level_q), so the capacity is RX_DEPTH, not RX_DEPTH + 1.
 `default_nettype none
 
 module soc_uart #(
@@ -70,15 +87,20 @@ module soc_uart #(
     reg [2:0]    rx_bit_q;
     reg [7:0]    rx_shift_q;
     reg          rx_wait_high_q;           // after a framing error: wait for the line to idle
-    reg [7:0]    rx_fifo [0:RX_DEPTH-1];
-    reg [RXW:0]  rx_wr_q, rx_rd_q;         // one bit wider than the index: full vs empty
-    wire rx_empty = rx_wr_q == rx_rd_q;
-    wire rx_full  = rx_wr_q == {~rx_rd_q[RXW], rx_rd_q[RXW-1:0]};
+    reg [7:0]    rx_mem [0:RX_DEPTH-1];    // block RAM: the bytes behind the head
+    reg [RXW:0]  rx_wr_q, rx_rd_q;         // RAM pointers, one bit wider than the index: full vs empty
+    reg [7:0]    rx_head_q;                // the RAM's output register: the oldest byte
+    reg          rx_head_valid_q;          // rx_head_q holds a byte not yet popped
+    reg [RXW:0]  rx_level_q;               // bytes held, the head included: 0 .. RX_DEPTH
+    wire rx_mem_empty = rx_wr_q == rx_rd_q;
+    wire rx_full = rx_level_q == RX_DEPTH[RXW:0];
     reg [15:0]   frame_err_q, overrun_q;
     wire rx_stop_mid  = rx_state_q == RX_STOP && rx_timer_q == 0;   // the stop bit's sample
     wire rx_push      = rx_stop_mid && rx;     // a good byte ends this clock
     wire rx_frame_bad = rx_stop_mid && !rx;    // a byte with a low stop bit ends this clock
-    wire rx_pop = accept && !wb_we && is_data && !rx_empty;
+    wire rx_write     = rx_push && !rx_full;   // ... and has room
+    wire rx_pop = accept && !wb_we && is_data && rx_head_valid_q;
+    wire rx_fetch = !rx_mem_empty && (!rx_head_valid_q || rx_pop);   // the head (re)filled from the RAM
 
     always @(posedge clk) begin
         if (rst) rx_sync_q <= 2'b11;
@@ -130,24 +152,36 @@ module soc_uart #(
         end
     end
 
+    // The RAM and its output register: no reset (a block RAM's contents and read register have
+    // none); rx_head_valid_q says when rx_head_q means something.
+    always @(posedge clk) begin
+        if (rx_write) rx_mem[rx_wr_q[RXW-1:0]] <= rx_shift_q;
+        if (rx_fetch) rx_head_q <= rx_mem[rx_rd_q[RXW-1:0]];
+    end
+
     always @(posedge clk) begin
         if (rst) begin
             rx_wr_q <= '0;
             rx_rd_q <= '0;
+            rx_head_valid_q <= 1'b0;
+            rx_level_q <= '0;
             frame_err_q <= 16'd0;
             overrun_q <= 16'd0;
         end else begin
-            if (rx_push && !rx_full) begin
-                rx_fifo[rx_wr_q[RXW-1:0]] <= rx_shift_q;
-                rx_wr_q <= rx_wr_q + 1'b1;
-            end
+            if (rx_write) rx_wr_q <= rx_wr_q + 1'b1;
+            if (rx_fetch) rx_rd_q <= rx_rd_q + 1'b1;
+            if (rx_fetch) rx_head_valid_q <= 1'b1;
+            else if (rx_pop) rx_head_valid_q <= 1'b0;
+            if (rx_write && !rx_pop) rx_level_q <= rx_level_q + 1'b1;
+            else if (rx_pop && !rx_write) rx_level_q <= rx_level_q - 1'b1;
             if (rx_push && rx_full && overrun_q != 16'hFFFF) overrun_q <= overrun_q + 1'b1;
             if (rx_frame_bad && frame_err_q != 16'hFFFF) frame_err_q <= frame_err_q + 1'b1;
-            if (rx_pop) rx_rd_q <= rx_rd_q + 1'b1;
         end
     end
 
     // ---- TX: FIFO and shifter ----
+    // The FIFO's read goes straight into tx_shift_q (a synchronous read): yosys maps the 256 bytes
+    // onto one DP16KD.
     reg [7:0]    tx_fifo [0:TX_DEPTH-1];
     reg [TXW:0]  tx_wr_q, tx_rd_q;
     wire tx_empty = tx_wr_q == tx_rd_q;
@@ -197,10 +231,10 @@ module soc_uart #(
     // ---- register reads and the answer ----
     // Fields at the contract's positions (soc_pkg::SOC_UART_*_LSB).
     wire tx_idle = tx_empty && !tx_busy_q;
-    wire [31:0] status = ({31'd0, !rx_empty} << soc_pkg::SOC_UART_STATUS_RX_VALID_LSB)
+    wire [31:0] status = ({31'd0, rx_head_valid_q} << soc_pkg::SOC_UART_STATUS_RX_VALID_LSB)
                        | ({31'd0, tx_full}   << soc_pkg::SOC_UART_STATUS_TX_FULL_LSB)
                        | ({31'd0, tx_idle}   << soc_pkg::SOC_UART_STATUS_TX_IDLE_LSB);
-    wire [31:0] rx_word = ({24'd0, rx_fifo[rx_rd_q[RXW-1:0]]} << soc_pkg::SOC_UART_DATA_BYTE_LSB)
+    wire [31:0] rx_word = ({24'd0, rx_head_q} << soc_pkg::SOC_UART_DATA_BYTE_LSB)
                         | ({31'd0, 1'b1} << soc_pkg::SOC_UART_DATA_VALID_LSB);
     wire [31:0] errors = ({16'd0, frame_err_q} << soc_pkg::SOC_UART_ERRORS_FRAMING_LSB)
                        | ({16'd0, overrun_q}   << soc_pkg::SOC_UART_ERRORS_OVERRUN_LSB);
@@ -215,7 +249,7 @@ module soc_uart #(
             if (accept) begin
                 wb_dat_r <= 32'd0;
                 if (!wb_we) begin
-                    if (is_data && !rx_empty) wb_dat_r <= rx_word;
+                    if (is_data && rx_head_valid_q) wb_dat_r <= rx_word;
                     if (is_status) wb_dat_r <= status;
                     if (is_errors) wb_dat_r <= errors;
                     if (is_divider) wb_dat_r <= DIV;

@@ -78,8 +78,9 @@ suite contract-generated       1 "$PYTHON" contract/gen_contract.py --check
 suite rtl-lint                 1 make --no-print-directory lint
 suite rtl-div-unit            36 bash tests/rtl/div.sh
 suite rtl-bus-slaves           8 bash tests/rtl/bus_slaves.sh
+suite rtl-uart-fifo           14 bash tests/rtl/uart_fifo.sh
 suite rtl-soc-lint             3 make --no-print-directory lint-soc
-suite rtl-soc-smoke            6 make --no-print-directory soc-smoke
+suite rtl-soc-smoke           16 make --no-print-directory soc-smoke
 suite fw-unit                  1 "$BUILD/tests/fw_unit"
 suite fw-unit-float            1 "$BUILD/tests/fw_unit_float"
 suite fw-no-gpu                1 bash tests/firmware/no_gpu.sh
