@@ -94,8 +94,7 @@ struct frame_totals {
 static struct app app_state;
 #if FW_WITH_UPLOAD
 /* The upload's staging buffer: one mesh file of the model scene's capacity, and its chunk map. */
-#define APP_UPLOAD_BYTES (MESHFILE_HEADER_BYTES + MESHFILE_VERT_BYTES * FW_MODEL_MAX_VERTS + \
-                          MESHFILE_FACE_BYTES * FW_MODEL_MAX_FACES + MESHFILE_CRC_BYTES)
+#define APP_UPLOAD_BYTES MESHFILE_BYTES(FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES)
 static uint8_t app_upload_file[APP_UPLOAD_BYTES];
 static uint8_t app_upload_map[UPLOAD_MAP_BYTES(APP_UPLOAD_BYTES)];
 #define APP_UART_BYTES_PER_FRAME FW_UART_BYTES_PER_FRAME

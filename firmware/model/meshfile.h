@@ -45,11 +45,14 @@
 #define MESHFILE_OFF_BOX_HI 22u
 #define MESHFILE_OFF_FLAGS 28u
 
-/* The size of a file of v vertices and f faces (no overflow for counts below 2^24). */
+/* The size of a file of v vertices and f faces (no overflow for counts below 2^24): a constant
+ * expression for buffers sized by a capacity, and a function. */
+#define MESHFILE_BYTES(verts, faces) \
+    (MESHFILE_HEADER_BYTES + MESHFILE_VERT_BYTES * (verts) + MESHFILE_FACE_BYTES * (faces) + \
+     MESHFILE_CRC_BYTES)
 static inline uint32_t meshfile_bytes(uint32_t verts, uint32_t faces)
 {
-    return MESHFILE_HEADER_BYTES + MESHFILE_VERT_BYTES * verts + MESHFILE_FACE_BYTES * faces +
-           MESHFILE_CRC_BYTES;
+    return MESHFILE_BYTES(verts, faces);
 }
 
 

@@ -25,8 +25,7 @@
 #include "model/upload.h"
 #include "scenes/model/model.h"
 
-static uint8_t peer_buf[MESHFILE_HEADER_BYTES + MESHFILE_VERT_BYTES * FW_MODEL_MAX_VERTS +
-                        MESHFILE_FACE_BYTES * FW_MODEL_MAX_FACES + MESHFILE_CRC_BYTES];
+static uint8_t peer_buf[MESHFILE_BYTES(FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES)];
 static uint8_t peer_map[UPLOAD_MAP_BYTES(sizeof peer_buf)];
 static struct upload_rx peer_rx;
 
