@@ -125,6 +125,7 @@ suite soc-bus-error            1 bash tests/soc/bus_error.sh
 suite soc-too-big              1 bash tests/soc/too_big.sh
 suite soc-poll-cycles          1 bash tests/soc/poll_cycles.sh
 suite soc-uart-pty            10 bash tests/soc/uart_pty.sh
+suite soc-upload              20 bash tests/soc/upload.sh
 suite boards-dvi-tx            15 bash tests/boards/dvi_tx.sh
 suite boards-ulx3s-dvi         30 bash tests/boards/ulx3s_dvi.sh
 suite boards-lint               12 make --no-print-directory lint-board
