@@ -631,15 +631,15 @@ void SocRun::write_summary(const char *error)
                  rx_.framing_errors());
     std::fprintf(f, "exit_valid=%d\nvga_vsyncs=%llu\nuart_replies=%u\n", top_->exit_valid ? 1 : 0,
                  static_cast<unsigned long long>(vsyncs_), replies_.sent());
-#ifndef SOCSIM_BOARD_ULX3S
-    std::fprintf(f, "leds=0x%02x\n", static_cast<unsigned>(top_->leds));  // SYS LEDS (the board shows 4 of them)
-#endif
 #ifdef SOCSIM_BOARD_ULX3S
+    // No leds= here: the board's pins show SYS LEDS 3:0 only, beside its own status (ulx3s_system).
     std::fprintf(f, "tmds_pixels=%llu\ntmds_data_symbols=%llu\ntmds_control_symbols=%llu\n",
                  static_cast<unsigned long long>(tmds_.pixels()), static_cast<unsigned long long>(tmds_.data_symbols()),
                  static_cast<unsigned long long>(tmds_.control_symbols()));
     std::fprintf(f, "tmds_max_disparity=%d,%d,%d\n", tmds_.max_disparity(0), tmds_.max_disparity(1),
                  tmds_.max_disparity(2));
+#else
+    std::fprintf(f, "leds=0x%02x\n", static_cast<unsigned>(top_->leds));  // SYS LEDS, soc_top's port
 #endif
     std::fclose(f);
 }
