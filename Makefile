@@ -37,11 +37,11 @@ include tests/fuzz/fuzz.mk
 RTL_FILES  := gpu_rtl/files.f
 RTL_V      := $(shell sed -e 's://.*::' $(RTL_FILES))
 RTL_LINT   := gpu_rtl/lint.vlt
-# The SoC in RTL (soc_rtl/): lint-soc, synth-soc, soc-smoke.
+# The SoC in RTL (soc_rtl/): lint-soc, synth-soc, the smoke program (run by soc-smoke, socsim.mk).
 include soc_rtl/soc.mk
 COSIM_CPP  := $(sort $(wildcard cosim/*.cpp))
 HOST_INC   := -Icosim -Igpu_model -Icontract -Ibsp/qemu_virt
-# The SoC simulator (socsim), run-soc, bench-soc and the soc firmware builds.
+# The SoC simulator (socsim), run-soc, bench-soc, soc-smoke and the soc firmware builds.
 include cosim/soc/socsim.mk
 # Boards: bitstream, synth-board, flash, load, term, lint-board (boards/<board>/board.mk).
 BOARD      ?= ulx3s

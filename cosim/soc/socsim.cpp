@@ -14,7 +14,8 @@
 // the VGA build, byte for byte, when the board's video path is right.
 //
 //   socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]
-//          [--keys-at N:TEXT]... [--max-cycles N] [--no-model-check] [--uart-pty LINK]
+//          [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--no-model-check]
+//          [--uart-pty LINK]
 //
 // The program: RAM_INIT's format (one 32-bit hex word per line from address 0; --fw FILE.elf reads
 // FILE.elf.hex, the soc platform's post-link output), loaded at time 0 through soc_ram's
@@ -40,13 +41,17 @@
 // --uart-pty LINK the line is also a pseudo-terminal (cosim/uart_pty): what a client writes there
 // is queued on uart_rx (at most kPtyQueue bytes ahead of the line, so that the pty holds a fast
 // client back instead of this process buffering without bound), and every byte decoded from
-// uart_tx goes to the client as it came.
+// uart_tx goes to the client as it came. --reply PROMPT=TEXT (cosim/soc/uart_reply) answers a
+// prompt instead of a doorbell: TEXT is sent each time the text from uart_tx ends with PROMPT, as
+// the smoke program (tests/soc/smoke.c) asks for its receiver's tests.
 //
 // The run ends when the firmware writes SYS EXIT (soc_top's exit_valid): the process exits with its
 // status (0..255). A harness failure — a frame that differs from the model or cannot be captured,
 // the cycle limit, SIGINT/SIGTERM — prints "socsim: error: ..." and exits 1; usage errors exit 2.
 // --summary FILE holds the outcome as key=value lines, with the keys of `gpusim cosim --summary`
-// and the SoC's own counts. Simulation is deterministic: the same image gives the same files.
+// and the SoC's own counts and pins: exit_valid, the LEDs (the VGA build), the vertical syncs the
+// monitor saw (vga_vsyncs, with or without a swap), the replies sent. Simulation is deterministic:
+// the same image gives the same files.
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
@@ -77,6 +82,7 @@ using SocModel = Vsoc_top;
 #include "model_check.h"
 #include "uart_line.h"
 #include "uart_pty.h"
+#include "uart_reply.h"
 #include "uart_terminal.h"
 
 extern "C" {
@@ -127,16 +133,20 @@ struct Options {
     uint32_t uart_divider = (SOCSIM_CLK_HZ + SOC_UART_BAUD / 2) / SOC_UART_BAUD;  // as soc_uart rounds
     bool check_model = true;
     KeysAt keys_at;
+    UartReplies replies;
 };
 
 int usage()
 {
     std::fprintf(stderr,
                  "usage: socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]\n"
-                 "              [--keys-at N:TEXT]... [--max-cycles N] [--no-model-check] [--uart-divider N]\n"
-                 "              [--uart-pty LINK]\n"
+                 "              [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--no-model-check]\n"
+                 "              [--uart-divider N] [--uart-pty LINK]\n"
                  "  --fw FILE.elf     run FILE.elf.hex (the soc build's RAM image); -kernel FILE.elf is the same\n"
+                 "  --hex FILE        run FILE, a RAM image (one 32-bit hex word per line from address 0)\n"
                  "  --keys-at N:TEXT  send TEXT on uart_rx when the GPU takes DOORBELL write N (from 1)\n"
+                 "  --reply PROMPT=TEXT  send TEXT on uart_rx each time the text from uart_tx ends with PROMPT\n"
+                 "                    (\\n a newline, \\f a frame with a low stop bit)\n"
                  "  --max-cycles N    give up after N clocks (default 3e9: 60 s at 50 MHz)\n"
                  "  --summary FILE    write the run's outcome and counts as key=value lines\n"
                  "  --uart-pty LINK   also offer the UART as a pseudo-terminal, LINK a symlink to it (raw, 8 bits):\n"
@@ -171,6 +181,11 @@ bool parse(int argc, char **argv, Options &o)
             if (!parse_keys_at("socsim", argv[++i], &o.keys_at)) {
                 return false;
             }
+        } else if (a == "--reply" && has_value) {
+            if (!o.replies.add(argv[++i])) {
+                std::fprintf(stderr, "socsim: --reply wants PROMPT=TEXT, got '%s'\n", argv[i]);
+                return false;
+            }
         } else if (a == "--no-model-check") {
             o.check_model = false;
         } else {
@@ -195,7 +210,7 @@ class SocRun {
 public:
     explicit SocRun(const Options &o)
         : opt_(o), top_(new SocModel(context_.get())), model_(gpu_caps()), rx_(o.uart_divider),
-          tx_(o.uart_divider)
+          tx_(o.uart_divider), replies_(o.replies)
     {
         g_run = this;
         vga_monitor_reset(&monitor_);
@@ -228,6 +243,7 @@ private:
     void tick();
     void clock_once();   // the model's clocks up to the system clock's next rising edge
     void uart_byte(uint8_t b);
+    void vga_sample(int hsync_n, int vsync_n, int r, int g, int b);
     void flush_uart(bool final);
     bool finish_frame(std::string *error);
     void write_summary(const char *error);
@@ -278,6 +294,9 @@ private:
     uint64_t regs_checked_ = 0;   // register reads compared with the model
     std::string reg_error_;       // the first register that differed
     uint64_t icache_refills_ = 0, dcache_refills_ = 0, uart_reads_ = 0;
+    uint64_t vsyncs_ = 0;          // vertical sync pulses at the monitor: the scan-out runs
+    bool vsync_n_ = true;
+    UartReplies replies_;          // --reply: a copy, since it keeps what was received
     int firmware_status_ = -1;
 };
 
@@ -460,8 +479,7 @@ void SocRun::clock_once()
     top_->clk = top_->clk_pix = 1;
     top_->eval();
     if (pixel_edge) {
-        vga_monitor_sample(&monitor_, top_->vga_hsync_n, top_->vga_vsync_n, top_->vga_r, top_->vga_g,
-                           top_->vga_b);
+        vga_sample(top_->vga_hsync_n, top_->vga_vsync_n, top_->vga_r, top_->vga_g, top_->vga_b);
     }
 }
 #endif
@@ -498,13 +516,25 @@ void SocRun::tmds_clock()
             video_error_ = text;
         }
     }
-    vga_monitor_sample(&monitor_, px.hsync, px.vsync, px.r >> 4, px.g >> 4, px.b >> 4);
+    vga_sample(px.hsync, px.vsync, px.r >> 4, px.g >> 4, px.b >> 4);
 }
 #endif
+
+// One pixel to the monitor; the vertical syncs are counted here too, so that a program that never
+// swaps (no frame captured) still shows that the scan-out runs.
+void SocRun::vga_sample(int hsync_n, int vsync_n, int r, int g, int b)
+{
+    if (vsync_n_ && !vsync_n) {
+        vsyncs_++;
+    }
+    vsync_n_ = vsync_n != 0;
+    vga_monitor_sample(&monitor_, hsync_n, vsync_n, r, g, b);
+}
 
 void SocRun::uart_byte(uint8_t b)
 {
     pty_.write(reinterpret_cast<const char *>(&b), 1);
+    replies_.byte(b, &tx_);
     if (b == '\r') {
         return;
     }
@@ -599,12 +629,17 @@ void SocRun::write_summary(const char *error)
     std::fprintf(f, "icache_refills=%llu\ndcache_refills=%llu\nuart_framing_errors=%u\n",
                  static_cast<unsigned long long>(icache_refills_), static_cast<unsigned long long>(dcache_refills_),
                  rx_.framing_errors());
+    std::fprintf(f, "exit_valid=%d\nvga_vsyncs=%llu\nuart_replies=%u\n", top_->exit_valid ? 1 : 0,
+                 static_cast<unsigned long long>(vsyncs_), replies_.sent());
 #ifdef SOCSIM_BOARD_ULX3S
+    // No leds= here: the board's pins show SYS LEDS 3:0 only, beside its own status (ulx3s_system).
     std::fprintf(f, "tmds_pixels=%llu\ntmds_data_symbols=%llu\ntmds_control_symbols=%llu\n",
                  static_cast<unsigned long long>(tmds_.pixels()), static_cast<unsigned long long>(tmds_.data_symbols()),
                  static_cast<unsigned long long>(tmds_.control_symbols()));
     std::fprintf(f, "tmds_max_disparity=%d,%d,%d\n", tmds_.max_disparity(0), tmds_.max_disparity(1),
                  tmds_.max_disparity(2));
+#else
+    std::fprintf(f, "leds=0x%02x\n", static_cast<unsigned>(top_->leds));  // SYS LEDS, soc_top's port
 #endif
     std::fclose(f);
 }

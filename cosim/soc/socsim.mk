@@ -11,6 +11,7 @@
 #                  recursive make with FW_PLATFORM=soc) on socsim -> $(OUT)/frames, $(OUT)/uart.log
 #   soc-fw         that firmware only; soc-fw-test: the FW_TEST_FRAMES builds of every scene
 #   bench-soc      per scene: instructions, cycles, CPI, refills, GPU cycles, fps (tools/bench_soc.py)
+#   soc-smoke      the bare-metal smoke program (tests/soc/smoke.c, soc_rtl/soc.mk) on socsim
 #
 # The RTL's sources and flags come from soc_rtl/soc.mk (SOC_VFLAGS: gpu_rtl/files.f, the core from
 # the venv, soc_rtl/files.f, their lint waivers), included before this file.
@@ -66,7 +67,7 @@ $(eval $(call SOCSIM_BUILD_RULES,$(SOCSIM_DIR),SOCSIM_CMD,))
 $(eval $(call SOCSIM_BUILD_RULES,$(SOCSIM_ULX3S_DIR),SOCSIM_ULX3S_CMD,$(ULX3S_SIM_FILES) \
   $(shell sed -e 's://.*::' $(ULX3S_SIM_FILES)) cosim/soc/tmds_decoder.cpp))
 
-.PHONY: socsim socsim-ulx3s run-soc soc-fw soc-test-deps bench-soc
+.PHONY: socsim socsim-ulx3s run-soc soc-fw soc-test-deps bench-soc soc-smoke
 socsim: $(SOCSIM)
 socsim-ulx3s: $(SOCSIM_ULX3S)
 
@@ -83,6 +84,12 @@ run-soc: $(SOCSIM) soc-fw
 soc-test-deps: $(SOCSIM)
 	+@$(SOC_FW_MAKE) -f Makefile -f tests/soc/tests.mk soc-test-elfs
 test-quick: soc-test-deps $(SOCSIM_ULX3S)
+
+# The smoke program's RAM image on socsim, answering its UART prompts (tests/soc/smoke.sh); make
+# test's suite rtl-soc-smoke runs it, so make test's build phase makes the image as well.
+soc-smoke: $(SOCSIM) $(SOC_SMOKE_HEX)
+	@BUILD=$(BUILD) SOCSIM=$(SOCSIM) SOC_SMOKE_HEX=$(SOC_SMOKE_HEX) bash tests/soc/smoke.sh
+test-quick: $(SOC_SMOKE_HEX)
 
 # The benchmark builds (firmware.mk's FW_BENCH_FRAMES frames) of every scene, each on socsim, one
 # table (tools/bench_soc.py).

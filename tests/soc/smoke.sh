@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# The SoC smoke test: tests/soc/smoke.c on the Verilated soc_top (tests/soc/soc_tb.cpp), RAM loaded
-# at run time. Checks the UART text decoded at the real baud rate, every "ok" line (registers, the
-# GPU's ID, bus errors of each kind, timer, UART receive, overrun and framing error), no failure
-# line, a VGA frame, the LEDs and SYS EXIT = 0. `make soc-smoke` builds both and runs it (with
-# SOC_SIM, SOC_SMOKE_HEX and BUILD set).
+# The SoC smoke test: tests/soc/smoke.c on the Verilated soc_top (socsim, cosim/soc/socsim.cpp, its
+# RAM image loaded at run time with --hex). Checks the UART text decoded at the real baud rate, every
+# "ok" line (registers, the GPU's ID, bus errors of each kind, timer, UART receive, overrun and
+# framing error), the three prompts answered, no failure line, a VGA frame, the LEDs and SYS
+# EXIT = 0. `make soc-smoke` builds both and runs it (with SOCSIM, SOC_SMOKE_HEX and BUILD set).
 source "$(dirname "$0")/../lib.sh"
-need SOC_SIM SOC_SMOKE_HEX
-need_file "$SOC_SIM" "$SOC_SMOKE_HEX"
+need SOCSIM SOC_SMOKE_HEX
+need_file "$SOCSIM" "$SOC_SMOKE_HEX"
 work=$(fresh_dir soc-smoke)
 
 # The overrun burst (smoke.c's RX_BURST): the RX FIFO's depth from the contract and 4 bytes more,
@@ -16,12 +16,10 @@ depth=$(sed -n 's/^#define SOC_UART_RX_FIFO_DEPTH *\([0-9]*\)u.*/\1/p' contract/
 [ -n "$depth" ] || fail "no SOC_UART_RX_FIFO_DEPTH in contract/soc_map.h"
 burst=$(awk -v n=$((depth + 4)) 'BEGIN { for (i = 0; i < n; i++) printf "%c", 65 + i % 26 }')
 
-run_to "$work/uart.txt" 240 "$SOC_SIM" +ram_init="$SOC_SMOKE_HEX" --max-cycles 30000000 --reply 'rx?\n=Z' \
-    --reply "burst?\\n=$burst" --reply 'break?\n=\f'
-# The summary (key=value) is on stderr, interleaved after the text: split it off.
-grep -E '^[a-z_]+=' "$work/uart.txt" >"$work/summary.txt" || true
-cat "$work/uart.txt"
-expect_status 0 "soc_sim (its status is the SoC's exit code; 124: no exit in time)"
+run_to "$work/out.txt" 240 "$SOCSIM" --hex "$SOC_SMOKE_HEX" --frames "$work/frames" --uart-log "$work/uart.txt" \
+    --summary "$work/summary.txt" --max-cycles 30e6 --reply 'rx?\n=Z' --reply "burst?\\n=$burst" --reply 'break?\n=\f'
+cat "$work/out.txt"
+expect_status 0 "socsim (its status is the SoC's exit code; 1: a harness error or no exit in time)"
 expect_no_line '^soc: FAIL' "$work/uart.txt"
 for line in '^soc: hello$' '^soc: id 534f4330 clk 50000000 ram 196608 div 434$' '^soc: gpu id 47505530$' \
             '^soc: load fault ok' '^soc: store fault ok' '^soc: refill fault ok \(addr 00030000, 8 refused\)' \
@@ -30,8 +28,10 @@ for line in '^soc: hello$' '^soc: id 534f4330 clk 50000000 ram 196608 div 434$' 
     expect_line "$line" "$work/uart.txt"
 done
 expect_eq "$(summary exit_valid "$work/summary.txt")" 1 "exit_valid"
-expect_eq "$(summary uart_framing_errors "$work/summary.txt")" 0 "UART framing errors seen by the testbench"
-[ "$(summary vga_frames "$work/summary.txt")" -ge 1 ] || fail "no VGA vertical sync from the GPU"
+expect_eq "$(summary firmware_status "$work/summary.txt")" 0 "SYS EXIT code in the summary"
+expect_eq "$(summary uart_replies "$work/summary.txt")" 3 "prompts answered (rx?, burst?, break?)"
+expect_eq "$(summary uart_framing_errors "$work/summary.txt")" 0 "UART framing errors seen by socsim's receiver"
+[ "$(summary vga_vsyncs "$work/summary.txt")" -ge 1 ] || fail "no VGA vertical sync from the GPU"
 [ "$(summary leds "$work/summary.txt")" = 0xa5 ] || fail "leds: $(summary leds "$work/summary.txt"), expected 0xa5"
 pass "soc smoke: $(grep -c ' ok' "$work/uart.txt") checks ok, exit 0 after $(summary cycles "$work/summary.txt") cycles" \
-     "($(summary cycles_per_cpu_second "$work/summary.txt") cycles per CPU second)"
+     "($(grep -o '[0-9.]* M cycles/s$' "$work/out.txt"))"
