@@ -118,7 +118,7 @@ suite scene-watchdog          15 bash tests/scenes/watchdog.sh
 suite scene-keys-burst         9 bash tests/scenes/keys_burst.sh
 suite scene-host-features     13 bash tests/scenes/host_features.sh
 suite scene-lean-build        12 bash tests/scenes/lean_build.sh
-suite soc-vs-cosim            75 bash tests/soc/vs_cosim.sh
+suite soc-vs-cosim            55 bash tests/soc/vs_cosim.sh
 suite soc-determinism         12 bash tests/soc/determinism.sh
 suite soc-watchdog             7 bash tests/soc/watchdog.sh
 suite soc-bus-error            1 bash tests/soc/bus_error.sh
