@@ -148,13 +148,14 @@ FW_PNG_LIBS   := $(or $(shell pkg-config --libs libpng 2>/dev/null),-lpng)
 # MODEL (any file assimp reads, or a .gmsh) converted by tools/meshconv to the build's capacity
 # (FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES: every object sees them, scenes/model/model.h), simplified
 # to it where larger, then assembled into an object of its own (.incbin) that an ELF links where
-# its scene set has the model scene. The file's name carries the capacity, so builds of two
-# capacities coexist.
+# its scene set has the model scene.
 MODEL              ?= /usr/share/assimp/models/OBJ/spider.obj
 FW_MODEL_MAX_VERTS ?= 1024
 FW_MODEL_MAX_FACES ?= 1024
 FW_MODEL_DEFS      := -DFW_MODEL_MAX_VERTS=$(FW_MODEL_MAX_VERTS)u -DFW_MODEL_MAX_FACES=$(FW_MODEL_MAX_FACES)u
-FW_MODEL_TAG       := $(basename $(notdir $(MODEL)))-v$(FW_MODEL_MAX_VERTS)f$(FW_MODEL_MAX_FACES)
+# The name carries the file's, a checksum of its full path (two models of one name in different
+# folders are two files here, never one stale conversion) and the capacity.
+FW_MODEL_TAG       := $(basename $(notdir $(MODEL)))-$(shell printf '%s' '$(abspath $(MODEL))' | cksum | cut -d' ' -f1)-v$(FW_MODEL_MAX_VERTS)f$(FW_MODEL_MAX_FACES)
 FW_MODEL_GMSH      := $(BUILD)/model/$(FW_MODEL_TAG).gmsh
 FW_MODEL_OBJ       := $(FW_DIR)/model-blob/$(FW_MODEL_TAG).o
 FW_MODEL_HOST_OBJ  := $(BUILD)/fw-host/model-blob/$(FW_MODEL_TAG).o

@@ -608,7 +608,8 @@ int app_run(void)
 #if FW_WITH_UPLOAD
         {
             /* The upload's answers go out at once, before the frame is drawn: the sender's next
-             * frames then arrive during this frame's GPU wait. Printing is not counted. */
+             * frames then arrive during this frame's GPU wait. Its instructions and cycles join
+             * the excluded wait: printing is not counted. */
             const uint64_t p0 = bsp_instret();
             const uint64_t q0 = bsp_cycles();
 

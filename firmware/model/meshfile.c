@@ -7,11 +7,9 @@
 
 #include "math/real.h"
 #include "model/crc32.h"
+#include "model/le.h"
 #include "render/mesh.h"
 
-static uint32_t rd16(const uint8_t *p) { return (uint32_t)p[0] | ((uint32_t)p[1] << 8); }
-static int32_t rd16s(const uint8_t *p) { return (int32_t)(int16_t)rd16(p); }
-static uint32_t rd32(const uint8_t *p) { return rd16(p) | (rd16(p + 2) << 16); }
 
 static int meshfile_fail(struct meshfile_info *info, int err, uint32_t item, uint32_t value,
                          uint32_t limit)
@@ -33,7 +31,7 @@ static int meshfile_check_face(const uint8_t *f, uint32_t fi, uint32_t verts,
     const int64_t tol = one2 >> MESHFILE_NORMAL_TOLERANCE_SHIFT;
 
     for (uint32_t k = 0; k < 3u; k++) {
-        v[k] = rd16(f + 2u * k);
+        v[k] = le16_at(f + 2u * k);
         if (v[k] >= verts) {
             return meshfile_fail(info, MESHFILE_E_INDEX, fi, v[k], verts);
         }
@@ -42,7 +40,7 @@ static int meshfile_check_face(const uint8_t *f, uint32_t fi, uint32_t verts,
         return meshfile_fail(info, MESHFILE_E_REPEATED_INDEX, fi, 0, 0);
     }
     for (uint32_t k = 0; k < 3u; k++) {
-        const int32_t c = rd16s(f + 6u + 2u * k);
+        const int32_t c = le16s_at(f + 6u + 2u * k);
 
         if (c > MESHFILE_NORMAL_ONE || c < -MESHFILE_NORMAL_ONE) {
             return meshfile_fail(info, MESHFILE_E_NORMAL, fi, (uint32_t)c, 0);
@@ -61,8 +59,10 @@ static int meshfile_check_face(const uint8_t *f, uint32_t fi, uint32_t verts,
     return MESHFILE_OK;
 }
 
-int meshfile_check(const uint8_t *buf, size_t len, uint32_t max_verts, uint32_t max_faces,
-                   struct meshfile_info *info)
+/* meshfile_check's rules; known_crc: the CRC of buf[0 .. len-4) if the caller has it, else NULL. */
+static int meshfile_check_rules(const uint8_t *buf, size_t len, uint32_t max_verts,
+                                uint32_t max_faces, const uint32_t *known_crc,
+                                struct meshfile_info *info)
 {
     uint32_t verts;
     uint32_t faces;
@@ -81,19 +81,19 @@ int meshfile_check(const uint8_t *buf, size_t len, uint32_t max_verts, uint32_t 
         buf[3] != MESHFILE_MAGIC3) {
         return meshfile_fail(info, MESHFILE_E_MAGIC, 0, 0, 0);
     }
-    if (rd16(buf + MESHFILE_OFF_VERSION) != MESHFILE_VERSION) {
-        return meshfile_fail(info, MESHFILE_E_VERSION, 0, rd16(buf + MESHFILE_OFF_VERSION),
+    if (le16_at(buf + MESHFILE_OFF_VERSION) != MESHFILE_VERSION) {
+        return meshfile_fail(info, MESHFILE_E_VERSION, 0, le16_at(buf + MESHFILE_OFF_VERSION),
                              MESHFILE_VERSION);
     }
-    if (rd16(buf + MESHFILE_OFF_FRAC_BITS) != MESHFILE_FRAC_BITS) {
-        return meshfile_fail(info, MESHFILE_E_FRAC_BITS, 0, rd16(buf + MESHFILE_OFF_FRAC_BITS),
+    if (le16_at(buf + MESHFILE_OFF_FRAC_BITS) != MESHFILE_FRAC_BITS) {
+        return meshfile_fail(info, MESHFILE_E_FRAC_BITS, 0, le16_at(buf + MESHFILE_OFF_FRAC_BITS),
                              MESHFILE_FRAC_BITS);
     }
-    if (rd32(buf + MESHFILE_OFF_FLAGS) != 0u) {
-        return meshfile_fail(info, MESHFILE_E_FLAGS, 0, rd32(buf + MESHFILE_OFF_FLAGS), 0);
+    if (le32_at(buf + MESHFILE_OFF_FLAGS) != 0u) {
+        return meshfile_fail(info, MESHFILE_E_FLAGS, 0, le32_at(buf + MESHFILE_OFF_FLAGS), 0);
     }
-    verts = rd32(buf + MESHFILE_OFF_VERT_COUNT);
-    faces = rd32(buf + MESHFILE_OFF_FACE_COUNT);
+    verts = le32_at(buf + MESHFILE_OFF_VERT_COUNT);
+    faces = le32_at(buf + MESHFILE_OFF_FACE_COUNT);
     info->verts = verts;
     info->faces = faces;
     if (verts < 3u || verts > max_verts || verts > 65536u) {
@@ -107,25 +107,40 @@ int meshfile_check(const uint8_t *buf, size_t len, uint32_t max_verts, uint32_t 
     if (len != (size_t)size) {
         return meshfile_fail(info, MESHFILE_E_SIZE, 0, (uint32_t)len, size);
     }
-    stored = rd32(buf + size - MESHFILE_CRC_BYTES);
-    crc = crc32_update(0, buf, size - MESHFILE_CRC_BYTES);
+    stored = le32_at(buf + size - MESHFILE_CRC_BYTES);
+    crc = (known_crc != 0) ? *known_crc : crc32_update(0, buf, size - MESHFILE_CRC_BYTES);
     if (stored != crc) {
         return meshfile_fail(info, MESHFILE_E_CRC, 0, stored, crc);
     }
     for (uint32_t k = 0; k < 3u; k++) {
-        info->box_lo[k] = (int16_t)rd16s(buf + MESHFILE_OFF_BOX_LO + 2u * k);
-        info->box_hi[k] = (int16_t)rd16s(buf + MESHFILE_OFF_BOX_HI + 2u * k);
+        info->box_lo[k] = (int16_t)le16s_at(buf + MESHFILE_OFF_BOX_LO + 2u * k);
+        info->box_hi[k] = (int16_t)le16s_at(buf + MESHFILE_OFF_BOX_HI + 2u * k);
         if (info->box_lo[k] > info->box_hi[k]) {
             return meshfile_fail(info, MESHFILE_E_BOX, k, 0, 0);
         }
     }
     p = buf + MESHFILE_HEADER_BYTES;
-    for (uint32_t vi = 0; vi < verts; vi++, p += MESHFILE_VERT_BYTES) {
-        for (uint32_t k = 0; k < 3u; k++) {
-            const int32_t c = rd16s(p + 2u * k);
+    {
+        int32_t lo[3] = {INT16_MAX, INT16_MAX, INT16_MAX};
+        int32_t hi[3] = {INT16_MIN, INT16_MIN, INT16_MIN};
 
-            if (c < info->box_lo[k] || c > info->box_hi[k]) {
-                return meshfile_fail(info, MESHFILE_E_VERTEX_OUTSIDE, vi, k, 0);
+        for (uint32_t vi = 0; vi < verts; vi++, p += MESHFILE_VERT_BYTES) {
+            for (uint32_t k = 0; k < 3u; k++) {
+                const int32_t c = le16s_at(p + 2u * k);
+
+                /* |c| < 8 units: -32768 (-8.0) is outside, so negating a coordinate stays in
+                 * range. */
+                if (c < info->box_lo[k] || c > info->box_hi[k] || c == INT16_MIN) {
+                    return meshfile_fail(info, MESHFILE_E_VERTEX_OUTSIDE, vi, k, 0);
+                }
+                lo[k] = (c < lo[k]) ? c : lo[k];
+                hi[k] = (c > hi[k]) ? c : hi[k];
+            }
+        }
+        /* The box is the vertices' own, not merely one that holds them. */
+        for (uint32_t k = 0; k < 3u; k++) {
+            if (lo[k] != info->box_lo[k] || hi[k] != info->box_hi[k]) {
+                return meshfile_fail(info, MESHFILE_E_BOX, k, 0, 0);
             }
         }
     }
@@ -140,6 +155,18 @@ int meshfile_check(const uint8_t *buf, size_t len, uint32_t max_verts, uint32_t 
     info->value = 0;
     info->limit = 0;
     return MESHFILE_OK;
+}
+
+int meshfile_check(const uint8_t *buf, size_t len, uint32_t max_verts, uint32_t max_faces,
+                   struct meshfile_info *info)
+{
+    return meshfile_check_rules(buf, len, max_verts, max_faces, 0, info);
+}
+
+int meshfile_check_known_crc(const uint8_t *buf, size_t len, uint32_t max_verts,
+                             uint32_t max_faces, uint32_t body_crc, struct meshfile_info *info)
+{
+    return meshfile_check_rules(buf, len, max_verts, max_faces, &body_crc, info);
 }
 
 void meshfile_message(int err, const struct meshfile_info *info, char *out, size_t cap)
@@ -186,10 +213,11 @@ void meshfile_message(int err, const struct meshfile_info *info, char *out, size
         snprintf(out, cap, "CRC 0x%08lx stored, 0x%08lx computed", value, limit);
         break;
     case MESHFILE_E_BOX:
-        snprintf(out, cap, "box: lo > hi on %c", axis[item % 3u]);
+        snprintf(out, cap, "box: not the vertices' smallest and largest %c", axis[item % 3u]);
         break;
     case MESHFILE_E_VERTEX_OUTSIDE:
-        snprintf(out, cap, "vertex %lu: %c outside the header's box", item, axis[value % 3u]);
+        snprintf(out, cap, "vertex %lu: %c outside the header's box or at -8.0", item,
+                 axis[value % 3u]);
         break;
     case MESHFILE_E_INDEX:
         snprintf(out, cap, "face %lu: index %lu out of range (%lu vertices)", item, value, limit);
@@ -225,20 +253,20 @@ bool meshfile_load(const uint8_t *buf, const struct meshfile_info *info, struct 
     }
     /* Q3.12 -> Q16.16 is a shift by 4 (|c| < 8 units: far inside the +-8192 model range). */
     for (uint32_t vi = 0; vi < info->verts; vi++, p += MESHFILE_VERT_BYTES) {
-        mesh_add_vertex(m, vec3_make(real_from_q16(rd16s(p) * 16),
-                                     real_from_q16(rd16s(p + 2) * 16),
-                                     real_from_q16(rd16s(p + 4) * 16)));
+        mesh_add_vertex(m, vec3_make(real_from_q16(le16s_at(p) * 16),
+                                     real_from_q16(le16s_at(p + 2) * 16),
+                                     real_from_q16(le16s_at(p + 4) * 16)));
     }
     /* Face fi takes normal fi: Q1.14 -> Q16.16 is a shift by 2 (|n_i| <= 1). */
     for (uint32_t fi = 0; fi < info->faces; fi++, p += MESHFILE_FACE_BYTES) {
         uvec3 n;
         uint16_t ni;
 
-        n.x = unit_from_q16(rd16s(p + 6) * 4);
-        n.y = unit_from_q16(rd16s(p + 8) * 4);
-        n.z = unit_from_q16(rd16s(p + 10) * 4);
+        n.x = unit_from_q16(le16s_at(p + 6) * 4);
+        n.y = unit_from_q16(le16s_at(p + 8) * 4);
+        n.z = unit_from_q16(le16s_at(p + 10) * 4);
         ni = mesh_add_normal(m, n);
-        mesh_add_face_normal(m, (uint16_t)rd16(p), (uint16_t)rd16(p + 2), (uint16_t)rd16(p + 4),
+        mesh_add_face_normal(m, (uint16_t)le16_at(p), (uint16_t)le16_at(p + 2), (uint16_t)le16_at(p + 4),
                              ni, p[12]);
         if ((p[13] & MESHFILE_FACE_FLAG_QUAD) != 0u) {
             m->faces[m->face_count - 1u].flags |= MESH_FACE_QUAD;

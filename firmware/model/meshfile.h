@@ -70,8 +70,9 @@ enum meshfile_error {
     MESHFILE_E_FACE_COUNT,    /* value: count, limit: the build's capacity */
     MESHFILE_E_SIZE,          /* value: the file's length, limit: what its counts make it */
     MESHFILE_E_CRC,           /* value: the stored CRC, limit: the computed one */
-    MESHFILE_E_BOX,           /* item: the axis whose box_lo > box_hi */
-    MESHFILE_E_VERTEX_OUTSIDE,/* item: the vertex, value: its axis */
+    MESHFILE_E_BOX,           /* item: the axis whose box is not the vertices' smallest and
+                               * largest coordinate */
+    MESHFILE_E_VERTEX_OUTSIDE,/* item: the vertex, value: its axis (outside the box, or -8.0) */
     MESHFILE_E_INDEX,         /* item: the face, value: the index, limit: vert_count */
     MESHFILE_E_REPEATED_INDEX,/* item: the face (two of its corners are one vertex) */
     MESHFILE_E_NORMAL,        /* item: the face (a component over 1.0 or |n| not 1) */
@@ -96,6 +97,11 @@ struct meshfile_info {
  * outside buf; O(len). */
 int meshfile_check(const uint8_t *buf, size_t len, uint32_t max_verts, uint32_t max_faces,
                    struct meshfile_info *info);
+
+/* The same, for a caller that has just computed the CRC of buf[0 .. len-4) (body_crc): the
+ * upload's COMMIT, which checks the transfer's CRC in the same pass. Meaningless for len < 36. */
+int meshfile_check_known_crc(const uint8_t *buf, size_t len, uint32_t max_verts,
+                             uint32_t max_faces, uint32_t body_crc, struct meshfile_info *info);
 
 /* A one-line reason for err ("face 12: index 4000 out of range (1200 vertices)"), NUL-terminated
  * within cap bytes. */

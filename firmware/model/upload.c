@@ -7,11 +7,10 @@
 #include <string.h>
 
 #include "model/crc32.h"
+#include "model/le.h"
 
 enum upload_state { RX_HUNT, RX_SOF1, RX_HEAD, RX_PAYLOAD, RX_CRC };
 
-static uint32_t rd16(const uint8_t *p) { return (uint32_t)p[0] | ((uint32_t)p[1] << 8); }
-static uint32_t rd32(const uint8_t *p) { return rd16(p) | (rd16(p + 2) << 16); }
 
 void upload_init(struct upload_rx *rx, uint8_t *buf, uint32_t cap, uint8_t *map,
                  uint32_t map_bytes, uint32_t max_verts, uint32_t max_faces)
@@ -66,29 +65,38 @@ static void upload_begin(struct upload_rx *rx, uint8_t session, uint16_t seq, co
         upload_respond(rx, UPLOAD_R_NAK, UPLOAD_REASON_LENGTH, session, seq, 0, 0);
         return;
     }
-    total = rd32(p);
-    total_crc = rd32(p + 4);
-    chunk = rd16(p + 8);
+    total = le32_at(p);
+    total_crc = le32_at(p + 4);
+    chunk = le16_at(p + 8);
+    if (session == 0u) {
+        /* Sessions are 1..255: 0 is "no transfer" here and could never be continued. */
+        upload_respond(rx, UPLOAD_R_NAK, UPLOAD_REASON_SESSION, session, seq, 0, 0);
+        return;
+    }
     if (session == rx->session && total == rx->total && total_crc == rx->total_crc &&
         chunk == rx->chunk) {
         upload_respond(rx, UPLOAD_R_ACK, 0, session, seq, 0, 0);  /* a resent BEGIN */
         return;
     }
-    if (rx->session != 0u) {
-        upload_respond(rx, UPLOAD_R_ABANDONED, 0, rx->session, 0, rx->stray, 0);
-        upload_close(rx);
-    }
+    /* Refusals first: a BEGIN that is refused leaves an open transfer and the staging buffer as
+     * they were. */
     if (chunk < UPLOAD_CHUNK_MIN || chunk > UPLOAD_CHUNK_MAX) {
         upload_respond(rx, UPLOAD_R_REJECT, UPLOAD_REASON_CHUNK, session, seq, chunk, 0);
         return;
     }
-    if (total == 0u || total > rx->cap) {
+    if (total < MESHFILE_BYTES(3u, 1u) || total > rx->cap) {
         upload_respond(rx, UPLOAD_R_REJECT, UPLOAD_REASON_CAPACITY, session, seq, total, rx->cap);
         return;
     }
+    /* Another sender's transfer is replaced; the same sender starting over is not "abandoned". */
+    if (rx->session != 0u && rx->session != session) {
+        upload_respond(rx, UPLOAD_R_ABANDONED, 0, rx->session, 0, rx->stray, 0);
+    }
+    upload_close(rx);
     /* The staging buffer is about to be overwritten: it no longer holds the committed file. */
     rx->staging_valid = false;
     rx->ready = false;
+    rx->committed_session = 0;   /* no repeated COMMIT may be answered with the old file's ok */
     rx->session = session;
     rx->total = total;
     rx->total_crc = total_crc;
@@ -111,7 +119,7 @@ static void upload_data(struct upload_rx *rx, uint8_t session, uint16_t seq, con
         upload_respond(rx, UPLOAD_R_NAK, UPLOAD_REASON_LENGTH, session, seq, 0, 0);
         return;
     }
-    offset = rd32(p);
+    offset = le32_at(p);
     if (offset % rx->chunk != 0u || offset >= rx->total) {
         upload_respond(rx, UPLOAD_R_NAK, UPLOAD_REASON_OFFSET, session, seq, offset, 0);
         return;
@@ -135,6 +143,7 @@ static void upload_data(struct upload_rx *rx, uint8_t session, uint16_t seq, con
 
 static void upload_commit(struct upload_rx *rx, uint8_t session, uint16_t seq)
 {
+    uint32_t body_crc;
     int rc;
 
     if (rx->received != rx->chunks) {
@@ -143,12 +152,17 @@ static void upload_commit(struct upload_rx *rx, uint8_t session, uint16_t seq)
         upload_close(rx);
         return;
     }
-    if (crc32_update(0, rx->buf, rx->total) != rx->total_crc) {
+    /* One pass over the file for both CRCs: the file's own covers all but its last four bytes,
+     * BEGIN's the whole file, which is the same CRC carried on over those four. */
+    body_crc = crc32_update(0, rx->buf, rx->total - MESHFILE_CRC_BYTES);
+    if (crc32_update(body_crc, rx->buf + rx->total - MESHFILE_CRC_BYTES, MESHFILE_CRC_BYTES) !=
+        rx->total_crc) {
         upload_respond(rx, UPLOAD_R_REJECT, UPLOAD_REASON_CRC, session, seq, 0, 0);
         upload_close(rx);
         return;
     }
-    rc = meshfile_check(rx->buf, rx->total, rx->max_verts, rx->max_faces, &rx->info);
+    rc = meshfile_check_known_crc(rx->buf, rx->total, rx->max_verts, rx->max_faces, body_crc,
+                                  &rx->info);
     if (rc != MESHFILE_OK) {
         meshfile_message(rc, &rx->info, rx->message, sizeof rx->message);
         upload_respond(rx, UPLOAD_R_REJECT, UPLOAD_REASON_MESH, session, seq, (uint32_t)rc, 0);
@@ -167,7 +181,7 @@ static void upload_frame(struct upload_rx *rx)
 {
     const uint8_t type = rx->head[0];
     const uint8_t session = rx->head[1];
-    const uint16_t seq = (uint16_t)rd16(&rx->head[2]);
+    const uint16_t seq = (uint16_t)le16_at(&rx->head[2]);
 
     rx->frames_ok++;
     rx->quiet = UPLOAD_QUIET_FRAMES;
@@ -182,7 +196,7 @@ static void upload_frame(struct upload_rx *rx)
     }
     if (rx->session == 0u || session != rx->session) {
         if (type == UPLOAD_COMMIT && session != 0u && session == rx->committed_session &&
-            rx->session == 0u) {
+            rx->session == 0u && rx->staging_valid) {
             /* The sender missed our ok: say it again. */
             upload_respond(rx, UPLOAD_R_OK, 0, session, seq, rx->info.faces, rx->info.verts);
         } else {
@@ -245,7 +259,7 @@ bool upload_feed(struct upload_rx *rx, uint8_t byte)
     case RX_HEAD:
         rx->head[rx->pos++] = byte;
         if (rx->pos == sizeof rx->head) {
-            rx->len = (uint16_t)rd16(&rx->head[4]);
+            rx->len = (uint16_t)le16_at(&rx->head[4]);
             rx->pos = 0;
             if (rx->len > UPLOAD_MAX_PAYLOAD) {
                 rx->frames_bad++;
@@ -270,7 +284,7 @@ bool upload_feed(struct upload_rx *rx, uint8_t byte)
                                               rx->payload, rx->len);
 
             rx->state = RX_HUNT;
-            if (crc == rd32(rx->crc)) {
+            if (crc == le32_at(rx->crc)) {
                 upload_frame(rx);
             } else {
                 rx->frames_bad++;

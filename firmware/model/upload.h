@@ -31,10 +31,12 @@
 
 enum upload_type { UPLOAD_BEGIN = 1, UPLOAD_DATA = 2, UPLOAD_COMMIT = 3, UPLOAD_ABORT = 4 };
 
-/* Frames without a valid frame before an open transfer is abandoned (3 s at 60 frames/s), and
- * before a partly received frame is dropped (a sender that stopped mid-frame). */
+/* Frames without a valid frame before an open transfer is abandoned: 15 s at 60 frames/s, longer
+ * than the host tool's resend timeout (10 s by default) so that a frame lost at the very end of a
+ * window, which nothing after it can reveal, is resent before the receiver gives up; and frames
+ * without a byte before a partly received frame is dropped (a sender that stopped mid-frame). */
 #ifndef UPLOAD_TIMEOUT_FRAMES
-#define UPLOAD_TIMEOUT_FRAMES 180u
+#define UPLOAD_TIMEOUT_FRAMES 900u
 #endif
 #define UPLOAD_PARTIAL_TIMEOUT_FRAMES 30u
 /* Frames after the last protocol byte (a frame, a SOF or a byte >= 0x80) in which stray bytes are

@@ -109,7 +109,22 @@ void test_meshfile_rules(void)
     put16(f + 22, (uint32_t)(uint16_t)-16384);
     refresh_crc(f, size);
     CHECK_EQ(meshfile_check(f, size, 8, 12, &info), MESHFILE_E_BOX);
-    /* Size: two bytes more than the counts make it (CRC over all but the last four). */
+    /* A box that holds the vertices but is not theirs: lo.x lower than any vertex. */
+    memcpy(f, good, size);
+    put16(f + 16, (uint32_t)(uint16_t)-20000);
+    refresh_crc(f, size);
+    CHECK_EQ(meshfile_check(f, size, 8, 12, &info), MESHFILE_E_BOX);
+    /* A coordinate of -8.0 (int16 -32768), with the box made to match: outside Q3.12's |c| < 8. */
+    memcpy(f, good, size);
+    put16(f + 16, 0x8000u);
+    put16(f + 32, 0x8000u);
+    refresh_crc(f, size);
+    CHECK_EQ(meshfile_check(f, size, 8, 12, &info), MESHFILE_E_VERTEX_OUTSIDE);
+    /* The CRC the caller computed, as the upload's COMMIT passes it. */
+    CHECK_EQ(meshfile_check_known_crc(good, size, 8, 12, crc32_update(0, good, size - 4u), &info),
+             MESHFILE_OK);
+    CHECK_EQ(meshfile_check_known_crc(good, size, 8, 12, 1234u, &info), MESHFILE_E_CRC);
+        /* Size: two bytes more than the counts make it (CRC over all but the last four). */
     memcpy(f, good, size - 4u);
     f[size - 4u] = 0;
     f[size - 3u] = 0;
@@ -377,6 +392,56 @@ void test_upload_refusals(void)
     feed(fr, begin_frame(fr, 10, size, crc, 64));
     feed(fr, begin_frame(fr, 11, size, crc, 64));
     CHECK_STR(responses(), "@up ack 10 0|@up abandoned 10 (0 stray bytes ignored)|@up ack 11 0");
+}
+
+/* Sessions: 0 is refused; a refused BEGIN leaves an open transfer alone; a sender starting its own
+ * session over is not told it was abandoned; a repeated COMMIT is answered with ok only while the
+ * committed file is still in the buffer. */
+void test_upload_sessions(void)
+{
+    static uint8_t file[512];
+    uint8_t fr[600];
+    const uint32_t size = cube_file(file);
+    const uint32_t crc = crc32_update(0, file, size);
+    const uint32_t chunks = (size + 63u) / 64u;
+
+    rx_reset();
+    feed(fr, begin_frame(fr, 0, size, crc, 64));
+    CHECK_STR(responses(), "@up nak 0 0 session");
+    CHECK_EQ(t_rx.session, 0);
+    /* Commit session 7. */
+    feed(fr, begin_frame(fr, 7, size, crc, 64));
+    for (uint32_t k = 0; k < chunks; k++) {
+        feed(fr, data_frame(fr, 7, file, size, 64, k));
+    }
+    feed(fr, frame(fr, UPLOAD_COMMIT, 7, 0, 0, 0));
+    (void)responses();
+    CHECK(t_rx.staging_valid);
+    /* Session 7 again, with another file that fails: its repeated COMMIT must not get the old ok. */
+    feed(fr, begin_frame(fr, 7, size, crc ^ 1u, 64));
+    CHECK_STR(responses(), "@up ack 7 0");
+    for (uint32_t k = 0; k < chunks; k++) {
+        feed(fr, data_frame(fr, 7, file, size, 64, k));
+    }
+    (void)responses();
+    feed(fr, frame(fr, UPLOAD_COMMIT, 7, 0, 0, 0));
+    CHECK_STR(responses(), "@up reject 7 crc: the file's CRC does not match BEGIN's");
+    feed(fr, frame(fr, UPLOAD_COMMIT, 7, 0, 0, 0));
+    CHECK_STR(responses(), "@up nak 7 0 state");
+    /* An open transfer survives a refused BEGIN of another sender. */
+    feed(fr, begin_frame(fr, 8, size, crc, 64));
+    feed(fr, data_frame(fr, 8, file, size, 64, 0));
+    (void)responses();
+    feed(fr, begin_frame(fr, 9, size, crc, 32));
+    CHECK_STR(responses(), "@up reject 9 chunk: 32 bytes (64 to 512)");
+    feed(fr, begin_frame(fr, 9, T_CAP + 1u, crc, 64));
+    CHECK(strncmp(responses(), "@up reject 9 capacity", 21) == 0);
+    CHECK_EQ(t_rx.session, 8);
+    CHECK_EQ(t_rx.received, 1);
+    /* Session 8 starting over with other parameters: a fresh transfer, not "abandoned". */
+    feed(fr, begin_frame(fr, 8, size, crc, 128));
+    CHECK_STR(responses(), "@up ack 8 0");
+    CHECK_EQ(t_rx.received, 0);
 }
 
 /* Responses beyond a frame's queue are counted as lost, not written past it. */

@@ -127,6 +127,7 @@ void unit_srand(uint32_t seed);
     X(test_upload_transfer)           \
     X(test_upload_line_faults)        \
     X(test_upload_refusals)           \
+    X(test_upload_sessions)           \
     X(test_upload_response_queue)
 
 #define UNIT_DECLARE(name) void name(void);
