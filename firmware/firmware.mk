@@ -498,8 +498,19 @@ fw-force:
 
 # ---- the upload receiver on a pty, for tools/mesh_upload.py's tests (tests/upload/) -------------
 UPLOAD_PEER := $(BUILD)/tests/upload_peer
-$(UPLOAD_PEER): tests/upload/upload_peer.c $(addprefix firmware/model/,crc32.c meshfile.c upload.c) \
-                firmware/render/mesh.c firmware/math/vec.c firmware/math/fixed.c \
-                $(wildcard firmware/model/*.h)
+UPLOAD_PEER_SRCS := tests/upload/upload_peer.c $(addprefix firmware/model/,crc32.c meshfile.c upload.c) \
+                    firmware/render/mesh.c firmware/math/vec.c firmware/math/fixed.c
+$(UPLOAD_PEER): $(UPLOAD_PEER_SRCS) $(wildcard firmware/model/*.h)
 	@mkdir -p $(@D)
 	$(HOST_CC) $(HOST_CFLAGS) -Ifirmware -Icontract $(FW_MODEL_DEFS) $(filter %.c,$^) -o $@ -lm
+
+# The same at a 2,048-face capacity, for `make bench-upload`'s larger model.
+UPLOAD_PEER_2048 := $(BUILD)/tests/upload_peer-2048
+$(UPLOAD_PEER_2048): $(filter-out %.h,$(UPLOAD_PEER_SRCS)) $(wildcard firmware/model/*.h)
+	@mkdir -p $(@D)
+	$(HOST_CC) $(HOST_CFLAGS) -Ifirmware -Icontract -DFW_MODEL_MAX_VERTS=2048u -DFW_MODEL_MAX_FACES=2048u \
+	  $(filter %.c,$^) -o $@ -lm
+
+.PHONY: bench-upload
+bench-upload: $(UPLOAD_PEER) $(UPLOAD_PEER_2048) $(MESHCONV)
+	@bash tools/bench_upload.sh $(BUILD) $(UPLOAD_PEER) $(UPLOAD_PEER_2048) $(MESHCONV)
