@@ -74,6 +74,17 @@ count() {
     grep -cE -- "$1" "$2" || true
 }
 
+# wait_for_pty LINK WHAT LOG: wait up to 20 s for a simulator's --uart-pty link, or fail naming
+# WHAT and the tail of its LOG.
+wait_for_pty() {
+    local _
+    for _ in $(seq 100); do
+        [ -e "$1" ] && return 0
+        sleep 0.2
+    done
+    fail "$2 made no pty ($(tail -n 3 "$3"))"
+}
+
 expect_line() {
     grep -qE -- "$1" "$2" || fail "no line matching '$1' in $2"
 }

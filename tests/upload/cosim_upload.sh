@@ -28,11 +28,7 @@ TOOL_PY=${TOOL_PY:-/usr/bin/python3}
     --summary "$work/summary" --uart-pty "$work/uart.pty" >"$work/cosim.out" 2>&1 &
 cosim=$!
 trap 'kill $cosim 2>/dev/null' EXIT
-for _ in $(seq 100); do
-    [ -e "$work/uart.pty" ] && break
-    sleep 0.2
-done
-[ -e "$work/uart.pty" ] || fail "the co-simulation made no pty ($(tail -n 3 "$work/cosim.out"))"
+wait_for_pty "$work/uart.pty" "the co-simulation" "$work/cosim.out"
 
 run_to "$work/bad.out" 120 "$TOOL_PY" tools/mesh_upload.py "$work/uart.pty" "$work/bad.gmsh" --session 11 \
     --chunk 256 --window 8 --timeout 30 --quiet
