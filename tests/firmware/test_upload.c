@@ -216,6 +216,19 @@ static const char *responses(void)
         }                                                                           \
     } while (0)
 
+/* BEGIN (whole-file CRC crc) and every DATA frame of file in 64-byte chunks, their answers
+ * cleared: what most refusal tests start from. */
+static void send_file(uint8_t session, const uint8_t *file, uint32_t size, uint32_t crc)
+{
+    uint8_t fr[600];
+
+    feed(fr, begin_frame(fr, session, size, crc, 64));
+    for (uint32_t k = 0; k < (size + 63u) / 64u; k++) {
+        feed(fr, data_frame(fr, session, file, size, 64, k));
+    }
+    (void)responses();
+}
+
 static void rx_reset(void)
 {
     upload_init(&t_rx, t_buf, T_CAP, t_map, sizeof t_map, 8, 12);
@@ -327,7 +340,6 @@ void test_upload_refusals(void)
     uint8_t fr[600];
     const uint32_t size = cube_file(file);
     const uint32_t crc = crc32_update(0, file, size);
-    const uint32_t chunks = (size + 63u) / 64u;
 
     rx_reset();
     feed(fr, begin_frame(fr, 1, T_CAP + 1u, crc, 64));
@@ -359,21 +371,13 @@ void test_upload_refusals(void)
     CHECK(strstr(responses(), "@up reject 2 incomplete:") != 0);
     CHECK(!upload_ready(&t_rx));
     /* The whole file's CRC. */
-    feed(fr, begin_frame(fr, 3, size, crc ^ 1u, 64));
-    for (uint32_t k = 0; k < chunks; k++) {
-        feed(fr, data_frame(fr, 3, file, size, 64, k));
-    }
-    (void)responses();
+    send_file(3, file, size, crc ^ 1u);
     feed(fr, frame(fr, UPLOAD_COMMIT, 3, 0, 0, 0));
     CHECK_STR(responses(), "@up reject 3 crc: the file's CRC does not match BEGIN's");
     /* A file that breaks a rule: the validator's message. */
     file[32 + 48 + 2] = 9;
     refresh_crc(file, size);
-    feed(fr, begin_frame(fr, 4, size, crc32_update(0, file, size), 64));
-    for (uint32_t k = 0; k < chunks; k++) {
-        feed(fr, data_frame(fr, 4, file, size, 64, k));
-    }
-    (void)responses();
+    send_file(4, file, size, crc32_update(0, file, size));
     feed(fr, frame(fr, UPLOAD_COMMIT, 4, 0, 0, 0));
     CHECK_STR(responses(), "@up reject 4 mesh: face 0: index 9 out of range (8 vertices)");
     CHECK(!upload_ready(&t_rx));
@@ -403,27 +407,20 @@ void test_upload_sessions(void)
     uint8_t fr[600];
     const uint32_t size = cube_file(file);
     const uint32_t crc = crc32_update(0, file, size);
-    const uint32_t chunks = (size + 63u) / 64u;
 
     rx_reset();
     feed(fr, begin_frame(fr, 0, size, crc, 64));
     CHECK_STR(responses(), "@up nak 0 0 session");
     CHECK_EQ(t_rx.session, 0);
     /* Commit session 7. */
-    feed(fr, begin_frame(fr, 7, size, crc, 64));
-    for (uint32_t k = 0; k < chunks; k++) {
-        feed(fr, data_frame(fr, 7, file, size, 64, k));
-    }
+    send_file(7, file, size, crc);
     feed(fr, frame(fr, UPLOAD_COMMIT, 7, 0, 0, 0));
     (void)responses();
     CHECK(t_rx.staging_valid);
     /* Session 7 again, with another file that fails: its repeated COMMIT must not get the old ok. */
     feed(fr, begin_frame(fr, 7, size, crc ^ 1u, 64));
     CHECK_STR(responses(), "@up ack 7 0");
-    for (uint32_t k = 0; k < chunks; k++) {
-        feed(fr, data_frame(fr, 7, file, size, 64, k));
-    }
-    (void)responses();
+    send_file(7, file, size, crc ^ 1u);   /* a resent BEGIN (acked again), then the chunks */
     feed(fr, frame(fr, UPLOAD_COMMIT, 7, 0, 0, 0));
     CHECK_STR(responses(), "@up reject 7 crc: the file's CRC does not match BEGIN's");
     feed(fr, frame(fr, UPLOAD_COMMIT, 7, 0, 0, 0));
