@@ -18,6 +18,7 @@ BENCH_SIMS  := $(foreach w,1 4 8 16,$(BUILD)/sim-w$(w)/gpusim)
 ZBUF_SIM    := $(BUILD)/sim-z-w8/gpusim
 ZBUF_SIMS   := $(foreach w,1 4 8 16,$(BUILD)/sim-z-w$(w)/gpusim)
 GPUSIM_W8   := $(BUILD)/sim-w8/gpusim
+GPUSIM_FAST := $(BUILD)/sim-fast-w$(SPAN_W)/gpusim
 PNG_DIFF    := $(BUILD)/tools/png_diff
 
 # The harness's C parts (VGA monitor model, PNG writer), built once: the co-simulator and the
@@ -182,8 +183,9 @@ $(COSIM_CXX_LIB): $(COSIM_CXX_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
-# One simulator per configuration: $(BUILD)/sim-w<SPAN_W>/gpusim, and sim-z-w<SPAN_W> with the depth
-# buffer built in. $(call verilate,OUTPUT,VERILATOR PARAMETER FLAGS)
+# One simulator per configuration: $(BUILD)/sim-w<SPAN_W>/gpusim, sim-z-w<SPAN_W> with the depth
+# buffer built in, and sim-fast-w<SPAN_W> on the fast display path (gpu_core with the harness as its
+# display: cosim/gpu_sim.h). $(call verilate,OUTPUT,VERILATOR PARAMETER FLAGS[,TOP MODULE,CFLAGS])
 # VERILATOR_JOBS: compilers each build runs at once (its own make, outside this make's -j); `make
 # test` sets 1, since it builds the simulators side by side already. The old program is removed
 # first: Verilator's make relinks only for its own objects, not for a changed library.
@@ -192,8 +194,8 @@ define verilate
 	@mkdir -p $(dir $(1))
 	@rm -f $(1)
 	$(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) --assert -O3 --x-assign fast --x-initial fast \
-	  --top-module gpu_top $(2) -f $(RTL_FILES) $(abspath $(COSIM_CPP_SIM)) \
-	  -CFLAGS "-O2 -std=c++17 $(addprefix -I$(CURDIR)/,$(patsubst -I%,%,$(HOST_INC)))" \
+	  --top-module $(or $(3),gpu_top) $(2) -f $(RTL_FILES) $(abspath $(COSIM_CPP_SIM)) \
+	  -CFLAGS "-O2 -std=c++17 $(4) $(addprefix -I$(CURDIR)/,$(patsubst -I%,%,$(HOST_INC)))" \
 	  -LDFLAGS "$(abspath $(COSIM_CXX_LIB) $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
 	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1 CXX=$(SIM_CXX) LINK=$(SIM_CXX)" --Mdir $(dir $(1))obj -o $(abspath $(1)) \
 	  >$(dir $(1))verilator.log 2>&1 || { tail -40 $(dir $(1))verilator.log; exit 1; }
@@ -205,6 +207,9 @@ $(BUILD)/sim-w%/gpusim: $(SIM_DEPS)
 
 $(BUILD)/sim-z-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$* -GENABLE_ZBUF=1)
+
+$(BUILD)/sim-fast-w%/gpusim: $(SIM_DEPS)
+	$(call verilate,$@,-GSPAN_W=$*,gpu_core,-DGPUSIM_FAST_DISPLAY=1)
 
 clean:
 	rm -rf $(BUILD) $(OUT)

@@ -6,15 +6,38 @@
 #include <type_traits>
 #include <utility>
 
+// The model, and its core's arrays by their Verilator names.
+#ifndef GPUSIM_FAST_DISPLAY
+#define GPUSIM_FAST_DISPLAY 0
+#endif
+#if GPUSIM_FAST_DISPLAY
+#include "Vgpu_core.h"
+#include "Vgpu_core___024root.h"
+using VerilatedGpu = Vgpu_core;
+#define GPU_CORE_NAME(path) gpu_core__DOT__##path
+#else
 #include "Vgpu_top.h"
 #include "Vgpu_top___024root.h"
+using VerilatedGpu = Vgpu_top;
+#define GPU_CORE_NAME(path) gpu_top__DOT__u_core__DOT__##path
+#endif
 #include "verilated.h"
 
 extern "C" {
 #include "gpu_regs.h"
 }
 
-GpuSim::GpuSim() : context_(new VerilatedContext), top_(new Vgpu_top(context_.get()))
+struct GpuSim::Verilated {
+    VerilatedContext context;
+    VerilatedGpu top{&context};
+};
+
+bool GpuSim::fast_display()
+{
+    return GPUSIM_FAST_DISPLAY != 0;
+}
+
+GpuSim::GpuSim() : v_(new Verilated)
 {
     vga_monitor_reset(&monitor_);
     reset();
@@ -22,34 +45,44 @@ GpuSim::GpuSim() : context_(new VerilatedContext), top_(new Vgpu_top(context_.ge
 
 GpuSim::~GpuSim()
 {
-    top_->final();
+    v_->top.final();
 }
 
 void GpuSim::reset()
 {
-    top_->bus_valid = 0;
-    top_->bus_write = 0;
-    top_->rst = 1;
+    v_->top.bus_valid = 0;
+    v_->top.bus_write = 0;
+    v_->top.rst = 1;
     for (int i = 0; i < 4; i++) {
         tick();
     }
-    top_->rst = 0;
+    v_->top.rst = 0;
 }
 
 void GpuSim::tick()
 {
+#if GPUSIM_FAST_DISPLAY
+    // The display is this harness: vertical blank every kFastVblankEvery clocks, clk_pix still.
+    v_->top.vblank_start = (cycles_ % kFastVblankEvery) == 0;
+    v_->top.clk = 0;
+    v_->top.eval();
+    v_->top.clk = 1;
+    v_->top.eval();
+    cycles_++;
+#else
     // Outputs change on the edge at which vga_pix_stb is high; sample them right after it. The
     // scan-out's clock is the system clock here (PIX_DIV clocks a pixel), its crossings still in.
-    top_->clk = top_->clk_pix = 0;
-    top_->eval();
-    const bool pixel_edge = top_->vga_pix_stb;
-    top_->clk = top_->clk_pix = 1;
-    top_->eval();
+    v_->top.clk = v_->top.clk_pix = 0;
+    v_->top.eval();
+    const bool pixel_edge = v_->top.vga_pix_stb;
+    v_->top.clk = v_->top.clk_pix = 1;
+    v_->top.eval();
     cycles_++;
     if (pixel_edge) {
-        vga_monitor_sample(&monitor_, top_->vga_hsync_n, top_->vga_vsync_n, top_->vga_r,
-                           top_->vga_g, top_->vga_b);
+        vga_monitor_sample(&monitor_, v_->top.vga_hsync_n, v_->top.vga_vsync_n, v_->top.vga_r,
+                           v_->top.vga_g, v_->top.vga_b);
     }
+#endif
     if (background_every_ != 0 && --background_left_ == 0) {
         background_left_ = background_every_;
         background_();
@@ -58,23 +91,23 @@ void GpuSim::tick()
 
 void GpuSim::write(uint32_t offset, uint32_t value)
 {
-    top_->bus_valid = 1;
-    top_->bus_write = 1;
-    top_->bus_addr = offset >> 2;
-    top_->bus_wdata = value;
+    v_->top.bus_valid = 1;
+    v_->top.bus_write = 1;
+    v_->top.bus_addr = offset >> 2;
+    v_->top.bus_wdata = value;
     tick();
-    top_->bus_valid = 0;
-    top_->bus_write = 0;
+    v_->top.bus_valid = 0;
+    v_->top.bus_write = 0;
 }
 
 uint32_t GpuSim::read(uint32_t offset)
 {
-    top_->bus_valid = 1;
-    top_->bus_write = 0;
-    top_->bus_addr = offset >> 2;
+    v_->top.bus_valid = 1;
+    v_->top.bus_write = 0;
+    v_->top.bus_addr = offset >> 2;
     tick();  // the request is taken on this edge; bus_rdata is valid in the cycle after it
-    top_->bus_valid = 0;
-    return top_->bus_rdata;
+    v_->top.bus_valid = 0;
+    return v_->top.bus_rdata;
 }
 
 bool GpuSim::wait_done(uint32_t tag, uint64_t max_cycles)
@@ -93,6 +126,10 @@ bool GpuSim::wait_done(uint32_t tag, uint64_t max_cycles)
 
 bool GpuSim::capture_frame(uint64_t max_cycles)
 {
+    if (fast_display()) {
+        show_front_bank();
+        return true;
+    }
     const uint64_t limit = cycles_ + max_cycles;
     vga_monitor_arm(&monitor_);
     while (!monitor_.frame_ready && cycles_ < limit && monitor_.error[0] == '\0') {
@@ -107,9 +144,11 @@ bool GpuSim::capture_frame(uint64_t max_cycles)
 // [8i +: 8]; bank !front_q is the back bank. A renamed array is a compile error here, not a wrong
 // reading; SPAN_W is derived from the arrays' depths and checked against their word width.
 #define GPU_FB_MAIN(bank) \
-    gpu_top__DOT__u_framebuffer__DOT__g_bank__BRA__##bank##__KET____DOT__u_main__DOT__g_block__DOT__mem
+    GPU_CORE_NAME(u_framebuffer__DOT__g_bank__BRA__##bank##__KET____DOT__u_main__DOT__g_block__DOT__mem)
 #define GPU_FB_TAIL(bank) \
-    gpu_top__DOT__u_framebuffer__DOT__g_bank__BRA__##bank##__KET____DOT__g_tail__DOT__u_tail__DOT__g_block__DOT__mem
+    GPU_CORE_NAME(u_framebuffer__DOT__g_bank__BRA__##bank##__KET____DOT__g_tail__DOT__u_tail__DOT__g_block__DOT__mem)
+#define GPU_FB_FRONT GPU_CORE_NAME(u_framebuffer__DOT__front_q)
+#define GPU_PALETTE GPU_CORE_NAME(u_palette__DOT__g_lut__DOT__mem)
 
 namespace {
 
@@ -165,9 +204,8 @@ void copy_bank(const Main &main, const Tail *tail, uint8_t *pixels)
 }
 
 template <class R>
-void read_back_bank(const R &root, uint8_t *pixels)
+void read_bank(const R &root, bool back_is_1, uint8_t *pixels)
 {
-    const bool back_is_1 = root.gpu_top__DOT__u_framebuffer__DOT__front_q == 0;
     if constexpr (HasTail<R>::value) {
         if (back_is_1) {
             copy_bank(root.GPU_FB_MAIN(1), &root.GPU_FB_TAIL(1), pixels);
@@ -188,5 +226,24 @@ void read_back_bank(const R &root, uint8_t *pixels)
 
 void GpuSim::back_buffer(uint8_t *pixels) const
 {
-    read_back_bank(*top_->rootp, pixels);
+    read_bank(*v_->top.rootp, v_->top.rootp->GPU_FB_FRONT == 0, pixels);
+}
+
+// The front bank through the palette (RGB444, each channel times 17 as the monitor model takes the
+// pins), each pixel 2x2: what gpu_vga would scan out of it.
+void GpuSim::show_front_bank()
+{
+    static uint8_t front[GPU_FB_WIDTH * GPU_FB_HEIGHT];
+    const auto &root = *v_->top.rootp;
+    read_bank(root, root.GPU_FB_FRONT != 0, front);
+    static_assert(VGA_W == 2 * GPU_FB_WIDTH && VGA_H == 2 * GPU_FB_HEIGHT, "gpu_vga shows each pixel 2x2");
+    for (int y = 0; y < VGA_H; y++) {
+        for (int x = 0; x < VGA_W; x++) {
+            const uint32_t rgb444 = root.GPU_PALETTE[front[(y / 2) * GPU_FB_WIDTH + x / 2]];
+            uint8_t *out = &monitor_.rgb[(y * VGA_W + x) * 3];
+            out[0] = static_cast<uint8_t>(((rgb444 >> 8) & 15) * 17);
+            out[1] = static_cast<uint8_t>(((rgb444 >> 4) & 15) * 17);
+            out[2] = static_cast<uint8_t>((rgb444 & 15) * 17);
+        }
+    }
 }

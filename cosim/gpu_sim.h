@@ -1,6 +1,16 @@
-// gpu_sim: drives the Verilated GPU (gpu_top) through its own ports — bus writes and reads, the
-// clock — and watches its VGA pins with a monitor model. Nothing here drives anything inside the RTL;
-// the one look inside is back_buffer(), for checks only (the back buffer has no port to be seen by).
+// gpu_sim: drives the Verilated GPU through its own ports — bus writes and reads, the clock — and
+// shows its frames, on one of two display paths chosen when the simulator is built:
+//   - the pin path (default): gpu_top, whose VGA pins a monitor model watches; a frame is a whole
+//     VGA scan (800 x 525 pixels of PIX_DIV 4 clocks, 1.68 M clocks), and a swap waits for the
+//     scan's vertical blank.
+//   - the fast path (GPUSIM_FAST_DISPLAY=1): gpu_core, the GPU without gpu_vga, with this harness as
+//     its display. It pulses the core's vblank_start every kFastVblankEvery clocks (a display that
+//     is ready for a new frame at once), never clocks clk_pix, and shows the RTL's own front bank
+//     through the RTL's own palette (their block-RAM arrays), 2x2 as gpu_vga does. No scan is
+//     simulated: a frame costs the GPU's busy clocks only. The tests hold it to the pin path's
+//     frames, frame for frame.
+// Nothing here drives anything inside the RTL; the looks inside are back_buffer() and the fast path's
+// front bank and palette (arrays that have no port to be seen by without clocking a scan).
 #ifndef GPU_SIM_H
 #define GPU_SIM_H
 
@@ -13,8 +23,6 @@ extern "C" {
 #include "vga_monitor.h"
 }
 
-class Vgpu_top;
-class VerilatedContext;
 
 class GpuSim {
 public:
@@ -28,8 +36,11 @@ public:
 
     // Run until DONE_SEQ == tag and STATUS.BUSY is clear. False if max_cycles pass first.
     bool wait_done(uint32_t tag, uint64_t max_cycles);
-    // Capture the next complete frame from the VGA pins. False on timeout or a timing error.
+    // The pin path: capture the next complete frame from the VGA pins; false on timeout or a timing
+    // error. The fast path: the front bank as it is now, through the palette, at no clock.
     bool capture_frame(uint64_t max_cycles);
+    static bool fast_display();  // true in a simulator built for the fast path
+    static constexpr unsigned kFastVblankEvery = 64;  // the fast path's vblank_start period, clocks
 
     // The framebuffer being drawn (the back bank, !STATUS.FRONT), as GPU_FB_WIDTH x GPU_FB_HEIGHT palette indices,
     // row-major: read from the framebuffer's block-RAM arrays in the Verilated model (their
@@ -37,7 +48,7 @@ public:
     // compile time). Takes no clock and no bus cycle, so it changes nothing the GPU does.
     void back_buffer(uint8_t *pixels) const;
 
-    const uint8_t *frame_rgb() const { return monitor_.rgb; }
+    const uint8_t *frame_rgb() const { return monitor_.rgb; }  // VGA_W x VGA_H RGB888
     const char *vga_error() const { return monitor_.error; }
     uint64_t cycles() const { return cycles_; }
 
@@ -52,8 +63,11 @@ public:
     }
 
 private:
-    std::unique_ptr<VerilatedContext> context_;
-    std::unique_ptr<Vgpu_top> top_;
+    void show_front_bank();  // the fast path's display
+
+    struct Verilated;  // the model (gpu_top or gpu_core) and its context: gpu_sim.cpp, the one
+                       // file compiled per simulator, defines it
+    std::unique_ptr<Verilated> v_;
     vga_monitor monitor_;
     uint64_t cycles_ = 0;
     std::function<void()> background_;

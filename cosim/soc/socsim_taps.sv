@@ -4,7 +4,7 @@
 // and they drive nothing of it. They report through DPI-C calls, on events only (a bus write, a
 // swap, a bus transaction start), so the cost per cycle is a few compares.
 //
-//   socsim_gpu_tap (in gpu_top):  every bus write the GPU takes (byte offset, data) — the golden
+//   socsim_gpu_tap (in gpu_core): every bus write the GPU takes (byte offset, data) — the golden
 //                                 model is fed the same writes —, every read's answer (compared
 //                                 with the model's registers), and each change of FRAME_COUNT (a
 //                                 buffer swap, after which the next VGA frame is captured).
@@ -16,13 +16,13 @@
 
 module socsim_gpu_tap (
     input wire        clk,
-    input wire        bus_valid,    // gpu_top's bus slave port, as gpu_regs takes it
+    input wire        bus_valid,    // gpu_core's bus slave port, as gpu_regs takes it
     input wire        bus_write,
     input wire [16:2] bus_addr,
     input wire [31:0] bus_wdata,
     input wire [31:0] bus_rdata,    // valid with bus_rvalid, the cycle after the read request
     input wire        bus_rvalid,
-    input wire [31:0] frame_count   // gpu_top's FRAME_COUNT
+    input wire [31:0] frame_count   // gpu_core's FRAME_COUNT
 );
     import "DPI-C" function void socsim_gpu_write(input int unsigned offset, input int unsigned value);
     import "DPI-C" function void socsim_gpu_read(input int unsigned offset, input int unsigned value);
@@ -90,7 +90,7 @@ module socsim_cpu_tap #(
     endfunction
 endmodule
 
-bind gpu_top socsim_gpu_tap u_socsim_gpu_tap (
+bind gpu_core socsim_gpu_tap u_socsim_gpu_tap (
     .clk(clk), .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr),
     .bus_wdata(bus_wdata), .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid), .frame_count(frame_count)
 );

@@ -1,0 +1,173 @@
+// gpu_core: the GPU without its display — bus slave, vertex/index/palette RAMs, rasterizer and the
+// double framebuffer. A display reads the front framebuffer and the palette through their read
+// ports (clk_pix domain) and says when vertical blank starts (vblank_start, clk domain): gpu_top's is
+// gpu_vga behind a clock crossing; another display (a DVI encoder of its own timing, or the
+// simulator's window, which shows the front bank after each swap) may take its place.
+//
+// Contract: contract/gpu-contract.md. The CPU writes buffers and registers over the bus and rings
+// DOORBELL; the core clears and draws into the back buffer, and when CTRL.SWAP asks for it waits for
+// the next vblank_start to swap (frame_swapped pulses), then reports DONE_SEQ. vblank_start is a
+// one-cycle pulse in the clk domain, at most one per swap taken; a display pulses it when the front
+// bank may change without a visible tear. The read ports have one cycle of latency: fb_rd_addr is a
+// pixel of the front bank (row-major, GPU_FB_WIDTH a row), pal_rd_addr a palette entry, RGB444. The
+// palette is written on clk and read on clk_pix without a handshake (gpu_top says why that is
+// enough). Build options leave out what a scene does not need and are reported in CAPS; their
+// defaults, the capacities and the frame size come from the contract (gpu_pkg::GPU_*, generated
+// from contract/gpu_contract.toml).
+`default_nettype none
+
+module gpu_core #(
+    // Capacities and build options; defaults from the contract (limits and [build] table).
+    parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,                    // vertex buffer capacity
+    parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,                    // index buffer capacity
+    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,              // pixels per clock: 1, 4, 8, 16
+    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,  // line primitives (CAPS_LINES)
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,    // 16-bit depth buffer (CAPS_ZBUF):
+                                                                         // 1.2 Mb more block RAM
+    localparam integer VI_W = $clog2(VTX_CAP),
+    localparam integer TI_W = $clog2(TRI_CAP),
+    localparam integer VTX_AW = $clog2(VTX_CAP * 2),
+    localparam integer IDX_AW = $clog2(TRI_CAP * 2),
+    localparam integer FB_WORDS = gpu_pkg::GPU_FB_PIXELS / SPAN_W,  // spans in a frame
+    localparam integer FB_WAW = $clog2(FB_WORDS),
+    localparam integer FB_PAW = $clog2(gpu_pkg::GPU_FB_PIXELS)
+) (
+    input  wire        clk,           // system clock: bus, rasterizer, framebuffer writes
+    input  wire        rst,           // synchronous to clk, active high
+    // bus slave (see gpu_regs)
+    input  wire        bus_valid,
+    input  wire        bus_write,
+    input  wire [16:2] bus_addr,
+    input  wire [31:0] bus_wdata,
+    output wire [31:0] bus_rdata,
+    output wire        bus_rvalid,
+    // status, clk domain (board LEDs)
+    output wire        frame_swapped, // one cycle at each buffer swap
+    output wire        error,         // ERRORS non-zero: the last batch refused something
+    // the display: vertical blank (clk domain), the read ports (clk_pix domain)
+    input  wire        vblank_start,  // one-cycle pulse: the front bank may change now
+    input  wire        clk_pix,       // the read ports' clock (may be clk itself)
+    input  wire        fb_rd_en,
+    input  wire [FB_PAW-1:0] fb_rd_addr,
+    output wire [7:0]  fb_rd_data,
+    input  wire        pal_rd_en,
+    input  wire [7:0]  pal_rd_addr,
+    output wire [11:0] pal_rd_data
+);
+    localparam [31:0] CAPS = (32'(SPAN_W) << gpu_pkg::GPU_CAPS_SPAN_W_LSB)
+                           | (32'(ENABLE_LINES != 0) << gpu_pkg::GPU_CAPS_LINES_LSB)
+                           | (32'(ENABLE_ZBUF != 0) << gpu_pkg::GPU_CAPS_ZBUF_LSB);
+
+    // Batch description and status between the register block and the rasterizer.
+    wire        ctrl_clear, ctrl_swap, ctrl_ztest, ctrl_zclear, start, soft_reset;
+    wire        busy, front, swap;
+    wire [31:0] vtx_base, vtx_count, tri_base, tri_count, doorbell_tag, done_seq, frame_count;
+    wire [7:0]  clear_color;
+    wire [2:0]  raster_errors;
+    gpu_pkg::perf_t perf;                 // the PERF_* counters
+
+    // RAM ports.
+    wire              vtx_wr_en, idx_wr_en, pal_wr_en;
+    wire [VTX_AW-1:0] vtx_wr_addr;
+    wire [IDX_AW-1:0] idx_wr_addr;
+    wire [7:0]        pal_wr_addr;
+    wire              vtx_rd_en, idx_rd_en, fb_wr_en;
+    wire [VI_W-1:0]   vtx_rd_addr;
+    wire [TI_W-1:0]   idx_rd_addr;
+    wire [31:0]       vtx_rd_data;
+    wire [63:0]       idx_rd_data;
+    wire [FB_WAW-1:0] fb_wr_addr;
+    wire [SPAN_W*8-1:0] fb_wr_data;
+    wire [SPAN_W-1:0] fb_wr_mask;
+
+    gpu_regs #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .CAPS(CAPS)) u_regs (
+        .clk(clk), .rst(rst),
+        .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr), .bus_wdata(bus_wdata),
+        .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid),
+        .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .ctrl_ztest(ctrl_ztest),
+        .ctrl_zclear(ctrl_zclear), .vtx_base(vtx_base), .vtx_count(vtx_count),
+        .tri_base(tri_base), .tri_count(tri_count), .clear_color(clear_color),
+        .doorbell_tag(doorbell_tag), .start(start), .soft_reset(soft_reset),
+        .vtx_wr_en(vtx_wr_en), .vtx_wr_addr(vtx_wr_addr), .idx_wr_en(idx_wr_en),
+        .idx_wr_addr(idx_wr_addr), .pal_wr_en(pal_wr_en), .pal_wr_addr(pal_wr_addr),
+        .busy(busy), .front(front), .done_seq(done_seq), .frame_count(frame_count),
+        .raster_errors(raster_errors), .perf(perf)
+    );
+
+    // Depth: the vertices' z (word 1) and the depth buffer exist only in a build that tests depth.
+    wire [15:0] vz_rd_data;
+    wire z_rd_en, z_wr_en;
+    wire [FB_WAW-1:0] z_rd_addr, z_wr_addr;
+    wire [SPAN_W*16-1:0] z_rd_data, z_wr_data;
+    wire [SPAN_W-1:0] z_wr_mask;
+    generate
+        if (ENABLE_ZBUF != 0) begin : g_zbuf
+            gpu_ram #(.DEPTH(VTX_CAP), .WIDTH(16)) u_vtx_z_ram (
+                .wr_clk(clk), .rd_clk(clk),
+                .wr_en(vtx_wr_en && vtx_wr_addr[0] == 1'b1), .wr_addr(vtx_wr_addr[VTX_AW-1:1]),
+                .wr_data(bus_wdata[gpu_pkg::GPU_VTX_Z_LSB +: 16]), .wr_mask(1'b1),
+                .rd_en(vtx_rd_en), .rd_addr(vtx_rd_addr), .rd_data(vz_rd_data)
+            );
+            gpu_ram #(.DEPTH(FB_WORDS), .WIDTH(SPAN_W * 16), .LANES(SPAN_W)) u_depth (
+                .wr_clk(clk), .rd_clk(clk),
+                .wr_en(z_wr_en), .wr_addr(z_wr_addr), .wr_data(z_wr_data), .wr_mask(z_wr_mask),
+                .rd_en(z_rd_en), .rd_addr(z_rd_addr), .rd_data(z_rd_data)
+            );
+        end else begin : g_no_zbuf
+            assign vz_rd_data = 16'd0;
+            assign z_rd_data = {(SPAN_W * 16){1'b0}};
+            wire unused_z = z_rd_en | z_wr_en | (|z_rd_addr) | (|z_wr_addr) | (|z_wr_data) | (|z_wr_mask);
+        end
+    endgenerate
+
+    // Vertex word 0 (x, y) is all the rasterizer reads for coverage.
+    gpu_ram #(.DEPTH(VTX_CAP), .WIDTH(32)) u_vtx_xy_ram (
+        .wr_clk(clk), .rd_clk(clk),
+        .wr_en(vtx_wr_en && vtx_wr_addr[0] == 1'b0), .wr_addr(vtx_wr_addr[VTX_AW-1:1]),
+        .wr_data(bus_wdata), .wr_mask(1'b1),
+        .rd_en(vtx_rd_en), .rd_addr(vtx_rd_addr), .rd_data(vtx_rd_data)
+    );
+
+    // The two words of a primitive sit side by side so that one read returns both.
+    gpu_ram #(.DEPTH(TRI_CAP), .WIDTH(64), .LANES(2)) u_idx_ram (
+        .wr_clk(clk), .rd_clk(clk),
+        .wr_en(idx_wr_en), .wr_addr(idx_wr_addr[IDX_AW-1:1]), .wr_data({bus_wdata, bus_wdata}),
+        .wr_mask({idx_wr_addr[0], !idx_wr_addr[0]}),
+        .rd_en(idx_rd_en), .rd_addr(idx_rd_addr), .rd_data(idx_rd_data)
+    );
+
+    gpu_ram #(.DEPTH(gpu_pkg::GPU_PALETTE_ENTRIES), .WIDTH(12), .DISTRIBUTED(1)) u_palette (
+        .wr_clk(clk), .rd_clk(clk_pix),
+        .wr_en(pal_wr_en), .wr_addr(pal_wr_addr), .wr_data(bus_wdata[11:0]), .wr_mask(1'b1),
+        .rd_en(pal_rd_en), .rd_addr(pal_rd_addr), .rd_data(pal_rd_data)
+    );
+
+    gpu_raster #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .SPAN_W(SPAN_W),
+                 .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF)) u_raster (
+        .clk(clk), .rst(rst), .soft_reset(soft_reset),
+        .start(start), .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .ctrl_ztest(ctrl_ztest),
+        .ctrl_zclear(ctrl_zclear), .vtx_base(vtx_base), .vtx_count(vtx_count), .tri_base(tri_base), .tri_count(tri_count),
+        .clear_color(clear_color), .doorbell_tag(doorbell_tag),
+        .busy(busy), .done_seq(done_seq), .frame_count(frame_count), .errors(raster_errors),
+        .perf(perf),
+        .idx_rd_en(idx_rd_en), .idx_rd_addr(idx_rd_addr), .idx_rd_data(idx_rd_data),
+        .vtx_rd_en(vtx_rd_en), .vtx_rd_addr(vtx_rd_addr), .vtx_rd_data(vtx_rd_data),
+        .vz_rd_data(vz_rd_data), .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data),
+        .z_wr_en(z_wr_en), .z_wr_addr(z_wr_addr), .z_wr_data(z_wr_data), .z_wr_mask(z_wr_mask),
+        .fb_wr_en(fb_wr_en), .fb_wr_addr(fb_wr_addr), .fb_wr_data(fb_wr_data),
+        .fb_wr_mask(fb_wr_mask), .vblank_start(vblank_start), .swap(swap)
+    );
+
+    gpu_framebuffer #(.SPAN_W(SPAN_W)) u_framebuffer (
+        .clk(clk), .rst(rst), .clk_pix(clk_pix),
+        .swap(swap), .front(front),
+        .wr_en(fb_wr_en), .wr_addr(fb_wr_addr), .wr_data(fb_wr_data), .wr_mask(fb_wr_mask),
+        .rd_en(fb_rd_en), .rd_addr(fb_rd_addr), .rd_data(fb_rd_data)
+    );
+
+
+    assign frame_swapped = swap;
+    assign error = |raster_errors;
+endmodule
+
+`default_nettype wire
