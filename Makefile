@@ -49,7 +49,7 @@ BOARD      ?= ulx3s
 include boards/ulx3s/board.mk
 include boards/digilent/board.mk
 
-.PHONY: all setup run run-headless test test-quick test-list lint check-contract contract random-long raster \
+.PHONY: all setup run run-built test test-quick test-list lint check-contract contract random-long raster \
         bench-gpu bench-error bench-error-run synth clean
 
 all: $(FW_ELF) $(GPUSIM)
@@ -57,16 +57,25 @@ all: $(FW_ELF) $(GPUSIM)
 setup:
 	@bash tools/setup.sh
 
-# ---- run: the default scene, headless, frames as PNG files ----
+# ---- run: the default scene, in a window or headless (frames as PNG files) ----
+# The window (cosim/sdl_window.h): where there is a display ($DISPLAY) and it is neither CI nor
+# HEADLESS=1, `make run` shows the frames in a window on the fast display path (cosim/gpu_sim.h) and
+# runs until Q or the window closes (FRAMES=0 unless given). Otherwise the frames come from the VGA
+# pins, FRAMES of them, into $(OUT)/frames.
+WINDOW := $(if $(and $(DISPLAY),$(if $(CI)$(HEADLESS),,1)),1)
 run: setup
-	@$(MAKE) --no-print-directory run-headless
+	@$(MAKE) --no-print-directory run-built \
+	  $(if $(and $(WINDOW),$(filter-out command line,$(origin FRAMES))),FRAMES=0)
 
 # PLATFORM=soc: the whole SoC in socsim instead of QEMU + the GPU (cosim/soc/socsim.mk).
 # UART_PTY=LINK: the firmware's UART also on a pseudo-terminal, for tools/mesh_upload.py.
 ifeq ($(PLATFORM),soc)
-run-headless: run-soc
+run-built: run-soc
+else ifneq ($(WINDOW),)
+run-built: $(FW_ELF) $(GPUSIM_FAST)
+	$(GPUSIM_FAST) cosim --fw $(FW_ELF) --window --uart-log $(OUT)/uart.log $(if $(UART_PTY),--uart-pty $(UART_PTY))
 else
-run-headless: $(FW_ELF) $(GPUSIM)
+run-built: $(FW_ELF) $(GPUSIM)
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
 	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log \
 	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
@@ -177,7 +186,7 @@ COSIM_CXX_LIB  := $(BUILD)/host/libcosim_sim.a
 
 $(BUILD)/host/%.o: %.cpp
 	@mkdir -p $(dir $@)
-	$(SIM_CXX) $(COSIM_CXXFLAGS) -MMD -MP $(HOST_INC) -c $< -o $@
+	$(SIM_CXX) $(COSIM_CXXFLAGS) -MMD -MP $(HOST_INC) $$(pkg-config --cflags sdl2) -c $< -o $@
 
 $(COSIM_CXX_LIB): $(COSIM_CXX_OBJ)
 	@rm -f $@
@@ -196,7 +205,7 @@ define verilate
 	$(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) --assert -O3 --x-assign fast --x-initial fast \
 	  --top-module $(or $(3),gpu_top) $(2) -f $(RTL_FILES) $(abspath $(COSIM_CPP_SIM)) \
 	  -CFLAGS "-O2 -std=c++17 $(4) $(addprefix -I$(CURDIR)/,$(patsubst -I%,%,$(HOST_INC)))" \
-	  -LDFLAGS "$(abspath $(COSIM_CXX_LIB) $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
+	  -LDFLAGS "$(abspath $(COSIM_CXX_LIB) $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng sdl2)" \
 	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1 CXX=$(SIM_CXX) LINK=$(SIM_CXX)" --Mdir $(dir $(1))obj -o $(abspath $(1)) \
 	  >$(dir $(1))verilator.log 2>&1 || { tail -40 $(dir $(1))verilator.log; exit 1; }
 endef

@@ -186,15 +186,19 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
                 return false;
             }
         }
-        char path[512];
-        std::snprintf(path, sizeof path, "%s/%04u.png", opt_.frames_dir.c_str(), frames_written_);
-        if (png_write_rgb(path, sim_.frame_rgb(), VGA_W, VGA_H) != 0) {
-            error_kind_ = "write";
-            *error = format("cannot write %s", path);
-            return false;
+        std::string where = "(not written)";
+        if (!opt_.frames_dir.empty()) {
+            char path[512];
+            std::snprintf(path, sizeof path, "%s/%04u.png", opt_.frames_dir.c_str(), frames_written_);
+            if (png_write_rgb(path, sim_.frame_rgb(), VGA_W, VGA_H) != 0) {
+                error_kind_ = "write";
+                *error = format("cannot write %s", path);
+                return false;
+            }
+            where = path;
         }
         std::printf("cosim: frame %04u -> %s | gpu busy %u cycles | simulated %llu cycles%s\n", frames_written_,
-                    path, sim_.read(GPU_REG_PERF_BUSY_CYCLES), static_cast<unsigned long long>(sim_.cycles()),
+                    where.c_str(), sim_.read(GPU_REG_PERF_BUSY_CYCLES), static_cast<unsigned long long>(sim_.cycles()),
                     opt_.check_model ? " | equals golden model" : "");
         frames_written_++;
         frames_checked_ += opt_.check_model ? 1 : 0;

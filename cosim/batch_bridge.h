@@ -11,8 +11,9 @@
 //   - service_batch(tag) replays every window word that changed since the last batch into the RTL
 //     (and the model), DOORBELL last; runs the GPU until DONE_SEQ shows the tag; compares the
 //     registers with the model; when FRAME_COUNT moved, captures the next frame from the VGA pins,
-//     compares it with the model and writes FRAMES_DIR/NNNN.png, printing one "cosim: frame" line;
-//     then publishes the registers. With --drop-doorbell N batch N is recorded but never run. With
+//     compares it with the model and writes FRAMES_DIR/NNNN.png (none when frames_dir is empty),
+//     printing one "cosim: frame" line; then publishes the registers. frame_rgb() is the last frame
+//     captured (VGA_W x VGA_H RGB888). With --drop-doorbell N batch N is recorded but never run. With
 //     --dump-lists DIR each batch is written first as DIR/batchNNNN.txt (prim_list.h format: ztri
 //     when CTRL.ZTEST is set). On a GPU timeout, a disagreement, or a frame that cannot be captured
 //     or written, it returns false with *error set (the caller reports it) and error_kind() naming
@@ -31,7 +32,7 @@
 #include "model_check.h"
 
 struct BridgeOptions {
-    std::string frames_dir = "out/frames";
+    std::string frames_dir = "out/frames";  // empty: no PNG files
     uint64_t max_batch_cycles = 100000000;  // 1 s of GPU time at 100 MHz
     bool check_model = true;
     uint32_t drop_doorbell = 0;  // batch number never serviced (0: none)
@@ -55,6 +56,7 @@ public:
     uint32_t frames() const { return frames_written_; }
     uint32_t frames_model_checked() const { return frames_checked_; }
     uint64_t cycles() const { return sim_.cycles(); }
+    const uint8_t *frame_rgb() const { return sim_.frame_rgb(); }
     const char *error_kind() const { return error_kind_; }
     // The harness's UART work during a batch (GpuSim::set_background).
     void set_background(std::function<void()> fn, uint64_t every) { sim_.set_background(std::move(fn), every); }
@@ -67,7 +69,7 @@ private:
     ModelCheck model_;
     volatile uint32_t *window_ = nullptr;
     std::vector<uint32_t> shadow_;  // the window as last forwarded to the RTL
-    uint32_t frames_written_ = 0;
+    uint32_t frames_written_ = 0;  // frames captured (and written, with a frames_dir)
     uint32_t frames_checked_ = 0;  // frames compared with the golden model and found equal
     uint32_t batches_ = 0;
     uint32_t dropped_ = 0;

@@ -6,6 +6,10 @@
 // the firmware's UART output and forwards typed or scripted keys (uart_pump, uart_terminal). With
 // --uart-pty LINK the UART is also a pseudo-terminal (uart_pty): what a client writes there goes
 // the keys' way, and the firmware's output goes to it raw, as a board's serial port would carry it.
+// With --window the frames are shown in a window (sdl_window) as they are captured, its keystrokes
+// go the keys' way too, and closing it ends the run as Q does; PNG files are then written only when
+// --frames is given. A simulator built for the fast display path (gpu_sim.h) makes that window
+// playable: no VGA scan is simulated.
 //
 // Determinism: simulated time advances only while a batch is serviced, so the same firmware gives
 // the same frames byte for byte whatever the host's timing. Robustness: the shared-memory file is
@@ -36,6 +40,7 @@
 #include "batch_bridge.h"
 #include "keys_at.h"
 #include "qemu_process.h"
+#include "sdl_window.h"
 #include "shared_ram.h"
 #include "uart_pty.h"
 #include "uart_pump.h"
@@ -52,6 +57,8 @@ struct Options {
     std::string uart_log;
     std::string summary;
     std::string uart_pty;  // the pseudo-terminal's link, or empty
+    bool window = false;
+    double window_fps = 60.0;  // the window's frame-rate cap (0: none)
     double idle_timeout_s = 60.0;
     KeysAt keys_at;  // (batch number, text) to type
     BridgeOptions bridge;
@@ -70,19 +77,24 @@ int usage()
                  "usage: gpusim cosim --fw FIRMWARE.elf [--frames DIR] [--qemu PATH] [--uart-log FILE]\n"
                  "                    [--idle-timeout SECONDS] [--max-batch-cycles N] [--no-model-check]\n"
                  "                    [--keys-at N:TEXT]... [--drop-doorbell N] [--dump-lists DIR] [--summary FILE]\n"
-                 "                    [--uart-pty LINK]\n"
+                 "                    [--uart-pty LINK] [--window] [--window-fps N]\n"
                  "  --keys-at N:TEXT   type TEXT into the firmware's UART just before servicing doorbell N (from 1)\n"
                  "  --drop-doorbell N  ignore doorbell N, as a hung GPU would (the firmware's watchdog must RESET)\n"
                  "  --dump-lists DIR   write each batch as DIR/batchNNNN.txt in the `make raster` list format\n"
                  "  --summary FILE     write the run's outcome and counts as key=value lines\n"
                  "  --uart-pty LINK    also offer the UART as a pseudo-terminal, LINK a symlink to it (raw, 8 bits):\n"
                  "                     what a client writes there is typed, the firmware's output is sent there\n"
+                 "  --window           show the frames in a window (no PNG files unless --frames is given); its keys\n"
+                 "                     go to the firmware's UART, closing it ends the run as Q does\n"
+                 "  --window-fps N     at most N frames a second in the window, as a board shows them (default 60,\n"
+                 "                     0: as fast as the simulation goes)\n"
                  "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n");
     return 2;
 }
 
 bool parse(int argc, char **argv, Options &o)
 {
+    bool frames_given = false;
     for (int i = 0; i < argc; i++) {
         const std::string a = argv[i];
         const bool has_value = i + 1 < argc;
@@ -90,6 +102,7 @@ bool parse(int argc, char **argv, Options &o)
             o.firmware = argv[++i];
         } else if (a == "--frames" && has_value) {
             o.bridge.frames_dir = argv[++i];
+            frames_given = true;
         } else if (a == "--qemu" && has_value) {
             o.qemu = argv[++i];
         } else if (a == "--uart-log" && has_value) {
@@ -110,12 +123,19 @@ bool parse(int argc, char **argv, Options &o)
             o.bridge.dump_lists = argv[++i];
         } else if (a == "--drop-doorbell" && has_value) {
             o.bridge.drop_doorbell = static_cast<uint32_t>(std::strtoul(argv[++i], nullptr, 10));
+        } else if (a == "--window") {
+            o.window = true;
+        } else if (a == "--window-fps" && has_value) {
+            o.window_fps = std::atof(argv[++i]);
         } else if (a == "--no-model-check") {
             o.bridge.check_model = false;
         } else {
             std::fprintf(stderr, "cosim: unknown or incomplete option '%s'\n", a.c_str());
             return false;
         }
+    }
+    if (o.window && !frames_given) {
+        o.bridge.frames_dir.clear();
     }
     return !o.firmware.empty();
 }
@@ -134,6 +154,8 @@ private:
     void shutdown();
     void pump_uart(bool final) { uart_.pump(qemu_.uart_out_fd(), final); }
     void forward_pty();
+    void poll_window();
+    void show_frame_stats(const std::string &line);
 
     const Options &opt_;
     BatchBridge bridge_;
@@ -142,6 +164,9 @@ private:
     UartPump uart_;
     UartTerminal terminal_;
     UartPty pty_;
+    SdlWindow window_;
+    double window_polled_at_ = 0;
+    double window_closed_at_ = -1;  // when the window was closed (the run is ending), or -1
     int firmware_status_ = -1;  // QEMU's exit status once it has ended
 };
 
@@ -181,6 +206,36 @@ void CosimRun::forward_pty()
     }
 }
 
+// The window's keys go to the firmware; its closing asks the firmware to quit (Q), as a user would.
+void CosimRun::poll_window()
+{
+    const double now = now_s();
+    if (!window_.is_open() || now - window_polled_at_ < 0.01) {  // 100 times a second is enough
+        return;
+    }
+    window_polled_at_ = now;
+    bool closed = false;
+    const std::string keys = window_.poll(&closed);
+    uart_.type(qemu_.uart_in_fd(), keys);
+    if (closed && window_closed_at_ < 0) {
+        window_closed_at_ = now;
+        uart_.type(qemu_.uart_in_fd(), "q");
+    }
+}
+
+// The firmware's frame line (app.c: "frame N: ... | fw instr I | gpu cycles C | ...") in the title.
+void CosimRun::show_frame_stats(const std::string &line)
+{
+    unsigned long instr = 0, gpu_cycles = 0;
+    const char *at = std::strstr(line.c_str(), "| fw instr ");
+    if (line.rfind("frame ", 0) == 0 && at != nullptr &&
+        std::sscanf(at, "| fw instr %lu | gpu cycles %lu", &instr, &gpu_cycles) == 2) {
+        char status[96];
+        std::snprintf(status, sizeof status, "fw instr %lu | gpu busy %lu cycles", instr, gpu_cycles);
+        window_.set_status(status);
+    }
+}
+
 int CosimRun::fail(const char *kind, const char *fmt, ...)
 {
     va_list ap;
@@ -202,7 +257,7 @@ int CosimRun::run()
     std::signal(SIGPIPE, SIG_IGN);
 
     const std::string &frames_dir = opt_.bridge.frames_dir;
-    if (mkdir(frames_dir.c_str(), 0755) != 0 && errno != EEXIST) {
+    if (!frames_dir.empty() && mkdir(frames_dir.c_str(), 0755) != 0 && errno != EEXIST) {
         return fail("setup", "cannot create %s: %s", frames_dir.c_str(), std::strerror(errno));
     }
     if (!opt_.uart_log.empty() && !uart_.open_log(opt_.uart_log)) {
@@ -220,9 +275,24 @@ int CosimRun::run()
         // A client talks to the firmware while a batch simulates too (a frame is seconds of wall
         // time): its bytes go in and the firmware's answers come out every 50k GPU clocks
         // (about 40 ms), not only between batches. Runs without a pty keep their exact order.
-        bridge_.set_background([this] { pump_uart(false); forward_pty(); }, 50000);
         std::printf("cosim: UART on %s (%s)\n", pty_.link().c_str(), pty_.slave_path().c_str());
         std::fflush(stdout);
+    }
+    if (opt_.window) {
+        std::string error;
+        const size_t slash = opt_.firmware.rfind('/');
+        if (!window_.open("gpusim " + opt_.firmware.substr(slash == std::string::npos ? 0 : slash + 1), &error)) {
+            return fail("setup", "--window: %s", error.c_str());
+        }
+        window_.set_max_fps(opt_.window_fps);
+        uart_.on_line([this](const std::string &line) { show_frame_stats(line); });
+    }
+    if (pty_.is_open() || window_.is_open()) {
+        // A client or the window's user talks to the firmware while a batch simulates too (on the
+        // pin path a frame is seconds of wall time): their bytes go in, the firmware's answers come
+        // out and the window stays responsive every 50k GPU clocks (about 40 ms), not only between
+        // batches. Runs without either keep their exact order.
+        bridge_.set_background([this] { pump_uart(false); forward_pty(); poll_window(); }, 50000);
     }
     bridge_.attach(ram_.gpu_window());
     bridge_.publish_registers();  // ID, VERSION, CAPS ... are readable before the first doorbell
@@ -262,6 +332,14 @@ int CosimRun::run()
             uart_.type(qemu_.uart_in_fd(), keys);
         }
         forward_pty();
+        poll_window();
+        if (window_closed_at_ >= 0 && now_s() - window_closed_at_ > 3.0) {
+            std::printf("cosim: the window was closed and the firmware did not quit: stopped\n");
+            firmware_status_ = 0;
+            shutdown();
+            write_summary("none");
+            return 0;
+        }
         uint32_t reset;
         if (bridge_.pending_reset(&reset)) {
             bridge_.service_reset(reset);
@@ -276,8 +354,12 @@ int CosimRun::run()
                 }
             }
             std::string error;
+            const uint32_t frames_before = bridge_.frames();
             if (!bridge_.service_batch(tag, &error)) {
                 return fail(bridge_.error_kind(), "%s", error.c_str());
+            }
+            if (bridge_.frames() != frames_before) {
+                window_.show(bridge_.frame_rgb());
             }
             last_activity = now_s();
         } else {
@@ -299,6 +381,8 @@ void CosimRun::shutdown()
         qemu_.close_uart_out();
     }
     uart_.tee_to(nullptr);
+    uart_.on_line(nullptr);
+    window_.close();
     pty_.close();
     uart_.close_log();
     ram_.close();

@@ -43,6 +43,10 @@ void UartPump::pump(int uart_out_fd, bool final)
                 if (log_) {
                     std::fputs(line_.c_str(), log_);
                 }
+                if (on_line_) {
+                    line_.pop_back();
+                    on_line_(line_);
+                }
                 line_.clear();
             }
         }

@@ -7,11 +7,13 @@
 // the harness's own "cosim: ..." lines appear in the order they happened. type() writes keys to the
 // UART's input pipe (a failure is a warning, not an error). The pipes belong to QemuProcess; a
 // closed pipe (-1) is simply skipped. With tee_to(pty), every byte read from the UART also goes to
-// the pty (cosim/uart_pty) as it came, '\r' included: a client there sees the raw line.
+// the pty (cosim/uart_pty) as it came, '\r' included: a client there sees the raw line. With
+// on_line(fn), fn sees each complete line too (without its '\n'), after it was written.
 #ifndef UART_PUMP_H
 #define UART_PUMP_H
 
 #include <cstdio>
+#include <functional>
 #include <string>
 
 class UartPty;
@@ -28,11 +30,13 @@ public:
     void pump(int uart_out_fd, bool final);
     void type(int uart_in_fd, const std::string &text);
     void tee_to(UartPty *pty) { tee_ = pty; }
+    void on_line(std::function<void(const std::string &)> fn) { on_line_ = std::move(fn); }
 
 private:
     FILE *log_ = nullptr;
     std::string line_;
     UartPty *tee_ = nullptr;
+    std::function<void(const std::string &)> on_line_;
 };
 
 #endif
