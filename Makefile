@@ -44,6 +44,8 @@ COSIM_CPP  := $(sort $(wildcard cosim/*.cpp))
 HOST_INC   := -Icosim -Igpu_model -Icontract -Ibsp/qemu_virt
 # The SoC simulator (socsim), run-soc, bench-soc, soc-smoke and the soc firmware builds.
 include cosim/soc/socsim.mk
+# `make debug`: the firmware under gdb-multiarch, the GPU co-simulated (needs GPUSIM, FW_ELF).
+include cosim/debug.mk
 # Boards: bitstream, synth-board, flash, load, term, lint-board (boards/<board>/board.mk).
 BOARD      ?= ulx3s
 include boards/ulx3s/board.mk

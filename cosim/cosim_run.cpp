@@ -60,6 +60,7 @@ struct Options {
     bool window = false;
     double window_fps = 60.0;  // the window's frame-rate cap (0: none)
     double idle_timeout_s = 60.0;
+    int gdb_port = 0;  // QEMU's GDB stub (--gdb), or 0
     KeysAt keys_at;  // (batch number, text) to type
     BridgeOptions bridge;
 };
@@ -77,7 +78,7 @@ int usage()
                  "usage: gpusim cosim --fw FIRMWARE.elf [--frames DIR] [--qemu PATH] [--uart-log FILE]\n"
                  "                    [--idle-timeout SECONDS] [--max-batch-cycles N] [--no-model-check]\n"
                  "                    [--keys-at N:TEXT]... [--drop-doorbell N] [--dump-lists DIR] [--summary FILE]\n"
-                 "                    [--uart-pty LINK] [--window] [--window-fps N]\n"
+                 "                    [--uart-pty LINK] [--window] [--window-fps N] [--gdb PORT]\n"
                  "  --keys-at N:TEXT   type TEXT into the firmware's UART just before servicing doorbell N (from 1)\n"
                  "  --drop-doorbell N  ignore doorbell N, as a hung GPU would (the firmware's watchdog must RESET)\n"
                  "  --dump-lists DIR   write each batch as DIR/batchNNNN.txt in the `make raster` list format\n"
@@ -88,6 +89,8 @@ int usage()
                  "                     go to the firmware's UART, closing it ends the run as Q does\n"
                  "  --window-fps N     at most N frames a second in the window, as a board shows them (default 60,\n"
                  "                     0: as fast as the simulation goes)\n"
+                 "  --gdb PORT         QEMU's GDB stub on tcp:127.0.0.1:PORT, the firmware halted at reset until a\n"
+                 "                     debugger continues it; no idle timeout (make debug)\n"
                  "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n");
     return 2;
 }
@@ -111,6 +114,12 @@ bool parse(int argc, char **argv, Options &o)
             o.summary = argv[++i];
         } else if (a == "--uart-pty" && has_value) {
             o.uart_pty = argv[++i];
+        } else if (a == "--gdb" && has_value) {
+            o.gdb_port = std::atoi(argv[++i]);
+            if (o.gdb_port <= 0 || o.gdb_port > 65535) {
+                std::fprintf(stderr, "cosim: --gdb expects a TCP port (1-65535)\n");
+                return false;
+            }
         } else if (a == "--idle-timeout" && has_value) {
             o.idle_timeout_s = std::atof(argv[++i]);
         } else if (a == "--max-batch-cycles" && has_value) {
@@ -296,7 +305,7 @@ int CosimRun::run()
     }
     bridge_.attach(ram_.gpu_window());
     bridge_.publish_registers();  // ID, VERSION, CAPS ... are readable before the first doorbell
-    if (!qemu_.start(opt_.qemu, opt_.firmware, ram_.fd())) {
+    if (!qemu_.start(opt_.qemu, opt_.firmware, ram_.fd(), opt_.gdb_port)) {
         return fail("setup", "cannot start QEMU: %s", std::strerror(errno));
     }
     terminal_.enter_raw();
@@ -363,7 +372,8 @@ int CosimRun::run()
             }
             last_activity = now_s();
         } else {
-            if (now_s() - last_activity > opt_.idle_timeout_s) {
+            // A debugger may hold the firmware for any time: no idle timeout under --gdb.
+            if (opt_.gdb_port == 0 && now_s() - last_activity > opt_.idle_timeout_s) {
                 return fail("idle", "the firmware rang no doorbell for %.0f s: giving up", opt_.idle_timeout_s);
             }
             usleep(20);

@@ -16,7 +16,7 @@ extern "C" {
 #include "platform.h"
 }
 
-bool QemuProcess::start(const std::string &qemu, const std::string &firmware, int ram_fd)
+bool QemuProcess::start(const std::string &qemu, const std::string &firmware, int ram_fd, int gdb_port)
 {
     int pipe_fds[2];
     int in_fds[2];
@@ -24,7 +24,7 @@ bool QemuProcess::start(const std::string &qemu, const std::string &firmware, in
         return false;
     }
     const pid_t parent = getpid();
-    char ram_size[32], backend[160];
+    char ram_size[32], backend[160], gdb[48];
     std::snprintf(ram_size, sizeof ram_size, "%uM", PLATFORM_RAM_BYTES >> 20);
     std::snprintf(backend, sizeof backend,
                   "memory-backend-file,id=mem,size=%uM,mem-path=/proc/self/fd/%d,share=on",
@@ -32,7 +32,12 @@ bool QemuProcess::start(const std::string &qemu, const std::string &firmware, in
     std::vector<const char *> args = {
         qemu.c_str(), "-machine", "virt,memory-backend=mem", "-m", ram_size, "-object", backend,
         "-bios", "none", "-kernel", firmware.c_str(), "-display", "none", "-serial", "stdio",
-        "-monitor", "none", "-icount", "shift=0", "-no-reboot", nullptr};
+        "-monitor", "none", "-icount", "shift=0", "-no-reboot"};
+    if (gdb_port > 0) {
+        std::snprintf(gdb, sizeof gdb, "tcp:127.0.0.1:%d", gdb_port);
+        args.insert(args.end(), {"-gdb", gdb, "-S"});  // halted at reset until the debugger continues
+    }
+    args.push_back(nullptr);
 
     pid_ = fork();
     if (pid_ < 0) {

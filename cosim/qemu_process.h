@@ -3,7 +3,8 @@
 //
 // Contract: start() forks and execs QEMU with the shared file as /proc/self/fd/RAM_FD, the UART's
 // output on uart_out_fd() (non-blocking, read by this process) and its input on uart_in_fd() (written
-// by this process). QEMU is killed with SIGKILL when this process dies (PR_SET_PDEATHSIG; a child
+// by this process). With gdb_port > 0 QEMU also offers its GDB stub on tcp:127.0.0.1:gdb_port and
+// starts halted at reset (-S) until a debugger connects and continues. QEMU is killed with SIGKILL when this process dies (PR_SET_PDEATHSIG; a child
 // whose parent is already gone exits at once), so it never outlives the harness. reap() polls
 // without blocking: true once QEMU has ended, with its wait status. kill() ends a running QEMU and
 // waits for it; close_pipes() closes this side's ends. Both are safe to call twice.
@@ -22,7 +23,8 @@ public:
     ~QemuProcess() { kill(); }
 
     // False with errno set if a pipe or the fork failed (an exec failure shows as exit status 127).
-    bool start(const std::string &qemu, const std::string &firmware, int ram_fd);
+    // gdb_port 0: no GDB stub, the firmware starts at once.
+    bool start(const std::string &qemu, const std::string &firmware, int ram_fd, int gdb_port = 0);
     bool reap(int *status);
     void kill();
     bool running() const { return pid_ > 0; }
