@@ -75,6 +75,7 @@ ifeq ($(PLATFORM),soc)
 run-built: run-soc
 else ifneq ($(WINDOW),)
 run-built: $(FW_ELF) $(GPUSIM_FAST)
+	@mkdir -p $(OUT)
 	$(GPUSIM_FAST) cosim --fw $(FW_ELF) --window --uart-log $(OUT)/uart.log $(if $(UART_PTY),--uart-pty $(UART_PTY))
 else
 run-built: $(FW_ELF) $(GPUSIM)
@@ -90,10 +91,10 @@ endif
 # the suites; TEST_BUILD_ONLY=1 only builds.
 SUITE ?= *
 BUILD_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
-TEST_ENV = GPUSIM=$(GPUSIM) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUITE='$(SUITE)' \
+TEST_ENV = GPUSIM=$(GPUSIM) GPUSIM_FAST=$(GPUSIM_FAST) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUITE='$(SUITE)' \
            $(if $(TEST_JOBS),TEST_JOBS=$(TEST_JOBS))
 # The simulators first: the longest builds, started early so that the short ones fill the tail.
-TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
+TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) $(GPUSIM_FAST) fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
              fw-test-deps $(PNG_DIFF) $(MESHCONV) $(UPLOAD_PEER)
 test: setup
 	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) VERILATOR_JOBS=1 TEST_BUILD_ONLY=1 test-quick

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The test suites, one line each, and the runner. `make test` calls it with GPUSIM, FW_ELF, BUILD,
-# PYTHON set (and SUITE when given); it prints one line per suite as each one ends (the log's tail
-# on failure) and ends with "N passed, N failed".
+# The test suites, one line each, and the runner. `make test` calls it with GPUSIM, GPUSIM_FAST (the
+# fast display path's simulator), FW_ELF, BUILD, PYTHON set (and SUITE when given); it prints one
+# line per suite as each one ends (the log's tail on failure) and ends with "N passed, N failed".
 #
 #   tests/run_all.sh               every suite
 #   SUITE='rtl-* fw-unit' ...      only the suites whose names match one of the globs
@@ -30,9 +30,9 @@
 # $BUILD/tests-run/NAME, and no_qemu_left counts only the QEMUs the calling suite started.
 set -u
 cd "$(dirname "$0")/.."
-: "${GPUSIM:?}" "${FW_ELF:?}" "${BUILD:?}" "${PYTHON:=python3}" "${SUITE:=*}"
+: "${GPUSIM:?}" "${GPUSIM_FAST:?}" "${FW_ELF:?}" "${BUILD:?}" "${PYTHON:=python3}" "${SUITE:=*}"
 : "${TEST_JOBS:=$(nproc 2>/dev/null || echo 1)}"
-export GPUSIM FW_ELF BUILD PYTHON
+export GPUSIM GPUSIM_FAST FW_ELF BUILD PYTHON
 [[ "$TEST_JOBS" =~ ^[1-9][0-9]*$ ]] || { echo "TEST_JOBS=$TEST_JOBS: expected a number of suites (1 or more)"; exit 2; }
 list_only=0
 [ "${1:-}" = "--list" ] && list_only=1
@@ -113,6 +113,8 @@ suite cosim-kill-qemu          3 bash tests/cosim/kill.sh qemu
 suite cosim-kill-harness       1 bash tests/cosim/kill.sh harness
 suite cosim-stop-signal        4 bash tests/cosim/kill.sh sigterm
 suite cosim-gpu-timeout        1 bash tests/cosim/gpu_timeout.sh
+suite cosim-debug-gdb          6 bash tests/cosim/debug_gdb.sh
+suite cosim-window             7 bash tests/window/window.sh
 suite upload-cosim            60 bash tests/upload/cosim_upload.sh
 suite upload-host-tool-unit    1 bash tests/tools/mesh_upload.sh
 suite upload-host-tool         2 bash tests/upload/host_tool.sh

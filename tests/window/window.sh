@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# The window, as a user meets it: on an X display (Xvfb here), outside CI, `make run SCENE=voxel`
+# opens a window on the fast display path. The test finds it by its title, types keys into it with
+# xdotool (letters and two arrow keys, through the X server's keyboard as a user's would arrive),
+# waits until the window has shown more frames, takes a screenshot of it with xwd, types Q, and
+# expects the run to end with status 0 and no QEMU left. The screenshot must equal, pixel for
+# pixel, the golden model's frame after the same keys (the host build, $BUILD/fw-test/host-voxel:
+# the voxel world is still unless keys move the camera, so the frame depends on the keys only).
+# Skips, saying so, where Xvfb, xdotool or xwd is missing (tools/packages.txt lists them).
+source "$(dirname "$0")/../lib.sh"
+need BUILD PYTHON
+for tool in Xvfb xdotool xwd; do
+    command -v "$tool" >/dev/null || pass "window: skipped: $tool is not installed (tools/setup.sh installs it)"
+done
+host="$BUILD/fw-test/host-voxel"
+need_file "$host"
+work=$(fresh_dir window)
+
+# A display of its own: Xvfb picks a free number and writes it to fd 3. TrueColor, 24 bits.
+Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp 3>"$work/display" >"$work/xvfb.log" 2>&1 &
+xvfb=$!
+run_pid=
+cleanup() {
+    [ -n "$run_pid" ] && kill "$run_pid" 2>/dev/null
+    kill "$xvfb" 2>/dev/null
+    wait 2>/dev/null
+}
+trap cleanup EXIT
+for _ in $(seq 100); do
+    [ -s "$work/display" ] && break
+    sleep 0.1
+done
+[ -s "$work/display" ] || fail "Xvfb did not start: $(tail -n 3 "$work/xvfb.log")"
+export DISPLAY=":$(cat "$work/display")"
+
+# make run as on a desktop: a display, neither CI nor HEADLESS; FRAMES=0 (until Q) is its default.
+env -u CI -u HEADLESS -u FRAMES make --no-print-directory run SCENE=voxel BUILD="$BUILD" OUT="$work/out" \
+    </dev/null >"$work/run.out" 2>&1 &
+run_pid=$!
+
+# The window's title: "gpusim voxel.elf | frame N | F fps | fw instr I | gpu busy C cycles".
+title() { xdotool getwindowname "$win" 2>/dev/null || true; }
+frame_no() { title | sed -nE 's/.*\| frame ([0-9]+) \|.*/\1/p'; }
+wait_frames() {  # until the window has shown at least $1 frames
+    local _ n
+    for _ in $(seq 600); do
+        n=$(frame_no)
+        [ -n "$n" ] && [ "$n" -ge "$1" ] && return 0
+        kill -0 "$run_pid" 2>/dev/null || fail "make run ended early: $(tail -n 5 "$work/run.out")"
+        sleep 0.1
+    done
+    fail "the window showed ${n:-no} frames, waiting for $1 (title: $(title))"
+}
+win=
+for _ in $(seq 1200); do  # make run may build the firmware first
+    win=$(xdotool search --name '^gpusim voxel\.elf' 2>/dev/null | head -n 1 || true)
+    [ -n "$win" ] && break
+    kill -0 "$run_pid" 2>/dev/null || fail "make run ended without a window: $(tail -n 5 "$work/run.out")"
+    sleep 0.1
+done
+[ -n "$win" ] || fail "no window titled 'gpusim voxel.elf' within 120 s"
+wait_frames 3
+
+xdotool windowfocus --sync "$win"
+xdotool type --delay 30 wwdd
+xdotool key --delay 30 Left Left
+typed_at=$(frame_no)
+wait_frames $((typed_at + 10))
+xwd -id "$win" -silent >"$work/window.xwd" || fail "xwd could not dump the window"
+"$PYTHON" tools/xwd_to_png.py "$work/window.xwd" "$work/window.png"
+shown=$(title)
+xdotool type q
+status=0
+for _ in $(seq 100); do
+    kill -0 "$run_pid" 2>/dev/null || break
+    sleep 0.1
+done
+wait "$run_pid" || status=$?
+run_pid=
+expect_status 0 "make run after Q"
+expect_line 'quit at frame' "$work/out/uart.log"
+no_qemu_left
+
+# The golden model's frame after the same keys: the arrows as the bytes a terminal sends.
+run_to "$work/host.out" 60 "$host" --frames "$work/ref" --keys-at $'1:wwdd\e[D\e[D'
+expect_status 0 "the host build"
+ref="$work/ref/$(ls "$work/ref" | tail -n 1)"
+run_to "$work/diff.out" 10 "$BUILD/tools/png_diff" "$ref" "$work/window.png"
+grep -q ' differing 0 ' "$work/diff.out" || fail "the window's picture differs from the golden model's: $(cat "$work/diff.out")"
+cmp -s "$ref" "$work/ref/0000.png" && fail "the keys moved nothing: the test would not see them"
+pass "window: make run SCENE=voxel opened '$shown'; keys typed into it, its screenshot equals the golden model's frame; Q ended it with status 0"
