@@ -52,7 +52,7 @@ include boards/ulx3s/board.mk
 include boards/digilent/board.mk
 
 .PHONY: all setup run run-built test test-quick test-list lint check-contract contract random-long raster \
-        bench-gpu bench-error bench-error-run synth clean
+        bench-gpu bench-sim bench-error bench-error-run synth clean
 
 all: $(FW_ELF) $(GPUSIM)
 
@@ -145,6 +145,10 @@ bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(FW_ELF)
 # the interpreter Debian's python3-matplotlib belongs to (PYTHON may be another one, e.g. pyenv's).
 PLOT_PYTHON ?= $(or $(wildcard /usr/bin/python3),$(PYTHON))
 BENCH_ERROR_CHECK = $(if $(FW_SUBPIXEL_BITS),@echo "bench-error sets FW_SUBPIXEL_BITS itself: run it without" && exit 2)
+# The co-simulation's speed per scene on both display paths, the pins and the fast one (window).
+bench-sim: $(FW_SIMBENCH_ELFS) $(GPUSIM) $(GPUSIM_FAST)
+	@bash tools/bench_sim.sh $(GPUSIM) $(GPUSIM_FAST) $(FW_SIMBENCH_DIR) $(FW_SCENES)
+
 bench-error:
 	$(BENCH_ERROR_CHECK)
 	@bash tools/setup.sh packages-plot.txt

@@ -15,11 +15,14 @@
 // the same frames byte for byte whatever the host's timing. Robustness: the shared-memory file is
 // unlinked as soon as it is created, QEMU dies with this process (PR_SET_PDEATHSIG), and this process
 // notices QEMU's death, SIGINT/SIGTERM/SIGHUP (and Ctrl-C on a raw terminal), a GPU timeout and a
-// silent firmware. Every failure prints one "cosim: error: ..." line on stderr, stops QEMU, restores
-// the terminal, flushes the UART's last output and returns 1; usage errors return 2; a firmware that
-// ends with status 0 returns 0. With --summary FILE the run's outcome is also written as key=value
+// silent firmware (unless a debugger holds it: --gdb). Every failure prints one "cosim: error: ..."
+// line on stderr, stops QEMU, restores the terminal, flushes the UART's last output and returns 1;
+// usage errors return 2; a firmware that ends with status 0, and a run stopped by
+// --stop-after-frames, return 0. With --summary FILE the run's outcome is also written as key=value
 // lines (result, error, firmware_status, batches, doorbells_dropped, gpu_resets, frames,
-// frames_model_checked, gpu_cycles, uart_pty_in, uart_pty_dropped) for tests and scripts to read
+// frames_model_checked, gpu_cycles, frame_wall_first_s and frame_wall_last_s (the monotonic clock
+// when the first and the last frame were captured), frame_cycles_first and frame_cycles_last (the
+// GPU clocks simulated by then), uart_pty_in, uart_pty_dropped) for tests and scripts to read
 // instead of the prose.
 #include <cerrno>
 #include <climits>
@@ -57,6 +60,7 @@ struct Options {
     std::string uart_log;
     std::string summary;
     std::string uart_pty;  // the pseudo-terminal's link, or empty
+    uint32_t stop_after_frames = 0;  // end the run (status 0) after this many frames; 0: never
     bool window = false;
     double window_fps = 60.0;  // the window's frame-rate cap (0: none)
     double idle_timeout_s = 60.0;
@@ -79,6 +83,7 @@ int usage()
                  "                    [--idle-timeout SECONDS] [--max-batch-cycles N] [--no-model-check]\n"
                  "                    [--keys-at N:TEXT]... [--drop-doorbell N] [--dump-lists DIR] [--summary FILE]\n"
                  "                    [--uart-pty LINK] [--window] [--window-fps N] [--gdb PORT]\n"
+                 "                    [--stop-after-frames N]\n"
                  "  --keys-at N:TEXT   type TEXT into the firmware's UART just before servicing doorbell N (from 1)\n"
                  "  --drop-doorbell N  ignore doorbell N, as a hung GPU would (the firmware's watchdog must RESET)\n"
                  "  --dump-lists DIR   write each batch as DIR/batchNNNN.txt in the `make raster` list format\n"
@@ -89,6 +94,7 @@ int usage()
                  "                     go to the firmware's UART, closing it ends the run as Q does\n"
                  "  --window-fps N     at most N frames a second in the window, as a board shows them (default 60,\n"
                  "                     0: as fast as the simulation goes)\n"
+                 "  --stop-after-frames N  end the run after N frames, with status 0 (benchmarks)\n"
                  "  --gdb PORT         QEMU's GDB stub on tcp:127.0.0.1:PORT, the firmware halted at reset until a\n"
                  "                     debugger continues it; no idle timeout (make debug)\n"
                  "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n");
@@ -132,6 +138,8 @@ bool parse(int argc, char **argv, Options &o)
             o.bridge.dump_lists = argv[++i];
         } else if (a == "--drop-doorbell" && has_value) {
             o.bridge.drop_doorbell = static_cast<uint32_t>(std::strtoul(argv[++i], nullptr, 10));
+        } else if (a == "--stop-after-frames" && has_value) {
+            o.stop_after_frames = static_cast<uint32_t>(std::strtoul(argv[++i], nullptr, 10));
         } else if (a == "--window") {
             o.window = true;
         } else if (a == "--window-fps" && has_value) {
@@ -177,6 +185,9 @@ private:
     double window_polled_at_ = 0;
     double window_closed_at_ = -1;  // when the window was closed (the run is ending), or -1
     int firmware_status_ = -1;  // QEMU's exit status once it has ended
+    // When the first and the last frame were captured: wall time, simulated GPU clocks.
+    double first_frame_s_ = 0, last_frame_s_ = 0;
+    uint64_t first_frame_cycles_ = 0, last_frame_cycles_ = 0;
 };
 
 // The outcome for --summary: error "none" on success; firmware_status -1 while QEMU had not ended.
@@ -196,6 +207,10 @@ void CosimRun::write_summary(const char *error)
                  bridge_.doorbells_dropped(), bridge_.resets());
     std::fprintf(f, "frames=%u\nframes_model_checked=%u\ngpu_cycles=%llu\n", bridge_.frames(),
                  bridge_.frames_model_checked(), static_cast<unsigned long long>(bridge_.cycles()));
+    std::fprintf(f, "frame_wall_first_s=%.6f\nframe_wall_last_s=%.6f\n", first_frame_s_, last_frame_s_);
+    std::fprintf(f, "frame_cycles_first=%llu\nframe_cycles_last=%llu\n",
+                 static_cast<unsigned long long>(first_frame_cycles_),
+                 static_cast<unsigned long long>(last_frame_cycles_));
     std::fprintf(f, "uart_pty_in=%llu\nuart_pty_dropped=%llu\n", static_cast<unsigned long long>(pty_.bytes_in()),
                  static_cast<unsigned long long>(pty_.bytes_dropped()));
     std::fclose(f);
@@ -369,6 +384,18 @@ int CosimRun::run()
             }
             if (bridge_.frames() != frames_before) {
                 window_.show(bridge_.frame_rgb());
+                last_frame_s_ = now_s();
+                last_frame_cycles_ = bridge_.cycles();
+                if (frames_before == 0) {
+                    first_frame_s_ = last_frame_s_;
+                    first_frame_cycles_ = last_frame_cycles_;
+                }
+                if (opt_.stop_after_frames != 0 && bridge_.frames() >= opt_.stop_after_frames) {
+                    std::printf("cosim: stopped after %u frames (--stop-after-frames)\n", bridge_.frames());
+                    shutdown();
+                    write_summary("none");
+                    return 0;
+                }
             }
             last_activity = now_s();
         } else {

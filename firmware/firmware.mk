@@ -372,6 +372,12 @@ $(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
   $(eval $(call FW_ELF_RULES,$(FW_BENCH_DIR)/$(call fw_name,$(s),$(b)).elf,$(s),$(b),$(FW_BENCH_FRAMES),))\
   $(eval FW_BENCH_ELFS += $(FW_BENCH_DIR)/$(call fw_name,$(s),$(b)).elf)))
 
+# bench-sim builds (tools/bench_sim.sh): every scene until stopped (FRAMES=0); the harness's
+# --stop-after-frames ends each run.
+FW_SIMBENCH_DIR  := $(BUILD)/fw-simbench$(FW_PSUFFIX)
+FW_SIMBENCH_ELFS := $(foreach s,$(FW_SCENES),$(FW_SIMBENCH_DIR)/$(s).elf)
+$(foreach s,$(FW_SCENES),$(eval $(call FW_ELF_RULES,$(FW_SIMBENCH_DIR)/$(s).elf,$(s),fixed,0,)))
+
 # bench-error builds: FW_ERR_FRAMES frames of every scene, <scene>-<variant>[-z].elf; -z: the
 # depth test on from the first frame (FW_DEPTH_TEST=1, for a GPU built with the depth buffer).
 FW_ERR_FRAMES := 3
