@@ -172,7 +172,6 @@ private:
     void pump_uart(bool final) { uart_.pump(qemu_.uart_out_fd(), final); }
     void forward_pty();
     void poll_window();
-    void show_frame_stats(const std::string &line);
 
     const Options &opt_;
     BatchBridge bridge_;
@@ -247,19 +246,6 @@ void CosimRun::poll_window()
     }
 }
 
-// The firmware's frame line (app.c: "frame N: ... | fw instr I | gpu cycles C | ...") in the title.
-void CosimRun::show_frame_stats(const std::string &line)
-{
-    unsigned long instr = 0, gpu_cycles = 0;
-    const char *at = std::strstr(line.c_str(), "| fw instr ");
-    if (line.rfind("frame ", 0) == 0 && at != nullptr &&
-        std::sscanf(at, "| fw instr %lu | gpu cycles %lu", &instr, &gpu_cycles) == 2) {
-        char status[96];
-        std::snprintf(status, sizeof status, "fw instr %lu | gpu busy %lu cycles", instr, gpu_cycles);
-        window_.set_status(status);
-    }
-}
-
 int CosimRun::fail(const char *kind, const char *fmt, ...)
 {
     va_list ap;
@@ -309,7 +295,12 @@ int CosimRun::run()
             return fail("setup", "--window: %s", error.c_str());
         }
         window_.set_max_fps(opt_.window_fps);
-        uart_.on_line([this](const std::string &line) { show_frame_stats(line); });
+        uart_.on_line([this](const std::string &line) {
+            const std::string status = frame_line_status(line);
+            if (!status.empty()) {
+                window_.set_status(status);
+            }
+        });
     }
     if (pty_.is_open() || window_.is_open()) {
         // A client or the window's user talks to the firmware while a batch simulates too (on the

@@ -2,6 +2,7 @@
 #include "sdl_window.h"
 
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 
 #include <SDL.h>
@@ -28,6 +29,19 @@ void sleep_s(double s)
 }
 
 }  // namespace
+
+std::string frame_line_status(const std::string &line)
+{
+    unsigned long instr = 0, gpu_cycles = 0;
+    const char *at = std::strstr(line.c_str(), "| fw instr ");
+    if (line.rfind("frame ", 0) != 0 || at == nullptr ||
+        std::sscanf(at, "| fw instr %lu | gpu cycles %lu", &instr, &gpu_cycles) != 2) {
+        return "";
+    }
+    char status[96];
+    std::snprintf(status, sizeof status, "fw instr %lu | gpu busy %lu cycles", instr, gpu_cycles);
+    return status;
+}
 
 bool SdlWindow::open(const std::string &name, std::string *error)
 {

@@ -25,6 +25,10 @@ struct SDL_Window;
 struct SDL_Renderer;
 struct SDL_Texture;
 
+// The window's status from one of the firmware's frame lines (firmware/app/app.c: "frame N: ... |
+// fw instr I | gpu cycles C | ..."): "fw instr I | gpu busy C cycles"; "" for any other line.
+std::string frame_line_status(const std::string &line);
+
 class SdlWindow {
 public:
     SdlWindow() = default;

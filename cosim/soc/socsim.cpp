@@ -15,7 +15,7 @@
 //
 //   socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]
 //          [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--no-model-check]
-//          [--uart-pty LINK]
+//          [--uart-pty LINK] [--window] [--window-fps N]
 //
 // The program: RAM_INIT's format (one 32-bit hex word per line from address 0; --fw FILE.elf reads
 // FILE.elf.hex, the soc platform's post-link output), loaded at time 0 through soc_ram's
@@ -84,6 +84,7 @@ using SocModel = Vsoc_top;
 #include "uart_pty.h"
 #include "uart_reply.h"
 #include "uart_terminal.h"
+#include "sdl_window.h"
 
 extern "C" {
 #include "gpu_regs.h"
@@ -128,6 +129,8 @@ struct Options {
     std::string uart_log;
     std::string summary;
     std::string uart_pty;  // the pseudo-terminal's link, or empty
+    bool window = false;   // the frames in a window too (cosim/sdl_window)
+    double window_fps = 60.0;
     uint64_t max_cycles = 3000000000ull;  // 60 s of SoC time at 50 MHz
     uint64_t progress_cycles = 50000000;  // a progress line after this many cycles without a frame
     uint32_t uart_divider = (SOCSIM_CLK_HZ + SOC_UART_BAUD / 2) / SOC_UART_BAUD;  // as soc_uart rounds
@@ -141,7 +144,7 @@ int usage()
     std::fprintf(stderr,
                  "usage: socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]\n"
                  "              [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--no-model-check]\n"
-                 "              [--uart-divider N] [--uart-pty LINK]\n"
+                 "              [--uart-divider N] [--uart-pty LINK] [--window] [--window-fps N]\n"
                  "  --fw FILE.elf     run FILE.elf.hex (the soc build's RAM image); -kernel FILE.elf is the same\n"
                  "  --hex FILE        run FILE, a RAM image (one 32-bit hex word per line from address 0)\n"
                  "  --keys-at N:TEXT  send TEXT on uart_rx when the GPU takes DOORBELL write N (from 1)\n"
@@ -151,6 +154,9 @@ int usage()
                  "  --summary FILE    write the run's outcome and counts as key=value lines\n"
                  "  --uart-pty LINK   also offer the UART as a pseudo-terminal, LINK a symlink to it (raw, 8 bits):\n"
                  "                    what a client writes there is sent on uart_rx, uart_tx's bytes are sent there\n"
+                 "  --window          show the frames in a window as well (no PNG files unless --frames is given);\n"
+                 "                    its keys go on uart_rx, closing it ends the run as Q does\n"
+                 "  --window-fps N    at most N frames a second in the window (default 60, 0: no cap)\n"
                  "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n"
                  "  Exit status: the firmware's (SYS EXIT); 1 on a harness error; 2 on a usage error.\n");
     return 2;
@@ -158,6 +164,7 @@ int usage()
 
 bool parse(int argc, char **argv, Options &o)
 {
+    bool frames_given = false;
     for (int i = 1; i < argc; i++) {
         const std::string a = argv[i];
         const bool has_value = i + 1 < argc;
@@ -167,12 +174,17 @@ bool parse(int argc, char **argv, Options &o)
             o.hex = argv[++i];
         } else if (a == "--frames" && has_value) {
             o.frames_dir = argv[++i];
+            frames_given = true;
         } else if (a == "--uart-log" && has_value) {
             o.uart_log = argv[++i];
         } else if (a == "--summary" && has_value) {
             o.summary = argv[++i];
         } else if (a == "--uart-pty" && has_value) {
             o.uart_pty = argv[++i];
+        } else if (a == "--window") {
+            o.window = true;
+        } else if (a == "--window-fps" && has_value) {
+            o.window_fps = std::atof(argv[++i]);
         } else if (a == "--max-cycles" && has_value) {
             o.max_cycles = static_cast<uint64_t>(std::strtod(argv[++i], nullptr));
         } else if (a == "--uart-divider" && has_value) {
@@ -192,6 +204,9 @@ bool parse(int argc, char **argv, Options &o)
             std::fprintf(stderr, "socsim: unknown or incomplete option '%s'\n", a.c_str());
             return false;
         }
+    }
+    if (o.window && !frames_given) {
+        o.frames_dir.clear();
     }
     return !o.hex.empty() && o.uart_divider >= 4;
 }
@@ -267,6 +282,8 @@ private:
     UartLineSender tx_;    // keys: soc_top's uart_rx
     UartTerminal terminal_;
     UartPty pty_;
+    SdlWindow window_;
+    double window_closed_at_ = -1;  // when the window was closed (the run is ending), or -1
     static constexpr size_t kPtyQueue = 64;  // bytes from the pty queued ahead of the line, at most
     vga_monitor monitor_;
     FILE *log_ = nullptr;
@@ -558,6 +575,10 @@ void SocRun::flush_uart(bool final)
     if (!complete) {
         std::fputc('\n', stdout);
     }
+    const std::string status = window_.is_open() ? frame_line_status(line_) : "";
+    if (!status.empty()) {
+        window_.set_status(status);
+    }
     if (log_ != nullptr && complete) {
         std::fputs(line_.c_str(), log_);
     }
@@ -579,12 +600,15 @@ bool SocRun::finish_frame(std::string *error)
         }
         deferred_.clear();
     }
-    char path[512];
-    std::snprintf(path, sizeof path, "%s/%04u.png", opt_.frames_dir.c_str(), frames_);
-    if (png_write_rgb(path, monitor_.rgb, VGA_W, VGA_H) != 0) {
-        *error = std::string("cannot write ") + path;
-        return false;
+    char path[512] = "(not written)";
+    if (!opt_.frames_dir.empty()) {
+        std::snprintf(path, sizeof path, "%s/%04u.png", opt_.frames_dir.c_str(), frames_);
+        if (png_write_rgb(path, monitor_.rgb, VGA_W, VGA_H) != 0) {
+            *error = std::string("cannot write ") + path;
+            return false;
+        }
     }
+    window_.show(monitor_.rgb);
     flush_uart(false);
     // swap: the cycle of the swap, since the previous one; ready: from the previous swap to the
     // doorbell of this frame's last batch (what the frame's work took before its swap waited).
@@ -677,7 +701,7 @@ int SocRun::run()
     std::signal(SIGPIPE, SIG_IGN);
     t_start_ = now_s();
 
-    if (mkdir(opt_.frames_dir.c_str(), 0755) != 0 && errno != EEXIST) {
+    if (!opt_.frames_dir.empty() && mkdir(opt_.frames_dir.c_str(), 0755) != 0 && errno != EEXIST) {
         return fail("setup", "cannot create %s: %s", opt_.frames_dir.c_str(), std::strerror(errno));
     }
     if (!opt_.uart_log.empty()) {
@@ -696,6 +720,16 @@ int SocRun::run()
         }
         std::printf("socsim: UART on %s (%s)\n", pty_.link().c_str(), pty_.slave_path().c_str());
         std::fflush(stdout);
+    }
+    if (opt_.window) {
+        std::string fw = opt_.hex.substr(opt_.hex.rfind('/') + 1);  // npos + 1 = 0
+        if (fw.size() > 8 && fw.compare(fw.size() - 8, 8, ".elf.hex") == 0) {
+            fw.resize(fw.size() - 4);  // the ELF it was made from (--fw)
+        }
+        if (!window_.open("socsim " + fw, &error)) {
+            return fail("setup", "--window: %s", error.c_str());
+        }
+        window_.set_max_fps(opt_.window_fps);
     }
 #ifdef SOCSIM_BOARD_ULX3S
     top_->clk_sys = top_->clk_pix = top_->clk_tmds = 0;
@@ -775,6 +809,21 @@ int SocRun::run()
             g_signal = SIGINT;
         }
         tx_.queue(keys);
+        if (window_.is_open()) {
+            bool closed = false;
+            tx_.queue(window_.poll(&closed));
+            if (closed && window_closed_at_ < 0) {
+                window_closed_at_ = now_s();
+                tx_.queue("q");  // the firmware quits as on Q, with its status
+            } else if (closed && now_s() - window_closed_at_ > 10.0) {
+                flush_uart(true);
+                std::printf("socsim: the window was closed and the firmware did not quit: stopped\n");
+                terminal_.restore();
+                write_summary("none");
+                report_speed();
+                return 0;
+            }
+        }
         if (tx_.queued() < kPtyQueue) {
             tx_.queue(pty_.read(kPtyQueue - tx_.queued()));
         }

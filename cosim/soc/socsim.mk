@@ -8,7 +8,8 @@
 #                    build (boards/ulx3s/ulx3s_system: three clocks, the video decoded from the
 #                    TMDS pairs of the DVI connector), -DSOCSIM_BOARD_ULX3S
 #   run-soc        `make run PLATFORM=soc [SCENE=… FRAMES=…]`: the soc firmware of SCENE (a
-#                  recursive make with FW_PLATFORM=soc) on socsim -> $(OUT)/frames, $(OUT)/uart.log
+#                  recursive make with FW_PLATFORM=soc) on socsim -> $(OUT)/frames, $(OUT)/uart.log,
+#                  or a window where the Makefile's WINDOW says so (a display, not CI)
 #   soc-fw         that firmware only; soc-fw-test: the FW_TEST_FRAMES builds of every scene
 #   bench-soc      per scene: instructions, cycles, CPI, refills, GPU cycles, fps (tools/bench_soc.py)
 #   soc-smoke      the bare-metal smoke program (tests/soc/smoke.c, soc_rtl/soc.mk) on socsim
@@ -21,7 +22,7 @@ include bsp/soc/soc_ram.mk
 SOCSIM_DIR   := $(BUILD)/socsim-$(SOC_RAM_KIB)k$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
 SOCSIM       := $(SOCSIM_DIR)/socsim
 SOCSIM_SRC   := $(filter-out cosim/soc/tmds_decoder.cpp,$(wildcard cosim/soc/*.cpp)) cosim/model_check.cpp \
-                cosim/uart_terminal.cpp cosim/uart_pty.cpp
+                cosim/uart_terminal.cpp cosim/uart_pty.cpp cosim/sdl_window.cpp
 SOCSIM_SV    := cosim/soc/socsim_taps.sv
 # soc firmware: the same sources as `make run`, built by a recursive make for FW_PLATFORM=soc.
 SOC_FW_DIR   := $(BUILD)/firmware-soc
@@ -30,7 +31,7 @@ SOC_FW_MAKE   = $(MAKE) --no-print-directory FW_PLATFORM=soc BUILD=$(BUILD) SOC_
 
 SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_FILES) contract/gpu_regs.vh \
                contract/soc_map.vh contract/soc_map.h $(SOCSIM_SRC) $(SOCSIM_SV) $(wildcard cosim/soc/*.h) \
-               cosim/model_check.h cosim/keys_at.h cosim/uart_pty.h $(COSIM_C_LIB) $(GPU_MODEL_LIB)
+               cosim/model_check.h cosim/keys_at.h cosim/uart_pty.h cosim/sdl_window.h $(COSIM_C_LIB) $(GPU_MODEL_LIB)
 
 # The Verilator command of a socsim build, recorded in <dir>/cmd.txt (rewritten only when it changes)
 # so that a change of parameters or flags rebuilds, and an edit elsewhere in this file does not.
@@ -40,8 +41,8 @@ socsim_cmd = $(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign
   --top-module $(2) -GRAM_BYTES=$(SOC_RAM_BYTES) -GSPAN_W=$(SPAN_W) \
   $(SOC_VFLAGS) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) $(3) \
   -CFLAGS "-O2 -march=native -std=c++17 -ffunction-sections -DSOCSIM_SPAN_W=$(SPAN_W)u -DSOCSIM_RAM_BYTES=$(SOC_RAM_BYTES)u \
-           $(4) $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract)" \
-  -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng)" \
+           $(4) $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract) $$(pkg-config --cflags sdl2)" \
+  -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng sdl2)" \
   --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1" --Mdir $(1)/obj -o $(abspath $(1))/socsim
 SOCSIM_CMD = $(call socsim_cmd,$(SOCSIM_DIR),soc_top $(SOC_SIM_TIED),,)
 
@@ -74,9 +75,10 @@ socsim-ulx3s: $(SOCSIM_ULX3S)
 soc-fw:
 	+@$(SOC_FW_MAKE) SCENE=$(SCENE) FRAMES=$(FRAMES) FW_BACKEND=$(FW_BACKEND) $(SOC_FW_ELF)
 
+# With a display (the Makefile's WINDOW), the frames go to a window instead of $(OUT)/frames.
 run-soc: $(SOCSIM) soc-fw
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
-	$(SOCSIM) --fw $(SOC_FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log \
+	$(SOCSIM) --fw $(SOC_FW_ELF) $(if $(WINDOW),--window,--frames $(OUT)/frames) --uart-log $(OUT)/uart.log \
 	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
 
 # What tests/soc/*.sh need: socsim and the soc test programs (tests/soc/tests.mk); the suites
