@@ -20,10 +20,12 @@ work=$(fresh_dir window)
 Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp 3>"$work/display" >"$work/xvfb.log" 2>&1 &
 xvfb=$!
 run_pid=
-cleanup() {
-    [ -n "$run_pid" ] && kill "$run_pid" 2>/dev/null
-    kill "$xvfb" 2>/dev/null
-    wait 2>/dev/null
+cleanup() {  # under set -e: every command here must succeed, or the rest is skipped
+    if [ -n "$run_pid" ]; then
+        kill "$run_pid" 2>/dev/null || true
+    fi
+    kill "$xvfb" 2>/dev/null || true
+    wait 2>/dev/null || true
 }
 trap cleanup EXIT
 for _ in $(seq 100); do
