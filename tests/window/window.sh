@@ -6,14 +6,17 @@
 # expects the run to end with status 0 and no QEMU left. The screenshot must equal, pixel for
 # pixel, the golden model's frame after the same keys (the host build, $BUILD/fw-test/host-voxel:
 # the voxel world is still unless keys move the camera, so the frame depends on the keys only).
+# Then the SoC simulation's window (socsim --window, frames from the VGA pins): its first frame's
+# screenshot must equal the golden model's, and the run end by itself with status 0.
 # Skips, saying so, where Xvfb, xdotool or xwd is missing (tools/packages.txt lists them).
 source "$(dirname "$0")/../lib.sh"
+source "$(dirname "$0")/../soc/soc_lib.sh"
 need BUILD PYTHON
 for tool in Xvfb xdotool xwd; do
     command -v "$tool" >/dev/null || pass "window: skipped: $tool is not installed (tools/setup.sh installs it)"
 done
 host="$BUILD/fw-test/host-voxel"
-need_file "$host"
+need_file "$host" "$BUILD/fw-test/host-tetra" "$socsim" "$soc_test_dir/tetra-2f.elf"
 work=$(fresh_dir window)
 
 # A display of its own: Xvfb picks a free number and writes it to fd 3. TrueColor, 24 bits.
@@ -22,7 +25,7 @@ xvfb=$!
 run_pid=
 cleanup() {  # under set -e: every command here must succeed, or the rest is skipped
     if [ -n "$run_pid" ]; then
-        kill "$run_pid" 2>/dev/null || true
+        kill -- "-$run_pid" 2>/dev/null || true  # make run and the simulator it started
     fi
     kill "$xvfb" 2>/dev/null || true
     wait 2>/dev/null || true
@@ -36,12 +39,24 @@ done
 export DISPLAY=":$(cat "$work/display")"
 
 # make run as on a desktop: a display, neither CI nor HEADLESS; FRAMES=0 (until Q) is its default.
-env -u CI -u HEADLESS -u FRAMES make --no-print-directory run SCENE=voxel BUILD="$BUILD" OUT="$work/out" \
+# In a process group of its own (setsid), which the clean-up stops whole if the test fails.
+env -u CI -u HEADLESS -u FRAMES setsid make --no-print-directory run SCENE=voxel BUILD="$BUILD" OUT="$work/out" \
     </dev/null >"$work/run.out" 2>&1 &
 run_pid=$!
 
 # The window's title: "gpusim voxel.elf | frame N | F fps | fw instr I | gpu busy C cycles".
 title() { xdotool getwindowname "$win" 2>/dev/null || true; }
+find_window() {  # find_window TITLE_REGEX WHAT: sets $win, waiting up to 120 s (make may build first)
+    local _
+    win=
+    for _ in $(seq 1200); do
+        win=$(xdotool search --name "$1" 2>/dev/null | head -n 1 || true)
+        [ -n "$win" ] && return 0
+        kill -0 "$run_pid" 2>/dev/null || fail "$2 ended without a window: $(tail -n 5 "$work/run.out")"
+        sleep 0.1
+    done
+    fail "no window titled '$1' within 120 s"
+}
 frame_no() { title | sed -nE 's/.*\| frame ([0-9]+) \|.*/\1/p'; }
 wait_frames() {  # until the window has shown at least $1 frames
     local _ n
@@ -53,14 +68,7 @@ wait_frames() {  # until the window has shown at least $1 frames
     done
     fail "the window showed ${n:-no} frames, waiting for $1 (title: $(title))"
 }
-win=
-for _ in $(seq 1200); do  # make run may build the firmware first
-    win=$(xdotool search --name '^gpusim voxel\.elf' 2>/dev/null | head -n 1 || true)
-    [ -n "$win" ] && break
-    kill -0 "$run_pid" 2>/dev/null || fail "make run ended without a window: $(tail -n 5 "$work/run.out")"
-    sleep 0.1
-done
-[ -n "$win" ] || fail "no window titled 'gpusim voxel.elf' within 120 s"
+find_window '^gpusim voxel\.elf' "make run"
 wait_frames 3
 
 xdotool windowfocus --sync "$win"
@@ -90,4 +98,20 @@ ref="$work/ref/$(ls "$work/ref" | tail -n 1)"
 run_to "$work/diff.out" 10 "$BUILD/tools/png_diff" "$ref" "$work/window.png"
 grep -q ' differing 0 ' "$work/diff.out" || fail "the window's picture differs from the golden model's: $(cat "$work/diff.out")"
 cmp -s "$ref" "$work/ref/0000.png" && fail "the keys moved nothing: the test would not see them"
-pass "window: make run SCENE=voxel opened '$shown'; keys typed into it, its screenshot equals the golden model's frame; Q ended it with status 0"
+
+# The SoC: a two-frame program; the first frame is on screen for a second of simulation at least.
+setsid "$socsim" --fw "$soc_test_dir/tetra-2f.elf" --window </dev/null >"$work/run.out" 2>&1 &
+run_pid=$!
+find_window '^socsim tetra-2f\.elf' "socsim --window"
+wait_frames 1
+xwd -id "$win" -silent >"$work/soc.xwd" || fail "xwd could not dump the SoC's window"
+"$PYTHON" tools/xwd_to_png.py "$work/soc.xwd" "$work/soc.png"
+status=0
+wait "$run_pid" || status=$?
+run_pid=
+expect_status 0 "socsim --window"
+expect_eq "$(count '^socsim: frame [0-9]+ -> \(not written\)' "$work/run.out")" 2 "socsim's frames shown, none written"
+run_to "$work/tetra.out" 60 "$BUILD/fw-test/host-tetra" --frames "$work/tetra"
+run_to "$work/diff.out" 10 "$BUILD/tools/png_diff" "$work/tetra/0000.png" "$work/soc.png"
+grep -q ' differing 0 ' "$work/diff.out" || fail "the SoC window's first frame differs from the golden model's: $(cat "$work/diff.out")"
+pass "window: make run SCENE=voxel opened '$shown'; keys typed into it, its screenshot equals the golden model's frame; Q ended it with status 0; socsim's window too"
