@@ -282,9 +282,6 @@ int CosimRun::run()
             return fail("setup", "--uart-pty %s: %s", opt_.uart_pty.c_str(), error.c_str());
         }
         uart_.tee_to(&pty_);
-        // A client talks to the firmware while a batch simulates too (a frame is seconds of wall
-        // time): its bytes go in and the firmware's answers come out every 50k GPU clocks
-        // (about 40 ms), not only between batches. Runs without a pty keep their exact order.
         std::printf("cosim: UART on %s (%s)\n", pty_.link().c_str(), pty_.slave_path().c_str());
         std::fflush(stdout);
     }
