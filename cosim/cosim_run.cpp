@@ -70,13 +70,15 @@ int usage()
                  "usage: gpusim cosim --fw FIRMWARE.elf [--frames DIR] [--qemu PATH] [--uart-log FILE]\n"
                  "                    [--idle-timeout SECONDS] [--max-batch-cycles N] [--no-model-check]\n"
                  "                    [--keys-at N:TEXT]... [--drop-doorbell N] [--dump-lists DIR] [--summary FILE]\n"
-                 "                    [--uart-pty LINK]\n"
+                 "                    [--uart-pty LINK] [--trace FILE.fst [--trace-frame N]]\n"
                  "  --keys-at N:TEXT   type TEXT into the firmware's UART just before servicing doorbell N (from 1)\n"
                  "  --drop-doorbell N  ignore doorbell N, as a hung GPU would (the firmware's watchdog must RESET)\n"
                  "  --dump-lists DIR   write each batch as DIR/batchNNNN.txt in the `make raster` list format\n"
                  "  --summary FILE     write the run's outcome and counts as key=value lines\n"
                  "  --uart-pty LINK    also offer the UART as a pseudo-terminal, LINK a symlink to it (raw, 8 bits):\n"
                  "                     what a client writes there is typed, the firmware's output is sent there\n"
+                 "  --trace FILE.fst   the GPU's waves over frame N (default 0): its batches, swap and scan-out\n"
+                 "  --trace-frame N    (a simulator built for tracing: make waves)\n"
                  "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n");
     return 2;
 }
@@ -110,6 +112,14 @@ bool parse(int argc, char **argv, Options &o)
             o.bridge.dump_lists = argv[++i];
         } else if (a == "--drop-doorbell" && has_value) {
             o.bridge.drop_doorbell = static_cast<uint32_t>(std::strtoul(argv[++i], nullptr, 10));
+        } else if (a == "--trace" && has_value) {
+            o.bridge.trace = argv[++i];
+            if (!GpuSim::trace_supported()) {
+                std::fprintf(stderr, "cosim: --trace: this simulator was built without tracing: use make waves\n");
+                return false;
+            }
+        } else if (a == "--trace-frame" && has_value) {
+            o.bridge.trace_frame = static_cast<uint32_t>(std::strtoul(argv[++i], nullptr, 10));
         } else if (a == "--no-model-check") {
             o.bridge.check_model = false;
         } else {
