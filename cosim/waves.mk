@@ -4,7 +4,12 @@
 #   $(GPUSIM_TRACE)   = $(BUILD)/sim-trace-w<SPAN_W>/gpusim: the pin path's simulator built with
 #                       Verilator's --trace-fst and -DGPUSIM_TRACE=1 (GpuSim::trace_open, cosim
 #                       --trace FILE --trace-frame N); sim-fast-trace-w<SPAN_W> the fast path's
-#   waves             `make waves [SCENE=… FRAME=N] [PLATFORM=soc]`
+#   $(SOCSIM_TRACE)   = $(BUILD)/socsim-trace-<SOC_RAM_KIB>k[-w<SPAN_W>]/socsim: socsim's, with
+#                       -DSOCSIM_TRACE=1 (socsim --trace FILE --trace-frame N)
+#   waves             `make waves [SCENE=… FRAME=N] [PLATFORM=soc | FAST=1]`: frame N (from 0,
+#                     default 1) of SCENE traced on co-simulation's pin path, on socsim
+#                     (PLATFORM=soc) or on co-simulation's fast display path (FAST=1: no scan-out)
+#                     -> $(OUT)/waves/<scene>[-soc|-fast]-frame<N>.fst and a .gtkw beside it
 #
 # Tracing costs speed, so these builds are apart from the others and `make test` builds none.
 
@@ -37,9 +42,13 @@ endif
 # The run: $(OUT)/waves/<scene>[-soc]-frame<N>.fst, its frames and UART log beside it, and a copy of
 # the save file whose [dumpfile] is that trace.
 WAVES_DIR  := $(OUT)/waves
-WAVES_NAME  = $(SCENE)$(if $(filter soc,$(PLATFORM)),-soc)-frame$(FRAME)
+WAVES_KIND  = $(if $(filter soc,$(PLATFORM)),soc,$(if $(FAST),fast,gpu))
+WAVES_NAME  = $(SCENE)$(patsubst -gpu,,-$(WAVES_KIND))-frame$(FRAME)
 WAVES_FST   = $(WAVES_DIR)/$(WAVES_NAME).fst
-WAVES_GTKW  = cosim/waves/$(if $(filter soc,$(PLATFORM)),soc,gpu).gtkw
+WAVES_GTKW  = $(if $(FAST),$(WAVES_DIR)/gpu-fast.gtkw,cosim/waves/$(WAVES_KIND).gtkw)
+# The fast path's save file, from gpu.gtkw: gpu_core is the top, there is no gpu_vga.
+WAVES_FAST_SED := -e '/TOP\.gpu_top\.\(u_vga\.\|vga_\)/d' -e '/^-Scan-out/d' \
+  -e 's/TOP\.gpu_top\.vblank_start_sys/TOP.gpu_core.vblank_start/' -e 's/TOP\.gpu_top\.\(u_core\.\)\{0,1\}/TOP.gpu_core./'
 WAVES_RUN   = @rm -rf $(WAVES_FST) $(WAVES_DIR)/$(WAVES_NAME)-frames && mkdir -p $(WAVES_DIR)/$(WAVES_NAME)-frames
 define WAVES_DONE
 	@sed -e 's|^\[dumpfile\] .*|[dumpfile] "$(abspath $(WAVES_FST))"|' $(WAVES_GTKW) >$(WAVES_DIR)/$(WAVES_NAME).gtkw
@@ -53,9 +62,10 @@ waves:
 	@bash tools/setup.sh packages-waves.txt
 	@$(MAKE) --no-print-directory waves-$(if $(filter soc,$(PLATFORM)),soc,gpu)
 
-waves-gpu: $(GPUSIM_TRACE) $(WAVES_FW_ELF)
+waves-gpu: $(if $(FAST),$(GPUSIM_FAST_TRACE),$(GPUSIM_TRACE)) $(WAVES_FW_ELF)
 	$(WAVES_RUN)
-	$(GPUSIM_TRACE) cosim --fw $(WAVES_FW_ELF) --frames $(WAVES_DIR)/$(WAVES_NAME)-frames \
+	$(if $(FAST),@sed $(WAVES_FAST_SED) cosim/waves/gpu.gtkw >$(WAVES_GTKW))
+	$(if $(FAST),$(GPUSIM_FAST_TRACE),$(GPUSIM_TRACE)) cosim --fw $(WAVES_FW_ELF) --frames $(WAVES_DIR)/$(WAVES_NAME)-frames \
 	  --uart-log $(WAVES_DIR)/$(WAVES_NAME)-uart.log --trace $(WAVES_FST) --trace-frame $(FRAME)
 	$(WAVES_DONE)
 
