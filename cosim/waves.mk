@@ -31,7 +31,7 @@ $(eval $(call SOCSIM_BUILD_RULES,$(SOCSIM_TRACE_DIR),SOCSIM_TRACE_CMD,))
 # The firmware: SCENE with FRAME + 1 frames, so the run ends soon after the traced frame (frames
 # count from 0), under $(BUILD)/fw-waves[-soc]: the FRAMES builds of `make run` stay as they are.
 FRAME          ?= 1
-WAVES_FRAMES    = $(shell expr $(FRAME) + 1 2>/dev/null)
+WAVES_FRAMES   := $(shell expr $(FRAME) + 1 2>/dev/null)
 waves_fw        = $(BUILD)/fw-waves$(1)/$(call fw_name,$(SCENE),$(FW_BACKEND))-$(WAVES_FRAMES)f.elf
 WAVES_FW_ELF    = $(call waves_fw,$(FW_PSUFFIX))
 WAVES_SOC_FW_ELF = $(call waves_fw,-soc)
@@ -39,7 +39,7 @@ ifneq ($(WAVES_FRAMES),)
 $(eval $(call FW_ELF_RULES,$(WAVES_FW_ELF),$(SCENE),$(FW_BACKEND),$(WAVES_FRAMES),$(FW_MAX_POLLS)))
 endif
 
-# The run: $(OUT)/waves/<scene>[-soc]-frame<N>.fst, its frames and UART log beside it, and a copy of
+# The run: $(OUT)/waves/<scene>[-soc|-fast]-frame<N>.fst, its frames and UART log beside it, and a copy of
 # the save file whose [dumpfile] is that trace.
 WAVES_DIR  := $(OUT)/waves
 WAVES_KIND  = $(if $(filter soc,$(PLATFORM)),soc,$(if $(FAST),fast,gpu))

@@ -165,6 +165,8 @@ int usage()
                  "  --summary FILE    write the run's outcome and counts as key=value lines\n"
                  "  --uart-pty LINK   also offer the UART as a pseudo-terminal, LINK a symlink to it (raw, 8 bits):\n"
                  "                    what a client writes there is sent on uart_rx, uart_tx's bytes are sent there\n"
+                 "  --trace FILE.fst  every signal over frame N (--trace-frame N, default 0), from the swap before it\n"
+                 "                    to its capture (a simulator built for tracing: make waves PLATFORM=soc)\n"
                  "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n"
                  "  Exit status: the firmware's (SYS EXIT); 1 on a harness error; 2 on a usage error.\n");
     return 2;
