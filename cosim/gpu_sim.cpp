@@ -35,6 +35,9 @@ extern "C" {
 
 struct GpuSim::Verilated {
     VerilatedContext context;
+#if GPUSIM_TRACE
+    bool trace_ever_on = (context.traceEverOn(true), true);  // before time 0, as Verilator asks
+#endif
     VerilatedGpu top{&context};
 #if GPUSIM_TRACE
     std::unique_ptr<VerilatedFstC> fst;  // open while a trace is being written
@@ -77,7 +80,6 @@ bool GpuSim::trace_open(const std::string &path, std::string *error)
 {
 #if GPUSIM_TRACE
     trace_close();
-    v_->context.traceEverOn(true);
     v_->fst.reset(new VerilatedFstC);
     v_->fst->set_time_unit("1ns");
     v_->fst->set_time_resolution("1ns");
