@@ -226,6 +226,14 @@ uint32_t gpu_caps()
            ((SOCSIM_ENABLE_ZBUF ? 1u : 0u) << GPU_CAPS_ZBUF_LSB);
 }
 
+// The model's context: a trace build allows traces from time 0, as Verilator asks of --trace.
+VerilatedContext *new_context()
+{
+    auto *context = new VerilatedContext;
+    context->traceEverOn(SOCSIM_TRACE != 0);
+    return context;
+}
+
 class SocRun;
 SocRun *g_run = nullptr;  // the DPI callbacks' target (one run per process)
 svScope g_cpu_scope = nullptr;
@@ -288,7 +296,7 @@ private:
     }
 
     const Options &opt_;
-    std::unique_ptr<VerilatedContext> context_{new VerilatedContext};
+    std::unique_ptr<VerilatedContext> context_{new_context()};
     std::unique_ptr<SocModel> top_;
 #ifdef SOCSIM_BOARD_ULX3S
     // The board's clocks in picoseconds: the time of each one's next edge.
@@ -662,7 +670,6 @@ bool SocRun::finish_frame(std::string *error)
 bool SocRun::trace_open(std::string *error)
 {
 #if SOCSIM_TRACE
-    context_->traceEverOn(true);
     fst_.reset(new VerilatedFstC);
     fst_->set_time_unit("1ps");
     fst_->set_time_resolution("1ps");
