@@ -201,7 +201,8 @@ $(COSIM_CXX_LIB): $(COSIM_CXX_OBJ)
 
 # One simulator per configuration: $(BUILD)/sim-w<SPAN_W>/gpusim, sim-z-w<SPAN_W> with the depth
 # buffer built in, and sim-fast-w<SPAN_W> on the fast display path (gpu_core with the harness as its
-# display: cosim/gpu_sim.h). $(call verilate,OUTPUT,VERILATOR PARAMETER FLAGS[,TOP MODULE,CFLAGS])
+# display: cosim/gpu_sim.h). $(call verilate,OUTPUT,VERILATOR PARAMETER FLAGS[,TOP MODULE,CFLAGS]):
+# the flags may be any of Verilator's besides -G (cosim/waves.mk's trace builds add --trace-fst).
 # VERILATOR_JOBS: compilers each build runs at once (its own make, outside this make's -j); `make
 # test` sets 1, since it builds the simulators side by side already. The old program is removed
 # first: Verilator's make relinks only for its own objects, not for a changed library.
@@ -226,6 +227,9 @@ $(BUILD)/sim-z-w%/gpusim: $(SIM_DEPS)
 
 $(BUILD)/sim-fast-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$*,gpu_core,-DGPUSIM_FAST_DISPLAY=1)
+
+# `make waves` and its trace builds (sim-trace-w<SPAN_W>: $(2) with --trace-fst), apart from these.
+include cosim/waves.mk
 
 clean:
 	rm -rf $(BUILD) $(OUT)

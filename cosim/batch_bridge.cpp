@@ -125,6 +125,14 @@ void BatchBridge::publish_registers()
 bool BatchBridge::service_batch(uint32_t tag, std::string *error)
 {
     __atomic_thread_fence(__ATOMIC_ACQUIRE);
+    if (!opt_.trace.empty() && trace_ == Trace::Waiting && frames_written_ == opt_.trace_frame) {
+        if (!sim_.trace_open(opt_.trace, error)) {
+            error_kind_ = "trace";
+            return false;
+        }
+        trace_ = Trace::On;
+        std::printf("cosim: tracing frame %u -> %s\n", opt_.trace_frame, opt_.trace.c_str());
+    }
     const uint32_t doorbell_word = GPU_REG_DOORBELL / 4;
     // Replay the firmware's stores: every word that changed since the last batch, DOORBELL last.
     for (uint32_t w = 0; w < shadow_.size(); w++) {
@@ -202,6 +210,11 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
                     opt_.check_model ? " | equals golden model" : "");
         frames_written_++;
         frames_checked_ += opt_.check_model ? 1 : 0;
+        if (trace_ == Trace::On) {
+            sim_.trace_close();
+            trace_ = Trace::Done;
+            std::printf("cosim: trace of frame %u written: %s\n", opt_.trace_frame, opt_.trace.c_str());
+        }
     }
     publish_registers();
     return true;

@@ -18,6 +18,11 @@
 //     when CTRL.ZTEST is set). On a GPU timeout, a disagreement, or a frame that cannot be captured
 //     or written, it returns false with *error set (the caller reports it) and error_kind() naming
 //     the failure for the run's summary: gpu-timeout, model-mismatch, capture or write.
+//   - With --trace FILE (a simulator built for waves, GpuSim::trace_open) the GPU's signals go to
+//     FILE from the first batch serviced once frame trace_frame - 1 is written (from the first batch
+//     for frame 0) until frame trace_frame is captured, when the file is closed: the batches that
+//     draw the frame, the wait for its swap and its scan-out. A trace that cannot be opened is an
+//     error of kind "trace".
 //   - service_reset(value) forwards a RESET at once (a watchdog gave up on a batch), prints
 //     "cosim: GPU reset by the firmware", then publishes the registers.
 // Simulated time advances only inside these calls, so results do not depend on host timing.
@@ -37,6 +42,8 @@ struct BridgeOptions {
     bool check_model = true;
     uint32_t drop_doorbell = 0;  // batch number never serviced (0: none)
     std::string dump_lists;      // directory for each batch as a primitive list
+    std::string trace;           // --trace FILE.fst: the waves of frame trace_frame (a trace build)
+    uint32_t trace_frame = 0;
 };
 
 class BatchBridge {
@@ -75,6 +82,7 @@ private:
     uint32_t dropped_ = 0;
     uint32_t resets_ = 0;
     const char *error_kind_ = "none";
+    enum class Trace { Waiting, On, Done } trace_ = Trace::Waiting;
 };
 
 #endif

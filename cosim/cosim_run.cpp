@@ -83,7 +83,7 @@ int usage()
                  "                    [--idle-timeout SECONDS] [--max-batch-cycles N] [--no-model-check]\n"
                  "                    [--keys-at N:TEXT]... [--drop-doorbell N] [--dump-lists DIR] [--summary FILE]\n"
                  "                    [--uart-pty LINK] [--window] [--window-fps N] [--gdb PORT]\n"
-                 "                    [--stop-after-frames N]\n"
+                 "                    [--stop-after-frames N] [--trace FILE.fst [--trace-frame N]]\n"
                  "  --keys-at N:TEXT   type TEXT into the firmware's UART just before servicing doorbell N (from 1)\n"
                  "  --drop-doorbell N  ignore doorbell N, as a hung GPU would (the firmware's watchdog must RESET)\n"
                  "  --dump-lists DIR   write each batch as DIR/batchNNNN.txt in the `make raster` list format\n"
@@ -97,6 +97,8 @@ int usage()
                  "  --stop-after-frames N  end the run after N frames, with status 0 (benchmarks)\n"
                  "  --gdb PORT         QEMU's GDB stub on tcp:127.0.0.1:PORT, the firmware halted at reset until a\n"
                  "                     debugger continues it; no idle timeout (make debug)\n"
+                 "  --trace FILE.fst   the GPU's waves over frame N (default 0): its batches, swap and scan-out\n"
+                 "  --trace-frame N    (a simulator built for tracing: make waves)\n"
                  "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n");
     return 2;
 }
@@ -144,6 +146,14 @@ bool parse(int argc, char **argv, Options &o)
             o.window = true;
         } else if (a == "--window-fps" && has_value) {
             o.window_fps = std::atof(argv[++i]);
+        } else if (a == "--trace" && has_value) {
+            o.bridge.trace = argv[++i];
+            if (!GpuSim::trace_supported()) {
+                std::fprintf(stderr, "cosim: --trace: this simulator was built without tracing: use make waves\n");
+                return false;
+            }
+        } else if (a == "--trace-frame" && has_value) {
+            o.bridge.trace_frame = static_cast<uint32_t>(std::strtoul(argv[++i], nullptr, 10));
         } else if (a == "--no-model-check") {
             o.bridge.check_model = false;
         } else {

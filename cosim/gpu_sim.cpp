@@ -22,6 +22,12 @@ using VerilatedGpu = Vgpu_top;
 #define GPU_CORE_NAME(path) gpu_top__DOT__u_core__DOT__##path
 #endif
 #include "verilated.h"
+#ifndef GPUSIM_TRACE
+#define GPUSIM_TRACE 0
+#endif
+#if GPUSIM_TRACE
+#include "verilated_fst_c.h"
+#endif
 
 extern "C" {
 #include "gpu_regs.h"
@@ -29,7 +35,22 @@ extern "C" {
 
 struct GpuSim::Verilated {
     VerilatedContext context;
+#if GPUSIM_TRACE
+    bool trace_ever_on = (context.traceEverOn(true), true);  // before time 0, as Verilator asks
+#endif
     VerilatedGpu top{&context};
+#if GPUSIM_TRACE
+    std::unique_ptr<VerilatedFstC> fst;  // open while a trace is being written
+    bool fst_on = false;
+    void dump(uint64_t time_ns)
+    {
+        if (fst_on) {
+            fst->dump(time_ns);
+        }
+    }
+#else
+    void dump(uint64_t) {}
+#endif
 };
 
 bool GpuSim::fast_display()
@@ -45,7 +66,56 @@ GpuSim::GpuSim() : v_(new Verilated)
 
 GpuSim::~GpuSim()
 {
+    trace_close();
     v_->top.final();
+}
+
+// ---- waves: see gpu_sim.h ----
+bool GpuSim::trace_supported()
+{
+    return GPUSIM_TRACE != 0;
+}
+
+bool GpuSim::trace_open(const std::string &path, std::string *error)
+{
+#if GPUSIM_TRACE
+    trace_close();
+    v_->fst.reset(new VerilatedFstC);
+    v_->fst->set_time_unit("1ns");
+    v_->fst->set_time_resolution("1ns");
+    v_->top.trace(v_->fst.get(), 99);
+    v_->fst->open(path.c_str());
+    if (!v_->fst->isOpen()) {
+        v_->fst.reset();
+        *error = "cannot create " + path;
+        return false;
+    }
+    v_->fst_on = true;
+    return true;
+#else
+    *error = "this simulator was built without tracing (" + path + " not written): use make waves";
+    return false;
+#endif
+}
+
+void GpuSim::trace_on(bool on)
+{
+#if GPUSIM_TRACE
+    v_->fst_on = on && v_->fst != nullptr;
+#else
+    (void)on;
+#endif
+}
+
+void GpuSim::trace_close()
+{
+#if GPUSIM_TRACE
+    if (v_->fst != nullptr) {
+        v_->fst->close();
+        v_->fst.reset();
+    }
+    v_->fst_on = false;
+#endif
 }
 
 void GpuSim::reset()
@@ -66,17 +136,21 @@ void GpuSim::tick()
     v_->top.vblank_start = (cycles_ % kFastVblankEvery) == 0;
     v_->top.clk = 0;
     v_->top.eval();
+    v_->dump(cycles_ * 10);
     v_->top.clk = 1;
     v_->top.eval();
+    v_->dump(cycles_ * 10 + 5);
     cycles_++;
 #else
     // Outputs change on the edge at which vga_pix_stb is high; sample them right after it. The
     // scan-out's clock is the system clock here (PIX_DIV clocks a pixel), its crossings still in.
     v_->top.clk = v_->top.clk_pix = 0;
     v_->top.eval();
+    v_->dump(cycles_ * 10);
     const bool pixel_edge = v_->top.vga_pix_stb;
     v_->top.clk = v_->top.clk_pix = 1;
     v_->top.eval();
+    v_->dump(cycles_ * 10 + 5);
     cycles_++;
     if (pixel_edge) {
         vga_monitor_sample(&monitor_, v_->top.vga_hsync_n, v_->top.vga_vsync_n, v_->top.vga_r,

@@ -52,6 +52,16 @@ public:
     const char *vga_error() const { return monitor_.error; }
     uint64_t cycles() const { return cycles_; }
 
+    // Waves (`make waves`): in a simulator built with GPUSIM_TRACE=1 (and Verilator's --trace-fst),
+    // an FST of every signal, dumped at both edges of each tick() while the trace is on (time in ns
+    // of a 100 MHz clock: the falling edge at 10 * cycles(), the rising one 5 ns later). trace_open
+    // starts it on; trace_on pauses and resumes it; trace_close flushes and closes the file. In
+    // other builds trace_supported() is false and trace_open fails with *error saying so.
+    static bool trace_supported();
+    bool trace_open(const std::string &path, std::string *error);
+    void trace_on(bool on);
+    void trace_close();
+
     // Work of the harness's own while the GPU runs (the co-simulation's UART: the firmware's
     // output and a client's input must flow during a batch's seconds of simulation, not only
     // between batches): fn() every `every` clocks of tick(). It must not touch the GPU.

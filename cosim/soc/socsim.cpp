@@ -15,7 +15,7 @@
 //
 //   socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]
 //          [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--no-model-check]
-//          [--uart-pty LINK] [--window] [--window-fps N]
+//          [--uart-pty LINK] [--window] [--window-fps N] [--trace FILE.fst [--trace-frame N]]
 //
 // The program: RAM_INIT's format (one 32-bit hex word per line from address 0; --fw FILE.elf reads
 // FILE.elf.hex, the soc platform's post-link output), loaded at time 0 through soc_ram's
@@ -32,6 +32,12 @@
 // next frame while the VGA still shows this one. The read-only registers the firmware reads after
 // a batch (ERRORS, the PERF_* counters but the cycle and span counts, STATUS, ...) are compared
 // with the model's too (registers_model_checked in the summary).
+//
+// Waves (`make waves PLATFORM=soc`; a simulator built with SOCSIM_TRACE=1 and --trace-fst, socsim.mk's
+// trace build): --trace FILE.fst writes every signal at both clock edges (time in ps) from the swap
+// of frame N-1 (--trace-frame N, default 0: from time 0) until frame N is captured, when the file is
+// closed: the frame's work on the CPU and the GPU, its swap and its scan-out (and, from the start,
+// the scan-out of frame N-1, which runs while frame N is drawn). Other builds refuse --trace.
 //
 // Keys: --keys-at N:TEXT starts sending TEXT on uart_rx when the GPU takes its Nth DOORBELL write
 // (the point where `gpusim cosim` types it); if bytes are still on the line when the firmware next
@@ -77,6 +83,12 @@ using SocModel = Vsoc_top;
 #endif
 #include "svdpi.h"
 #include "verilated.h"
+#ifndef SOCSIM_TRACE
+#define SOCSIM_TRACE 0
+#endif
+#if SOCSIM_TRACE
+#include "verilated_fst_c.h"
+#endif
 
 #include "keys_at.h"
 #include "model_check.h"
@@ -131,6 +143,8 @@ struct Options {
     std::string uart_pty;  // the pseudo-terminal's link, or empty
     bool window = false;   // the frames in a window too (cosim/sdl_window)
     double window_fps = 60.0;
+    std::string trace;     // --trace FILE.fst, or empty
+    uint32_t trace_frame = 0;
     uint64_t max_cycles = 3000000000ull;  // 60 s of SoC time at 50 MHz
     uint64_t progress_cycles = 50000000;  // a progress line after this many cycles without a frame
     uint32_t uart_divider = (SOCSIM_CLK_HZ + SOC_UART_BAUD / 2) / SOC_UART_BAUD;  // as soc_uart rounds
@@ -145,6 +159,7 @@ int usage()
                  "usage: socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]\n"
                  "              [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--no-model-check]\n"
                  "              [--uart-divider N] [--uart-pty LINK] [--window] [--window-fps N]\n"
+                 "              [--trace FILE.fst [--trace-frame N]]\n"
                  "  --fw FILE.elf     run FILE.elf.hex (the soc build's RAM image); -kernel FILE.elf is the same\n"
                  "  --hex FILE        run FILE, a RAM image (one 32-bit hex word per line from address 0)\n"
                  "  --keys-at N:TEXT  send TEXT on uart_rx when the GPU takes DOORBELL write N (from 1)\n"
@@ -157,6 +172,8 @@ int usage()
                  "  --window          show the frames in a window as well (no PNG files unless --frames is given);\n"
                  "                    its keys go on uart_rx, closing it ends the run as Q does\n"
                  "  --window-fps N    at most N frames a second in the window (default 60, 0: no cap)\n"
+                 "  --trace FILE.fst  every signal over frame N (--trace-frame N, default 0), from the swap before it\n"
+                 "                    to its capture (a simulator built for tracing: make waves PLATFORM=soc)\n"
                  "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n"
                  "  Exit status: the firmware's (SYS EXIT); 1 on a harness error; 2 on a usage error.\n");
     return 2;
@@ -198,6 +215,14 @@ bool parse(int argc, char **argv, Options &o)
                 std::fprintf(stderr, "socsim: --reply wants PROMPT=TEXT, got '%s'\n", argv[i]);
                 return false;
             }
+        } else if (a == "--trace" && has_value) {
+            o.trace = argv[++i];
+            if (!SOCSIM_TRACE) {
+                std::fprintf(stderr, "socsim: --trace: this simulator was built without tracing: use make waves\n");
+                return false;
+            }
+        } else if (a == "--trace-frame" && has_value) {
+            o.trace_frame = static_cast<uint32_t>(std::strtoul(argv[++i], nullptr, 10));
         } else if (a == "--no-model-check") {
             o.check_model = false;
         } else {
@@ -217,6 +242,14 @@ uint32_t gpu_caps()
            ((SOCSIM_ENABLE_ZBUF ? 1u : 0u) << GPU_CAPS_ZBUF_LSB);
 }
 
+// The model's context: a trace build allows traces from time 0, as Verilator asks of --trace.
+VerilatedContext *new_context()
+{
+    auto *context = new VerilatedContext;
+    context->traceEverOn(SOCSIM_TRACE != 0);
+    return context;
+}
+
 class SocRun;
 SocRun *g_run = nullptr;  // the DPI callbacks' target (one run per process)
 svScope g_cpu_scope = nullptr;
@@ -232,6 +265,7 @@ public:
     }
     ~SocRun()
     {
+        trace_close();
         terminal_.restore();
         top_->final();
         g_run = nullptr;
@@ -264,9 +298,21 @@ private:
     void write_summary(const char *error);
     void report_speed();
     uint64_t instret() const;
+    bool trace_open(std::string *error);
+    void trace_close();
+    void trace_dump(uint64_t time_ps)
+    {
+#if SOCSIM_TRACE
+        if (fst_ != nullptr) {
+            fst_->dump(time_ps);
+        }
+#else
+        (void)time_ps;
+#endif
+    }
 
     const Options &opt_;
-    std::unique_ptr<VerilatedContext> context_{new VerilatedContext};
+    std::unique_ptr<VerilatedContext> context_{new_context()};
     std::unique_ptr<SocModel> top_;
 #ifdef SOCSIM_BOARD_ULX3S
     // The board's clocks in picoseconds: the time of each one's next edge.
@@ -315,6 +361,10 @@ private:
     bool vsync_n_ = true;
     UartReplies replies_;          // --reply: a copy, since it keeps what was received
     int firmware_status_ = -1;
+    uint32_t swaps_ = 0;
+#if SOCSIM_TRACE
+    std::unique_ptr<VerilatedFstC> fst_;  // open while frame trace_frame is traced
+#endif
 };
 
 void SocRun::on_gpu_write(uint32_t offset, uint32_t value)
@@ -477,6 +527,7 @@ void SocRun::clock_once()
         }
         top_->pll_locked = t >= kLockPs;
         top_->eval();
+        trace_dump(t);
         if (tmds_rose) {
             tmds_clock();
         }
@@ -490,11 +541,14 @@ void SocRun::clock_once()
 // sampled after the edges where vga_pix_stb was high.
 void SocRun::clock_once()
 {
+    static constexpr uint64_t kHalfPs = 500000000000ull / SOCSIM_CLK_HZ;
     top_->clk = top_->clk_pix = 0;
     top_->eval();
+    trace_dump(2 * kHalfPs * cycles_);
     const bool pixel_edge = top_->vga_pix_stb;  // outputs change on the edge where it is high
     top_->clk = top_->clk_pix = 1;
     top_->eval();
+    trace_dump(2 * kHalfPs * cycles_ + kHalfPs);
     if (pixel_edge) {
         vga_sample(top_->vga_hsync_n, top_->vga_vsync_n, top_->vga_r, top_->vga_g, top_->vga_b);
     }
@@ -627,7 +681,47 @@ bool SocRun::finish_frame(std::string *error)
     frames_++;
     frames_checked_ += opt_.check_model ? 1 : 0;
     last_frame_cycle_ = cycles_;
+#if SOCSIM_TRACE
+    if (fst_ != nullptr && frames_ == opt_.trace_frame + 1) {
+        trace_close();
+        std::printf("socsim: trace of frame %u written: %s\n", opt_.trace_frame, opt_.trace.c_str());
+        std::fflush(stdout);
+    }
+#endif
     return true;
+}
+
+// --trace: see the header. Opened at time 0 (frame 0) or after the swap of frame trace_frame - 1.
+bool SocRun::trace_open(std::string *error)
+{
+#if SOCSIM_TRACE
+    fst_.reset(new VerilatedFstC);
+    fst_->set_time_unit("1ps");
+    fst_->set_time_resolution("1ps");
+    top_->trace(fst_.get(), 99);
+    fst_->open(opt_.trace.c_str());
+    if (!fst_->isOpen()) {
+        fst_.reset();
+        *error = "cannot create " + opt_.trace;
+        return false;
+    }
+    std::printf("socsim: tracing frame %u -> %s\n", opt_.trace_frame, opt_.trace.c_str());
+    std::fflush(stdout);
+    return true;
+#else
+    *error = "this simulator was built without tracing: use make waves";
+    return false;
+#endif
+}
+
+void SocRun::trace_close()
+{
+#if SOCSIM_TRACE
+    if (fst_ != nullptr) {
+        fst_->close();
+        fst_.reset();
+    }
+#endif
 }
 
 void SocRun::write_summary(const char *error)
@@ -741,6 +835,9 @@ int SocRun::run()
 #endif
     top_->uart_rx = 1;
     top_->eval();  // initial blocks: soc_ram reads the image
+    if (!opt_.trace.empty() && opt_.trace_frame == 0 && !trace_open(&error)) {
+        return fail("trace", "%s", error.c_str());
+    }
     terminal_.enter_raw();
 
     for (;;) {
@@ -753,6 +850,10 @@ int SocRun::run()
             }
             vga_monitor_arm(&monitor_);
             capture_pending_ = true;
+            swaps_++;
+            if (!opt_.trace.empty() && opt_.trace_frame != 0 && swaps_ == opt_.trace_frame && !trace_open(&error)) {
+                return fail("trace", "%s", error.c_str());
+            }
         }
         if (capture_pending_ && monitor_.frame_ready) {
             if (!finish_frame(&error)) {
