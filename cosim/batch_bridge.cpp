@@ -43,9 +43,12 @@ bool BatchBridge::pending_reset(uint32_t *value) const
     return *value != shadow_[GPU_REG_RESET / 4];
 }
 
-void BatchBridge::service_reset(uint32_t value)
+bool BatchBridge::service_reset(uint32_t value, std::string *error)
 {
     __atomic_thread_fence(__ATOMIC_ACQUIRE);
+    if (!finish_frames(error)) {  // the frame on the pins first: a reset may change what shows
+        return false;
+    }
     sim_.write(GPU_REG_RESET, value);
     if (opt_.check_model) {
         model_.write(GPU_REG_RESET, value);
@@ -54,6 +57,7 @@ void BatchBridge::service_reset(uint32_t value)
     resets_++;
     std::printf("cosim: GPU reset by the firmware (RESET = %u)\n", value);
     publish_registers();
+    return true;
 }
 
 // The batch about to run, as a primitive list (vertices expanded; invalid primitives left out).
@@ -134,14 +138,19 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
         std::printf("cosim: tracing frame %u -> %s\n", opt_.trace_frame, opt_.trace.c_str());
     }
     const uint32_t doorbell_word = GPU_REG_DOORBELL / 4;
-    // Replay the firmware's stores: every word that changed since the last batch, DOORBELL last.
+    // A palette write shows at once on the pins: the frame being scanned out is captured first.
+    for (uint32_t w = GPU_WIN_PALETTE / 4; capture_pending_ && w < (GPU_WIN_PALETTE + GPU_WIN_PALETTE_BYTES) / 4; w++) {
+        if (window_[w] != shadow_[w] && !finish_capture(error)) {
+            return false;
+        }
+    }
+    // Replay the firmware's stores into the RTL: every word that changed since the last batch,
+    // DOORBELL last. The model takes them once the frame on the pins is compared (model_writes_).
     for (uint32_t w = 0; w < shadow_.size(); w++) {
         const uint32_t value = window_[w];
         if (value != shadow_[w] && w != doorbell_word) {
             sim_.write(w * 4, value);
-            if (opt_.check_model) {
-                model_.write(w * 4, value);
-            }
+            model_writes_.emplace_back(w * 4, value);
             shadow_[w] = value;
         }
     }
@@ -150,6 +159,7 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
         dropped_++;
         shadow_[doorbell_word] = tag;
         std::printf("cosim: doorbell %u (tag %u) dropped on purpose (--drop-doorbell)\n", batches_, tag);
+        feed_model();  // the stores, without the doorbell: nothing runs, nothing shows
         return true;
     }
     if (!opt_.dump_lists.empty()) {
@@ -157,9 +167,7 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
     }
     const uint32_t frames_before = sim_.read(GPU_REG_FRAME_COUNT);
     sim_.write(GPU_REG_DOORBELL, tag);
-    if (opt_.check_model) {
-        model_.write(GPU_REG_DOORBELL, tag);
-    }
+    model_writes_.emplace_back(GPU_REG_DOORBELL, tag);
     shadow_[doorbell_word] = tag;
     batches_++;
 
@@ -169,6 +177,15 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
                         static_cast<unsigned long long>(opt_.max_batch_cycles));
         return false;
     }
+    const bool swapped = sim_.read(GPU_REG_FRAME_COUNT) != frames_before;
+    // The previous frame's scan-out ran while this batch drew: a swap waits for its end, so after
+    // one the frame is complete on the pins (but for the last pixels, a few clocks on); so is it
+    // when the scan happened to end during the batch. Either way it is compared before the model
+    // runs this batch, which may swap the model's front buffer at once.
+    if (capture_pending_ && (swapped || sim_.frame_captured()) && !finish_capture(error)) {
+        return false;
+    }
+    feed_model();
     if (opt_.check_model) {
         const std::string diff = model_.compare_registers(sim_);
         if (!diff.empty()) {
@@ -177,45 +194,75 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
             return false;
         }
     }
-    if (sim_.read(GPU_REG_FRAME_COUNT) != frames_before) {
-        const uint64_t frame_cycles = 800ull * 525 * 4;
-        if (!sim_.capture_frame(3 * frame_cycles)) {
-            error_kind_ = "capture";
-            *error = format("no frame captured from the VGA pins: %s",
-                            sim_.vga_error()[0] ? sim_.vga_error() : "timeout");
+    if (swapped) {
+        // The pin path overlaps the new front buffer's scan-out with the firmware's next frame, as
+        // a board does (DONE_SEQ is published now, not after the scan); the fast path and a traced
+        // run capture it at once.
+        sim_.arm_capture();
+        capture_pending_ = true;
+        if ((GpuSim::fast_display() || !opt_.trace.empty()) && !finish_capture(error)) {
             return false;
-        }
-        if (opt_.check_model) {
-            const std::string diff = model_.compare_frame(sim_.frame_rgb());
-            if (!diff.empty()) {
-                error_kind_ = "model-mismatch";
-                *error = format("frame %u: VGA output differs from the golden model: %s", frames_written_,
-                                diff.c_str());
-                return false;
-            }
-        }
-        std::string where = "(not written)";
-        if (!opt_.frames_dir.empty()) {
-            char path[512];
-            std::snprintf(path, sizeof path, "%s/%04u.png", opt_.frames_dir.c_str(), frames_written_);
-            if (png_write_rgb(path, sim_.frame_rgb(), VGA_W, VGA_H) != 0) {
-                error_kind_ = "write";
-                *error = format("cannot write %s", path);
-                return false;
-            }
-            where = path;
-        }
-        std::printf("cosim: frame %04u -> %s | gpu busy %u cycles | simulated %llu cycles%s\n", frames_written_,
-                    where.c_str(), sim_.read(GPU_REG_PERF_BUSY_CYCLES), static_cast<unsigned long long>(sim_.cycles()),
-                    opt_.check_model ? " | equals golden model" : "");
-        frames_written_++;
-        frames_checked_ += opt_.check_model ? 1 : 0;
-        if (trace_ == Trace::On) {
-            sim_.trace_close();
-            trace_ = Trace::Done;
-            std::printf("cosim: trace of frame %u written: %s\n", opt_.trace_frame, opt_.trace.c_str());
         }
     }
     publish_registers();
+    return true;
+}
+
+bool BatchBridge::finish_frames(std::string *error)
+{
+    return !capture_pending_ || finish_capture(error);
+}
+
+// The model takes the stores the RTL took, in the same order.
+void BatchBridge::feed_model()
+{
+    if (opt_.check_model) {
+        for (const auto &w : model_writes_) {
+            model_.write(w.first, w.second);
+        }
+    }
+    model_writes_.clear();
+}
+
+// The armed frame: scanned to its end (a frame at most), compared with the model's front buffer
+// (which the model's next batch has not yet changed), written, counted.
+bool BatchBridge::finish_capture(std::string *error)
+{
+    capture_pending_ = false;
+    const uint64_t frame_cycles = 800ull * 525 * 4;
+    if (!sim_.wait_capture(3 * frame_cycles)) {
+        error_kind_ = "capture";
+        *error = format("no frame captured from the VGA pins: %s", sim_.vga_error()[0] ? sim_.vga_error() : "timeout");
+        return false;
+    }
+    if (opt_.check_model) {
+        const std::string diff = model_.compare_frame(sim_.frame_rgb());
+        if (!diff.empty()) {
+            error_kind_ = "model-mismatch";
+            *error = format("frame %u: VGA output differs from the golden model: %s", frames_written_, diff.c_str());
+            return false;
+        }
+    }
+    std::string where = "(not written)";
+    if (!opt_.frames_dir.empty()) {
+        char path[512];
+        std::snprintf(path, sizeof path, "%s/%04u.png", opt_.frames_dir.c_str(), frames_written_);
+        if (png_write_rgb(path, sim_.frame_rgb(), VGA_W, VGA_H) != 0) {
+            error_kind_ = "write";
+            *error = format("cannot write %s", path);
+            return false;
+        }
+        where = path;
+    }
+    std::printf("cosim: frame %04u -> %s | gpu busy %u cycles | simulated %llu cycles%s\n", frames_written_,
+                where.c_str(), sim_.read(GPU_REG_PERF_BUSY_CYCLES), static_cast<unsigned long long>(sim_.cycles()),
+                opt_.check_model ? " | equals golden model" : "");
+    frames_written_++;
+    frames_checked_ += opt_.check_model ? 1 : 0;
+    if (trace_ == Trace::On) {
+        sim_.trace_close();
+        trace_ = Trace::Done;
+        std::printf("cosim: trace of frame %u written: %s\n", opt_.trace_frame, opt_.trace.c_str());
+    }
     return true;
 }

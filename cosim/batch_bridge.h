@@ -10,10 +10,17 @@
 //     RESET value since the bridge last forwarded one (acquire loads).
 //   - service_batch(tag) replays every window word that changed since the last batch into the RTL
 //     (and the model), DOORBELL last; runs the GPU until DONE_SEQ shows the tag; compares the
-//     registers with the model; when FRAME_COUNT moved, captures the next frame from the VGA pins,
-//     compares it with the model and writes FRAMES_DIR/NNNN.png (none when frames_dir is empty),
-//     printing one "cosim: frame" line; then publishes the registers. frame_rgb() is the last frame
-//     captured (VGA_W x VGA_H RGB888). With --drop-doorbell N batch N is recorded but never run. With
+//     registers with the model; when FRAME_COUNT moved, the frame the new front buffer shows is
+//     captured from the VGA pins, compared with the model and written as FRAMES_DIR/NNNN.png (none
+//     when frames_dir is empty), with one "cosim: frame" line; then it publishes the registers.
+//     On the pin path that capture overlaps the firmware's next frame, as on a board: the frame is
+//     scanned out while the next batches draw (the firmware sees DONE_SEQ after the swap, not after
+//     the scan), and it is finished — compared before the model runs the batch that ends its scan —
+//     during the batch whose swap waits for that scan's end, or at once before a palette write or a
+//     RESET would change the pins, or by finish_frames(), which the caller calls when the firmware
+//     has ended. Each displayed frame costs one scan of simulated time instead of two (the wait for
+//     the swap's vertical blank, then the scan). The fast path and a traced run capture at once.
+//     frame_rgb() is the last frame captured (VGA_W x VGA_H RGB888). With --drop-doorbell N batch N is recorded but never run. With
 //     --dump-lists DIR each batch is written first as DIR/batchNNNN.txt (prim_list.h format: ztri
 //     when CTRL.ZTEST is set). On a GPU timeout, a disagreement, or a frame that cannot be captured
 //     or written, it returns false with *error set (the caller reports it) and error_kind() naming
@@ -23,14 +30,16 @@
 //     for frame 0) until frame trace_frame is captured, when the file is closed: the batches that
 //     draw the frame, the wait for its swap and its scan-out. A trace that cannot be opened is an
 //     error of kind "trace".
-//   - service_reset(value) forwards a RESET at once (a watchdog gave up on a batch), prints
-//     "cosim: GPU reset by the firmware", then publishes the registers.
+//   - service_reset(value) forwards a RESET at once (a watchdog gave up on a batch; the frame on the
+//     pins is finished first), prints "cosim: GPU reset by the firmware", then publishes the
+//     registers; false on an error of that frame.
 // Simulated time advances only inside these calls, so results do not depend on host timing.
 #ifndef BATCH_BRIDGE_H
 #define BATCH_BRIDGE_H
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gpu_sim.h"
@@ -54,7 +63,8 @@ public:
     bool pending_doorbell(uint32_t *tag) const;
     bool pending_reset(uint32_t *value) const;
     bool service_batch(uint32_t tag, std::string *error);
-    void service_reset(uint32_t value);
+    bool service_reset(uint32_t value, std::string *error);
+    bool finish_frames(std::string *error);
     void publish_registers();
 
     uint32_t batches() const { return batches_; }  // doorbells taken so far (dropped ones included)
@@ -70,12 +80,16 @@ public:
 
 private:
     void dump_list();
+    void feed_model();
+    bool finish_capture(std::string *error);
 
     const BridgeOptions &opt_;
     GpuSim sim_;
     ModelCheck model_;
     volatile uint32_t *window_ = nullptr;
     std::vector<uint32_t> shadow_;  // the window as last forwarded to the RTL
+    std::vector<std::pair<uint32_t, uint32_t>> model_writes_;  // (offset, value) the model has yet to take
+    bool capture_pending_ = false;  // a swapped frame is armed on the pins, not yet finished
     uint32_t frames_written_ = 0;  // frames captured (and written, with a frames_dir)
     uint32_t frames_checked_ = 0;  // frames compared with the golden model and found equal
     uint32_t batches_ = 0;

@@ -331,6 +331,10 @@ int CosimRun::run()
         int status = 0;
         if (qemu_.reap(&status)) {
             pump_uart(true);
+            std::string error;
+            if (!bridge_.finish_frames(&error)) {  // the last swapped frame is on its way to the pins
+                return fail(bridge_.error_kind(), "%s", error.c_str());
+            }
             if (WIFSIGNALED(status)) {
                 return fail("qemu-died", "QEMU was killed by signal %d", WTERMSIG(status));
             }
@@ -364,7 +368,10 @@ int CosimRun::run()
         }
         uint32_t reset;
         if (bridge_.pending_reset(&reset)) {
-            bridge_.service_reset(reset);
+            std::string error;
+            if (!bridge_.service_reset(reset, &error)) {
+                return fail(bridge_.error_kind(), "%s", error.c_str());
+            }
             last_activity = now_s();
         }
         uint32_t tag;

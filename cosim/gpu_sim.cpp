@@ -198,14 +198,21 @@ bool GpuSim::wait_done(uint32_t tag, uint64_t max_cycles)
     return false;
 }
 
-bool GpuSim::capture_frame(uint64_t max_cycles)
+void GpuSim::arm_capture()
 {
     if (fast_display()) {
         show_front_bank();
+    } else {
+        vga_monitor_arm(&monitor_);
+    }
+}
+
+bool GpuSim::wait_capture(uint64_t max_cycles)
+{
+    if (fast_display()) {
         return true;
     }
     const uint64_t limit = cycles_ + max_cycles;
-    vga_monitor_arm(&monitor_);
     while (!monitor_.frame_ready && cycles_ < limit && monitor_.error[0] == '\0') {
         tick();
     }

@@ -36,9 +36,18 @@ public:
 
     // Run until DONE_SEQ == tag and STATUS.BUSY is clear. False if max_cycles pass first.
     bool wait_done(uint32_t tag, uint64_t max_cycles);
-    // The pin path: capture the next complete frame from the VGA pins; false on timeout or a timing
-    // error. The fast path: the front bank as it is now, through the palette, at no clock.
-    bool capture_frame(uint64_t max_cycles);
+    // The pin path: arm_capture() arms the monitor for the next complete frame from the VGA pins,
+    // wait_capture() runs until it is in (false on timeout or a timing error), frame_captured() says
+    // whether it is; capture_frame() arms and waits. The fast path: arm_capture() takes the front
+    // bank as it is now, through the palette, at no clock; the frame is then always captured.
+    void arm_capture();
+    bool wait_capture(uint64_t max_cycles);
+    bool frame_captured() const { return fast_display() || monitor_.frame_ready; }
+    bool capture_frame(uint64_t max_cycles)
+    {
+        arm_capture();
+        return wait_capture(max_cycles);
+    }
     static bool fast_display();  // true in a simulator built for the fast path
     static constexpr unsigned kFastVblankEvery = 64;  // the fast path's vblank_start period, clocks
 
