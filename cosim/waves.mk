@@ -11,13 +11,15 @@
 #                     (PLATFORM=soc) or on co-simulation's fast display path (FAST=1: no scan-out)
 #                     -> $(OUT)/waves/<scene>[-soc|-fast]-frame<N>.fst and a .gtkw beside it
 #
-# Tracing costs speed, so these builds are apart from the others and `make test` builds none.
+# Tracing costs speed, so these builds are apart from the others; `make test` builds the pin path's
+# for its suite cosim-waves (tests/cosim/waves.sh).
 
 GPUSIM_TRACE      := $(BUILD)/sim-trace-w$(SPAN_W)/gpusim
 GPUSIM_FAST_TRACE := $(BUILD)/sim-fast-trace-w$(SPAN_W)/gpusim
 
 $(BUILD)/sim-trace-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$* --trace-fst,,-DGPUSIM_TRACE=1)
+test-quick: $(GPUSIM_TRACE)
 
 $(BUILD)/sim-fast-trace-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$* --trace-fst,gpu_core,-DGPUSIM_FAST_DISPLAY=1 -DGPUSIM_TRACE=1)
@@ -59,7 +61,7 @@ endef
 .PHONY: waves waves-gpu waves-soc socsim-trace
 waves:
 	@expr "$(FRAME)" : '[0-9][0-9]*$$' >/dev/null || { echo "waves: FRAME=N, a frame number from 0"; exit 2; }
-	@bash tools/setup.sh packages-waves.txt
+	@bash tools/setup.sh
 	@$(MAKE) --no-print-directory waves-$(if $(filter soc,$(PLATFORM)),soc,gpu)
 
 waves-gpu: $(if $(FAST),$(GPUSIM_FAST_TRACE),$(GPUSIM_TRACE)) $(WAVES_FW_ELF)

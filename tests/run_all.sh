@@ -115,6 +115,7 @@ suite cosim-stop-signal        4 bash tests/cosim/kill.sh sigterm
 suite cosim-gpu-timeout        1 bash tests/cosim/gpu_timeout.sh
 suite cosim-debug-gdb          6 bash tests/cosim/debug_gdb.sh
 suite cosim-window            15 bash tests/window/window.sh
+suite cosim-waves             26 bash tests/cosim/waves.sh
 suite upload-cosim            60 bash tests/upload/cosim_upload.sh
 suite upload-host-tool-unit    1 bash tests/tools/mesh_upload.sh
 suite upload-host-tool         2 bash tests/upload/host_tool.sh

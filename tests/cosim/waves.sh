@@ -5,7 +5,7 @@
 # signal of cosim/waves/gpu.gtkw (tests/cosim/waves_check.py, through fst2vcd) and exactly one
 # frame (FRAME_COUNT 1 at its start, 2 once, nothing else); and gtkwave itself (headless, under
 # xvfb-run) opens the trace with the save file and shows every one of its lines. Needs the trace
-# build and tools/packages-waves.txt (`make waves` makes and installs both): missing, it fails.
+# build (make test builds it) and gtkwave (tools/packages.txt): missing, it fails.
 source "$(dirname "$0")/../lib.sh"
 need GPUSIM BUILD PYTHON
 GPUSIM_TRACE=${GPUSIM_TRACE:-$BUILD/sim-trace-w8/gpusim}
@@ -13,7 +13,7 @@ FW=$BUILD/fw-test/tetra.elf
 need_file "$FW"
 [ -x "$GPUSIM_TRACE" ] || fail "missing $GPUSIM_TRACE: make $GPUSIM_TRACE (the trace build)"
 command -v fst2vcd >/dev/null && command -v gtkwave >/dev/null ||
-    fail "no fst2vcd/gtkwave: bash tools/setup.sh packages-waves.txt"
+    fail "no fst2vcd/gtkwave: bash tools/setup.sh"
 work=$(fresh_dir cosim-waves)
 
 # The normal build: --trace is a usage error that says what to do.
