@@ -23,7 +23,6 @@ extern "C" {
 #include "vga_monitor.h"
 }
 
-
 class GpuSim {
 public:
     GpuSim();
