@@ -2,7 +2,10 @@
  * stress.c — `make stress` (issue #13): named stiff and extreme cases of the firmware's pure core
  * rendered through the golden model, one Markdown row each: | case | result | figure |.
  *
- *   stress [--short]     --short: the make-test form (every case, fewer frames)
+ *   stress [--short] [--lists DIR] [--soak-frames=N] [--spin-frames=N]
+ *     --short        the make-test form: every case, fewer frames (soak 60, look key 10^4)
+ *     --lists DIR    some cases also write their frame as a primitive list and the frame the
+ *                    golden model drew (tests/stress/cosim_sample.sh co-simulates them)
  *
  * Every case starts with the fixed-point overflow counter cleared (fixed.h) and says what it
  * expects of it: 0, or a nonzero count it reports (a saturation that is counted, never silent).
@@ -191,6 +194,88 @@ static uint64_t fb_hash(void)
     return h;
 }
 
+/* ---- the co-simulated sample: frames as primitive lists (cosim/prim_list.h) ----------------- */
+/* With --lists DIR, some cases also write DIR/<name>.txt, the primitives of their frame as
+ * `gpusim raster` reads them, and DIR/<name>.raw, the frame the golden model drew from them here:
+ * tests/stress/cosim_sample.sh renders the lists through the RTL and compares. */
+static const char *stress_lists_dir;
+
+static FILE *list_open(const char *name, const char *ext)
+{
+    char path[512];
+
+    snprintf(path, sizeof path, "%s/%s.%s", stress_lists_dir, name, ext);
+    return fopen(path, "wb");
+}
+
+static void list_prim(FILE *f, uint32_t kind, int32_t x0, int32_t y0, int32_t x1, int32_t y1,
+                      int32_t x2, int32_t y2, uint32_t color)
+{
+    if (kind == GPU_PRIM_KIND_LINE) {
+        fprintf(f, "line %d %d %d %d %u\n", (int)x0, (int)y0, (int)x1, (int)y1, (unsigned)color);
+    } else {
+        fprintf(f, "tri %d %d %d %d %d %d %u\n", (int)x0, (int)y0, (int)x1, (int)y1, (int)x2,
+                (int)y2, (unsigned)color);
+    }
+}
+
+static void list_raw(const char *name)
+{
+    FILE *f = list_open(name, "raw");
+
+    if (f != NULL) {
+        fwrite(gpu_model_front(stress_bsp_gpu()), 1, GPU_MODEL_FB_PIXELS, f);
+        fclose(f);
+    }
+}
+
+/* A firmware frame (filled: triangles and lines), in draw order, after gpu_frame drew it. */
+static void list_frame(const char *name, const struct render_frame *fr)
+{
+    FILE *f;
+
+    if (stress_lists_dir == NULL || (f = list_open(name, "txt")) == NULL) {
+        return;
+    }
+    fprintf(f, "# stress case %s: the firmware's frame\nclear %u\n", name, (unsigned)PAL_SKY);
+    for (uint32_t i = 0; i < fr->prim_count; i++) {
+        const struct render_prim *p = &fr->prim[render_draw_index(fr, i)];
+        const struct proj_vertex *a = &fr->vert[p->v[0]];
+        const struct proj_vertex *b = &fr->vert[p->v[1]];
+        const struct proj_vertex *c = &fr->vert[p->v[2]];
+
+        list_prim(f, p->kind, a->sx, a->sy, b->sx, b->sy, c->sx, c->sy, p->color);
+    }
+    fclose(f);
+    list_raw(name);
+}
+
+/* A raw batch of this file's vertex and primitive words (indices in range, known kinds). */
+static void list_words(const char *name, uint32_t prims)
+{
+    FILE *f;
+
+    if (stress_lists_dir == NULL || (f = list_open(name, "txt")) == NULL) {
+        return;
+    }
+    fprintf(f, "# stress case %s: a batch written straight to the GPU\nclear %u\n", name,
+            (unsigned)PAL_SKY);
+    for (uint32_t i = 0; i < prims; i++) {
+        const uint32_t *w = &stress_prim_words[2u * i];
+        const uint32_t idx[3] = {w[0] & 0xFFFFu, w[0] >> 16, w[1] & 0xFFFFu};
+        int32_t xy[6];
+
+        for (int k = 0; k < 3; k++) {
+            xy[2 * k] = (int16_t)(stress_vtx_words[2u * idx[k]] & 0xFFFFu);
+            xy[2 * k + 1] = (int16_t)(stress_vtx_words[2u * idx[k]] >> 16);
+        }
+        list_prim(f, (w[1] >> GPU_PRIM_KIND_LSB) & 0xFFu, xy[0], xy[1], xy[2], xy[3], xy[4], xy[5],
+                  (w[1] >> GPU_PRIM_COLOR_LSB) & 0xFFu);
+    }
+    fclose(f);
+    list_raw(name);
+}
+
 /* ---- hand-made geometry: independent triangles seen from the origin along +z --------------- */
 #define TRI_MAX 32u
 struct tri_mesh {
@@ -298,7 +383,8 @@ static bool no_overflow(void)
 
 /* ---- near plane ----------------------------------------------------------------------------- */
 /* A triangle with one vertex at z = near + dz (the others at z = 2), rendered and drawn. */
-static bool near_case(char *out, real_t z0, uint32_t want_clipped, uint32_t want_prims)
+static bool near_case(const char *name, char *out, real_t z0, uint32_t want_clipped,
+                      uint32_t want_prims)
 {
     static struct tri_mesh t;
     struct frame_result r;
@@ -314,6 +400,7 @@ static bool near_case(char *out, real_t z0, uint32_t want_clipped, uint32_t want
     tri_render(&t, &tri_frame);
     band = frame_in_band(&tri_frame, &worst);
     gpu_frame(&tri_frame, &r);
+    list_frame(name, &tri_frame);
     fig(out, "z0 = %.9g: clipped %u, %u triangle(s), %u pixels, ERRORS 0x%x, %u overflows",
         rd(z0), (unsigned)tri_frame.stats.faces_clipped, (unsigned)tri_frame.prim_count,
         (unsigned)r.pixels, (unsigned)r.errors, (unsigned)fx_overflow_count());
@@ -331,25 +418,61 @@ static bool near_case(char *out, real_t z0, uint32_t want_clipped, uint32_t want
 
 static bool case_near_on(char *out)
 {
-    return near_case(out, PROJ_NEAR, 0u, 1u);
+    return near_case("near-on", out, PROJ_NEAR, 0u, 1u);
 }
 
 static bool case_near_front(char *out)
 {
-    return near_case(out, real_add(PROJ_NEAR, REAL_ULP_AT_NEAR), 0u, 1u);
+    return near_case("near-front", out, real_add(PROJ_NEAR, REAL_ULP_AT_NEAR), 0u, 1u);
 }
 
 static bool case_near_behind(char *out)
 {
     /* One vertex out: the triangle becomes a quad, two triangles (both windings are clipped
      * before the back-face test drops one). */
-    return near_case(out, real_sub(PROJ_NEAR, REAL_ULP_AT_NEAR), 2u, 2u);
+    return near_case("near-behind", out, real_sub(PROJ_NEAR, REAL_ULP_AT_NEAR), 2u, 2u);
 }
 
 static bool case_behind_eye(char *out)
 {
     /* A vertex far behind the eye: clipped, nothing mirrored in front. */
-    return near_case(out, to_real(-50.0), 2u, 2u);
+    return near_case("behind-eye", out, to_real(-50.0), 2u, 2u);
+}
+
+/* GPU primitives at the ends of Q12.4 (+-2048 px), written straight to the GPU. */
+static void raw_vertex(uint32_t *w, int32_t sx, int32_t sy)
+{
+    w[0] = ((uint32_t)sx & 0xFFFFu) | ((uint32_t)(sy & 0xFFFF) << 16);
+    w[1] = 0;
+}
+
+static void raw_prim(uint32_t *w, uint32_t i0, uint32_t i1, uint32_t i2, uint32_t kind)
+{
+    w[0] = (i0 & 0xFFFFu) | (i1 << 16);
+    w[1] = (i2 & 0xFFFFu) | (0x17u << GPU_PRIM_COLOR_LSB) | (kind << GPU_PRIM_KIND_LSB);
+}
+
+/* One batch straight to the driver: vtx_count vertices, prims primitives. */
+static int raw_batch(uint32_t vtx_count, uint32_t prims, struct gpu_stats *st)
+{
+    struct gpu_batch b;
+    uint32_t tag;
+    int rc;
+
+    b.vtx_words = stress_vtx_words;
+    b.vtx_base = 0;
+    b.vtx_count = vtx_count;
+    b.prim_words = stress_prim_words;
+    b.tri_base = 0;
+    b.prim_count = prims;
+    b.clear_color = PAL_SKY;
+    b.ctrl = GPU_CTRL_CLEAR_MASK | GPU_CTRL_SWAP_MASK;
+    rc = gpu_submit_batch(&stress_dev, &b, &tag);
+    if (rc == GPU_OK) {
+        rc = gpu_wait(&stress_dev, tag, 1000u);
+    }
+    gpu_read_stats(&stress_dev, st);
+    return rc;
 }
 
 /* ---- slivers and grazing angles ------------------------------------------------------------- */
@@ -357,6 +480,9 @@ static bool case_sliver(char *out)
 {
     static struct tri_mesh t;
     struct frame_result r;
+    struct gpu_stats st;
+    uint32_t covered;
+    int rc;
     /* At z = 4 with f = 200, one world unit is 50 px: 1/16 px is 1/800 unit. Long (200 px),
      * one sub-pixel unit wide at its base, and half a sub-pixel. */
     const double w = 1.0 / 800.0;
@@ -371,12 +497,30 @@ static bool case_sliver(char *out)
     }
     tri_render(&t, &tri_frame);
     gpu_frame(&tri_frame, &r);
-    fig(out, "3 slivers (1/16 and 1/32 px wide, 200 px long), both windings: %u emitted, %u back, "
-             "%u drawn, %u pixels, ERRORS 0x%x",
+    list_frame("slivers", &tri_frame);
+    /* At the GPU: two slivers 1/16 px tall, 200 px long, on either side of one row of pixel
+     * centres (their shared edge on it): the top-left rule gives the row to exactly one. */
+    raw_vertex(&stress_vtx_words[0], 16 * 50 + 8, 16 * 100 + 8);
+    raw_vertex(&stress_vtx_words[2], 16 * 250 + 8, 16 * 100 + 8);
+    raw_vertex(&stress_vtx_words[4], 16 * 250 + 8, 16 * 100 + 9);
+    raw_vertex(&stress_vtx_words[6], 16 * 250 + 8, 16 * 100 + 7);
+    raw_prim(&stress_prim_words[0], 0, 1, 2, GPU_PRIM_KIND_TRI);
+    raw_prim(&stress_prim_words[2], 0, 3, 1, GPU_PRIM_KIND_TRI);
+    rc = raw_batch(4, 2, &st);
+    list_words("sliver-row", 2);
+    covered = 0;
+    for (uint32_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
+        covered += gpu_model_front(stress_bsp_gpu())[i] != PAL_SKY;
+    }
+    fig(out, "3 slivers (1/16, 1/32 px), both windings: %u emitted, %u back, %u drawn, %u px; "
+             "2 sharing a pixel-centre row: %u px written, %u covered (once each)",
         (unsigned)tri_frame.prim_count, (unsigned)tri_frame.stats.faces_back, (unsigned)r.drawn,
-        (unsigned)r.pixels, (unsigned)r.errors);
-    /* Whatever the rounding keeps, each covers at most a pixel row / column: < 3 * 240 px. */
-    return r.submit_rc == GPU_OK && r.errors == 0u && r.pixels <= 3u * 240u && no_overflow();
+        (unsigned)r.pixels, (unsigned)st.pixels, (unsigned)covered);
+    /* Whatever the rounding keeps, each covers at most a pixel row / column: < 3 * 240 px; the
+     * row of the pair is written once per pixel, nearly all of its 200. */
+    return r.submit_rc == GPU_OK && r.errors == 0u && r.pixels <= 3u * 240u && rc == GPU_OK &&
+           st.errors == 0u && st.pixels == covered && covered >= 199u && covered <= 201u &&
+           no_overflow();
 }
 
 static bool case_grazing(char *out)
@@ -511,48 +655,13 @@ static bool case_guard_band(char *out)
     tri_render(&t, &tri_frame);
     band = frame_in_band(&tri_frame, &worst);
     gpu_frame(&tri_frame, &r);
+    list_frame("guard-band", &tri_frame);
     fig(out, "3 triangles -> %u, %u clipped; largest offset %.1f px of the 1536 px band, "
              "ERRORS 0x%x, %u overflows", (unsigned)tri_frame.prim_count,
         (unsigned)tri_frame.stats.faces_clipped, worst / 16.0, (unsigned)r.errors,
         (unsigned)fx_overflow_count());
     return band && tri_frame.stats.faces_clipped >= 2u && r.submit_rc == GPU_OK &&
            r.errors == 0u && r.pixels > 0u && no_overflow();
-}
-
-/* GPU primitives at the ends of Q12.4 (+-2048 px), written straight to the GPU. */
-static void raw_vertex(uint32_t *w, int32_t sx, int32_t sy)
-{
-    w[0] = ((uint32_t)sx & 0xFFFFu) | ((uint32_t)(sy & 0xFFFF) << 16);
-    w[1] = 0;
-}
-
-static void raw_prim(uint32_t *w, uint32_t i0, uint32_t i1, uint32_t i2, uint32_t kind)
-{
-    w[0] = (i0 & 0xFFFFu) | (i1 << 16);
-    w[1] = (i2 & 0xFFFFu) | (0x17u << GPU_PRIM_COLOR_LSB) | (kind << GPU_PRIM_KIND_LSB);
-}
-
-/* One batch straight to the driver: vtx_count vertices, prims primitives. */
-static int raw_batch(uint32_t vtx_count, uint32_t prims, struct gpu_stats *st)
-{
-    struct gpu_batch b;
-    uint32_t tag;
-    int rc;
-
-    b.vtx_words = stress_vtx_words;
-    b.vtx_base = 0;
-    b.vtx_count = vtx_count;
-    b.prim_words = stress_prim_words;
-    b.tri_base = 0;
-    b.prim_count = prims;
-    b.clear_color = PAL_SKY;
-    b.ctrl = GPU_CTRL_CLEAR_MASK | GPU_CTRL_SWAP_MASK;
-    rc = gpu_submit_batch(&stress_dev, &b, &tag);
-    if (rc == GPU_OK) {
-        rc = gpu_wait(&stress_dev, tag, 1000u);
-    }
-    gpu_read_stats(&stress_dev, st);
-    return rc;
 }
 
 static bool case_q12_4_ends(char *out)
@@ -571,6 +680,7 @@ static bool case_q12_4_ends(char *out)
     raw_prim(&stress_prim_words[4], 0, 3, 3, GPU_PRIM_KIND_LINE);
     raw_prim(&stress_prim_words[6], 3, 1, 2, GPU_PRIM_KIND_TRI);
     rc = raw_batch(4, 4, &st);
+    list_words("q12-4-ends", 4);
     fig(out, "corners +-2048 px: %u of 4 drawn, %u pixels (screen: 76800 + line), ERRORS 0x%x",
         (unsigned)st.tris_drawn, (unsigned)st.pixels, (unsigned)st.errors);
     return rc == GPU_OK && st.errors == 0u && st.pixels >= GPU_MODEL_FB_PIXELS &&
@@ -952,12 +1062,14 @@ int main(int argc, char **argv)
         if (strcmp(argv[i], "--short") == 0) {
             stress_soak_frames = 60u;
             stress_spin_frames = 10000u;
+        } else if (strcmp(argv[i], "--lists") == 0 && i + 1 < argc) {
+            stress_lists_dir = argv[++i];
         } else if (strncmp(argv[i], "--soak-frames=", 14) == 0) {
             stress_soak_frames = (uint32_t)strtoul(argv[i] + 14, NULL, 10);
         } else if (strncmp(argv[i], "--spin-frames=", 14) == 0) {
             stress_spin_frames = (uint32_t)strtoul(argv[i] + 14, NULL, 10);
         } else {
-            fprintf(stderr, "usage: stress [--short] [--soak-frames=N] [--spin-frames=N]\n");
+            fprintf(stderr, "usage: stress [--short] [--lists DIR] [--soak-frames=N] [--spin-frames=N]\n");
             return 2;
         }
     }
