@@ -360,7 +360,7 @@ static bool frame_in_band(const struct render_frame *f, int32_t *worst)
 }
 
 /* ---- the table ------------------------------------------------------------------------------ */
-#define FIG_BYTES 200
+#define FIG_BYTES 400
 typedef bool (*stress_fn)(char *fig);
 
 static int fig(char *out, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
@@ -629,7 +629,7 @@ static bool case_world_beyond(char *out)
     tri_add(&t, v3(0, 0, 20000), v3(30000, 30000, 30000), v3(-30000, 30000, 30000));
     tri_render(&t, &tri_frame);
     gpu_frame(&tri_frame, &r);
-    fig(out, "vertices at 2e4..3e4 units: %u saturations counted and reported, ERRORS 0x%x",
+    fig(out, "vertices at 2e4..3e4 units: %u saturation(s) counted and reported, ERRORS 0x%x",
         (unsigned)fx_overflow_count(), (unsigned)r.errors);
     return fx_overflow_count() > 0u && r.submit_rc == GPU_OK && r.errors == 0u;
 #else
@@ -931,10 +931,11 @@ static bool case_spin_drift(char *out)
 }
 
 /* ---- soak: every scene, fixed keys, twice, frame hashes identical --------------------------- */
-/* The key script: frame k types keys[k % n] (no scene switches, no quit). */
+/* The key script: frame k types keys[k % n] (no scene switches, no quit), and R (reset view)
+ * every 1000th frame: the camera wanders to the scene box's walls in between. */
 static const char *const soak_keys[] = {
     "", "wwwwjjjii", "", "m", "ddd  kkk", "lllll", "mllluo", "sssss", "", "ccaa", "t", "iiii",
-    "b", "p", "n", "jjjjjjj", "m", "uuoo", "wwwww", "r", "t",
+    "b", "p", "n", "jjjjjjj", "m", "uuoo", "wwwww", "", "t",
 };
 #define SOAK_KEY_COUNT (sizeof soak_keys / sizeof soak_keys[0])
 
@@ -944,6 +945,9 @@ struct soak_run {
     uint32_t dropped;
     uint32_t errors;
     uint32_t overflows;
+    uint32_t mesh_full;    /* SCENE_EVENT_MESH_FULL: a rebuilt voxel mesh found no room */
+    uint32_t prims;        /* primitives drawn over the run */
+    uint32_t changed;      /* frames whose hash differs from the frame before */
 };
 
 static uint64_t soak_hashes[2][16384];
@@ -952,6 +956,7 @@ static void soak_one(const struct scene_desc *d, uint32_t frames, int run, struc
 {
     struct input_decoder dec;
     bool wire = false;
+    uint64_t prev = 0;
 
     memset(sr, 0, sizeof *sr);
     fx_overflow_clear();
@@ -960,7 +965,7 @@ static void soak_one(const struct scene_desc *d, uint32_t frames, int run, struc
     scene_start(&stress_scene, d);
     input_decoder_init(&dec);
     for (uint32_t k = 0; k < frames; k++) {
-        const char *text = soak_keys[k % SOAK_KEY_COUNT];
+        const char *text = (k % 1000u == 999u) ? "r" : soak_keys[k % SOAK_KEY_COUNT];
         struct pipeline_opts opts = {.wireframe = false, .depth_test = false, .gpu_lines = true};
         struct input_counts c;
         struct scene_event ev;
@@ -978,8 +983,12 @@ static void soak_one(const struct scene_desc *d, uint32_t frames, int run, struc
         check_mat(&stress_scene.cam.scene_rot);
         gpu_frame(&stress_scene_frame, &r);
         sr->dropped += stress_scene_frame.stats.dropped;
+        sr->mesh_full += ev.kind == SCENE_EVENT_MESH_FULL;
+        sr->prims += stress_scene_frame.prim_count;
         sr->errors |= r.errors | (r.submit_rc != GPU_OK ? 0x80000000u : 0u);
         h = fb_hash();
+        sr->changed += k > 0u && h != prev;
+        prev = h;
         sr->hash_sum = (sr->hash_sum ^ h) * 0x100000001b3ull;
         if (k < 16384u) {
             soak_hashes[run][k] = h;
@@ -993,7 +1002,9 @@ static bool case_soak(char *out)
     char *p = out;
     bool ok = true;
 
-    p += fig(p, "%u frames x 2 runs:", (unsigned)stress_soak_frames);
+    p += fig(p, "%u frames x 2 runs, each scene: 0 dropped, ERRORS 0, 0 overflows, equal hashes; "
+             "hash (frames that changed):",
+             (unsigned)stress_soak_frames);
     for (uint32_t i = 0; i < scene_count(); i++) {
         const struct scene_desc *d = scene_at(i);
         struct soak_run a;
@@ -1009,14 +1020,16 @@ static bool case_soak(char *out)
             }
         }
         if (a.hash_sum != b.hash_sum || diff != stress_soak_frames || a.dropped != 0u ||
-            a.errors != 0u || a.overflows != 0u || b.overflows != 0u) {
+            a.errors != 0u || a.overflows != 0u || b.overflows != 0u || a.mesh_full != 0u ||
+            a.changed == 0u) {
             ok = false;
             p += snprintf(p, (size_t)(FIG_BYTES - (p - out)), " %s FAILED (diff@%u drop %u err 0x%x "
-                          "ovf %u)", d->name, (unsigned)diff, (unsigned)a.dropped,
-                          (unsigned)a.errors, (unsigned)a.overflows);
+                          "ovf %u full %u changed %u)", d->name, (unsigned)diff,
+                          (unsigned)a.dropped, (unsigned)a.errors, (unsigned)a.overflows,
+                          (unsigned)a.mesh_full, (unsigned)a.changed);
         } else {
-            p += snprintf(p, (size_t)(FIG_BYTES - (p - out)), " %s %04x", d->name,
-                          (unsigned)(a.hash_sum & 0xFFFFu));
+            p += snprintf(p, (size_t)(FIG_BYTES - (p - out)), " %s %04x (%u)", d->name,
+                          (unsigned)(a.hash_sum & 0xFFFFu), (unsigned)a.changed);
         }
         if (p - out >= FIG_BYTES - 1) {
             break;
