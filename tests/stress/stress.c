@@ -43,6 +43,7 @@ static uint32_t stress_soak_frames = 10000u;     /* per scene and run */
 static uint32_t stress_spin_frames = 1000000u;   /* the held rotation key */
 
 #define STRESS_PI 3.14159265358979323846
+#define Q30_MIN_ ((q2_30)INT32_MIN)  /* -2.0 */
 
 /* ---- numbers of the backend as double ------------------------------------------------------ */
 static double rd(real_t r)
@@ -638,6 +639,51 @@ static bool case_world_beyond(char *out)
 #endif
 }
 
+/* The q16_16 / q2_30 operations at the ends of int32: every result that does not fit is clamped
+ * and counted once; those that fit (the ends themselves) count nothing. */
+static bool case_fixed_ends(char *out)
+{
+#if REAL_IS_FIXED
+    struct {
+        int32_t got;
+        int32_t want;
+        uint32_t counts;  /* saturations this one must add */
+    } r[16];
+    uint32_t n = 0;
+    uint32_t want_total = 0;
+    uint32_t wrong = 0;
+
+#define FX_END(expr, w, c) do { const uint32_t before_ = fx_overflow_count(); \
+        r[n].got = (expr); r[n].want = (w); r[n].counts = (c); \
+        wrong += (fx_overflow_count() - before_ != (c)) || r[n].got != r[n].want; \
+        want_total += (c); n++; } while (0)
+    FX_END(fx_add(FX_MAX, 1), FX_MAX, 1u);
+    FX_END(fx_sub(FX_MIN, 1), FX_MIN, 1u);
+    FX_END(fx_sub(0, FX_MIN), FX_MAX, 1u);
+    FX_END(fx_add(FX_MAX, FX_MIN), -1, 0u);
+    FX_END(fx_mul(FX_MAX, FX_MAX), FX_MAX, 1u);
+    FX_END(fx_mul(FX_MIN, FX_MAX), FX_MIN, 1u);
+    FX_END(fx_mul(FX_MAX, FX_ONE), FX_MAX, 0u);
+    FX_END(fx_mul(FX_MIN, FX_ONE), FX_MIN, 0u);
+    FX_END(fx_div(FX_ONE, 0), FX_MAX, 1u);
+    FX_END(fx_div(FX_MAX, 1), FX_MAX, 1u);
+    FX_END(fx_div(FX_MIN, -FX_ONE), FX_MAX, 1u);
+    FX_END(q30_mul(Q30_MIN_, Q30_MIN_), FX_MAX, 1u);
+    FX_END(q30_mul(Q30_ONE, Q30_ONE), Q30_ONE, 0u);
+    FX_END(q30_from_q16(FX_FROM_INT(2)), FX_MAX, 1u);
+    FX_END(q30_from_q16(-FX_FROM_INT(2)), FX_MIN, 0u);
+    FX_END(q30_scale(FX_MAX, Q30_ONE), FX_MAX, 0u);
+#undef FX_END
+    fig(out, "%u operations at the int32 ends: %u saturations counted (%u expected), %u wrong",
+        (unsigned)n, (unsigned)fx_overflow_count(), (unsigned)want_total, (unsigned)wrong);
+    (void)r;
+    return wrong == 0u && fx_overflow_count() == want_total;
+#else
+    fig(out, "float backend: no fixed-point ranges; 0 NaN");
+    return stress_nonfinite == 0u;
+#endif
+}
+
 /* The guard band: triangles reaching far beyond it are clipped to it; a vertex exactly on its
  * edge is kept. */
 static bool case_guard_band(char *out)
@@ -1055,6 +1101,7 @@ static const struct stress_case stress_cases[] = {
     {"slivers one sub-pixel wide", case_sliver},
     {"+-1024 world rule: opposite corners", case_world_1024},
     {"beyond the world rule: saturation counted", case_world_beyond},
+    {"q16.16 / q2.30 operations at the int32 ends", case_fixed_ends},
     {"guard band: clipped to it, edge kept", case_guard_band},
     {"Q12.4 screen range ends at the GPU", case_q12_4_ends},
     {"pitch at +-89.99 deg", case_pitch_pole},
