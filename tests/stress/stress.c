@@ -644,18 +644,14 @@ static bool case_world_beyond(char *out)
 static bool case_fixed_ends(char *out)
 {
 #if REAL_IS_FIXED
-    struct {
-        int32_t got;
-        int32_t want;
-        uint32_t counts;  /* saturations this one must add */
-    } r[16];
     uint32_t n = 0;
     uint32_t want_total = 0;
     uint32_t wrong = 0;
 
+    /* expr must give w and add c saturations to the counter. */
 #define FX_END(expr, w, c) do { const uint32_t before_ = fx_overflow_count(); \
-        r[n].got = (expr); r[n].want = (w); r[n].counts = (c); \
-        wrong += (fx_overflow_count() - before_ != (c)) || r[n].got != r[n].want; \
+        const int32_t got_ = (expr); \
+        wrong += (fx_overflow_count() - before_ != (c)) || got_ != (w); \
         want_total += (c); n++; } while (0)
     FX_END(fx_add(FX_MAX, 1), FX_MAX, 1u);
     FX_END(fx_sub(FX_MIN, 1), FX_MIN, 1u);
@@ -676,7 +672,6 @@ static bool case_fixed_ends(char *out)
 #undef FX_END
     fig(out, "%u operations at the int32 ends: %u saturations counted (%u expected), %u wrong",
         (unsigned)n, (unsigned)fx_overflow_count(), (unsigned)want_total, (unsigned)wrong);
-    (void)r;
     return wrong == 0u && fx_overflow_count() == want_total;
 #else
     fig(out, "float backend: no fixed-point ranges; 0 NaN");
@@ -749,7 +744,7 @@ static bool case_gpu_bad_index(char *out)
     raw_prim(&stress_prim_words[8], 0, 1, 2, 7u);                     /* unknown kind */
     rc = raw_batch(3, 5, &st);
     fig(out, "5 primitives, 3 with indices >= VTX_COUNT, 1 bad kind: %u drawn, %u rejected, "
-             "ERRORS 0x%x (VTX_INDEX|KIND)", (unsigned)st.tris_drawn, (unsigned)st.tris_rejected,
+             "ERRORS 0x%x (VTX_INDEX + KIND)", (unsigned)st.tris_drawn, (unsigned)st.tris_rejected,
         (unsigned)st.errors);
     return rc == GPU_OK && st.tris_drawn == 1u && st.tris_rejected == 4u &&
            st.errors == (GPU_ERR_VTX_INDEX_MASK | GPU_ERR_KIND_MASK);
@@ -930,7 +925,7 @@ static bool case_pitch_pole(char *out)
     }
     /* 3e-4: the sine table's bound on the rebuilt basis (camera.c, tests/firmware). */
     fig(out, "asked +-89.99 deg, held at %.4f deg (limit 89), fly and orbit, 2000 frames each; "
-             "basis |RR^T-I| <= %.1e (table bound 3e-4), %u non-finite",
+             "basis max abs(RR^T-I) <= %.1e (table bound 3e-4), %u non-finite",
         seen_max * 360.0 / 65536.0, worst, (unsigned)stress_nonfinite);
     return ok && seen_max <= CAM_PITCH_LIMIT && worst < 3e-4 && no_overflow();
 }
@@ -969,7 +964,7 @@ static bool case_spin_drift(char *out)
      * basis within the sine table's 3e-4; object mode accumulates and re-orthonormalises: within
      * test_camera's 1e-6. */
     yaw_exact = fly.yaw == (fx_angle)(stress_spin_frames * (uint32_t)cfg.look_step);
-    fig(out, "%u frames: fly yaw %s N steps, basis |RR^T-I| <= %.1e (no growth: "
+    fig(out, "%u frames: fly yaw %s N steps, basis max abs(RR^T-I) <= %.1e (no growth: "
              "rebuilt); object-mode rotation <= %.1e; %u non-finite",
         (unsigned)stress_spin_frames, yaw_exact ? "exactly" : "NOT", fly_worst, obj_worst,
         (unsigned)stress_nonfinite);

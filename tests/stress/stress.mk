@@ -36,7 +36,6 @@ $$($(1)_OBJ)/%.o: %.c $$(HOST_OBJ_DIR_$(2))/cflags.txt
 $(1): $$($(1)_OBJS) $$($(1)_FW_OBJS) $(FW_MODEL_HOST_OBJ) $(GPU_MODEL_LIB)
 	$$(HOST_CC) -o $$@ $$($(1)_OBJS) $$($(1)_FW_OBJS) $(FW_MODEL_HOST_OBJ) $(GPU_MODEL_LIB) -lm
 
-FW_DEP_FILES += $$($(1)_OBJS:.o=.d)
 -include $$($(1)_OBJS:.o=.d)
 endef
 
