@@ -413,8 +413,10 @@ static bool near_case(const char *name, char *out, real_t z0, uint32_t want_clip
 
 #if REAL_IS_FIXED
 #define REAL_ULP_AT_NEAR ((real_t)1)
+#define REAL_ULP_AT_FAR  ((real_t)1)
 #else
 #define REAL_ULP_AT_NEAR (nextafterf(PROJ_NEAR, 1.0f) - PROJ_NEAR)
+#define REAL_ULP_AT_FAR  (nextafterf(160.0f, 1000.0f) - 160.0f)
 #endif
 
 static bool case_near_on(char *out)
@@ -476,6 +478,43 @@ static int raw_batch(uint32_t vtx_count, uint32_t prims, struct gpu_stats *st)
     return rc;
 }
 
+/* The far plane (160 units here): a triangle exactly on it is drawn, one 1 ulp beyond is culled;
+ * its sort depth stays under the cap that keeps a triangle's key in 16 bits. */
+static bool case_far_plane(char *out)
+{
+    static struct tri_mesh t;
+    struct frame_result r;
+    const real_t far = to_real(160.0);
+    uint32_t on_prims;
+    uint32_t on_pixels;
+    uint32_t depth;
+    uint32_t beyond_prims;
+    uint32_t beyond_frustum;
+
+    tri_begin(&t);
+    tri_add(&t, vec3_make(REAL_C(-10), REAL_C(-10), far), vec3_make(REAL_C(10), REAL_C(-10), far),
+            vec3_make(0, REAL_C(10), far));
+    tri_add(&t, vec3_make(REAL_C(-10), REAL_C(-10), far), vec3_make(0, REAL_C(10), far),
+            vec3_make(REAL_C(10), REAL_C(-10), far));
+    tri_render(&t, &tri_frame);
+    gpu_frame(&tri_frame, &r);
+    on_prims = tri_frame.prim_count;
+    on_pixels = r.pixels;
+    depth = (on_prims > 0u) ? tri_frame.vert[tri_frame.prim[0].v[0]].depth : 0u;
+    for (uint32_t i = 0; i < t.m.vert_count; i++) {
+        t.v[i].z = real_add(far, REAL_ULP_AT_FAR);
+    }
+    tri_render(&t, &tri_frame);
+    beyond_prims = tri_frame.prim_count;
+    beyond_frustum = tri_frame.stats.faces_frustum;
+    fig(out, "z = far: %u triangle, %u pixels, sort depth %u (cap %u); z = far + 1 ulp: %u "
+             "triangles, %u frustum-culled; %u overflows", (unsigned)on_prims,
+        (unsigned)on_pixels, (unsigned)depth, (unsigned)PROJ_DEPTH_MAX, (unsigned)beyond_prims,
+        (unsigned)beyond_frustum, (unsigned)fx_overflow_count());
+    return on_prims == 1u && on_pixels > 0u && r.errors == 0u && depth <= PROJ_DEPTH_MAX &&
+           beyond_prims == 0u && beyond_frustum >= 1u && no_overflow();
+}
+
 /* ---- slivers and grazing angles ------------------------------------------------------------- */
 static bool case_sliver(char *out)
 {
@@ -530,33 +569,35 @@ static bool case_grazing(char *out)
     struct frame_result r;
     uint32_t back = 0;
     uint32_t pixels = 0;
+    uint32_t in_plane_back = 0;
 
-    /* A floor at y = -1 seen ever more edge-on (the eye rises towards its plane), and a wall
-     * turned towards the view ray by 1e-4 rad. */
-    for (int k = 0; k < 8; k++) {
-        const double y = -1.0 + pow(10.0, -(double)k);
+    /* A floor at y = -h seen ever more edge-on, h = 1 .. 1e-7 and exactly 0 (the eye in its
+     * plane: zero area, culled), and a wall turned towards the view ray by 1e-4 rad. */
+    for (int k = 0; k <= 8; k++) {
+        const double h = (k < 8) ? pow(10.0, -(double)k) : 0.0;
 
         tri_begin(&t);
-        tri_add(&t, v3(-3, -1, 1), v3(3, -1, 40), v3(3, -1, 1));
-        tri_add(&t, v3(-3, -1, 1), v3(-3, -1, 40), v3(3, -1, 40));
+        tri_add(&t, v3(-3, -h, 1), v3(3, -h, 40), v3(3, -h, 1));
+        tri_add(&t, v3(-3, -h, 1), v3(-3, -h, 40), v3(3, -h, 40));
         tri_add(&t, v3(0.5, -1, 2), v3(0.5 + 1e-4 * 30, 1, 32), v3(0.5, 1, 2));
-        for (uint32_t i = 0; i < t.m.vert_count; i++) {
-            t.v[i].y = real_sub(t.v[i].y, to_real(y + 1.0));
-        }
         tri_render(&t, &tri_frame);
         gpu_frame(&tri_frame, &r);
         back += tri_frame.stats.faces_back;
         pixels += r.pixels;
+        if (k == 8) {
+            in_plane_back = tri_frame.stats.faces_back;
+        }
         if (r.submit_rc != GPU_OK || r.errors != 0u) {
-            fig(out, "eye %.0e above the plane: rc %d ERRORS 0x%x", pow(10.0, -(double)k),
-                r.submit_rc, (unsigned)r.errors);
+            fig(out, "eye %.0e above the plane: rc %d ERRORS 0x%x", h, r.submit_rc,
+                (unsigned)r.errors);
             return false;
         }
     }
-    fig(out, "8 heights 1 .. 1e-7 above the plane: %u faces culled as back/zero-area, %u pixels, "
-             "ERRORS 0, %u overflows", (unsigned)back, (unsigned)pixels,
-        (unsigned)fx_overflow_count());
-    return no_overflow();
+    fig(out, "floor 1 .. 1e-7 and 0 below the eye, a wall 1e-4 rad off the view ray: %u faces "
+             "culled as back or zero-area (%u of 2 with the eye in the plane), %u pixels, "
+             "ERRORS 0, %u overflows", (unsigned)back, (unsigned)in_plane_back,
+        (unsigned)pixels, (unsigned)fx_overflow_count());
+    return in_plane_back >= 2u && no_overflow();
 }
 
 /* ---- fixed-point ranges --------------------------------------------------------------------- */
@@ -1090,6 +1131,7 @@ static const struct stress_case stress_cases[] = {
     {"vertex 1 ulp in front of the near plane", case_near_front},
     {"vertex 1 ulp behind the near plane", case_near_behind},
     {"vertex far behind the eye", case_behind_eye},
+    {"far plane: on it kept, 1 ulp beyond culled", case_far_plane},
     {"camera inside a mesh (cubes)", case_inside_mesh},
     {"camera inside a voxel block", case_inside_voxel},
     {"triangles at grazing angles", case_grazing},
