@@ -303,6 +303,9 @@ static void tri_add(struct tri_mesh *t, vec3 a, vec3 b, vec3 c)
 
 RENDER_FRAME_STORAGE(stress_frame, 4096u, 4096u);
 static struct render_frame tri_frame;
+/* A scene with this program's storage (scene_set.h): the camera cases, the soak. */
+static struct scene stress_scene;
+static struct render_frame stress_scene_frame;
 
 static void setup_pass(struct render_pass *pass, vec3 eye, fx_angle yaw, int32_t pitch)
 {
@@ -660,24 +663,47 @@ static bool case_world_1024(char *out)
     return errors == 0u && no_overflow();
 }
 
-/* Beyond the rule: a vertex at 20000 units (view space > 4096) must be counted, not silent. */
+/* Beyond the rules, both counted, never silent: a mesh with a vertex at 20000 model units (past
+ * the transform's +-8192: mesh_finish counts it, and the frame loop would stop before drawing
+ * it), and an object placed at 30000 world units (past the +-1024 box: scene_add_object clamps
+ * each coordinate and counts it), then drawn where it was clamped to. */
 static bool case_world_beyond(char *out)
 {
-#if REAL_IS_FIXED
     static struct tri_mesh t;
+    const struct pipeline_opts opts = {.wireframe = false, .depth_test = false, .gpu_lines = true};
+    const mat3 id = mat3_identity();
     struct frame_result r;
+    uint32_t mesh_count;
+    uint32_t pos_count;
+    uint32_t draw_count;
 
     tri_begin(&t);
-    tri_add(&t, v3(0, 0, 20000), v3(30000, 30000, 30000), v3(-30000, 30000, 30000));
-    tri_render(&t, &tri_frame);
-    gpu_frame(&tri_frame, &r);
-    fig(out, "vertices at 2e4..3e4 units: %u saturation(s) counted and reported, ERRORS 0x%x",
-        (unsigned)fx_overflow_count(), (unsigned)r.errors);
-    return fx_overflow_count() > 0u && r.submit_rc == GPU_OK && r.errors == 0u;
-#else
-    fig(out, "float backend: no saturation to count; 0 NaN");
-    return stress_nonfinite == 0u;
-#endif
+    tri_add(&t, v3(0, 0, 3), v3(20000, 0, 3), v3(0, 1, 3));
+    mesh_finish(&t.m);
+    mesh_count = fx_overflow_count();
+    fx_overflow_clear();
+
+    tri_begin(&t);
+    tri_add(&t, v3(-1, -1, 0), v3(1, -1, 0), v3(0, 1, 0));
+    mesh_finish(&t.m);
+    scene_set_attach(&stress_scene, &stress_scene_frame);
+    if (!scene_start(&stress_scene, scene_find("tetra"))) {
+        fig(out, "tetra did not start");
+        return false;
+    }
+    fx_overflow_clear();
+    scene_add_object(&stress_scene, &t.m, &id, v3(30000, -30000, 30000), 0);
+    pos_count = fx_overflow_count();
+    fx_overflow_clear();
+    pipeline_pass(&stress_scene_frame, &stress_scene, &opts, 0, NULL, NULL);
+    gpu_frame(&stress_scene_frame, &r);
+    draw_count = fx_overflow_count();
+    fig(out, "vertex at 20000 model units: %u overflow counted (mesh_finish); object at 30000 "
+             "world units: %u counted and clamped (scene_add_object), then drawn: %u primitives, "
+             "%u overflows, ERRORS 0x%x", (unsigned)mesh_count, (unsigned)pos_count,
+        (unsigned)stress_scene_frame.prim_count, (unsigned)draw_count, (unsigned)r.errors);
+    return mesh_count == 1u && pos_count == 3u && draw_count == 0u && r.submit_rc == GPU_OK &&
+           r.errors == 0u && stress_nonfinite == 0u;
 }
 
 /* The q16_16 / q2_30 operations at the ends of int32: every result that does not fit is clamped
@@ -862,8 +888,6 @@ static bool case_frame_capacity(char *out)
 }
 
 /* ---- cameras in awkward places -------------------------------------------------------------- */
-static struct scene stress_scene;
-static struct render_frame stress_scene_frame;
 
 /* Turn a full circle (and up and down) from where the camera is; every frame drawn. */
 static bool sweep_from(const char *what, char *out)
@@ -1137,7 +1161,7 @@ static const struct stress_case stress_cases[] = {
     {"triangles at grazing angles", case_grazing},
     {"slivers one sub-pixel wide", case_sliver},
     {"+-1024 world rule: opposite corners", case_world_1024},
-    {"beyond the world rule: saturation counted", case_world_beyond},
+    {"beyond the model and world ranges: counted", case_world_beyond},
     {"q16.16 / q2.30 operations at the int32 ends", case_fixed_ends},
     {"guard band: clipped to it, edge kept", case_guard_band},
     {"Q12.4 screen range ends at the GPU", case_q12_4_ends},
