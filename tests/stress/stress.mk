@@ -9,6 +9,7 @@
 #                               and run, the look key held 10^6 frames), both backends
 #   make stress STRESS_ARGS=--short    the make-test form (tests/stress/run.sh: the same cases,
 #                               fewer frames, and a sample co-simulated)
+#   make stress-san             the same under ASan and UBSan (any report fails; not in make test)
 #   STRESS_TIMEOUT              seconds per backend before a run counts as hung (default 900)
 #
 # Outputs: $(STRESS) = $(BUILD)/tests/stress, $(STRESS_FLOAT) = $(BUILD)/tests/stress_float; both
@@ -50,3 +51,24 @@ stress: $(STRESS) $(STRESS_FLOAT)
 	  timeout $(STRESS_TIMEOUT) $(STRESS_FLOAT) $(STRESS_ARGS); b=$$?; \
 	  if [ $$a -eq 124 ] || [ $$b -eq 124 ]; then echo "stress: HUNG (timeout $(STRESS_TIMEOUT) s)"; fi; \
 	  test $$a -eq 0 && test $$b -eq 0
+
+# `make stress-san`: the same cases with AddressSanitizer and UndefinedBehaviorSanitizer, both
+# backends, every source compiled in one command (not in make test: a minute of compiling). Any
+# report stops the run (-fno-sanitize-recover), so a pass means no UB and no bad access.
+STRESS_SAN       := $(BUILD)/tests/stress-san
+STRESS_SAN_FLOAT := $(BUILD)/tests/stress-san-float
+STRESS_SAN_SRCS   = $(STRESS_SRCS) $(FW_PURE_SRCS) $(FW_DRIVER_SRC) $(GPU_MODEL_SRC)
+STRESS_SAN_FLAGS := -std=c11 -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefined \
+                    -ffp-contract=off -Ibsp/host -Ibsp -Icontract -Ifirmware -Igpu_model -Icosim \
+                    -Itests/stress $(FW_MODEL_DEFS) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)
+
+$(STRESS_SAN) $(STRESS_SAN_FLOAT): $(STRESS_SAN_SRCS) $(FW_MODEL_HOST_OBJ) $(wildcard firmware/*/*.h \
+                                   firmware/scenes/*/*.h gpu_model/*.h tests/stress/*.h)
+	@mkdir -p $(@D)
+	$(HOST_CC) $(STRESS_SAN_FLAGS) $(if $(filter %-float,$@),-DFW_BACKEND_FLOAT=1) \
+	  $(STRESS_SAN_SRCS) $(FW_MODEL_HOST_OBJ) -o $@ -lm
+
+.PHONY: stress-san
+stress-san: $(STRESS_SAN) $(STRESS_SAN_FLOAT)
+	@timeout $(STRESS_TIMEOUT) $(STRESS_SAN) $(STRESS_ARGS) && \
+	  timeout $(STRESS_TIMEOUT) $(STRESS_SAN_FLOAT) $(STRESS_ARGS)
