@@ -663,7 +663,7 @@ static bool case_world_1024(char *out)
     return errors == 0u && no_overflow();
 }
 
-/* Beyond the rules, both counted, never silent: a mesh with a vertex at 20000 model units (past
+/* Beyond the rules, both counted, never silent: a mesh with a vertex at 9000 model units (past
  * the transform's +-8192: mesh_finish counts it, and the frame loop would stop before drawing
  * it), and an object placed at 30000 world units (past the +-1024 box: scene_add_object clamps
  * each coordinate and counts it), then drawn where it was clamped to. */
@@ -678,7 +678,7 @@ static bool case_world_beyond(char *out)
     uint32_t draw_count;
 
     tri_begin(&t);
-    tri_add(&t, v3(0, 0, 3), v3(20000, 0, 3), v3(0, 1, 3));
+    tri_add(&t, v3(0, 0, 3), v3(9000, 0, 3), v3(0, 1, 3));
     mesh_finish(&t.m);
     mesh_count = fx_overflow_count();
     fx_overflow_clear();
@@ -698,7 +698,7 @@ static bool case_world_beyond(char *out)
     pipeline_pass(&stress_scene_frame, &stress_scene, &opts, 0, NULL, NULL);
     gpu_frame(&stress_scene_frame, &r);
     draw_count = fx_overflow_count();
-    fig(out, "vertex at 20000 model units: %u overflow counted (mesh_finish); object at 30000 "
+    fig(out, "vertex at 9000 model units: %u overflow counted (mesh_finish); object at 30000 "
              "world units: %u counted and clamped (scene_add_object), then drawn: %u primitives, "
              "%u overflows, ERRORS 0x%x", (unsigned)mesh_count, (unsigned)pos_count,
         (unsigned)stress_scene_frame.prim_count, (unsigned)draw_count, (unsigned)r.errors);
