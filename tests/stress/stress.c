@@ -1056,6 +1056,8 @@ struct soak_run {
     uint32_t changed;      /* frames whose hash differs from the frame before */
 };
 
+/* Each frame's hash, per run, for the first 16384 frames (the order-sensitive hash_sum covers
+ * every frame of a longer run). */
 static uint64_t soak_hashes[2][16384];
 
 static void soak_one(const struct scene_desc *d, uint32_t frames, int run, struct soak_run *sr)
