@@ -31,6 +31,7 @@ include gpu_model/model.mk
 # The model converter (MESHCONV, meshconv, meshconv-sweep): before the firmware, which converts MODEL=.
 include tools/meshconv/meshconv.mk
 include firmware/firmware.mk
+include tests/stress/stress.mk
 # libFuzzer targets (FUZZ_BINS, fuzz-build) and `make fuzz`.
 include tests/fuzz/fuzz.mk
 

@@ -88,6 +88,13 @@ void mesh_add_quad(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint16_t 
     }
 }
 
+/* Every coordinate strictly within +-MESH_MODEL_LIMIT (mesh.h). */
+static bool mesh_in_model_range(vec3 p)
+{
+    return p.x > -MESH_MODEL_LIMIT && p.x < MESH_MODEL_LIMIT && p.y > -MESH_MODEL_LIMIT &&
+           p.y < MESH_MODEL_LIMIT && p.z > -MESH_MODEL_LIMIT && p.z < MESH_MODEL_LIMIT;
+}
+
 void mesh_finish(struct mesh *m)
 {
     vec3 lo;
@@ -111,6 +118,12 @@ void mesh_finish(struct mesh *m)
         hi.x = (p.x > hi.x) ? p.x : hi.x;
         hi.y = (p.y > hi.y) ? p.y : hi.y;
         hi.z = (p.z > hi.z) ? p.z : hi.z;
+    }
+    /* The transform's range argument (vec.h, xf_apply: 4 p_i must fit int32): a vertex outside
+     * +-8192 would wrap, silently, in every frame's vertex loop, which checks nothing. Counted
+     * once here instead, where the whole mesh is looked at anyway. */
+    if (!mesh_in_model_range(lo) || !mesh_in_model_range(hi)) {
+        fx_overflow_note();
     }
     m->center = vec3_make(real_half(real_add(lo.x, hi.x)), real_half(real_add(lo.y, hi.y)),
                           real_half(real_add(lo.z, hi.z)));

@@ -9,7 +9,8 @@
  * few distinct normals (voxel chunks: six) share them. The builder computes a face's normal from
  * its winding unless given one.
  *
- * Ranges: model coordinates within +-8192 (vec.h's transform), and the bounding sphere plus the
+ * Ranges: model coordinates within +-8192 (MESH_MODEL_LIMIT, vec.h's transform; mesh_finish counts
+ * a mesh beyond it as one fixed-point overflow, fx_overflow_note), and the bounding sphere plus the
  * object's position within the +-1024 world box (real.h).
  *
  * Storage is the caller's: a mesh points into arrays it was given, so the render path allocates
@@ -145,8 +146,12 @@ void mesh_add_face_normal(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, ui
 void mesh_add_quad(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint16_t d,
                    uint16_t normal, uint8_t material);
 
+/* Model coordinates stay strictly inside +-8192 (4 p_i fits int32 in xf_apply). */
+#define MESH_MODEL_LIMIT REAL_C(8192)
+
 /* Bounding sphere: centre of the vertices' box, radius to the farthest vertex; and whether the
- * vertices are that box's eight corners in the order mesh.box names. */
+ * vertices are that box's eight corners in the order mesh.box names. A vertex outside
+ * +-MESH_MODEL_LIMIT is counted (fx_overflow_note): the frame loop then reports it and stops. */
 void mesh_finish(struct mesh *m);
 
 /* The six faces of the unit cube [0, 1]^3, dir 0 = +x, 1 = -x, 2 = +y, 3 = -y, 4 = +z, 5 = -z:

@@ -75,7 +75,7 @@ static inline __attribute__((always_inline)) void sort_pass(const uint32_t *in, 
 
 void sort_items(uint32_t *item, uint32_t *tmp, uint32_t n, struct sort_scratch *scratch)
 {
-    uint32_t(*hist)[256] = scratch->hist;
+    uint32_t(*hist)[256];
     uint32_t *src = item;
     uint32_t *dst = tmp;
 
@@ -83,6 +83,9 @@ void sort_items(uint32_t *item, uint32_t *tmp, uint32_t n, struct sort_scratch *
         sort_insertion(item, n);
         return;
     }
+    /* Only now: a frame too small for the radix sort has no scratch (NULL), and even forming
+     * &scratch->hist from a null pointer is undefined behaviour. */
+    hist = scratch->hist;
     for (uint32_t d = 0; d < 256u; d += 2u) {
         hist[0][d] = 0;
         hist[0][d + 1u] = 0;

@@ -556,3 +556,26 @@ void test_render_capacity(void)
     render_sort(&frame);
     CHECK_EQ(frame.sorted_count, TEST_FRAME_PRIMS);
 }
+
+/* Model coordinates beyond +-8192 would wrap in xf_apply's unchecked vertex loop: mesh_finish
+ * counts such a mesh once (fx_overflow_note), so the breach is never silent (`make stress`'s
+ * "beyond the world rule" case found it silent); a mesh just inside the limit counts nothing. */
+void test_render_mesh_model_range(void)
+{
+    static struct tri_mesh t;
+
+    fx_overflow_clear();
+    tri_mesh_init(&t);
+    tri_mesh_add(&t, v3(-8191.5, 0, 3), v3(0, 8191.5, 3), v3(8191.5, 0, -8191.5), MAT_RED);
+    mesh_finish(&t.m);
+    CHECK_EQ(fx_overflow_count(), 0);
+    tri_mesh_init(&t);
+    tri_mesh_add(&t, v3(0, 0, 3), v3(0, 1, 3), v3(8192, 0, 3), MAT_RED);
+    mesh_finish(&t.m);
+    CHECK_EQ(fx_overflow_count(), 1);
+    tri_mesh_init(&t);
+    tri_mesh_add(&t, v3(0, 0, 3), v3(0, -20000, 3), v3(1, 0, 3), MAT_RED);
+    mesh_finish(&t.m);
+    CHECK_EQ(fx_overflow_count(), 2);
+    fx_overflow_clear();
+}

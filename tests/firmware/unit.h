@@ -81,9 +81,11 @@ void unit_srand(uint32_t seed);
     X(test_clip_random)               \
     X(test_sort_order_and_stability)  \
     X(test_sort_reverse_input)        \
+    X(test_sort_small_without_scratch) \
     X(test_palette_ramps)             \
     X(test_palette_light_levels)      \
     X(test_render_backface)           \
+    X(test_render_mesh_model_range)   \
     X(test_render_level_cache)        \
     X(test_render_frustum_culling)    \
     X(test_render_near_clipping)      \

@@ -1,0 +1,54 @@
+/*
+ * stress_bsp.c — bsp.h for the stress program: every GPU access goes to one golden model
+ * (gpu_model/), reset by bsp_init(); no console input; output to stdout.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "bsp.h"
+#include "stress_bsp.h"
+
+static gpu_model stress_model;
+
+gpu_model *stress_bsp_gpu(void)
+{
+    return &stress_model;
+}
+
+void bsp_init(void)
+{
+    gpu_model_reset(&stress_model);
+}
+
+void bsp_exit(int code)
+{
+    fflush(stdout);
+    exit(code);
+}
+
+int bsp_uart_getc_nonblock(void)
+{
+    return -1;
+}
+
+void bsp_uart_putc(char c)
+{
+    putchar(c);
+}
+
+void bsp_gpu_write(uint32_t offset, uint32_t value)
+{
+    gpu_model_write(&stress_model, offset, value);
+}
+
+uint32_t bsp_gpu_read(uint32_t offset)
+{
+    return gpu_model_read(&stress_model, offset);
+}
+
+void bsp_gpu_write_words(uint32_t offset, const uint32_t *src, uint32_t n)
+{
+    for (uint32_t i = 0; i < n; i++) {
+        gpu_model_write(&stress_model, offset + 4u * i, src[i]);
+    }
+}
