@@ -85,6 +85,7 @@ suite fw-unit                  1 "$BUILD/tests/fw_unit"
 suite fw-unit-float            1 "$BUILD/tests/fw_unit_float"
 suite fw-no-gpu                1 bash tests/firmware/no_gpu.sh
 suite fw-fit                   5 bash tests/firmware/fit.sh
+suite fw-stress                5 bash tests/stress/run.sh
 suite model-unit               2 "$BUILD/tests/model_unit"
 suite rtl-vs-model-seed1      20 "$GPUSIM" random --seed 1 --batches 40 --swap-percent 25
 suite rtl-vs-model-seed2      16 "$GPUSIM" random --seed 2 --batches 40 --tris 200 --swap-percent 25
