@@ -158,6 +158,14 @@ bench-error-run: $(FW_ERR_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(PNG_DIFF)
 	$(BENCH_ERROR_CHECK)
 	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --frames $(FW_ERR_FRAMES) $(FW_SCENES)
 
+# The exact reference of bench-error's camera paths (double precision, the pipeline's definitions
+# written anew: tools/exact_ref/exact_ref.c), and its self-test on known polygons.
+EXACT_REF := $(BUILD)/tools/exact_ref
+$(EXACT_REF): tools/exact_ref/exact_ref.c cosim/png_write.c cosim/png_write.h
+	@mkdir -p $(dir $@)
+	$(HOST_CC) $(HOST_CFLAGS) -Icosim $$(pkg-config --cflags libpng) tools/exact_ref/exact_ref.c \
+	  cosim/png_write.c -o $@ $$(pkg-config --libs libpng) -lm
+
 $(PNG_DIFF): tools/png_diff.c
 	@mkdir -p $(dir $@)
 	$(HOST_CC) $(HOST_CFLAGS) $$(pkg-config --cflags libpng) $< -o $@ $$(pkg-config --libs libpng)
