@@ -411,6 +411,10 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2,\
   $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/$(s)-$(v)-z)\
   $(eval FW_PATH_ELFS += $(FW_PATH_DIR)/$(s)-$(v)-z.elf)))
 
+# tests/bench/exact_ref.sh: the exact reference against tetra's path (tools/exact_ref's rule is the
+# top-level Makefile's).
+FW_TEST_DEPS += $(FW_PATH_DIR)/tetra-float-z $(BUILD)/tools/exact_ref
+
 # Memory per scene (`make fw-size`, tests/firmware/fit.sh): every scene's one-scene build (what a
 # chip runs: FW_SCENE_SET=one, and no line emulation: the chip's GPU has CAPS_LINES), and for
 # comparison the same with line emulation, without the wireframe, and the all-scene build of the
