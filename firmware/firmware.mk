@@ -393,7 +393,7 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2,\
 # bench-error's camera paths (tools/bench_error.py --path): the same variants with the seeded
 # path of app/cam_path.h (FW_CAMERA_PATH = FW_PATH_VIEWS views, one a frame), as host programs
 # (the frames, through the golden model, and the scene dumps for the exact reference) and as ELFs
-# (the costs, co-simulated): $(FW_PATH_DIR)/<scene>-<variant>[-z][.elf].
+# (the costs, co-simulated): $(FW_PATH_DIR)/host-<scene>-<variant>[-z] and <scene>-<variant>[-z].elf.
 FW_PATH_VIEWS := 52
 FW_PATH_SEED  := 1
 FW_PATH_DIR   := $(BUILD)/fw-path$(FW_PSUFFIX)
@@ -401,19 +401,19 @@ FW_PATH_DEFS  := -DFW_CAMERA_PATH=$(FW_PATH_VIEWS) -DFW_CAMERA_PATH_SEED=$(FW_PA
 FW_PATH_HOSTS :=
 FW_PATH_ELFS  :=
 $(foreach s,$(FW_SCENES),$(foreach v,fixed float,\
-  $(eval $(call FW_HOST_RULES,$(FW_PATH_DIR)/$(s)-$(v),$(s),$(v),$(FW_PATH_VIEWS),$(FW_PATH_DEFS)))\
+  $(eval $(call FW_HOST_RULES,$(FW_PATH_DIR)/host-$(s)-$(v),$(s),$(v),$(FW_PATH_VIEWS),$(FW_PATH_DEFS)))\
   $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v).elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS)))\
-  $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/$(s)-$(v))\
+  $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/host-$(s)-$(v))\
   $(eval FW_PATH_ELFS += $(FW_PATH_DIR)/$(s)-$(v).elf)))
 $(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2,\
-  $(eval $(call FW_HOST_RULES,$(FW_PATH_DIR)/$(s)-$(v)-z,$(s),$(v),$(FW_PATH_VIEWS),$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
+  $(eval $(call FW_HOST_RULES,$(FW_PATH_DIR)/host-$(s)-$(v)-z,$(s),$(v),$(FW_PATH_VIEWS),$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
   $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
-  $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/$(s)-$(v)-z)\
+  $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/host-$(s)-$(v)-z)\
   $(eval FW_PATH_ELFS += $(FW_PATH_DIR)/$(s)-$(v)-z.elf)))
 
 # tests/bench/exact_ref.sh: the exact reference against tetra's path (tools/exact_ref's rule is the
 # top-level Makefile's).
-FW_TEST_DEPS += $(FW_PATH_DIR)/tetra-float-z $(BUILD)/tools/exact_ref
+FW_TEST_DEPS += $(FW_PATH_DIR)/host-tetra-float-z $(BUILD)/tools/exact_ref
 
 # Memory per scene (`make fw-size`, tests/firmware/fit.sh): every scene's one-scene build (what a
 # chip runs: FW_SCENE_SET=one, and no line emulation: the chip's GPU has CAPS_LINES), and for

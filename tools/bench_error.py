@@ -263,7 +263,7 @@ PATH_DIR = "path"
 
 def path_host_cmd(build, scene, key, frames_dir, dump_dir=None):
     variant, sim, _ = CONFIGS[key]
-    cmd = [os.path.join(build, "fw-path", "%s-%s" % (scene, variant)), "--frames", frames_dir,
+    cmd = [os.path.join(build, "fw-path", "host-%s-%s" % (scene, variant)), "--frames", frames_dir,
            "--span-w", sim.rsplit("-w", 1)[1]]
     if sim.startswith("sim-z"):
         cmd.append("--zbuf")

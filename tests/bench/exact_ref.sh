@@ -16,7 +16,7 @@ work=$(fresh_dir exact-ref)
 "$BUILD/tools/exact_ref" --self-test || fail "exact_ref self-test"
 
 # 2.
-"$BUILD/fw-path/tetra-float-z" --zbuf --frames "$work/fw" --dump-scene "$work/scene" >"$work/host.log" \
+"$BUILD/fw-path/host-tetra-float-z" --zbuf --frames "$work/fw" --dump-scene "$work/scene" >"$work/host.log" \
     || fail "tetra path host run (see $work/host.log)"
 mkdir -p "$work/exact"
 "$BUILD/tools/exact_ref" --dir "$work/scene" "$work/exact" >/dev/null || fail "exact_ref --dir"
