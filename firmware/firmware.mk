@@ -51,6 +51,10 @@
 #   $(FW_ERR_ELFS)  `make bench-error`'s firmware under $(BUILD)/fw-error: FW_ERR_FRAMES frames of
 #                   every scene, fixed and float, and with the depth test on from the start
 #                   (FW_DEPTH_TEST=1) fixed, float and float with 2 and 0 sub-pixel bits
+#   $(FW_PATH_HOSTS) $(FW_PATH_ELFS)  `make bench-error`'s camera paths under $(BUILD)/fw-path:
+#                   the same variants (and fixed-nr0/-nr2, FW_RECIP_NEWTON_STEPS) with the seeded
+#                   path of app/cam_path.h, FW_PATH_VIEWS frames, as host programs host-<name>
+#                   and ELFs <name>.elf
 #   fw-size         the memory table of every scene's one-scene build (and the all-scene one):
 #                   text, data, bss, stack against the chip targets (firmware/tools/fw_size.sh)
 # Convenience targets: fw, fw-all (every scene, both backends), fw-host, fw-unit, fw-smoke,
@@ -213,6 +217,10 @@ FW_VARIANT_DEFS_fixed-chip := -DFW_WITH_LINE_EMULATION=0
 FW_BACKEND_DEFS_fixed-emul :=
 FW_VARIANT_DEFS_fixed-emul := -DFW_WITH_LINE_EMULATION=1
 FW_SP_VARIANTS += fixed-chip fixed-emul
+# fixed-nr0 / fixed-nr2: the fixed backend with 0 or 2 Newton steps in the projection's reciprocal
+# (FW_RECIP_NEWTON_STEPS, math/fixed.h; default 1): bench-error's camera paths.
+$(foreach n,0 2,$(eval FW_BACKEND_DEFS_fixed-nr$(n) :=)$(eval FW_VARIANT_DEFS_fixed-nr$(n) := -DFW_RECIP_NEWTON_STEPS=$(n)))
+FW_SP_VARIANTS += fixed-nr0 fixed-nr2
 # -ffp-contract=off: no fused multiply-adds, so the float backend rounds identically on the host
 # and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
 # -fno-tree-loop-distribute-patterns: GCC would turn the pipeline's clearing loops (the sort's
@@ -405,7 +413,7 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float,\
   $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v).elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS)))\
   $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/host-$(s)-$(v))\
   $(eval FW_PATH_ELFS += $(FW_PATH_DIR)/$(s)-$(v).elf)))
-$(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2,\
+$(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2 fixed-nr0 fixed-nr2,\
   $(eval $(call FW_HOST_RULES,$(FW_PATH_DIR)/host-$(s)-$(v)-z,$(s),$(v),$(FW_PATH_VIEWS),$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
   $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
   $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/host-$(s)-$(v)-z)\

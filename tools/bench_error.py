@@ -28,7 +28,16 @@ Costs, counted (never timed):
   GPU cycles/frame  the firmware's per-frame `gpu cycles` (PERF_BUSY_CYCLES of the RTL, summed
                     over the frame's batches)
 
+With --path VIEWS (`make bench-error-path`, and the second half of `make bench-error`): the same
+configurations plus the reciprocal's Newton steps (0 and 2 instead of fixed point's 1), on a seeded
+camera path of VIEWS views per scene, against the exact reference E (tools/exact_ref) instead of
+R: per configuration the mean, 95th percentile and worst view of the pixels differing from E, the
+Pareto front of error against cost and whether the default build lies on it, the plot in
+BUILD/bench-error/path/error-vs-cost.png and each configuration's worst view beside E's in
+BUILD/bench-error/path/worst/<scene>-<configuration>.png (see "camera paths" below).
+
     bench_error.py --build BUILD --frames N [--jobs J] [--no-run] SCENE...
+    bench_error.py --build BUILD --path VIEWS [--cost-views K] [--jobs J] [--no-run | --keep] SCENE...
     bench_error.py --check-metric PNG_DIFF WORKDIR     (the test: the metric on known images)
 """
 import argparse
@@ -259,10 +268,18 @@ def plot(results, scenes, path):
 #           instructions and GPU cycles per frame, as in the table above.
 
 PATH_DIR = "path"
+# The camera paths measure one knob more: the Newton steps of the fixed backend's reciprocal
+# (FW_RECIP_NEWTON_STEPS, math/fixed.h), whose rows change that knob of "fixed point" (fixed-z).
+PATH_CONFIGS = dict(CONFIGS)
+PATH_CONFIGS["nr0"] = ("fixed-nr0-z", "sim-z-w8", "0 Newton steps")
+PATH_CONFIGS["nr2"] = ("fixed-nr2-z", "sim-z-w8", "2 Newton steps")
+PATH_KNOBS = KNOBS[:-1] + [
+    ("reciprocal Newton steps", [("1 (fixed point)", "fixed"), ("0", "nr0"), ("2", "nr2")]),
+    KNOBS[-1]]
 
 
 def path_host_cmd(build, scene, key, frames_dir, dump_dir=None):
-    variant, sim, _ = CONFIGS[key]
+    variant, sim, _ = PATH_CONFIGS[key]
     cmd = [os.path.join(build, "fw-path", "host-%s-%s" % (scene, variant)), "--frames", frames_dir,
            "--span-w", sim.rsplit("-w", 1)[1]]
     if sim.startswith("sim-z"):
@@ -275,8 +292,10 @@ def path_host_cmd(build, scene, key, frames_dir, dump_dir=None):
 def path_run(build, scene, key, views, cost_views, rerun):
     """Frames of every view (host build), the exact reference's (key "ref" only) and the costs of
     the first cost_views views (co-simulation). Returns (frame dir, {view: (instr, cycles)})."""
-    variant, sim, _ = CONFIGS[key]
+    variant, sim, _ = PATH_CONFIGS[key]
     work = os.path.join(build, "bench-error", PATH_DIR, scene, key)
+    if rerun == "keep" and os.path.exists(os.path.join(work, "done")):
+        rerun = False
     if rerun:
         shutil.rmtree(work, ignore_errors=True)
         os.makedirs(work)
@@ -298,6 +317,7 @@ def path_run(build, scene, key, views, cost_views, rerun):
             with open(os.path.join(work, "cosim.out"), "w") as out:
                 if subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT).returncode != 0:
                     raise RuntimeError("%s %s: co-simulation failed, see %s/cosim.out" % (scene, key, work))
+        open(os.path.join(work, "done"), "w").close()
     counts = {}
     if cost_views > 0:
         counts = parse_log(work, cost_views, scene, key, variant)
@@ -315,7 +335,7 @@ def percentile(values, q):
 
 def path_measure(build, scenes, views, cost_views, jobs, rerun):
     tool = os.path.join(build, "tools", "png_diff")
-    todo = [(scene, key) for scene in scenes for key in CONFIGS]
+    todo = [(scene, key) for scene in scenes for key in PATH_CONFIGS]
     runs = {}
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
         futures = {pool.submit(path_run, build, scene, key, views, cost_views, rerun): (scene, key)
@@ -367,7 +387,7 @@ def path_worst_images(build, results, scenes):
     out_dir = os.path.join(build, "bench-error", PATH_DIR, "worst")
     os.makedirs(out_dir, exist_ok=True)
     for scene in scenes:
-        for key in CONFIGS:
+        for key in PATH_CONFIGS:
             r = results[(scene, key)]
             name = "%04d.png" % r["worst_view"]
             a = matplotlib.image.imread(os.path.join(r["exact"], name))[:, :, :3]
@@ -391,7 +411,7 @@ def path_aggregate(results, scenes, cost):
     """Per configuration: (cost relative to R's, geometric mean over the scenes; error, mean over
     the scenes of the mean pixels differing from E)."""
     agg = {}
-    for key in CONFIGS:
+    for key in PATH_CONFIGS:
         ratio = 1.0
         for s in scenes:
             ratio *= results[(s, key)][cost] / results[(s, "ref")][cost]
@@ -402,7 +422,7 @@ def path_aggregate(results, scenes, cost):
 def path_table(results, scenes, views, cost_views, mismatches):
     lines = ["| knob | setting | scene | pixels differing from E: mean | p95 | worst (view) | mean abs dRGB | fw instructions/frame | GPU cycles/frame |",
              "|---|---|---|---:|---:|---:|---:|---:|---:|"]
-    for knob, settings in KNOBS:
+    for knob, settings in PATH_KNOBS:
         for scene in scenes:
             for setting, key in settings:
                 r = results[(scene, key)]
@@ -421,7 +441,7 @@ def path_table(results, scenes, views, cost_views, mismatches):
         front = pareto(agg)
         lines.append("- Pareto front (%s relative to R's, geometric mean over the scenes; mean pixels "
                      "differing from E): %s; the default build %s" % (
-                         name, ", ".join("%s (%.2f, %.1f)" % (CONFIGS[k][2], agg[k][0], agg[k][1])
+                         name, ", ".join("%s (%.2f, %.1f)" % (PATH_CONFIGS[k][2], agg[k][0], agg[k][1])
                                          for k in sorted(front, key=lambda k: agg[k][0])),
                          "lies on it" if "default" in front else "does NOT lie on it"))
     return "\n".join(lines)
@@ -433,7 +453,7 @@ def path_summary(results, scenes):
         return fmt % lo if fmt % lo == fmt % hi else (fmt + " .. " + fmt) % (lo, hi)
     lines = ["| knob | setting | mean pixels differing from E | p95 | worst view | fw instructions / R's | GPU cycles / R's |",
              "|---|---|---:|---:|---:|---:|---:|"]
-    for knob, settings in KNOBS:
+    for knob, settings in PATH_KNOBS:
         for setting, key in settings:
             if key == "ref" and knob != "arithmetic":
                 continue
@@ -455,7 +475,7 @@ def path_plot(results, scenes, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     markers = {"ref": "*", "fixed": "s", "painter": "D", "sp2": "v", "sp0": "^",
-               "w1": "1", "w4": "2", "w16": "3", "default": "o"}
+               "w1": "1", "w4": "2", "w16": "3", "default": "o", "nr0": "<", "nr2": ">"}
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.6), sharey=True)
     for ax, cost, label in ((axes[0], "instr", "firmware instructions / frame, relative to R (QEMU -icount)"),
                             (axes[1], "cycles", "GPU cycles / frame, relative to R (Verilator)")):
@@ -463,11 +483,11 @@ def path_plot(results, scenes, path):
         front = sorted(pareto(agg), key=lambda k: agg[k][0])
         ax.plot([agg[k][0] for k in front], [agg[k][1] for k in front], "-", color="tab:red",
                 alpha=0.5, label="Pareto front")
-        for key in CONFIGS:
+        for key in PATH_CONFIGS:
             c, e = agg[key]
             ax.scatter(c, e, marker=markers[key], s=60 if key == "default" else 40,
                        color="tab:red" if key in front else "tab:blue")
-            ax.annotate(CONFIGS[key][2] + ("" if key != "default" else (" (on the front)" if key in front else " (off the front)")),
+            ax.annotate(PATH_CONFIGS[key][2] + ("" if key != "default" else (" (on the front)" if key in front else " (off the front)")),
                         (c, e), fontsize=7, xytext=(4, 3), textcoords="offset points")
         ax.set_xlabel(label, fontsize=8)
         ax.grid(True, alpha=0.3)
@@ -537,6 +557,7 @@ def main():
     ap.add_argument("--path", type=int, metavar="VIEWS",
                     help="camera paths of VIEWS views (the fw-path builds') against the exact reference")
     ap.add_argument("--cost-views", type=int, default=8, help="--path: views co-simulated for the costs")
+    ap.add_argument("--keep", action="store_true", help="--path: reuse the finished runs of the last one")
     ap.add_argument("scenes", nargs="*")
     a = ap.parse_args()
     if a.check_metric:
@@ -547,7 +568,8 @@ def main():
     if a.path:
         if not a.build or not a.scenes or not 1 <= a.cost_views <= a.path:
             ap.error("--path needs --build, scenes and 1 <= --cost-views <= VIEWS")
-        results, mismatches = path_measure(a.build, a.scenes, a.path, a.cost_views, a.jobs, not a.no_run)
+        results, mismatches = path_measure(a.build, a.scenes, a.path, a.cost_views, a.jobs,
+                                           "keep" if a.keep else not a.no_run)
         print(path_table(results, a.scenes, a.path, a.cost_views, mismatches))
         print()
         print(path_summary(results, a.scenes))
