@@ -53,7 +53,7 @@ include boards/ulx3s/board.mk
 include boards/digilent/board.mk
 
 .PHONY: all setup run run-built test test-quick test-list lint check-contract contract random-long raster \
-        bench-gpu bench-sim bench-error bench-error-run synth clean
+        bench-gpu bench-sim bench-error bench-error-run bench-error-path bench-error-path-run synth clean
 
 all: $(FW_ELF) $(GPUSIM)
 
@@ -158,6 +158,30 @@ bench-error:
 bench-error-run: $(FW_ERR_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(PNG_DIFF)
 	$(BENCH_ERROR_CHECK)
 	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --frames $(FW_ERR_FRAMES) $(FW_SCENES)
+	@$(MAKE) --no-print-directory bench-error-path-run
+
+# The camera paths against the exact reference (tools/bench_error.py --path): FW_PATH_VIEWS views
+# per scene of BENCH_PATH_SCENES, the costs co-simulated on the first BENCH_COST_VIEWS of them.
+# `make bench-error-path` runs only these (BENCH_PATH_SCENES="tetra cubes" for a reduced run).
+BENCH_PATH_SCENES ?= $(FW_SCENES)
+BENCH_COST_VIEWS  ?= 8
+bench-error-path:
+	$(BENCH_ERROR_CHECK)
+	@bash tools/setup.sh packages-plot.txt
+	@$(MAKE) --no-print-directory bench-error-path-run
+
+bench-error-path-run: $(FW_PATH_HOSTS) $(FW_PATH_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(PNG_DIFF) $(EXACT_REF)
+	$(BENCH_ERROR_CHECK)
+	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --path $(FW_PATH_VIEWS) \
+	  --cost-views $(BENCH_COST_VIEWS) $(BENCH_PATH_SCENES)
+
+# The exact reference of bench-error's camera paths (double precision, the pipeline's definitions
+# written anew: tools/exact_ref/exact_ref.c), and its self-test on known polygons.
+EXACT_REF := $(BUILD)/tools/exact_ref
+$(EXACT_REF): tools/exact_ref/exact_ref.c cosim/png_write.c cosim/png_write.h
+	@mkdir -p $(dir $@)
+	$(HOST_CC) $(HOST_CFLAGS) -Icosim $$(pkg-config --cflags libpng) tools/exact_ref/exact_ref.c \
+	  cosim/png_write.c -o $@ $$(pkg-config --libs libpng) -lm
 
 $(PNG_DIFF): tools/png_diff.c
 	@mkdir -p $(dir $@)

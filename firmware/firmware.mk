@@ -51,6 +51,10 @@
 #   $(FW_ERR_ELFS)  `make bench-error`'s firmware under $(BUILD)/fw-error: FW_ERR_FRAMES frames of
 #                   every scene, fixed and float, and with the depth test on from the start
 #                   (FW_DEPTH_TEST=1) fixed, float and float with 2 and 0 sub-pixel bits
+#   $(FW_PATH_HOSTS) $(FW_PATH_ELFS)  `make bench-error`'s camera paths under $(BUILD)/fw-path:
+#                   the same variants (and fixed-nr0/-nr2, FW_RECIP_NEWTON_STEPS) with the seeded
+#                   path of app/cam_path.h, FW_PATH_VIEWS frames, as host programs host-<name>
+#                   and ELFs <name>.elf
 #   fw-size         the memory table of every scene's one-scene build (and the all-scene one):
 #                   text, data, bss, stack against the chip targets (firmware/tools/fw_size.sh)
 # Convenience targets: fw, fw-all (every scene, both backends), fw-host, fw-unit, fw-smoke,
@@ -136,7 +140,7 @@ FW_PURE_SRCS := firmware/math/fixed.c firmware/math/vec.c firmware/camera/camera
 FW_DRIVER_SRC := firmware/gpu/gpu.c
 FW_APP_SRC    := firmware/app/app.c
 FW_MAIN_SRC   := firmware/app/main.c
-FW_HOST_SRCS  := bsp/host/bsp_host.c bsp/host/host_main.c
+FW_HOST_SRCS  := bsp/host/bsp_host.c bsp/host/host_main.c bsp/host/scene_dump.c
 # Other components in the host build come as their own libraries, built once by their own rules
 # (the golden model, gpu_model/model.mk; the PNG writer, the top-level Makefile).
 FW_HOST_LIBS  := $(COSIM_C_LIB) $(GPU_MODEL_LIB)
@@ -213,6 +217,10 @@ FW_VARIANT_DEFS_fixed-chip := -DFW_WITH_LINE_EMULATION=0
 FW_BACKEND_DEFS_fixed-emul :=
 FW_VARIANT_DEFS_fixed-emul := -DFW_WITH_LINE_EMULATION=1
 FW_SP_VARIANTS += fixed-chip fixed-emul
+# fixed-nr0 / fixed-nr2: the fixed backend with 0 or 2 Newton steps in the projection's reciprocal
+# (FW_RECIP_NEWTON_STEPS, math/fixed.h; default 1): bench-error's camera paths.
+$(foreach n,0 2,$(eval FW_BACKEND_DEFS_fixed-nr$(n) :=)$(eval FW_VARIANT_DEFS_fixed-nr$(n) := -DFW_RECIP_NEWTON_STEPS=$(n)))
+FW_SP_VARIANTS += fixed-nr0 fixed-nr2
 # -ffp-contract=off: no fused multiply-adds, so the float backend rounds identically on the host
 # and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
 # -fno-tree-loop-distribute-patterns: GCC would turn the pipeline's clearing loops (the sort's
@@ -301,16 +309,16 @@ FW_DEP_FILES += $(1:.elf=)/app.d
 endef
 
 # $(1) = host program path, $(2) = scene, $(3) = backend, $(4) = frames (the scene set is
-# FW_SCENE_SET's, as the ELFs')
+# FW_SCENE_SET's, as the ELFs'), $(5) = further -D settings of app.c (may be empty)
 define FW_HOST_RULES
 $(1).obj/app.o: $(FW_APP_SRC) $(1).obj/cflags.txt
 	@mkdir -p $$(@D)
-	$$(HOST_CC) $$(FW_HOST_CFLAGS_$(3)) -DFW_SCENE='"$(2)"' -DFW_FRAMES=$(4) \
+	$$(HOST_CC) $$(FW_HOST_CFLAGS_$(3)) -DFW_SCENE='"$(2)"' -DFW_FRAMES=$(4) $(5) \
 	  $(call fw_set_defs,$(FW_SCENE_SET),$(2)) \
 	  $(if $(call fw_model_obj,$(FW_SCENE_SET),$(2),1),-DFW_MODEL_SCENE_BUILT=1) -MMD -MP -c $$< -o $$@
 
 $(1).obj/cflags.txt: fw-force
-	$$(call fw_flags_file,$$@,$$(HOST_CC) $$(FW_HOST_CFLAGS_$(3)) $(2) $(4) $(FW_SCENE_SET))
+	$$(call fw_flags_file,$$@,$$(HOST_CC) $$(FW_HOST_CFLAGS_$(3)) $(2) $(4) $(5) $(FW_SCENE_SET))
 
 $(1): $$(FW_HOST_CORE_OBJS_$(3)) $(call fw_set_objs,$(FW_SCENE_SET),$(2),$$(HOST_OBJ_DIR_$(3))) \
       $(call fw_model_obj,$(FW_SCENE_SET),$(2),$(FW_MODEL_HOST_OBJ)) $(1).obj/app.o $(FW_HOST_LIBS)
@@ -389,6 +397,31 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float,\
 $(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2,\
   $(eval $(call FW_ELF_RULES,$(FW_ERR_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_ERR_FRAMES),,-DFW_DEPTH_TEST=1))\
   $(eval FW_ERR_ELFS += $(FW_ERR_DIR)/$(s)-$(v)-z.elf)))
+
+# bench-error's camera paths (tools/bench_error.py --path): the same variants with the seeded
+# path of app/cam_path.h (FW_CAMERA_PATH = FW_PATH_VIEWS views, one a frame), as host programs
+# (the frames, through the golden model, and the scene dumps for the exact reference) and as ELFs
+# (the costs, co-simulated): $(FW_PATH_DIR)/host-<scene>-<variant>[-z] and <scene>-<variant>[-z].elf.
+FW_PATH_VIEWS := 52
+FW_PATH_SEED  := 1
+FW_PATH_DIR   := $(BUILD)/fw-path$(FW_PSUFFIX)
+FW_PATH_DEFS  := -DFW_CAMERA_PATH=$(FW_PATH_VIEWS) -DFW_CAMERA_PATH_SEED=$(FW_PATH_SEED)u
+FW_PATH_HOSTS :=
+FW_PATH_ELFS  :=
+$(foreach s,$(FW_SCENES),$(foreach v,fixed float,\
+  $(eval $(call FW_HOST_RULES,$(FW_PATH_DIR)/host-$(s)-$(v),$(s),$(v),$(FW_PATH_VIEWS),$(FW_PATH_DEFS)))\
+  $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v).elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS)))\
+  $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/host-$(s)-$(v))\
+  $(eval FW_PATH_ELFS += $(FW_PATH_DIR)/$(s)-$(v).elf)))
+$(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2 fixed-nr0 fixed-nr2,\
+  $(eval $(call FW_HOST_RULES,$(FW_PATH_DIR)/host-$(s)-$(v)-z,$(s),$(v),$(FW_PATH_VIEWS),$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
+  $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
+  $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/host-$(s)-$(v)-z)\
+  $(eval FW_PATH_ELFS += $(FW_PATH_DIR)/$(s)-$(v)-z.elf)))
+
+# tests/bench/exact_ref.sh: the exact reference against tetra's path (tools/exact_ref's rule is the
+# top-level Makefile's).
+FW_TEST_DEPS += $(FW_PATH_DIR)/host-tetra-float-z $(BUILD)/tools/exact_ref
 
 # Memory per scene (`make fw-size`, tests/firmware/fit.sh): every scene's one-scene build (what a
 # chip runs: FW_SCENE_SET=one, and no line emulation: the chip's GPU has CAPS_LINES), and for

@@ -28,7 +28,16 @@ Costs, counted (never timed):
   GPU cycles/frame  the firmware's per-frame `gpu cycles` (PERF_BUSY_CYCLES of the RTL, summed
                     over the frame's batches)
 
+With --path VIEWS (`make bench-error-path`, and the second half of `make bench-error`): the same
+configurations plus the reciprocal's Newton steps (0 and 2 instead of fixed point's 1), on a seeded
+camera path of VIEWS views per scene, against the exact reference E (tools/exact_ref) instead of
+R: per configuration the mean, 95th percentile and worst view of the pixels differing from E, the
+Pareto front of error against cost and whether the default build lies on it, the plot in
+BUILD/bench-error/path/error-vs-cost.png and each configuration's worst view beside E's in
+BUILD/bench-error/path/worst/<scene>-<configuration>.png (see "camera paths" below).
+
     bench_error.py --build BUILD --frames N [--jobs J] [--no-run] SCENE...
+    bench_error.py --build BUILD --path VIEWS [--cost-views K] [--jobs J] [--no-run | --keep] SCENE...
     bench_error.py --check-metric PNG_DIFF WORKDIR     (the test: the metric on known images)
 """
 import argparse
@@ -244,6 +253,261 @@ def plot(results, scenes, path):
     fig.savefig(path, dpi=90)
 
 
+# ---- camera paths against the exact reference (--path) -------------------------------------------
+#
+# Every configuration above, on FW_PATH_VIEWS seeded views per scene (firmware/app/cam_path.h:
+# orbit, fly-through, close-ups at the near plane, grazing angles), against the exact reference E
+# (tools/exact_ref: double precision, exact coverage at pixel centres, per-pixel depth). Where the
+# numbers come from, the cheapest honest split:
+#   frames  the host build through the golden model (bsp/host; bit-exact with the RTL by test, and
+#           here checked again on the co-simulated views), every view of the path;
+#   scene   the float-z host build's --dump-scene of every view (world-space triangles, camera,
+#           light, palette: scene data only), rendered by exact_ref;
+#   costs   co-simulation of the same path firmware (QEMU -icount + the Verilator GPU on the pins)
+#           for the first COST_VIEWS views (all four kinds of view when a multiple of 4): fw
+#           instructions and GPU cycles per frame, as in the table above.
+
+PATH_DIR = "path"
+# The camera paths measure one knob more: the Newton steps of the fixed backend's reciprocal
+# (FW_RECIP_NEWTON_STEPS, math/fixed.h), whose rows change that knob of "fixed point" (fixed-z).
+PATH_CONFIGS = dict(CONFIGS)
+PATH_CONFIGS["nr0"] = ("fixed-nr0-z", "sim-z-w8", "0 Newton steps")
+PATH_CONFIGS["nr2"] = ("fixed-nr2-z", "sim-z-w8", "2 Newton steps")
+PATH_KNOBS = KNOBS[:-1] + [
+    ("reciprocal Newton steps", [("1 (fixed point)", "fixed"), ("0", "nr0"), ("2", "nr2")]),
+    KNOBS[-1]]
+
+
+def path_host_cmd(build, scene, key, frames_dir, dump_dir=None):
+    variant, sim, _ = PATH_CONFIGS[key]
+    cmd = [os.path.join(build, "fw-path", "host-%s-%s" % (scene, variant)), "--frames", frames_dir,
+           "--span-w", sim.rsplit("-w", 1)[1]]
+    if sim.startswith("sim-z"):
+        cmd.append("--zbuf")
+    if dump_dir:
+        cmd += ["--dump-scene", dump_dir]
+    return cmd
+
+
+def path_run(build, scene, key, views, cost_views, rerun):
+    """Frames of every view (host build), the exact reference's (key "ref" only) and the costs of
+    the first cost_views views (co-simulation). Returns (frame dir, {view: (instr, cycles)})."""
+    variant, sim, _ = PATH_CONFIGS[key]
+    work = os.path.join(build, "bench-error", PATH_DIR, scene, key)
+    if rerun == "keep" and os.path.exists(os.path.join(work, "done")):
+        rerun = False
+    if rerun:
+        shutil.rmtree(work, ignore_errors=True)
+        os.makedirs(work)
+        dump = os.path.join(work, "scene") if key == "ref" else None
+        with open(os.path.join(work, "host.out"), "w") as out:
+            if subprocess.run(path_host_cmd(build, scene, key, os.path.join(work, "frames"), dump),
+                              stdout=out, stderr=subprocess.STDOUT).returncode != 0:
+                raise RuntimeError("%s %s: host run failed, see %s/host.out" % (scene, key, work))
+        if dump:
+            os.makedirs(os.path.join(work, "exact"))
+            subprocess.run([os.path.join(build, "tools", "exact_ref"), "--dir", dump,
+                            os.path.join(work, "exact")], check=True, stdout=subprocess.DEVNULL)
+        if cost_views > 0:
+            cmd = [os.path.join(build, sim, "gpusim"), "cosim",
+                   "--fw", os.path.join(build, "fw-path", "%s-%s.elf" % (scene, variant)),
+                   "--frames", os.path.join(work, "cosim-frames"),
+                   "--uart-log", os.path.join(work, "uart.log"), "--no-model-check",
+                   "--stop-after-frames", str(cost_views)]
+            with open(os.path.join(work, "cosim.out"), "w") as out:
+                if subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT).returncode != 0:
+                    raise RuntimeError("%s %s: co-simulation failed, see %s/cosim.out" % (scene, key, work))
+        open(os.path.join(work, "done"), "w").close()
+    counts = {}
+    if cost_views > 0:
+        # The run may log a frame past the last one captured (the firmware runs ahead of the
+        # overlapped scan-out): the first cost_views are kept.
+        with open(os.path.join(work, "uart.log")) as log:
+            for line in log:
+                m = FRAME_RE.match(line)
+                if m and int(m.group(1)) < cost_views:
+                    counts[int(m.group(1))] = (int(m.group(2)), int(m.group(3)))
+        if sorted(counts) != list(range(cost_views)):
+            raise RuntimeError("%s %s: expected frames 0..%d in %s/uart.log" % (scene, key, cost_views - 1, work))
+    return work, counts
+
+
+def percentile(values, q):
+    """The q-th percentile (0..100), linear between the closest ranks."""
+    v = sorted(values)
+    pos = (len(v) - 1) * q / 100.0
+    lo = int(pos)
+    hi = min(lo + 1, len(v) - 1)
+    return v[lo] + (v[hi] - v[lo]) * (pos - lo)
+
+
+def path_measure(build, scenes, views, cost_views, jobs, rerun):
+    tool = os.path.join(build, "tools", "png_diff")
+    todo = [(scene, key) for scene in scenes for key in PATH_CONFIGS]
+    runs = {}
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = {pool.submit(path_run, build, scene, key, views, cost_views, rerun): (scene, key)
+                   for scene, key in todo}
+        done = 0
+        for fut in concurrent.futures.as_completed(futures):
+            scene, key = futures[fut]
+            try:
+                runs[(scene, key)] = fut.result()
+            except Exception:
+                pool.shutdown(wait=True, cancel_futures=True)
+                raise
+            done += 1
+            print("bench-error --path: [%2d/%d] %-9s %-8s" % (done, len(todo), scene, key),
+                  file=sys.stderr, flush=True)
+    results = {}
+    mismatches = []
+    for scene, key in todo:
+        work, counts = runs[(scene, key)]
+        exact = os.path.join(runs[(scene, "ref")][0], "exact")
+        diff = [png_diff(tool, os.path.join(exact, "%04d.png" % f),
+                         os.path.join(work, "frames", "%04d.png" % f)) for f in range(views)]
+        for f in range(cost_views):  # the host frames are the co-simulated ones
+            d, _ = png_diff(tool, os.path.join(work, "cosim-frames", "%04d.png" % f),
+                            os.path.join(work, "frames", "%04d.png" % f))
+            if d:
+                mismatches.append("%s %s view %d: %d pixels" % (scene, key, f, d))
+        px = [d for d, _ in diff]
+        worst = max(range(views), key=lambda f: (px[f], f))
+        results[(scene, key)] = {
+            "differing": sum(px) / views,
+            "p95": percentile(px, 95),
+            "worst": px[worst],
+            "worst_view": worst,
+            "mae": sum(s for _, s in diff) / (views * FB_PIXELS * 3),
+            "instr": sum(c[0] for c in counts.values()) / max(1, len(counts)),
+            "cycles": sum(c[1] for c in counts.values()) / max(1, len(counts)),
+            "work": work,
+            "exact": exact,
+        }
+    return results, mismatches
+
+
+def path_worst_images(build, results, scenes):
+    """build/bench-error/path/worst/<scene>-<key>.png: exact reference | configuration, the
+    configuration's worst view, side by side (a 16-pixel grey gap)."""
+    import matplotlib.image
+    import numpy
+    out_dir = os.path.join(build, "bench-error", PATH_DIR, "worst")
+    os.makedirs(out_dir, exist_ok=True)
+    for scene in scenes:
+        for key in PATH_CONFIGS:
+            r = results[(scene, key)]
+            name = "%04d.png" % r["worst_view"]
+            a = matplotlib.image.imread(os.path.join(r["exact"], name))[:, :, :3]
+            b = matplotlib.image.imread(os.path.join(r["work"], "frames", name))[:, :, :3]
+            gap = numpy.full((a.shape[0], 16, 3), 0.5, dtype=a.dtype)
+            matplotlib.image.imsave(os.path.join(out_dir, "%s-%s.png" % (scene, key)),
+                                    numpy.concatenate([a, gap, b], axis=1))
+    return out_dir
+
+
+def pareto(points):
+    """Keys of the (cost, error) points no other point dominates (<= in both, < in one)."""
+    front = []
+    for k, (c, e) in points.items():
+        if not any((c2 <= c and e2 <= e) and (c2 < c or e2 < e) for k2, (c2, e2) in points.items() if k2 != k):
+            front.append(k)
+    return front
+
+
+def path_aggregate(results, scenes, cost):
+    """Per configuration: (cost relative to R's, geometric mean over the scenes; error, mean over
+    the scenes of the mean pixels differing from E)."""
+    agg = {}
+    for key in PATH_CONFIGS:
+        ratio = 1.0
+        for s in scenes:
+            ratio *= results[(s, key)][cost] / results[(s, "ref")][cost]
+        agg[key] = (ratio ** (1.0 / len(scenes)), sum(results[(s, key)]["differing"] for s in scenes) / len(scenes))
+    return agg
+
+
+def path_table(results, scenes, views, cost_views, mismatches):
+    lines = ["| knob | setting | scene | pixels differing from E: mean | p95 | worst (view) | mean abs dRGB | fw instructions/frame | GPU cycles/frame |",
+             "|---|---|---|---:|---:|---:|---:|---:|---:|"]
+    for knob, settings in PATH_KNOBS:
+        for scene in scenes:
+            for setting, key in settings:
+                r = results[(scene, key)]
+                lines.append("| %s | %s | %s | %.1f (%.2f%%) | %.0f | %d (%d) | %.4f | %d | %d |" % (
+                    knob, setting, scene, r["differing"], 100.0 * r["differing"] / FB_PIXELS, r["p95"],
+                    r["worst"], r["worst_view"], r["mae"], round(r["instr"]), round(r["cycles"])))
+    lines.append("")
+    lines.append("E = the exact reference (tools/exact_ref). Errors over the %d views of each scene's "
+                 "camera path (firmware/app/cam_path.h, seed FW_PATH_SEED), frames from the host build "
+                 "through the golden model; costs means over the first %d views, co-simulated (QEMU "
+                 "-icount, Verilator cycles)." % (views, cost_views))
+    lines.append("- host frames against the co-simulated ones on those views: %s" % (
+        "identical" if not mismatches else "DIFFER: " + "; ".join(mismatches[:5])))
+    for cost, name in (("instr", "fw instructions"), ("cycles", "GPU cycles")):
+        agg = path_aggregate(results, scenes, cost)
+        front = pareto(agg)
+        lines.append("- Pareto front (%s relative to R's, geometric mean over the scenes; mean pixels "
+                     "differing from E): %s; the default build %s" % (
+                         name, ", ".join("%s (%.2f, %.1f)" % (PATH_CONFIGS[k][2], agg[k][0], agg[k][1])
+                                         for k in sorted(front, key=lambda k: agg[k][0])),
+                         "lies on it" if "default" in front else "does NOT lie on it"))
+    return "\n".join(lines)
+
+
+def path_summary(results, scenes):
+    def span(values, fmt):
+        lo, hi = min(values), max(values)
+        return fmt % lo if fmt % lo == fmt % hi else (fmt + " .. " + fmt) % (lo, hi)
+    lines = ["| knob | setting | mean pixels differing from E | p95 | worst view | fw instructions / R's | GPU cycles / R's |",
+             "|---|---|---:|---:|---:|---:|---:|"]
+    for knob, settings in PATH_KNOBS:
+        for setting, key in settings:
+            if key == "ref" and knob != "arithmetic":
+                continue
+            rs = [results[(sc, key)] for sc in scenes]
+            refs = [results[(sc, "ref")] for sc in scenes]
+            lines.append("| %s | %s | %s | %s | %s | %s | %s |" % (
+                knob if key != "ref" else "reference R", setting if key != "ref" else "float, depth buffer, 4 bits, SPAN_W 8",
+                span([r["differing"] for r in rs], "%.1f"), span([r["p95"] for r in rs], "%.0f"),
+                span([r["worst"] for r in rs], "%d"),
+                span([r["instr"] / q["instr"] for r, q in zip(rs, refs)], "%.2f"),
+                span([r["cycles"] / q["cycles"] for r, q in zip(rs, refs)], "%.2f")))
+    lines.append("")
+    lines.append("Ranges over the scenes (%s)." % ", ".join(scenes))
+    return "\n".join(lines)
+
+
+def path_plot(results, scenes, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    markers = {"ref": "*", "fixed": "s", "painter": "D", "sp2": "v", "sp0": "^",
+               "w1": "1", "w4": "2", "w16": "3", "default": "o", "nr0": "<", "nr2": ">"}
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6), sharey=True)
+    for ax, cost, label in ((axes[0], "instr", "firmware instructions / frame, relative to R (QEMU -icount)"),
+                            (axes[1], "cycles", "GPU cycles / frame, relative to R (Verilator)")):
+        agg = path_aggregate(results, scenes, cost)
+        front = sorted(pareto(agg), key=lambda k: agg[k][0])
+        ax.plot([agg[k][0] for k in front], [agg[k][1] for k in front], "-", color="tab:red",
+                alpha=0.5, label="Pareto front")
+        for key in PATH_CONFIGS:
+            c, e = agg[key]
+            ax.scatter(c, e, marker=markers[key], s=60 if key == "default" else 40,
+                       color="tab:red" if key in front else "tab:blue")
+            ax.annotate(PATH_CONFIGS[key][2] + ("" if key != "default" else (" (on the front)" if key in front else " (off the front)")),
+                        (c, e), fontsize=7, xytext=(4, 3), textcoords="offset points")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel(label, fontsize=8)
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].set_ylabel("mean framebuffer pixels differing from E / view")
+    fig.suptitle("Camera paths: error against the exact reference E vs counted cost, mean over %s "
+                 "(red: Pareto front)" % ", ".join(scenes), fontsize=9)
+    fig.tight_layout(rect=(0, 0, 1, 0.94))
+    fig.savefig(path, dpi=90)
+
+
 # ---- the test: the metric on images with a known difference ------------------------------------
 
 def write_png(path, width, height, rgb):
@@ -300,6 +564,10 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--no-run", action="store_true", help="tabulate and plot the last run again")
     ap.add_argument("--check-metric", nargs=2, metavar=("PNG_DIFF", "WORKDIR"))
+    ap.add_argument("--path", type=int, metavar="VIEWS",
+                    help="camera paths of VIEWS views (the fw-path builds') against the exact reference")
+    ap.add_argument("--cost-views", type=int, default=8, help="--path: views co-simulated for the costs")
+    ap.add_argument("--keep", action="store_true", help="--path: reuse the finished runs of the last one")
     ap.add_argument("scenes", nargs="*")
     a = ap.parse_args()
     if a.check_metric:
@@ -307,6 +575,19 @@ def main():
         print("metric: 0 for identical images, the known sum for 2 changed pixels, sizes checked"
               if ok else "metric: FAILED")
         return 0 if ok else 1
+    if a.path:
+        if not a.build or not a.scenes or not 1 <= a.cost_views <= a.path:
+            ap.error("--path needs --build, scenes and 1 <= --cost-views <= VIEWS")
+        results, mismatches = path_measure(a.build, a.scenes, a.path, a.cost_views, a.jobs,
+                                           "keep" if a.keep else not a.no_run)
+        print(path_table(results, a.scenes, a.path, a.cost_views, mismatches))
+        print()
+        print(path_summary(results, a.scenes))
+        plot_path = os.path.join(a.build, "bench-error", PATH_DIR, "error-vs-cost.png")
+        path_plot(results, a.scenes, plot_path)
+        print("\nPlot: %s\nWorst views (exact | configuration): %s/<scene>-<configuration>.png"
+              % (plot_path, path_worst_images(a.build, results, a.scenes)))
+        return 1 if mismatches else 0
     if not a.build or not a.scenes or a.frames < 1:
         ap.error("--build, --frames and at least one scene are needed")
     results = measure(a.build, a.frames, a.scenes, a.jobs, not a.no_run)

@@ -24,6 +24,11 @@ void bsp_host_configure(const struct bsp_host_config *cfg)
     host_cfg = *cfg;
 }
 
+const char *bsp_host_dump_dir(void)
+{
+    return host_cfg.dump_dir;
+}
+
 void bsp_init(void)
 {
     gpu_model_config mc;

@@ -22,9 +22,12 @@ struct bsp_host_config {
     unsigned span_w;         /* model build options (CAPS), as gpu_model_config */
     bool lines;
     bool zbuf;
+    const char *dump_dir;    /* the scene of every frame for tools/exact_ref, NULL: none */
 };
 
 /* Set before app_run(); bsp_init() applies it. */
 void bsp_host_configure(const struct bsp_host_config *cfg);
+/* --dump-scene's directory, or NULL (scene_dump.c). */
+const char *bsp_host_dump_dir(void);
 
 #endif /* BSP_HOST_H */

@@ -11,6 +11,8 @@
  *     co-simulation run with the same key script render the same frames.
  *   - bsp_instret() and bsp_cycles() have nothing to count and return 0.
  *   - the GPU's buffers are not memory (BSP_GPU_BUFFERS_MAPPED 0): batches are staged.
+ *   - with --dump-scene DIR, every frame's scene is written as DIR/NNNN.scene for the exact
+ *     reference (bsp_host_scene_dump, scene_dump.c; tools/exact_ref/exact_ref.c reads it).
  *
  * bsp/host/host_main.c parses the options and calls app_run().
  */
@@ -47,5 +49,11 @@ static inline uint32_t *bsp_gpu_buffer(uint32_t offset)
     (void)offset;
     return 0;
 }
+
+/* The frame's scene after its update, as tools/exact_ref reads it: app.c calls it once per frame
+ * (a no-op without --dump-scene). */
+#define BSP_HOST_SCENE_DUMP 1
+struct scene;
+void bsp_host_scene_dump(const struct scene *s, const uint16_t *palette, unsigned frame);
 
 #endif /* BSP_PLATFORM_H */

@@ -3,6 +3,7 @@
  * rendering through the golden model.
  *
  *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--span-w N] [--model FILE]
+ *           [--dump-scene DIR]
  *
  *   --frames DIR      write each swapped frame as DIR/NNNN.png (as gpusim cosim does)
  *   --keys-at N:TEXT  type TEXT just before doorbell N (1 = first) is serviced, byte for byte
@@ -10,6 +11,9 @@
  *   --no-lines        model a GPU built without line primitives (CAPS_LINES = 0)
  *   --zbuf            model a GPU built with the depth buffer (CAPS_ZBUF = 1)
  *   --span-w N        SPAN_W the model reports (1, 4, 8, 16; default 8)
+ *   --dump-scene DIR  write each frame's scene after its update as DIR/NNNN.scene: world-space
+ *                     triangles with their normals and materials, light, camera, palette (the
+ *                     exact reference's input, tools/exact_ref; format in bsp/host/scene_dump.c)
  *   --model FILE      the model scene draws this mesh file (docs/mesh-format.md) instead of the
  *                     built-in one, as if it had been uploaded before the first frame: the
  *                     reference renders of the upload test, and a quick look at a converted model
@@ -45,7 +49,7 @@ static int host_load_model(const char *path)
 static int host_usage(void)
 {
     fprintf(stderr, "usage: fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] "
-                    "[--span-w N] [--model FILE]\n");
+                    "[--span-w N] [--model FILE] [--dump-scene DIR]\n");
     return 2;
 }
 
@@ -86,6 +90,16 @@ int main(int argc, char **argv)
             cfg.lines = false;
         } else if (strcmp(a, "--zbuf") == 0) {
             cfg.zbuf = true;
+        } else if (strcmp(a, "--dump-scene") == 0 && has_value) {
+            cfg.dump_dir = argv[++i];
+            if (mkdir(cfg.dump_dir, 0755) != 0) {
+                struct stat st;
+
+                if (stat(cfg.dump_dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+                    fprintf(stderr, "fw-host: cannot create %s\n", cfg.dump_dir);
+                    return 2;
+                }
+            }
         } else if (strcmp(a, "--model") == 0 && has_value) {
             if (host_load_model(argv[++i]) != 0) {
                 return 2;

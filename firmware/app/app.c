@@ -50,6 +50,7 @@
 #include "render/render.h"
 #include "scenes/scene.h"
 #include "app/pipeline.h"
+#include "app/cam_path.h"
 /* This program's scenes (FW_BUILT_SCENES, from firmware.mk: every scene, or only FW_SCENE) and
  * their memory, sized for the largest of them: app.c is the one file of the program that says. */
 #include "scenes/scene_set.h"
@@ -580,6 +581,9 @@ int app_run(void)
     }
     app->lost_in_a_row = 0;
     app_start_scene(app, desc);
+#if FW_CAMERA_PATH
+    cam_path_start(&app->scene);
+#endif
     app_report_lines(app);
     app_print_keys(&app->scene);
     app_print_scene(app);
@@ -623,7 +627,21 @@ int app_run(void)
             break;
         }
         scene_update(&app->scene, &keys, &ev);
+#if FW_CAMERA_PATH
+        {
+            /* The measurement's camera (cam_path.h) is not the firmware's work: not counted. */
+            const uint64_t p0 = bsp_instret();
+            const uint64_t q0 = bsp_cycles();
+
+            cam_path_apply(&app->scene, frame);
+            tot.wait_instr += bsp_instret() - p0;
+            tot.wait_cycles += bsp_cycles() - q0;
+        }
+#endif
         tot.t_update = bsp_instret() - t_start;
+#if BSP_HOST_SCENE_DUMP
+        bsp_host_scene_dump(&app->scene, app->palette, frame);  /* host build, --dump-scene */
+#endif
 
         render_stats_clear(&tot.render);
         passes = (FW_WITH_ANAGLYPH && app->anaglyph) ? 2 : 1;

@@ -198,14 +198,36 @@ static inline uint32_t fx_normalize32(uint32_t x, int32_t *shift)
 #define FX_RECIP_SEED_ENTRIES 1024u
 extern const uint16_t fx_recip_seed[FX_RECIP_SEED_ENTRIES];
 
+/* FW_RECIP_NEWTON_STEPS, an accuracy knob of `make bench-error` (default 1, the build above): 0
+ * returns the seed itself (relative error 2^-11: the projection's offsets then within
+ * 0.56 + 1536 * 16 * 2^-11 = 12.6 Q12.4 units, 0.8 px, of the exact ones; Y = seed << 16 <=
+ * 65504 * 2^16 < 2^32 and proj.h's Q < 2^31 hold for any Y < 2^32), 2 takes a second step
+ * (Y within a few units of 2^63 / m; each step keeps the iterate below 1/mu's 2^32 as argued
+ * above, y (2 - mu y) <= 1/mu for every y). */
+#ifndef FW_RECIP_NEWTON_STEPS
+#define FW_RECIP_NEWTON_STEPS 1
+#endif
+#if FW_RECIP_NEWTON_STEPS < 0 || FW_RECIP_NEWTON_STEPS > 2
+#error "FW_RECIP_NEWTON_STEPS must be 0, 1 or 2"
+#endif
+
 static inline uint32_t fx_recip_mantissa(uint32_t m)
 {
     /* Y = 1/mu in Q1.31; the seed holds 1/mu in Q1.15. */
+#if FW_RECIP_NEWTON_STEPS == 1
     const uint32_t y = (uint32_t)fx_recip_seed[(m >> 21) & (FX_RECIP_SEED_ENTRIES - 1u)] << 16;
     const uint32_t p = fx_mulhu(m, y);  /* mu * y in Q1.31, close to 2^31 */
     const uint32_t d = 0u - p;          /* 2 - mu * y in Q1.31: 2^32 - p, p in (0, 2^32) */
 
     return fx_mulhu(y, d) << 1;         /* y * (2 - mu * y) */
+#else
+    uint32_t y = (uint32_t)fx_recip_seed[(m >> 21) & (FX_RECIP_SEED_ENTRIES - 1u)] << 16;
+
+    for (int i = 0; i < FW_RECIP_NEWTON_STEPS; i++) {
+        y = fx_mulhu(y, 0u - fx_mulhu(m, y)) << 1;  /* the step above */
+    }
+    return y;
+#endif
 }
 
 /* floor(sqrt(v)), bit by bit (32 iterations). Build-time and per-frame use only. */
