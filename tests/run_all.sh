@@ -139,6 +139,7 @@ suite boards-ulx3s-dvi         30 bash tests/boards/ulx3s_dvi.sh
 suite boards-lint               12 make --no-print-directory lint-board
 suite boards-ulx3s-tools        1 bash tests/boards/ulx3s_tools.sh
 suite bench-error-machinery    1 bash tests/bench/error_machinery.sh
+suite bench-exact-ref          3 bash tests/bench/exact_ref.sh
 set +f
 
 [ "$list_only" -eq 1 ] && exit 0
