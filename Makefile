@@ -10,6 +10,8 @@ HOST_CC     ?= gcc
 HOST_CFLAGS ?= -std=c11 -O2 -g -Wall -Wextra -Werror
 PYTHON      ?= python3
 VERILATOR   ?= verilator
+# SCENE=x on the command line of run, bitstream ...: the scene's manifest build; FULL=1: the full one.
+include tools/manifest.mk
 
 SPAN_W      ?= 8
 ZBUF        ?= 0
@@ -228,6 +230,13 @@ $(BUILD)/sim-z-w%/gpusim: $(SIM_DEPS)
 
 $(BUILD)/sim-fast-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$*,gpu_core,-DGPUSIM_FAST_DISPLAY=1)
+
+# A scene manifest's GPU (tools/manifest.mk): sim-cfg-<tag>, sim-fast-cfg-<tag>, e.g. w8-v32-t32.
+$(BUILD)/sim-cfg-%/gpusim: $(SIM_DEPS)
+	$(call verilate,$@,$(call manifest_gflags,$*))
+
+$(BUILD)/sim-fast-cfg-%/gpusim: $(SIM_DEPS)
+	$(call verilate,$@,$(call manifest_gflags,$*),gpu_core,-DGPUSIM_FAST_DISPLAY=1)
 
 # `make waves` and its trace builds (sim-trace-w<SPAN_W>: $(2) with --trace-fst), apart from these.
 include cosim/waves.mk
