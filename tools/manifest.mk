@@ -89,3 +89,11 @@ LEAN_SCENES ?= $(patsubst firmware/scenes/%.manifest.toml,%,$(wildcard firmware/
 lean-report:
 	@bash tools/setup.sh
 	$(PYTHON) tools/lean_report.py --build $(BUILD) --make $(MAKE) $(if $(JOBS),--jobs $(JOBS)) $(LEAN_SCENES)
+
+# make test's manifest build (tests/manifest/manifest.sh): cubes as its manifest says, the test
+# builds' FW_TEST_FRAMES frames, under $(BUILD)/lean-test (apart from `make run SCENE=cubes`'s).
+# The cubes manifest's GPU is the default one, so it runs on make test's GPUSIM.
+MANIFEST_TEST_ELF := $(BUILD)/lean-test/cubes/firmware/cubes.elf
+$(MANIFEST_TEST_ELF): fw-force
+	+@$(MAKE) --no-print-directory SCENE=cubes FRAMES=$(FW_TEST_FRAMES) LEAN_ROOT=$(BUILD)/lean-test fw
+test-quick: $(MANIFEST_TEST_ELF)
