@@ -79,11 +79,11 @@ run-built: run-soc
 else ifneq ($(WINDOW),)
 run-built: $(FW_ELF) $(GPUSIM_FAST)
 	@mkdir -p $(OUT)
-	$(GPUSIM_FAST) cosim --fw $(FW_ELF) --window --uart-log $(OUT)/uart.log $(if $(UART_PTY),--uart-pty $(UART_PTY))
+	$(GPUSIM_FAST) cosim --fw $(FW_ELF) --window $(MANIFEST_RUN_FLAGS)--uart-log $(OUT)/uart.log $(if $(UART_PTY),--uart-pty $(UART_PTY))
 else
 run-built: $(FW_ELF) $(GPUSIM)
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
-	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log \
+	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames $(MANIFEST_RUN_FLAGS)--uart-log $(OUT)/uart.log \
 	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
 endif
 

@@ -78,7 +78,7 @@ soc-fw:
 # With a display (the Makefile's WINDOW), the frames go to a window instead of $(OUT)/frames.
 run-soc: $(SOCSIM) soc-fw
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
-	$(SOCSIM) --fw $(SOC_FW_ELF) $(if $(WINDOW),--window,--frames $(OUT)/frames) --uart-log $(OUT)/uart.log \
+	$(SOCSIM) --fw $(SOC_FW_ELF) $(if $(WINDOW),--window,--frames $(OUT)/frames) $(MANIFEST_RUN_FLAGS)--uart-log $(OUT)/uart.log \
 	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
 
 # What tests/soc/*.sh need: socsim and the soc test programs (tests/soc/tests.mk); the suites
