@@ -46,7 +46,7 @@ MANIFEST_SIM_NAME := $(if $(MANIFEST_GPU_TAG),cfg-w$(SPAN_W)-$(MANIFEST_GPU_TAG)
 override FW_DIR        = $(LEAN_DIR)/firmware$(FW_PSUFFIX)
 override SOC_FW_DIR   := $(LEAN_DIR)/firmware-soc
 override ULX3S_FW_ELF  = $(LEAN_DIR)/board-fw/$(SCENE)-$(SOC_RAM_KIB)k.elf
-override ULX3S_DIR     = $(LEAN_DIR)/board-ulx3s/$(ULX3S_NAME)
+override ULX3S_DIR     = $(LEAN_DIR)/board-ulx3s/$(ULX3S_NAME)$(if $(MANIFEST_GPU_TAG),-$(MANIFEST_GPU_TAG))
 # The GPU: the co-simulators, socsim (its -G flags after -GSPAN_W) and the board's --param list.
 override GPUSIM       := $(BUILD)/sim-$(MANIFEST_SIM_NAME)/gpusim
 override GPUSIM_FAST  := $(BUILD)/sim-fast-$(MANIFEST_SIM_NAME)/gpusim
@@ -98,7 +98,10 @@ lean-report:
 # make test's manifest build (tests/manifest/manifest.sh): cubes as its manifest says, the test
 # builds' FW_TEST_FRAMES frames, under $(BUILD)/lean-test (apart from `make run SCENE=cubes`'s).
 # The cubes manifest's GPU is the default one, so it runs on make test's GPUSIM.
+# (Inside that make, a manifest build, firmware.mk's own rule makes the ELF.)
 MANIFEST_TEST_ELF := $(BUILD)/lean-test/cubes/firmware/cubes.elf
+ifeq ($(LEAN_SCENE),)
 $(MANIFEST_TEST_ELF): fw-force
-	+@$(MAKE) --no-print-directory SCENE=cubes FRAMES=$(FW_TEST_FRAMES) LEAN_ROOT=$(BUILD)/lean-test fw
+	+@$(MAKE) --no-print-directory SCENE=cubes FULL= FRAMES=$(FW_TEST_FRAMES) LEAN_ROOT=$(BUILD)/lean-test fw
 test-quick: $(MANIFEST_TEST_ELF)
+endif

@@ -27,10 +27,11 @@ printf '%s\nshadows = true\n' "$good" | refused "unknown key 'memory.shadows'"
 sed 's/^lines = true /lines = 1 /' <<<"$good" | refused "'features.lines' must be bool"
 sed '/^lighting = /d' <<<"$good" | refused "missing key 'features.lighting'"
 sed 's/^span_w = 8 /span_w = 3 /' <<<"$good" | refused "gpu.span_w = 3"
-sed 's/^vtx_cap = 32 /vtx_cap = 16 /' <<<"$good" | refused "gpu.vtx_cap = 16 is smaller than scene tetra's verts column \(32"
-sed 's/^tri_cap = 32/tri_cap = 48/' <<<"$good" | refused "gpu.tri_cap = 48: a power of two"
-# Emulated lines (lines = false with the wireframe) reserve the wireframe columns: 140 > 32.
-sed 's/^lines = true /lines = false /' <<<"$good" | refused "gpu.vtx_cap = 32 is smaller than scene tetra's wverts column \(140"
+sed 's/^vtx_cap = 1024 /vtx_cap = 16 /' <<<"$good" | refused "gpu.vtx_cap = 16 is smaller than scene tetra's verts column \\(32"
+sed 's/^tri_cap = 512 /tri_cap = 48 /' <<<"$good" | refused "gpu.tri_cap = 48: a power of two"
+# Emulated lines (lines = false with the wireframe) reserve the wireframe columns: 140 > 64.
+sed 's/^lines = true /lines = false /; s/^vtx_cap = 1024 /vtx_cap = 64 /' <<<"$good" |
+    refused "gpu.vtx_cap = 64 is smaller than scene tetra's wverts column \\(140"
 sed 's/^ram_kib = 64 /ram_kib = 60 /' <<<"$good" | refused "memory.ram_kib = 60: a multiple of 8"
 sed 's/^scene = "tetra"/scene = "teapot"/' <<<"$good" | refused "scene 'teapot' is not"
 
