@@ -21,6 +21,7 @@ them (--full-synth-each synthesizes each). Logs and frames: BUILD/lean-report/.
 """
 import argparse
 import glob
+import hashlib
 import json
 import os
 import subprocess
@@ -108,7 +109,9 @@ def main():
         make(args, ["soc-fw"], dict(v, FRAMES=args.frames), os.path.join(logdir, f"socfw-{name}.log"))
         run_elf = show(args, dict(v, FRAMES=args.frames))["SOC_FW_ELF"]
         info[name]["RUN_ELF"] = os.path.join(logdir, f"{name}.elf")
-        subprocess.run(["cp", run_elf, info[name]["RUN_ELF"]], check=True)  # soc-fw's path is per scene, not per FRAMES
+        # soc-fw's path is per scene, not per FRAMES: a copy (socsim loads the ELF's .hex beside it).
+        subprocess.run(["cp", run_elf, info[name]["RUN_ELF"]], check=True)
+        subprocess.run(["cp", run_elf + ".hex", info[name]["RUN_ELF"] + ".hex"], check=True)
 
     def synth(build):
         s, kind, v = build
@@ -134,9 +137,23 @@ def main():
     for s, kind, v in builds:
         name = f"{s}-{kind}"
         out = os.path.join(logdir, name)
-        subprocess.run(["rm", "-rf", out], check=True)
-        print(f"lean_report: {name}: socsim, {args.frames} frames ...", flush=True)
-        fw = run_socsim(info[name]["SOCSIM"], info[name]["RUN_ELF"], info[name].get("RUN_FLAGS", ""), out)
+        # Cached while the program (its bytes) and the simulator are the same.
+        key = {"elf": hashlib.sha256(open(info[name]["RUN_ELF"] + ".hex", "rb").read()).hexdigest(),
+               "socsim": os.path.getmtime(info[name]["SOCSIM"]), "flags": info[name].get("RUN_FLAGS", "")}
+        cache = os.path.join(out, "perf.json")
+        fw = None
+        if os.path.exists(cache):
+            with open(cache) as f:
+                c = json.load(f)
+            if c["key"] == key:
+                fw = {int(k): v for k, v in c["fw"].items()}
+                print(f"lean_report: {name}: socsim cached ({cache})", flush=True)
+        if fw is None:
+            subprocess.run(["rm", "-rf", out], check=True)
+            print(f"lean_report: {name}: socsim, {args.frames} frames ...", flush=True)
+            fw = run_socsim(info[name]["SOCSIM"], info[name]["RUN_ELF"], info[name].get("RUN_FLAGS", ""), out)
+            with open(cache, "w") as f:
+                json.dump({"key": key, "fw": fw}, f)
         later = [fw[k] for k in sorted(fw) if k >= 1]
         perf[name] = [sum(x[i] for x in later) / len(later) for i in range(3)]  # instr, gpu cycles, cpu cycles
         frames[name] = sorted(glob.glob(os.path.join(out, "frames", "*.png")))
