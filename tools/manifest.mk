@@ -90,10 +90,12 @@ manifest-check:
 
 # Full against lean per scene (LEAN_SCENES, default every scene with a manifest): ECP5 synthesis
 # JOBS at a time, firmware sizes, socsim's instructions and cycles per frame, frames compared.
-LEAN_SCENES ?= $(patsubst firmware/scenes/%.manifest.toml,%,$(wildcard firmware/scenes/*.manifest.toml))
+LEAN_SCENES ?= $(filter $(patsubst firmware/scenes/%.manifest.toml,%,$(wildcard firmware/scenes/*.manifest.toml)),$(FW_SCENES))
+# (The make it calls through a variable of its own: a recipe naming $$(MAKE) would run under -n.)
+LEAN_REPORT_MAKE := $(MAKE)
 lean-report:
 	@bash tools/setup.sh
-	$(PYTHON) tools/lean_report.py --build $(BUILD) --make $(MAKE) $(if $(JOBS),--jobs $(JOBS)) $(LEAN_SCENES)
+	$(PYTHON) tools/lean_report.py --build $(BUILD) --make $(LEAN_REPORT_MAKE) $(if $(JOBS),--jobs $(JOBS)) $(LEAN_SCENES)
 
 # make test's manifest build (tests/manifest/manifest.sh): cubes as its manifest says, the test
 # builds' FW_TEST_FRAMES frames, under $(BUILD)/lean-test (apart from `make run SCENE=cubes`'s).
