@@ -10,6 +10,8 @@ HOST_CC     ?= gcc
 HOST_CFLAGS ?= -std=c11 -O2 -g -Wall -Wextra -Werror
 PYTHON      ?= python3
 VERILATOR   ?= verilator
+# SCENE=x on the command line of run, bitstream ...: the scene's manifest build; FULL=1: the full one.
+include tools/manifest.mk
 
 SPAN_W      ?= 8
 ZBUF        ?= 0
@@ -77,11 +79,11 @@ run-built: run-soc
 else ifneq ($(WINDOW),)
 run-built: $(FW_ELF) $(GPUSIM_FAST)
 	@mkdir -p $(OUT)
-	$(GPUSIM_FAST) cosim --fw $(FW_ELF) --window --uart-log $(OUT)/uart.log $(if $(UART_PTY),--uart-pty $(UART_PTY))
+	$(GPUSIM_FAST) cosim --fw $(FW_ELF) --window $(MANIFEST_RUN_FLAGS)--uart-log $(OUT)/uart.log $(if $(UART_PTY),--uart-pty $(UART_PTY))
 else
 run-built: $(FW_ELF) $(GPUSIM)
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
-	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log \
+	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames $(MANIFEST_RUN_FLAGS)--uart-log $(OUT)/uart.log \
 	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
 endif
 
@@ -252,6 +254,13 @@ $(BUILD)/sim-z-w%/gpusim: $(SIM_DEPS)
 
 $(BUILD)/sim-fast-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$*,gpu_core,-DGPUSIM_FAST_DISPLAY=1)
+
+# A scene manifest's GPU (tools/manifest.mk): sim-cfg-<tag>, sim-fast-cfg-<tag>, e.g. w8-v32-t32.
+$(BUILD)/sim-cfg-%/gpusim: $(SIM_DEPS)
+	$(call verilate,$@,$(call manifest_gflags,$*))
+
+$(BUILD)/sim-fast-cfg-%/gpusim: $(SIM_DEPS)
+	$(call verilate,$@,$(call manifest_gflags,$*),gpu_core,-DGPUSIM_FAST_DISPLAY=1)
 
 # `make waves` and its trace builds (sim-trace-w<SPAN_W>: $(2) with --trace-fst), apart from these.
 include cosim/waves.mk

@@ -29,6 +29,8 @@ module soc_top #(
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
+    parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,   // a scene's manifest may size the buffers to it
+    parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,
     localparam integer PIX_HZ = 25000000,      // VGA 640x480@60 pixel rate
     localparam integer PIX_DIV = PIX_CLK_HZ / PIX_HZ,
     localparam integer RAM_AW = $clog2(RAM_BYTES / 4),
@@ -246,6 +248,8 @@ module soc_top #(
         .SPAN_W       (SPAN_W),
         .ENABLE_LINES (ENABLE_LINES),
         .ENABLE_ZBUF  (ENABLE_ZBUF),
+        .VTX_CAP      (VTX_CAP),
+        .TRI_CAP      (TRI_CAP),
         .PIX_DIV      (PIX_DIV)
     ) u_gpu (
         .clk         (clk),

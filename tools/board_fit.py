@@ -31,7 +31,8 @@ SCENES = ["tetra", "cubes", "landscape", "voxel", "knot"]
 
 
 def make(args, targets, variables, log):
-    cmd = [args.make, "--no-print-directory"] + targets + [f"{k}={v}" for k, v in variables.items()]
+    # FULL=1: these builds are board_fit's own (a scene's manifest build would be another).
+    cmd = [args.make, "--no-print-directory", "FULL=1"] + targets + [f"{k}={v}" for k, v in variables.items()]
     with open(log, "w") as out:
         status = subprocess.call(cmd, stdout=out, stderr=subprocess.STDOUT)
     with open(log) as f:
@@ -81,7 +82,7 @@ def main():
         print(f"board_fit: {name}: {target} SCENE={scene} SOC_RAM_KIB={ram} ZBUF={zbuf} ...", flush=True)
         start = time.monotonic()
         status, _ = make(args, [target], variables, os.path.join(logdir, f"{name}.log"))
-        out = subprocess.run([args.make, "-s", "--no-print-directory", "ulx3s-dir"] + [f"{k}={v}" for k, v in variables.items()],
+        out = subprocess.run([args.make, "-s", "--no-print-directory", "FULL=1", "ulx3s-dir"] + [f"{k}={v}" for k, v in variables.items()],
                              check=True, capture_output=True, text=True).stdout.strip()
         res_path = os.path.join(out, "resources.json")
         if not os.path.exists(res_path):

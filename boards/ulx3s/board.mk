@@ -27,7 +27,7 @@ ULX3S_FLOW   = $(PYTHON) synth/ecp5_bitstream.py --top ulx3s_top --lpf boards/ul
   --device 85k --package CABGA381 --speed 6 --seed $(SEED) --out $(ULX3S_DIR) \
   --files $(RTL_FILES) --extra $(SOC_CPU_V_REL) --files $(SOC_FILES) --files boards/ulx3s/files.f \
   --files boards/ulx3s/files_top.f --param SYS_MHZ=$(SYS_MHZ) --param RAM_BYTES=$(SOC_RAM_BYTES) \
-  --param RAM_INIT=$(ULX3S_FW_ELF).hex --param SPAN_W=$(SPAN_W) --param ENABLE_ZBUF=$(ZBUF)
+  --param RAM_INIT=$(ULX3S_FW_ELF).hex --param SPAN_W=$(SPAN_W) --param ENABLE_ZBUF=$(ZBUF) $(ULX3S_GPU_PARAMS)
 # YoWASP's tools see the working directory only: the core's path relative to it (in .venv/).
 SOC_CPU_V_REL = $(patsubst $(CURDIR)/%,%,$(SOC_CPU_V))
 

@@ -20,7 +20,9 @@ module ulx3s_system #(
     parameter RAM_INIT = "",                                       // the firmware image (soc_top)
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,        // the GPU's build options
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
-    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
+    parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,              // buffer capacities (a scene's manifest)
+    parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP
 ) (
     // clocks (ulx3s_pll)
     input  wire       clk_sys,
@@ -54,7 +56,9 @@ module ulx3s_system #(
         .PIX_CLK_HZ   (25000000),
         .SPAN_W       (SPAN_W),
         .ENABLE_LINES (ENABLE_LINES),
-        .ENABLE_ZBUF  (ENABLE_ZBUF)
+        .ENABLE_ZBUF  (ENABLE_ZBUF),
+        .VTX_CAP      (VTX_CAP),
+        .TRI_CAP      (TRI_CAP)
     ) u_soc (
         .clk               (clk_sys),
         .clk_pix           (clk_pix),

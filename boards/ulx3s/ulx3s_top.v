@@ -15,7 +15,9 @@ module ulx3s_top #(
     parameter RAM_INIT = "",                                       // the firmware's RAM image
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
-    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
+    parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,  // buffer capacities (a scene's manifest)
+    parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP
 ) (
     input  wire       clk_25mhz,      // G2
     // FT231X USB serial
@@ -47,7 +49,9 @@ module ulx3s_top #(
         .RAM_INIT     (RAM_INIT),
         .SPAN_W       (SPAN_W),
         .ENABLE_LINES (ENABLE_LINES),
-        .ENABLE_ZBUF  (ENABLE_ZBUF)
+        .ENABLE_ZBUF  (ENABLE_ZBUF),
+        .VTX_CAP      (VTX_CAP),
+        .TRI_CAP      (TRI_CAP)
     ) u_system (
         .clk_sys    (clk_sys),
         .clk_pix    (clk_pix),

@@ -42,7 +42,7 @@ export DISPLAY=":$(cat "$work/display")"
 
 # make run as on a desktop: a display, neither CI nor HEADLESS; FRAMES=0 (until Q) is its default.
 # In a process group of its own (setsid), which the clean-up stops whole if the test fails.
-env -u CI -u HEADLESS -u FRAMES setsid make --no-print-directory run SCENE=voxel BUILD="$BUILD" OUT="$work/out" \
+env -u CI -u HEADLESS -u FRAMES setsid make --no-print-directory run SCENE=voxel FULL=1 BUILD="$BUILD" OUT="$work/out" \
     </dev/null >"$work/run.out" 2>&1 &
 run_pid=$!
 

@@ -1,0 +1,109 @@
+# tools/manifest.mk — scene manifests: `make run SCENE=x`, `make run PLATFORM=soc SCENE=x` and
+# `make bitstream SCENE=x` build what firmware/scenes/x.manifest.toml says the scene needs (the
+# firmware's switches, the GPU's parameters and the RAM from that one file, tools/manifest.py);
+# FULL=1 builds the default, every feature, as before. Included by the top-level Makefile before
+# every other fragment (the manifest's values must be in place when they read SPAN_W, FW_DEFS ...).
+#
+# A manifest build happens where all of these hold:
+#   - SCENE is given on the command line (the default scene without it is the full build),
+#   - FULL is not 1,
+#   - the scene has a manifest (the model scene, MODEL=..., has none: its capacity is MODEL's),
+#   - a goal is one of MANIFEST_GOALS: what runs or builds one scene (make test, fw-size, bench-*,
+#     board-fit, fw-all ... keep their own builds whatever SCENE says).
+# The decision is exported as LEAN_SCENE, so that the recursive makes (run -> run-built, soc-fw,
+# board-fw) build the same. Its outputs have their own folders, so nothing make test uses is
+# rebuilt differently: firmware under $(LEAN_ROOT)/<scene>/ (firmware/, firmware-soc/, board-fw/,
+# board-ulx3s/); simulators per parameter set: the default ones where the manifest's GPU is the
+# default (SPAN_W aside), else $(BUILD)/sim-cfg-w<N>-<tag>/, sim-fast-cfg-w<N>-<tag>/ and
+# socsim-<RAM>k-w<N>-<tag>/ (tag: z1 depth buffer, l0 no lines, v<N> t<N> capacities), shared by
+# every scene with that set.
+#
+#   manifest-show [SCENE=x] [FULL=1]   what such a build uses: its ELFs, simulators, RTL parameters
+#   manifest-check                      every manifest valid (tools/manifest.py --check)
+#   lean-report                         full against lean per scene (tools/lean_report.py)
+FULL       ?=
+LEAN_ROOT  ?= $(BUILD)/lean
+MANIFEST_GOALS := run run-built run-soc soc-fw fw bitstream synth-board board-fw flash load \
+                  ulx3s-dir socsim manifest-show
+
+ifeq ($(origin LEAN_SCENE),undefined)
+ifneq ($(and $(filter command line,$(origin SCENE)),$(if $(filter 1,$(FULL)),,1),\
+             $(wildcard firmware/scenes/$(SCENE).manifest.toml),$(filter $(MANIFEST_GOALS),$(MAKECMDGOALS))),)
+LEAN_SCENE := $(SCENE)
+endif
+endif
+
+ifneq ($(LEAN_SCENE),)
+export LEAN_SCENE
+ifneq ($(LEAN_SCENE),$(SCENE))
+$(error manifest build of $(LEAN_SCENE), but SCENE=$(SCENE))
+endif
+MANIFEST_MK := $(BUILD)/manifest/$(LEAN_SCENE).mk
+include $(MANIFEST_MK)
+LEAN_DIR    := $(LEAN_ROOT)/$(LEAN_SCENE)
+MANIFEST_SIM_NAME := $(if $(MANIFEST_GPU_TAG),cfg-w$(SPAN_W)-$(MANIFEST_GPU_TAG),w$(SPAN_W))
+# Firmware: firmware.mk's FW_DIR (QEMU and soc platforms), socsim.mk's run-soc ELF, board.mk's.
+override FW_DIR        = $(LEAN_DIR)/firmware$(FW_PSUFFIX)
+override SOC_FW_DIR   := $(LEAN_DIR)/firmware-soc
+override ULX3S_FW_ELF  = $(LEAN_DIR)/board-fw/$(SCENE)-$(SOC_RAM_KIB)k.elf
+override ULX3S_DIR     = $(LEAN_DIR)/board-ulx3s/$(ULX3S_NAME)$(if $(MANIFEST_GPU_TAG),-$(MANIFEST_GPU_TAG))
+# The GPU: the co-simulators, socsim (its -G flags after -GSPAN_W) and the board's --param list.
+override GPUSIM       := $(BUILD)/sim-$(MANIFEST_SIM_NAME)/gpusim
+override GPUSIM_FAST  := $(BUILD)/sim-fast-$(MANIFEST_SIM_NAME)/gpusim
+override SOCSIM_DIR   := $(BUILD)/socsim-$(SOC_RAM_KIB)k$(if $(MANIFEST_GPU_TAG),-w$(SPAN_W)-$(MANIFEST_GPU_TAG),$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W)))
+SOCSIM_GPU_GFLAGS     := $(if $(MANIFEST_GPU_GFLAGS), $(MANIFEST_GPU_GFLAGS))$(if $(filter 1,$(ZBUF)), -GENABLE_ZBUF=1)
+ULX3S_GPU_PARAMS      := $(patsubst -G%,--param %,$(MANIFEST_GPU_GFLAGS))
+# The golden model has the contract's capacities (gpu_model.h): a GPU with others reads VTX_CAP and
+# TRI_CAP differently, so its runs go without the model check (lean-report compares its frames with
+# the full build's instead). Trailing space: the recipes' text is unchanged when empty.
+MANIFEST_RUN_FLAGS    := $(if $(filter v% t%,$(subst -, ,$(MANIFEST_GPU_TAG))),--no-model-check )
+endif
+
+# The fragment: regenerated when the manifest, the generator or the scene table change (make then
+# reads it again before building anything).
+$(BUILD)/manifest/%.mk: firmware/scenes/%.manifest.toml tools/manifest.py firmware/scenes/scene_list.h \
+                        contract/gpu_contract.toml contract/soc_map.h
+	@$(PYTHON) tools/manifest.py $* --out $@
+
+# $(BUILD)/sim-cfg-<tag>/gpusim and sim-fast-cfg-<tag>/gpusim: the tag's words as -G parameters
+# (w SPAN_W, l ENABLE_LINES, z ENABLE_ZBUF, v VTX_CAP, t TRI_CAP); the rules are the Makefile's.
+manifest_gflags = $(foreach p,$(subst -, ,$(1)),$(patsubst t%,-GTRI_CAP=%,$(patsubst v%,-GVTX_CAP=%,\
+  $(patsubst z%,-GENABLE_ZBUF=%,$(patsubst l%,-GENABLE_LINES=%,$(patsubst w%,-GSPAN_W=%,$(p)))))))
+
+.PHONY: manifest-show manifest-check lean-report
+manifest-show:
+	@echo "scene=$(SCENE) manifest=$(if $(LEAN_SCENE),firmware/scenes/$(SCENE).manifest.toml,none (full build))"
+	@echo "FW_ELF=$(FW_ELF)"
+	@echo "SOC_FW_ELF=$(SOC_FW_ELF)"
+	@echo "GPUSIM=$(GPUSIM)"
+	@echo "GPUSIM_FAST=$(GPUSIM_FAST)"
+	@echo "SOCSIM=$(SOCSIM)"
+	@echo "ULX3S_DIR=$(ULX3S_DIR)"
+	@echo "ULX3S_FW_ELF=$(ULX3S_FW_ELF)"
+	@echo "SOC_RAM_KIB=$(SOC_RAM_KIB)"
+	@echo "RUN_FLAGS=$(MANIFEST_RUN_FLAGS)"
+	@echo "FW_DEFS=$(FW_DEFS) FW_SCENE_SET=$(FW_SCENE_SET) FW_LINE_EMULATION=$(FW_LINE_EMULATION)"
+	@echo "GPU=-GSPAN_W=$(SPAN_W) -GENABLE_ZBUF=$(ZBUF) $(MANIFEST_GPU_GFLAGS)"
+
+manifest-check:
+	@$(PYTHON) tools/manifest.py --check
+
+# Full against lean per scene (LEAN_SCENES, default every scene with a manifest): ECP5 synthesis
+# JOBS at a time, firmware sizes, socsim's instructions and cycles per frame, frames compared.
+LEAN_SCENES ?= $(filter $(patsubst firmware/scenes/%.manifest.toml,%,$(wildcard firmware/scenes/*.manifest.toml)),$(FW_SCENES))
+# (The make it calls through a variable of its own: a recipe naming $$(MAKE) would run under -n.)
+LEAN_REPORT_MAKE := $(MAKE)
+lean-report:
+	@bash tools/setup.sh
+	$(PYTHON) tools/lean_report.py --build $(BUILD) --make $(LEAN_REPORT_MAKE) $(if $(JOBS),--jobs $(JOBS)) $(LEAN_SCENES)
+
+# make test's manifest build (tests/manifest/manifest.sh): cubes as its manifest says, the test
+# builds' FW_TEST_FRAMES frames, under $(BUILD)/lean-test (apart from `make run SCENE=cubes`'s).
+# The cubes manifest's GPU is the default one, so it runs on make test's GPUSIM.
+# (Inside that make, a manifest build, firmware.mk's own rule makes the ELF.)
+MANIFEST_TEST_ELF := $(BUILD)/lean-test/cubes/firmware/cubes.elf
+ifeq ($(LEAN_SCENE),)
+$(MANIFEST_TEST_ELF): fw-force
+	+@$(MAKE) --no-print-directory SCENE=cubes FULL= FRAMES=$(FW_TEST_FRAMES) LEAN_ROOT=$(BUILD)/lean-test fw
+test-quick: $(MANIFEST_TEST_ELF)
+endif

@@ -1,0 +1,204 @@
+#!/usr/bin/env python3
+"""manifest.py — a scene's manifest (firmware/scenes/<scene>.manifest.toml) as a make fragment.
+
+usage: manifest.py SCENE [--out FILE]     write the fragment (stdout without --out)
+       manifest.py --check [SCENE ...]    validate (every scene of the table without names)
+       manifest.py --file PATH [--out F]  a manifest at another path (the tests' bad manifests)
+
+A manifest names what its scene needs; everything else is left out of the build. Its keys, all
+required (a missing, unknown or out-of-range one is refused with the file and the key):
+  scene                  the scene's name, as in firmware/scenes/scene_list.h
+  [features] lines       GPU line primitives (ENABLE_LINES); without them the wireframe is
+                         emulated with triangles (FW_WITH_LINE_EMULATION) and the frame reserves
+                         the table's wverts/wprims columns
+             depth       the depth buffer (ENABLE_ZBUF) and the firmware's depth test (FW_WITH_DEPTH)
+             lighting    flat light per face (FW_WITH_LIGHTING)
+             anaglyph    the G key's red/cyan stereo (FW_WITH_ANAGLYPH)
+             wireframe   the F key's outline mode (FW_WITH_WIREFRAME)
+  [gpu]      span_w      pixels per clock, 1 4 8 16 (SPAN_W)
+             vtx_cap     vertex buffer, a power of two 4..1024 (VTX_CAP): at least the scene's
+                         frame vertices (verts, or wverts with emulated lines) or the contract's
+                         1024 where a frame needs more (the driver then splits it into batches)
+             tri_cap     index buffer, a power of two 4..512 (TRI_CAP), likewise for prims/wprims
+  [memory]   ram_kib     the SoC's RAM (SOC_RAM_KIB), a multiple of 8 (four byte lanes of 2 KiB
+                         EBR) up to the RAM window; its truth is the link: bsp/soc/postlink.py
+                         refuses an image, bss and stack that do not fit
+
+The fragment sets, with `override` (a manifest build is what the file says, whatever else the
+command line asks): FW_SCENE_SET=one, FW_LINE_EMULATION, FW_DEFS (the FW_WITH_* switches),
+SPAN_W, ZBUF, SOC_RAM_KIB, and MANIFEST_GPU_GFLAGS / MANIFEST_GPU_TAG (the GPU's parameters
+beyond SPAN_W and ENABLE_ZBUF, as Verilator -G flags and as a directory name; both empty when
+they are the defaults, so such a scene shares the default simulators).
+"""
+import argparse
+import os
+import re
+import sys
+import tomllib
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+SCENE_TABLE = os.path.join(ROOT, "firmware/scenes/scene_list.h")
+CONTRACT = os.path.join(ROOT, "contract/gpu_contract.toml")
+SOC_MAP = os.path.join(ROOT, "contract/soc_map.h")
+
+SCHEMA = {
+    "scene": str,
+    "features": {"lines": bool, "depth": bool, "lighting": bool, "anaglyph": bool, "wireframe": bool},
+    "gpu": {"span_w": int, "vtx_cap": int, "tri_cap": int},
+    "memory": {"ram_kib": int},
+}
+
+
+class ManifestError(Exception):
+    pass
+
+
+def manifest_path(scene):
+    return os.path.join(ROOT, "firmware/scenes", f"{scene}.manifest.toml")
+
+
+def scene_table():
+    """{name: {verts, prims, wverts, wprims}} of the table's numeric lines (model's are macros)."""
+    rows = {}
+    line = re.compile(r"^SCENE\((\w+),\s*(\d+),\s*(\d+),\s*(\d+),\s*(\d+),\s*(\d+),\s*(\d+)\)")
+    with open(SCENE_TABLE) as f:
+        for text in f:
+            m = line.match(text)
+            if m:
+                v = [int(x) for x in m.groups()[1:]]
+                rows[m.group(1)] = dict(state=v[0], objects=v[1], verts=v[2], prims=v[3], wverts=v[4], wprims=v[5])
+    return rows
+
+
+def limits():
+    with open(CONTRACT, "rb") as f:
+        lim = tomllib.load(f)["limits"]
+    with open(SOC_MAP) as f:
+        window = int(re.search(r"#define SOC_RAM_WINDOW_BYTES\s+(0x[0-9A-Fa-f]+|\d+)", f.read()).group(1), 0)
+    return lim["vtx_cap"], lim["tri_cap"], window // 1024
+
+
+def check_shape(data, schema, where, path):
+    for key in data:
+        if key not in schema:
+            raise ManifestError(f"{path}: unknown key '{where}{key}' (known: {', '.join(schema)})")
+    for key, kind in schema.items():
+        if key not in data:
+            raise ManifestError(f"{path}: missing key '{where}{key}'")
+        value = data[key]
+        if isinstance(kind, dict):
+            if not isinstance(value, dict):
+                raise ManifestError(f"{path}: '{where}{key}' must be a table [{key}]")
+            check_shape(value, kind, f"{key}.", path)
+        elif type(value) is not kind:  # bool is an int in Python: compare types exactly
+            raise ManifestError(f"{path}: '{where}{key}' must be {kind.__name__}, not {value!r}")
+
+
+def power_of_two(n):
+    return n > 0 and n & (n - 1) == 0
+
+
+def load(path, scene=None):
+    """The manifest at path, validated; returns its data."""
+    try:
+        with open(path, "rb") as f:
+            data = tomllib.load(f)
+    except FileNotFoundError:
+        raise ManifestError(f"{path}: no such manifest (every scene has one: firmware/scenes/<scene>.manifest.toml)")
+    except tomllib.TOMLDecodeError as e:
+        raise ManifestError(f"{path}: not TOML: {e}")
+    check_shape(data, SCHEMA, "", path)
+    table = scene_table()
+    name = data["scene"]
+    if scene is not None and name != scene:
+        raise ManifestError(f"{path}: scene = '{name}', but the file is the manifest of '{scene}'")
+    if name not in table:
+        raise ManifestError(f"{path}: scene '{name}' is not a numeric line of {os.path.relpath(SCENE_TABLE, ROOT)}")
+    feat, gpu, mem = data["features"], data["gpu"], data["memory"]
+    vtx_max, tri_max, ram_max = limits()
+    if gpu["span_w"] not in (1, 4, 8, 16):
+        raise ManifestError(f"{path}: gpu.span_w = {gpu['span_w']}: one of 1, 4, 8, 16")
+    for key, top in (("vtx_cap", vtx_max), ("tri_cap", tri_max)):
+        if not (4 <= gpu[key] <= top and power_of_two(gpu[key])):
+            raise ManifestError(f"{path}: gpu.{key} = {gpu[key]}: a power of two from 4 to {top} (the contract's limit)")
+    emulated = feat["wireframe"] and not feat["lines"]
+    row = table[name]
+    for key, col, top in (("vtx_cap", "verts", vtx_max), ("tri_cap", "prims", tri_max)):
+        column = ("w" + col) if emulated else col
+        need = min(row[column], top)
+        if gpu[key] < need:
+            raise ManifestError(f"{path}: gpu.{key} = {gpu[key]} is smaller than scene {name}'s {column} column "
+                                f"({row[column]}, scene_list.h): at least {need}")
+    if not (8 <= mem["ram_kib"] <= ram_max and mem["ram_kib"] % 8 == 0):
+        raise ManifestError(f"{path}: memory.ram_kib = {mem['ram_kib']}: a multiple of 8 from 8 to {ram_max}")
+    return data
+
+
+def fragment(data, path):
+    feat, gpu, mem = data["features"], data["gpu"], data["memory"]
+    vtx_max, tri_max, _ = limits()
+    b = lambda v: 1 if v else 0
+    defs = " ".join(f"-DFW_WITH_{k.upper()}={b(feat[k])}" for k in ("wireframe", "anaglyph", "depth", "lighting"))
+    extra = []  # the GPU's parameters where they differ from the defaults
+    if not feat["lines"]:
+        extra.append(("l0", "-GENABLE_LINES=0"))
+    if gpu["vtx_cap"] != vtx_max:
+        extra.append((f"v{gpu['vtx_cap']}", f"-GVTX_CAP={gpu['vtx_cap']}"))
+    if gpu["tri_cap"] != tri_max:
+        extra.append((f"t{gpu['tri_cap']}", f"-GTRI_CAP={gpu['tri_cap']}"))
+    tag = "-".join(t for t, _ in extra)
+    return "\n".join([
+        f"# Generated by tools/manifest.py from {os.path.relpath(path, ROOT)}: do not edit.",
+        f"MANIFEST_SCENE       := {data['scene']}",
+        "override FW_SCENE_SET := one",
+        f"override FW_LINE_EMULATION := {b(feat['wireframe'] and not feat['lines'])}",
+        f"override FW_DEFS     := {defs}",
+        f"override SPAN_W      := {gpu['span_w']}",
+        f"override ZBUF        := {b(feat['depth'])}",
+        f"override SOC_RAM_KIB := {mem['ram_kib']}",
+        f"MANIFEST_LINES       := {b(feat['lines'])}",
+        f"MANIFEST_VTX_CAP     := {gpu['vtx_cap']}",
+        f"MANIFEST_TRI_CAP     := {gpu['tri_cap']}",
+        f"MANIFEST_GPU_GFLAGS  := {' '.join(g for _, g in extra)}",
+        f"MANIFEST_GPU_TAG     := {tag}",
+        "",
+    ])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("scenes", nargs="*")
+    ap.add_argument("--check", action="store_true", help="validate only")
+    ap.add_argument("--file", help="a manifest at another path")
+    ap.add_argument("--out")
+    args = ap.parse_args()
+    try:
+        if args.check:
+            names = args.scenes or list(scene_table())
+            for s in names:
+                load(manifest_path(s), s)
+            if args.file:
+                load(args.file)
+            print(f"manifest: {len(names) + (1 if args.file else 0)} manifests valid")
+            return 0
+        if args.file:
+            path, scene = args.file, None
+        elif len(args.scenes) == 1:
+            path, scene = manifest_path(args.scenes[0]), args.scenes[0]
+        else:
+            ap.error("one SCENE, or --file, or --check")
+        text = fragment(load(path, scene), path)
+    except ManifestError as e:
+        print(f"manifest: {e}", file=sys.stderr)
+        return 1
+    if args.out:
+        os.makedirs(os.path.dirname(args.out) or ".", exist_ok=True)
+        with open(args.out, "w") as f:
+            f.write(text)
+    else:
+        sys.stdout.write(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
