@@ -9,6 +9,8 @@
 #                                          reads: every batch outlasts it (tests/soc/watchdog.sh)
 #   $(SOC_TEST_DIR)/model-upload.elf       the model scene, SOC_UPLOAD_FRAMES (10) frames: a model is
 #                                          uploaded into it over the UART line (tests/soc/upload.sh)
+#   $(SOC_TEST_DIR)/tetra-window.elf       tetra until Q (FRAMES 0): only closing socsim's window
+#                                          ends it (tests/window/window.sh)
 #   $(SOC_TEST_DIR)/bus_error.elf          tests/soc/bus_error.c with the soc BSP
 #   $(SOC_TEST_DIR)/poll_cycles.elf        tests/soc/poll_cycles.c with the GPU driver and the BSP
 ifneq ($(FW_PLATFORM),soc)
@@ -22,6 +24,7 @@ $(foreach s,$(FW_SCENES),$(eval $(call FW_ELF_RULES,$(SOC_TEST_DIR)/$(s)-2f.elf,
 $(eval $(call FW_ELF_RULES,$(SOC_TEST_DIR)/tetra-watchdog-tiny.elf,tetra,fixed,5,$(SOC_TINY_POLLS)))
 SOC_UPLOAD_FRAMES := 10
 $(eval $(call FW_ELF_RULES,$(SOC_TEST_DIR)/model-upload.elf,model,fixed,$(SOC_UPLOAD_FRAMES),))
+$(eval $(call FW_ELF_RULES,$(SOC_TEST_DIR)/tetra-window.elf,tetra,fixed,0,))
 
 SOC_BSP_OBJS := $(patsubst %.c,$(FW_OBJ_DIR_fixed)/%.o,$(FW_BSP_SRCS))
 SOC_DRIVER_OBJ := $(FW_OBJ_DIR_fixed)/$(FW_DRIVER_SRC:.c=.o)
@@ -44,5 +47,5 @@ $(eval $(call SOC_TEST_PROGRAM,poll_cycles,$(SOC_DRIVER_OBJ)))
 .PHONY: soc-test-elfs
 # Every scene's one-scene build fits the default 192 KiB (`make fw-size`, suite fw-fit).
 soc-test-elfs: $(foreach s,$(FW_SCENES),$(SOC_TEST_DIR)/$(s).elf $(SOC_TEST_DIR)/$(s)-2f.elf) \
-               $(SOC_TEST_DIR)/tetra-watchdog-tiny.elf $(SOC_TEST_DIR)/model-upload.elf \
+               $(SOC_TEST_DIR)/tetra-watchdog-tiny.elf $(SOC_TEST_DIR)/model-upload.elf $(SOC_TEST_DIR)/tetra-window.elf \
                $(SOC_TEST_DIR)/bus_error.elf $(SOC_TEST_DIR)/poll_cycles.elf
