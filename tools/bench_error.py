@@ -180,11 +180,14 @@ def table(results, scenes, frames):
     return "\n".join(lines)
 
 
+def span(values, fmt):
+    """A range over the scenes as text: one value when both ends print alike, else "lo .. hi"."""
+    lo, hi = min(values), max(values)
+    return fmt % lo if fmt % lo == fmt % hi else (fmt + " .. " + fmt) % (lo, hi)
+
+
 def summary(results, scenes):
     """The short version: per setting, the range over the scenes."""
-    def span(values, fmt):
-        lo, hi = min(values), max(values)
-        return fmt % lo if fmt % lo == fmt % hi else (fmt + " .. " + fmt) % (lo, hi)
     lines = ["| knob | setting | pixels differing from R | fw instructions / R's | GPU cycles / R's |",
              "|---|---|---:|---:|---:|"]
     for knob, settings in KNOBS:
@@ -456,9 +459,6 @@ def path_table(results, scenes, views, cost_views, mismatches):
 
 
 def path_summary(results, scenes):
-    def span(values, fmt):
-        lo, hi = min(values), max(values)
-        return fmt % lo if fmt % lo == fmt % hi else (fmt + " .. " + fmt) % (lo, hi)
     lines = ["| knob | setting | mean pixels differing from E | p95 | worst view | fw instructions / R's | GPU cycles / R's |",
              "|---|---|---:|---:|---:|---:|---:|"]
     for knob, settings in PATH_KNOBS:
