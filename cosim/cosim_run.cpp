@@ -242,8 +242,11 @@ void CosimRun::forward_pty()
 // The window's keys go to the firmware; its closing asks the firmware to quit (Q), as a user would.
 void CosimRun::poll_window()
 {
+    if (!window_.is_open()) {
+        return;
+    }
     const double now = now_s();
-    if (!window_.is_open() || now - window_polled_at_ < 0.01) {  // 100 times a second is enough
+    if (now - window_polled_at_ < 0.01) {  // 100 times a second is enough
         return;
     }
     window_polled_at_ = now;

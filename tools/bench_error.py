@@ -186,21 +186,29 @@ def span(values, fmt):
     return fmt % lo if fmt % lo == fmt % hi else (fmt + " .. " + fmt) % (lo, hi)
 
 
-def summary(results, scenes):
-    """The short version: per setting, the range over the scenes."""
-    lines = ["| knob | setting | pixels differing from R | fw instructions / R's | GPU cycles / R's |",
-             "|---|---|---:|---:|---:|"]
-    for knob, settings in KNOBS:
+def knob_ranges(results, scenes, knobs, error_columns):
+    """Markdown rows, one per knob setting: each error column's range over the scenes, then the
+    firmware's instructions and the GPU's cycles relative to R's. error_columns: (header, result
+    key, format)."""
+    lines = ["| knob | setting | %s | fw instructions / R's | GPU cycles / R's |" % " | ".join(h for h, _, _ in error_columns),
+             "|---|---|%s---:|---:|" % ("---:|" * len(error_columns))]
+    for knob, settings in knobs:
         for setting, key in settings:
             if key == "ref" and knob != "arithmetic":
                 continue
             rs = [results[(sc, key)] for sc in scenes]
             refs = [results[(sc, "ref")] for sc in scenes]
-            lines.append("| %s | %s | %s | %s | %s |" % (
-                knob if key != "ref" else "reference R", setting if key != "ref" else "float, depth buffer, 4 bits, SPAN_W 8",
-                span([r["differing"] for r in rs], "%.1f"),
-                span([r["instr"] / q["instr"] for r, q in zip(rs, refs)], "%.2f"),
-                span([r["cycles"] / q["cycles"] for r, q in zip(rs, refs)], "%.2f")))
+            cells = [knob if key != "ref" else "reference R",
+                     setting if key != "ref" else "float, depth buffer, 4 bits, SPAN_W 8"]
+            cells += [span([r[field] for r in rs], fmt) for _, field, fmt in error_columns]
+            cells += [span([r[cost] / q[cost] for r, q in zip(rs, refs)], "%.2f") for cost in ("instr", "cycles")]
+            lines.append("| %s |" % " | ".join(cells))
+    return lines
+
+
+def summary(results, scenes):
+    """The short version: per setting, the range over the scenes."""
+    lines = knob_ranges(results, scenes, KNOBS, [("pixels differing from R", "differing", "%.1f")])
     lines.append("")
     lines.append("Ranges over the scenes (%s); pixels differing: framebuffer pixels of 76,800 per frame, "
                  "mean of the frames." % ", ".join(scenes))
@@ -459,20 +467,8 @@ def path_table(results, scenes, views, cost_views, mismatches):
 
 
 def path_summary(results, scenes):
-    lines = ["| knob | setting | mean pixels differing from E | p95 | worst view | fw instructions / R's | GPU cycles / R's |",
-             "|---|---|---:|---:|---:|---:|---:|"]
-    for knob, settings in PATH_KNOBS:
-        for setting, key in settings:
-            if key == "ref" and knob != "arithmetic":
-                continue
-            rs = [results[(sc, key)] for sc in scenes]
-            refs = [results[(sc, "ref")] for sc in scenes]
-            lines.append("| %s | %s | %s | %s | %s | %s | %s |" % (
-                knob if key != "ref" else "reference R", setting if key != "ref" else "float, depth buffer, 4 bits, SPAN_W 8",
-                span([r["differing"] for r in rs], "%.1f"), span([r["p95"] for r in rs], "%.0f"),
-                span([r["worst"] for r in rs], "%d"),
-                span([r["instr"] / q["instr"] for r, q in zip(rs, refs)], "%.2f"),
-                span([r["cycles"] / q["cycles"] for r, q in zip(rs, refs)], "%.2f")))
+    lines = knob_ranges(results, scenes, PATH_KNOBS, [("mean pixels differing from E", "differing", "%.1f"),
+                                                      ("p95", "p95", "%.0f"), ("worst view", "worst", "%d")])
     lines.append("")
     lines.append("Ranges over the scenes (%s)." % ", ".join(scenes))
     return "\n".join(lines)

@@ -42,23 +42,6 @@ static void press(struct camera *cam, enum input_key k, int times)
     }
 }
 
-static double basis_ortho_err(const mat3 *m)
-{
-    double e = 0.0;
-
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++) {
-            double s = 0.0;
-
-            for (int k = 0; k < 3; k++) {
-                s += ud(m->m[i][k]) * ud(m->m[j][k]);
-            }
-            e = fmax(e, fabs(s - (i == j ? 1.0 : 0.0)));
-        }
-    }
-    return e;
-}
-
 /* Holding look-up (or down) forever stops at +-89 degrees; the basis is still a rotation there,
  * and straight up is never reached, in fly and orbit mode alike. */
 void test_cam_pitch_limits(void)
@@ -74,7 +57,7 @@ void test_cam_pitch_limits(void)
             const mat3 b = cam_basis(cam.yaw, cam.pitch);
             const uvec3 f = cam_forward(&cam);
 
-            CHECK(basis_ortho_err(&b) < 3e-4);
+            CHECK(mat_ortho_err(&b) < 3e-4);
             CHECK(ud(f.y) > 0.9997 && ud(f.y) < 0.99999);  /* sin 89 = 0.99985, table +-1e-4 */
         }
         press(&cam, KEY_LOOK_DOWN, 5000);
@@ -82,7 +65,7 @@ void test_cam_pitch_limits(void)
         {
             const mat3 b = cam_basis(cam.yaw, cam.pitch);
 
-            CHECK(basis_ortho_err(&b) < 3e-4);
+            CHECK(mat_ortho_err(&b) < 3e-4);
         }
         /* Yaw keeps turning at the limit: no gimbal lock. */
         press(&cam, KEY_LOOK_RIGHT, 7);
@@ -180,7 +163,7 @@ void test_cam_object_turns(void)
     cam_init(&cam, &cfg, CAM_OBJECT, v3(0, 0, 0), to_real(5.0), 0, 0);
     eye = cam.eye;
     press(&cam, KEY_LOOK_RIGHT, 32);
-    CHECK(basis_ortho_err(&cam.scene_rot) < 1e-6);
+    CHECK(mat_ortho_err(&cam.scene_rot) < 1e-6);
     CHECK(rd(cam.eye.z) == rd(eye.z));
     /* A quarter turn about +y (the view's up): +z goes to +x. */
     p = mat3_apply(&cam.scene_rot, v3(0, 0, 1));

@@ -48,6 +48,24 @@ static inline unit_t to_unit(double d)
 #endif
 }
 
+/* max |M M^T - I| over the entries: how far a rotation is from orthonormal. */
+static inline double mat_ortho_err(const mat3 *m)
+{
+    double e = 0.0;
+
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            double s = 0.0;
+
+            for (int k = 0; k < 3; k++) {
+                s += ud(m->m[i][k]) * ud(m->m[j][k]);
+            }
+            e = fmax(e, fabs(s - ((i == j) ? 1.0 : 0.0)));
+        }
+    }
+    return e;
+}
+
 static inline vec3 v3(double x, double y, double z)
 {
     return vec3_make(to_real(x), to_real(y), to_real(z));

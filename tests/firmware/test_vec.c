@@ -23,24 +23,6 @@ static double mat_err_vs(const mat3 *m, const double r[3][3])
     return e;
 }
 
-/* max |M M^T - I|: how far from orthonormal. */
-static double mat_ortho_err(const mat3 *m)
-{
-    double e = 0.0;
-
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++) {
-            double s = 0.0;
-
-            for (int k = 0; k < 3; k++) {
-                s += ud(m->m[i][k]) * ud(m->m[j][k]);
-            }
-            e = fmax(e, fabs(s - ((i == j) ? 1.0 : 0.0)));
-        }
-    }
-    return e;
-}
-
 static double det3(const double m[3][3])
 {
     return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -

@@ -37,46 +37,13 @@
 #include "scenes/scene_set.h"
 #include "scenes/voxel/voxel_scene.h"
 #include "stress_bsp.h"
+#include "test_util.h"  /* the backend's numbers as double (tests/firmware) */
 
 /* ---- settings: the full run and the short (make test) one ---------------------------------- */
 static uint32_t stress_soak_frames = 10000u;     /* per scene and run */
 static uint32_t stress_spin_frames = 1000000u;   /* the held rotation key */
 
-#define STRESS_PI 3.14159265358979323846
 #define Q30_MIN_ ((q2_30)INT32_MIN)  /* -2.0 */
-
-/* ---- numbers of the backend as double ------------------------------------------------------ */
-static double rd(real_t r)
-{
-#if REAL_IS_FIXED
-    return (double)r / 65536.0;
-#else
-    return (double)r;
-#endif
-}
-
-static double ud(unit_t u)
-{
-#if REAL_IS_FIXED
-    return (double)u / 1073741824.0;
-#else
-    return (double)u;
-#endif
-}
-
-static real_t to_real(double d)
-{
-#if REAL_IS_FIXED
-    return (real_t)llround(d * 65536.0);
-#else
-    return (real_t)d;
-#endif
-}
-
-static vec3 v3(double x, double y, double z)
-{
-    return vec3_make(to_real(x), to_real(y), to_real(z));
-}
 
 /* Non-finite values seen (float backend; the fixed one has none by construction). */
 static uint32_t stress_nonfinite;
@@ -95,25 +62,6 @@ static void check_mat(const mat3 *m)
             check_finite(ud(m->m[i][j]));
         }
     }
-}
-
-/* Largest |M M^T - I| entry: how far a rotation is from orthonormal. */
-static double mat_drift(const mat3 *m)
-{
-    double worst = 0.0;
-
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++) {
-            double dot = 0.0;
-
-            for (int k = 0; k < 3; k++) {
-                dot += ud(m->m[i][k]) * ud(m->m[j][k]);
-            }
-            dot -= (i == j) ? 1.0 : 0.0;
-            worst = fmax(worst, fabs(dot));
-        }
-    }
-    return worst;
 }
 
 /* ---- the GPU: driver + golden model --------------------------------------------------------- */
@@ -619,8 +567,8 @@ static bool case_world_1024(char *out)
         const double sz = (c & 4) ? 1024.0 : -1024.0;
         const vec3 eye = v3(-sx, -sy, -sz);
         /* Look from the eye at the far corner: yaw and pitch of the diagonal. */
-        const double yaw = atan2(2 * sx, 2 * sz) / (2 * STRESS_PI) * 65536.0;
-        const double pitch = atan2(2 * sy, sqrt(8.0) * 1024.0) / (2 * STRESS_PI) * 65536.0;
+        const double yaw = atan2(2 * sx, 2 * sz) / (2 * TEST_PI) * 65536.0;
+        const double pitch = atan2(2 * sy, sqrt(8.0) * 1024.0) / (2 * TEST_PI) * 65536.0;
         struct frame_result r;
 
         tri_begin(&t);
@@ -979,7 +927,7 @@ static bool case_pitch_pole(char *out)
                 cam_get_view(&cam, 0, &view);
                 check_mat(&view.rot);
                 check_finite(rd(view.eye.x) + rd(view.eye.y) + rd(view.eye.z));
-                worst = fmax(worst, mat_drift(&view.rot));
+                worst = fmax(worst, mat_ortho_err(&view.rot));
                 seen_max = (abs(cam.pitch) > seen_max) ? abs(cam.pitch) : seen_max;
                 /* Forward never exactly vertical: yaw keeps its meaning. */
                 if (fabs(ud(view.rot.m[2][1])) >= 1.0) {
@@ -1021,8 +969,8 @@ static bool case_spin_drift(char *out)
             cam_get_view(&fly, 0, &view);
             check_mat(&view.rot);
             check_mat(&obj.scene_rot);
-            fly_worst = fmax(fly_worst, mat_drift(&view.rot));
-            obj_worst = fmax(obj_worst, mat_drift(&obj.scene_rot));
+            fly_worst = fmax(fly_worst, mat_ortho_err(&view.rot));
+            obj_worst = fmax(obj_worst, mat_ortho_err(&obj.scene_rot));
         }
     }
     /* Fly: the basis is rebuilt from the angles, so the yaw must be exactly N steps and the

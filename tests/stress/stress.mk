@@ -32,7 +32,7 @@ $(1)_FW_OBJS := $$(filter-out $$(patsubst %.c,$$(HOST_OBJ_DIR_$(2))/%.o,$(FW_HOS
 
 $$($(1)_OBJ)/%.o: %.c $$(HOST_OBJ_DIR_$(2))/cflags.txt
 	@mkdir -p $$(@D)
-	$$(HOST_CC) $$(FW_HOST_CFLAGS_$(2)) -Itests/stress -MMD -MP -c $$< -o $$@
+	$$(HOST_CC) $$(FW_HOST_CFLAGS_$(2)) -Itests/stress -Itests/firmware -MMD -MP -c $$< -o $$@
 
 $(1): $$($(1)_OBJS) $$($(1)_FW_OBJS) $(FW_MODEL_HOST_OBJ) $(GPU_MODEL_LIB)
 	$$(HOST_CC) -o $$@ $$($(1)_OBJS) $$($(1)_FW_OBJS) $(FW_MODEL_HOST_OBJ) $(GPU_MODEL_LIB) -lm
@@ -60,7 +60,7 @@ STRESS_SAN_FLOAT := $(BUILD)/tests/stress-san-float
 STRESS_SAN_SRCS   = $(STRESS_SRCS) $(FW_PURE_SRCS) $(FW_DRIVER_SRC) $(GPU_MODEL_SRC)
 STRESS_SAN_FLAGS := -std=c11 -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefined \
                     -ffp-contract=off -Ibsp/host -Ibsp -Icontract -Ifirmware -Igpu_model -Icosim \
-                    -Itests/stress $(FW_MODEL_DEFS) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)
+                    -Itests/stress -Itests/firmware $(FW_MODEL_DEFS) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)
 
 $(STRESS_SAN) $(STRESS_SAN_FLOAT): $(STRESS_SAN_SRCS) $(FW_MODEL_HOST_OBJ) $(wildcard firmware/*/*.h \
                                    firmware/scenes/*/*.h gpu_model/*.h tests/stress/*.h)
