@@ -157,10 +157,23 @@ bench-error:
 	@bash tools/setup.sh packages-plot.txt
 	@$(MAKE) --no-print-directory bench-error-run
 
-bench-error-run: $(FW_ERR_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(PNG_DIFF)
+bench-error-run: $(FW_ERR_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(PNG_DIFF) $(FW_PATH_HOSTS) bench-error-soc
 	$(BENCH_ERROR_CHECK)
-	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --frames $(FW_ERR_FRAMES) $(FW_SCENES)
+	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --frames $(FW_ERR_FRAMES) $(BENCH_SOC_ARGS) $(FW_SCENES)
 	@$(MAKE) --no-print-directory bench-error-path-run
+
+# Both halves' CPU cycles on the SoC (tools/bench_error.py --socsim): the path ELFs of the first
+# FW_PATH_SOC_VIEWS views built for bsp/soc (firmware.mk FW_PATH_SOC_ELFS, $(BUILD)/fw-path-soc/),
+# on socsim with and without the depth buffer, and R's on a SPAN_W 1 GPU (the span-width check).
+# Measured once per configuration (the results are cached in $(BUILD)/bench-error/soc/).
+BENCH_SOCSIM_DIR = $(BUILD)/socsim-$(SOC_RAM_KIB)k
+BENCH_SOC_ARGS   = --socsim sim-w8=$(BENCH_SOCSIM_DIR)/socsim --socsim sim-z-w8=$(BENCH_SOCSIM_DIR)-z/socsim \
+                   --socsim sim-z-w1=$(BENCH_SOCSIM_DIR)-z-w1/socsim --soc-views $(FW_PATH_SOC_VIEWS)
+.PHONY: bench-error-soc
+bench-error-soc:
+	+@$(SOC_FW_MAKE) ZBUF=0 SPAN_W=8 $(patsubst $(BUILD)/fw-path/%,$(BUILD)/fw-path-soc/%,$(FW_PATH_SOC_ELFS)) socsim
+	+@$(SOC_FW_MAKE) ZBUF=1 SPAN_W=8 socsim
+	+@$(SOC_FW_MAKE) ZBUF=1 SPAN_W=1 socsim
 
 # The camera paths against the exact reference (tools/bench_error.py --path): FW_PATH_VIEWS views
 # per scene of BENCH_PATH_SCENES, the costs co-simulated on the first BENCH_COST_VIEWS of them.
@@ -172,10 +185,10 @@ bench-error-path:
 	@bash tools/setup.sh packages-plot.txt
 	@$(MAKE) --no-print-directory bench-error-path-run
 
-bench-error-path-run: $(FW_PATH_HOSTS) $(FW_PATH_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(PNG_DIFF) $(EXACT_REF)
+bench-error-path-run: $(FW_PATH_HOSTS) $(FW_PATH_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(PNG_DIFF) $(EXACT_REF) bench-error-soc
 	$(BENCH_ERROR_CHECK)
 	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --path $(FW_PATH_VIEWS) \
-	  --cost-views $(BENCH_COST_VIEWS) $(BENCH_PATH_SCENES)
+	  --cost-views $(BENCH_COST_VIEWS) $(BENCH_SOC_ARGS) $(BENCH_PATH_SCENES)
 
 # The exact reference of bench-error's camera paths (double precision, the pipeline's definitions
 # written anew: tools/exact_ref/exact_ref.c), and its self-test on known polygons.

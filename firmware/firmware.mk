@@ -419,6 +419,17 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2 fixed-nr0 f
   $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/host-$(s)-$(v)-z)\
   $(eval FW_PATH_ELFS += $(FW_PATH_DIR)/$(s)-$(v)-z.elf)))
 
+# bench-error's CPU cycles on the SoC (built with FW_PLATFORM=soc, so under $(BUILD)/fw-path-soc/):
+# the path ELFs again with only the first FW_PATH_SOC_VIEWS views (frames), the same program
+# otherwise, since socsim simulates about 0.6 M cycles a second of CPU and every frame is at least
+# one VGA frame (840,000 cycles) after a boot of ~2.4 M: <scene>-<variant>[-z]-<N>v.elf.
+FW_PATH_SOC_VIEWS := 1
+FW_PATH_SOC_ELFS  :=
+$(foreach s,$(FW_SCENES),$(foreach v,fixed float fixed-z float-z float-sp0-z float-sp2-z fixed-nr0-z fixed-nr2-z,\
+  $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v)-$(FW_PATH_SOC_VIEWS)v.elf,$(s),$(v:-z=),$(FW_PATH_SOC_VIEWS),,\
+    $(FW_PATH_DEFS)$(if $(filter %-z,$(v)), -DFW_DEPTH_TEST=1)))\
+  $(eval FW_PATH_SOC_ELFS += $(FW_PATH_DIR)/$(s)-$(v)-$(FW_PATH_SOC_VIEWS)v.elf)))
+
 # tests/bench/exact_ref.sh: the exact reference against tetra's path (tools/exact_ref's rule is the
 # top-level Makefile's).
 FW_TEST_DEPS += $(FW_PATH_DIR)/host-tetra-float-z $(BUILD)/tools/exact_ref

@@ -7,7 +7,9 @@
 # A manifest build happens where all of these hold:
 #   - SCENE is given on the command line (the default scene without it is the full build),
 #   - FULL is not 1,
-#   - the scene has a manifest (the model scene, MODEL=..., has none: its capacity is MODEL's),
+#   - the scene has a manifest (every scene of the table has one; the model scene's also sets its
+#     capacities and the UART upload, so `make run SCENE=model MODEL=x` simplifies x to them,
+#     while `make run MODEL=x` without SCENE is the full build),
 #   - a goal is one of MANIFEST_GOALS: what runs or builds one scene (make test, fw-size, bench-*,
 #     board-fit, fw-all ... keep their own builds whatever SCENE says).
 # The decision is exported as LEAN_SCENE, so that the recursive makes (run -> run-built, soc-fw,
