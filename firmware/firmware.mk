@@ -192,12 +192,13 @@ FW_WARN := -std=c11 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing
 FW_BACKEND_DEFS_fixed :=
 FW_BACKEND_DEFS_float := -DFW_BACKEND_FLOAT=1
 # Object variants: the two backends take the command line's FW_SUBPIXEL_BITS; <backend>-sp<N>
-# (bench-error, and one test) are a backend with N sub-pixel bits, whatever the command line says.
+# (bench-error, and one test) are a backend with N sub-pixel bits, whatever the command line says
+# (and the platform's FW_LINE_EMULATION, as the backends: bench-error's SoC builds have none).
 FW_VARIANT_DEFS_fixed := $(if $(FW_SUBPIXEL_BITS),-DFW_SUBPIXEL_BITS=$(FW_SUBPIXEL_BITS)) \
                          -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION) $(FW_DEFS)
 FW_VARIANT_DEFS_float := $(FW_VARIANT_DEFS_fixed)
 FW_SP_VARIANTS := fixed-sp4 float-sp0 float-sp2
-$(foreach v,$(FW_SP_VARIANTS),  $(eval FW_BACKEND_DEFS_$(v) := $(FW_BACKEND_DEFS_$(word 1,$(subst -, ,$(v)))))  $(eval FW_VARIANT_DEFS_$(v) := -DFW_SUBPIXEL_BITS=$(patsubst sp%,%,$(word 2,$(subst -, ,$(v))))))
+$(foreach v,$(FW_SP_VARIANTS),  $(eval FW_BACKEND_DEFS_$(v) := $(FW_BACKEND_DEFS_$(word 1,$(subst -, ,$(v)))))  $(eval FW_VARIANT_DEFS_$(v) := -DFW_SUBPIXEL_BITS=$(patsubst sp%,%,$(word 2,$(subst -, ,$(v)))) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)))
 # fixed-lean: the fixed backend with every optional feature left out (fw_config.h FW_WITH_*), for
 # the test that such a build runs and is smaller.
 FW_LEAN_DEFS := -DFW_WITH_WIREFRAME=0 -DFW_WITH_ANAGLYPH=0 -DFW_WITH_DEPTH=0 -DFW_WITH_LIGHTING=0
@@ -219,7 +220,7 @@ FW_VARIANT_DEFS_fixed-emul := -DFW_WITH_LINE_EMULATION=1
 FW_SP_VARIANTS += fixed-chip fixed-emul
 # fixed-nr0 / fixed-nr2: the fixed backend with 0 or 2 Newton steps in the projection's reciprocal
 # (FW_RECIP_NEWTON_STEPS, math/fixed.h; default 1): bench-error's camera paths.
-$(foreach n,0 2,$(eval FW_BACKEND_DEFS_fixed-nr$(n) :=)$(eval FW_VARIANT_DEFS_fixed-nr$(n) := -DFW_RECIP_NEWTON_STEPS=$(n)))
+$(foreach n,0 2,$(eval FW_BACKEND_DEFS_fixed-nr$(n) :=)$(eval FW_VARIANT_DEFS_fixed-nr$(n) := -DFW_RECIP_NEWTON_STEPS=$(n) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)))
 FW_SP_VARIANTS += fixed-nr0 fixed-nr2
 # -ffp-contract=off: no fused multiply-adds, so the float backend rounds identically on the host
 # and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
