@@ -470,9 +470,10 @@ def soc_measure(build, socsims, scenes, keys, views, span_scenes, jobs):
 def soc_notes(soc, scenes, views):
     """The table's SoC lines: what was measured, and the span-width check."""
     lines = ["- SoC CPU cycles: the same configuration built for the SoC on socsim (VexRiscv_Full, 50 MHz "
-             "model), mcycle per frame without the DONE_SEQ polls, mean over the first %d view%s of the "
-             "scene's camera path, measured once and shown in both tables; its frames equal the host "
-             "build's on those views; span widths: R's firmware (\"as R\")" % (views, "s" if views > 1 else "")]
+             "model), mcycle per frame without the DONE_SEQ polls, on %s of the scene's camera path "
+             "(frame 0: cold caches), measured once and shown in both tables; its frames equal the host "
+             "build's on those views; span widths: R's firmware (\"as R\")" % (
+                 "the first view" if views == 1 else "the first %d views (mean)" % views)]
     checks = [(sc, soc[("span-check", sc)]["cpu"], soc[(sc, "ref")]["cpu"]) for sc in scenes if ("span-check", sc) in soc]
     if checks:
         lines.append("- SoC CPU cycles against SPAN_W: R's firmware on a SPAN_W 1 GPU against SPAN_W 8: %s (%s)" % (
