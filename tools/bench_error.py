@@ -84,7 +84,7 @@ KNOBS = [
 ]
 
 FRAME_RE = re.compile(r"^frame (\d+): .*\| fw instr (\d+) \| gpu cycles (\d+) \|")
-SOC_FW_LINE = re.compile(r"^frame (\d+): .*\| cpu cycles (\d+)")
+SOC_FW_LINE = re.compile(r"^frame (\d+): .*\| fw instr (\d+) \|.*\| cpu cycles (\d+)")
 
 
 def run_config(build, frames, scene, key, rerun=True):
@@ -393,6 +393,10 @@ def soc_run(build, socsims, scene, key, views, sim=None):
         with open(cache) as f:
             c = json.load(f)
         if c["key"] == cache_key:
+            if "instr" not in c["result"]:  # a cache written before the instructions were kept
+                with open(os.path.join(work, "uart.log")) as log:
+                    n = [int(m.group(2)) for m in map(SOC_FW_LINE.match, log) if m and int(m.group(1)) < views]
+                c["result"]["instr"] = sum(n) / views
             return c["result"], True
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
@@ -407,12 +411,13 @@ def soc_run(build, socsims, scene, key, views, sim=None):
     with open(os.path.join(work, "socsim.out"), "w") as out:
         if subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT).returncode != 0:
             raise RuntimeError("%s %s: socsim failed, see %s/socsim.out" % (scene, key, work))
-    cpu = {}
+    cpu, instr = {}, {}
     with open(os.path.join(work, "uart.log")) as log:
         for line in log:
             m = SOC_FW_LINE.match(line)
             if m:
-                cpu[int(m.group(1))] = int(m.group(2))
+                instr[int(m.group(1))] = int(m.group(2))
+                cpu[int(m.group(1))] = int(m.group(3))
     if sorted(cpu) != list(range(views)):
         raise RuntimeError("%s %s: expected frames 0..%d in %s/uart.log" % (scene, key, views - 1, work))
     tool = os.path.join(build, "tools", "png_diff")
@@ -423,6 +428,7 @@ def soc_run(build, socsims, scene, key, views, sim=None):
         if d:
             bad.append("view %d: %d pixels" % (f, d))
     result = {"cpu": sum(cpu.values()) / views, "views": [cpu[f] for f in range(views)],
+              "instr": sum(instr.values()) / views,
               "mismatch": "; ".join(bad) or None}
     with open(cache, "w") as f:
         json.dump({"key": cache_key, "result": result}, f)
@@ -484,13 +490,15 @@ def soc_notes(soc, scenes, views):
 
 def soc_table(soc, scenes, views):
     """--soc-only: the SoC column alone, every configuration of the camera paths."""
-    lines = ["| knob | setting | scene | SoC CPU cycles/frame | / R's |", "|---|---|---|---:|---:|"]
+    lines = ["| knob | setting | scene | SoC CPU cycles/frame | / R's | SoC instructions/frame | CPI |",
+             "|---|---|---|---:|---:|---:|---:|"]
     for knob, settings in PATH_KNOBS:
         for scene in scenes:
             for setting, key in settings:
                 r = soc[(scene, key)]
-                lines.append("| %s | %s | %s | %s | %.2f |" % (knob, setting, scene, soc_cell(
-                    {"soc": r["cpu"], "soc_as_r": r.get("as_r", False)}), r["cpu"] / soc[(scene, "ref")]["cpu"]))
+                lines.append("| %s | %s | %s | %s | %.2f | %s | %s |" % (knob, setting, scene, soc_cell(
+                    {"soc": r["cpu"], "soc_as_r": r.get("as_r", False)}), r["cpu"] / soc[(scene, "ref")]["cpu"],
+                    "%d" % r["instr"] if "instr" in r else "—", "%.2f" % (r["cpu"] / r["instr"]) if "instr" in r else "—"))
     lines.append("")
     lines.extend(soc_notes(soc, scenes, views))
     return "\n".join(lines)
