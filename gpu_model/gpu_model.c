@@ -262,7 +262,8 @@ static prim_result draw_triangle(gpu_model *m, gpu_model_pt v0,
             if (ztest) {
                 /* Written only if strictly nearer; the depth then replaces
                  * the stored one. */
-                uint16_t z = depth_at(&plane, v0, p);
+                uint16_t z = (uint16_t)(depth_at(&plane, v0, p) >>
+                                        (16u - m->cfg.zbuf_bits));
                 if (!(z < m->zbuf[i])) {
                     continue;
                 }
@@ -413,8 +414,9 @@ static void run_batch(gpu_model *m, uint32_t tag)
                    GPU_MODEL_FB_PIXELS);
         }
         if (zclear) {
+            const uint16_t far = (uint16_t)((1u << m->cfg.zbuf_bits) - 1u);
             for (size_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
-                m->zbuf[i] = 0xFFFFu;
+                m->zbuf[i] = far;
             }
         }
         /* 4. Primitives in order; later ones overwrite earlier ones. */
@@ -450,11 +452,14 @@ static bool span_w_supported(unsigned w)
 void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
 {
     gpu_model_config c = { GPU_MODEL_DEFAULT_SPAN_W, GPU_MODEL_DEFAULT_LINES,
-                           GPU_MODEL_DEFAULT_ZBUF };
+                           GPU_MODEL_DEFAULT_ZBUF, GPU_MODEL_DEFAULT_ZBUF_BITS };
     if (cfg != NULL) {
         c = *cfg;
         if (!span_w_supported(c.span_w)) {
             c.span_w = GPU_MODEL_DEFAULT_SPAN_W;
+        }
+        if (c.zbuf_bits < 1u || c.zbuf_bits > 16u) {
+            c.zbuf_bits = GPU_MODEL_DEFAULT_ZBUF_BITS;
         }
     }
     /* Everything is zero at power-on: registers (RESET included), counters,
@@ -478,6 +483,8 @@ uint32_t gpu_model_caps(const gpu_model *m)
     }
     if (m->cfg.zbuf) {
         caps |= GPU_CAPS_ZBUF_MASK;
+        caps |= ((uint32_t)m->cfg.zbuf_bits << GPU_CAPS_ZBUF_BITS_LSB) &
+                GPU_CAPS_ZBUF_BITS_MASK;
     }
     return caps;
 }

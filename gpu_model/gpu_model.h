@@ -39,6 +39,7 @@
 #define GPU_MODEL_DEFAULT_SPAN_W GPU_DEFAULT_SPAN_W
 #define GPU_MODEL_DEFAULT_LINES  (GPU_DEFAULT_ENABLE_LINES != 0u)
 #define GPU_MODEL_DEFAULT_ZBUF   (GPU_DEFAULT_ENABLE_ZBUF != 0u)
+#define GPU_MODEL_DEFAULT_ZBUF_BITS GPU_DEFAULT_ZBUF_BITS
 
 /* The bits of CTRL the contract defines; CTRL keeps (and reads back) only
  * these, whatever the build options. */
@@ -54,11 +55,16 @@
  *   lines:  ENABLE_LINES; without it a line primitive sets ERR_KIND.
  *   zbuf:   ENABLE_ZBUF; without it CTRL_ZTEST / CTRL_ZCLEAR have no effect
  *           (they are still stored and read back) and zbuf[] is never touched.
+ *   zbuf_bits: ZBUF_BITS, the depth bits the buffer keeps, 1 .. 16 (contract
+ *           "Depth"; any other value, 0 included, is replaced by the default
+ *           16, as span_w's is); CAPS_ZBUF_BITS reports it with zbuf, 0
+ *           without.
  */
 typedef struct gpu_model_config {
     unsigned span_w;
     bool lines;
     bool zbuf;
+    unsigned zbuf_bits;
 } gpu_model_config;
 
 /*
@@ -121,9 +127,10 @@ typedef struct gpu_model {
     uint8_t fb[2][GPU_MODEL_FB_PIXELS];
 
     /* The depth buffer (contract "Depth"), row-major like fb, one buffer, not
-     * swapped.  0 at power-on (block RAM initial value, like the
-     * framebuffers), 0xFFFF after a CTRL_ZCLEAR.  Only used with cfg.zbuf;
-     * without it, it stays 0. */
+     * swapped: the kept depths zb = z >> (16 - cfg.zbuf_bits), 0 ..
+     * 2^zbuf_bits - 1.  0 at power-on (block RAM initial value, like the
+     * framebuffers), 2^zbuf_bits - 1 (0xFFFF at 16 bits) after a CTRL_ZCLEAR.
+     * Only used with cfg.zbuf; without it, it stays 0. */
     uint16_t zbuf[GPU_MODEL_FB_PIXELS];
 } gpu_model;
 
@@ -134,7 +141,8 @@ typedef struct gpu_model {
 void gpu_model_reset(gpu_model *m);
 
 /* Power-on state with the given build options (NULL: the defaults).  An
- * unsupported span_w (not 1, 4, 8 or 16) is replaced by 8. */
+ * unsupported span_w (not 1, 4, 8 or 16) is replaced by 8, a zbuf_bits
+ * outside 1 .. 16 by 16. */
 void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg);
 
 /* The CAPS register for m's build options. */
