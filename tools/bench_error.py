@@ -98,7 +98,7 @@ def run_config(build, frames, scene, key, rerun=True):
     work = os.path.join(build, "bench-error", scene, key)
     if rerun:
         cosim(build, work, scene, variant, sim)
-    return parse_log(work, frames, scene, key, variant), os.path.join(work, "frames")
+    return parse_log(work, frames, scene, key, variant, sim), os.path.join(work, "frames")
 
 
 def cosim(build, work, scene, variant, sim):
@@ -113,7 +113,7 @@ def cosim(build, work, scene, variant, sim):
             raise RuntimeError("%s-%s on %s: co-simulation failed, see %s/cosim.out" % (scene, variant, sim, work))
 
 
-def parse_log(work, frames, scene, key, variant):
+def parse_log(work, frames, scene, key, variant, sim):
     counts = {}
     with open(os.path.join(work, "uart.log")) as log:
         for line in log:
@@ -122,8 +122,12 @@ def parse_log(work, frames, scene, key, variant):
                 counts[int(m.group(1))] = (int(m.group(2)), int(m.group(3)))
     if sorted(counts) != list(range(frames)):
         raise RuntimeError("%s %s: expected frames 0..%d in %s/uart.log" % (scene, key, frames - 1, work))
-    if variant.endswith("-z") != ("depth buffer on" in open(os.path.join(work, "uart.log")).read()):
+    log = open(os.path.join(work, "uart.log")).read()
+    if variant.endswith("-z") != ("depth buffer on" in log):
         raise RuntimeError("%s %s: depth test on/off not as configured" % (scene, key))
+    bits = sim[len("sim-zb"):].split("-")[0] if sim.startswith("sim-zb") else "16"
+    if variant.endswith("-z") and "depth buffer on (FW_DEPTH_TEST, %s-bit depths)" % bits not in log:
+        raise RuntimeError("%s %s: the GPU does not report %s depth bits (CAPS_ZBUF_BITS)" % (scene, key, bits))
     return counts
 
 
