@@ -232,6 +232,8 @@ def summary(results, scenes):
 def notes(results, scenes):
     """Notes computed from the numbers, so that they cannot go stale."""
     out = []
+    if not all(k in CONFIGS for k in ("w1", "w4", "w16", "sp2", "sp0")):
+        return out  # --only: a partial run
     span_err = max(results[(s, k)]["differing"] for s in scenes for k in ("w1", "w4", "w16"))
     out.append("- span width: %s" % ("every frame identical to R's: the rasterizer is exact at every width"
                                       if span_err == 0 else "FRAMES DIFFER FROM R (a rasterizer bug)"))
@@ -494,7 +496,8 @@ def path_table(results, scenes, views, cost_views, mismatches):
                      "differing from E): %s; the default build %s" % (
                          name, ", ".join("%s (%.2f, %.1f)" % (PATH_CONFIGS[k][2], agg[k][0], agg[k][1])
                                          for k in sorted(front, key=lambda k: agg[k][0])),
-                         "lies on it" if "default" in front else "does NOT lie on it"))
+                         "lies on it" if "default" in front else
+                         "does NOT lie on it" if "default" in PATH_CONFIGS else "is not in this run"))
     return "\n".join(lines)
 
 
@@ -586,6 +589,20 @@ def check_metric(tool, work):
     return not failures
 
 
+def select(keys, ap):
+    """--only: keep R and the configurations named (CONFIGS, PATH_CONFIGS and the table rows)."""
+    unknown = [k for k in keys if k not in PATH_CONFIGS]
+    if unknown:
+        ap.error("--only: no configuration %s (known: %s)" % (", ".join(unknown), ", ".join(PATH_CONFIGS)))
+    keep = set(keys) | {"ref"}
+    for table in (CONFIGS, PATH_CONFIGS):
+        for k in [k for k in table if k not in keep]:
+            del table[k]
+    for knobs in (KNOBS, PATH_KNOBS):
+        rows = [(knob, [(st, k) for st, k in settings if k in keep]) for knob, settings in knobs]
+        knobs[:] = [(knob, settings) for knob, settings in rows if any(k != "ref" for _, k in settings)]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build")
@@ -597,8 +614,12 @@ def main():
                     help="camera paths of VIEWS views (the fw-path builds') against the exact reference")
     ap.add_argument("--cost-views", type=int, default=8, help="--path: views co-simulated for the costs")
     ap.add_argument("--keep", action="store_true", help="--path: reuse the finished runs of the last one")
+    ap.add_argument("--only", metavar="KEY,...",
+                    help="measure only these configurations (and R): a partial re-run, e.g. sin6,zb8")
     ap.add_argument("scenes", nargs="*")
     a = ap.parse_args()
+    if a.only:
+        select(a.only.split(","), ap)
     if a.check_metric:
         ok = check_metric(*a.check_metric)
         print("metric: 0 for identical images, the known sum for 2 changed pixels, sizes checked"
