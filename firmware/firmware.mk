@@ -222,6 +222,10 @@ FW_SP_VARIANTS += fixed-chip fixed-emul
 # (FW_RECIP_NEWTON_STEPS, math/fixed.h; default 1): bench-error's camera paths.
 $(foreach n,0 2,$(eval FW_BACKEND_DEFS_fixed-nr$(n) :=)$(eval FW_VARIANT_DEFS_fixed-nr$(n) := -DFW_RECIP_NEWTON_STEPS=$(n) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)))
 FW_SP_VARIANTS += fixed-nr0 fixed-nr2
+# float-sin6 / float-sin10: the float backend (R's) with a 64- or 1024-entry sine table instead of
+# 256 (FW_SIN_TABLE_BITS, math/fixed.h; both backends rotate with fx_sin): bench-error's sine rows.
+$(foreach n,6 10,$(eval FW_BACKEND_DEFS_float-sin$(n) := $(FW_BACKEND_DEFS_float))$(eval FW_VARIANT_DEFS_float-sin$(n) := -DFW_SIN_TABLE_BITS=$(n)))
+FW_SP_VARIANTS += float-sin6 float-sin10
 # -ffp-contract=off: no fused multiply-adds, so the float backend rounds identically on the host
 # and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
 # -fno-tree-loop-distribute-patterns: GCC would turn the pipeline's clearing loops (the sort's
@@ -395,7 +399,7 @@ FW_ERR_ELFS   :=
 $(foreach s,$(FW_SCENES),$(foreach v,fixed float,\
   $(eval $(call FW_ELF_RULES,$(FW_ERR_DIR)/$(s)-$(v).elf,$(s),$(v),$(FW_ERR_FRAMES),))\
   $(eval FW_ERR_ELFS += $(FW_ERR_DIR)/$(s)-$(v).elf)))
-$(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2,\
+$(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2 float-sin6 float-sin10,\
   $(eval $(call FW_ELF_RULES,$(FW_ERR_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_ERR_FRAMES),,-DFW_DEPTH_TEST=1))\
   $(eval FW_ERR_ELFS += $(FW_ERR_DIR)/$(s)-$(v)-z.elf)))
 
@@ -414,7 +418,7 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float,\
   $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v).elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS)))\
   $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/host-$(s)-$(v))\
   $(eval FW_PATH_ELFS += $(FW_PATH_DIR)/$(s)-$(v).elf)))
-$(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2 fixed-nr0 fixed-nr2,\
+$(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2 fixed-nr0 fixed-nr2 float-sin6 float-sin10,\
   $(eval $(call FW_HOST_RULES,$(FW_PATH_DIR)/host-$(s)-$(v)-z,$(s),$(v),$(FW_PATH_VIEWS),$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
   $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
   $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/host-$(s)-$(v)-z)\
@@ -426,7 +430,7 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2 fixed-nr0 f
 # one VGA frame (840,000 cycles) after a boot of ~2.4 M: <scene>-<variant>[-z]-<N>v.elf.
 FW_PATH_SOC_VIEWS := 1
 FW_PATH_SOC_ELFS  :=
-$(foreach s,$(FW_SCENES),$(foreach v,fixed float fixed-z float-z float-sp0-z float-sp2-z fixed-nr0-z fixed-nr2-z,\
+$(foreach s,$(FW_SCENES),$(foreach v,fixed float fixed-z float-z float-sp0-z float-sp2-z fixed-nr0-z fixed-nr2-z float-sin6-z float-sin10-z,\
   $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v)-$(FW_PATH_SOC_VIEWS)v.elf,$(s),$(v:-z=),$(FW_PATH_SOC_VIEWS),,\
     $(FW_PATH_DEFS)$(if $(filter %-z,$(v)), -DFW_DEPTH_TEST=1)))\
   $(eval FW_PATH_SOC_ELFS += $(FW_PATH_DIR)/$(s)-$(v)-$(FW_PATH_SOC_VIEWS)v.elf)))

@@ -14,6 +14,10 @@ of R, so its error is that knob's own; the row "default build" changes all of th
   sub-pixel bits  2 and 0 fraction bits kept in projected vertices (FW_SUBPIXEL_BITS, proj.h;
                   the switch also takes 3 and 1, left out here to keep the run short)
   span width      GPUs built with SPAN_W = 1, 4, 16 (the rasterizer is exact: error must be 0)
+  sine table      64 and 1024 entries per turn instead of 256 (FW_SIN_TABLE_BITS, math/fixed.h;
+                  every rotation and the scenes' generated shapes use it; the camera path does not)
+  depth bits      GPUs whose depth buffer keeps 12 and 8 of the 16 bits (ZBUF_BITS, contract
+                  "Depth"), the memory it saves in docs/accuracy-vs-cost.md
 
 Each configuration is co-simulated (QEMU -icount + the Verilator GPU, like `make bench-fw`) for
 FRAMES frames from boot, no keys; every number below is a mean over those frames.
@@ -71,6 +75,10 @@ CONFIGS = {
     "w1":      ("float-z",     "sim-z-w1",  "SPAN_W 1"),
     "w4":      ("float-z",     "sim-z-w4",  "SPAN_W 4"),
     "w16":     ("float-z",     "sim-z-w16", "SPAN_W 16"),
+    "sin6":    ("float-sin6-z", "sim-z-w8", "64 sine entries"),
+    "sin10":   ("float-sin10-z", "sim-z-w8", "1024 sine entries"),
+    "zb12":    ("float-z",     "sim-zb12-w8", "12 depth bits"),
+    "zb8":     ("float-z",     "sim-zb8-w8", "8 depth bits"),
     "default": ("fixed",       "sim-w8",    "default build"),
 }
 
@@ -80,6 +88,8 @@ KNOBS = [
     ("depth order", [("depth buffer (R)", "ref"), ("painter's sort", "painter")]),
     ("sub-pixel bits", [("4 (R)", "ref"), ("2", "sp2"), ("0", "sp0")]),
     ("span width", [("8 (R)", "ref"), ("1", "w1"), ("4", "w4"), ("16", "w16")]),
+    ("sine table entries", [("256 (R)", "ref"), ("64", "sin6"), ("1024", "sin10")]),
+    ("depth-buffer bits", [("16 (R)", "ref"), ("12", "zb12"), ("8", "zb8")]),
     ("default build", [("fixed, painter, 4 bits, SPAN_W 8", "default")]),
 ]
 
@@ -94,7 +104,7 @@ def run_config(build, frames, scene, key, rerun=True):
     work = os.path.join(build, "bench-error", scene, key)
     if rerun:
         cosim(build, work, scene, variant, sim)
-    return parse_log(work, frames, scene, key, variant), os.path.join(work, "frames")
+    return parse_log(work, frames, scene, key, variant, sim), os.path.join(work, "frames")
 
 
 def cosim(build, work, scene, variant, sim):
@@ -109,7 +119,7 @@ def cosim(build, work, scene, variant, sim):
             raise RuntimeError("%s-%s on %s: co-simulation failed, see %s/cosim.out" % (scene, variant, sim, work))
 
 
-def parse_log(work, frames, scene, key, variant):
+def parse_log(work, frames, scene, key, variant, sim):
     counts = {}
     with open(os.path.join(work, "uart.log")) as log:
         for line in log:
@@ -118,8 +128,12 @@ def parse_log(work, frames, scene, key, variant):
                 counts[int(m.group(1))] = (int(m.group(2)), int(m.group(3)))
     if sorted(counts) != list(range(frames)):
         raise RuntimeError("%s %s: expected frames 0..%d in %s/uart.log" % (scene, key, frames - 1, work))
-    if variant.endswith("-z") != ("depth buffer on" in open(os.path.join(work, "uart.log")).read()):
+    log = open(os.path.join(work, "uart.log")).read()
+    if variant.endswith("-z") != ("depth buffer on" in log):
         raise RuntimeError("%s %s: depth test on/off not as configured" % (scene, key))
+    bits = sim[len("sim-zb"):].split("-")[0] if sim.startswith("sim-zb") else "16"
+    if variant.endswith("-z") and "depth buffer on (FW_DEPTH_TEST, %s-bit depths)" % bits not in log:
+        raise RuntimeError("%s %s: the GPU does not report %s depth bits (CAPS_ZBUF_BITS)" % (scene, key, bits))
     return counts
 
 
@@ -179,7 +193,7 @@ def table(results, scenes, frames, soc_lines=()):
                     knob, setting, scene, r["differing"], 100.0 * r["differing"] / FB_PIXELS, r["mae"],
                     round(r["instr"]), round(r["cycles"]), soc_cell(r)))
     lines.append("")
-    lines.append("R = float, depth buffer, 4 sub-pixel bits, SPAN_W 8. Error against R's frame; means "
+    lines.append("R = float, depth buffer (16 bits), 4 sub-pixel bits, SPAN_W 8, 256 sine entries. Error against R's frame; means "
                  "over the first %d frames of each scene's default view; counts from co-simulation "
                  "(QEMU -icount, Verilator cycles)." % frames)
     lines.extend(notes(results, scenes))
@@ -208,7 +222,7 @@ def knob_ranges(results, scenes, knobs, error_columns):
             rs = [results[(sc, key)] for sc in scenes]
             refs = [results[(sc, "ref")] for sc in scenes]
             cells = [knob if key != "ref" else "reference R",
-                     setting if key != "ref" else "float, depth buffer, 4 bits, SPAN_W 8"]
+                     setting if key != "ref" else "float, depth buffer (16 bits), 4 bits, SPAN_W 8, 256 sine entries"]
             cells += [span([r[field] for r in rs], fmt) for _, field, fmt in error_columns]
             cells += [span([r[cost] / q[cost] for r, q in zip(rs, refs)], "%.2f") for cost in costs]
             lines.append("| %s |" % " | ".join(cells))
@@ -227,6 +241,8 @@ def summary(results, scenes):
 def notes(results, scenes):
     """Notes computed from the numbers, so that they cannot go stale."""
     out = []
+    if not all(k in CONFIGS for k in ("w1", "w4", "w16", "sp2", "sp0")):
+        return out  # --only: a partial run
     span_err = max(results[(s, k)]["differing"] for s in scenes for k in ("w1", "w4", "w16"))
     out.append("- span width: %s" % ("every frame identical to R's: the rasterizer is exact at every width"
                                       if span_err == 0 else "FRAMES DIFFER FROM R (a rasterizer bug)"))
@@ -248,7 +264,8 @@ def plot(results, scenes, path):
     import matplotlib.pyplot as plt
 
     markers = {"ref": "*", "fixed": "s", "painter": "D", "sp2": "v", "sp0": "^",
-               "w1": "1", "w4": "2", "w16": "3", "default": "o"}
+               "w1": "1", "w4": "2", "w16": "3", "default": "o", "sin6": "P", "sin10": "X",
+               "zb12": "p", "zb8": "h"}
     colours = dict(zip(scenes, ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown"]))
     panels = [("instr", "firmware instructions / frame (QEMU -icount)"),
               ("cycles", "GPU cycles / frame (Verilator, PERF_BUSY_CYCLES)")]
@@ -271,7 +288,7 @@ def plot(results, scenes, path):
     handles += [matplotlib.patches.Patch(color=colours[s], label=s) for s in scenes]
     fig.legend(handles=handles, loc="center right", fontsize=8, frameon=False)
     fig.suptitle("Pixel error against counted cost, one marker per configuration and scene "
-                 "(R = float, depth buffer, 4 sub-pixel bits, SPAN_W 8)", fontsize=10)
+                 "(R = float, 16-bit depth buffer, 4 sub-pixel bits, SPAN_W 8, 256 sine entries)", fontsize=10)
     fig.tight_layout(rect=(0, 0, 0.86, 0.95))
     fig.savefig(path, dpi=90)
 
@@ -307,6 +324,8 @@ def path_host_cmd(build, scene, key, frames_dir, dump_dir=None):
            "--span-w", sim.rsplit("-w", 1)[1]]
     if sim.startswith("sim-z"):
         cmd.append("--zbuf")
+    if sim.startswith("sim-zb"):  # sim-zb<bits>-w8: the depth buffer keeping <bits> bits
+        cmd += ["--zbuf-bits", sim[len("sim-zb"):].split("-")[0]]
     if dump_dir:
         cmd += ["--dump-scene", dump_dir]
     return cmd
@@ -322,11 +341,20 @@ def path_run(build, scene, key, views, cost_views, rerun):
     if rerun:
         shutil.rmtree(work, ignore_errors=True)
         os.makedirs(work)
-        dump = os.path.join(work, "scene") if key == "ref" else None
+        # Every configuration dumps its scenes, for the cameras (cameras.txt: every configuration
+        # must see the same views, app/cam_path.h); only R's dump is kept, for the exact reference.
+        dump = os.path.join(work, "scene" if key == "ref" else "scene-tmp")
         with open(os.path.join(work, "host.out"), "w") as out:
             if subprocess.run(path_host_cmd(build, scene, key, os.path.join(work, "frames"), dump),
                               stdout=out, stderr=subprocess.STDOUT).returncode != 0:
                 raise RuntimeError("%s %s: host run failed, see %s/host.out" % (scene, key, work))
+        with open(os.path.join(work, "cameras.txt"), "w") as cams:
+            for name in sorted(os.listdir(dump)):
+                with open(os.path.join(dump, name)) as f:
+                    cams.write(name + " " + next((l for l in f if l.startswith("camera ")), "none\n"))
+        if key != "ref":
+            shutil.rmtree(dump)
+            dump = None
         if dump:
             os.makedirs(os.path.join(work, "exact"))
             subprocess.run([os.path.join(build, "tools", "exact_ref"), "--dir", dump,
@@ -550,6 +578,11 @@ def path_measure(build, scenes, views, cost_views, jobs, rerun):
     for scene, key in todo:
         work, counts = runs[(scene, key)]
         exact = os.path.join(runs[(scene, "ref")][0], "exact")
+        with open(os.path.join(work, "cameras.txt")) as a, \
+                open(os.path.join(runs[(scene, "ref")][0], "cameras.txt")) as b:
+            cams, ref_cams = a.read(), b.read()
+        if cams != ref_cams or len(cams.splitlines()) != views:
+            mismatches.append("%s %s: cameras differ from R's (%s/cameras.txt)" % (scene, key, work))
         diff = [png_diff(tool, os.path.join(exact, "%04d.png" % f),
                          os.path.join(work, "frames", "%04d.png" % f)) for f in range(views)]
         for f in range(cost_views):  # the host frames are the co-simulated ones
@@ -628,8 +661,9 @@ def path_table(results, scenes, views, cost_views, mismatches, soc_lines=()):
                  "camera path (firmware/app/cam_path.h, seed FW_PATH_SEED), frames from the host build "
                  "through the golden model; costs means over the first %d views, co-simulated (QEMU "
                  "-icount, Verilator cycles)." % (views, cost_views))
-    lines.append("- host frames against the co-simulated ones on those views: %s" % (
-        "identical" if not mismatches else "DIFFER: " + "; ".join(mismatches[:5])))
+    lines.append("- host frames against the co-simulated ones on those views, and every "
+                 "configuration's cameras (eye, yaw, pitch of all %d views) against R's: %s" % (
+                     views, "identical" if not mismatches else "DIFFER: " + "; ".join(mismatches[:5])))
     lines.extend(soc_lines)
     costs = [("instr", "fw instructions"), ("cycles", "GPU cycles")]
     if "soc" in results[(scenes[0], "ref")]:
@@ -641,7 +675,8 @@ def path_table(results, scenes, views, cost_views, mismatches, soc_lines=()):
                      "differing from E): %s; the default build %s" % (
                          name, ", ".join("%s (%.2f, %.1f)" % (PATH_CONFIGS[k][2], agg[k][0], agg[k][1])
                                          for k in sorted(front, key=lambda k: agg[k][0])),
-                         "lies on it" if "default" in front else "does NOT lie on it"))
+                         "lies on it" if "default" in front else
+                         "does NOT lie on it" if "default" in PATH_CONFIGS else "is not in this run"))
     return "\n".join(lines)
 
 
@@ -658,7 +693,8 @@ def path_plot(results, scenes, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     markers = {"ref": "*", "fixed": "s", "painter": "D", "sp2": "v", "sp0": "^",
-               "w1": "1", "w4": "2", "w16": "3", "default": "o", "nr0": "<", "nr2": ">"}
+               "w1": "1", "w4": "2", "w16": "3", "default": "o", "nr0": "<", "nr2": ">",
+               "sin6": "P", "sin10": "X", "zb12": "p", "zb8": "h"}
     panels = [("instr", "firmware instructions / frame, relative to R (QEMU -icount)"),
               ("cycles", "GPU cycles / frame, relative to R (Verilator)")]
     if "soc" in results[(scenes[0], "ref")]:
@@ -735,6 +771,20 @@ def check_metric(tool, work):
     return not failures
 
 
+def select(keys, ap):
+    """--only: keep R and the configurations named (CONFIGS, PATH_CONFIGS and the table rows)."""
+    unknown = [k for k in keys if k not in PATH_CONFIGS]
+    if unknown:
+        ap.error("--only: no configuration %s (known: %s)" % (", ".join(unknown), ", ".join(PATH_CONFIGS)))
+    keep = set(keys) | {"ref"}
+    for table in (CONFIGS, PATH_CONFIGS):
+        for k in [k for k in table if k not in keep]:
+            del table[k]
+    for knobs in (KNOBS, PATH_KNOBS):
+        rows = [(knob, [(st, k) for st, k in settings if k in keep]) for knob, settings in knobs]
+        knobs[:] = [(knob, settings) for knob, settings in rows if any(k != "ref" for _, k in settings)]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build")
@@ -753,8 +803,12 @@ def main():
     ap.add_argument("--soc-views", type=int, default=1, help="--socsim: path views per configuration")
     ap.add_argument("--soc-span-scenes", default="tetra cubes",
                     help="--socsim sim-z-w1=...: the scenes of the span-width check")
+    ap.add_argument("--only", metavar="KEY,...",
+                    help="measure only these configurations (and R): a partial re-run, e.g. sin6,zb8")
     ap.add_argument("scenes", nargs="*")
     a = ap.parse_args()
+    if a.only:
+        select(a.only.split(","), ap)
     if a.check_metric:
         ok = check_metric(*a.check_metric)
         print("metric: 0 for identical images, the known sum for 2 changed pixels, sizes checked"
