@@ -224,7 +224,7 @@ $(foreach n,0 2,$(eval FW_BACKEND_DEFS_fixed-nr$(n) :=)$(eval FW_VARIANT_DEFS_fi
 FW_SP_VARIANTS += fixed-nr0 fixed-nr2
 # float-sin6 / float-sin10: the float backend (R's) with a 64- or 1024-entry sine table instead of
 # 256 (FW_SIN_TABLE_BITS, math/fixed.h; both backends rotate with fx_sin): bench-error's sine rows.
-$(foreach n,6 10,$(eval FW_BACKEND_DEFS_float-sin$(n) := $(FW_BACKEND_DEFS_float))$(eval FW_VARIANT_DEFS_float-sin$(n) := -DFW_SIN_TABLE_BITS=$(n)))
+$(foreach n,6 10,$(eval FW_BACKEND_DEFS_float-sin$(n) := $(FW_BACKEND_DEFS_float))$(eval FW_VARIANT_DEFS_float-sin$(n) := -DFW_SIN_TABLE_BITS=$(n) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)))
 FW_SP_VARIANTS += float-sin6 float-sin10
 # -ffp-contract=off: no fused multiply-adds, so the float backend rounds identically on the host
 # and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
