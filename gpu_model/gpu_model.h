@@ -39,6 +39,9 @@
 #define GPU_MODEL_DEFAULT_SPAN_W GPU_DEFAULT_SPAN_W
 #define GPU_MODEL_DEFAULT_LINES  (GPU_DEFAULT_ENABLE_LINES != 0u)
 #define GPU_MODEL_DEFAULT_ZBUF   (GPU_DEFAULT_ENABLE_ZBUF != 0u)
+#define GPU_MODEL_DEFAULT_WMASK  (GPU_DEFAULT_ENABLE_WMASK != 0u)
+/* The bits of FB_WRITE_MASK the contract defines (the planes). */
+#define GPU_MODEL_WMASK_BITS (GPU_WMASK_LO_MASK | GPU_WMASK_HI_MASK)
 
 /* The bits of CTRL the contract defines; CTRL keeps (and reads back) only
  * these, whatever the build options. */
@@ -54,11 +57,15 @@
  *   lines:  ENABLE_LINES; without it a line primitive sets ERR_KIND.
  *   zbuf:   ENABLE_ZBUF; without it CTRL_ZTEST / CTRL_ZCLEAR have no effect
  *           (they are still stored and read back) and zbuf[] is never touched.
+ *   wmask:  ENABLE_WMASK; without it FB_WRITE_MASK ignores writes and reads 3
+ *           (every batch writes all 8 bits of a pixel).  A config written
+ *           before the option existed ({span_w, lines, zbuf}) leaves it false.
  */
 typedef struct gpu_model_config {
     unsigned span_w;
     bool lines;
     bool zbuf;
+    bool wmask;
 } gpu_model_config;
 
 /*
@@ -84,6 +91,8 @@ typedef struct gpu_model {
         uint32_t doorbell;    /* reads back the last tag written */
         uint32_t reset;       /* RESET: reads back the last value written; no
                                * other effect, as no batch is ever running */
+        uint32_t fb_write_mask; /* FB_WRITE_MASK, its two plane bits; 3 after
+                                 * reset and always 3 without cfg.wmask */
     } regs;
 
     /* Read-only status registers. */
