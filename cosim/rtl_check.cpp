@@ -172,8 +172,9 @@ int rtl_check_main(int argc, char **argv)
         write(GPU_WIN_REGS + GPU_REG_TRI_COUNT, nt);
         write(GPU_WIN_REGS + GPU_REG_CLEAR_COLOR, r.below(256));
         // The write mask on some batches: any of the four plane sets (none, low, high, both), the
-        // clear included, with junk in the undefined bits; both planes on the others.
-        const uint32_t planes = r.chance(40) ? r.below(4) : 3u;
+        // clear included, with junk in the undefined bits; both planes on the others, and on the
+        // clear after a RESET probe, which must overwrite every bit the aborted batch left.
+        const uint32_t planes = (r.chance(40) && !clear_forced) ? r.below(4) : 3u;
         write(GPU_WIN_REGS + GPU_REG_FB_WRITE_MASK, planes | (r.below(64) << 2));
         masked += (wmask && planes != 3u) ? 1u : 0u;
         uint32_t ctrl = (clear ? GPU_CTRL_CLEAR_MASK : 0) | (swap ? GPU_CTRL_SWAP_MASK : 0);
