@@ -28,7 +28,7 @@ static void test_caps(void)
     /* CAPS = LINES [0] | ZBUF [1] | SPAN_W [15:8]. */
     CHECK_EQ(caps_of(1, false, false), 0x0100u);
     CHECK_EQ(caps_of(4, true, false), 0x0401u);
-    CHECK_EQ(caps_of(8, true, false), 0x0801u); /* the RTL defaults */
+    CHECK_EQ(caps_of(8, true, false), 0x0801u); /* the RTL defaults, but the mask */
     CHECK_EQ(caps_of(8, false, true), 0x0802u);
     CHECK_EQ(caps_of(16, true, true), 0x1003u);
     CHECK_EQ(caps_of(16, false, false), 0x1000u);
@@ -48,14 +48,15 @@ static void test_caps(void)
     CHECK_EQ(m->cfg.span_w, 16);
     CHECK(!m->cfg.lines);
     CHECK(m->cfg.zbuf);
-    /* NULL: the defaults; gpu_model_reset: the defaults again. */
+    /* NULL: the defaults (SPAN_W 8, lines, the write mask [2]); gpu_model_reset: the defaults
+     * again. */
     gpu_model_reset_config(m, NULL);
-    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0801u);
-    gpu_model_config cfg = { 1, false, true };
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0805u);
+    gpu_model_config cfg = { 1, false, true, false };
     gpu_model_reset_config(m, &cfg);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0102u);
     gpu_model_reset(m);
-    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0801u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0805u);
     CHECK_EQ(m->cfg.span_w, 8);
     CHECK(m->cfg.lines);
     CHECK(!m->cfg.zbuf);
@@ -328,9 +329,59 @@ static void test_spans(void)
     }
 }
 
+/* ------------------------------------------------------- FB_WRITE_MASK */
+
+/* The write mask (contract FB_WRITE_MASK): 3 after reset; keeps only its two plane bits; ignored
+ * without the option; a clear and a triangle write only the chosen nibbles of each pixel. */
+static void test_write_mask(void)
+{
+    static const int32_t tri[6] = {16 * 10, 16 * 10, 16 * 10, 16 * 50, 16 * 50, 16 * 10};
+    gpu_model *m = test_new_model();
+    gpu_model *plain = test_new_model_cfg(8, true, false);
+
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS) & GPU_CAPS_WMASK_MASK, GPU_CAPS_WMASK_MASK);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_FB_WRITE_MASK), 3u);
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, 0xFFFFFFF1u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_FB_WRITE_MASK), GPU_WMASK_LO_MASK);
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, 0u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_FB_WRITE_MASK), 0u);
+    /* Without the option the register stays 3 and every bit is written. */
+    CHECK_EQ(gpu_model_read(plain, GPU_REG_CAPS) & GPU_CAPS_WMASK_MASK, 0u);
+    gpu_model_write(plain, GPU_REG_FB_WRITE_MASK, 1u);
+    CHECK_EQ(gpu_model_read(plain, GPU_REG_FB_WRITE_MASK), 3u);
+
+    /* Both planes: clear to 0x5A; then the high plane only: a clear to 0xC3 gives 0xCA; then
+     * the low plane only, a triangle of colour 0x71 inside: 0xC1 there, 0xCA elsewhere; mask 0:
+     * a clear changes nothing. PERF_PIXELS counts the covered pixels whatever the mask. */
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, 3u);
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 3, 0, 0, 0x5Au, 100);
+    CHECK_EQ(test_back_px(m, 0, 0), 0x5Au);
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, GPU_WMASK_HI_MASK);
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 3, 0, 0, 0xC3u, 101);
+    CHECK_EQ(test_back_px(m, 0, 0), 0xCAu);
+    CHECK_EQ(test_back_px(m, 319, 239), 0xCAu);
+    for (uint32_t i = 0; i < 3; i++) {
+        test_set_vtx(m, i, tri[2 * i], tri[2 * i + 1]);
+    }
+    test_set_prim(m, 0, 0, 1, 2, 0x71u, GPU_PRIM_KIND_TRI);
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, GPU_WMASK_LO_MASK);
+    test_batch(m, 0, 0, 3, 0, 1, 0, 102);
+    CHECK_EQ(test_back_px(m, 15, 15), 0xC1u);
+    CHECK_EQ(test_back_px(m, 5, 5), 0xCAu);
+    CHECK(gpu_model_read(m, GPU_REG_PERF_PIXELS) > 0u);
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, 0u);
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 3, 0, 1, 0x00u, 103);
+    CHECK_EQ(test_back_px(m, 15, 15), 0xC1u);
+    CHECK_EQ(test_back_px(m, 5, 5), 0xCAu);
+    CHECK(gpu_model_read(m, GPU_REG_PERF_PIXELS) > 0u);
+    free(m);
+    free(plain);
+}
+
 void test_config(void)
 {
     test_caps();
+    test_write_mask();
     test_ctrl();
     test_reset_reg();
     test_spans();
