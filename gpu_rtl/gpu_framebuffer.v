@@ -21,8 +21,8 @@
 // not write keep their contents without being read (no read-modify-write, no stall), the clear
 // included. Without it the lanes are the 8-bit pixels and wr_planes is ignored (today's one plane).
 // Cost in block RAM: a 4-bit lane needs a write enable of its own, which the ECP5's 18/36-bit
-// block RAM modes give per 9 bits only, so yosys maps the lanes to narrow modes; docs/wmask.md has
-// the measured EBR and LUT counts per span width.
+// block RAM modes give per 9 bits only, so yosys maps the lanes to narrower modes; README.md ("The
+// anaglyph on the write mask") has the measured EBR and LUT counts.
 //
 // Block RAM economy: a bank of GPU_FB_PIXELS / SPAN_W words is not a multiple of the 1024-word depth
 // 36 Kb block RAMs come in, and a tool that rounds it up wastes a whole column of them (20 instead of
