@@ -17,7 +17,8 @@
 //
 // Write mask (ENABLE_WMASK): a pixel is two 4-bit planes, bits [3:0] (plane 0) and [7:4] (plane
 // 1), each with its own write enable: the RAM's lanes are 4 bits, and lane 2i + p of a word (pixel
-// i's plane p) is written when wr_mask[i] and wr_planes[p] are both set. The planes a batch does
+// i's plane p) is written when wr_mask[i] and wr_planes[p] are both set; both banks then share one
+// RAM (g_merged, below) instead of the main + tail split. The planes a batch does
 // not write keep their contents without being read (no read-modify-write, no stall), the clear
 // included. Without it the lanes are the 8-bit pixels and wr_planes is ignored (today's one plane).
 // Cost in block RAM: a 4-bit lane needs a write enable of its own, which the ECP5's 18/36-bit
@@ -87,53 +88,63 @@ module gpu_framebuffer #(
         end
     end
 
-    // The RAMs' lane enables: per pixel, or per pixel and plane.
-    wire [LANES-1:0] lane_mask;
-    genvar lane;
+    wire [SPAN_W*8-1:0] word;  // the read word, one clk_pix cycle after rd_en
+
+    genvar lane, bank;
     generate
-        if (ENABLE_WMASK != 0) begin : g_planes
+        if (ENABLE_WMASK != 0) begin : g_merged
+            // Both banks in one RAM of 2 x WORDS words, bank b at words [b * WORDS, (b + 1) *
+            // WORDS): a 4-bit lane is then a column 2 x WORDS deep, which yosys maps to 4K x 4
+            // block RAMs with less rounding than two columns of WORDS (19200 nibbles = 4.7 blocks
+            // at SPAN_W = 8: 5 per lane and plane, 80 in all, where two banks apart take 3 + 3
+            // and a tail; README.md has the counts). The write port addresses the back bank, the
+            // read port the front one: never the same word but for the blanking reads after a swap.
+            localparam integer MAW = $clog2(2 * WORDS);
+            wire [LANES-1:0] lane_mask;
             for (lane = 0; lane < SPAN_W; lane = lane + 1) begin : g_lane
                 assign lane_mask[2 * lane]     = wr_mask[lane] && wr_planes[0];
                 assign lane_mask[2 * lane + 1] = wr_mask[lane] && wr_planes[1];
             end
-        end else begin : g_pixels
-            assign lane_mask = wr_mask;
-            wire unused_planes = |wr_planes;
-        end
-    endgenerate
-
-    wire [SPAN_W*8-1:0] main_rd_data [0:1];
-    wire [SPAN_W*8-1:0] tail_rd_data [0:1];
-
-    genvar bank;
-    generate
-        for (bank = 0; bank < 2; bank = bank + 1) begin : g_bank
-            // Bank b is the back bank (written) when front is !b, and the front bank (read) when b.
-            wire wr_this = wr_en && (front_q != bank[0]);
-            wire rd_this = rd_en && (front_pix == bank[0]);
-            gpu_ram #(.DEPTH(MAIN_WORDS), .WIDTH(SPAN_W * 8), .LANES(LANES)) u_main (
+            wire [MAW-1:0] wr_word = front_q ? MAW'(wr_addr) : MAW'(wr_addr) + MAW'(WORDS);
+            wire [MAW-1:0] rd_word_m = front_pix ? MAW'(rd_word) + MAW'(WORDS) : MAW'(rd_word);
+            gpu_ram #(.DEPTH(2 * WORDS), .WIDTH(SPAN_W * 8), .LANES(LANES)) u_both (
                 .wr_clk(clk), .rd_clk(clk_pix),
-                .wr_en(wr_this && !wr_in_tail), .wr_addr($clog2(MAIN_WORDS)'(wr_addr)),
-                .wr_data(wr_data), .wr_mask(lane_mask),
-                .rd_en(rd_this && !rd_in_tail), .rd_addr($clog2(MAIN_WORDS)'(rd_word)),
-                .rd_data(main_rd_data[bank])
+                .wr_en(wr_en), .wr_addr(wr_word), .wr_data(wr_data), .wr_mask(lane_mask),
+                .rd_en(rd_en), .rd_addr(rd_word_m), .rd_data(word)
             );
-            if (TAIL_WORDS > 0) begin : g_tail
-                localparam integer TAW = (TAIL_WORDS > 1) ? $clog2(TAIL_WORDS) : 1;
-                gpu_ram #(.DEPTH(TAIL_WORDS), .WIDTH(SPAN_W * 8), .LANES(LANES)) u_tail (
+            wire unused_split = rd_bank_q | rd_tail_q | wr_in_tail | rd_in_tail;
+        end else begin : g_split
+            wire [SPAN_W*8-1:0] main_rd_data [0:1];
+            wire [SPAN_W*8-1:0] tail_rd_data [0:1];
+            wire unused_planes = |wr_planes;
+            for (bank = 0; bank < 2; bank = bank + 1) begin : g_bank
+                // Bank b is the back bank (written) when front is !b, and the front bank (read) when b.
+                wire wr_this = wr_en && (front_q != bank[0]);
+                wire rd_this = rd_en && (front_pix == bank[0]);
+                gpu_ram #(.DEPTH(MAIN_WORDS), .WIDTH(SPAN_W * 8), .LANES(SPAN_W)) u_main (
                     .wr_clk(clk), .rd_clk(clk_pix),
-                    .wr_en(wr_this && wr_in_tail), .wr_addr(TAW'(wr_addr - WAW'(MAIN_WORDS))),
-                    .wr_data(wr_data), .wr_mask(lane_mask),
-                    .rd_en(rd_this && rd_in_tail), .rd_addr(TAW'(rd_word - WAW'(MAIN_WORDS))),
-                    .rd_data(tail_rd_data[bank])
+                    .wr_en(wr_this && !wr_in_tail), .wr_addr($clog2(MAIN_WORDS)'(wr_addr)),
+                    .wr_data(wr_data), .wr_mask(wr_mask),
+                    .rd_en(rd_this && !rd_in_tail), .rd_addr($clog2(MAIN_WORDS)'(rd_word)),
+                    .rd_data(main_rd_data[bank])
                 );
-            end else begin : g_no_tail
-                assign tail_rd_data[bank] = {(SPAN_W * 8){1'b0}};
+                if (TAIL_WORDS > 0) begin : g_tail
+                    localparam integer TAW = (TAIL_WORDS > 1) ? $clog2(TAIL_WORDS) : 1;
+                    gpu_ram #(.DEPTH(TAIL_WORDS), .WIDTH(SPAN_W * 8), .LANES(SPAN_W)) u_tail (
+                        .wr_clk(clk), .rd_clk(clk_pix),
+                        .wr_en(wr_this && wr_in_tail), .wr_addr(TAW'(wr_addr - WAW'(MAIN_WORDS))),
+                        .wr_data(wr_data), .wr_mask(wr_mask),
+                        .rd_en(rd_this && rd_in_tail), .rd_addr(TAW'(rd_word - WAW'(MAIN_WORDS))),
+                        .rd_data(tail_rd_data[bank])
+                    );
+                end else begin : g_no_tail
+                    assign tail_rd_data[bank] = {(SPAN_W * 8){1'b0}};
+                end
             end
+            assign word = rd_tail_q ? tail_rd_data[rd_bank_q] : main_rd_data[rd_bank_q];
         end
     endgenerate
 
-    wire [SPAN_W*8-1:0] word = rd_tail_q ? tail_rd_data[rd_bank_q] : main_rd_data[rd_bank_q];
     assign front   = front_q;
     assign rd_data = word[rd_lane_q * 8 +: 8];
 endmodule
