@@ -19,6 +19,7 @@
 #define GPU_DEFAULT_ENABLE_LINES     1u  /* Line primitives (CAPS_LINES); without them a line sets ERR_KIND. */
 #define GPU_DEFAULT_ENABLE_ZBUF      0u  /* 16-bit depth buffer (CAPS_ZBUF); without it CTRL_ZTEST and CTRL_ZCLEAR have no effect. */
 #define GPU_DEFAULT_ENABLE_WMASK     1u  /* Framebuffer write mask (CAPS_WMASK): each pixel's two 4-bit planes have their own write enables, FB_WRITE_MASK chooses the planes a batch writes; without it every batch writes all 8 bits and FB_WRITE_MASK reads 3. */
+#define GPU_DEFAULT_ZBUF_BITS        16u  /* Depth bits the depth buffer keeps, 1 to 16 (CAPS_ZBUF_BITS): the top ZBUF_BITS bits of each depth are stored and compared; fewer bits, less block RAM. */
 
 /* Bus windows: byte offset and size from the GPU base. */
 #define GPU_WIN_REGS                 0x00000u  /* Registers, 32-bit words. */
@@ -107,6 +108,8 @@
 #define GPU_WMASK_LO_MASK            0x00000001u
 #define GPU_WMASK_HI_LSB             1u  /* in FB_WRITE_MASK: Write the high plane, bits [7:4] of each pixel's palette index (the anaglyph's left eye). */
 #define GPU_WMASK_HI_MASK            0x00000002u
+#define GPU_CAPS_ZBUF_BITS_LSB       16u  /* in CAPS: Depth bits the depth buffer keeps (1 to 16; see Depth); 0 without CAPS_ZBUF. */
+#define GPU_CAPS_ZBUF_BITS_MASK      0x001F0000u
 #define GPU_ERR_VTX_INDEX_LSB        0u  /* in ERRORS: A primitive named a vertex index >= VTX_COUNT; that primitive was skipped. */
 #define GPU_ERR_VTX_INDEX_MASK       0x00000001u
 #define GPU_ERR_COUNT_LSB            1u  /* in ERRORS: VTX_BASE+VTX_COUNT > VTX_CAP or TRI_BASE+TRI_COUNT > TRI_CAP; the whole batch was skipped (no clear, no draw; a requested swap still happens). */

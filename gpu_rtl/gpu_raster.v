@@ -17,6 +17,7 @@ module gpu_raster #(
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
+    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer WORDS = gpu_pkg::GPU_FB_PIXELS / SPAN_W,   // spans in a frame
@@ -110,7 +111,7 @@ module gpu_raster #(
     // The walker does not start on a descriptor until the clear is over (the setup may run ahead).
     wire walk_enable = state_q == S_DRAW || state_q == S_DRAIN;
 
-    gpu_span_walker #(.SPAN_W(SPAN_W), .ENABLE_ZBUF(ENABLE_ZBUF)) u_walker (
+    gpu_span_walker #(.SPAN_W(SPAN_W), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS)) u_walker (
         .clk(clk), .rst(pipe_rst),
         .in_valid(desc_valid && walk_enable), .in_ready(walker_ready), .in_desc(desc), .ztest(ztest),
         .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data),

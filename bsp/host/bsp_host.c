@@ -31,7 +31,7 @@ const char *bsp_host_dump_dir(void)
 
 void bsp_init(void)
 {
-    gpu_model_config mc;
+    gpu_model_config mc = {0}; /* capacities 0: the contract's, the full-size GPU */
 
     if (host_gpu == NULL) {
         host_gpu = malloc(sizeof *host_gpu);
@@ -44,6 +44,7 @@ void bsp_init(void)
     mc.lines = host_cfg.lines;
     mc.zbuf = host_cfg.zbuf;
     mc.wmask = !host_cfg.no_wmask;
+    mc.zbuf_bits = host_cfg.zbuf_bits;
     gpu_model_reset_config(host_gpu, &mc);
     setvbuf(stdout, NULL, _IOLBF, 0);
 }

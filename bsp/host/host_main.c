@@ -2,8 +2,8 @@
  * host_main.c — command line of the host build: the firmware's frame loop (app_run) on Linux,
  * rendering through the golden model.
  *
- *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--no-wmask] [--span-w N]
- *           [--model FILE] [--dump-scene DIR]
+ *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--zbuf-bits N] [--no-wmask]
+ *           [--span-w N] [--model FILE] [--dump-scene DIR]
  *
  *   --frames DIR      write each swapped frame as DIR/NNNN.png (as gpusim cosim does)
  *   --keys-at N:TEXT  type TEXT just before doorbell N (1 = first) is serviced, byte for byte
@@ -11,6 +11,7 @@
  *   --no-lines        model a GPU built without line primitives (CAPS_LINES = 0)
  *   --zbuf            model a GPU built with the depth buffer (CAPS_ZBUF = 1)
  *   --no-wmask        model a GPU built without the framebuffer write mask (CAPS_WMASK = 0)
+ *   --zbuf-bits N     the depth bits its buffer keeps (ZBUF_BITS, CAPS_ZBUF_BITS: 1 .. 16; default 16)
  *   --span-w N        SPAN_W the model reports (1, 4, 8, 16; default 8)
  *   --dump-scene DIR  write each frame's scene after its update as DIR/NNNN.scene: world-space
  *                     triangles with their normals and materials, light, camera, palette (the
@@ -50,7 +51,7 @@ static int host_load_model(const char *path)
 static int host_usage(void)
 {
     fprintf(stderr, "usage: fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] "
-                    "[--no-wmask] [--span-w N] [--model FILE] [--dump-scene DIR]\n");
+                    "[--zbuf-bits N] [--no-wmask] [--span-w N] [--model FILE] [--dump-scene DIR]\n");
     return 2;
 }
 
@@ -62,6 +63,7 @@ int main(int argc, char **argv)
     cfg.span_w = 8;
     cfg.lines = true;
     cfg.zbuf = false;
+    cfg.zbuf_bits = 16;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const int has_value = i + 1 < argc;
@@ -93,6 +95,15 @@ int main(int argc, char **argv)
             cfg.zbuf = true;
         } else if (strcmp(a, "--no-wmask") == 0) {
             cfg.no_wmask = true;
+        } else if (strcmp(a, "--zbuf-bits") == 0 && has_value) {
+            char *end;
+            const unsigned long bits = strtoul(argv[++i], &end, 10);
+
+            if (*argv[i] == '\0' || *end != '\0' || bits < 1 || bits > 16) {
+                fprintf(stderr, "fw-host: --zbuf-bits wants 1 .. 16, got '%s'\n", argv[i]);
+                return 2;
+            }
+            cfg.zbuf_bits = (unsigned)bits;
         } else if (strcmp(a, "--dump-scene") == 0 && has_value) {
             cfg.dump_dir = argv[++i];
             if (mkdir(cfg.dump_dir, 0755) != 0) {

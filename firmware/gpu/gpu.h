@@ -65,6 +65,12 @@ static inline bool gpu_caps_wmask(uint32_t caps)
     return (caps & GPU_CAPS_WMASK_MASK) != 0u;
 }
 
+/* The depth bits the GPU's depth buffer keeps (contract "Depth": 1 .. 16; 0 without one). */
+static inline uint32_t gpu_caps_zbuf_bits(uint32_t caps)
+{
+    return (caps & GPU_CAPS_ZBUF_BITS_MASK) >> GPU_CAPS_ZBUF_BITS_LSB;
+}
+
 /* What the device reports about itself (read by gpu_init). */
 struct gpu_info {
     uint32_t id;

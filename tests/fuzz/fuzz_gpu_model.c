@@ -176,7 +176,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static const unsigned spans[] = {1u, 4u, 8u, 16u, 3u, 0u};
     struct reader r = {data, size};
-    gpu_model_config cfg;
+    gpu_model_config cfg = {0}; /* capacities 0: the contract's, which the checks below assume */
     uint32_t doorbells = 0;
     gpu_model *m;
 
@@ -192,12 +192,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     cfg.lines = (opt & 0x08u) != 0u;
     cfg.zbuf = (opt & 0x10u) != 0u;
     cfg.wmask = (opt & 0x40u) != 0u;
+    cfg.zbuf_bits = (const unsigned[]){16u, 8u, 12u, 0u}[opt >> 6];  /* 0: replaced by 16 */
     gpu_model_reset_config(m, (opt & 0x20u) ? &cfg : NULL);
     if ((opt & 0x20u) == 0u) {
         REQUIRE(m->cfg.span_w == 8u && m->cfg.lines && !m->cfg.zbuf, "default options");
     } else {
         REQUIRE(m->cfg.span_w == ((cfg.span_w == 3u || cfg.span_w == 0u) ? 8u : cfg.span_w),
                 "span width %u", m->cfg.span_w);
+        REQUIRE(m->cfg.zbuf_bits == (cfg.zbuf_bits == 0u ? 16u : cfg.zbuf_bits), "zbuf bits %u",
+                m->cfg.zbuf_bits);
     }
     REQUIRE(((gpu_model_caps(m) & GPU_CAPS_SPAN_W_MASK) >> GPU_CAPS_SPAN_W_LSB) == m->cfg.span_w,
             "CAPS_SPAN_W");

@@ -25,12 +25,13 @@ static uint32_t caps_of(unsigned span_w, bool lines, bool zbuf)
 
 static void test_caps(void)
 {
-    /* CAPS = LINES [0] | ZBUF [1] | SPAN_W [15:8]. */
+    /* CAPS = LINES [0] | ZBUF [1] | SPAN_W [15:8] | ZBUF_BITS [20:16] (16,
+     * the default, with the depth buffer; 0 without). */
     CHECK_EQ(caps_of(1, false, false), 0x0100u);
     CHECK_EQ(caps_of(4, true, false), 0x0401u);
     CHECK_EQ(caps_of(8, true, false), 0x0801u); /* the RTL defaults, but the mask */
-    CHECK_EQ(caps_of(8, false, true), 0x0802u);
-    CHECK_EQ(caps_of(16, true, true), 0x1003u);
+    CHECK_EQ(caps_of(8, false, true), 0x100802u);
+    CHECK_EQ(caps_of(16, true, true), 0x101003u);
     CHECK_EQ(caps_of(16, false, false), 0x1000u);
     /* Field by field through the generated masks. */
     uint32_t c = caps_of(4, false, true);
@@ -41,7 +42,7 @@ static void test_caps(void)
     /* An unsupported span width falls back to the default 8. */
     CHECK_EQ(caps_of(3, false, false), 0x0800u);
     CHECK_EQ(caps_of(0, true, false), 0x0801u);
-    CHECK_EQ(caps_of(32, false, true), 0x0802u);
+    CHECK_EQ(caps_of(32, false, true), 0x100802u);
     CHECK_EQ(caps_of(256 + 4, false, false), 0x0800u);
 
     gpu_model *m = test_new_model_cfg(16, false, true);
@@ -52,9 +53,9 @@ static void test_caps(void)
      * again. */
     gpu_model_reset_config(m, NULL);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0805u);
-    gpu_model_config cfg = { 1, false, true, false };
+    gpu_model_config cfg = { 1, false, true, 0, 0, 12, false };
     gpu_model_reset_config(m, &cfg);
-    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0102u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0C0102u);
     gpu_model_reset(m);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0805u);
     CHECK_EQ(m->cfg.span_w, 8);
@@ -66,6 +67,7 @@ static void test_caps(void)
     cfg.span_w = 4;
     cfg.lines = true;
     cfg.zbuf = true;
+    cfg.zbuf_bits = 16;
     gpu_model_reset_config(m, &cfg);
     test_set_vtxz(m, 0, 0, 0, 7);
     test_set_vtxz(m, 1, 800, 0, 7);
@@ -89,7 +91,7 @@ static void test_caps(void)
     CHECK_EQ(gpu_model_read(m, GPU_REG_DONE_SEQ), 0);
     CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_PIXELS), 0);
     CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_SPANS_WRITTEN), 0);
-    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0403u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x100403u);
     free(m);
 }
 
@@ -378,10 +380,81 @@ static void test_write_mask(void)
     free(plain);
 }
 
+/* ------------------------------------------------------- capacities */
+
+/* A GPU built with smaller buffers (contract: VTX_CAP / TRI_CAP are build
+ * parameters, reported in the registers of those names): the registers, the
+ * ERR_COUNT check (BASE + COUNT > CAP) and the window words past the capacity
+ * (unmapped: ignored, not wrapped) follow the configured sizes. */
+static void test_capacities(void)
+{
+    gpu_model *m = test_new_model();
+    CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), GPU_TRI_CAP);
+
+    gpu_model_config cfg = { 8, true, false, 32, 16, 0, false };
+    CHECK(gpu_model_config_error(&cfg) == NULL);
+    gpu_model_reset_config(m, &cfg);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), 32);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), 16);
+
+    /* Vertices 0-2 a triangle of 8x8 pixels; vertex 32 and primitive 16 are
+     * past the buffers: written to alias 0 if they wrapped, they are dropped. */
+    test_set_vtx(m, 0, 0, 0);
+    test_set_vtx(m, 1, 8 * 16, 0);
+    test_set_vtx(m, 2, 0, 8 * 16);
+    test_set_prim(m, 15, 0, 1, 2, 5, GPU_PRIM_KIND_TRI);
+    test_set_vtx(m, 32, 200 * 16, 200 * 16); /* would be vertex 0 */
+    test_set_prim(m, 16, 1, 1, 1, 9, GPU_PRIM_KIND_TRI); /* would be prim 0 */
+    CHECK_EQ(m->vtx[32 * GPU_VTX_WORDS], 0); /* the array's word, not the GPU's */
+    test_set_prim(m, 0, 0, 1, 2, 7, GPU_PRIM_KIND_TRI);
+    /* The last vertex and primitive in range: drawn, no error. */
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 29, 3, 15, 1, 0, 1);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 32, 0, 16, 0, 2);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_TRIS_IN), 16);
+    CHECK_EQ(gpu_model_back(m)[0], 5);          /* prim 15, drawn last */
+    /* Prim 0 alone: still colour 7 on vertices 0-2 (a wrapped vertex 32 would
+     * have moved vertex 0 off the pixel, a wrapped prim 16 made it colour 9). */
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 3, 0, 1, 0, 6);
+    CHECK_EQ(gpu_model_back(m)[0], 7);
+    /* One over either capacity: ERR_COUNT, nothing drawn; a full-size GPU
+     * would have taken both batches. */
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 33, 0, 1, 3, 3);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_COUNT_MASK);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_TRIS_IN), 0);
+    CHECK_EQ(gpu_model_back(m)[0], 7);          /* no clear either */
+    test_batch(m, 0, 0, 3, 1, 16, 0, 4);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_COUNT_MASK);
+    /* An index past VTX_COUNT is still ERR_VTX_INDEX, not ERR_COUNT. */
+    test_set_prim(m, 1, 0, 1, 3, 7, GPU_PRIM_KIND_TRI);
+    test_batch(m, 0, 0, 3, 1, 1, 0, 5);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_VTX_INDEX_MASK);
+
+    /* 0: the contract's; above the contract's limit: refused by
+     * gpu_model_config_error, replaced by the limit by reset_config. */
+    gpu_model_config zero = { 8, true, false, 0, 0, 0, false };
+    CHECK(gpu_model_config_error(&zero) == NULL);
+    gpu_model_reset_config(m, &zero);
+    CHECK_EQ(m->cfg.vtx_cap, GPU_VTX_CAP);
+    CHECK_EQ(m->cfg.tri_cap, GPU_TRI_CAP);
+    gpu_model_config big = { 8, true, false, GPU_VTX_CAP + 1u, 16, 0, false };
+    CHECK(gpu_model_config_error(&big) != NULL);
+    gpu_model_reset_config(m, &big);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), 16);
+    big.vtx_cap = 32;
+    big.tri_cap = GPU_TRI_CAP * 2u;
+    CHECK(gpu_model_config_error(&big) != NULL);
+    free(m);
+}
+
 void test_config(void)
 {
     test_caps();
     test_write_mask();
+    test_capacities();
     test_ctrl();
     test_reset_reg();
     test_spans();
