@@ -127,9 +127,9 @@ int rtl_check_main(int argc, char **argv)
         return 2;
     }
     Writer write{sim, model};
-    uint64_t tris = 0, pixels = 0, frames = 0, resets = 0, back_checks = 0, masked = 0;
     const bool wmask = (sim.read(GPU_REG_CAPS) & GPU_CAPS_WMASK_MASK) != 0;
     uint64_t tris = 0, pixels = 0, frames = 0, resets = 0, back_checks = 0, overflows = 0, index_errors = 0;
+    uint64_t masked = 0;
     std::vector<uint8_t> back(GPU_FB_WIDTH * GPU_FB_HEIGHT);
     bool must_clear = false;
 
@@ -291,14 +291,11 @@ int rtl_check_main(int argc, char **argv)
                     static_cast<unsigned long long>(tris), static_cast<unsigned long long>(min_prims));
         return 1;
     }
-    std::printf("random: seed %llu: %d batches (%llu plane-masked), %llu primitives, %llu pixels, %llu back buffers, "
-                "%llu frames, %llu resets: RTL equals model\n",
-                static_cast<unsigned long long>(seed), batches, static_cast<unsigned long long>(masked),
-                static_cast<unsigned long long>(tris),
     std::printf("random: seed %llu: VTX_CAP %u TRI_CAP %u, %d batches (%llu over the capacities, %llu with bad "
-                "indices), %llu primitives, %llu pixels, %llu back buffers, %llu frames, %llu resets: RTL equals model\n",
+                "indices, %llu plane-masked), %llu primitives, %llu pixels, %llu back buffers, %llu frames, %llu resets: "
+                "RTL equals model\n",
                 static_cast<unsigned long long>(seed), vcap, tcap, batches, static_cast<unsigned long long>(overflows),
-                static_cast<unsigned long long>(index_errors), static_cast<unsigned long long>(tris),
+                static_cast<unsigned long long>(index_errors), static_cast<unsigned long long>(masked), static_cast<unsigned long long>(tris),
                 static_cast<unsigned long long>(pixels), static_cast<unsigned long long>(back_checks),
                 static_cast<unsigned long long>(frames), static_cast<unsigned long long>(resets));
     return 0;
