@@ -18,6 +18,7 @@
 #define GPU_DEFAULT_SPAN_W           8u  /* Pixels rasterized per clock: 1, 4, 8 or 16 (CAPS_SPAN_W). */
 #define GPU_DEFAULT_ENABLE_LINES     1u  /* Line primitives (CAPS_LINES); without them a line sets ERR_KIND. */
 #define GPU_DEFAULT_ENABLE_ZBUF      0u  /* 16-bit depth buffer (CAPS_ZBUF); without it CTRL_ZTEST and CTRL_ZCLEAR have no effect. */
+#define GPU_DEFAULT_ENABLE_WMASK     1u  /* Framebuffer write mask (CAPS_WMASK): each pixel's two 4-bit planes have their own write enables, FB_WRITE_MASK chooses the planes a batch writes; without it every batch writes all 8 bits and FB_WRITE_MASK reads 3. */
 #define GPU_DEFAULT_ZBUF_BITS        16u  /* Depth bits the depth buffer keeps, 1 to 16 (CAPS_ZBUF_BITS): the top ZBUF_BITS bits of each depth are stored and compared; fewer bits, less block RAM. */
 
 /* Bus windows: byte offset and size from the GPU base. */
@@ -49,6 +50,7 @@
 #define GPU_REG_DONE_SEQ             0x044u  /* ro: DOORBELL value of the last finished batch (after its swap, if CTRL_SWAP was set). */
 #define GPU_REG_FRAME_COUNT          0x048u  /* ro: Buffer swaps since reset. */
 #define GPU_REG_ERRORS               0x04Cu  /* ro: Error flags ERR_* of the last batch; cleared when the next batch starts. */
+#define GPU_REG_FB_WRITE_MASK        0x050u  /* rw: Framebuffer planes a batch writes, see field WMASK_* (the other bits read 0; 3 after reset: all of each pixel). Applies to the clear and to every primitive; the depth test and the depth buffer are not masked. Sampled when DOORBELL is written. Without CAPS_WMASK writes are ignored and it reads 3. */
 #define GPU_REG_PERF_BUSY_CYCLES     0x060u  /* ro: Clock cycles from the doorbell until the batch finished drawing (excludes the wait for vsync). */
 #define GPU_REG_PERF_TRIS_IN         0x064u  /* ro: Primitives read from the index buffer in the last batch. */
 #define GPU_REG_PERF_TRIS_DRAWN      0x068u  /* ro: Primitives rasterized: valid, non-zero area, bounding box on screen. */
@@ -98,8 +100,14 @@
 #define GPU_CAPS_LINES_MASK          0x00000001u
 #define GPU_CAPS_ZBUF_LSB            1u  /* in CAPS: A depth buffer is built in. */
 #define GPU_CAPS_ZBUF_MASK           0x00000002u
+#define GPU_CAPS_WMASK_LSB           2u  /* in CAPS: The framebuffer write mask (FB_WRITE_MASK) is built in. */
+#define GPU_CAPS_WMASK_MASK          0x00000004u
 #define GPU_CAPS_SPAN_W_LSB          8u  /* in CAPS: Pixels the rasterizer evaluates per clock. */
 #define GPU_CAPS_SPAN_W_MASK         0x0000FF00u
+#define GPU_WMASK_LO_LSB             0u  /* in FB_WRITE_MASK: Write the low plane, bits [3:0] of each pixel's palette index (the anaglyph's right eye). */
+#define GPU_WMASK_LO_MASK            0x00000001u
+#define GPU_WMASK_HI_LSB             1u  /* in FB_WRITE_MASK: Write the high plane, bits [7:4] of each pixel's palette index (the anaglyph's left eye). */
+#define GPU_WMASK_HI_MASK            0x00000002u
 #define GPU_CAPS_ZBUF_BITS_LSB       16u  /* in CAPS: Depth bits the depth buffer keeps (1 to 16; see Depth); 0 without CAPS_ZBUF. */
 #define GPU_CAPS_ZBUF_BITS_MASK      0x001F0000u
 #define GPU_ERR_VTX_INDEX_LSB        0u  /* in ERRORS: A primitive named a vertex index >= VTX_COUNT; that primitive was skipped. */

@@ -59,7 +59,14 @@ class BatchBridge {
 public:
     explicit BatchBridge(const BridgeOptions &o);
 
-    void attach(volatile uint32_t *window) { window_ = window; }
+    // The firmware's view of the window starts as the GPU's power-on registers where they are not
+    // 0 (FB_WRITE_MASK: both planes), so that the shadow and the RTL agree before the first
+    // replay: a store of 0 there is then a change, replayed like any other.
+    void attach(volatile uint32_t *window)
+    {
+        window_ = window;
+        window_[GPU_REG_FB_WRITE_MASK / 4] = shadow_[GPU_REG_FB_WRITE_MASK / 4] = sim_.read(GPU_REG_FB_WRITE_MASK);
+    }
     bool pending_doorbell(uint32_t *tag) const;
     bool pending_reset(uint32_t *value) const;
     bool service_batch(uint32_t tag, std::string *error);

@@ -25,6 +25,9 @@ extern "C" {
 #ifndef GPU_BUILD_ENABLE_ZBUF
 #define GPU_BUILD_ENABLE_ZBUF GPU_DEFAULT_ENABLE_ZBUF
 #endif
+#ifndef GPU_BUILD_ENABLE_WMASK
+#define GPU_BUILD_ENABLE_WMASK GPU_DEFAULT_ENABLE_WMASK
+#endif
 #ifndef GPU_BUILD_ZBUF_BITS
 #define GPU_BUILD_ZBUF_BITS GPU_DEFAULT_ZBUF_BITS
 #endif
@@ -42,6 +45,7 @@ inline gpu_model_config gpu_build_config()
     cfg.span_w = GPU_BUILD_SPAN_W;
     cfg.lines = GPU_BUILD_ENABLE_LINES != 0;
     cfg.zbuf = GPU_BUILD_ENABLE_ZBUF != 0;
+    cfg.wmask = GPU_BUILD_ENABLE_WMASK != 0;
     cfg.vtx_cap = GPU_BUILD_VTX_CAP;
     cfg.tri_cap = GPU_BUILD_TRI_CAP;
     cfg.zbuf_bits = GPU_BUILD_ZBUF_BITS;

@@ -230,10 +230,13 @@ bool GpuSim::wait_capture(uint64_t max_cycles)
 // when the bank is whole blocks, at SPAN_W = 1); a word holds SPAN_W pixels, pixel i in bits
 // [8i +: 8]; bank !front_q is the back bank. A renamed array is a compile error here, not a wrong
 // reading; SPAN_W is derived from the arrays' depths and checked against their word width.
+// With the write mask (ENABLE_WMASK) both banks are one RAM of 2 x WORDS words instead, bank b
+// at words [b * WORDS, (b + 1) * WORDS) (g_merged).
 #define GPU_FB_MAIN(bank) \
-    GPU_CORE_NAME(u_framebuffer__DOT__g_bank__BRA__##bank##__KET____DOT__u_main__DOT__g_block__DOT__mem)
+    GPU_CORE_NAME(u_framebuffer__DOT__g_split__DOT__g_bank__BRA__##bank##__KET____DOT__u_main__DOT__g_block__DOT__mem)
 #define GPU_FB_TAIL(bank) \
-    GPU_CORE_NAME(u_framebuffer__DOT__g_bank__BRA__##bank##__KET____DOT__g_tail__DOT__u_tail__DOT__g_block__DOT__mem)
+    GPU_CORE_NAME(u_framebuffer__DOT__g_split__DOT__g_bank__BRA__##bank##__KET____DOT__g_tail__DOT__u_tail__DOT__g_block__DOT__mem)
+#define GPU_FB_BOTH GPU_CORE_NAME(u_framebuffer__DOT__g_merged__DOT__u_both__DOT__g_block__DOT__mem)
 #define GPU_FB_FRONT GPU_CORE_NAME(u_framebuffer__DOT__front_q)
 #define GPU_PALETTE GPU_CORE_NAME(u_palette__DOT__g_lut__DOT__mem)
 
@@ -243,6 +246,11 @@ template <class R, class = void>
 struct HasTail : std::false_type {};
 template <class R>
 struct HasTail<R, std::void_t<decltype(std::declval<const R &>().GPU_FB_TAIL(0))>> : std::true_type {};
+
+template <class R, class = void>
+struct HasBoth : std::false_type {};
+template <class R>
+struct HasBoth<R, std::void_t<decltype(std::declval<const R &>().GPU_FB_BOTH)>> : std::true_type {};
 
 template <class T, std::size_t D>
 constexpr std::size_t depth(const VlUnpacked<T, D> &)
@@ -290,10 +298,29 @@ void copy_bank(const Main &main, const Tail *tail, uint8_t *pixels)
     }
 }
 
+// Bank `bank` of the merged RAM: its words from bank * WORDS on.
+template <class T, std::size_t D>
+void copy_merged_bank(const VlUnpacked<T, D> &mem, unsigned bank, uint8_t *pixels)
+{
+    const std::size_t words = D / 2;
+    const unsigned span_w = static_cast<unsigned>(GPU_FB_WIDTH * GPU_FB_HEIGHT / words);
+    if (span_w * words * 2 != 2u * GPU_FB_WIDTH * GPU_FB_HEIGHT || sizeof(T) < span_w) {
+        std::fprintf(stderr, "gpusim: a two-bank framebuffer RAM of %zu words\n", D);
+        std::abort();
+    }
+    for (std::size_t w = 0; w < words; w++) {
+        for (unsigned i = 0; i < span_w; i++) {
+            pixels[w * span_w + i] = lane(mem[bank * words + w], i);
+        }
+    }
+}
+
 template <class R>
 void read_bank(const R &root, bool back_is_1, uint8_t *pixels)
 {
-    if constexpr (HasTail<R>::value) {
+    if constexpr (HasBoth<R>::value) {
+        copy_merged_bank(root.GPU_FB_BOTH, back_is_1 ? 1u : 0u, pixels);
+    } else if constexpr (HasTail<R>::value) {
         if (back_is_1) {
             copy_bank(root.GPU_FB_MAIN(1), &root.GPU_FB_TAIL(1), pixels);
         } else {

@@ -55,7 +55,8 @@ public:
 
     // The framebuffer being drawn (the back bank, !STATUS.FRONT), as GPU_FB_WIDTH x GPU_FB_HEIGHT palette indices,
     // row-major: read from the framebuffer's block-RAM arrays in the Verilated model (their
-    // Verilator names, gpu_top.u_framebuffer.g_bank[b].u_main / g_tail.u_tail .mem, are checked at
+    // Verilator names, gpu_top.u_framebuffer.g_split.g_bank[b].u_main / g_tail.u_tail .mem, or
+    // g_merged.u_both.mem with the write mask, are checked at
     // compile time). Takes no clock and no bus cycle, so it changes nothing the GPU does.
     void back_buffer(uint8_t *pixels) const;
 

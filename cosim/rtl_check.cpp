@@ -127,7 +127,9 @@ int rtl_check_main(int argc, char **argv)
         return 2;
     }
     Writer write{sim, model};
+    const bool wmask = (sim.read(GPU_REG_CAPS) & GPU_CAPS_WMASK_MASK) != 0;
     uint64_t tris = 0, pixels = 0, frames = 0, resets = 0, back_checks = 0, overflows = 0, index_errors = 0;
+    uint64_t masked = 0;
     std::vector<uint8_t> back(GPU_FB_WIDTH * GPU_FB_HEIGHT);
     bool must_clear = false;
 
@@ -203,6 +205,12 @@ int rtl_check_main(int argc, char **argv)
         write(GPU_WIN_REGS + GPU_REG_TRI_BASE, tbase);
         write(GPU_WIN_REGS + GPU_REG_TRI_COUNT, tcount);
         write(GPU_WIN_REGS + GPU_REG_CLEAR_COLOR, r.below(256));
+        // The write mask on some batches: any of the four plane sets (none, low, high, both), the
+        // clear included, with junk in the undefined bits; both planes on the others, and on the
+        // clear after a RESET probe, which must overwrite every bit the aborted batch left.
+        const uint32_t planes = (r.chance(40) && !clear_forced) ? r.below(4) : 3u;
+        write(GPU_WIN_REGS + GPU_REG_FB_WRITE_MASK, planes | (r.below(64) << 2));
+        masked += (wmask && planes != 3u) ? 1u : 0u;
         uint32_t ctrl = (clear ? GPU_CTRL_CLEAR_MASK : 0) | (swap ? GPU_CTRL_SWAP_MASK : 0);
         if (r.chance(60)) {  // depth test (a no-op without CAPS_ZBUF: the bits are then ignored)
             ctrl |= GPU_CTRL_ZTEST_MASK;
@@ -245,6 +253,10 @@ int rtl_check_main(int argc, char **argv)
             return 1;
         }
         std::string diff = model.compare_registers(sim);
+        if (diff.empty() && sim.read(GPU_REG_FB_WRITE_MASK) != gpu_model_read(model.model(), GPU_REG_FB_WRITE_MASK)) {
+            diff = "FB_WRITE_MASK reads " + std::to_string(sim.read(GPU_REG_FB_WRITE_MASK)) + ", the model's " +
+                   std::to_string(gpu_model_read(model.model(), GPU_REG_FB_WRITE_MASK));
+        }
         if (diff.empty()) {
             diff = compare_back_buffer(sim, model, back);
             back_checks++;
@@ -258,8 +270,8 @@ int rtl_check_main(int argc, char **argv)
             }
         }
         if (!diff.empty()) {
-            std::printf("random: seed %llu batch %d (vertex family %d, %u prims, CTRL 0x%x, %llu resets before): %s\n",
-                        static_cast<unsigned long long>(seed), b, family, nt, ctrl,
+            std::printf("random: seed %llu batch %d (vertex family %d, %u prims, CTRL 0x%x, FB_WRITE_MASK %u, %llu resets before): %s\n",
+                        static_cast<unsigned long long>(seed), b, family, nt, ctrl, planes,
                         static_cast<unsigned long long>(resets), diff.c_str());
             return 1;
         }
@@ -280,9 +292,10 @@ int rtl_check_main(int argc, char **argv)
         return 1;
     }
     std::printf("random: seed %llu: VTX_CAP %u TRI_CAP %u, %d batches (%llu over the capacities, %llu with bad "
-                "indices), %llu primitives, %llu pixels, %llu back buffers, %llu frames, %llu resets: RTL equals model\n",
+                "indices, %llu plane-masked), %llu primitives, %llu pixels, %llu back buffers, %llu frames, %llu resets: "
+                "RTL equals model\n",
                 static_cast<unsigned long long>(seed), vcap, tcap, batches, static_cast<unsigned long long>(overflows),
-                static_cast<unsigned long long>(index_errors), static_cast<unsigned long long>(tris),
+                static_cast<unsigned long long>(index_errors), static_cast<unsigned long long>(masked), static_cast<unsigned long long>(tris),
                 static_cast<unsigned long long>(pixels), static_cast<unsigned long long>(back_checks),
                 static_cast<unsigned long long>(frames), static_cast<unsigned long long>(resets));
     return 0;

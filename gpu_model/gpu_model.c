@@ -109,6 +109,27 @@ static uint8_t *back_buffer(gpu_model *m)
     return m->fb[(m->front & 1u) ^ 1u];
 }
 
+/* The bits of a pixel a batch writes (contract FB_WRITE_MASK): WMASK_LO the
+ * low nibble, WMASK_HI the high one; the others keep their value. */
+static uint8_t written_bits(const gpu_model *m)
+{
+    uint8_t bits = 0;
+    if (m->regs.fb_write_mask & GPU_WMASK_LO_MASK) {
+        bits |= 0x0Fu;
+    }
+    if (m->regs.fb_write_mask & GPU_WMASK_HI_MASK) {
+        bits |= 0xF0u;
+    }
+    return bits;
+}
+
+/* Store palette index `color` into pixel i of fb through the write mask. */
+static void put_pixel(const gpu_model *m, uint8_t *fb, size_t i, uint8_t color)
+{
+    uint8_t bits = written_bits(m);
+    fb[i] = (uint8_t)((fb[i] & (uint8_t)~bits) | (color & bits));
+}
+
 static bool on_screen(int64_t px, int64_t py)
 {
     return px >= 0 && px < (int64_t)GPU_FB_WIDTH && py >= 0 &&
@@ -271,7 +292,7 @@ static prim_result draw_triangle(gpu_model *m, gpu_model_pt v0,
                 }
                 m->zbuf[i] = z;
             }
-            fb[i] = color;
+            put_pixel(m, fb, i, color);
             m->perf.pixels++;
         }
     }
@@ -309,7 +330,7 @@ static prim_result draw_line(gpu_model *m, gpu_model_pt a, gpu_model_pt b,
         int64_t e = 2 * ay - ax;
         for (int64_t k = 0; k < n; k++) {
             if (on_screen(x, y)) {
-                fb[(size_t)y * GPU_FB_WIDTH + (size_t)x] = color;
+                put_pixel(m, fb, (size_t)y * GPU_FB_WIDTH + (size_t)x, color);
                 m->perf.pixels++;
             }
             if (e > 0) {
@@ -323,7 +344,7 @@ static prim_result draw_line(gpu_model *m, gpu_model_pt a, gpu_model_pt b,
         int64_t e = 2 * ax - ay;
         for (int64_t k = 0; k < n; k++) {
             if (on_screen(x, y)) {
-                fb[(size_t)y * GPU_FB_WIDTH + (size_t)x] = color;
+                put_pixel(m, fb, (size_t)y * GPU_FB_WIDTH + (size_t)x, color);
                 m->perf.pixels++;
             }
             if (e > 0) {
@@ -413,8 +434,11 @@ static void run_batch(gpu_model *m, uint32_t tag)
         /* 3. Clear the back buffer to CLEAR_COLOR[7:0]; and, independently,
          *    the depth buffer to 0xFFFF. */
         if (ctrl & GPU_CTRL_CLEAR_MASK) {
-            memset(back_buffer(m), (int)(m->regs.clear_color & 0xFFu),
-                   GPU_MODEL_FB_PIXELS);
+            /* Through the write mask, like every pixel a batch writes. */
+            uint8_t *fb = back_buffer(m);
+            for (size_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
+                put_pixel(m, fb, i, (uint8_t)(m->regs.clear_color & 0xFFu));
+            }
         }
         if (zclear) {
             const uint16_t far = (uint16_t)((1u << m->cfg.zbuf_bits) - 1u);
@@ -483,7 +507,8 @@ void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
 {
     gpu_model_config c = { GPU_MODEL_DEFAULT_SPAN_W, GPU_MODEL_DEFAULT_LINES,
                            GPU_MODEL_DEFAULT_ZBUF, GPU_MODEL_MAX_VTX_CAP,
-                           GPU_MODEL_MAX_TRI_CAP, GPU_MODEL_DEFAULT_ZBUF_BITS };
+                           GPU_MODEL_MAX_TRI_CAP, GPU_MODEL_DEFAULT_ZBUF_BITS,
+                           GPU_MODEL_DEFAULT_WMASK };
     if (cfg != NULL) {
         c = *cfg;
         if (!span_w_supported(c.span_w)) {
@@ -504,6 +529,7 @@ void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
      * buffer 0 (block RAM initial values). */
     memset(m, 0, sizeof *m);
     m->cfg = c;
+    m->regs.fb_write_mask = GPU_MODEL_WMASK_BITS; /* both planes */
 }
 
 void gpu_model_reset(gpu_model *m)
@@ -522,6 +548,9 @@ uint32_t gpu_model_caps(const gpu_model *m)
         caps |= GPU_CAPS_ZBUF_MASK;
         caps |= ((uint32_t)m->cfg.zbuf_bits << GPU_CAPS_ZBUF_BITS_LSB) &
                 GPU_CAPS_ZBUF_BITS_MASK;
+    }
+    if (m->cfg.wmask) {
+        caps |= GPU_CAPS_WMASK_MASK;
     }
     return caps;
 }
@@ -576,6 +605,11 @@ void gpu_model_write(gpu_model *m, uint32_t offset, uint32_t value)
     case GPU_REG_CLEAR_COLOR:
         m->regs.clear_color = value;
         break;
+    case GPU_REG_FB_WRITE_MASK:
+        if (m->cfg.wmask) {
+            m->regs.fb_write_mask = value & GPU_MODEL_WMASK_BITS;
+        }
+        break;
     case GPU_REG_DOORBELL:
         /* Any write starts a batch, whatever the value (the contract asks the
          * firmware for fresh non-zero tags but the device does not check). */
@@ -625,6 +659,8 @@ uint32_t gpu_model_read(const gpu_model *m, uint32_t offset)
         return m->regs.tri_count;
     case GPU_REG_CLEAR_COLOR:
         return m->regs.clear_color;
+    case GPU_REG_FB_WRITE_MASK:
+        return m->regs.fb_write_mask;
     case GPU_REG_DOORBELL:
         return m->regs.doorbell;
     case GPU_REG_RESET:

@@ -41,6 +41,9 @@
 #define GPU_MODEL_DEFAULT_SPAN_W GPU_DEFAULT_SPAN_W
 #define GPU_MODEL_DEFAULT_LINES  (GPU_DEFAULT_ENABLE_LINES != 0u)
 #define GPU_MODEL_DEFAULT_ZBUF   (GPU_DEFAULT_ENABLE_ZBUF != 0u)
+#define GPU_MODEL_DEFAULT_WMASK  (GPU_DEFAULT_ENABLE_WMASK != 0u)
+/* The bits of FB_WRITE_MASK the contract defines (the planes). */
+#define GPU_MODEL_WMASK_BITS (GPU_WMASK_LO_MASK | GPU_WMASK_HI_MASK)
 #define GPU_MODEL_DEFAULT_ZBUF_BITS GPU_DEFAULT_ZBUF_BITS
 
 /* The largest capacities the model holds: the contract's limits, also the
@@ -62,6 +65,9 @@
  *   lines:  ENABLE_LINES; without it a line primitive sets ERR_KIND.
  *   zbuf:   ENABLE_ZBUF; without it CTRL_ZTEST / CTRL_ZCLEAR have no effect
  *           (they are still stored and read back) and zbuf[] is never touched.
+ *   wmask:  ENABLE_WMASK; without it FB_WRITE_MASK ignores writes and reads 3
+ *           (every batch writes all 8 bits of a pixel).  A config written
+ *           before the option existed ({span_w, lines, zbuf}) leaves it false.
  *   vtx_cap, tri_cap: VTX_CAP and TRI_CAP, the buffers' capacities in
  *           vertices and primitives, 1 ... GPU_MODEL_MAX_*_CAP; 0 means the
  *           contract's (so a config written before these fields, or zeroed,
@@ -82,7 +88,8 @@ typedef struct gpu_model_config {
     bool zbuf;
     uint32_t vtx_cap;
     uint32_t tri_cap;
-    unsigned zbuf_bits;  /* last: configs written before it get 0 = 16 */
+    unsigned zbuf_bits;  /* configs written before it get 0 = 16 */
+    bool wmask;          /* last: configs written before it get false (no mask) */
 } gpu_model_config;
 
 /*
@@ -108,6 +115,8 @@ typedef struct gpu_model {
         uint32_t doorbell;    /* reads back the last tag written */
         uint32_t reset;       /* RESET: reads back the last value written; no
                                * other effect, as no batch is ever running */
+        uint32_t fb_write_mask; /* FB_WRITE_MASK, its two plane bits; 3 after
+                                 * reset and always 3 without cfg.wmask */
     } regs;
 
     /* Read-only status registers. */

@@ -24,6 +24,8 @@ module gpu_core #(
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,  // line primitives (CAPS_LINES)
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,    // 16-bit depth buffer (CAPS_ZBUF):
                                                                          // 1.2 Mb more block RAM
+    parameter integer ENABLE_WMASK = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK,  // framebuffer write mask
+                                                                         // (CAPS_WMASK): 4-bit lanes
     parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,        // depth bits kept, 1..16
                                                                          // (CAPS_ZBUF_BITS): 76,800 bits each
     localparam integer VI_W = $clog2(VTX_CAP),
@@ -59,6 +61,7 @@ module gpu_core #(
     localparam [31:0] CAPS = (32'(SPAN_W) << gpu_pkg::GPU_CAPS_SPAN_W_LSB)
                            | (32'(ENABLE_LINES != 0) << gpu_pkg::GPU_CAPS_LINES_LSB)
                            | (32'(ENABLE_ZBUF != 0) << gpu_pkg::GPU_CAPS_ZBUF_LSB)
+                           | (32'(ENABLE_WMASK != 0) << gpu_pkg::GPU_CAPS_WMASK_LSB)
                            | (32'(ENABLE_ZBUF != 0 ? ZBUF_BITS : 0) << gpu_pkg::GPU_CAPS_ZBUF_BITS_LSB);
 
     // Batch description and status between the register block and the rasterizer.
@@ -82,14 +85,15 @@ module gpu_core #(
     wire [FB_WAW-1:0] fb_wr_addr;
     wire [SPAN_W*8-1:0] fb_wr_data;
     wire [SPAN_W-1:0] fb_wr_mask;
+    wire [1:0] fb_wmask;  // FB_WRITE_MASK's planes, stable while busy like the other batch registers
 
-    gpu_regs #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .CAPS(CAPS)) u_regs (
+    gpu_regs #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .CAPS(CAPS), .ENABLE_WMASK(ENABLE_WMASK)) u_regs (
         .clk(clk), .rst(rst),
         .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr), .bus_wdata(bus_wdata),
         .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid),
         .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .ctrl_ztest(ctrl_ztest),
         .ctrl_zclear(ctrl_zclear), .vtx_base(vtx_base), .vtx_count(vtx_count),
-        .tri_base(tri_base), .tri_count(tri_count), .clear_color(clear_color),
+        .tri_base(tri_base), .tri_count(tri_count), .clear_color(clear_color), .fb_wmask(fb_wmask),
         .doorbell_tag(doorbell_tag), .start(start), .soft_reset(soft_reset),
         .vtx_wr_en(vtx_wr_en), .vtx_wr_addr(vtx_wr_addr), .idx_wr_en(idx_wr_en),
         .idx_wr_addr(idx_wr_addr), .pal_wr_en(pal_wr_en), .pal_wr_addr(pal_wr_addr),
@@ -177,10 +181,11 @@ module gpu_core #(
         .fb_wr_mask(fb_wr_mask), .vblank_start(vblank_start), .swap(swap)
     );
 
-    gpu_framebuffer #(.SPAN_W(SPAN_W)) u_framebuffer (
+    gpu_framebuffer #(.SPAN_W(SPAN_W), .ENABLE_WMASK(ENABLE_WMASK)) u_framebuffer (
         .clk(clk), .rst(rst), .clk_pix(clk_pix),
         .swap(swap), .front(front),
         .wr_en(fb_wr_en), .wr_addr(fb_wr_addr), .wr_data(fb_wr_data), .wr_mask(fb_wr_mask),
+        .wr_planes(fb_wmask),
         .rd_en(fb_rd_en), .rd_addr(fb_rd_addr), .rd_data(fb_rd_data)
     );
 

@@ -13,6 +13,7 @@ module gpu_regs #(
     parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,  // vertices; the vertex RAM holds 2 words each
     parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,  // primitives; the index RAM holds 2 words each
     parameter [31:0]  CAPS = 32'h0,    // value of the CAPS register, set by gpu_top from its parameters
+    parameter integer ENABLE_WMASK = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK,  // FB_WRITE_MASK is writable
     localparam integer VTX_AW = $clog2(VTX_CAP * 2),
     localparam integer IDX_AW = $clog2(TRI_CAP * 2)
 ) (
@@ -35,6 +36,7 @@ module gpu_regs #(
     output reg  [31:0]       tri_base,
     output reg  [31:0]       tri_count,
     output reg  [7:0]        clear_color,
+    output reg  [1:0]        fb_wmask,     // FB_WRITE_MASK: {WMASK_HI, WMASK_LO}, 2'b11 without ENABLE_WMASK
     output reg  [31:0]       doorbell_tag,
     output reg               start,        // one-cycle pulse: run the batch
     output reg               soft_reset,   // one-cycle pulse: RESET was written
@@ -68,7 +70,8 @@ module gpu_regs #(
     wire is_batch_reg = in_regs && (reg_offset == gpu_pkg::GPU_REG_CTRL
         || reg_offset == gpu_pkg::GPU_REG_VTX_BASE || reg_offset == gpu_pkg::GPU_REG_VTX_COUNT
         || reg_offset == gpu_pkg::GPU_REG_TRI_BASE || reg_offset == gpu_pkg::GPU_REG_TRI_COUNT
-        || reg_offset == gpu_pkg::GPU_REG_CLEAR_COLOR || reg_offset == gpu_pkg::GPU_REG_DOORBELL);
+        || reg_offset == gpu_pkg::GPU_REG_CLEAR_COLOR || reg_offset == gpu_pkg::GPU_REG_DOORBELL
+        || reg_offset == gpu_pkg::GPU_REG_FB_WRITE_MASK);
     wire write_dropped = is_write && busy && (in_pal || in_vtx || in_idx || is_batch_reg);
     wire write_ok = is_write && !busy;
 
@@ -95,6 +98,7 @@ module gpu_regs #(
             tri_base <= 32'd0;
             tri_count <= 32'd0;
             clear_color <= 8'd0;
+            fb_wmask <= 2'b11;
             doorbell_tag <= 32'd0;
             start <= 1'b0;
             err_write_busy_q <= 1'b0;
@@ -119,6 +123,13 @@ module gpu_regs #(
                     gpu_pkg::GPU_REG_TRI_BASE:    tri_base <= bus_wdata;
                     gpu_pkg::GPU_REG_TRI_COUNT:   tri_count <= bus_wdata;
                     gpu_pkg::GPU_REG_CLEAR_COLOR: clear_color <= bus_wdata[7:0];
+                    gpu_pkg::GPU_REG_FB_WRITE_MASK: begin
+                        // A GPU built without the mask keeps writing both planes.
+                        if (ENABLE_WMASK != 0) begin
+                            fb_wmask <= {bus_wdata[gpu_pkg::GPU_WMASK_HI_LSB],
+                                         bus_wdata[gpu_pkg::GPU_WMASK_LO_LSB]};
+                        end
+                    end
                     gpu_pkg::GPU_REG_DOORBELL: begin
                         doorbell_tag <= bus_wdata;
                         start <= 1'b1;
@@ -160,6 +171,8 @@ module gpu_regs #(
             gpu_pkg::GPU_REG_TRI_BASE:           reg_value = tri_base;
             gpu_pkg::GPU_REG_TRI_COUNT:          reg_value = tri_count;
             gpu_pkg::GPU_REG_CLEAR_COLOR:        reg_value = {24'd0, clear_color};
+            gpu_pkg::GPU_REG_FB_WRITE_MASK:      reg_value = (32'(fb_wmask[1]) << gpu_pkg::GPU_WMASK_HI_LSB)
+                                                           | (32'(fb_wmask[0]) << gpu_pkg::GPU_WMASK_LO_LSB);
             gpu_pkg::GPU_REG_DOORBELL:           reg_value = doorbell_tag;
             gpu_pkg::GPU_REG_RESET:              reg_value = reset_value_q;
             gpu_pkg::GPU_REG_STATUS:             reg_value = status_value;

@@ -2,14 +2,15 @@
  * host_main.c — command line of the host build: the firmware's frame loop (app_run) on Linux,
  * rendering through the golden model.
  *
- *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--zbuf-bits N] [--span-w N]
- *           [--model FILE] [--dump-scene DIR]
+ *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--zbuf-bits N] [--no-wmask]
+ *           [--span-w N] [--model FILE] [--dump-scene DIR]
  *
  *   --frames DIR      write each swapped frame as DIR/NNNN.png (as gpusim cosim does)
  *   --keys-at N:TEXT  type TEXT just before doorbell N (1 = first) is serviced, byte for byte
  *                     (as gpusim cosim; use the shell's $'...' for control bytes)
  *   --no-lines        model a GPU built without line primitives (CAPS_LINES = 0)
  *   --zbuf            model a GPU built with the depth buffer (CAPS_ZBUF = 1)
+ *   --no-wmask        model a GPU built without the framebuffer write mask (CAPS_WMASK = 0)
  *   --zbuf-bits N     the depth bits its buffer keeps (ZBUF_BITS, CAPS_ZBUF_BITS: 1 .. 16; default 16)
  *   --span-w N        SPAN_W the model reports (1, 4, 8, 16; default 8)
  *   --dump-scene DIR  write each frame's scene after its update as DIR/NNNN.scene: world-space
@@ -50,7 +51,7 @@ static int host_load_model(const char *path)
 static int host_usage(void)
 {
     fprintf(stderr, "usage: fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] "
-                    "[--zbuf-bits N] [--span-w N] [--model FILE] [--dump-scene DIR]\n");
+                    "[--zbuf-bits N] [--no-wmask] [--span-w N] [--model FILE] [--dump-scene DIR]\n");
     return 2;
 }
 
@@ -92,6 +93,8 @@ int main(int argc, char **argv)
             cfg.lines = false;
         } else if (strcmp(a, "--zbuf") == 0) {
             cfg.zbuf = true;
+        } else if (strcmp(a, "--no-wmask") == 0) {
+            cfg.no_wmask = true;
         } else if (strcmp(a, "--zbuf-bits") == 0 && has_value) {
             char *end;
             const unsigned long bits = strtoul(argv[++i], &end, 10);

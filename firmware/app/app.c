@@ -13,7 +13,12 @@
  *      (camera keys, animation, scene keys);
  *   3. per pass (two for anaglyph: left eye red, right eye cyan): render the scene into the
  *      frame's primitive list, sort it, add the overlay, and stream it to the GPU batch by batch
- *      (batch.c). The first batch of the frame sets CTRL_CLEAR, the last CTRL_SWAP.
+ *      (batch.c). The first batch of the frame sets CTRL_CLEAR, the last CTRL_SWAP; with the depth
+ *      test the first batch of each pass sets CTRL_ZCLEAR (each eye has its own depth order). On
+ *      a GPU with the write mask (CAPS_WMASK) the anaglyph's eyes write their own plane of the
+ *      framebuffer (the left eye the high nibble, the right eye the low one: FB_WRITE_MASK), each
+ *      clearing it first, through the anaglyph palette (palette.h), so a pixel both eyes cover
+ *      shows both; without it the right eye's pass draws over the left eye's.
  *   4. after each doorbell, wait for DONE_SEQ with a bounded poll — the watchdog. A batch that
  *      never finishes is reported, the GPU is reset (RESET register), the rest of the frame is
  *      dropped and the loop goes on with the next frame; after FW_WATCHDOG_GIVE_UP consecutive
@@ -67,6 +72,7 @@ struct app {
     bool wireframe;
     bool anaglyph;
     bool depth_test;
+    uint32_t write_mask;     /* FB_WRITE_MASK as last written; APP_WRITE_MASK_UNKNOWN at first */
     uint32_t lost_in_a_row;  /* consecutive frames dropped by the watchdog */
 #if FW_WITH_UPLOAD
     struct upload_rx upload;
@@ -288,6 +294,60 @@ struct app_notes {
     uint32_t msg_count;
 };
 
+/* FB_WRITE_MASK before the frame loop has written it: no value the register can hold. */
+#define APP_WRITE_MASK_UNKNOWN 0xFFFFFFFFu
+
+/* The anaglyph through the write mask: built in, and the GPU has the mask. */
+static bool app_eye_planes(const struct app *app)
+{
+    return FW_WITH_ANAGLYPH && gpu_caps_wmask(app->gpu.info.caps);
+}
+
+/* The palette for the view the anaglyph toggle just chose: the anaglyph's two planes
+ * (palette_build_anaglyph) or the materials. Between frames: no batch is pending. */
+static void app_anaglyph_palette(struct app *app)
+{
+    int rc;
+
+    if (!app_eye_planes(app)) {
+        return;  /* without the mask the eyes use the material palette's red and cyan ramps */
+    }
+    if (app->anaglyph) {
+        palette_build_anaglyph(app->palette);
+    } else {
+        palette_build(app->palette);
+    }
+    rc = gpu_load_palette(&app->gpu, app->palette, PAL_ENTRIES);
+    if (rc != GPU_OK) {
+        printf("error: palette not loaded: %s\n", gpu_strerror(rc));
+        app_fail(FW_EXIT_GPU_SUBMIT);
+    }
+}
+
+/* The planes a pass writes: the left eye's (-1) the high one, the right eye's (+1) the low one,
+ * a normal pass's (0) both; written only when it changes, on a GPU with the mask. */
+static void app_set_write_mask(struct app *app, int eye)
+{
+    uint32_t planes = GPU_WMASK_LO_MASK | GPU_WMASK_HI_MASK;
+    int rc;
+
+    if (!app_eye_planes(app)) {
+        return;
+    }
+    if (eye != 0) {
+        planes = (eye < 0) ? GPU_WMASK_HI_MASK : GPU_WMASK_LO_MASK;
+    }
+    if (planes == app->write_mask) {
+        return;
+    }
+    rc = gpu_set_write_mask(&app->gpu, planes);
+    if (rc != GPU_OK) {
+        printf("error: FB_WRITE_MASK not set: %s\n", gpu_strerror(rc));
+        app_fail(FW_EXIT_GPU_SUBMIT);
+    }
+    app->write_mask = planes;
+}
+
 static void app_note(struct app_notes *notes, const char *msg)
 {
     if (notes->msg_count < sizeof notes->msg / sizeof notes->msg[0]) {
@@ -356,6 +416,7 @@ static bool app_global_keys(struct app *app, const struct input_counts *keys,
     if (input_toggled(keys, KEY_ANAGLYPH)) {
         if (FW_WITH_ANAGLYPH) {
             app->anaglyph = !app->anaglyph;
+            app_anaglyph_palette(app);
             app_note(notes, app->anaglyph ? "anaglyph on (left eye red, right eye cyan)"
                                           : "anaglyph off");
         } else {
@@ -376,21 +437,23 @@ static bool app_global_keys(struct app *app, const struct input_counts *keys,
 }
 
 /*
- * Stream the frame's primitives to the GPU. Returns false when the watchdog fired (the GPU has
- * been reset and the frame is abandoned).
+ * Stream the frame's primitives to the GPU: its first batch clears the colour when `clear` and
+ * (depth test on) the depth buffer always, the pass's own. Returns false when the watchdog fired
+ * (the GPU has been reset and the frame is abandoned).
  */
-static bool app_submit(struct app *app, unsigned frame_no, bool first_pass, bool last_pass,
+static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last_pass,
                        struct frame_totals *tot)
 {
     struct batch_cursor cur;
-    bool first = first_pass;
+    bool first = true;
     struct gpu_batch batch;
 
     batch.vtx_words = app->words.vtx;
     batch.vtx_base = 0;
     batch.prim_words = app->words.prim;
     batch.tri_base = 0;
-    batch.clear_color = app->anaglyph ? PAL_NIGHT : PAL_SKY;
+    batch.clear_color = !app->anaglyph ? PAL_SKY
+                        : (app_eye_planes(app) ? PAL_ANAGLYPH_BACKGROUND : PAL_NIGHT);
     batch_begin(&cur);
     do {
         struct gpu_stats stats;
@@ -409,7 +472,7 @@ static bool app_submit(struct app *app, unsigned frame_no, bool first_pass, bool
         last = last_pass && batch_done(&cur, &app->frame);
         batch.vtx_count = app->words.vtx_count;
         batch.prim_count = app->words.prim_count;
-        batch.ctrl = (first ? GPU_CTRL_CLEAR_MASK : 0u) | (last ? GPU_CTRL_SWAP_MASK : 0u);
+        batch.ctrl = ((first && clear) ? GPU_CTRL_CLEAR_MASK : 0u) | (last ? GPU_CTRL_SWAP_MASK : 0u);
         if (app->depth_test) {
             batch.ctrl |= GPU_CTRL_ZTEST_MASK | (first ? GPU_CTRL_ZCLEAR_MASK : 0u);
         }
@@ -465,6 +528,7 @@ static void app_render_pass(struct app *app, int eye, struct frame_totals *tot)
     opts.wireframe = app->wireframe;
     opts.depth_test = app->depth_test;
     opts.gpu_lines = gpu_caps_lines(app->gpu.info.caps);
+    opts.eye_planes = app_eye_planes(app);
     pipeline_pass(&app->frame, &app->scene, &opts, eye, app_clock, &times);
     tot->t_draw = times.draw;
     tot->t_sort = times.sort;
@@ -575,6 +639,7 @@ int app_run(void)
 #endif
     app->wireframe = false;
     app->anaglyph = false;
+    app->write_mask = APP_WRITE_MASK_UNKNOWN;
     app->depth_test = FW_WITH_DEPTH && FW_DEPTH_TEST && gpu_caps_zbuf(app->gpu.info.caps);
     if (app->depth_test) {
         printf("depth buffer on (FW_DEPTH_TEST, %u-bit depths)\n",
@@ -650,7 +715,9 @@ int app_run(void)
             const int eye = app->anaglyph ? ((p == 0) ? -1 : 1) : 0;
 
             app_render_pass(app, eye, &tot);
-            completed = app_submit(app, frame, p == 0, p == passes - 1, &tot);
+            app_set_write_mask(app, eye);
+            completed = app_submit(app, frame, p == 0 || app_eye_planes(app), p == passes - 1,
+                                   &tot);
             tot.render.faces_in += app->frame.stats.faces_in;
             tot.render.faces_culled_object += app->frame.stats.faces_culled_object;
             tot.render.faces_frustum += app->frame.stats.faces_frustum;

@@ -27,7 +27,20 @@ struct pipeline_opts {
     bool wireframe;   /* F: outlines instead of filled faces */
     bool depth_test;  /* Z: every vertex gets its GPU depth (CTRL_ZTEST is the batch's) */
     bool gpu_lines;   /* the GPU draws line primitives (CAPS_LINES) */
+    bool eye_planes;  /* anaglyph through the write mask (CAPS_WMASK): an eye's colours are levels
+                       * in both nibbles (palette.h, palette_build_anaglyph), its pass writing one */
 };
+
+/* An eye pass's colours as the write mask's anaglyph wants them: each primitive's light level (the
+ * low nibble of its eye-ramp colour) in both nibbles, PAL_ANAGLYPH_LEVEL so never the background. */
+static inline void pipeline_eye_planes(struct render_frame *f)
+{
+    for (uint32_t i = 0; i < f->prim_count; i++) {
+        const uint32_t shade = f->prim[i].color & 0xFu;
+
+        f->prim[i].color = PAL_ANAGLYPH_BOTH(PAL_ANAGLYPH_LEVEL(shade));
+    }
+}
 
 /* Where a pass's instructions went, in the units of the clock given to pipeline_pass. */
 struct pipeline_times {
@@ -79,6 +92,9 @@ static inline void pipeline_pass(struct render_frame *f, const struct scene *s,
     if (s->crosshair) {
         render_overlay_crosshair(f, &pass, 5,
                                  (eye == 0) ? PAL_WHITE : PAL_INDEX(pass.eye_material, 15u));
+    }
+    if (eye != 0 && opts->eye_planes) {
+        pipeline_eye_planes(f);
     }
     if (clock != NULL) {
         times->draw += (t_drawn - t_begin) + (clock() - t_sorted);

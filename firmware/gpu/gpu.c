@@ -124,6 +124,32 @@ int gpu_submit_batch(struct gpu_dev *dev, const struct gpu_batch *batch, uint32_
     return GPU_OK;
 }
 
+int gpu_set_write_mask(struct gpu_dev *dev, uint32_t planes)
+{
+    if (dev->pending) {
+        return GPU_E_PENDING;
+    }
+    if ((planes & ~(uint32_t)(GPU_WMASK_LO_MASK | GPU_WMASK_HI_MASK)) != 0u) {
+        return GPU_E_ARG;
+    }
+    gpu_write(GPU_REG_FB_WRITE_MASK, planes);
+    return GPU_OK;
+}
+
+int gpu_load_palette(struct gpu_dev *dev, const uint16_t *palette, uint32_t n)
+{
+    if (dev->pending) {
+        return GPU_E_PENDING;
+    }
+    if (n > GPU_PALETTE_ENTRIES || (n > 0u && palette == NULL)) {
+        return GPU_E_ARG;
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        gpu_write(GPU_WIN_PALETTE + 4u * i, palette[i]);
+    }
+    return GPU_OK;
+}
+
 uint32_t *gpu_buffer_words(uint32_t window_offset)
 {
     return bsp_gpu_buffer(window_offset);

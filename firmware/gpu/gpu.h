@@ -60,6 +60,11 @@ static inline bool gpu_caps_zbuf(uint32_t caps)
     return (caps & GPU_CAPS_ZBUF_MASK) != 0u;
 }
 
+static inline bool gpu_caps_wmask(uint32_t caps)
+{
+    return (caps & GPU_CAPS_WMASK_MASK) != 0u;
+}
+
 /* The depth bits the GPU's depth buffer keeps (contract "Depth": 1 .. 16; 0 without one). */
 static inline uint32_t gpu_caps_zbuf_bits(uint32_t caps)
 {
@@ -140,6 +145,15 @@ int gpu_wait(struct gpu_dev *dev, uint32_t tag, uint32_t max_polls);
 #define GPU_WAIT_IDLE_POLLS 32u
 int gpu_wait_idle(struct gpu_dev *dev, uint32_t tag, uint32_t max_polls, void (*idle)(void *ctx),
                   void *ctx);
+
+/* FB_WRITE_MASK: the framebuffer planes (GPU_WMASK_LO_MASK | GPU_WMASK_HI_MASK bits) the
+ * following batches write, clear included, until changed. GPU_E_PENDING while a batch is in
+ * flight, GPU_E_ARG for other bits. A GPU without CAPS_WMASK ignores it (writes every bit). */
+int gpu_set_write_mask(struct gpu_dev *dev, uint32_t planes);
+
+/* Load palette[0 .. n-1] (RGB444 words) into the palette window, as gpu_init does: GPU_E_PENDING
+ * while a batch is in flight (the GPU would drop the writes), GPU_E_ARG for n beyond the palette. */
+int gpu_load_palette(struct gpu_dev *dev, const uint16_t *palette, uint32_t n);
 
 /* Read ERRORS and the PERF_* counters of the last finished batch. */
 void gpu_read_stats(const struct gpu_dev *dev, struct gpu_stats *stats);

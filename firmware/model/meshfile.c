@@ -243,6 +243,58 @@ void meshfile_message(int err, const struct meshfile_info *info, char *out, size
     }
 }
 
+/* Normals within two units of Q1.14 per component count as the same plane's: a stored normal is
+ * rounded to Q1.14, and the two halves of a planar quad round from normals equal up to the
+ * converter's vertex rounding. Components are within +-1 and the tolerance tiny, so c + tol
+ * stays inside unit_t's range (q2_30: [-2, 2)). */
+#define MESHFILE_COPLANAR_TOL UNIT_C(2.0 / 16384.0)
+
+static bool meshfile_close(unit_t a, unit_t b)
+{
+    return a <= b + MESHFILE_COPLANAR_TOL && b <= a + MESHFILE_COPLANAR_TOL;
+}
+
+static bool meshfile_same_plane(const struct mesh *m, const struct mesh_face *a,
+                                const struct mesh_face *b)
+{
+    const uvec3 na = m->normals[a->normal];
+    const uvec3 nb = m->normals[b->normal];
+
+    return a->material == b->material && meshfile_close(na.x, nb.x) &&
+           meshfile_close(na.y, nb.y) && meshfile_close(na.z, nb.z);
+}
+
+/* Faces this far back are searched for a coplanar neighbour: a converter emits a triangulated
+ * polygon's triangles one after the other, so its inner edges are found without a table (and an
+ * inner edge between faces further apart stays drawn: an extra line, never a missing one). */
+#define MESHFILE_POLYGON_WINDOW 8u
+
+/* The edges two coplanar faces of one material share (in opposite directions, as a consistently
+ * wound mesh has them) are inside one polygon of the model: MESH_FACE_EDGE_HIDDEN on both. */
+static void meshfile_hide_inner_edges(struct mesh *m)
+{
+    for (uint32_t fi = 1; fi < m->face_count; fi++) {
+        struct mesh_face *f = &m->faces[fi];
+        const uint32_t first = (fi > MESHFILE_POLYGON_WINDOW) ? fi - MESHFILE_POLYGON_WINDOW : 0u;
+
+        for (uint32_t gi = first; gi < fi; gi++) {
+            struct mesh_face *g = &m->faces[gi];
+
+            if (!meshfile_same_plane(m, f, g)) {
+                continue;
+            }
+            for (uint32_t k = 0; k < 3u; k++) {
+                for (uint32_t j = 0; j < 3u; j++) {
+                    if (f->v[k] == g->v[(j + 1u) % 3u] && f->v[(k + 1u) % 3u] == g->v[j]) {
+                        f->flags |= (uint8_t)MESH_FACE_EDGE_HIDDEN(k);
+                        g->flags |= (uint8_t)MESH_FACE_EDGE_HIDDEN(j);
+                    }
+                }
+            }
+        }
+    }
+}
+
 bool meshfile_load(const uint8_t *buf, const struct meshfile_info *info, struct mesh *m)
 {
     const uint8_t *p = buf + MESHFILE_HEADER_BYTES;
@@ -272,6 +324,7 @@ bool meshfile_load(const uint8_t *buf, const struct meshfile_info *info, struct 
             m->faces[m->face_count - 1u].flags |= MESH_FACE_QUAD;
         }
     }
+    meshfile_hide_inner_edges(m);
     mesh_finish(m);
     return !m->full;
 }

@@ -83,8 +83,8 @@ void mesh_add_quad(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint16_t 
     mesh_add_face_normal(m, a, b, c, normal, material);
     mesh_add_face_normal(m, c, d, a, normal, material);
     if (!m->full) {
-        m->faces[m->face_count - 2u].flags = MESH_FACE_QUAD;
-        m->faces[m->face_count - 1u].flags = MESH_FACE_QUAD;
+        m->faces[m->face_count - 2u].flags = MESH_FACE_QUAD | MESH_FACE_EDGE_HIDDEN(2u);
+        m->faces[m->face_count - 1u].flags = MESH_FACE_QUAD | MESH_FACE_EDGE_HIDDEN(2u);
     }
 }
 

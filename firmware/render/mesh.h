@@ -35,6 +35,12 @@ struct mesh_face {
  * the quad's centre (the diagonal's midpoint) as their depth, so the painter keeps them together
  * instead of letting a neighbouring face slip between them (saw-tooth seams on voxel terrain). */
 #define MESH_FACE_QUAD 0x01u
+/* Edge k of the face (v[k] -> v[(k + 1) % 3]) lies inside one of the mesh's polygons (a quad's
+ * diagonal, an inner edge of a triangulated polygon): a wireframe draws the polygons' edges only,
+ * so it skips this one (render.c). mesh_add_quad sets it on both halves' diagonal, mesh_grid_face
+ * on a grid quad's, meshfile_load on the edges two coplanar faces of one material share. */
+#define MESH_FACE_EDGE_HIDDEN(k) (0x02u << (k))
+#define MESH_FACE_EDGES_HIDDEN 0x0Eu
 
 struct mesh {
     vec3 *verts;
@@ -122,7 +128,8 @@ static inline void mesh_grid_face(const struct mesh_grid *g, uint32_t i, uint32_
     out->v[2] = (uint16_t)third;
     out->normal = (uint16_t)a;
     out->material = g->material[i];
-    out->flags = 0;
+    /* The quad's diagonal a-c: half 0's edge 2 (c -> a), half 1's edge 0 (a -> c). */
+    out->flags = (uint8_t)MESH_FACE_EDGE_HIDDEN((half == 0u) ? 2u : 0u);
 }
 
 /* Face fi of any mesh: a pointer into faces[], or for a grid mesh *tmp filled. */
@@ -142,7 +149,8 @@ void mesh_add_face(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint8_t m
 void mesh_add_face_normal(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint16_t normal,
                           uint8_t material);
 /* Quad a-b-c-d (in winding order, planar) as the faces (a, b, c) and (c, d, a), one normal, both
- * flagged MESH_FACE_QUAD with the diagonal a-c as their v[0]-v[2]. */
+ * flagged MESH_FACE_QUAD with the diagonal a-c as their v[0]-v[2], and that edge (edge 2 of both)
+ * MESH_FACE_EDGE_HIDDEN. */
 void mesh_add_quad(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint16_t d,
                    uint16_t normal, uint8_t material);
 

@@ -45,3 +45,13 @@ void palette_build(uint16_t pal[PAL_ENTRIES])
     pal[PAL_WHITE] = (uint16_t)GPU_RGB444(0xF, 0xF, 0xF);
     pal[PAL_NIGHT] = (uint16_t)GPU_RGB444(0x0, 0x0, 0x0);
 }
+
+void palette_build_anaglyph(uint16_t pal[PAL_ENTRIES])
+{
+    for (uint32_t i = 0; i < PAL_ENTRIES; i++) {
+        const uint32_t left = i >> 4;
+        const uint32_t right = i & 0xFu;
+
+        pal[i] = (uint16_t)GPU_RGB444(left, right, right);
+    }
+}

@@ -56,6 +56,19 @@ enum pal_material {
 void palette_build(uint16_t pal[PAL_ENTRIES]);
 
 /*
+ * The anaglyph through the GPU's write mask (CAPS_WMASK): an index is two eyes at once, the high
+ * nibble the left eye's level (red), the low nibble the right eye's (green and blue: cyan), each
+ * eye's pass writing its own plane only. Level 0 is the background (black), 1 .. 15 an object's
+ * light level, PAL_ANAGLYPH_LEVEL of its shade (shade 0 becomes 1, so a face is never taken for
+ * the background). Index (l << 4) | r is RGB444 (l, r, r).
+ */
+void palette_build_anaglyph(uint16_t pal[PAL_ENTRIES]);
+#define PAL_ANAGLYPH_BACKGROUND 0x00u
+#define PAL_ANAGLYPH_LEVEL(shade) (((shade) == 0u) ? 1u : (shade))
+/* A level in both nibbles: whichever plane a pass writes gets it. */
+#define PAL_ANAGLYPH_BOTH(level) ((uint8_t)((level) * 0x11u))
+
+/*
  * One object's light, prepared so that a face's level costs three multiplies:
  *   level = ambient + floor((15 - ambient) * max(0, n . l))      (clamped to 15)
  * Fixed: the light is stored pre-scaled, s = (15 - ambient) l in Q5.27 (|s_i| <= 15 * 2^27 < 2^31);

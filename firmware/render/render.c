@@ -118,6 +118,13 @@ void render_frame_init(struct render_frame *f, struct proj_vertex *vert, uint32_
         f->prim_cap = SORT_SMALL_N - 1u;
     }
     f->sort = scratch;
+    /* The edge set borrows sort_tmp: the largest power of two of words within prim_cap. */
+    f->edge_set = sort_tmp;
+    f->edge_cap = 0;
+    if (sort_tmp != 0) {
+        for (f->edge_cap = 1u; 2u * f->edge_cap <= f->prim_cap; f->edge_cap *= 2u) {
+        }
+    }
     render_stats_clear(&f->stats);
     render_frame_begin(f);
 }
@@ -129,6 +136,7 @@ void render_frame_begin(struct render_frame *f)
     f->sorted_count = 0;
     f->outline_count = 0;
     f->batch_stamp = 0;  /* every vertex made from now on starts with stamp 0 */
+    f->edge_used = f->edge_cap + 1u;  /* the set is cleared when a wireframe first needs it */
 }
 
 enum render_sphere_class render_sphere_classify(const struct proj_setup *ps, vec3 c,
@@ -258,20 +266,79 @@ static void render_emit_line(struct render_frame *f, const struct render_pass *p
                      (uint8_t)GPU_PRIM_KIND_TRI, key);
 }
 
-/* A convex polygon (front-facing, already projected): a fan of triangles, or its outline. With
- * GPU lines the outline is the same fan as RENDER_PRIM_OUTLINE primitives, each with the edges that
- * are the polygon's: triangle (0, k, k+1) has edge 0 (0 -> k) only when k = 1 and edge 2 (k+1 -> 0)
- * only when k + 1 = n - 1, edge 1 always. Expanded in order, they are the polygon's edges 0 -> 1,
- * 1 -> 2, ..., n-1 -> 0, in that order, all with the polygon's key. */
+/* Empty the edge set. */
+static void render_edge_set_clear(struct render_frame *f)
+{
+    for (uint32_t i = 0; i < f->edge_cap; i++) {
+        f->edge_set[i] = 0;
+    }
+    f->edge_used = 0;
+}
+
+/*
+ * Whether a wireframe draws edge a-b now: false when an earlier face of the pass drew it (the two
+ * front faces of a closed mesh that share an edge list it once each, in opposite directions), true
+ * the first time, which enters it in the set. Frame vertex numbers name the edge: a mesh's faces
+ * share their vertices (render_object projects each once), so a shared edge has one key whatever
+ * the direction; a clipped face's new vertices are its own, and its edges are always drawn. When
+ * the set is three quarters full every further edge is drawn (a duplicate costs a line, never a
+ * missing one); render_object empties a set half full at the start of an object, since no edge is
+ * shared between objects.
+ */
+static bool render_edge_first(struct render_frame *f, uint32_t a, uint32_t b)
+{
+    const uint32_t key = (a < b) ? ((a << 16) | b) : ((b << 16) | a);  /* a != b: never 0 */
+    const uint32_t mask = f->edge_cap - 1u;
+    uint32_t i;
+
+    if (f->edge_cap == 0u || a == b) {
+        return true;
+    }
+    if (f->edge_used > f->edge_cap) {
+        render_edge_set_clear(f);
+    }
+    if (f->edge_used >= f->edge_cap - f->edge_cap / 4u) {
+        return true;
+    }
+    /* Fibonacci hashing: the top bits of key * 2^32 / phi spread neighbouring vertex numbers. */
+    for (i = (key * 2654435769u) & mask; f->edge_set[i] != 0u; i = (i + 1u) & mask) {
+        if (f->edge_set[i] == key) {
+            return false;
+        }
+    }
+    f->edge_set[i] = key;
+    f->edge_used++;
+    return true;
+}
+
+/* A convex polygon (front-facing, already projected): a fan of triangles, or its outline. The
+ * outline is the polygon's edges k (idx[k] -> idx[(k + 1) % n]) but those `hidden` names (bit k:
+ * an edge inside a larger polygon of the mesh, mesh.h) and those an earlier face of the pass drew
+ * (render_edge_first). With GPU lines it is the same fan as RENDER_PRIM_OUTLINE primitives, each
+ * with the edges that are the polygon's and drawn: triangle (0, k, k+1) has edge 0 (0 -> k) only
+ * when k = 1 and edge 2 (k+1 -> 0) only when k + 1 = n - 1, edge 1 always; a triangle left with no
+ * edge is not emitted. Expanded in order, they are the polygon's edges 0 -> 1, 1 -> 2, ...,
+ * n-1 -> 0, in that order, all with the polygon's key. n <= 9 (clip.h), so a bit mask holds them. */
 static void render_emit_polygon(struct render_frame *f, const struct render_pass *pass,
-                                const uint32_t *idx, uint32_t n, uint8_t color, uint16_t key)
+                                const uint32_t *idx, uint32_t n, uint32_t hidden, uint8_t color,
+                                uint16_t key)
 {
     const bool wire = FW_WITH_WIREFRAME && pass->wireframe;
+    uint32_t draw = 0;  /* bit k: edge k is drawn */
 
+    if (wire) {
+        for (uint32_t k = 0; k < n; k++) {
+            if (((hidden >> k) & 1u) == 0u && render_edge_first(f, idx[k], idx[(k + 1u) % n])) {
+                draw |= 1u << k;
+            }
+        }
+    }
     if (wire && !pass->gpu_lines) {
         if (FW_WITH_LINE_EMULATION) {
             for (uint32_t k = 0; k < n; k++) {
-                render_emit_line(f, pass, idx[k], idx[(k + 1u) % n], color, key);
+                if (((draw >> k) & 1u) != 0u) {
+                    render_emit_line(f, pass, idx[k], idx[(k + 1u) % n], color, key);
+                }
             }
         }
         return;  /* without emulation app.c keeps the wireframe off on such a GPU */
@@ -280,8 +347,13 @@ static void render_emit_polygon(struct render_frame *f, const struct render_pass
         uint8_t kind = (uint8_t)GPU_PRIM_KIND_TRI;
 
         if (wire) {
-            kind = (uint8_t)(RENDER_PRIM_OUTLINE | 0x02u | ((k == 1u) ? 0x01u : 0u) |
-                             ((k + 2u == n) ? 0x04u : 0u));
+            const uint32_t edges = (((draw >> k) & 1u) << 1) | ((k == 1u) ? (draw & 1u) : 0u) |
+                                   ((k + 2u == n) ? ((draw >> (n - 1u)) & 1u) << 2 : 0u);
+
+            if (edges == 0u) {
+                continue;
+            }
+            kind = (uint8_t)(RENDER_PRIM_OUTLINE | edges);
             f->outline_count += (f->prim_count < f->prim_cap) ? 1u : 0u;  /* else dropped */
         }
         render_emit_prim(f, idx[0], idx[k], idx[k + 1u], color, kind, key);
@@ -371,7 +443,9 @@ static void render_clipped_face(struct render_frame *f, const struct render_pass
     }
     /* Key: the polygon's mean depth, times three like the fast path's sum. n <= 9. */
     depth_sum = depth_sum * 3u / n;
-    render_emit_polygon(f, pass, idx, n, render_face_color(light, mesh, face, material_override),
+    /* A clipped polygon's edges are not the face's (hidden edges are not tracked through
+     * clip.c): every one is drawn. */
+    render_emit_polygon(f, pass, idx, n, 0u, render_face_color(light, mesh, face, material_override),
                         (uint16_t)((depth_sum > 65535u) ? 65535u : depth_sum));
     f->stats.faces_emitted++;
 }
@@ -436,7 +510,8 @@ render_face_general(struct render_frame *f, const struct render_pass *pass, cons
     } else {
         const uint32_t idx[3] = {base + face->v[0], base + face->v[1], base + face->v[2]};
 
-        render_emit_polygon(f, pass, idx, 3u, render_face_color(light, mesh, face, material_override),
+        render_emit_polygon(f, pass, idx, 3u, (uint32_t)(face->flags & MESH_FACE_EDGES_HIDDEN) >> 1,
+                            render_face_color(light, mesh, face, material_override),
                             (uint16_t)render_face_key(face, a, b, c));
         f->stats.faces_emitted++;
     }
@@ -567,6 +642,10 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
 
     f->stats.faces_in += nf;
     f->stats.objects_in++;
+    if (FW_WITH_WIREFRAME && pass->wireframe && f->edge_used > f->edge_cap / 2u &&
+        f->edge_used <= f->edge_cap) {
+        render_edge_set_clear(f);  /* no edge is shared between objects (render_edge_first) */
+    }
 
     /* Model -> view: r = (V O) R, t = (V O)(pos - focus) + V (focus - eye). pos and focus are
      * world points (within +-1024 per axis, real.h; scene_add_object enforces it for pos, and the

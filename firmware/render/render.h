@@ -95,6 +95,13 @@ struct render_frame {
     uint32_t sorted_count;  /* primitives covered by render_sort; later ones are overlay */
     uint32_t outline_count; /* RENDER_PRIM_OUTLINE primitives among them (batch.c expands them) */
     uint8_t batch_stamp;    /* batch.c: stamp of the last batch filled from these vertices */
+    /* A wireframe pass draws an edge two front faces share once (render.c): the edges drawn so
+     * far, as (lower vertex << 16 | higher vertex) keys (0 = empty slot), open addressing in
+     * edge_cap words (a power of two; 0: no such set, every edge drawn). The storage is sort_tmp,
+     * which nothing uses before render_sort. */
+    uint32_t *edge_set;
+    uint32_t edge_cap;
+    uint32_t edge_used;     /* keys in the set; edge_cap + 1: not cleared since render_frame_begin */
     struct render_stats stats;
 };
 

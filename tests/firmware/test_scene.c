@@ -244,6 +244,86 @@ void test_scene_frames(void)
     }
 }
 
+/* The cubes' wireframe (issue #14): every line drawn is an edge of a cube, never a face's
+ * diagonal, and an edge two visible faces share is drawn once, so a cube shows at most its 9
+ * visible edges (three faces). Each cube is the 8-vertex box, vertex = corner bits (cubes.c), and
+ * a pass without clipping projects the visible cubes' vertices in blocks of 8: lines a-b of one
+ * block whose indices differ in one bit are edges; two bits, a diagonal. Before the fix every
+ * triangle drew its three edges: 18 lines (6 diagonals, the shared edges twice) for a cube seen
+ * from a corner. */
+void test_scene_cubes_wireframe_edges(void)
+{
+    static const char *const keys[] = {"", "llll", "iiii", "kkkkjj", "uuu", "oooooo", "jjjjjjjj"};
+    uint32_t checked = 0;
+    uint32_t edges_total = 0;
+
+    scene_start(&scene, scene_find("cubes"));
+    for (uint32_t fr = 0; fr < 21u; fr++) {
+        struct input_decoder dec;
+        struct input_counts c;
+        struct scene_event ev;
+        const char *text = keys[fr % 7u];
+        uint64_t pairs[64] = {0}; /* per block: bit 8 a + b for the edge a < b (local corners) */
+        uint32_t objects_blocks;
+
+        input_decoder_init(&dec);
+        input_counts_clear(&c);
+        input_feed(&dec, &c, (const uint8_t *)text, (uint32_t)strlen(text));
+        scene_update(&scene, &c, &ev);
+        render_scene(&scene, &frame, true);
+        CHECK_EQ(frame.stats.dropped, 0);
+        if (frame.stats.faces_clipped != 0u) {
+            continue;  /* a clipped face's vertices break the blocks of 8 */
+        }
+        objects_blocks = 0;
+        for (uint32_t i = 0; i < frame.prim_count; i++) {
+            const struct render_prim *p = &frame.prim[i];
+
+            if ((p->kind & RENDER_PRIM_OUTLINE) == 0u) {
+                continue;  /* the crosshair's lines */
+            }
+            for (uint32_t k = 0; k < 3u; k++) {
+                uint32_t a = p->v[k];
+                uint32_t b = p->v[(k + 1u) % 3u];
+                uint32_t t;
+                uint32_t diff;
+
+                if ((p->kind & (1u << k)) == 0u) {
+                    continue;
+                }
+                if (a > b) {
+                    t = a;
+                    a = b;
+                    b = t;
+                }
+                CHECK((a >> 3) == (b >> 3) && (a >> 3) < 64u);
+                if ((a >> 3) != (b >> 3) || (a >> 3) >= 64u) {
+                    return;
+                }
+                diff = (a ^ b) & 7u;
+                if (diff != 1u && diff != 2u && diff != 4u) {
+                    unit_fail(__FILE__, __LINE__, "cubes frame %u: line %u-%u is a diagonal",
+                              (unsigned)fr, (unsigned)a, (unsigned)b);
+                }
+                if ((pairs[a >> 3] >> (8u * (a & 7u) + (b & 7u)) & 1u) != 0u) {
+                    unit_fail(__FILE__, __LINE__, "cubes frame %u: edge %u-%u drawn twice",
+                              (unsigned)fr, (unsigned)a, (unsigned)b);
+                }
+                pairs[a >> 3] |= 1ull << (8u * (a & 7u) + (b & 7u));
+                objects_blocks = ((a >> 3) + 1u > objects_blocks) ? (a >> 3) + 1u : objects_blocks;
+                edges_total++;
+            }
+        }
+        for (uint32_t blk = 0; blk < objects_blocks; blk++) {
+            CHECK(__builtin_popcountll(pairs[blk]) <= 9);
+        }
+        CHECK(objects_blocks > 0u);
+        checked++;
+    }
+    CHECK(checked >= 10u);
+    CHECK(edges_total > 0u);
+}
+
 /* Voxel: B breaks the block under the crosshair, P puts one back in front of the hit face. */
 void test_scene_voxel_place_break(void)
 {

@@ -113,6 +113,7 @@ void unit_srand(uint32_t seed);
     X(test_scene_capacities)          \
     X(test_scene_sizes)               \
     X(test_scene_frames)              \
+    X(test_scene_cubes_wireframe_edges) \
     X(test_scene_voxel_place_break)   \
     X(test_scene_voxel_pool)          \
     X(test_gpu_native_words)          \

@@ -191,6 +191,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     cfg.span_w = spans[opt % 6u];
     cfg.lines = (opt & 0x08u) != 0u;
     cfg.zbuf = (opt & 0x10u) != 0u;
+    cfg.wmask = (opt & 0x40u) != 0u;
     cfg.zbuf_bits = (const unsigned[]){16u, 8u, 12u, 0u}[opt >> 6];  /* 0: replaced by 16 */
     gpu_model_reset_config(m, (opt & 0x20u) ? &cfg : NULL);
     if ((opt & 0x20u) == 0u) {

@@ -29,7 +29,7 @@ static void test_caps(void)
      * the default, with the depth buffer; 0 without). */
     CHECK_EQ(caps_of(1, false, false), 0x0100u);
     CHECK_EQ(caps_of(4, true, false), 0x0401u);
-    CHECK_EQ(caps_of(8, true, false), 0x0801u); /* the RTL defaults */
+    CHECK_EQ(caps_of(8, true, false), 0x0801u); /* the RTL defaults, but the mask */
     CHECK_EQ(caps_of(8, false, true), 0x100802u);
     CHECK_EQ(caps_of(16, true, true), 0x101003u);
     CHECK_EQ(caps_of(16, false, false), 0x1000u);
@@ -49,14 +49,15 @@ static void test_caps(void)
     CHECK_EQ(m->cfg.span_w, 16);
     CHECK(!m->cfg.lines);
     CHECK(m->cfg.zbuf);
-    /* NULL: the defaults; gpu_model_reset: the defaults again. */
+    /* NULL: the defaults (SPAN_W 8, lines, the write mask [2]); gpu_model_reset: the defaults
+     * again. */
     gpu_model_reset_config(m, NULL);
-    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0801u);
-    gpu_model_config cfg = { 1, false, true, 0, 0, 12 };
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0805u);
+    gpu_model_config cfg = { 1, false, true, 0, 0, 12, false };
     gpu_model_reset_config(m, &cfg);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0C0102u);
     gpu_model_reset(m);
-    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0801u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0805u);
     CHECK_EQ(m->cfg.span_w, 8);
     CHECK(m->cfg.lines);
     CHECK(!m->cfg.zbuf);
@@ -330,6 +331,55 @@ static void test_spans(void)
     }
 }
 
+/* ------------------------------------------------------- FB_WRITE_MASK */
+
+/* The write mask (contract FB_WRITE_MASK): 3 after reset; keeps only its two plane bits; ignored
+ * without the option; a clear and a triangle write only the chosen nibbles of each pixel. */
+static void test_write_mask(void)
+{
+    static const int32_t tri[6] = {16 * 10, 16 * 10, 16 * 10, 16 * 50, 16 * 50, 16 * 10};
+    gpu_model *m = test_new_model();
+    gpu_model *plain = test_new_model_cfg(8, true, false);
+
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS) & GPU_CAPS_WMASK_MASK, GPU_CAPS_WMASK_MASK);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_FB_WRITE_MASK), 3u);
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, 0xFFFFFFF1u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_FB_WRITE_MASK), GPU_WMASK_LO_MASK);
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, 0u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_FB_WRITE_MASK), 0u);
+    /* Without the option the register stays 3 and every bit is written. */
+    CHECK_EQ(gpu_model_read(plain, GPU_REG_CAPS) & GPU_CAPS_WMASK_MASK, 0u);
+    gpu_model_write(plain, GPU_REG_FB_WRITE_MASK, 1u);
+    CHECK_EQ(gpu_model_read(plain, GPU_REG_FB_WRITE_MASK), 3u);
+
+    /* Both planes: clear to 0x5A; then the high plane only: a clear to 0xC3 gives 0xCA; then
+     * the low plane only, a triangle of colour 0x71 inside: 0xC1 there, 0xCA elsewhere; mask 0:
+     * a clear changes nothing. PERF_PIXELS counts the covered pixels whatever the mask. */
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, 3u);
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 3, 0, 0, 0x5Au, 100);
+    CHECK_EQ(test_back_px(m, 0, 0), 0x5Au);
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, GPU_WMASK_HI_MASK);
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 3, 0, 0, 0xC3u, 101);
+    CHECK_EQ(test_back_px(m, 0, 0), 0xCAu);
+    CHECK_EQ(test_back_px(m, 319, 239), 0xCAu);
+    for (uint32_t i = 0; i < 3; i++) {
+        test_set_vtx(m, i, tri[2 * i], tri[2 * i + 1]);
+    }
+    test_set_prim(m, 0, 0, 1, 2, 0x71u, GPU_PRIM_KIND_TRI);
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, GPU_WMASK_LO_MASK);
+    test_batch(m, 0, 0, 3, 0, 1, 0, 102);
+    CHECK_EQ(test_back_px(m, 15, 15), 0xC1u);
+    CHECK_EQ(test_back_px(m, 5, 5), 0xCAu);
+    CHECK(gpu_model_read(m, GPU_REG_PERF_PIXELS) > 0u);
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, 0u);
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 3, 0, 1, 0x00u, 103);
+    CHECK_EQ(test_back_px(m, 15, 15), 0xC1u);
+    CHECK_EQ(test_back_px(m, 5, 5), 0xCAu);
+    CHECK(gpu_model_read(m, GPU_REG_PERF_PIXELS) > 0u);
+    free(m);
+    free(plain);
+}
+
 /* ------------------------------------------------------- capacities */
 
 /* A GPU built with smaller buffers (contract: VTX_CAP / TRI_CAP are build
@@ -342,7 +392,7 @@ static void test_capacities(void)
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), GPU_TRI_CAP);
 
-    gpu_model_config cfg = { 8, true, false, 32, 16, 0 };
+    gpu_model_config cfg = { 8, true, false, 32, 16, 0, false };
     CHECK(gpu_model_config_error(&cfg) == NULL);
     gpu_model_reset_config(m, &cfg);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), 32);
@@ -384,12 +434,12 @@ static void test_capacities(void)
 
     /* 0: the contract's; above the contract's limit: refused by
      * gpu_model_config_error, replaced by the limit by reset_config. */
-    gpu_model_config zero = { 8, true, false, 0, 0, 0 };
+    gpu_model_config zero = { 8, true, false, 0, 0, 0, false };
     CHECK(gpu_model_config_error(&zero) == NULL);
     gpu_model_reset_config(m, &zero);
     CHECK_EQ(m->cfg.vtx_cap, GPU_VTX_CAP);
     CHECK_EQ(m->cfg.tri_cap, GPU_TRI_CAP);
-    gpu_model_config big = { 8, true, false, GPU_VTX_CAP + 1u, 16, 0 };
+    gpu_model_config big = { 8, true, false, GPU_VTX_CAP + 1u, 16, 0, false };
     CHECK(gpu_model_config_error(&big) != NULL);
     gpu_model_reset_config(m, &big);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);
@@ -403,6 +453,7 @@ static void test_capacities(void)
 void test_config(void)
 {
     test_caps();
+    test_write_mask();
     test_capacities();
     test_ctrl();
     test_reset_reg();

@@ -62,7 +62,7 @@ gpu_model *test_new_model(void)
 gpu_model *test_new_model_cfg(unsigned span_w, bool lines, bool zbuf)
 {
     gpu_model *m = alloc_model();
-    gpu_model_config cfg = { span_w, lines, zbuf, 0, 0, GPU_MODEL_DEFAULT_ZBUF_BITS }; /* capacities: the contract's */
+    gpu_model_config cfg = { span_w, lines, zbuf, 0, 0, GPU_MODEL_DEFAULT_ZBUF_BITS, false }; /* capacities: the contract's; no write mask */
     gpu_model_reset_config(m, &cfg);
     return m;
 }
@@ -226,12 +226,13 @@ void test_bus(void)
     /* Identity. */
     CHECK_EQ(gpu_model_read(m, GPU_REG_ID), GPU_ID_VALUE);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VERSION), GPU_VERSION_VALUE);
-    /* Default build options (the RTL defaults): SPAN_W 8, lines, no zbuf. */
+    /* Default build options (the RTL defaults): SPAN_W 8, lines, no zbuf, the write mask. */
     uint32_t caps = gpu_model_read(m, GPU_REG_CAPS);
     CHECK_EQ(caps & GPU_CAPS_LINES_MASK, GPU_CAPS_LINES_MASK);
     CHECK_EQ(caps & GPU_CAPS_ZBUF_MASK, 0);
+    CHECK_EQ(caps & GPU_CAPS_WMASK_MASK, GPU_CAPS_WMASK_MASK);
     CHECK_EQ((caps & GPU_CAPS_SPAN_W_MASK) >> GPU_CAPS_SPAN_W_LSB, 8);
-    CHECK_EQ(caps, 0x801u);
+    CHECK_EQ(caps, 0x805u);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), GPU_TRI_CAP);
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), 512);
