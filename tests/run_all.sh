@@ -129,6 +129,7 @@ suite scene-host-vs-cosim     67 bash tests/scenes/host_vs_cosim.sh
 suite scene-watchdog          15 bash tests/scenes/watchdog.sh
 suite scene-keys-burst         9 bash tests/scenes/keys_burst.sh
 suite scene-host-features     13 bash tests/scenes/host_features.sh
+suite scene-anaglyph          10 bash tests/scenes/anaglyph.sh
 suite scene-lean-build        12 bash tests/scenes/lean_build.sh
 suite scene-manifest           3 bash tests/manifest/manifest.sh
 suite soc-vs-cosim            55 bash tests/soc/vs_cosim.sh
