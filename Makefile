@@ -19,6 +19,9 @@ GPUSIM      := $(BUILD)/sim-w$(SPAN_W)/gpusim
 BENCH_SIMS  := $(foreach w,1 4 8 16,$(BUILD)/sim-w$(w)/gpusim)
 ZBUF_SIM    := $(BUILD)/sim-z-w8/gpusim
 ZBUF_SIMS   := $(foreach w,1 4 8 16,$(BUILD)/sim-z-w$(w)/gpusim)
+# Gouraud triangles (ENABLE_GOURAUD) with the depth buffer: sim-g-w<SPAN_W>. GOURAUD=1 runs on it.
+GOURAUD     ?= 0
+GOURAUD_SIM := $(BUILD)/sim-g-w8/gpusim
 GPUSIM_W8   := $(BUILD)/sim-w8/gpusim
 GPUSIM_FAST := $(BUILD)/sim-fast-w$(SPAN_W)/gpusim
 PNG_DIFF    := $(BUILD)/tools/png_diff
@@ -97,7 +100,7 @@ BUILD_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 TEST_ENV = GPUSIM=$(GPUSIM) GPUSIM_FAST=$(GPUSIM_FAST) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUITE='$(SUITE)' \
            $(if $(TEST_JOBS),TEST_JOBS=$(TEST_JOBS))
 # The simulators first: the longest builds, started early so that the short ones fill the tail.
-TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) $(GPUSIM_FAST) fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
+TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM) $(GPUSIM_FAST) fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
              fw-test-deps $(PNG_DIFF) $(MESHCONV) $(UPLOAD_PEER)
 test: setup
 	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) VERILATOR_JOBS=1 TEST_BUILD_ONLY=1 test-quick
@@ -127,9 +130,12 @@ lint:
 	@echo "lint: $(words $(RTL_V)) files of $(RTL_FILES) clean under -Wall"
 
 # ---- longer randomized RTL-vs-model run ----
-random-long: $(GPUSIM)
+random-long: $(GPUSIM) $(GOURAUD_SIM)
 	for seed in 101 102 103 104 105 106 107 108 109 110; do \
 	  $(GPUSIM) random --seed $$seed --batches 500 --tris 500 --swap-percent 10 --min-prims 100000 || exit 1; done
+	@# Gouraud triangles (40 % of the primitives there, random intensities, extremes, slow gradients).
+	for seed in 111 112 113; do \
+	  $(GOURAUD_SIM) random --seed $$seed --batches 500 --tris 500 --swap-percent 10 --min-prims 100000 || exit 1; done
 
 # ---- the GPU without firmware: a primitive list through RTL and model ----
 raster: $(GPUSIM)
@@ -251,6 +257,9 @@ $(BUILD)/sim-w%/gpusim: $(SIM_DEPS)
 
 $(BUILD)/sim-z-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$* -GENABLE_ZBUF=1)
+
+$(BUILD)/sim-g-w%/gpusim: $(SIM_DEPS)
+	$(call verilate,$@,-GSPAN_W=$* -GENABLE_ZBUF=1 -GENABLE_GOURAUD=1)
 
 $(BUILD)/sim-fast-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$*,gpu_core,-DGPUSIM_FAST_DISPLAY=1)

@@ -18,6 +18,7 @@
 #define GPU_DEFAULT_SPAN_W           8u  /* Pixels rasterized per clock: 1, 4, 8 or 16 (CAPS_SPAN_W). */
 #define GPU_DEFAULT_ENABLE_LINES     1u  /* Line primitives (CAPS_LINES); without them a line sets ERR_KIND. */
 #define GPU_DEFAULT_ENABLE_ZBUF      0u  /* 16-bit depth buffer (CAPS_ZBUF); without it CTRL_ZTEST and CTRL_ZCLEAR have no effect. */
+#define GPU_DEFAULT_ENABLE_GOURAUD   0u  /* Gouraud triangles (PRIM_KIND_TRI_GOURAUD: VTX_I interpolated, palette ramp, CTRL_DITHER; CAPS_GOURAUD); without them such a triangle sets ERR_KIND. */
 
 /* Bus windows: byte offset and size from the GPU base. */
 #define GPU_WIN_REGS                 0x00000u  /* Registers, 32-bit words. */
@@ -89,6 +90,8 @@
 #define GPU_CTRL_ZTEST_MASK          0x00000004u
 #define GPU_CTRL_ZCLEAR_LSB          3u  /* in CTRL: Fill the depth buffer with 0xFFFF before drawing (needs CAPS_ZBUF; ignored without). */
 #define GPU_CTRL_ZCLEAR_MASK         0x00000008u
+#define GPU_CTRL_DITHER_LSB          4u  /* in CTRL: Gouraud triangles pick between adjacent ramp levels by the 4x4 ordered-dither threshold; without, the level is rounded down (stored with any build; acts only with CAPS_GOURAUD). */
+#define GPU_CTRL_DITHER_MASK         0x00000010u
 #define GPU_STATUS_BUSY_LSB          0u  /* in STATUS: A batch is running (drawing or waiting for vsync). */
 #define GPU_STATUS_BUSY_MASK         0x00000001u
 #define GPU_STATUS_FRONT_LSB         1u  /* in STATUS: Which framebuffer (0/1) is scanned out. */
@@ -97,6 +100,8 @@
 #define GPU_CAPS_LINES_MASK          0x00000001u
 #define GPU_CAPS_ZBUF_LSB            1u  /* in CAPS: A depth buffer is built in. */
 #define GPU_CAPS_ZBUF_MASK           0x00000002u
+#define GPU_CAPS_GOURAUD_LSB         4u  /* in CAPS: Gouraud triangles (PRIM_KIND_TRI_GOURAUD) are supported. */
+#define GPU_CAPS_GOURAUD_MASK        0x00000010u
 #define GPU_CAPS_SPAN_W_LSB          8u  /* in CAPS: Pixels the rasterizer evaluates per clock. */
 #define GPU_CAPS_SPAN_W_MASK         0x0000FF00u
 #define GPU_ERR_VTX_INDEX_LSB        0u  /* in ERRORS: A primitive named a vertex index >= VTX_COUNT; that primitive was skipped. */
@@ -118,6 +123,9 @@
 #define GPU_VTX_Z_WORD               1u  /* unsigned: Depth, unsigned (0 = near); reserved for the optional depth buffer. */
 #define GPU_VTX_Z_LSB                0u
 #define GPU_VTX_Z_MASK               0xFFFFu  /* applied after the shift */
+#define GPU_VTX_I_WORD               1u  /* unsigned: Intensity of a Gouraud triangle's vertex, unsigned Q4.12 shade level (0 .. 15.9998); read only by PRIM_KIND_TRI_GOURAUD. */
+#define GPU_VTX_I_LSB                16u
+#define GPU_VTX_I_MASK               0xFFFFu  /* applied after the shift */
 #define GPU_PRIM_I0_WORD             0u  /* unsigned: First vertex index (relative to VTX_BASE). */
 #define GPU_PRIM_I0_LSB              0u
 #define GPU_PRIM_I0_MASK             0xFFFFu  /* applied after the shift */
@@ -136,6 +144,7 @@
 
 #define GPU_PRIM_KIND_TRI            0u
 #define GPU_PRIM_KIND_LINE           1u
+#define GPU_PRIM_KIND_TRI_GOURAUD    2u
 #define GPU_VTX_WORDS                2u
 #define GPU_PRIM_WORDS               2u
 

@@ -50,6 +50,7 @@ ModelCheck::ModelCheck(uint32_t caps) : model_(new gpu_model), expected_(640 * 4
     cfg.span_w = (caps & GPU_CAPS_SPAN_W_MASK) >> GPU_CAPS_SPAN_W_LSB;
     cfg.lines = (caps & GPU_CAPS_LINES_MASK) != 0;
     cfg.zbuf = (caps & GPU_CAPS_ZBUF_MASK) != 0;
+    cfg.gouraud = (caps & GPU_CAPS_GOURAUD_MASK) != 0;
     gpu_model_reset_config(model_, &cfg);
 }
 

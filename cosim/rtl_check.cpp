@@ -108,7 +108,12 @@ int rtl_check_main(int argc, char **argv)
 
     Rng r{seed};
     GpuSim sim;
-    ModelCheck model(sim.read(GPU_REG_CAPS));
+    const uint32_t caps = sim.read(GPU_REG_CAPS);
+    ModelCheck model(caps);
+    // Gouraud triangles: a good share of the primitives where the GPU has them; a few elsewhere,
+    // where each must be refused with ERR_KIND.
+    const uint32_t gouraud_percent = (caps & GPU_CAPS_GOURAUD_MASK) ? 40 : 2;
+    uint64_t shaded = 0;
     Writer write{sim, model};
     uint64_t tris = 0, pixels = 0, frames = 0, resets = 0, back_checks = 0;
     std::vector<uint8_t> back(GPU_FB_WIDTH * GPU_FB_HEIGHT);
@@ -135,6 +140,11 @@ int rtl_check_main(int argc, char **argv)
         const uint32_t vbase = r.below(GPU_VTX_CAP - nv + 1);
         const uint32_t tbase = r.below(GPU_TRI_CAP - nt + 1);
         const int family = static_cast<int>(r.below(5));
+        // Intensities (VTX_I, Q4.12) of this batch: anywhere, only the extremes 0 and 65535, or
+        // close together (slow gradients, where the fraction and the dither decide).
+        const uint32_t ifamily = r.below(3);
+        const uint32_t ibase = r.below(65536);
+        uint64_t batch_shaded = 0;  // counted once the batch is checked
         Vertex anchor = {r.range(0, kFbW * 16), r.range(0, kFbH * 16)};
         for (uint32_t v = 0; v < nv; v++) {
             if (family == 1 && r.chance(20)) {
@@ -143,7 +153,9 @@ int rtl_check_main(int argc, char **argv)
             Vertex vx = random_vertex(r, r.chance(80) ? family : static_cast<int>(r.below(5)), anchor);
             const uint32_t word = static_cast<uint16_t>(clamp16(vx.x)) | static_cast<uint32_t>(static_cast<uint16_t>(clamp16(vx.y))) << 16;
             write(GPU_WIN_VTX + 8 * (vbase + v), word);
-            write(GPU_WIN_VTX + 8 * (vbase + v) + 4, r.below(65536));
+            uint32_t inten = ifamily == 0 ? r.below(65536) : ifamily == 1 ? (r.chance(50) ? 0u : 65535u)
+                                                                       : std::min<uint32_t>(65535, ibase + r.below(600));
+            write(GPU_WIN_VTX + 8 * (vbase + v) + 4, r.below(65536) | inten << GPU_VTX_I_LSB);
         }
         for (uint32_t t = 0; t < nt; t++) {
             uint32_t i0 = r.below(nv), i1 = r.below(nv), i2 = r.below(nv);
@@ -153,6 +165,9 @@ int rtl_check_main(int argc, char **argv)
             uint32_t kind = GPU_PRIM_KIND_TRI;
             if (r.chance(12)) {
                 kind = r.chance(85) ? GPU_PRIM_KIND_LINE : r.below(256);
+            } else if (r.chance(gouraud_percent)) {
+                kind = GPU_PRIM_KIND_TRI_GOURAUD;
+                batch_shaded++;
             }
             write(GPU_WIN_IDX + 8 * (tbase + t), i0 | i1 << 16);
             write(GPU_WIN_IDX + 8 * (tbase + t) + 4, i2 | r.below(256) << 16 | kind << 24);
@@ -176,6 +191,9 @@ int rtl_check_main(int argc, char **argv)
         }
         if (r.chance(30) || b == 0 || clear_forced) {  // a reset may also leave the depths half done
             ctrl |= GPU_CTRL_ZCLEAR_MASK;
+        }
+        if (r.chance(50)) {  // ordered dithering of Gouraud triangles (ignored without CAPS_GOURAUD)
+            ctrl |= GPU_CTRL_DITHER_MASK;
         }
         write(GPU_WIN_REGS + GPU_REG_CTRL, ctrl);
         const uint32_t tag = static_cast<uint32_t>(b + 1);
@@ -222,6 +240,7 @@ int rtl_check_main(int argc, char **argv)
             return 1;
         }
         tris += sim.read(GPU_REG_PERF_TRIS_IN);
+        shaded += over_capacity ? 0 : batch_shaded;
         pixels += sim.read(GPU_REG_PERF_PIXELS);
     }
     if (tris < min_prims) {
@@ -229,9 +248,10 @@ int rtl_check_main(int argc, char **argv)
                     static_cast<unsigned long long>(tris), static_cast<unsigned long long>(min_prims));
         return 1;
     }
-    std::printf("random: seed %llu: %d batches, %llu primitives, %llu pixels, %llu back buffers, %llu frames, "
-                "%llu resets: RTL equals model\n",
+    std::printf("random: seed %llu: %d batches, %llu primitives (%llu Gouraud), %llu pixels, %llu back buffers, "
+                "%llu frames, %llu resets: RTL equals model\n",
                 static_cast<unsigned long long>(seed), batches, static_cast<unsigned long long>(tris),
+                static_cast<unsigned long long>(shaded),
                 static_cast<unsigned long long>(pixels), static_cast<unsigned long long>(back_checks),
                 static_cast<unsigned long long>(frames), static_cast<unsigned long long>(resets));
     return 0;

@@ -11,8 +11,9 @@
  * swap) to completion inside gpu_model_write(), so STATUS.BUSY is never seen
  * set, ERR_WRITE_BUSY can never happen and a RESET write has nothing to abort.
  *
- * Like the RTL, the model is built with three options (contract "Build
- * options, reported in CAPS"): the span width, lines, and the depth buffer.
+ * Like the RTL, the model is built with four options (contract "Build
+ * options, reported in CAPS"): the span width, lines, the depth buffer and
+ * Gouraud triangles.
  *
  * Host C11 (and includable from C++), no dependencies beyond the C library.
  * The state is one plain struct (~310 KiB because of the two framebuffers and
@@ -39,12 +40,13 @@
 #define GPU_MODEL_DEFAULT_SPAN_W GPU_DEFAULT_SPAN_W
 #define GPU_MODEL_DEFAULT_LINES  (GPU_DEFAULT_ENABLE_LINES != 0u)
 #define GPU_MODEL_DEFAULT_ZBUF   (GPU_DEFAULT_ENABLE_ZBUF != 0u)
+#define GPU_MODEL_DEFAULT_GOURAUD (GPU_DEFAULT_ENABLE_GOURAUD != 0u)
 
 /* The bits of CTRL the contract defines; CTRL keeps (and reads back) only
  * these, whatever the build options. */
 #define GPU_MODEL_CTRL_BITS \
     (GPU_CTRL_CLEAR_MASK | GPU_CTRL_SWAP_MASK | GPU_CTRL_ZTEST_MASK | \
-     GPU_CTRL_ZCLEAR_MASK)
+     GPU_CTRL_ZCLEAR_MASK | GPU_CTRL_DITHER_MASK)
 
 /*
  * The build options the modelled GPU was "built" with; CAPS reports them.
@@ -54,11 +56,16 @@
  *   lines:  ENABLE_LINES; without it a line primitive sets ERR_KIND.
  *   zbuf:   ENABLE_ZBUF; without it CTRL_ZTEST / CTRL_ZCLEAR have no effect
  *           (they are still stored and read back) and zbuf[] is never touched.
+ *   gouraud: ENABLE_GOURAUD; without it a PRIM_KIND_TRI_GOURAUD primitive
+ *           sets ERR_KIND and CTRL_DITHER has no effect (it is still stored).
+ *           Last, so that an initializer naming the first three leaves it
+ *           false, the RTL's default.
  */
 typedef struct gpu_model_config {
     unsigned span_w;
     bool lines;
     bool zbuf;
+    bool gouraud;
 } gpu_model_config;
 
 /*
@@ -70,7 +77,7 @@ typedef struct gpu_model {
     /* The build options (set by gpu_model_reset_config(); read-only after). */
     gpu_model_config cfg;
 
-    /* Batch registers (rw).  ctrl keeps the four defined CTRL bits
+    /* Batch registers (rw).  ctrl keeps the five defined CTRL bits
      * (GPU_MODEL_CTRL_BITS), the others the whole 32-bit value written.  A
      * batch uses CTRL_CLEAR, CTRL_SWAP, CTRL_ZTEST and CTRL_ZCLEAR (the last
      * two only with cfg.zbuf) and CLEAR_COLOR[7:0]. */

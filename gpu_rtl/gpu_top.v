@@ -25,6 +25,8 @@ module gpu_top #(
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,  // line primitives (CAPS_LINES)
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,    // 16-bit depth buffer (CAPS_ZBUF):
                                                                          // 1.2 Mb more block RAM
+    parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,  // Gouraud triangles
+                                         // (CAPS_GOURAUD): VTX_I RAM, two dividers, intensity lanes
     parameter integer PIX_DIV = 4,       // clk_pix clocks per VGA pixel (1 for a 25 MHz clk_pix)
     localparam integer FB_PAW = $clog2(gpu_pkg::GPU_FB_PIXELS)
 ) (
@@ -58,7 +60,8 @@ module gpu_top #(
     wire [11:0] pal_rd_data;
 
     gpu_core #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .SPAN_W(SPAN_W),
-               .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF)) u_core (
+               .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF),
+               .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_core (
         .clk(clk), .rst(rst),
         .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr), .bus_wdata(bus_wdata),
         .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid),
