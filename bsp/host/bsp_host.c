@@ -43,6 +43,7 @@ void bsp_init(void)
     mc.span_w = host_cfg.span_w;
     mc.lines = host_cfg.lines;
     mc.zbuf = host_cfg.zbuf;
+    mc.gouraud = host_cfg.gouraud;
     gpu_model_reset_config(host_gpu, &mc);
     setvbuf(stdout, NULL, _IOLBF, 0);
 }

@@ -22,6 +22,7 @@ struct bsp_host_config {
     unsigned span_w;         /* model build options (CAPS), as gpu_model_config */
     bool lines;
     bool zbuf;
+    bool gouraud;            /* a GPU built with Gouraud triangles (CAPS_GOURAUD) */
     const char *dump_dir;    /* the scene of every frame for tools/exact_ref, NULL: none */
 };
 

@@ -2,14 +2,15 @@
  * host_main.c — command line of the host build: the firmware's frame loop (app_run) on Linux,
  * rendering through the golden model.
  *
- *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--span-w N] [--model FILE]
- *           [--dump-scene DIR]
+ *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--gouraud] [--span-w N]
+ *           [--model FILE] [--dump-scene DIR]
  *
  *   --frames DIR      write each swapped frame as DIR/NNNN.png (as gpusim cosim does)
  *   --keys-at N:TEXT  type TEXT just before doorbell N (1 = first) is serviced, byte for byte
  *                     (as gpusim cosim; use the shell's $'...' for control bytes)
  *   --no-lines        model a GPU built without line primitives (CAPS_LINES = 0)
  *   --zbuf            model a GPU built with the depth buffer (CAPS_ZBUF = 1)
+ *   --gouraud         model a GPU built with Gouraud triangles (CAPS_GOURAUD = 1)
  *   --span-w N        SPAN_W the model reports (1, 4, 8, 16; default 8)
  *   --dump-scene DIR  write each frame's scene after its update as DIR/NNNN.scene: world-space
  *                     triangles with their normals and materials, light, camera, palette (the
@@ -49,7 +50,7 @@ static int host_load_model(const char *path)
 static int host_usage(void)
 {
     fprintf(stderr, "usage: fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] "
-                    "[--span-w N] [--model FILE] [--dump-scene DIR]\n");
+                    "[--gouraud] [--span-w N] [--model FILE] [--dump-scene DIR]\n");
     return 2;
 }
 
@@ -90,6 +91,8 @@ int main(int argc, char **argv)
             cfg.lines = false;
         } else if (strcmp(a, "--zbuf") == 0) {
             cfg.zbuf = true;
+        } else if (strcmp(a, "--gouraud") == 0) {
+            cfg.gouraud = true;
         } else if (strcmp(a, "--dump-scene") == 0 && has_value) {
             cfg.dump_dir = argv[++i];
             if (mkdir(cfg.dump_dir, 0755) != 0) {

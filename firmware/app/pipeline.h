@@ -27,6 +27,7 @@ struct pipeline_opts {
     bool wireframe;   /* F: outlines instead of filled faces */
     bool depth_test;  /* Z: every vertex gets its GPU depth (CTRL_ZTEST is the batch's) */
     bool gpu_lines;   /* the GPU draws line primitives (CAPS_LINES) */
+    bool gouraud;     /* meshes with vertex normals as Gouraud triangles (CAPS_GOURAUD, FW_GOURAUD) */
 };
 
 /* Where a pass's instructions went, in the units of the clock given to pipeline_pass. */
@@ -66,6 +67,7 @@ static inline void pipeline_pass(struct render_frame *f, const struct scene *s,
     pass.proj.zbuf = opts->depth_test;
     pass.wireframe = opts->wireframe;
     pass.gpu_lines = opts->gpu_lines;
+    pass.gouraud = FW_WITH_GOURAUD && opts->gouraud;
     pass.eye_material = (eye < 0) ? MAT_ANAGLYPH_LEFT : ((eye > 0) ? MAT_ANAGLYPH_RIGHT : 0u);
     render_frame_begin(f);
     scene_draw(s, f, &pass);

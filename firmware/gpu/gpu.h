@@ -60,6 +60,11 @@ static inline bool gpu_caps_zbuf(uint32_t caps)
     return (caps & GPU_CAPS_ZBUF_MASK) != 0u;
 }
 
+static inline bool gpu_caps_gouraud(uint32_t caps)
+{
+    return (caps & GPU_CAPS_GOURAUD_MASK) != 0u;
+}
+
 /* What the device reports about itself (read by gpu_init). */
 struct gpu_info {
     uint32_t id;
