@@ -15,15 +15,18 @@ include tools/manifest.mk
 
 SPAN_W      ?= 8
 ZBUF        ?= 0
-GPUSIM      := $(BUILD)/sim-w$(SPAN_W)/gpusim
+# GOURAUD=1: run on a GPU built with Gouraud triangles (ENABLE_GOURAUD, with the depth buffer):
+# sim-g-w<SPAN_W> and sim-fast-g-w<SPAN_W>; the scenes with vertex normals are then shaded.
+GOURAUD     ?= 0
+GPUSIM_G    := $(if $(filter 1,$(GOURAUD)),g-)
+GPUSIM      := $(BUILD)/sim-$(GPUSIM_G)w$(SPAN_W)/gpusim
 BENCH_SIMS  := $(foreach w,1 4 8 16,$(BUILD)/sim-w$(w)/gpusim)
 ZBUF_SIM    := $(BUILD)/sim-z-w8/gpusim
 ZBUF_SIMS   := $(foreach w,1 4 8 16,$(BUILD)/sim-z-w$(w)/gpusim)
-# Gouraud triangles (ENABLE_GOURAUD) with the depth buffer: sim-g-w<SPAN_W>. GOURAUD=1 runs on it.
-GOURAUD     ?= 0
+# Gouraud triangles (ENABLE_GOURAUD) with the depth buffer: sim-g-w<SPAN_W> (make test's is w8).
 GOURAUD_SIM := $(BUILD)/sim-g-w8/gpusim
 GPUSIM_W8   := $(BUILD)/sim-w8/gpusim
-GPUSIM_FAST := $(BUILD)/sim-fast-w$(SPAN_W)/gpusim
+GPUSIM_FAST := $(BUILD)/sim-fast-$(GPUSIM_G)w$(SPAN_W)/gpusim
 PNG_DIFF    := $(BUILD)/tools/png_diff
 
 # The harness's C parts (VGA monitor model, PNG writer), built once: the co-simulator and the
@@ -263,6 +266,9 @@ $(BUILD)/sim-g-w%/gpusim: $(SIM_DEPS)
 
 $(BUILD)/sim-fast-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$*,gpu_core,-DGPUSIM_FAST_DISPLAY=1)
+
+$(BUILD)/sim-fast-g-w%/gpusim: $(SIM_DEPS)
+	$(call verilate,$@,-GSPAN_W=$* -GENABLE_ZBUF=1 -GENABLE_GOURAUD=1,gpu_core,-DGPUSIM_FAST_DISPLAY=1)
 
 # A scene manifest's GPU (tools/manifest.mk): sim-cfg-<tag>, sim-fast-cfg-<tag>, e.g. w8-v32-t32.
 $(BUILD)/sim-cfg-%/gpusim: $(SIM_DEPS)

@@ -114,6 +114,9 @@ extern "C" {
 #ifndef SOCSIM_ENABLE_ZBUF
 #define SOCSIM_ENABLE_ZBUF GPU_DEFAULT_ENABLE_ZBUF
 #endif
+#ifndef SOCSIM_ENABLE_GOURAUD
+#define SOCSIM_ENABLE_GOURAUD GPU_DEFAULT_ENABLE_GOURAUD
+#endif
 #ifndef SOCSIM_RAM_BYTES
 #define SOCSIM_RAM_BYTES SOC_RAM_DEFAULT_BYTES
 #endif
@@ -239,7 +242,8 @@ bool parse(int argc, char **argv, Options &o)
 uint32_t gpu_caps()
 {
     return (SOCSIM_SPAN_W << GPU_CAPS_SPAN_W_LSB) | ((SOCSIM_ENABLE_LINES ? 1u : 0u) << GPU_CAPS_LINES_LSB) |
-           ((SOCSIM_ENABLE_ZBUF ? 1u : 0u) << GPU_CAPS_ZBUF_LSB);
+           ((SOCSIM_ENABLE_ZBUF ? 1u : 0u) << GPU_CAPS_ZBUF_LSB) |
+           ((SOCSIM_ENABLE_GOURAUD ? 1u : 0u) << GPU_CAPS_GOURAUD_LSB);
 }
 
 // The model's context: a trace build allows traces from time 0, as Verilator asks of --trace.
