@@ -191,6 +191,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     cfg.span_w = spans[opt % 6u];
     cfg.lines = (opt & 0x08u) != 0u;
     cfg.zbuf = (opt & 0x10u) != 0u;
+    cfg.gouraud = (opt & 0x40u) != 0u;  /* (bits 6 and 7 together also ask for the scan-out) */
     gpu_model_reset_config(m, (opt & 0x20u) ? &cfg : NULL);
     if ((opt & 0x20u) == 0u) {
         REQUIRE(m->cfg.span_w == 8u && m->cfg.lines && !m->cfg.zbuf, "default options");

@@ -51,7 +51,7 @@ static void test_caps(void)
     /* NULL: the defaults; gpu_model_reset: the defaults again. */
     gpu_model_reset_config(m, NULL);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0801u);
-    gpu_model_config cfg = { 1, false, true };
+    gpu_model_config cfg = { 1, false, true, false };
     gpu_model_reset_config(m, &cfg);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0102u);
     gpu_model_reset(m);
