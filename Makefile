@@ -146,7 +146,7 @@ raster: $(GPUSIM)
 	$(GPUSIM) raster --in $(IN) --out $(OUT)
 
 # ---- GPU performance, counted in simulated cycles, for each span width ----
-bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(FW_ELF)
+bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM) $(FW_ELF)
 	@rm -rf $(BUILD)/bench-gpu/scene-lists && mkdir -p $(BUILD)/bench-gpu/scene-lists
 	@$(GPUSIM) cosim --fw $(FW_ELF) --frames $(BUILD)/bench-gpu/scene-frames --no-model-check \
 	  --dump-lists $(BUILD)/bench-gpu/scene-lists >/dev/null
