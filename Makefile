@@ -201,7 +201,7 @@ $(PNG_DIFF): tools/png_diff.c
 # ---- synthesis: yosys for 7-series (resource counts) and iCE40 place-and-route (fmax) ----
 synth:
 	@bash tools/setup.sh packages-synth.txt
-	@ZBUF=$(ZBUF) bash synth/synth.sh $(BUILD)
+	@ZBUF=$(ZBUF) GOURAUD=$(GOURAUD) bash synth/synth.sh $(BUILD)
 
 # ---- host-side simulator: Verilated GPU + co-simulation bridge + golden model ----
 HOST_OBJ := $(patsubst %.c,$(BUILD)/host/%.o,$(COSIM_C_SRC))
