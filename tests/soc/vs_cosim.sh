@@ -10,11 +10,11 @@
 #
 # Every scene: their one-scene chip builds fit the SoC's 192 KiB (`make fw-size`, suite fw-fit).
 # The host side runs make test's FW_TEST_FRAMES (4) builds (all scenes in one image, line emulation
-# compiled in: neither changes a frame, as no scene or wireframe key is pressed); on socsim tetra and
-# cubes run theirs, landscape, voxel and knot their 2-frame builds (tests/soc/tests.mk): their
-# start-up alone is millions of simulated cycles (terrain, chunk meshes, the knot's grid), and frames
-# 0-1 already cover the keys (read at frame 1). Two scenes run at a time. SOC_SCENES='tetra cubes'
-# limits the scenes.
+# compiled in: neither changes a frame, as no scene or wireframe key is pressed); on socsim every
+# scene runs its 2-frame build (tests/soc/tests.mk): a SoC frame is seconds of simulation (the
+# start-up of landscape, voxel and knot alone is millions of cycles: terrain, chunk meshes, the
+# knot's grid), and frames 0-1 already cover the keys (read at frame 1). Two scenes run at a time.
+# SOC_SCENES='tetra cubes' limits the scenes.
 source "$(dirname "$0")/../lib.sh"
 source "$(dirname "$0")/soc_lib.sh"
 need BUILD
@@ -26,16 +26,9 @@ work=$(fresh_dir soc-vs-cosim)
 # The slowest first, so that it overlaps the others.
 scenes=${SOC_SCENES:-knot voxel landscape cubes tetra}
 
-soc_elf_of() {
-    case "$1" in
-    tetra | cubes) echo "$soc_test_dir/$1.elf" ;;
-    *) echo "$soc_test_dir/$1-2f.elf" ;;
-    esac
-}
-
 one_scene() {
     local s="$1" host="$BUILD/fw-test/host-$1" soc_elf frames f
-    soc_elf=$(soc_elf_of "$s")
+    soc_elf="$soc_test_dir/$s-2f.elf"
     need_file "$host" "$soc_elf.hex"
     run_to "$work/$s.host.uart" 300 "$host" --frames "$work/$s-host" --keys-at "$keys"
     expect_status 0 "host build of $s"
