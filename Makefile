@@ -23,8 +23,11 @@ GPUSIM      := $(BUILD)/sim-$(GPUSIM_G)w$(SPAN_W)/gpusim
 BENCH_SIMS  := $(foreach w,1 4 8 16,$(BUILD)/sim-w$(w)/gpusim)
 ZBUF_SIM    := $(BUILD)/sim-z-w8/gpusim
 ZBUF_SIMS   := $(foreach w,1 4 8 16,$(BUILD)/sim-z-w$(w)/gpusim)
-# Gouraud triangles (ENABLE_GOURAUD) with the depth buffer: sim-g-w<SPAN_W> (make test's is w8).
+# Gouraud triangles (ENABLE_GOURAUD) with the depth buffer: sim-g-w<SPAN_W> (bench-gpu's is w8) and
+# on the fast display path sim-fast-g-w<SPAN_W> (make test's and random-long's: the rasterizer is
+# their subject, not the scan-out).
 GOURAUD_SIM := $(BUILD)/sim-g-w8/gpusim
+GOURAUD_SIM_FAST := $(BUILD)/sim-fast-g-w8/gpusim
 GPUSIM_W8   := $(BUILD)/sim-w8/gpusim
 GPUSIM_FAST := $(BUILD)/sim-fast-$(GPUSIM_G)w$(SPAN_W)/gpusim
 PNG_DIFF    := $(BUILD)/tools/png_diff
@@ -103,7 +106,7 @@ BUILD_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 TEST_ENV = GPUSIM=$(GPUSIM) GPUSIM_FAST=$(GPUSIM_FAST) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUITE='$(SUITE)' \
            $(if $(TEST_JOBS),TEST_JOBS=$(TEST_JOBS))
 # The simulators first: the longest builds, started early so that the short ones fill the tail.
-TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM) $(GPUSIM_FAST) fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
+TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM_FAST) $(GPUSIM_FAST) fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
              fw-test-deps $(PNG_DIFF) $(MESHCONV) $(UPLOAD_PEER)
 test: setup
 	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) VERILATOR_JOBS=1 TEST_BUILD_ONLY=1 test-quick
@@ -133,12 +136,12 @@ lint:
 	@echo "lint: $(words $(RTL_V)) files of $(RTL_FILES) clean under -Wall"
 
 # ---- longer randomized RTL-vs-model run ----
-random-long: $(GPUSIM) $(GOURAUD_SIM)
+random-long: $(GPUSIM) $(GOURAUD_SIM_FAST)
 	for seed in 101 102 103 104 105 106 107 108 109 110; do \
 	  $(GPUSIM) random --seed $$seed --batches 500 --tris 500 --swap-percent 10 --min-prims 100000 || exit 1; done
 	@# Gouraud triangles (40 % of the primitives there, random intensities, extremes, slow gradients).
 	for seed in 111 112 113; do \
-	  $(GOURAUD_SIM) random --seed $$seed --batches 500 --tris 500 --swap-percent 10 --min-prims 100000 || exit 1; done
+	  $(GOURAUD_SIM_FAST) random --seed $$seed --batches 500 --tris 500 --swap-percent 10 --min-prims 100000 || exit 1; done
 
 # ---- the GPU without firmware: a primitive list through RTL and model ----
 raster: $(GPUSIM)

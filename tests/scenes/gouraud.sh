@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Gouraud shading end to end (ENABLE_GOURAUD, CAPS_GOURAUD; firmware FW_WITH_GOURAUD):
 #  1. The landscape (its objects carry vertex normals) co-simulated on a GPU built with Gouraud
-#     triangles ($BUILD/sim-g-w8, CTRL_DITHER on): every frame from the VGA pins equals the golden
-#     model's (the harness checks it) and the host build's on the model with --gouraud.
+#     triangles ($BUILD/sim-fast-g-w8, the fast display path, CTRL_DITHER on): every frame equals
+#     the golden model's (the harness checks it) and the host build's on the model with --gouraud.
 #  2. The same firmware on a GPU without them draws the landscape flat: its frames differ from the
 #     Gouraud ones (the shading is really there), and a Gouraud frame has more distinct colours.
 #  3. Scenes without vertex normals are unchanged by a GPU with Gouraud (tetra, knot: identical
@@ -10,7 +10,7 @@
 source "$(dirname "$0")/../lib.sh"
 need BUILD
 dir="$BUILD/fw-test"
-gsim="$BUILD/sim-g-w8/gpusim"
+gsim="$BUILD/sim-fast-g-w8/gpusim"
 need_file "$dir/landscape.elf" "$dir/host-landscape" "$dir/host-landscape-float" "$dir/host-tetra" \
     "$dir/host-knot" "$gsim"
 work=$(fresh_dir scene-gouraud)
@@ -22,7 +22,7 @@ run_to "$work/cosim.out" 300 "$gsim" cosim --fw "$dir/landscape.elf" --frames "$
 "$dir/host-landscape" --gouraud --frames "$work/host" >"$work/host.log"
 same_pngs "$work/cosim" "$work/host" "Gouraud landscape"
 expect_no_line "errors 0x[1-9a-f]" "$work/cosim.log"
-echo "cosim: $(png_count "$work/cosim") Gouraud landscape frames, pins = model = host build"
+echo "cosim: $(png_count "$work/cosim") Gouraud landscape frames, RTL = model = host build"
 
 # 2. flat on a GPU without Gouraud, and the difference is real
 "$dir/host-landscape" --frames "$work/flat" >"$work/flat.log"
