@@ -28,6 +28,9 @@ ZBUF_SIMS   := $(foreach w,1 4 8 16,$(BUILD)/sim-z-w$(w)/gpusim)
 # their subject, not the scan-out).
 GOURAUD_SIM := $(BUILD)/sim-g-w8/gpusim
 GOURAUD_SIM_FAST := $(BUILD)/sim-fast-g-w8/gpusim
+# A GPU with small buffers (VTX_CAP 32, TRI_CAP 16), on the fast display path: suite
+# rtl-vs-model-smallcap checks it against the golden model built with the same capacities.
+SMALLCAP_SIM := $(BUILD)/sim-fast-cfg-w8-v32-t16/gpusim
 GPUSIM_W8   := $(BUILD)/sim-w8/gpusim
 GPUSIM_FAST := $(BUILD)/sim-fast-$(GPUSIM_G)w$(SPAN_W)/gpusim
 PNG_DIFF    := $(BUILD)/tools/png_diff
@@ -88,11 +91,11 @@ run-built: run-soc
 else ifneq ($(WINDOW),)
 run-built: $(FW_ELF) $(GPUSIM_FAST)
 	@mkdir -p $(OUT)
-	$(GPUSIM_FAST) cosim --fw $(FW_ELF) --window $(MANIFEST_RUN_FLAGS)--uart-log $(OUT)/uart.log $(if $(UART_PTY),--uart-pty $(UART_PTY))
+	$(GPUSIM_FAST) cosim --fw $(FW_ELF) --window --uart-log $(OUT)/uart.log $(if $(UART_PTY),--uart-pty $(UART_PTY))
 else
 run-built: $(FW_ELF) $(GPUSIM)
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
-	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames $(MANIFEST_RUN_FLAGS)--uart-log $(OUT)/uart.log \
+	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log \
 	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
 endif
 
@@ -106,7 +109,7 @@ BUILD_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 TEST_ENV = GPUSIM=$(GPUSIM) GPUSIM_FAST=$(GPUSIM_FAST) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUITE='$(SUITE)' \
            $(if $(TEST_JOBS),TEST_JOBS=$(TEST_JOBS))
 # The simulators first: the longest builds, started early so that the short ones fill the tail.
-TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM_FAST) $(GPUSIM_FAST) fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
+TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM_FAST) $(GPUSIM_FAST) $(SMALLCAP_SIM) fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
              fw-test-deps $(PNG_DIFF) $(MESHCONV) $(UPLOAD_PEER)
 test: setup
 	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) VERILATOR_JOBS=1 TEST_BUILD_ONLY=1 test-quick
@@ -251,7 +254,7 @@ define verilate
 	@rm -f $(1)
 	$(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) --assert -O3 --x-assign fast --x-initial fast \
 	  --top-module $(or $(3),gpu_top) $(2) -f $(RTL_FILES) $(abspath $(COSIM_CPP_SIM)) \
-	  -CFLAGS "-O2 -std=c++17 $(4) $(addprefix -I$(CURDIR)/,$(patsubst -I%,%,$(HOST_INC)))" \
+	  -CFLAGS "-O2 -std=c++17 $(call gpu_build_defs,$(2)) $(4) $(addprefix -I$(CURDIR)/,$(patsubst -I%,%,$(HOST_INC)))" \
 	  -LDFLAGS "$(abspath $(COSIM_CXX_LIB) $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng sdl2)" \
 	  --MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1 CXX=$(SIM_CXX) LINK=$(SIM_CXX)" --Mdir $(dir $(1))obj -o $(abspath $(1)) \
 	  >$(dir $(1))verilator.log 2>&1 || { tail -40 $(dir $(1))verilator.log; exit 1; }

@@ -27,7 +27,7 @@ std::string format(const char *fmt, ...)
 }  // namespace
 
 BatchBridge::BatchBridge(const BridgeOptions &o)
-    : opt_(o), model_(sim_.read(GPU_REG_CAPS)), shadow_(GPU_APERTURE_BYTES / 4, 0)
+    : opt_(o), model_(GpuSim::build_config()), shadow_(GPU_APERTURE_BYTES / 4, 0)
 {
 }
 

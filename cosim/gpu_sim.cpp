@@ -21,6 +21,7 @@ using VerilatedGpu = Vgpu_core;
 using VerilatedGpu = Vgpu_top;
 #define GPU_CORE_NAME(path) gpu_top__DOT__u_core__DOT__##path
 #endif
+#include "gpu_build.h"
 #include "verilated.h"
 #ifndef GPUSIM_TRACE
 #define GPUSIM_TRACE 0
@@ -56,6 +57,11 @@ struct GpuSim::Verilated {
 bool GpuSim::fast_display()
 {
     return GPUSIM_FAST_DISPLAY != 0;
+}
+
+gpu_model_config GpuSim::build_config()
+{
+    return gpu_build_config();
 }
 
 GpuSim::GpuSim() : v_(new Verilated)

@@ -20,6 +20,7 @@
 #include <string>
 
 extern "C" {
+#include "gpu_model.h"
 #include "vga_monitor.h"
 }
 
@@ -48,6 +49,8 @@ public:
         return wait_capture(max_cycles);
     }
     static bool fast_display();  // true in a simulator built for the fast path
+    // The golden model's configuration for this simulator: its -G parameters (cosim/gpu_build.h).
+    static gpu_model_config build_config();
     static constexpr unsigned kFastVblankEvery = 64;  // the fast path's vblank_start period, clocks
 
     // The framebuffer being drawn (the back bank, !STATUS.FRONT), as GPU_FB_WIDTH x GPU_FB_HEIGHT palette indices,

@@ -2,6 +2,7 @@
 #include "model_check.h"
 
 #include <cstdio>
+#include <cstdlib>
 
 #include "gpu_sim.h"
 
@@ -44,13 +45,14 @@ static_assert(kOrdered.offset[kCount - 1] == GPU_REG_DONE_SEQ, "DONE_SEQ is not 
 const uint32_t *const kReadOnlyRegs = kOrdered.offset;
 const int kReadOnlyRegCount = kCount;
 
-ModelCheck::ModelCheck(uint32_t caps) : model_(new gpu_model), expected_(640 * 480 * 3)
+ModelCheck::ModelCheck(const gpu_model_config &cfg) : model_(new gpu_model), expected_(640 * 480 * 3)
 {
-    gpu_model_config cfg;
-    cfg.span_w = (caps & GPU_CAPS_SPAN_W_MASK) >> GPU_CAPS_SPAN_W_LSB;
-    cfg.lines = (caps & GPU_CAPS_LINES_MASK) != 0;
-    cfg.zbuf = (caps & GPU_CAPS_ZBUF_MASK) != 0;
-    cfg.gouraud = (caps & GPU_CAPS_GOURAUD_MASK) != 0;
+    if (const char *why = gpu_model_config_error(&cfg)) {
+        std::fprintf(stderr,
+                     "model check: the GPU's build (SPAN_W=%u VTX_CAP=%u TRI_CAP=%u) has no golden model: %s\n",
+                     cfg.span_w, cfg.vtx_cap, cfg.tri_cap, why);
+        std::exit(2);
+    }
     gpu_model_reset_config(model_, &cfg);
 }
 

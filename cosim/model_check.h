@@ -16,8 +16,11 @@ class GpuSim;
 
 class ModelCheck {
 public:
-    // The model is configured like the RTL: span width, lines and depth buffer from its CAPS.
-    explicit ModelCheck(uint32_t caps);
+    // The model is configured like the RTL: span width, lines, depth buffer and capacities as the
+    // simulator was built (GpuSim::build_config(), socsim's gpu_build_config()). A configuration
+    // the model cannot take as it is ends the program with a message (exit status 2): it would
+    // otherwise be checked against another GPU.
+    explicit ModelCheck(const gpu_model_config &cfg);
     ~ModelCheck();
     void write(uint32_t offset, uint32_t value) { gpu_model_write(model_, offset, value); }
     // Compare the read-only registers; returns "" when equal, else a description.

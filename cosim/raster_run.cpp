@@ -73,7 +73,7 @@ int raster_main(int argc, char **argv)
     }
 
     GpuSim sim;
-    ModelCheck model(sim.read(GPU_REG_CAPS));
+    ModelCheck model(GpuSim::build_config());
     auto write = [&](uint32_t offset, uint32_t value) {
         sim.write(offset, value);
         model.write(offset, value);

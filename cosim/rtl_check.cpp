@@ -87,6 +87,7 @@ int rtl_check_main(int argc, char **argv)
     int batches = 40;
     int max_tris = 48;
     uint64_t min_prims = 0;     // fail unless at least this many primitives were checked
+    uint64_t min_overflows = 0;  // fail unless at least this many batches set ERR_COUNT
     uint32_t swap_percent = 80;  // batches that end with a swap (and a frame captured from the VGA pins)
     for (int i = 0; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
@@ -100,24 +101,46 @@ int rtl_check_main(int argc, char **argv)
             swap_percent = static_cast<uint32_t>(std::atoi(argv[i + 1]));
         } else if (a == "--min-prims") {
             min_prims = std::strtoull(argv[i + 1], nullptr, 0);
+        } else if (a == "--min-overflows") {
+            min_overflows = std::strtoull(argv[i + 1], nullptr, 0);
         } else {
-            std::fprintf(stderr, "usage: gpusim random [--seed N] [--batches N] [--tris N] [--min-prims N] [--swap-percent P]\n");
+            std::fprintf(stderr, "usage: gpusim random [--seed N] [--batches N] [--tris N] [--min-prims N] [--min-overflows N] "
+                                 "[--swap-percent P]\n");
             return 2;
         }
     }
 
     Rng r{seed};
     GpuSim sim;
-    const uint32_t caps = sim.read(GPU_REG_CAPS);
-    ModelCheck model(caps);
+    const gpu_model_config cfg = GpuSim::build_config();
+    ModelCheck model(cfg);
+    // The buffers' capacities this GPU was built with (the model has the same). On a GPU built with
+    // smaller ones than the contract's, a quarter of the batches go past them: BASE anywhere below
+    // the capacity, COUNT as for the full GPU, so BASE + COUNT mostly overflows (ERR_COUNT, nothing
+    // drawn) and the buffer words written past the capacity land on unmapped offsets (ignored, not
+    // wrapped into the buffer: a later batch would draw them). The full GPU draws no extra numbers,
+    // so its seeds' batches are as before.
+    const uint32_t vcap = cfg.vtx_cap, tcap = cfg.tri_cap;
+    const bool small_caps = vcap < GPU_VTX_CAP || tcap < GPU_TRI_CAP;
+    if (vcap < 3 || tcap < 1) {
+        std::fprintf(stderr, "random: VTX_CAP %u / TRI_CAP %u hold no triangle\n", vcap, tcap);
+        return 2;
+    }
     // Gouraud triangles: a good share of the primitives where the GPU has them; a few elsewhere,
     // where each must be refused with ERR_KIND.
-    const uint32_t gouraud_percent = (caps & GPU_CAPS_GOURAUD_MASK) ? 40 : 2;
+    const uint32_t gouraud_percent = cfg.gouraud ? 40 : 2;
     uint64_t shaded = 0;
     Writer write{sim, model};
-    uint64_t tris = 0, pixels = 0, frames = 0, resets = 0, back_checks = 0;
+    uint64_t tris = 0, pixels = 0, frames = 0, resets = 0, back_checks = 0, overflows = 0, index_errors = 0;
     std::vector<uint8_t> back(GPU_FB_WIDTH * GPU_FB_HEIGHT);
     bool must_clear = false;
+
+    // The power-on registers first (ID, CAPS, VTX_CAP, TRI_CAP ...): a model of another build says
+    // so here, before any batch could fail for that reason less plainly.
+    if (const std::string diff = model.compare_registers(sim); !diff.empty()) {
+        std::printf("random: at power-on, %s\n", diff.c_str());
+        return 1;
+    }
 
     // Contract probes the random batches cannot reach: a write while busy is dropped and flagged,
     // and the write-only windows read 0.
@@ -134,11 +157,14 @@ int rtl_check_main(int argc, char **argv)
         write(GPU_WIN_PALETTE + 4 * p, r.below(4096));
     }
     for (int b = 0; b < batches; b++) {
-        // Buffers at random places inside the capacity.
-        const uint32_t nv = 3 + r.below(61);
-        const uint32_t nt = 1 + r.below(std::min<uint32_t>(static_cast<uint32_t>(max_tris), GPU_TRI_CAP));
-        const uint32_t vbase = r.below(GPU_VTX_CAP - nv + 1);
-        const uint32_t tbase = r.below(GPU_TRI_CAP - nt + 1);
+        // Buffers at random places inside the capacity (or, past, beyond it: above; some then drawn
+        // clipped to it, below).
+        // (Not after a RESET: the batch must clear what the abandoned one left; ERR_COUNT would skip it.)
+        const bool past = small_caps && !must_clear && r.chance(25);
+        const uint32_t nv = 3 + r.below(past ? 61 : std::min<uint32_t>(61, vcap - 2));
+        const uint32_t nt = 1 + r.below(std::min<uint32_t>(static_cast<uint32_t>(max_tris), past ? GPU_TRI_CAP : tcap));
+        const uint32_t vbase = past ? r.below(vcap) : r.below(vcap - nv + 1);
+        const uint32_t tbase = past ? r.below(tcap) : r.below(tcap - nt + 1);
         const int family = static_cast<int>(r.below(5));
         // Intensities (VTX_I, Q4.12) of this batch: anywhere, only the extremes 0 and 65535, or
         // close together (slow gradients, where the fraction and the dither decide).
@@ -175,15 +201,21 @@ int rtl_check_main(int argc, char **argv)
         const bool over_capacity = !must_clear && r.chance(4);  // it would skip the clear
         // Now and then a watchdog's RESET lands in the middle of a batch that does not swap; the
         // next batch then clears, which makes RTL and model agree again (the model has no "middle").
-        const bool reset_probe = !over_capacity && r.chance(5) && b != batches - 1;
+        // (Not on a batch past the capacities: it ends at once, before the RESET could land.)
+        const bool reset_probe = !over_capacity && !past && r.chance(5) && b != batches - 1;
         const bool swap = !reset_probe && (r.chance(swap_percent) || b == batches - 1);
         const bool clear_forced = must_clear;
         const bool clear = r.chance(50) || b == 0 || must_clear;
         must_clear = reset_probe;
+        // Half the batches past the capacities draw the part of them inside: had the words written
+        // beyond wrapped around into the buffers (RTL or model), the primitives drawn would differ.
+        const bool clip = past && r.chance(50);
+        const uint32_t vcount = clip ? std::min(nv, vcap - vbase) : nv;
+        const uint32_t tcount = clip ? std::min(nt, tcap - tbase) : nt;
         write(GPU_WIN_REGS + GPU_REG_VTX_BASE, vbase);
-        write(GPU_WIN_REGS + GPU_REG_VTX_COUNT, over_capacity ? GPU_VTX_CAP : nv);
+        write(GPU_WIN_REGS + GPU_REG_VTX_COUNT, over_capacity ? vcap : vcount);
         write(GPU_WIN_REGS + GPU_REG_TRI_BASE, tbase);
-        write(GPU_WIN_REGS + GPU_REG_TRI_COUNT, nt);
+        write(GPU_WIN_REGS + GPU_REG_TRI_COUNT, tcount);
         write(GPU_WIN_REGS + GPU_REG_CLEAR_COLOR, r.below(256));
         uint32_t ctrl = (clear ? GPU_CTRL_CLEAR_MASK : 0) | (swap ? GPU_CTRL_SWAP_MASK : 0);
         if (r.chance(60)) {  // depth test (a no-op without CAPS_ZBUF: the bits are then ignored)
@@ -199,11 +231,20 @@ int rtl_check_main(int argc, char **argv)
         const uint32_t tag = static_cast<uint32_t>(b + 1);
         write(GPU_WIN_REGS + GPU_REG_DOORBELL, tag);
 
+        bool probe_ended = false;  // a small GPU's batch may be done before the RESET lands
+        uint32_t done_before = 0;
         if (reset_probe) {
-            const uint32_t done_before = sim.read(GPU_REG_DONE_SEQ);
+            done_before = sim.read(GPU_REG_DONE_SEQ);
             for (uint32_t i = 0; i < 50 + r.below(20000); i++) {
                 sim.tick();
+                if (small_caps && !(sim.read(GPU_REG_STATUS) & GPU_STATUS_BUSY_MASK)) {
+                    probe_ended = true;  // then it is checked as any batch, below
+                    must_clear = false;
+                    break;
+                }
             }
+        }
+        if (reset_probe && !probe_ended) {
             write(GPU_WIN_REGS + GPU_REG_RESET, tag);
             sim.tick();
             const uint32_t status = sim.read(GPU_REG_STATUS);
@@ -240,17 +281,27 @@ int rtl_check_main(int argc, char **argv)
             return 1;
         }
         tris += sim.read(GPU_REG_PERF_TRIS_IN);
-        shaded += over_capacity ? 0 : batch_shaded;
+        shaded += (over_capacity || past) ? 0 : batch_shaded;
         pixels += sim.read(GPU_REG_PERF_PIXELS);
+        const uint32_t errors = sim.read(GPU_REG_ERRORS);  // equal to the model's (compared above)
+        overflows += (errors & GPU_ERR_COUNT_MASK) != 0;
+        index_errors += (errors & GPU_ERR_VTX_INDEX_MASK) != 0;
+    }
+    if (overflows < min_overflows) {
+        std::printf("random: only %llu batches over the capacities (ERR_COUNT), fewer than the %llu asked for\n",
+                    static_cast<unsigned long long>(overflows), static_cast<unsigned long long>(min_overflows));
+        return 1;
     }
     if (tris < min_prims) {
         std::printf("random: only %llu primitives checked, fewer than the %llu asked for\n",
                     static_cast<unsigned long long>(tris), static_cast<unsigned long long>(min_prims));
         return 1;
     }
-    std::printf("random: seed %llu: %d batches, %llu primitives (%llu Gouraud), %llu pixels, %llu back buffers, "
-                "%llu frames, %llu resets: RTL equals model\n",
-                static_cast<unsigned long long>(seed), batches, static_cast<unsigned long long>(tris),
+    std::printf("random: seed %llu: VTX_CAP %u TRI_CAP %u, %d batches (%llu over the capacities, %llu with bad "
+                "indices), %llu primitives (%llu of kind Gouraud), %llu pixels, %llu back buffers, %llu frames, %llu resets: "
+                "RTL equals model\n",
+                static_cast<unsigned long long>(seed), vcap, tcap, batches, static_cast<unsigned long long>(overflows),
+                static_cast<unsigned long long>(index_errors), static_cast<unsigned long long>(tris),
                 static_cast<unsigned long long>(shaded),
                 static_cast<unsigned long long>(pixels), static_cast<unsigned long long>(back_checks),
                 static_cast<unsigned long long>(frames), static_cast<unsigned long long>(resets));

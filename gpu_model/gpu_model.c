@@ -24,11 +24,13 @@
 #define GPU_MODEL_FIELD(words, NAME) \
     (((words)[GPU_##NAME##_WORD] >> GPU_##NAME##_LSB) & GPU_##NAME##_MASK)
 
-/* Words backing each buffer window.  The windows are larger than the buffers
- * (e.g. VTX is 0x8000 bytes, the buffer 1024 * 2 words = 0x2000 bytes); the
- * rest of a window is treated as unmapped. */
-#define VTX_WORDS_TOTAL (GPU_VTX_CAP * GPU_VTX_WORDS)
-#define IDX_WORDS_TOTAL (GPU_TRI_CAP * GPU_PRIM_WORDS)
+/* Words backing each buffer window: the configured capacity's.  The windows
+ * are larger than the buffers (e.g. VTX is 0x8000 bytes, a 1024-vertex buffer
+ * 1024 * 2 words = 0x2000 bytes); the rest of a window is treated as
+ * unmapped.  cfg caps are at most the GPU_MODEL_MAX_* the arrays hold
+ * (gpu_model_reset_config), so the products stay below 2^11. */
+#define VTX_WORDS_TOTAL(m) ((m)->cfg.vtx_cap * GPU_VTX_WORDS)
+#define IDX_WORDS_TOTAL(m) ((m)->cfg.tri_cap * GPU_PRIM_WORDS)
 
 /* A vertex: position in Q12.4, depth (VTX_Z, unsigned 16-bit) and intensity
  * (VTX_I, unsigned Q4.12), widened so every later product is exact. */
@@ -470,10 +472,11 @@ static void run_batch(gpu_model *m, uint32_t tag)
     m->errors = 0;
     memset(&m->perf, 0, sizeof m->perf);
 
-    /* 2. Range check in 64 bits so a huge BASE + COUNT cannot wrap. */
+    /* 2. Range check in 64 bits so a huge BASE + COUNT cannot wrap; against
+     *    the capacities this GPU was built with. */
     bool count_bad =
-        (uint64_t)m->regs.vtx_base + m->regs.vtx_count > GPU_VTX_CAP ||
-        (uint64_t)m->regs.tri_base + m->regs.tri_count > GPU_TRI_CAP;
+        (uint64_t)m->regs.vtx_base + m->regs.vtx_count > m->cfg.vtx_cap ||
+        (uint64_t)m->regs.tri_base + m->regs.tri_count > m->cfg.tri_cap;
 
     if (count_bad) {
         m->errors |= GPU_ERR_COUNT_MASK; /* skip clear and draw */
@@ -519,14 +522,45 @@ static bool span_w_supported(unsigned w)
     return w == 1u || w == 4u || w == 8u || w == 16u;
 }
 
+/* A capacity the model can hold: 1 ... max (0 is "the default", handled by
+ * the callers). */
+static bool cap_supported(uint32_t cap, uint32_t max)
+{
+    return cap >= 1u && cap <= max;
+}
+
+const char *gpu_model_config_error(const gpu_model_config *cfg)
+{
+    if (cfg == NULL) {
+        return NULL;
+    }
+    if (!span_w_supported(cfg->span_w)) {
+        return "span_w is not 1, 4, 8 or 16";
+    }
+    if (cfg->vtx_cap != 0u && !cap_supported(cfg->vtx_cap, GPU_MODEL_MAX_VTX_CAP)) {
+        return "vtx_cap is above the contract's VTX_CAP, the most the model holds";
+    }
+    if (cfg->tri_cap != 0u && !cap_supported(cfg->tri_cap, GPU_MODEL_MAX_TRI_CAP)) {
+        return "tri_cap is above the contract's TRI_CAP, the most the model holds";
+    }
+    return NULL;
+}
+
 void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
 {
     gpu_model_config c = { GPU_MODEL_DEFAULT_SPAN_W, GPU_MODEL_DEFAULT_LINES,
-                           GPU_MODEL_DEFAULT_ZBUF, GPU_MODEL_DEFAULT_GOURAUD };
+                           GPU_MODEL_DEFAULT_ZBUF, GPU_MODEL_MAX_VTX_CAP,
+                           GPU_MODEL_MAX_TRI_CAP, GPU_MODEL_DEFAULT_GOURAUD };
     if (cfg != NULL) {
         c = *cfg;
         if (!span_w_supported(c.span_w)) {
             c.span_w = GPU_MODEL_DEFAULT_SPAN_W;
+        }
+        if (!cap_supported(c.vtx_cap, GPU_MODEL_MAX_VTX_CAP)) {
+            c.vtx_cap = GPU_MODEL_MAX_VTX_CAP; /* 0: the default; else refused */
+        }
+        if (!cap_supported(c.tri_cap, GPU_MODEL_MAX_TRI_CAP)) {
+            c.tri_cap = GPU_MODEL_MAX_TRI_CAP;
         }
     }
     /* Everything is zero at power-on: registers (RESET included), counters,
@@ -573,14 +607,14 @@ void gpu_model_write(gpu_model *m, uint32_t offset, uint32_t value)
     }
     if (offset >= GPU_WIN_VTX && offset - GPU_WIN_VTX < GPU_WIN_VTX_BYTES) {
         uint32_t i = (offset - GPU_WIN_VTX) / 4u;
-        if (i < VTX_WORDS_TOTAL) {
+        if (i < VTX_WORDS_TOTAL(m)) {
             m->vtx[i] = value;
         }
         return;
     }
     if (offset >= GPU_WIN_IDX && offset - GPU_WIN_IDX < GPU_WIN_IDX_BYTES) {
         uint32_t i = (offset - GPU_WIN_IDX) / 4u;
-        if (i < IDX_WORDS_TOTAL) {
+        if (i < IDX_WORDS_TOTAL(m)) {
             m->idx[i] = value;
         }
         return;
@@ -639,9 +673,9 @@ uint32_t gpu_model_read(const gpu_model *m, uint32_t offset)
     case GPU_REG_CAPS:
         return gpu_model_caps(m);
     case GPU_REG_VTX_CAP:
-        return GPU_VTX_CAP;
+        return m->cfg.vtx_cap;
     case GPU_REG_TRI_CAP:
-        return GPU_TRI_CAP;
+        return m->cfg.tri_cap;
     case GPU_REG_FB_SIZE:
         return GPU_FB_WIDTH | (GPU_FB_HEIGHT << 16);
     case GPU_REG_CTRL:

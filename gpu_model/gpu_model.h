@@ -13,7 +13,8 @@
  *
  * Like the RTL, the model is built with four options (contract "Build
  * options, reported in CAPS"): the span width, lines, the depth buffer and
- * Gouraud triangles.
+ * Gouraud triangles; and with the RTL's two capacities (VTX_CAP, TRI_CAP),
+ * at most the contract's limits.
  *
  * Host C11 (and includable from C++), no dependencies beyond the C library.
  * The state is one plain struct (~310 KiB because of the two framebuffers and
@@ -42,6 +43,11 @@
 #define GPU_MODEL_DEFAULT_ZBUF   (GPU_DEFAULT_ENABLE_ZBUF != 0u)
 #define GPU_MODEL_DEFAULT_GOURAUD (GPU_DEFAULT_ENABLE_GOURAUD != 0u)
 
+/* The largest capacities the model holds: the contract's limits, also the
+ * RTL's parameter defaults.  A GPU may be built with smaller buffers. */
+#define GPU_MODEL_MAX_VTX_CAP GPU_VTX_CAP
+#define GPU_MODEL_MAX_TRI_CAP GPU_TRI_CAP
+
 /* The bits of CTRL the contract defines; CTRL keeps (and reads back) only
  * these, whatever the build options. */
 #define GPU_MODEL_CTRL_BITS \
@@ -56,15 +62,26 @@
  *   lines:  ENABLE_LINES; without it a line primitive sets ERR_KIND.
  *   zbuf:   ENABLE_ZBUF; without it CTRL_ZTEST / CTRL_ZCLEAR have no effect
  *           (they are still stored and read back) and zbuf[] is never touched.
+ *   vtx_cap, tri_cap: VTX_CAP and TRI_CAP, the buffers' capacities in
+ *           vertices and primitives, 1 ... GPU_MODEL_MAX_*_CAP; 0 means the
+ *           contract's (so a config written before these fields, or zeroed,
+ *           is the default GPU); any other value is replaced by the
+ *           contract's, like span_w (gpu_model_config_error says why).  They
+ *           decide the VTX_CAP / TRI_CAP registers, the ERR_COUNT check
+ *           (BASE + COUNT > CAP) and which window words exist: a write past
+ *           the capacity is to an unmapped offset and is ignored (never
+ *           wrapped into the buffer).
  *   gouraud: ENABLE_GOURAUD; without it a PRIM_KIND_TRI_GOURAUD primitive
  *           sets ERR_KIND and CTRL_DITHER has no effect (it is still stored).
- *           Last, so that an initializer naming the first three leaves it
- *           false, the RTL's default.
+ *           Last, so that an initializer naming only the fields before it
+ *           leaves it false, the RTL's default.
  */
 typedef struct gpu_model_config {
     unsigned span_w;
     bool lines;
     bool zbuf;
+    uint32_t vtx_cap;
+    uint32_t tri_cap;
     bool gouraud;
 } gpu_model_config;
 
@@ -101,7 +118,7 @@ typedef struct gpu_model {
 
     /* PERF_* counters of the last batch (PERF_BUSY_CYCLES and
      * PERF_SPANS_VISITED are not modelled and read 0).  None can overflow 32
-     * bits: at most TRI_CAP = 512 primitives, each adding at most 320*240
+     * bits: at most GPU_MODEL_MAX_TRI_CAP = 512 primitives, each adding at most 320*240
      * samples, pixels or spans (a line at most 4095 samples), 512 * 76800
      * < 2^26. */
     struct {
@@ -117,11 +134,13 @@ typedef struct gpu_model {
     /* Palette: RGB444, R in [11:8], G in [7:4], B in [3:0]. */
     uint16_t palette[GPU_PALETTE_ENTRIES];
 
-    /* Vertex buffer: GPU_VTX_WORDS words per vertex, format GPU_VTX_*. */
-    uint32_t vtx[GPU_VTX_CAP * GPU_VTX_WORDS];
+    /* Vertex buffer: GPU_VTX_WORDS words per vertex, format GPU_VTX_*; the
+     * first cfg.vtx_cap vertices exist, the rest stay 0. */
+    uint32_t vtx[GPU_MODEL_MAX_VTX_CAP * GPU_VTX_WORDS];
 
-    /* Index buffer: GPU_PRIM_WORDS words per primitive, format GPU_PRIM_*. */
-    uint32_t idx[GPU_TRI_CAP * GPU_PRIM_WORDS];
+    /* Index buffer: GPU_PRIM_WORDS words per primitive, format GPU_PRIM_*;
+     * the first cfg.tri_cap primitives exist. */
+    uint32_t idx[GPU_MODEL_MAX_TRI_CAP * GPU_PRIM_WORDS];
 
     /* The two framebuffers, palette indices, row-major, top row first.
      * fb[front] is scanned out, fb[front ^ 1] is drawn. */
@@ -141,8 +160,15 @@ typedef struct gpu_model {
 void gpu_model_reset(gpu_model *m);
 
 /* Power-on state with the given build options (NULL: the defaults).  An
- * unsupported span_w (not 1, 4, 8 or 16) is replaced by 8. */
+ * unsupported span_w (not 1, 4, 8 or 16) is replaced by 8, a capacity of 0 or
+ * above the contract's limit by that limit; m->cfg holds what was taken. */
 void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg);
+
+/* NULL when gpu_model_reset_config would take cfg as it is (0 capacities
+ * count as given: they mean the contract's), else a sentence naming the first
+ * field it would replace and why.  For harnesses that must refuse a GPU the
+ * model cannot stand beside, rather than compare it with another one. */
+const char *gpu_model_config_error(const gpu_model_config *cfg);
 
 /* The CAPS register for m's build options. */
 uint32_t gpu_model_caps(const gpu_model *m);

@@ -12,8 +12,8 @@ Per scene and build (full: `FULL=1`; lean: the manifest's):
                             default 4), averaged over the frames after the first as bench-soc does
                             (tools/bench_soc.py): the firmware's "fw instr", "cpu cycles", "gpu cycles"
   frames identical          the lean build's socsim frames against the full build's, byte for byte
-                            (a lean GPU with other capacities than the contract's runs without
-                            socsim's model check, which has the contract's: this is its check)
+                            (each run is also checked against the golden model, which socsim
+                            builds with its GPU's own parameters, capacities included)
 Caching: a synthesis whose resources.json is newer than its firmware image and every RTL file is
 not run again. The full builds of all scenes have one RTL configuration (the contract's GPU,
 192 KiB): only the RAM's contents differ, so the first scene's full synthesis stands for all of
@@ -50,11 +50,11 @@ def show(args, variables):
     return dict(line.split("=", 1) for line in out.splitlines() if "=" in line and not line.startswith("scene="))
 
 
-def run_socsim(socsim, elf, flags, out_dir):
+def run_socsim(socsim, elf, out_dir):
     """{frame: [instr, gpu cycles, cpu cycles]} of the firmware's frame lines; frames in out_dir/frames."""
     os.makedirs(os.path.join(out_dir, "frames"), exist_ok=True)
     p = subprocess.run([socsim, "--fw", elf, "--frames", os.path.join(out_dir, "frames"),
-                        "--uart-log", os.path.join(out_dir, "uart.log")] + flags.split(),
+                        "--uart-log", os.path.join(out_dir, "uart.log")],
                        capture_output=True, text=True)
     with open(os.path.join(out_dir, "socsim.out"), "w") as f:
         f.write(p.stdout + p.stderr)
@@ -139,7 +139,7 @@ def main():
         out = os.path.join(logdir, name)
         # Cached while the program (its bytes) and the simulator are the same.
         key = {"elf": hashlib.sha256(open(info[name]["RUN_ELF"] + ".hex", "rb").read()).hexdigest(),
-               "socsim": os.path.getmtime(info[name]["SOCSIM"]), "flags": info[name].get("RUN_FLAGS", "")}
+               "socsim": os.path.getmtime(info[name]["SOCSIM"])}
         cache = os.path.join(out, "perf.json")
         fw = None
         if os.path.exists(cache):
@@ -151,7 +151,7 @@ def main():
         if fw is None:
             subprocess.run(["rm", "-rf", out], check=True)
             print(f"lean_report: {name}: socsim, {args.frames} frames ...", flush=True)
-            fw = run_socsim(info[name]["SOCSIM"], info[name]["RUN_ELF"], info[name].get("RUN_FLAGS", ""), out)
+            fw = run_socsim(info[name]["SOCSIM"], info[name]["RUN_ELF"], out)
             with open(cache, "w") as f:
                 json.dump({"key": key, "fw": fw}, f)
         later = [fw[k] for k in sorted(fw) if k >= 1]

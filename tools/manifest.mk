@@ -59,10 +59,8 @@ override GPUSIM_FAST  := $(BUILD)/sim-fast-$(MANIFEST_SIM_NAME)/gpusim
 override SOCSIM_DIR   := $(BUILD)/socsim-$(SOC_RAM_KIB)k$(if $(MANIFEST_GPU_TAG),-w$(SPAN_W)-$(MANIFEST_GPU_TAG),$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W)))
 SOCSIM_GPU_GFLAGS     := $(if $(MANIFEST_GPU_GFLAGS), $(MANIFEST_GPU_GFLAGS))$(if $(filter 1,$(ZBUF)), -GENABLE_ZBUF=1)
 ULX3S_GPU_PARAMS      := $(patsubst -G%,--param %,$(MANIFEST_GPU_GFLAGS))
-# The golden model has the contract's capacities (gpu_model.h): a GPU with others reads VTX_CAP and
-# TRI_CAP differently, so its runs go without the model check (lean-report compares its frames with
-# the full build's instead). Trailing space: the recipes' text is unchanged when empty.
-MANIFEST_RUN_FLAGS    := $(if $(filter v% t%,$(subst -, ,$(MANIFEST_GPU_TAG))),--no-model-check )
+# Every manifest GPU, capacities included, runs with the model check: the golden model takes the
+# simulator's own -G parameters (gpu_build_defs below, cosim/gpu_build.h).
 endif
 
 # The fragment: regenerated when the manifest, the generator or the scene table change (make then
@@ -77,6 +75,13 @@ $(BUILD)/manifest/%.mk: firmware/scenes/%.manifest.toml tools/manifest.py firmwa
 manifest_gflags = $(foreach p,$(subst -, ,$(1)),$(patsubst g%,-GENABLE_GOURAUD=%,$(patsubst t%,-GTRI_CAP=%,\
   $(patsubst v%,-GVTX_CAP=%,$(patsubst z%,-GENABLE_ZBUF=%,$(patsubst l%,-GENABLE_LINES=%,$(patsubst w%,-GSPAN_W=%,$(p))))))))
 
+# The GPU parameters of a list of Verilator flags, as C definitions for the harness's per-simulator
+# sources (cosim/gpu_build.h): -GVTX_CAP=32 -> -DGPU_BUILD_VTX_CAP=32. Made from the same flags the
+# RTL is Verilated with, so the golden model beside a simulator has that simulator's sizes. (Here,
+# the first fragment the Makefile reads, so that every later one can use it at parse time.)
+GPU_BUILD_PARAMS := SPAN_W ENABLE_LINES ENABLE_ZBUF ENABLE_GOURAUD VTX_CAP TRI_CAP
+gpu_build_defs = $(patsubst -G%,-DGPU_BUILD_%,$(filter $(foreach p,$(GPU_BUILD_PARAMS),-G$(p)=%),$(1)))
+
 .PHONY: manifest-show manifest-check lean-report
 manifest-show:
 	@echo "scene=$(SCENE) manifest=$(if $(LEAN_SCENE),firmware/scenes/$(SCENE).manifest.toml,none (full build))"
@@ -88,7 +93,6 @@ manifest-show:
 	@echo "ULX3S_DIR=$(ULX3S_DIR)"
 	@echo "ULX3S_FW_ELF=$(ULX3S_FW_ELF)"
 	@echo "SOC_RAM_KIB=$(SOC_RAM_KIB)"
-	@echo "RUN_FLAGS=$(MANIFEST_RUN_FLAGS)"
 	@echo "FW_DEFS=$(FW_DEFS) FW_SCENE_SET=$(FW_SCENE_SET) FW_LINE_EMULATION=$(FW_LINE_EMULATION)"
 	@echo "GPU=-GSPAN_W=$(SPAN_W) -GENABLE_ZBUF=$(ZBUF) $(MANIFEST_GPU_GFLAGS)"
 

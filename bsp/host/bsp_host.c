@@ -31,7 +31,7 @@ const char *bsp_host_dump_dir(void)
 
 void bsp_init(void)
 {
-    gpu_model_config mc;
+    gpu_model_config mc = {0}; /* capacities 0: the contract's, the full-size GPU */
 
     if (host_gpu == NULL) {
         host_gpu = malloc(sizeof *host_gpu);

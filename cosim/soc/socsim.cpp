@@ -91,6 +91,7 @@ using SocModel = Vsoc_top;
 #endif
 
 #include "keys_at.h"
+#include "gpu_build.h"
 #include "model_check.h"
 #include "uart_line.h"
 #include "uart_pty.h"
@@ -105,18 +106,6 @@ extern "C" {
 #include "vga_monitor.h"
 }
 
-#ifndef SOCSIM_SPAN_W
-#define SOCSIM_SPAN_W GPU_DEFAULT_SPAN_W
-#endif
-#ifndef SOCSIM_ENABLE_LINES
-#define SOCSIM_ENABLE_LINES GPU_DEFAULT_ENABLE_LINES
-#endif
-#ifndef SOCSIM_ENABLE_ZBUF
-#define SOCSIM_ENABLE_ZBUF GPU_DEFAULT_ENABLE_ZBUF
-#endif
-#ifndef SOCSIM_ENABLE_GOURAUD
-#define SOCSIM_ENABLE_GOURAUD GPU_DEFAULT_ENABLE_GOURAUD
-#endif
 #ifndef SOCSIM_RAM_BYTES
 #define SOCSIM_RAM_BYTES SOC_RAM_DEFAULT_BYTES
 #endif
@@ -239,13 +228,6 @@ bool parse(int argc, char **argv, Options &o)
     return !o.hex.empty() && o.uart_divider >= 4;
 }
 
-uint32_t gpu_caps()
-{
-    return (SOCSIM_SPAN_W << GPU_CAPS_SPAN_W_LSB) | ((SOCSIM_ENABLE_LINES ? 1u : 0u) << GPU_CAPS_LINES_LSB) |
-           ((SOCSIM_ENABLE_ZBUF ? 1u : 0u) << GPU_CAPS_ZBUF_LSB) |
-           ((SOCSIM_ENABLE_GOURAUD ? 1u : 0u) << GPU_CAPS_GOURAUD_LSB);
-}
-
 // The model's context: a trace build allows traces from time 0, as Verilator asks of --trace.
 VerilatedContext *new_context()
 {
@@ -261,7 +243,7 @@ svScope g_cpu_scope = nullptr;
 class SocRun {
 public:
     explicit SocRun(const Options &o)
-        : opt_(o), top_(new SocModel(context_.get())), model_(gpu_caps()), rx_(o.uart_divider),
+        : opt_(o), top_(new SocModel(context_.get())), model_(gpu_build_config()), rx_(o.uart_divider),
           tx_(o.uart_divider), replies_(o.replies)
     {
         g_run = this;

@@ -40,8 +40,7 @@ SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_
 socsim_cmd = $(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign fast --x-initial fast \
   --top-module $(2) -GRAM_BYTES=$(SOC_RAM_BYTES) -GSPAN_W=$(SPAN_W)$(SOCSIM_GPU_GFLAGS) \
   $(SOC_VFLAGS) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) $(3) \
-  -CFLAGS "-O2 -march=native -std=c++17 -ffunction-sections -DSOCSIM_SPAN_W=$(SPAN_W)u -DSOCSIM_RAM_BYTES=$(SOC_RAM_BYTES)u \
-           $(if $(findstring ENABLE_GOURAUD=1,$(SOCSIM_GPU_GFLAGS)),-DSOCSIM_ENABLE_GOURAUD=1) \
+  -CFLAGS "-O2 -march=native -std=c++17 -ffunction-sections $(call gpu_build_defs,-GSPAN_W=$(SPAN_W)$(SOCSIM_GPU_GFLAGS)) -DSOCSIM_RAM_BYTES=$(SOC_RAM_BYTES)u \
            $(4) $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract) $$(pkg-config --cflags sdl2)" \
   -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng sdl2)" \
   --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1" --Mdir $(1)/obj -o $(abspath $(1))/socsim
@@ -79,7 +78,7 @@ soc-fw:
 # With a display (the Makefile's WINDOW), the frames go to a window instead of $(OUT)/frames.
 run-soc: $(SOCSIM) soc-fw
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
-	$(SOCSIM) --fw $(SOC_FW_ELF) $(if $(WINDOW),--window,--frames $(OUT)/frames) $(MANIFEST_RUN_FLAGS)--uart-log $(OUT)/uart.log \
+	$(SOCSIM) --fw $(SOC_FW_ELF) $(if $(WINDOW),--window,--frames $(OUT)/frames) --uart-log $(OUT)/uart.log \
 	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
 
 # What tests/soc/*.sh need: socsim and the soc test programs (tests/soc/tests.mk); the suites

@@ -176,7 +176,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static const unsigned spans[] = {1u, 4u, 8u, 16u, 3u, 0u};
     struct reader r = {data, size};
-    gpu_model_config cfg;
+    gpu_model_config cfg = {0}; /* capacities 0: the contract's, which the checks below assume */
     uint32_t doorbells = 0;
     gpu_model *m;
 

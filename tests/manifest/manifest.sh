@@ -3,12 +3,16 @@
 # and its capacities cover its columns of the scene table; a bad manifest is refused with the file
 # and the key; and the cubes' manifest build ($BUILD/lean-test/cubes/firmware/cubes.elf: one scene,
 # no anaglyph, no depth test, no line emulation) co-simulated renders the same frames as make
-# test's full build of cubes, and is smaller.
+# test's full build of cubes, and is smaller. And a GPU with a manifest's small buffers (VTX_CAP 32,
+# TRI_CAP 16, the Makefile's SMALLCAP_SIM) stands beside a golden model of the same sizes: random
+# batches past the capacities agree on ERR_COUNT, bad indices, dropped and drawn primitives; and the
+# full cubes build, batched to those buffers, renders the full-size GPU's frames, model-checked.
 source "$(dirname "$0")/../lib.sh"
 need BUILD PYTHON GPUSIM_FAST
 lean="$BUILD/lean-test/cubes/firmware/cubes.elf"
 full="$BUILD/fw-test/cubes.elf"
-need_file "$lean" "$full" "$GPUSIM_FAST"
+small="$BUILD/sim-fast-cfg-w8-v32-t16/gpusim"
+need_file "$lean" "$full" "$GPUSIM_FAST" "$small"
 work=$(fresh_dir manifest)
 
 run_to "$work/check.out" 20 "$PYTHON" tools/manifest.py --check
@@ -45,8 +49,20 @@ for b in lean full; do
     expect_eq "$(summary frames_model_checked "$work/$b.summary")" 4 "$b frames equal to the model"
 done
 same_pngs "$work/lean" "$work/full" "cubes, manifest build against full build"
+
+# The small GPU: its random batches (a quarter past the buffers), then cubes on it.
+run_to "$work/small-random.out" 60 "$small" random --seed 8 --batches 150 --tris 40 --swap-percent 25 --min-overflows 15
+expect_status 0 "small buffers against the model: $(tail -n 2 "$work/small-random.out")"
+grep -q "VTX_CAP 32 TRI_CAP 16" "$work/small-random.out" || fail "the small GPU's model has other sizes: $(cat "$work/small-random.out")"
+run_to "$work/small.out" 120 "$small" cosim --fw "$full" --frames "$work/small" --uart-log "$work/small.log" \
+    --summary "$work/small.summary"
+expect_status 0 "cubes on the small GPU: $(tail -n 3 "$work/small.out")"
+expect_eq "$(summary frames_model_checked "$work/small.summary")" 4 "small-GPU frames equal to the model"
+grep -q "vtx_cap 32 tri_cap 16" "$work/small.log" || fail "the firmware did not see the small buffers: $(head -n 3 "$work/small.log")"
+same_pngs "$work/small" "$work/full" "cubes, VTX_CAP 32 / TRI_CAP 16 against the contract's buffers"
+small_batches=$(awk '/^frame 1:/ { for (i = 1; i < NF; i++) if ($(i + 1) == "batches") print $(i + 2) }' "$work/small.log")
 size_of() { riscv64-unknown-elf-size "$1" | awk 'NR == 2 { print $1 + $2 + $3 }'; }
 lean_size=$(size_of "$lean")
 full_size=$(size_of "$full")
 [ "$lean_size" -lt "$full_size" ] || fail "the manifest build is not smaller: $lean_size >= $full_size bytes"
-pass "manifest: every scene's manifest valid, 9 bad ones refused; cubes' manifest build: 4 frames equal to the full build's, text+data+bss $lean_size bytes (full $full_size)"
+pass "manifest: every scene's manifest valid, 9 bad ones refused; cubes' manifest build: 4 frames equal to the full build's, text+data+bss $lean_size bytes (full $full_size); VTX_CAP 32 / TRI_CAP 16 GPU: $(grep -o '[0-9]* over the capacities' "$work/small-random.out") of 150 random batches, model-checked; cubes in $small_batches batches a frame, frames equal"

@@ -51,7 +51,7 @@ static void test_caps(void)
     /* NULL: the defaults; gpu_model_reset: the defaults again. */
     gpu_model_reset_config(m, NULL);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0801u);
-    gpu_model_config cfg = { 1, false, true, false };
+    gpu_model_config cfg = { 1, false, true, 0, 0, false };
     gpu_model_reset_config(m, &cfg);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0102u);
     gpu_model_reset(m);
@@ -328,9 +328,80 @@ static void test_spans(void)
     }
 }
 
+/* ------------------------------------------------------- capacities */
+
+/* A GPU built with smaller buffers (contract: VTX_CAP / TRI_CAP are build
+ * parameters, reported in the registers of those names): the registers, the
+ * ERR_COUNT check (BASE + COUNT > CAP) and the window words past the capacity
+ * (unmapped: ignored, not wrapped) follow the configured sizes. */
+static void test_capacities(void)
+{
+    gpu_model *m = test_new_model();
+    CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), GPU_TRI_CAP);
+
+    gpu_model_config cfg = { 8, true, false, 32, 16, false };
+    CHECK(gpu_model_config_error(&cfg) == NULL);
+    gpu_model_reset_config(m, &cfg);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), 32);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), 16);
+
+    /* Vertices 0-2 a triangle of 8x8 pixels; vertex 32 and primitive 16 are
+     * past the buffers: written to alias 0 if they wrapped, they are dropped. */
+    test_set_vtx(m, 0, 0, 0);
+    test_set_vtx(m, 1, 8 * 16, 0);
+    test_set_vtx(m, 2, 0, 8 * 16);
+    test_set_prim(m, 15, 0, 1, 2, 5, GPU_PRIM_KIND_TRI);
+    test_set_vtx(m, 32, 200 * 16, 200 * 16); /* would be vertex 0 */
+    test_set_prim(m, 16, 1, 1, 1, 9, GPU_PRIM_KIND_TRI); /* would be prim 0 */
+    CHECK_EQ(m->vtx[32 * GPU_VTX_WORDS], 0); /* the array's word, not the GPU's */
+    test_set_prim(m, 0, 0, 1, 2, 7, GPU_PRIM_KIND_TRI);
+    /* The last vertex and primitive in range: drawn, no error. */
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 29, 3, 15, 1, 0, 1);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 32, 0, 16, 0, 2);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_TRIS_IN), 16);
+    CHECK_EQ(gpu_model_back(m)[0], 5);          /* prim 15, drawn last */
+    /* Prim 0 alone: still colour 7 on vertices 0-2 (a wrapped vertex 32 would
+     * have moved vertex 0 off the pixel, a wrapped prim 16 made it colour 9). */
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 3, 0, 1, 0, 6);
+    CHECK_EQ(gpu_model_back(m)[0], 7);
+    /* One over either capacity: ERR_COUNT, nothing drawn; a full-size GPU
+     * would have taken both batches. */
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 33, 0, 1, 3, 3);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_COUNT_MASK);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_TRIS_IN), 0);
+    CHECK_EQ(gpu_model_back(m)[0], 7);          /* no clear either */
+    test_batch(m, 0, 0, 3, 1, 16, 0, 4);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_COUNT_MASK);
+    /* An index past VTX_COUNT is still ERR_VTX_INDEX, not ERR_COUNT. */
+    test_set_prim(m, 1, 0, 1, 3, 7, GPU_PRIM_KIND_TRI);
+    test_batch(m, 0, 0, 3, 1, 1, 0, 5);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_VTX_INDEX_MASK);
+
+    /* 0: the contract's; above the contract's limit: refused by
+     * gpu_model_config_error, replaced by the limit by reset_config. */
+    gpu_model_config zero = { 8, true, false, 0, 0, false };
+    CHECK(gpu_model_config_error(&zero) == NULL);
+    gpu_model_reset_config(m, &zero);
+    CHECK_EQ(m->cfg.vtx_cap, GPU_VTX_CAP);
+    CHECK_EQ(m->cfg.tri_cap, GPU_TRI_CAP);
+    gpu_model_config big = { 8, true, false, GPU_VTX_CAP + 1u, 16, false };
+    CHECK(gpu_model_config_error(&big) != NULL);
+    gpu_model_reset_config(m, &big);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), 16);
+    big.vtx_cap = 32;
+    big.tri_cap = GPU_TRI_CAP * 2u;
+    CHECK(gpu_model_config_error(&big) != NULL);
+    free(m);
+}
+
 void test_config(void)
 {
     test_caps();
+    test_capacities();
     test_ctrl();
     test_reset_reg();
     test_spans();
