@@ -28,12 +28,17 @@ ZBUF_SIMS   := $(foreach w,1 4 8 16,$(BUILD)/sim-z-w$(w)/gpusim)
 # their subject, not the scan-out).
 GOURAUD_SIM := $(BUILD)/sim-g-w8/gpusim
 GOURAUD_SIM_FAST := $(BUILD)/sim-fast-g-w8/gpusim
+# The depth buffer keeping fewer bits (ZBUF_BITS, contract "Depth"), SPAN_W 8: bench-error's depth-bit
+# rows; the 8-bit one is also tested against the model (suite rtl-vs-model-zbuf8).
+ZBITS_SIMS  := $(foreach b,12 8,$(BUILD)/sim-zb$(b)-w8/gpusim)
 # A GPU with small buffers (VTX_CAP 32, TRI_CAP 16), on the fast display path: suite
 # rtl-vs-model-smallcap checks it against the golden model built with the same capacities.
 SMALLCAP_SIM := $(BUILD)/sim-fast-cfg-w8-v32-t16/gpusim
 GPUSIM_W8   := $(BUILD)/sim-w8/gpusim
 GPUSIM_FAST := $(BUILD)/sim-fast-$(GPUSIM_G)w$(SPAN_W)/gpusim
 PNG_DIFF    := $(BUILD)/tools/png_diff
+# Defined up here: bench-error-path-run's prerequisites are expanded where that rule is read.
+EXACT_REF   := $(BUILD)/tools/exact_ref
 
 # The harness's C parts (VGA monitor model, PNG writer), built once: the co-simulator and the
 # firmware's host build link them.
@@ -109,7 +114,7 @@ BUILD_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 TEST_ENV = GPUSIM=$(GPUSIM) GPUSIM_FAST=$(GPUSIM_FAST) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUITE='$(SUITE)' \
            $(if $(TEST_JOBS),TEST_JOBS=$(TEST_JOBS))
 # The simulators first: the longest builds, started early so that the short ones fill the tail.
-TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM_FAST) $(GPUSIM_FAST) $(SMALLCAP_SIM) fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
+TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM_FAST) $(GPUSIM_FAST) $(SMALLCAP_SIM) $(BUILD)/sim-zb8-w8/gpusim fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
              fw-test-deps $(PNG_DIFF) $(MESHCONV) $(UPLOAD_PEER)
 test: setup
 	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) VERILATOR_JOBS=1 TEST_BUILD_ONLY=1 test-quick
@@ -172,10 +177,23 @@ bench-error:
 	@bash tools/setup.sh packages-plot.txt
 	@$(MAKE) --no-print-directory bench-error-run
 
-bench-error-run: $(FW_ERR_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(PNG_DIFF)
+bench-error-run: $(FW_ERR_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(ZBITS_SIMS) $(PNG_DIFF) $(FW_PATH_HOSTS) bench-error-soc
 	$(BENCH_ERROR_CHECK)
-	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --frames $(FW_ERR_FRAMES) $(FW_SCENES)
+	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --frames $(FW_ERR_FRAMES) $(BENCH_SOC_ARGS) $(FW_SCENES)
 	@$(MAKE) --no-print-directory bench-error-path-run
+
+# Both halves' CPU cycles on the SoC (tools/bench_error.py --socsim): the path ELFs of the first
+# FW_PATH_SOC_VIEWS views built for bsp/soc (firmware.mk FW_PATH_SOC_ELFS, $(BUILD)/fw-path-soc/),
+# on socsim with and without the depth buffer, and R's on a SPAN_W 1 GPU (the span-width check).
+# Measured once per configuration (the results are cached in $(BUILD)/bench-error/soc/).
+BENCH_SOCSIM_DIR = $(BUILD)/socsim-$(SOC_RAM_KIB)k
+BENCH_SOC_ARGS   = --socsim sim-w8=$(BENCH_SOCSIM_DIR)/socsim --socsim sim-z-w8=$(BENCH_SOCSIM_DIR)-z/socsim \
+                   --socsim sim-z-w1=$(BENCH_SOCSIM_DIR)-z-w1/socsim --soc-views $(FW_PATH_SOC_VIEWS)
+.PHONY: bench-error-soc
+bench-error-soc:
+	+@$(SOC_FW_MAKE) ZBUF=0 SPAN_W=8 $(patsubst $(BUILD)/fw-path/%,$(BUILD)/fw-path-soc/%,$(FW_PATH_SOC_ELFS)) socsim
+	+@$(SOC_FW_MAKE) ZBUF=1 SPAN_W=8 socsim
+	+@$(SOC_FW_MAKE) ZBUF=1 SPAN_W=1 socsim
 
 # The camera paths against the exact reference (tools/bench_error.py --path): FW_PATH_VIEWS views
 # per scene of BENCH_PATH_SCENES, the costs co-simulated on the first BENCH_COST_VIEWS of them.
@@ -187,14 +205,13 @@ bench-error-path:
 	@bash tools/setup.sh packages-plot.txt
 	@$(MAKE) --no-print-directory bench-error-path-run
 
-bench-error-path-run: $(FW_PATH_HOSTS) $(FW_PATH_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(PNG_DIFF) $(EXACT_REF)
+bench-error-path-run: $(FW_PATH_HOSTS) $(FW_PATH_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(ZBITS_SIMS) $(PNG_DIFF) $(EXACT_REF) bench-error-soc
 	$(BENCH_ERROR_CHECK)
 	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --path $(FW_PATH_VIEWS) \
-	  --cost-views $(BENCH_COST_VIEWS) $(BENCH_PATH_SCENES)
+	  --cost-views $(BENCH_COST_VIEWS) $(BENCH_SOC_ARGS) $(BENCH_PATH_SCENES)
 
 # The exact reference of bench-error's camera paths (double precision, the pipeline's definitions
 # written anew: tools/exact_ref/exact_ref.c), and its self-test on known polygons.
-EXACT_REF := $(BUILD)/tools/exact_ref
 $(EXACT_REF): tools/exact_ref/exact_ref.c cosim/png_write.c cosim/png_write.h
 	@mkdir -p $(dir $@)
 	$(HOST_CC) $(HOST_CFLAGS) -Icosim $$(pkg-config --cflags libpng) tools/exact_ref/exact_ref.c \
@@ -269,6 +286,10 @@ $(BUILD)/sim-z-w%/gpusim: $(SIM_DEPS)
 
 $(BUILD)/sim-g-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$* -GENABLE_ZBUF=1 -GENABLE_GOURAUD=1)
+
+# sim-zb<BITS>-w8: the depth buffer keeping BITS bits (ZBUF_BITS), SPAN_W 8.
+$(BUILD)/sim-zb%-w8/gpusim: $(SIM_DEPS)
+	$(call verilate,$@,-GSPAN_W=8 -GENABLE_ZBUF=1 -GZBUF_BITS=$*)
 
 $(BUILD)/sim-fast-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$*,gpu_core,-DGPUSIM_FAST_DISPLAY=1)

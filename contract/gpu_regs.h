@@ -18,6 +18,7 @@
 #define GPU_DEFAULT_SPAN_W           8u  /* Pixels rasterized per clock: 1, 4, 8 or 16 (CAPS_SPAN_W). */
 #define GPU_DEFAULT_ENABLE_LINES     1u  /* Line primitives (CAPS_LINES); without them a line sets ERR_KIND. */
 #define GPU_DEFAULT_ENABLE_ZBUF      0u  /* 16-bit depth buffer (CAPS_ZBUF); without it CTRL_ZTEST and CTRL_ZCLEAR have no effect. */
+#define GPU_DEFAULT_ZBUF_BITS        16u  /* Depth bits the depth buffer keeps, 1 to 16 (CAPS_ZBUF_BITS): the top ZBUF_BITS bits of each depth are stored and compared; fewer bits, less block RAM. */
 #define GPU_DEFAULT_ENABLE_GOURAUD   0u  /* Gouraud triangles (PRIM_KIND_TRI_GOURAUD: VTX_I interpolated, palette ramp, CTRL_DITHER; CAPS_GOURAUD); without them such a triangle sets ERR_KIND. */
 
 /* Bus windows: byte offset and size from the GPU base. */
@@ -104,6 +105,8 @@
 #define GPU_CAPS_GOURAUD_MASK        0x00000010u
 #define GPU_CAPS_SPAN_W_LSB          8u  /* in CAPS: Pixels the rasterizer evaluates per clock. */
 #define GPU_CAPS_SPAN_W_MASK         0x0000FF00u
+#define GPU_CAPS_ZBUF_BITS_LSB       16u  /* in CAPS: Depth bits the depth buffer keeps (1 to 16; see Depth); 0 without CAPS_ZBUF. */
+#define GPU_CAPS_ZBUF_BITS_MASK      0x001F0000u
 #define GPU_ERR_VTX_INDEX_LSB        0u  /* in ERRORS: A primitive named a vertex index >= VTX_COUNT; that primitive was skipped. */
 #define GPU_ERR_VTX_INDEX_MASK       0x00000001u
 #define GPU_ERR_COUNT_LSB            1u  /* in ERRORS: VTX_BASE+VTX_COUNT > VTX_CAP or TRI_BASE+TRI_COUNT > TRI_CAP; the whole batch was skipped (no clear, no draw; a requested swap still happens). */

@@ -25,6 +25,9 @@ extern "C" {
 #ifndef GPU_BUILD_ENABLE_ZBUF
 #define GPU_BUILD_ENABLE_ZBUF GPU_DEFAULT_ENABLE_ZBUF
 #endif
+#ifndef GPU_BUILD_ZBUF_BITS
+#define GPU_BUILD_ZBUF_BITS GPU_DEFAULT_ZBUF_BITS
+#endif
 #ifndef GPU_BUILD_ENABLE_GOURAUD
 #define GPU_BUILD_ENABLE_GOURAUD GPU_DEFAULT_ENABLE_GOURAUD
 #endif
@@ -45,6 +48,7 @@ inline gpu_model_config gpu_build_config()
     cfg.gouraud = GPU_BUILD_ENABLE_GOURAUD != 0;
     cfg.vtx_cap = GPU_BUILD_VTX_CAP;
     cfg.tri_cap = GPU_BUILD_TRI_CAP;
+    cfg.zbuf_bits = GPU_BUILD_ZBUF_BITS;
     return cfg;
 }
 

@@ -192,12 +192,13 @@ FW_WARN := -std=c11 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing
 FW_BACKEND_DEFS_fixed :=
 FW_BACKEND_DEFS_float := -DFW_BACKEND_FLOAT=1
 # Object variants: the two backends take the command line's FW_SUBPIXEL_BITS; <backend>-sp<N>
-# (bench-error, and one test) are a backend with N sub-pixel bits, whatever the command line says.
+# (bench-error, and one test) are a backend with N sub-pixel bits, whatever the command line says
+# (and the platform's FW_LINE_EMULATION, as the backends: bench-error's SoC builds have none).
 FW_VARIANT_DEFS_fixed := $(if $(FW_SUBPIXEL_BITS),-DFW_SUBPIXEL_BITS=$(FW_SUBPIXEL_BITS)) \
                          -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION) $(FW_DEFS)
 FW_VARIANT_DEFS_float := $(FW_VARIANT_DEFS_fixed)
 FW_SP_VARIANTS := fixed-sp4 float-sp0 float-sp2
-$(foreach v,$(FW_SP_VARIANTS),  $(eval FW_BACKEND_DEFS_$(v) := $(FW_BACKEND_DEFS_$(word 1,$(subst -, ,$(v)))))  $(eval FW_VARIANT_DEFS_$(v) := -DFW_SUBPIXEL_BITS=$(patsubst sp%,%,$(word 2,$(subst -, ,$(v))))))
+$(foreach v,$(FW_SP_VARIANTS),  $(eval FW_BACKEND_DEFS_$(v) := $(FW_BACKEND_DEFS_$(word 1,$(subst -, ,$(v)))))  $(eval FW_VARIANT_DEFS_$(v) := -DFW_SUBPIXEL_BITS=$(patsubst sp%,%,$(word 2,$(subst -, ,$(v)))) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)))
 # fixed-lean: the fixed backend with every optional feature left out (fw_config.h FW_WITH_*), for
 # the test that such a build runs and is smaller.
 FW_LEAN_DEFS := -DFW_WITH_WIREFRAME=0 -DFW_WITH_ANAGLYPH=0 -DFW_WITH_DEPTH=0 -DFW_WITH_LIGHTING=0
@@ -219,8 +220,12 @@ FW_VARIANT_DEFS_fixed-emul := -DFW_WITH_LINE_EMULATION=1
 FW_SP_VARIANTS += fixed-chip fixed-emul
 # fixed-nr0 / fixed-nr2: the fixed backend with 0 or 2 Newton steps in the projection's reciprocal
 # (FW_RECIP_NEWTON_STEPS, math/fixed.h; default 1): bench-error's camera paths.
-$(foreach n,0 2,$(eval FW_BACKEND_DEFS_fixed-nr$(n) :=)$(eval FW_VARIANT_DEFS_fixed-nr$(n) := -DFW_RECIP_NEWTON_STEPS=$(n)))
+$(foreach n,0 2,$(eval FW_BACKEND_DEFS_fixed-nr$(n) :=)$(eval FW_VARIANT_DEFS_fixed-nr$(n) := -DFW_RECIP_NEWTON_STEPS=$(n) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)))
 FW_SP_VARIANTS += fixed-nr0 fixed-nr2
+# float-sin6 / float-sin10: the float backend (R's) with a 64- or 1024-entry sine table instead of
+# 256 (FW_SIN_TABLE_BITS, math/fixed.h; both backends rotate with fx_sin): bench-error's sine rows.
+$(foreach n,6 10,$(eval FW_BACKEND_DEFS_float-sin$(n) := $(FW_BACKEND_DEFS_float))$(eval FW_VARIANT_DEFS_float-sin$(n) := -DFW_SIN_TABLE_BITS=$(n)))
+FW_SP_VARIANTS += float-sin6 float-sin10
 # -ffp-contract=off: no fused multiply-adds, so the float backend rounds identically on the host
 # and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
 # -fno-tree-loop-distribute-patterns: GCC would turn the pipeline's clearing loops (the sort's
@@ -394,7 +399,7 @@ FW_ERR_ELFS   :=
 $(foreach s,$(FW_SCENES),$(foreach v,fixed float,\
   $(eval $(call FW_ELF_RULES,$(FW_ERR_DIR)/$(s)-$(v).elf,$(s),$(v),$(FW_ERR_FRAMES),))\
   $(eval FW_ERR_ELFS += $(FW_ERR_DIR)/$(s)-$(v).elf)))
-$(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2,\
+$(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2 float-sin6 float-sin10,\
   $(eval $(call FW_ELF_RULES,$(FW_ERR_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_ERR_FRAMES),,-DFW_DEPTH_TEST=1))\
   $(eval FW_ERR_ELFS += $(FW_ERR_DIR)/$(s)-$(v)-z.elf)))
 
@@ -413,11 +418,22 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float,\
   $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v).elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS)))\
   $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/host-$(s)-$(v))\
   $(eval FW_PATH_ELFS += $(FW_PATH_DIR)/$(s)-$(v).elf)))
-$(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2 fixed-nr0 fixed-nr2,\
+$(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2 fixed-nr0 fixed-nr2 float-sin6 float-sin10,\
   $(eval $(call FW_HOST_RULES,$(FW_PATH_DIR)/host-$(s)-$(v)-z,$(s),$(v),$(FW_PATH_VIEWS),$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
   $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
   $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/host-$(s)-$(v)-z)\
   $(eval FW_PATH_ELFS += $(FW_PATH_DIR)/$(s)-$(v)-z.elf)))
+
+# bench-error's CPU cycles on the SoC (built with FW_PLATFORM=soc, so under $(BUILD)/fw-path-soc/):
+# the path ELFs again with only the first FW_PATH_SOC_VIEWS views (frames), the same program
+# otherwise, since socsim simulates about 0.6 M cycles a second of CPU and every frame is at least
+# one VGA frame (840,000 cycles) after a boot of ~2.4 M: <scene>-<variant>[-z]-<N>v.elf.
+FW_PATH_SOC_VIEWS := 1
+FW_PATH_SOC_ELFS  :=
+$(foreach s,$(FW_SCENES),$(foreach v,fixed float fixed-z float-z float-sp0-z float-sp2-z fixed-nr0-z fixed-nr2-z float-sin6-z float-sin10-z,\
+  $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v)-$(FW_PATH_SOC_VIEWS)v.elf,$(s),$(v:-z=),$(FW_PATH_SOC_VIEWS),,\
+    $(FW_PATH_DEFS)$(if $(filter %-z,$(v)), -DFW_DEPTH_TEST=1)))\
+  $(eval FW_PATH_SOC_ELFS += $(FW_PATH_DIR)/$(s)-$(v)-$(FW_PATH_SOC_VIEWS)v.elf)))
 
 # tests/bench/exact_ref.sh: the exact reference against tetra's path (tools/exact_ref's rule is the
 # top-level Makefile's).

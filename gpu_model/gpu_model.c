@@ -328,7 +328,8 @@ static prim_result draw_triangle(gpu_model *m, gpu_model_pt v0,
             if (ztest) {
                 /* Written only if strictly nearer; the depth then replaces
                  * the stored one. */
-                uint16_t z = depth_at(&plane, v0, p);
+                uint16_t z = (uint16_t)(depth_at(&plane, v0, p) >>
+                                        (16u - m->cfg.zbuf_bits));
                 if (!(z < m->zbuf[i])) {
                     continue;
                 }
@@ -488,8 +489,9 @@ static void run_batch(gpu_model *m, uint32_t tag)
                    GPU_MODEL_FB_PIXELS);
         }
         if (zclear) {
+            const uint16_t far = (uint16_t)((1u << m->cfg.zbuf_bits) - 1u);
             for (size_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
-                m->zbuf[i] = 0xFFFFu;
+                m->zbuf[i] = far;
             }
         }
         /* 4. Primitives in order; later ones overwrite earlier ones. */
@@ -537,6 +539,9 @@ const char *gpu_model_config_error(const gpu_model_config *cfg)
     if (!span_w_supported(cfg->span_w)) {
         return "span_w is not 1, 4, 8 or 16";
     }
+    if (cfg->zbuf_bits > 16u) { /* 0 counts as given: it means 16 */
+        return "zbuf_bits is not 1 .. 16";
+    }
     if (cfg->vtx_cap != 0u && !cap_supported(cfg->vtx_cap, GPU_MODEL_MAX_VTX_CAP)) {
         return "vtx_cap is above the contract's VTX_CAP, the most the model holds";
     }
@@ -550,11 +555,15 @@ void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
 {
     gpu_model_config c = { GPU_MODEL_DEFAULT_SPAN_W, GPU_MODEL_DEFAULT_LINES,
                            GPU_MODEL_DEFAULT_ZBUF, GPU_MODEL_MAX_VTX_CAP,
-                           GPU_MODEL_MAX_TRI_CAP, GPU_MODEL_DEFAULT_GOURAUD };
+                           GPU_MODEL_MAX_TRI_CAP, GPU_MODEL_DEFAULT_ZBUF_BITS,
+                           GPU_MODEL_DEFAULT_GOURAUD };
     if (cfg != NULL) {
         c = *cfg;
         if (!span_w_supported(c.span_w)) {
             c.span_w = GPU_MODEL_DEFAULT_SPAN_W;
+        }
+        if (c.zbuf_bits < 1u || c.zbuf_bits > 16u) {
+            c.zbuf_bits = GPU_MODEL_DEFAULT_ZBUF_BITS;
         }
         if (!cap_supported(c.vtx_cap, GPU_MODEL_MAX_VTX_CAP)) {
             c.vtx_cap = GPU_MODEL_MAX_VTX_CAP; /* 0: the default; else refused */
@@ -584,6 +593,8 @@ uint32_t gpu_model_caps(const gpu_model *m)
     }
     if (m->cfg.zbuf) {
         caps |= GPU_CAPS_ZBUF_MASK;
+        caps |= ((uint32_t)m->cfg.zbuf_bits << GPU_CAPS_ZBUF_BITS_LSB) &
+                GPU_CAPS_ZBUF_BITS_MASK;
     }
     if (m->cfg.gouraud) {
         caps |= GPU_CAPS_GOURAUD_MASK;

@@ -41,6 +41,7 @@
 #define GPU_MODEL_DEFAULT_SPAN_W GPU_DEFAULT_SPAN_W
 #define GPU_MODEL_DEFAULT_LINES  (GPU_DEFAULT_ENABLE_LINES != 0u)
 #define GPU_MODEL_DEFAULT_ZBUF   (GPU_DEFAULT_ENABLE_ZBUF != 0u)
+#define GPU_MODEL_DEFAULT_ZBUF_BITS GPU_DEFAULT_ZBUF_BITS
 #define GPU_MODEL_DEFAULT_GOURAUD (GPU_DEFAULT_ENABLE_GOURAUD != 0u)
 
 /* The largest capacities the model holds: the contract's limits, also the
@@ -71,6 +72,10 @@
  *           (BASE + COUNT > CAP) and which window words exist: a write past
  *           the capacity is to an unmapped offset and is ignored (never
  *           wrapped into the buffer).
+ *   zbuf_bits: ZBUF_BITS, the depth bits the buffer keeps, 1 .. 16 (contract
+ *           "Depth"; any other value, 0 included, is replaced by the default
+ *           16, as span_w's is); CAPS_ZBUF_BITS reports it with zbuf, 0
+ *           without.
  *   gouraud: ENABLE_GOURAUD; without it a PRIM_KIND_TRI_GOURAUD primitive
  *           sets ERR_KIND and CTRL_DITHER has no effect (it is still stored).
  *           Last, so that an initializer naming only the fields before it
@@ -82,6 +87,7 @@ typedef struct gpu_model_config {
     bool zbuf;
     uint32_t vtx_cap;
     uint32_t tri_cap;
+    unsigned zbuf_bits;  /* last: configs written before it get 0 = 16 */
     bool gouraud;
 } gpu_model_config;
 
@@ -147,9 +153,10 @@ typedef struct gpu_model {
     uint8_t fb[2][GPU_MODEL_FB_PIXELS];
 
     /* The depth buffer (contract "Depth"), row-major like fb, one buffer, not
-     * swapped.  0 at power-on (block RAM initial value, like the
-     * framebuffers), 0xFFFF after a CTRL_ZCLEAR.  Only used with cfg.zbuf;
-     * without it, it stays 0. */
+     * swapped: the kept depths zb = z >> (16 - cfg.zbuf_bits), 0 ..
+     * 2^zbuf_bits - 1.  0 at power-on (block RAM initial value, like the
+     * framebuffers), 2^zbuf_bits - 1 (0xFFFF at 16 bits) after a CTRL_ZCLEAR.
+     * Only used with cfg.zbuf; without it, it stays 0. */
     uint16_t zbuf[GPU_MODEL_FB_PIXELS];
 } gpu_model;
 
@@ -161,7 +168,8 @@ void gpu_model_reset(gpu_model *m);
 
 /* Power-on state with the given build options (NULL: the defaults).  An
  * unsupported span_w (not 1, 4, 8 or 16) is replaced by 8, a capacity of 0 or
- * above the contract's limit by that limit; m->cfg holds what was taken. */
+ * above the contract's limit by that limit, a zbuf_bits outside 1 .. 16 by
+ * 16; m->cfg holds what was taken. */
 void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg);
 
 /* NULL when gpu_model_reset_config would take cfg as it is (0 capacities

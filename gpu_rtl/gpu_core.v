@@ -24,6 +24,8 @@ module gpu_core #(
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,  // line primitives (CAPS_LINES)
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,    // 16-bit depth buffer (CAPS_ZBUF):
                                                                          // 1.2 Mb more block RAM
+    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,        // depth bits kept, 1..16
+                                                                         // (CAPS_ZBUF_BITS): 76,800 bits each
     parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,  // Gouraud triangles
                                          // (CAPS_GOURAUD): VTX_I RAM, two dividers, intensity lanes
     localparam integer VI_W = $clog2(VTX_CAP),
@@ -59,6 +61,7 @@ module gpu_core #(
     localparam [31:0] CAPS = (32'(SPAN_W) << gpu_pkg::GPU_CAPS_SPAN_W_LSB)
                            | (32'(ENABLE_LINES != 0) << gpu_pkg::GPU_CAPS_LINES_LSB)
                            | (32'(ENABLE_ZBUF != 0) << gpu_pkg::GPU_CAPS_ZBUF_LSB)
+                           | (32'(ENABLE_ZBUF != 0 ? ZBUF_BITS : 0) << gpu_pkg::GPU_CAPS_ZBUF_BITS_LSB)
                            | (32'(ENABLE_GOURAUD != 0) << gpu_pkg::GPU_CAPS_GOURAUD_LSB);
 
     // Batch description and status between the register block and the rasterizer.
@@ -104,6 +107,10 @@ module gpu_core #(
     wire [SPAN_W*16-1:0] z_rd_data, z_wr_data;
     wire [SPAN_W-1:0] z_wr_mask;
     generate
+        if (ZBUF_BITS < 1 || ZBUF_BITS > 16) begin : g_bad_zbuf_bits
+            // Elaboration stops here, with this name in the error: there is no such module.
+            gpu_core_ZBUF_BITS_must_be_1_to_16 u_bad ();
+        end
         if (ENABLE_ZBUF != 0) begin : g_zbuf
             gpu_ram #(.DEPTH(VTX_CAP), .WIDTH(16)) u_vtx_z_ram (
                 .wr_clk(clk), .rd_clk(clk),
@@ -111,10 +118,22 @@ module gpu_core #(
                 .wr_data(bus_wdata[gpu_pkg::GPU_VTX_Z_LSB +: 16]), .wr_mask(1'b1),
                 .rd_en(vtx_rd_en), .rd_addr(vtx_rd_addr), .rd_data(vz_rd_data)
             );
-            gpu_ram #(.DEPTH(FB_WORDS), .WIDTH(SPAN_W * 16), .LANES(SPAN_W)) u_depth (
+            // The depth memory holds the top ZBUF_BITS bits of each lane's depth (the walker keeps
+            // only those, the rest are 0): ZBUF_BITS / 16 of the block RAM of a full buffer.
+            wire [SPAN_W*ZBUF_BITS-1:0] zm_wr_data, zm_rd_data;
+            for (genvar l = 0; l < SPAN_W; l = l + 1) begin : g_lane
+                assign zm_wr_data[l*ZBUF_BITS +: ZBUF_BITS] = z_wr_data[l*16 + 16 - ZBUF_BITS +: ZBUF_BITS];
+                if (ZBUF_BITS < 16) begin : g_pad
+                    wire unused_low = |z_wr_data[l*16 +: 16 - ZBUF_BITS];  // always 0: not stored
+                    assign z_rd_data[l*16 +: 16] = {zm_rd_data[l*ZBUF_BITS +: ZBUF_BITS], {(16 - ZBUF_BITS){1'b0}}};
+                end else begin : g_full
+                    assign z_rd_data[l*16 +: 16] = zm_rd_data[l*ZBUF_BITS +: ZBUF_BITS];
+                end
+            end
+            gpu_ram #(.DEPTH(FB_WORDS), .WIDTH(SPAN_W * ZBUF_BITS), .LANES(SPAN_W)) u_depth (
                 .wr_clk(clk), .rd_clk(clk),
-                .wr_en(z_wr_en), .wr_addr(z_wr_addr), .wr_data(z_wr_data), .wr_mask(z_wr_mask),
-                .rd_en(z_rd_en), .rd_addr(z_rd_addr), .rd_data(z_rd_data)
+                .wr_en(z_wr_en), .wr_addr(z_wr_addr), .wr_data(zm_wr_data), .wr_mask(z_wr_mask),
+                .rd_en(z_rd_en), .rd_addr(z_rd_addr), .rd_data(zm_rd_data)
             );
         end else begin : g_no_zbuf
             assign vz_rd_data = 16'd0;
@@ -161,7 +180,7 @@ module gpu_core #(
     );
 
     gpu_raster #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .SPAN_W(SPAN_W),
-                 .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF),
+                 .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS),
                  .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_raster (
         .clk(clk), .rst(rst), .soft_reset(soft_reset),
         .start(start), .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .ctrl_ztest(ctrl_ztest),

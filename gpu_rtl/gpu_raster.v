@@ -17,6 +17,7 @@ module gpu_raster #(
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
+    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,
     parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
@@ -114,7 +115,8 @@ module gpu_raster #(
     // The walker does not start on a descriptor until the clear is over (the setup may run ahead).
     wire walk_enable = state_q == S_DRAW || state_q == S_DRAIN;
 
-    gpu_span_walker #(.SPAN_W(SPAN_W), .ENABLE_ZBUF(ENABLE_ZBUF), .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_walker (
+    gpu_span_walker #(.SPAN_W(SPAN_W), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS),
+                      .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_walker (
         .clk(clk), .rst(pipe_rst),
         .in_valid(desc_valid && walk_enable), .in_ready(walker_ready), .in_desc(desc), .ztest(ztest),
         .dither(ENABLE_GOURAUD != 0 && ctrl_dither),

@@ -33,6 +33,8 @@ module gpu_span_walker #(
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,           // build options: see gpu_top
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF, // depth test stage and depth-
                                                                       // buffer port
+    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,     // depth bits kept (contract
+                                                                      // "Depth"): the rest read 0
     parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,  // intensity stepping and
                                                                       // the ramp/dither write stage
     localparam integer WORDS_PER_ROW = gpu_pkg::GPU_FB_WIDTH / SPAN_W,
@@ -201,10 +203,13 @@ module gpu_span_walker #(
             zclamp = (whole < 0) ? 16'd0 : ((whole > 65535) ? 16'hFFFF : whole[15:0]);
         end
     endfunction
+    // Only the top ZBUF_BITS bits are kept (the low ones forced to 0): comparing these is comparing
+    // floor(z / 2^(16 - ZBUF_BITS)), the contract's zb(p), here and in the write-after-write bypass.
+    localparam [15:0] Z_KEEP = 16'hFFFF << (16 - ZBUF_BITS);
     reg [SPAN_W*16-1:0] lane_z;
     always @(*) begin
         for (l = 0; l < SPAN_W; l = l + 1) begin
-            lane_z[l*16 +: 16] = zclamp(z_q + times(Z_W'(zdx_q), l));
+            lane_z[l*16 +: 16] = zclamp(z_q + times(Z_W'(zdx_q), l)) & Z_KEEP;
         end
     end
 

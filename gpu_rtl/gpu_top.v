@@ -25,6 +25,8 @@ module gpu_top #(
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,  // line primitives (CAPS_LINES)
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,    // 16-bit depth buffer (CAPS_ZBUF):
                                                                          // 1.2 Mb more block RAM
+    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,        // depth bits kept, 1..16
+                                                                         // (CAPS_ZBUF_BITS; see gpu_core)
     parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,  // Gouraud triangles
                                          // (CAPS_GOURAUD): VTX_I RAM, two dividers, intensity lanes
     parameter integer PIX_DIV = 4,       // clk_pix clocks per VGA pixel (1 for a 25 MHz clk_pix)
@@ -60,7 +62,7 @@ module gpu_top #(
     wire [11:0] pal_rd_data;
 
     gpu_core #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .SPAN_W(SPAN_W),
-               .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF),
+               .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS),
                .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_core (
         .clk(clk), .rst(rst),
         .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr), .bus_wdata(bus_wdata),

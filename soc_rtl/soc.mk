@@ -30,10 +30,11 @@ lint-soc: $(SOC_VENV)
 	$(VERILATOR) --lint-only -Wall --top-module soc_top $(SOC_VFLAGS)
 	@echo "lint-soc: $(words $(SOC_RTL_V)) files of $(SOC_FILES) clean under -Wall (with the GPU and $(notdir $(SOC_CPU_V)))"
 
-# yosys synth_ecp5 of soc_top: LUT4, FF, EBR per memory, MULT18X18D (installs yosys).
+# yosys synth_ecp5 of soc_top: LUT4, FF, EBR per memory, MULT18X18D (installs yosys). ZBUF=1
+# [ZBUF_BITS=B]: with the GPU's depth buffer, keeping B bits (default 16).
 synth-soc: $(SOC_VENV)
 	@bash tools/setup.sh packages-synth.txt
-	@SOC_CPU_V=$(SOC_CPU_V) bash synth/synth_soc.sh $(BUILD)
+	@ZBUF=$(ZBUF) $(if $(ZBUF_BITS),ZBUF_BITS=$(ZBUF_BITS)) SOC_CPU_V=$(SOC_CPU_V) bash synth/synth_soc.sh $(BUILD)
 
 # ---- the smoke test: a bare-metal program on the Verilated soc_top (socsim, a RAM image) ----
 SOC_SMOKE_ELF  := $(BUILD)/soc/smoke.elf

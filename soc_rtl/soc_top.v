@@ -29,6 +29,7 @@ module soc_top #(
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
+    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,
     parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,   // a scene's manifest may size the buffers to it
     parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,
     localparam integer PIX_HZ = 25000000,      // VGA 640x480@60 pixel rate
@@ -248,6 +249,7 @@ module soc_top #(
         .SPAN_W       (SPAN_W),
         .ENABLE_LINES (ENABLE_LINES),
         .ENABLE_ZBUF  (ENABLE_ZBUF),
+        .ZBUF_BITS    (ZBUF_BITS),
         .VTX_CAP      (VTX_CAP),
         .TRI_CAP      (TRI_CAP),
         .PIX_DIV      (PIX_DIV)

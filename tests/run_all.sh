@@ -86,6 +86,7 @@ suite fw-unit-float            1 "$BUILD/tests/fw_unit_float"
 suite fw-no-gpu                1 bash tests/firmware/no_gpu.sh
 suite fw-fit                   5 bash tests/firmware/fit.sh
 suite fw-stress                5 bash tests/stress/run.sh
+suite fw-sin-sizes             2 bash tests/firmware/sin_sizes.sh
 suite model-unit               2 "$BUILD/tests/model_unit"
 suite rtl-vs-model-seed1      20 "$GPUSIM" random --seed 1 --batches 40 --swap-percent 25
 suite rtl-vs-model-seed2      16 "$GPUSIM" random --seed 2 --batches 40 --tris 200 --swap-percent 25
@@ -100,6 +101,7 @@ suite rtl-vs-model-span1      11 "$BUILD/sim-w1/gpusim" random --seed 4 --batche
 suite rtl-vs-model-span4      14 "$BUILD/sim-w4/gpusim" random --seed 5 --batches 20 --tris 100
 suite rtl-vs-model-span16     18 "$BUILD/sim-w16/gpusim" random --seed 6 --batches 20 --tris 100 --swap-percent 25
 suite rtl-vs-model-zbuf       25 "$BUILD/sim-z-w8/gpusim" random --seed 7 --batches 40 --tris 300 --swap-percent 25
+suite rtl-vs-model-zbuf8      11 "$BUILD/sim-zb8-w8/gpusim" random --seed 8 --batches 20 --tris 300 --swap-percent 25
 suite raster-mesh-exact-once  19 bash tests/raster/mesh.sh
 suite raster-bad-input         1 bash tests/raster/bad_input.sh
 suite raster-list-roundtrip    1 bash tests/raster/roundtrip.sh

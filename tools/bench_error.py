@@ -14,6 +14,10 @@ of R, so its error is that knob's own; the row "default build" changes all of th
   sub-pixel bits  2 and 0 fraction bits kept in projected vertices (FW_SUBPIXEL_BITS, proj.h;
                   the switch also takes 3 and 1, left out here to keep the run short)
   span width      GPUs built with SPAN_W = 1, 4, 16 (the rasterizer is exact: error must be 0)
+  sine table      64 and 1024 entries per turn instead of 256 (FW_SIN_TABLE_BITS, math/fixed.h;
+                  every rotation and the scenes' generated shapes use it; the camera path does not)
+  depth bits      GPUs whose depth buffer keeps 12 and 8 of the 16 bits (ZBUF_BITS, contract
+                  "Depth"), the memory it saves in docs/accuracy-vs-cost.md
 
 Each configuration is co-simulated (QEMU -icount + the Verilator GPU, like `make bench-fw`) for
 FRAMES frames from boot, no keys; every number below is a mean over those frames.
@@ -27,6 +31,10 @@ Costs, counted (never timed):
   fw instr/frame    the firmware's per-frame `fw instr` (minstret delta under QEMU -icount shift=0)
   GPU cycles/frame  the firmware's per-frame `gpu cycles` (PERF_BUSY_CYCLES of the RTL, summed
                     over the frame's batches)
+  SoC CPU cycles    with --socsim: the firmware's per-frame `cpu cycles` (mcycle, DONE_SEQ polls
+                    excluded) of the same configuration built for the SoC (bsp/soc: one scene, no
+                    line emulation) on socsim, the whole SoC Verilated (VexRiscv_Full, its caches,
+                    bus, RAM, GPU) - see "CPU cycles on the SoC" below
 
 With --path VIEWS (`make bench-error-path`, and the second half of `make bench-error`): the same
 configurations plus the reciprocal's Newton steps (0 and 2 instead of fixed point's 1), on a seeded
@@ -36,8 +44,9 @@ Pareto front of error against cost and whether the default build lies on it, the
 BUILD/bench-error/path/error-vs-cost.png and each configuration's worst view beside E's in
 BUILD/bench-error/path/worst/<scene>-<configuration>.png (see "camera paths" below).
 
-    bench_error.py --build BUILD --frames N [--jobs J] [--no-run] SCENE...
-    bench_error.py --build BUILD --path VIEWS [--cost-views K] [--jobs J] [--no-run | --keep] SCENE...
+    bench_error.py --build BUILD --frames N [--jobs J] [--no-run] [SOC] SCENE...
+    bench_error.py --build BUILD --path VIEWS [--cost-views K] [--jobs J] [--no-run | --keep] [SOC] SCENE...
+      SOC: --socsim SIM=SOCSIM... [--soc-views N] [--soc-span-scenes "S..."]
     bench_error.py --check-metric PNG_DIFF WORKDIR     (the test: the metric on known images)
 """
 import argparse
@@ -66,6 +75,10 @@ CONFIGS = {
     "w1":      ("float-z",     "sim-z-w1",  "SPAN_W 1"),
     "w4":      ("float-z",     "sim-z-w4",  "SPAN_W 4"),
     "w16":     ("float-z",     "sim-z-w16", "SPAN_W 16"),
+    "sin6":    ("float-sin6-z", "sim-z-w8", "64 sine entries"),
+    "sin10":   ("float-sin10-z", "sim-z-w8", "1024 sine entries"),
+    "zb12":    ("float-z",     "sim-zb12-w8", "12 depth bits"),
+    "zb8":     ("float-z",     "sim-zb8-w8", "8 depth bits"),
     "default": ("fixed",       "sim-w8",    "default build"),
 }
 
@@ -75,10 +88,13 @@ KNOBS = [
     ("depth order", [("depth buffer (R)", "ref"), ("painter's sort", "painter")]),
     ("sub-pixel bits", [("4 (R)", "ref"), ("2", "sp2"), ("0", "sp0")]),
     ("span width", [("8 (R)", "ref"), ("1", "w1"), ("4", "w4"), ("16", "w16")]),
+    ("sine table entries", [("256 (R)", "ref"), ("64", "sin6"), ("1024", "sin10")]),
+    ("depth-buffer bits", [("16 (R)", "ref"), ("12", "zb12"), ("8", "zb8")]),
     ("default build", [("fixed, painter, 4 bits, SPAN_W 8", "default")]),
 ]
 
 FRAME_RE = re.compile(r"^frame (\d+): .*\| fw instr (\d+) \| gpu cycles (\d+) \|")
+SOC_FW_LINE = re.compile(r"^frame (\d+): .*\| fw instr (\d+) \|.*\| cpu cycles (\d+)")
 
 
 def run_config(build, frames, scene, key, rerun=True):
@@ -88,7 +104,7 @@ def run_config(build, frames, scene, key, rerun=True):
     work = os.path.join(build, "bench-error", scene, key)
     if rerun:
         cosim(build, work, scene, variant, sim)
-    return parse_log(work, frames, scene, key, variant), os.path.join(work, "frames")
+    return parse_log(work, frames, scene, key, variant, sim), os.path.join(work, "frames")
 
 
 def cosim(build, work, scene, variant, sim):
@@ -103,7 +119,7 @@ def cosim(build, work, scene, variant, sim):
             raise RuntimeError("%s-%s on %s: co-simulation failed, see %s/cosim.out" % (scene, variant, sim, work))
 
 
-def parse_log(work, frames, scene, key, variant):
+def parse_log(work, frames, scene, key, variant, sim):
     counts = {}
     with open(os.path.join(work, "uart.log")) as log:
         for line in log:
@@ -112,8 +128,12 @@ def parse_log(work, frames, scene, key, variant):
                 counts[int(m.group(1))] = (int(m.group(2)), int(m.group(3)))
     if sorted(counts) != list(range(frames)):
         raise RuntimeError("%s %s: expected frames 0..%d in %s/uart.log" % (scene, key, frames - 1, work))
-    if variant.endswith("-z") != ("depth buffer on" in open(os.path.join(work, "uart.log")).read()):
+    log = open(os.path.join(work, "uart.log")).read()
+    if variant.endswith("-z") != ("depth buffer on" in log):
         raise RuntimeError("%s %s: depth test on/off not as configured" % (scene, key))
+    bits = sim[len("sim-zb"):].split("-")[0] if sim.startswith("sim-zb") else "16"
+    if variant.endswith("-z") and "depth buffer on (FW_DEPTH_TEST, %s-bit depths)" % bits not in log:
+        raise RuntimeError("%s %s: the GPU does not report %s depth bits (CAPS_ZBUF_BITS)" % (scene, key, bits))
     return counts
 
 
@@ -162,21 +182,22 @@ def measure(build, frames, scenes, jobs, rerun):
     return results
 
 
-def table(results, scenes, frames):
-    lines = ["| knob | setting | scene | pixels differing | mean abs dRGB | fw instructions/frame | GPU cycles/frame |",
-             "|---|---|---|---:|---:|---:|---:|"]
+def table(results, scenes, frames, soc_lines=()):
+    lines = ["| knob | setting | scene | pixels differing | mean abs dRGB | fw instructions/frame | GPU cycles/frame | SoC CPU cycles/frame |",
+             "|---|---|---|---:|---:|---:|---:|---:|"]
     for knob, settings in KNOBS:
         for scene in scenes:
             for setting, key in settings:
                 r = results[(scene, key)]
-                lines.append("| %s | %s | %s | %.1f (%.2f%%) | %.4f | %d | %d |" % (
+                lines.append("| %s | %s | %s | %.1f (%.2f%%) | %.4f | %d | %d | %s |" % (
                     knob, setting, scene, r["differing"], 100.0 * r["differing"] / FB_PIXELS, r["mae"],
-                    round(r["instr"]), round(r["cycles"])))
+                    round(r["instr"]), round(r["cycles"]), soc_cell(r)))
     lines.append("")
-    lines.append("R = float, depth buffer, 4 sub-pixel bits, SPAN_W 8. Error against R's frame; means "
+    lines.append("R = float, depth buffer (16 bits), 4 sub-pixel bits, SPAN_W 8, 256 sine entries. Error against R's frame; means "
                  "over the first %d frames of each scene's default view; counts from co-simulation "
                  "(QEMU -icount, Verilator cycles)." % frames)
     lines.extend(notes(results, scenes))
+    lines.extend(soc_lines)
     return "\n".join(lines)
 
 
@@ -190,8 +211,10 @@ def knob_ranges(results, scenes, knobs, error_columns):
     """Markdown rows, one per knob setting: each error column's range over the scenes, then the
     firmware's instructions and the GPU's cycles relative to R's. error_columns: (header, result
     key, format)."""
-    lines = ["| knob | setting | %s | fw instructions / R's | GPU cycles / R's |" % " | ".join(h for h, _, _ in error_columns),
-             "|---|---|%s---:|---:|" % ("---:|" * len(error_columns))]
+    costs = ["instr", "cycles"] + (["soc"] if "soc" in results[(scenes[0], "ref")] else [])
+    names = {"instr": "fw instructions / R's", "cycles": "GPU cycles / R's", "soc": "SoC CPU cycles / R's"}
+    lines = ["| knob | setting | %s | %s |" % (" | ".join(h for h, _, _ in error_columns), " | ".join(names[c] for c in costs)),
+             "|---|---|%s%s" % ("---:|" * len(error_columns), "---:|" * len(costs))]
     for knob, settings in knobs:
         for setting, key in settings:
             if key == "ref" and knob != "arithmetic":
@@ -199,9 +222,9 @@ def knob_ranges(results, scenes, knobs, error_columns):
             rs = [results[(sc, key)] for sc in scenes]
             refs = [results[(sc, "ref")] for sc in scenes]
             cells = [knob if key != "ref" else "reference R",
-                     setting if key != "ref" else "float, depth buffer, 4 bits, SPAN_W 8"]
+                     setting if key != "ref" else "float, depth buffer (16 bits), 4 bits, SPAN_W 8, 256 sine entries"]
             cells += [span([r[field] for r in rs], fmt) for _, field, fmt in error_columns]
-            cells += [span([r[cost] / q[cost] for r, q in zip(rs, refs)], "%.2f") for cost in ("instr", "cycles")]
+            cells += [span([r[cost] / q[cost] for r, q in zip(rs, refs)], "%.2f") for cost in costs]
             lines.append("| %s |" % " | ".join(cells))
     return lines
 
@@ -218,6 +241,8 @@ def summary(results, scenes):
 def notes(results, scenes):
     """Notes computed from the numbers, so that they cannot go stale."""
     out = []
+    if not all(k in CONFIGS for k in ("w1", "w4", "w16", "sp2", "sp0")):
+        return out  # --only: a partial run
     span_err = max(results[(s, k)]["differing"] for s in scenes for k in ("w1", "w4", "w16"))
     out.append("- span width: %s" % ("every frame identical to R's: the rasterizer is exact at every width"
                                       if span_err == 0 else "FRAMES DIFFER FROM R (a rasterizer bug)"))
@@ -239,11 +264,15 @@ def plot(results, scenes, path):
     import matplotlib.pyplot as plt
 
     markers = {"ref": "*", "fixed": "s", "painter": "D", "sp2": "v", "sp0": "^",
-               "w1": "1", "w4": "2", "w16": "3", "default": "o"}
+               "w1": "1", "w4": "2", "w16": "3", "default": "o", "sin6": "P", "sin10": "X",
+               "zb12": "p", "zb8": "h"}
     colours = dict(zip(scenes, ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown"]))
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6), sharey=True)
-    for ax, cost, label in ((axes[0], "instr", "firmware instructions / frame (QEMU -icount)"),
-                            (axes[1], "cycles", "GPU cycles / frame (Verilator, PERF_BUSY_CYCLES)")):
+    panels = [("instr", "firmware instructions / frame (QEMU -icount)"),
+              ("cycles", "GPU cycles / frame (Verilator, PERF_BUSY_CYCLES)")]
+    if "soc" in results[(scenes[0], "ref")]:
+        panels.append(("soc", "CPU cycles / frame on the SoC (socsim, path view 0)"))
+    fig, axes = plt.subplots(1, len(panels), figsize=(5.5 * len(panels), 4.6), sharey=True)
+    for ax, (cost, label) in zip(axes, panels):
         for scene in scenes:
             for key in CONFIGS:
                 r = results[(scene, key)]
@@ -259,7 +288,7 @@ def plot(results, scenes, path):
     handles += [matplotlib.patches.Patch(color=colours[s], label=s) for s in scenes]
     fig.legend(handles=handles, loc="center right", fontsize=8, frameon=False)
     fig.suptitle("Pixel error against counted cost, one marker per configuration and scene "
-                 "(R = float, depth buffer, 4 sub-pixel bits, SPAN_W 8)", fontsize=10)
+                 "(R = float, 16-bit depth buffer, 4 sub-pixel bits, SPAN_W 8, 256 sine entries)", fontsize=10)
     fig.tight_layout(rect=(0, 0, 0.86, 0.95))
     fig.savefig(path, dpi=90)
 
@@ -295,6 +324,8 @@ def path_host_cmd(build, scene, key, frames_dir, dump_dir=None):
            "--span-w", sim.rsplit("-w", 1)[1]]
     if sim.startswith("sim-z"):
         cmd.append("--zbuf")
+    if sim.startswith("sim-zb"):  # sim-zb<bits>-w8: the depth buffer keeping <bits> bits
+        cmd += ["--zbuf-bits", sim[len("sim-zb"):].split("-")[0]]
     if dump_dir:
         cmd += ["--dump-scene", dump_dir]
     return cmd
@@ -310,11 +341,20 @@ def path_run(build, scene, key, views, cost_views, rerun):
     if rerun:
         shutil.rmtree(work, ignore_errors=True)
         os.makedirs(work)
-        dump = os.path.join(work, "scene") if key == "ref" else None
+        # Every configuration dumps its scenes, for the cameras (cameras.txt: every configuration
+        # must see the same views, app/cam_path.h); only R's dump is kept, for the exact reference.
+        dump = os.path.join(work, "scene" if key == "ref" else "scene-tmp")
         with open(os.path.join(work, "host.out"), "w") as out:
             if subprocess.run(path_host_cmd(build, scene, key, os.path.join(work, "frames"), dump),
                               stdout=out, stderr=subprocess.STDOUT).returncode != 0:
                 raise RuntimeError("%s %s: host run failed, see %s/host.out" % (scene, key, work))
+        with open(os.path.join(work, "cameras.txt"), "w") as cams:
+            for name in sorted(os.listdir(dump)):
+                with open(os.path.join(dump, name)) as f:
+                    cams.write(name + " " + next((l for l in f if l.startswith("camera ")), "none\n"))
+        if key != "ref":
+            shutil.rmtree(dump)
+            dump = None
         if dump:
             os.makedirs(os.path.join(work, "exact"))
             subprocess.run([os.path.join(build, "tools", "exact_ref"), "--dir", dump,
@@ -341,6 +381,169 @@ def path_run(build, scene, key, views, cost_views, rerun):
         if sorted(counts) != list(range(cost_views)):
             raise RuntimeError("%s %s: expected frames 0..%d in %s/uart.log" % (scene, key, cost_views - 1, work))
     return work, counts
+
+
+# ---- CPU cycles on the SoC (--socsim) -------------------------------------------------------------
+#
+# socsim simulates about 0.6 M cycles a second of CPU, every frame is at least one VGA frame
+# (840,000 cycles) and the boot ~2.4 M (its banner through the 115200-baud UART), while a float
+# frame of the knot is 17.6 M: so each configuration is measured once, on the first SOC_VIEWS
+# views of its camera path (firmware.mk FW_PATH_SOC_VIEWS: the path ELF with that many frames,
+# $(BUILD)/fw-path-soc/<scene>-<variant>-<N>v.elf), and that one number is the SoC column of both
+# tables. Its picture is checked: the socsim frames of those views must equal the host build's
+# (the golden model's) byte for byte, else the run fails. The span widths change only the GPU,
+# and "cpu cycles" leaves the DONE_SEQ polls out, so their rows take R's number ("R's firmware");
+# that this holds is measured: R's firmware on a SPAN_W 1 GPU (--socsim sim-z-w1=...) for the
+# scenes of --soc-span-scenes, against R's, in a note under each table.
+
+SOC_DIR = "soc"
+SOC_GPUS = ("sim-w8", "sim-z-w8")  # the GPUs measured on the SoC: the depth buffer or not, SPAN_W 8
+
+
+def soc_elf(build, scene, variant, views):
+    return os.path.join(build, "fw-path-soc", "%s-%s-%dv.elf" % (scene, variant, views))
+
+
+def soc_run(build, socsims, scene, key, views, sim=None):
+    """One configuration on socsim, cached while the program image and the simulator are the same:
+    {"cpu": mean cpu cycles over the views, "views": [...], "mismatch": text or None}."""
+    import hashlib
+    import json
+    variant, cfg_sim, _ = PATH_CONFIGS[key]
+    sim = sim or cfg_sim
+    elf = soc_elf(build, scene, variant, views)
+    work = os.path.join(build, "bench-error", SOC_DIR, scene, key + ("" if sim == cfg_sim else "-" + sim))
+    with open(elf + ".hex", "rb") as f:
+        cache_key = {"hex": hashlib.sha256(f.read()).hexdigest(), "socsim": os.path.getmtime(socsims[sim]),
+                     "views": views}
+    cache = os.path.join(work, "result.json")
+    if os.path.exists(cache):
+        with open(cache) as f:
+            c = json.load(f)
+        if c["key"] == cache_key:
+            if "instr" not in c["result"]:  # a cache written before the instructions were kept
+                with open(os.path.join(work, "uart.log")) as log:
+                    n = [int(m.group(2)) for m in map(SOC_FW_LINE.match, log) if m and int(m.group(1)) < views]
+                c["result"]["instr"] = sum(n) / views
+            return c["result"], True
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    # The host build's frames of the same configuration and path (every view; milliseconds each).
+    with open(os.path.join(work, "host.out"), "w") as out:
+        if subprocess.run(path_host_cmd(build, scene, key, os.path.join(work, "host-frames")),
+                          stdout=out, stderr=subprocess.STDOUT).returncode != 0:
+            raise RuntimeError("%s %s: host run failed, see %s/host.out" % (scene, key, work))
+    cmd = [socsims[sim], "--fw", elf, "--frames", os.path.join(work, "frames"),
+           "--uart-log", os.path.join(work, "uart.log"), "--summary", os.path.join(work, "summary"),
+           "--no-model-check"]
+    with open(os.path.join(work, "socsim.out"), "w") as out:
+        if subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT).returncode != 0:
+            raise RuntimeError("%s %s: socsim failed, see %s/socsim.out" % (scene, key, work))
+    cpu, instr = {}, {}
+    with open(os.path.join(work, "uart.log")) as log:
+        for line in log:
+            m = SOC_FW_LINE.match(line)
+            if m:
+                instr[int(m.group(1))] = int(m.group(2))
+                cpu[int(m.group(1))] = int(m.group(3))
+    if sorted(cpu) != list(range(views)):
+        raise RuntimeError("%s %s: expected frames 0..%d in %s/uart.log" % (scene, key, views - 1, work))
+    tool = os.path.join(build, "tools", "png_diff")
+    bad = []
+    for f in range(views):
+        d, _ = png_diff(tool, os.path.join(work, "host-frames", "%04d.png" % f),
+                        os.path.join(work, "frames", "%04d.png" % f))
+        if d:
+            bad.append("view %d: %d pixels" % (f, d))
+    result = {"cpu": sum(cpu.values()) / views, "views": [cpu[f] for f in range(views)],
+              "instr": sum(instr.values()) / views,
+              "mismatch": "; ".join(bad) or None}
+    with open(cache, "w") as f:
+        json.dump({"key": cache_key, "result": result}, f)
+    return result, False
+
+
+def soc_measure(build, socsims, scenes, keys, views, span_scenes, jobs):
+    """{(scene, key): soc result} for every key whose GPU socsims has; the span widths' keys get R's
+    result marked "as_r"; ("span-check", scene): R's firmware on the SPAN_W 1 GPU where given."""
+    todo = [(sc, k, None) for sc in scenes for k in keys
+            if PATH_CONFIGS[k][1] in SOC_GPUS and PATH_CONFIGS[k][1] in socsims]
+    if "sim-z-w1" in socsims:
+        todo += [(sc, "ref", "sim-z-w1") for sc in span_scenes if sc in scenes]
+    out = {}
+    t0 = os.times()
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = {pool.submit(soc_run, build, socsims, sc, k, views, sim): (sc, k, sim) for sc, k, sim in todo}
+        done = 0
+        for fut in concurrent.futures.as_completed(futures):
+            sc, k, sim = futures[fut]
+            try:
+                r, cached = fut.result()
+            except Exception:
+                pool.shutdown(wait=True, cancel_futures=True)
+                raise
+            done += 1
+            out[(sc, k) if sim is None else ("span-check", sc)] = r
+            print("bench-error SoC: [%2d/%d] %-9s %-8s%s cpu cycles/frame %d%s" % (
+                done, len(todo), sc, k, "" if sim is None else " on " + sim, r["cpu"],
+                " (cached)" if cached else ""), file=sys.stderr, flush=True)
+    t1 = os.times()
+    print("bench-error SoC: %d socsim runs, %.0f s of CPU" % (len(todo), (t1.children_user + t1.children_system)
+                                                              - (t0.children_user + t0.children_system)),
+          file=sys.stderr, flush=True)
+    mismatches = ["%s %s %s" % (sc, k, r["mismatch"]) for (sc, k), r in out.items() if r["mismatch"]]
+    if mismatches:
+        raise RuntimeError("SoC frames differ from the host build's: " + "; ".join(mismatches))
+    for sc in scenes:
+        for k in keys:
+            if (sc, k) not in out:
+                out[(sc, k)] = dict(out[(sc, "ref")], as_r=True)
+    return out
+
+
+def soc_notes(soc, scenes, views):
+    """The table's SoC lines: what was measured, and the span-width check."""
+    lines = ["- SoC CPU cycles: the same configuration built for the SoC on socsim (VexRiscv_Full, 50 MHz "
+             "model), mcycle per frame without the DONE_SEQ polls, on %s of the scene's camera path "
+             "(frame 0: cold caches), measured once and shown in both tables; its frames equal the host "
+             "build's on those views; span widths: R's firmware (\"as R\")" % (
+                 "the first view" if views == 1 else "the first %d views (mean)" % views)]
+    checks = [(sc, soc[("span-check", sc)]["cpu"], soc[(sc, "ref")]["cpu"]) for sc in scenes if ("span-check", sc) in soc]
+    if checks:
+        lines.append("- SoC CPU cycles against SPAN_W: R's firmware on a SPAN_W 1 GPU against SPAN_W 8: %s (%s)" % (
+            ", ".join("%s %d / %d" % c for c in checks),
+            "equal" if all(a == b for _, a, b in checks) else "NOT EQUAL: the span width changes the CPU's cycles"))
+    return lines
+
+
+def soc_table(soc, scenes, views):
+    """--soc-only: the SoC column alone, every configuration of the camera paths."""
+    lines = ["| knob | setting | scene | SoC CPU cycles/frame | / R's | SoC instructions/frame | CPI |",
+             "|---|---|---|---:|---:|---:|---:|"]
+    for knob, settings in PATH_KNOBS:
+        for scene in scenes:
+            for setting, key in settings:
+                r = soc[(scene, key)]
+                lines.append("| %s | %s | %s | %s | %.2f | %s | %s |" % (knob, setting, scene, soc_cell(
+                    {"soc": r["cpu"], "soc_as_r": r.get("as_r", False)}), r["cpu"] / soc[(scene, "ref")]["cpu"],
+                    "%d" % r["instr"] if "instr" in r else "—", "%.2f" % (r["cpu"] / r["instr"]) if "instr" in r else "—"))
+    lines.append("")
+    lines.extend(soc_notes(soc, scenes, views))
+    return "\n".join(lines)
+
+
+def soc_merge(results, soc, scenes, keys):
+    if soc:
+        for sc in scenes:
+            for k in keys:
+                results[(sc, k)]["soc"] = soc[(sc, k)]["cpu"]
+                results[(sc, k)]["soc_as_r"] = soc[(sc, k)].get("as_r", False)
+
+
+def soc_cell(r):
+    if "soc" not in r:
+        return "—"
+    return "%d%s" % (round(r["soc"]), " (as R)" if r["soc_as_r"] else "")
 
 
 def percentile(values, q):
@@ -375,6 +578,11 @@ def path_measure(build, scenes, views, cost_views, jobs, rerun):
     for scene, key in todo:
         work, counts = runs[(scene, key)]
         exact = os.path.join(runs[(scene, "ref")][0], "exact")
+        with open(os.path.join(work, "cameras.txt")) as a, \
+                open(os.path.join(runs[(scene, "ref")][0], "cameras.txt")) as b:
+            cams, ref_cams = a.read(), b.read()
+        if cams != ref_cams or len(cams.splitlines()) != views:
+            mismatches.append("%s %s: cameras differ from R's (%s/cameras.txt)" % (scene, key, work))
         diff = [png_diff(tool, os.path.join(exact, "%04d.png" % f),
                          os.path.join(work, "frames", "%04d.png" % f)) for f in range(views)]
         for f in range(cost_views):  # the host frames are the co-simulated ones
@@ -438,31 +646,37 @@ def path_aggregate(results, scenes, cost):
     return agg
 
 
-def path_table(results, scenes, views, cost_views, mismatches):
-    lines = ["| knob | setting | scene | pixels differing from E: mean | p95 | worst (view) | mean abs dRGB | fw instructions/frame | GPU cycles/frame |",
-             "|---|---|---|---:|---:|---:|---:|---:|---:|"]
+def path_table(results, scenes, views, cost_views, mismatches, soc_lines=()):
+    lines = ["| knob | setting | scene | pixels differing from E: mean | p95 | worst (view) | mean abs dRGB | fw instructions/frame | GPU cycles/frame | SoC CPU cycles/frame |",
+             "|---|---|---|---:|---:|---:|---:|---:|---:|---:|"]
     for knob, settings in PATH_KNOBS:
         for scene in scenes:
             for setting, key in settings:
                 r = results[(scene, key)]
-                lines.append("| %s | %s | %s | %.1f (%.2f%%) | %.0f | %d (%d) | %.4f | %d | %d |" % (
+                lines.append("| %s | %s | %s | %.1f (%.2f%%) | %.0f | %d (%d) | %.4f | %d | %d | %s |" % (
                     knob, setting, scene, r["differing"], 100.0 * r["differing"] / FB_PIXELS, r["p95"],
-                    r["worst"], r["worst_view"], r["mae"], round(r["instr"]), round(r["cycles"])))
+                    r["worst"], r["worst_view"], r["mae"], round(r["instr"]), round(r["cycles"]), soc_cell(r)))
     lines.append("")
     lines.append("E = the exact reference (tools/exact_ref). Errors over the %d views of each scene's "
                  "camera path (firmware/app/cam_path.h, seed FW_PATH_SEED), frames from the host build "
                  "through the golden model; costs means over the first %d views, co-simulated (QEMU "
                  "-icount, Verilator cycles)." % (views, cost_views))
-    lines.append("- host frames against the co-simulated ones on those views: %s" % (
-        "identical" if not mismatches else "DIFFER: " + "; ".join(mismatches[:5])))
-    for cost, name in (("instr", "fw instructions"), ("cycles", "GPU cycles")):
+    lines.append("- host frames against the co-simulated ones on those views, and every "
+                 "configuration's cameras (eye, yaw, pitch of all %d views) against R's: %s" % (
+                     views, "identical" if not mismatches else "DIFFER: " + "; ".join(mismatches[:5])))
+    lines.extend(soc_lines)
+    costs = [("instr", "fw instructions"), ("cycles", "GPU cycles")]
+    if "soc" in results[(scenes[0], "ref")]:
+        costs.append(("soc", "SoC CPU cycles"))
+    for cost, name in costs:
         agg = path_aggregate(results, scenes, cost)
         front = pareto(agg)
         lines.append("- Pareto front (%s relative to R's, geometric mean over the scenes; mean pixels "
                      "differing from E): %s; the default build %s" % (
                          name, ", ".join("%s (%.2f, %.1f)" % (PATH_CONFIGS[k][2], agg[k][0], agg[k][1])
                                          for k in sorted(front, key=lambda k: agg[k][0])),
-                         "lies on it" if "default" in front else "does NOT lie on it"))
+                         "lies on it" if "default" in front else
+                         "does NOT lie on it" if "default" in PATH_CONFIGS else "is not in this run"))
     return "\n".join(lines)
 
 
@@ -479,10 +693,14 @@ def path_plot(results, scenes, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     markers = {"ref": "*", "fixed": "s", "painter": "D", "sp2": "v", "sp0": "^",
-               "w1": "1", "w4": "2", "w16": "3", "default": "o", "nr0": "<", "nr2": ">"}
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6), sharey=True)
-    for ax, cost, label in ((axes[0], "instr", "firmware instructions / frame, relative to R (QEMU -icount)"),
-                            (axes[1], "cycles", "GPU cycles / frame, relative to R (Verilator)")):
+               "w1": "1", "w4": "2", "w16": "3", "default": "o", "nr0": "<", "nr2": ">",
+               "sin6": "P", "sin10": "X", "zb12": "p", "zb8": "h"}
+    panels = [("instr", "firmware instructions / frame, relative to R (QEMU -icount)"),
+              ("cycles", "GPU cycles / frame, relative to R (Verilator)")]
+    if "soc" in results[(scenes[0], "ref")]:
+        panels.append(("soc", "CPU cycles / frame on the SoC, relative to R (socsim)"))
+    fig, axes = plt.subplots(1, len(panels), figsize=(5.5 * len(panels), 4.6), sharey=True)
+    for ax, (cost, label) in zip(axes, panels):
         agg = path_aggregate(results, scenes, cost)
         front = sorted(pareto(agg), key=lambda k: agg[k][0])
         ax.plot([agg[k][0] for k in front], [agg[k][1] for k in front], "-", color="tab:red",
@@ -553,6 +771,20 @@ def check_metric(tool, work):
     return not failures
 
 
+def select(keys, ap):
+    """--only: keep R and the configurations named (CONFIGS, PATH_CONFIGS and the table rows)."""
+    unknown = [k for k in keys if k not in PATH_CONFIGS]
+    if unknown:
+        ap.error("--only: no configuration %s (known: %s)" % (", ".join(unknown), ", ".join(PATH_CONFIGS)))
+    keep = set(keys) | {"ref"}
+    for table in (CONFIGS, PATH_CONFIGS):
+        for k in [k for k in table if k not in keep]:
+            del table[k]
+    for knobs in (KNOBS, PATH_KNOBS):
+        rows = [(knob, [(st, k) for st, k in settings if k in keep]) for knob, settings in knobs]
+        knobs[:] = [(knob, settings) for knob, settings in rows if any(k != "ref" for _, k in settings)]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build")
@@ -564,19 +796,53 @@ def main():
                     help="camera paths of VIEWS views (the fw-path builds') against the exact reference")
     ap.add_argument("--cost-views", type=int, default=8, help="--path: views co-simulated for the costs")
     ap.add_argument("--keep", action="store_true", help="--path: reuse the finished runs of the last one")
+    ap.add_argument("--socsim", action="append", default=[], metavar="SIM=SOCSIM",
+                    help="the SoC's CPU cycles: socsim for the configurations run on gpusim SIM (sim-w8, "
+                         "sim-z-w8; sim-z-w1: the span-width check)")
+    ap.add_argument("--soc-only", action="store_true", help="--socsim: only the SoC's column, as its own table")
+    ap.add_argument("--soc-views", type=int, default=1, help="--socsim: path views per configuration")
+    ap.add_argument("--soc-span-scenes", default="tetra cubes",
+                    help="--socsim sim-z-w1=...: the scenes of the span-width check")
+    ap.add_argument("--only", metavar="KEY,...",
+                    help="measure only these configurations (and R): a partial re-run, e.g. sin6,zb8")
     ap.add_argument("scenes", nargs="*")
     a = ap.parse_args()
+    if a.only:
+        select(a.only.split(","), ap)
     if a.check_metric:
         ok = check_metric(*a.check_metric)
         print("metric: 0 for identical images, the known sum for 2 changed pixels, sizes checked"
               if ok else "metric: FAILED")
         return 0 if ok else 1
+    socsims = {}
+    for spec in a.socsim:
+        sim, _, path = spec.partition("=")
+        if not path or not os.path.exists(path):
+            ap.error("--socsim %s: SIM=PATH of an existing socsim" % spec)
+        socsims[sim] = path
+    if socsims and "sim-z-w8" not in socsims:
+        ap.error("--socsim: R's GPU, sim-z-w8=..., is needed")
+
+    def soc_for(keys):
+        if not socsims:
+            return None, []
+        soc = soc_measure(a.build, socsims, a.scenes, keys, a.soc_views, a.soc_span_scenes.split(), a.jobs)
+        return soc, soc_notes(soc, a.scenes, a.soc_views)
+
+    if a.soc_only:
+        if not socsims or not a.build or not a.scenes:
+            ap.error("--soc-only needs --build, --socsim and scenes")
+        soc, _ = soc_for(list(PATH_CONFIGS))
+        print(soc_table(soc, a.scenes, a.soc_views))
+        return 0
     if a.path:
         if not a.build or not a.scenes or not 1 <= a.cost_views <= a.path:
             ap.error("--path needs --build, scenes and 1 <= --cost-views <= VIEWS")
+        soc, soc_lines = soc_for(list(PATH_CONFIGS))
         results, mismatches = path_measure(a.build, a.scenes, a.path, a.cost_views, a.jobs,
                                            "keep" if a.keep else not a.no_run)
-        print(path_table(results, a.scenes, a.path, a.cost_views, mismatches))
+        soc_merge(results, soc, a.scenes, list(PATH_CONFIGS))
+        print(path_table(results, a.scenes, a.path, a.cost_views, mismatches, soc_lines))
         print()
         print(path_summary(results, a.scenes))
         plot_path = os.path.join(a.build, "bench-error", PATH_DIR, "error-vs-cost.png")
@@ -586,8 +852,10 @@ def main():
         return 1 if mismatches else 0
     if not a.build or not a.scenes or a.frames < 1:
         ap.error("--build, --frames and at least one scene are needed")
+    soc, soc_lines = soc_for(list(CONFIGS))
     results = measure(a.build, a.frames, a.scenes, a.jobs, not a.no_run)
-    print(table(results, a.scenes, a.frames))
+    soc_merge(results, soc, a.scenes, list(CONFIGS))
+    print(table(results, a.scenes, a.frames, soc_lines))
     print()
     print(summary(results, a.scenes))
     path = os.path.join(a.build, "bench-error", "error-vs-cost.png")

@@ -7,7 +7,9 @@
 # A manifest build happens where all of these hold:
 #   - SCENE is given on the command line (the default scene without it is the full build),
 #   - FULL is not 1,
-#   - the scene has a manifest (the model scene, MODEL=..., has none: its capacity is MODEL's),
+#   - the scene has a manifest (every scene of the table has one; the model scene's also sets its
+#     capacities and the UART upload, so `make run SCENE=model MODEL=x` simplifies x to them,
+#     while `make run MODEL=x` without SCENE is the full build),
 #   - a goal is one of MANIFEST_GOALS: what runs or builds one scene (make test, fw-size, bench-*,
 #     board-fit, fw-all ... keep their own builds whatever SCENE says).
 # The decision is exported as LEAN_SCENE, so that the recursive makes (run -> run-built, soc-fw,
@@ -79,7 +81,7 @@ manifest_gflags = $(foreach p,$(subst -, ,$(1)),$(patsubst g%,-GENABLE_GOURAUD=%
 # sources (cosim/gpu_build.h): -GVTX_CAP=32 -> -DGPU_BUILD_VTX_CAP=32. Made from the same flags the
 # RTL is Verilated with, so the golden model beside a simulator has that simulator's sizes. (Here,
 # the first fragment the Makefile reads, so that every later one can use it at parse time.)
-GPU_BUILD_PARAMS := SPAN_W ENABLE_LINES ENABLE_ZBUF ENABLE_GOURAUD VTX_CAP TRI_CAP
+GPU_BUILD_PARAMS := SPAN_W ENABLE_LINES ENABLE_ZBUF ZBUF_BITS ENABLE_GOURAUD VTX_CAP TRI_CAP
 gpu_build_defs = $(patsubst -G%,-DGPU_BUILD_%,$(filter $(foreach p,$(GPU_BUILD_PARAMS),-G$(p)=%),$(1)))
 
 .PHONY: manifest-show manifest-check lean-report

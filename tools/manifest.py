@@ -23,10 +23,20 @@ required (a missing, unknown or out-of-range one is refused with the file and th
   [memory]   ram_kib     the SoC's RAM (SOC_RAM_KIB), a multiple of 8 (four byte lanes of 2 KiB
                          EBR) up to the RAM window; its truth is the link: bsp/soc/postlink.py
                          refuses an image, bss and stack that do not fit
+The model scene's line of the table takes its columns from its capacities (scenes/model/model.h),
+so its manifest has one table more, required there and refused elsewhere:
+  [model]    upload      models uploaded over the UART (FW_WITH_UPLOAD: the receiver and its
+                         staging buffer, one mesh file of the capacity below)
+             max_verts   the mesh's vertices (FW_MODEL_MAX_VERTS), 4..65536: the faces' 16-bit
+                         indices (render/mesh.h)
+             max_faces   the mesh's faces (FW_MODEL_MAX_FACES), 4..65536, likewise (normal index)
+           the scene's columns are model.h's MODEL_FRAME_* / MODEL_WIRE_* macros evaluated at
+           these capacities (read from model.h, not written twice)
 
 The fragment sets, with `override` (a manifest build is what the file says, whatever else the
 command line asks): FW_SCENE_SET=one, FW_LINE_EMULATION, FW_DEFS (the FW_WITH_* switches),
-SPAN_W, ZBUF, SOC_RAM_KIB, and MANIFEST_GPU_GFLAGS / MANIFEST_GPU_TAG (the GPU's parameters
+SPAN_W, ZBUF, SOC_RAM_KIB, for the model scene FW_MODEL_MAX_VERTS / FW_MODEL_MAX_FACES (and
+FW_WITH_UPLOAD in FW_DEFS), and MANIFEST_GPU_GFLAGS / MANIFEST_GPU_TAG (the GPU's parameters
 beyond SPAN_W and ENABLE_ZBUF, as Verilator -G flags and as a directory name; both empty when
 they are the defaults, so such a scene shares the default simulators).
 """
@@ -40,6 +50,7 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 SCENE_TABLE = os.path.join(ROOT, "firmware/scenes/scene_list.h")
 CONTRACT = os.path.join(ROOT, "contract/gpu_contract.toml")
 SOC_MAP = os.path.join(ROOT, "contract/soc_map.h")
+MODEL_H = os.path.join(ROOT, "firmware/scenes/model/model.h")
 
 SCHEMA = {
     "scene": str,
@@ -47,6 +58,9 @@ SCHEMA = {
     "gpu": {"span_w": int, "vtx_cap": int, "tri_cap": int},
     "memory": {"ram_kib": int},
 }
+# The [model] table, for the scenes whose table line takes its columns from model.h's macros.
+MODEL_SCHEMA = {"upload": bool, "max_verts": int, "max_faces": int}
+MODEL_CAP_MAX = 65536  # 16-bit vertex and normal indices in struct mesh_face (render/mesh.h)
 
 
 class ManifestError(Exception):
@@ -58,16 +72,40 @@ def manifest_path(scene):
 
 
 def scene_table():
-    """{name: {verts, prims, wverts, wprims}} of the table's numeric lines (model's are macros)."""
+    """{name: {verts, prims, wverts, wprims}} of the table's numeric lines, {name: None} for a line
+    whose columns are macros (the model scene's: model_columns computes them)."""
     rows = {}
     line = re.compile(r"^SCENE\((\w+),\s*(\d+),\s*(\d+),\s*(\d+),\s*(\d+),\s*(\d+),\s*(\d+)\)")
+    macro_line = re.compile(r"^SCENE\((\w+),\s*MODEL_STATE_COLUMN,")
     with open(SCENE_TABLE) as f:
         for text in f:
             m = line.match(text)
             if m:
                 v = [int(x) for x in m.groups()[1:]]
                 rows[m.group(1)] = dict(state=v[0], objects=v[1], verts=v[2], prims=v[3], wverts=v[4], wprims=v[5])
+            elif macro_line.match(text):
+                rows[macro_line.match(text).group(1)] = None
     return rows
+
+
+def model_columns(max_verts, max_faces):
+    """The model line's verts/prims/wverts/wprims at these capacities: model.h's MODEL_FRAME_* and
+    MODEL_WIRE_* definitions evaluated (C's unsigned integer arithmetic on small values: the same
+    numbers with // for /)."""
+    with open(MODEL_H) as f:
+        text = f.read()
+    cols = {}
+    for col, macro in (("verts", "MODEL_FRAME_VERTS"), ("prims", "MODEL_FRAME_PRIMS"),
+                       ("wverts", "MODEL_WIRE_VERTS"), ("wprims", "MODEL_WIRE_PRIMS")):
+        m = re.search(r"^#define %s (.+)$" % macro, text, re.M)
+        if not m:
+            raise ManifestError(f"{os.path.relpath(MODEL_H, ROOT)}: no #define {macro}")
+        expr = re.sub(r"\b(\d+)u\b", r"\1", m.group(1)).replace("/", "//")
+        expr = expr.replace("FW_MODEL_MAX_VERTS", str(max_verts)).replace("FW_MODEL_MAX_FACES", str(max_faces))
+        if not re.fullmatch(r"[\d\s+*/()-]+", expr):
+            raise ManifestError(f"{os.path.relpath(MODEL_H, ROOT)}: {macro} is not arithmetic on the capacities: {m.group(1)}")
+        cols[col] = eval(expr)  # digits and operators only, checked above
+    return cols
 
 
 def limits():
@@ -107,13 +145,20 @@ def load(path, scene=None):
         raise ManifestError(f"{path}: no such manifest (every scene has one: firmware/scenes/<scene>.manifest.toml)")
     except tomllib.TOMLDecodeError as e:
         raise ManifestError(f"{path}: not TOML: {e}")
-    check_shape(data, SCHEMA, "", path)
     table = scene_table()
-    name = data["scene"]
+    name = data.get("scene")
+    is_model = isinstance(name, str) and name in table and table[name] is None
+    check_shape(data, dict(SCHEMA, model=MODEL_SCHEMA) if is_model else SCHEMA, "", path)
     if scene is not None and name != scene:
         raise ManifestError(f"{path}: scene = '{name}', but the file is the manifest of '{scene}'")
     if name not in table:
-        raise ManifestError(f"{path}: scene '{name}' is not a numeric line of {os.path.relpath(SCENE_TABLE, ROOT)}")
+        raise ManifestError(f"{path}: scene '{name}' is not a line of {os.path.relpath(SCENE_TABLE, ROOT)}")
+    if is_model:
+        for key in ("max_verts", "max_faces"):
+            if not 4 <= data["model"][key] <= MODEL_CAP_MAX:
+                raise ManifestError(f"{path}: model.{key} = {data['model'][key]}: from 4 to {MODEL_CAP_MAX} "
+                                    "(16-bit indices, render/mesh.h)")
+        table = dict(table, **{name: model_columns(data["model"]["max_verts"], data["model"]["max_faces"])})
     feat, gpu, mem = data["features"], data["gpu"], data["memory"]
     vtx_max, tri_max, ram_max = limits()
     if gpu["span_w"] not in (1, 4, 8, 16):
@@ -147,6 +192,11 @@ def fragment(data, path):
     if gpu["tri_cap"] != tri_max:
         extra.append((f"t{gpu['tri_cap']}", f"-GTRI_CAP={gpu['tri_cap']}"))
     tag = "-".join(t for t, _ in extra)
+    model = []
+    if "model" in data:
+        defs += f" -DFW_WITH_UPLOAD={b(data['model']['upload'])}"
+        model = [f"override FW_MODEL_MAX_VERTS := {data['model']['max_verts']}",
+                 f"override FW_MODEL_MAX_FACES := {data['model']['max_faces']}"]
     return "\n".join([
         f"# Generated by tools/manifest.py from {os.path.relpath(path, ROOT)}: do not edit.",
         f"MANIFEST_SCENE       := {data['scene']}",
@@ -156,6 +206,7 @@ def fragment(data, path):
         f"override SPAN_W      := {gpu['span_w']}",
         f"override ZBUF        := {b(feat['depth'])}",
         f"override SOC_RAM_KIB := {mem['ram_kib']}",
+        *model,
         f"MANIFEST_LINES       := {b(feat['lines'])}",
         f"MANIFEST_VTX_CAP     := {gpu['vtx_cap']}",
         f"MANIFEST_TRI_CAP     := {gpu['tri_cap']}",

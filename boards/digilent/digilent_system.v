@@ -24,7 +24,8 @@ module digilent_system #(
     parameter RAM_INIT = "",                                       // the firmware image (soc_top)
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,        // the GPU's build options
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
-    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
+    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS
 ) (
     // clocks (the board top's MMCM)
     input  wire        clk_sys,
@@ -54,7 +55,8 @@ module digilent_system #(
         .PIX_CLK_HZ   (25000000),
         .SPAN_W       (SPAN_W),
         .ENABLE_LINES (ENABLE_LINES),
-        .ENABLE_ZBUF  (ENABLE_ZBUF)
+        .ENABLE_ZBUF  (ENABLE_ZBUF),
+        .ZBUF_BITS    (ZBUF_BITS)
     ) u_soc (
         .clk               (clk_sys),
         .clk_pix           (clk_pix),

@@ -16,7 +16,8 @@ module nexys_a7_top #(
     parameter RAM_INIT = "",                                       // the firmware's RAM image
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
-    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF
+    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
+    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS
 ) (
     input  wire        CLK100MHZ,      // E3, 100 MHz
     // USB-UART (FT2232HQ)
@@ -46,7 +47,8 @@ module nexys_a7_top #(
         .RAM_INIT     (RAM_INIT),
         .SPAN_W       (SPAN_W),
         .ENABLE_LINES (ENABLE_LINES),
-        .ENABLE_ZBUF  (ENABLE_ZBUF)
+        .ENABLE_ZBUF  (ENABLE_ZBUF),
+        .ZBUF_BITS    (ZBUF_BITS)
     ) u_system (
         .clk_sys     (clk_sys),
         .clk_pix     (clk_pix),

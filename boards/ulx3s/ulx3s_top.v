@@ -16,6 +16,7 @@ module ulx3s_top #(
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
+    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,  // depth bits kept (gpu_core)
     parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,  // buffer capacities (a scene's manifest)
     parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP
 ) (
@@ -50,6 +51,7 @@ module ulx3s_top #(
         .SPAN_W       (SPAN_W),
         .ENABLE_LINES (ENABLE_LINES),
         .ENABLE_ZBUF  (ENABLE_ZBUF),
+        .ZBUF_BITS    (ZBUF_BITS),
         .VTX_CAP      (VTX_CAP),
         .TRI_CAP      (TRI_CAP)
     ) u_system (

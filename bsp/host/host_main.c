@@ -2,7 +2,8 @@
  * host_main.c — command line of the host build: the firmware's frame loop (app_run) on Linux,
  * rendering through the golden model.
  *
- *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--gouraud] [--span-w N]
+ *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--zbuf-bits N] [--gouraud]
+ *           [--span-w N]
  *           [--model FILE] [--dump-scene DIR]
  *
  *   --frames DIR      write each swapped frame as DIR/NNNN.png (as gpusim cosim does)
@@ -10,6 +11,7 @@
  *                     (as gpusim cosim; use the shell's $'...' for control bytes)
  *   --no-lines        model a GPU built without line primitives (CAPS_LINES = 0)
  *   --zbuf            model a GPU built with the depth buffer (CAPS_ZBUF = 1)
+ *   --zbuf-bits N     the depth bits its buffer keeps (ZBUF_BITS, CAPS_ZBUF_BITS: 1 .. 16; default 16)
  *   --gouraud         model a GPU built with Gouraud triangles (CAPS_GOURAUD = 1)
  *   --span-w N        SPAN_W the model reports (1, 4, 8, 16; default 8)
  *   --dump-scene DIR  write each frame's scene after its update as DIR/NNNN.scene: world-space
@@ -50,7 +52,7 @@ static int host_load_model(const char *path)
 static int host_usage(void)
 {
     fprintf(stderr, "usage: fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] "
-                    "[--gouraud] [--span-w N] [--model FILE] [--dump-scene DIR]\n");
+                    "[--zbuf-bits N] [--gouraud] [--span-w N] [--model FILE] [--dump-scene DIR]\n");
     return 2;
 }
 
@@ -62,6 +64,7 @@ int main(int argc, char **argv)
     cfg.span_w = 8;
     cfg.lines = true;
     cfg.zbuf = false;
+    cfg.zbuf_bits = 16;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const int has_value = i + 1 < argc;
@@ -91,6 +94,15 @@ int main(int argc, char **argv)
             cfg.lines = false;
         } else if (strcmp(a, "--zbuf") == 0) {
             cfg.zbuf = true;
+        } else if (strcmp(a, "--zbuf-bits") == 0 && has_value) {
+            char *end;
+            const unsigned long bits = strtoul(argv[++i], &end, 10);
+
+            if (*argv[i] == '\0' || *end != '\0' || bits < 1 || bits > 16) {
+                fprintf(stderr, "fw-host: --zbuf-bits wants 1 .. 16, got '%s'\n", argv[i]);
+                return 2;
+            }
+            cfg.zbuf_bits = (unsigned)bits;
         } else if (strcmp(a, "--gouraud") == 0) {
             cfg.gouraud = true;
         } else if (strcmp(a, "--dump-scene") == 0 && has_value) {

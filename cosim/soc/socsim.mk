@@ -19,7 +19,10 @@
 
 include bsp/soc/soc_ram.mk
 
-SOCSIM_DIR   := $(BUILD)/socsim-$(SOC_RAM_KIB)k$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
+# ZBUF=1 (outside a manifest build, whose tools/manifest.mk sets both itself): the GPU with its depth
+# buffer, in a folder of its own (-z), as bench-error's depth-tested configurations run it.
+SOCSIM_GPU_GFLAGS ?= $(if $(filter 1,$(ZBUF)), -GENABLE_ZBUF=1)
+SOCSIM_DIR   := $(BUILD)/socsim-$(SOC_RAM_KIB)k$(if $(filter 1,$(ZBUF)),-z)$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
 SOCSIM       := $(SOCSIM_DIR)/socsim
 SOCSIM_SRC   := $(filter-out cosim/soc/tmds_decoder.cpp,$(wildcard cosim/soc/*.cpp)) cosim/model_check.cpp \
                 cosim/uart_terminal.cpp cosim/uart_pty.cpp cosim/sdl_window.cpp

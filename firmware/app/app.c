@@ -581,7 +581,8 @@ int app_run(void)
     app->anaglyph = false;
     app->depth_test = FW_WITH_DEPTH && FW_DEPTH_TEST && gpu_caps_zbuf(app->gpu.info.caps);
     if (app->depth_test) {
-        printf("depth buffer on (FW_DEPTH_TEST)\n");
+        printf("depth buffer on (FW_DEPTH_TEST, %u-bit depths)\n",
+               (unsigned)gpu_caps_zbuf_bits(app->gpu.info.caps));
     }
     app->lost_in_a_row = 0;
     app_start_scene(app, desc);

@@ -6,7 +6,8 @@
  *
  * The path is a function of the view number, the seed FW_CAMERA_PATH_SEED and the scene's default
  * camera (target T, distance D: the scene's own constants), computed in integers only (xorshift32,
- * the firmware's sine table fx_sin, Q16.16 products), so that the fixed and the float backend, on
+ * a sine of its own, app/cam_path_sin.h, Q16.16 products), so that the fixed and the float backend,
+ * and every size of the firmware's sine table (FW_SIN_TABLE_BITS, an accuracy knob), on
  * the host and on rv32, set bit-identical cameras: eye coordinates are rounded to 1/256 unit, exact
  * in q16_16 and in a float for |x| < 65536. Views cycle through four kinds (k mod 4):
  *   0 orbit       around T at 0.6 .. 1.2 D, yaw anywhere, pitch -55 .. +35 degrees;
@@ -33,6 +34,7 @@
 
 #include <stdint.h>
 
+#include "app/cam_path_sin.h"
 #include "camera/camera.h"
 #include "math/fixed.h"
 #include "math/real.h"
@@ -116,10 +118,10 @@ static inline void cam_path_apply(struct scene *s, unsigned frame)
         break;
     }
     {
-        const q16_16 sy = fx_sin((fx_angle)yaw);
-        const q16_16 cy = fx_cos((fx_angle)yaw);
-        const q16_16 sp = fx_sin((fx_angle)(uint32_t)pitch);
-        const q16_16 cp = fx_cos((fx_angle)(uint32_t)pitch);
+        const q16_16 sy = cam_path_sin((uint32_t)yaw);
+        const q16_16 cy = cam_path_cos((uint32_t)yaw);
+        const q16_16 sp = cam_path_sin((uint32_t)pitch);
+        const q16_16 cp = cam_path_cos((uint32_t)pitch);
         const int64_t fwd[3] = {((int64_t)sy * cp) >> 16, sp, ((int64_t)cy * cp) >> 16};
         int32_t eye[3];
 

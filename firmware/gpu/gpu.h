@@ -60,6 +60,12 @@ static inline bool gpu_caps_zbuf(uint32_t caps)
     return (caps & GPU_CAPS_ZBUF_MASK) != 0u;
 }
 
+/* The depth bits the GPU's depth buffer keeps (contract "Depth": 1 .. 16; 0 without one). */
+static inline uint32_t gpu_caps_zbuf_bits(uint32_t caps)
+{
+    return (caps & GPU_CAPS_ZBUF_BITS_MASK) >> GPU_CAPS_ZBUF_BITS_LSB;
+}
+
 static inline bool gpu_caps_gouraud(uint32_t caps)
 {
     return (caps & GPU_CAPS_GOURAUD_MASK) != 0u;

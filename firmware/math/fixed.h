@@ -233,24 +233,46 @@ static inline uint32_t fx_recip_mantissa(uint32_t m)
 /* floor(sqrt(v)), bit by bit (32 iterations). Build-time and per-frame use only. */
 uint32_t fx_isqrt64(uint64_t v);
 
-/* Sine and cosine of a turn fraction, from a 256-entry-per-turn table with linear
- * interpolation. Result in [-1.0, 1.0] as q16_16. Max error against the exact value is below
- * 1e-4 (interpolation (2*pi/256)^2/8 = 7.5e-5, plus table and interpolation rounding 2.3e-5);
- * tests/firmware checks every one of the 65536 angles. Never overflows.
+/* Sine and cosine of a turn fraction, from a table of N = FX_SIN_ENTRIES entries per turn with
+ * linear interpolation. Result in [-1.0, 1.0] as q16_16. Never overflows.
  * Inline: a handful of instructions, called four times per object rotation per frame.
- * The top 8 bits of the angle pick the table segment, the low 8 bits interpolate inside it.
- * Range: neighbouring entries differ by at most 1608 (= 65536 * 2*pi/256), times a fraction
- * < 256: |delta * frac| < 2^19, no overflow. */
-extern const q16_16 fx_sin_table[257];
+ * The top FW_SIN_TABLE_BITS bits of the angle pick the table segment, the low
+ * FX_SIN_FRAC_BITS = 16 - FW_SIN_TABLE_BITS bits interpolate inside it.
+ *
+ * FW_SIN_TABLE_BITS, an accuracy knob of `make bench-error` (default 8: 256 entries, 1 KiB, the
+ * build every other one is): 6 (64 entries, 260 bytes), 8 or 10 (1024 entries, 4 KiB). The cost
+ * is the same handful of instructions at every size; the table's memory is what changes.
+ * Error against the exact value, with h = 2*pi/N the segment: linear interpolation of sin is off
+ * by at most h^2/8 (|sin''| <= 1), the entries by at most 2^-17 each (rounded, so their
+ * interpolation too) and the final rounding by 2^-17: |error| <= h^2/8 + 2^-16 = FX_SIN_ERR_BOUND:
+ *   N = 64: 1.22e-3   N = 256: 9.06e-5 (below 1e-4)   N = 1024: 2.00e-5.
+ * tests/firmware checks every one of the 65536 angles against it, and every entry against libm.
+ * Range: neighbouring entries differ by at most 65536 * 2*pi/N (6434 at N = 64), times a fraction
+ * below 2^(16 - FW_SIN_TABLE_BITS): |delta * frac| < 65536 * 2*pi * 2^16 / N^2 <= 2^23, no
+ * overflow at any size.
+ * app/cam_path.h has a sine of its own (the 256-entry one, computed), so that a bench-error
+ * camera path is the same whatever this knob says. */
+#ifndef FW_SIN_TABLE_BITS
+#define FW_SIN_TABLE_BITS 8
+#endif
+#if FW_SIN_TABLE_BITS != 6 && FW_SIN_TABLE_BITS != 8 && FW_SIN_TABLE_BITS != 10
+#error "FW_SIN_TABLE_BITS must be 6, 8 or 10"
+#endif
+#define FX_SIN_ENTRIES   (1u << FW_SIN_TABLE_BITS)
+#define FX_SIN_FRAC_BITS (16 - FW_SIN_TABLE_BITS)
+/* h^2/8 + 2^-16 with h = 2 pi / N, i.e. pi^2 / (2 N^2) + 2^-16 (for tests: a double). */
+#define FX_SIN_ERR_BOUND (0.5 * 3.14159265358979 * 3.14159265358979 / (double)FX_SIN_ENTRIES / \
+                          (double)FX_SIN_ENTRIES + 1.0 / 65536.0)
+extern const q16_16 fx_sin_table[FX_SIN_ENTRIES + 1u];
 
 static inline q16_16 fx_sin(fx_angle a)
 {
-    const uint32_t i = (uint32_t)a >> 8;
-    const int32_t frac = (int32_t)(a & 0xFFu);
+    const uint32_t i = (uint32_t)a >> FX_SIN_FRAC_BITS;
+    const int32_t frac = (int32_t)(a & ((1u << FX_SIN_FRAC_BITS) - 1u));
     const q16_16 s0 = fx_sin_table[i];
     const q16_16 s1 = fx_sin_table[i + 1u];
 
-    return s0 + (((s1 - s0) * frac + 128) >> 8);
+    return s0 + (((s1 - s0) * frac + (1 << (FX_SIN_FRAC_BITS - 1))) >> FX_SIN_FRAC_BITS);
 }
 
 static inline q16_16 fx_cos(fx_angle a)

@@ -47,6 +47,9 @@ void unit_srand(uint32_t seed);
     X(test_fx_round_to_int)           \
     X(test_fx_sin_cos_exact_points)   \
     X(test_fx_sin_cos_vs_libm)        \
+    X(test_fx_sin_table_entries)      \
+    X(test_cam_path_sin_entries)      \
+    X(test_cam_path_sin_is_fx_sin)    \
     X(test_fx_angle_wrap)             \
     X(test_fx_recip_mantissa)         \
     X(test_fx_isqrt64)                \

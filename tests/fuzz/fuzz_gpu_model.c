@@ -191,13 +191,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     cfg.span_w = spans[opt % 6u];
     cfg.lines = (opt & 0x08u) != 0u;
     cfg.zbuf = (opt & 0x10u) != 0u;
-    cfg.gouraud = (opt & 0x40u) != 0u;  /* (bits 6 and 7 together also ask for the scan-out) */
+    cfg.zbuf_bits = (const unsigned[]){16u, 8u, 12u, 0u}[opt >> 6];  /* 0: replaced by 16 */
+    cfg.gouraud = (opt & 0x04u) != 0u;
     gpu_model_reset_config(m, (opt & 0x20u) ? &cfg : NULL);
     if ((opt & 0x20u) == 0u) {
         REQUIRE(m->cfg.span_w == 8u && m->cfg.lines && !m->cfg.zbuf, "default options");
     } else {
         REQUIRE(m->cfg.span_w == ((cfg.span_w == 3u || cfg.span_w == 0u) ? 8u : cfg.span_w),
                 "span width %u", m->cfg.span_w);
+        REQUIRE(m->cfg.zbuf_bits == (cfg.zbuf_bits == 0u ? 16u : cfg.zbuf_bits), "zbuf bits %u",
+                m->cfg.zbuf_bits);
     }
     REQUIRE(((gpu_model_caps(m) & GPU_CAPS_SPAN_W_MASK) >> GPU_CAPS_SPAN_W_LSB) == m->cfg.span_w,
             "CAPS_SPAN_W");

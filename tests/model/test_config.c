@@ -25,12 +25,13 @@ static uint32_t caps_of(unsigned span_w, bool lines, bool zbuf)
 
 static void test_caps(void)
 {
-    /* CAPS = LINES [0] | ZBUF [1] | SPAN_W [15:8]. */
+    /* CAPS = LINES [0] | ZBUF [1] | SPAN_W [15:8] | ZBUF_BITS [20:16] (16,
+     * the default, with the depth buffer; 0 without). */
     CHECK_EQ(caps_of(1, false, false), 0x0100u);
     CHECK_EQ(caps_of(4, true, false), 0x0401u);
     CHECK_EQ(caps_of(8, true, false), 0x0801u); /* the RTL defaults */
-    CHECK_EQ(caps_of(8, false, true), 0x0802u);
-    CHECK_EQ(caps_of(16, true, true), 0x1003u);
+    CHECK_EQ(caps_of(8, false, true), 0x100802u);
+    CHECK_EQ(caps_of(16, true, true), 0x101003u);
     CHECK_EQ(caps_of(16, false, false), 0x1000u);
     /* Field by field through the generated masks. */
     uint32_t c = caps_of(4, false, true);
@@ -41,7 +42,7 @@ static void test_caps(void)
     /* An unsupported span width falls back to the default 8. */
     CHECK_EQ(caps_of(3, false, false), 0x0800u);
     CHECK_EQ(caps_of(0, true, false), 0x0801u);
-    CHECK_EQ(caps_of(32, false, true), 0x0802u);
+    CHECK_EQ(caps_of(32, false, true), 0x100802u);
     CHECK_EQ(caps_of(256 + 4, false, false), 0x0800u);
 
     gpu_model *m = test_new_model_cfg(16, false, true);
@@ -51,9 +52,9 @@ static void test_caps(void)
     /* NULL: the defaults; gpu_model_reset: the defaults again. */
     gpu_model_reset_config(m, NULL);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0801u);
-    gpu_model_config cfg = { 1, false, true, 0, 0, false };
+    gpu_model_config cfg = { 1, false, true, 0, 0, 12, false };
     gpu_model_reset_config(m, &cfg);
-    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0102u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0C0102u);
     gpu_model_reset(m);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0801u);
     CHECK_EQ(m->cfg.span_w, 8);
@@ -65,6 +66,7 @@ static void test_caps(void)
     cfg.span_w = 4;
     cfg.lines = true;
     cfg.zbuf = true;
+    cfg.zbuf_bits = 16;
     gpu_model_reset_config(m, &cfg);
     test_set_vtxz(m, 0, 0, 0, 7);
     test_set_vtxz(m, 1, 800, 0, 7);
@@ -88,7 +90,7 @@ static void test_caps(void)
     CHECK_EQ(gpu_model_read(m, GPU_REG_DONE_SEQ), 0);
     CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_PIXELS), 0);
     CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_SPANS_WRITTEN), 0);
-    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0403u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x100403u);
     free(m);
 }
 
@@ -340,7 +342,7 @@ static void test_capacities(void)
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), GPU_TRI_CAP);
 
-    gpu_model_config cfg = { 8, true, false, 32, 16, false };
+    gpu_model_config cfg = { 8, true, false, 32, 16, 0, false };
     CHECK(gpu_model_config_error(&cfg) == NULL);
     gpu_model_reset_config(m, &cfg);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), 32);
@@ -382,12 +384,12 @@ static void test_capacities(void)
 
     /* 0: the contract's; above the contract's limit: refused by
      * gpu_model_config_error, replaced by the limit by reset_config. */
-    gpu_model_config zero = { 8, true, false, 0, 0, false };
+    gpu_model_config zero = { 8, true, false, 0, 0, 0, false };
     CHECK(gpu_model_config_error(&zero) == NULL);
     gpu_model_reset_config(m, &zero);
     CHECK_EQ(m->cfg.vtx_cap, GPU_VTX_CAP);
     CHECK_EQ(m->cfg.tri_cap, GPU_TRI_CAP);
-    gpu_model_config big = { 8, true, false, GPU_VTX_CAP + 1u, 16, false };
+    gpu_model_config big = { 8, true, false, GPU_VTX_CAP + 1u, 16, 0, false };
     CHECK(gpu_model_config_error(&big) != NULL);
     gpu_model_reset_config(m, &big);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);

@@ -51,6 +51,17 @@ static void set_rect(gpu_model *m, uint32_t vb, uint32_t prim, int x0, int y0,
     test_set_prim(m, prim + 1, vb, vb + 2, vb + 3, color, GPU_PRIM_KIND_TRI);
 }
 
+/* A model with the depth buffer keeping `bits` bits (SPAN_W 8, lines). */
+static gpu_model *alloc_depth_model(unsigned bits)
+{
+    gpu_model *m = test_new_model_cfg(8, true, true);
+    gpu_model_config cfg = m->cfg;
+
+    cfg.zbuf_bits = bits;
+    gpu_model_reset_config(m, &cfg);
+    return m;
+}
+
 /* Run primitives 0..n-1 over vertices 0..nv-1. */
 static void run(gpu_model *m, uint32_t ctrl, uint32_t nv, uint32_t n)
 {
@@ -542,10 +553,60 @@ static void test_lines_and_absent(void)
     free(m);
 }
 
+/* ------------------------------------------------ fewer bits kept */
+
+/* ZBUF_BITS = 8 (contract "Depth": zb = z >> 8): the buffer holds 0 .. 255,
+ * ZCLEAR stores 255, and depths with the same top byte are not ordered. */
+static void test_zbuf_bits(void)
+{
+    gpu_model *m = alloc_depth_model(8);
+
+    CHECK_EQ(m->cfg.zbuf_bits, 8);
+    CHECK_EQ((gpu_model_caps(m) & GPU_CAPS_ZBUF_BITS_MASK) >> GPU_CAPS_ZBUF_BITS_LSB, 8);
+    test_batch(m, CL | ZC, 0, 0, 0, 0, 0, g_tag++);
+    CHECK_EQ(z_not(m, 255), 0);
+
+    /* 0x1234 stored as 0x12; 0x12FF and 0x1200 (same top byte) are not
+     * nearer; 0x11FF is. */
+    set_rect(m, 0, 0, 0, 0, 10, 10, 0x1234, 1);
+    run(m, ZT, 4, 2);
+    CHECK_EQ(perf_pixels(m), 100);
+    CHECK_EQ(test_z(m, 3, 3), 0x12);
+    set_rect(m, 0, 0, 0, 0, 10, 10, 0x1200, 2);
+    run(m, ZT, 4, 2);
+    CHECK_EQ(perf_pixels(m), 0);
+    set_rect(m, 0, 0, 0, 0, 10, 10, 0x11FF, 3);
+    run(m, ZT, 4, 2);
+    CHECK_EQ(perf_pixels(m), 100);
+    CHECK_EQ(test_z(m, 3, 3), 0x11);
+    CHECK_EQ(px_eq(m, 3), 100);
+
+    /* 0xFF00 .. 0xFFFF keep 255, the cleared value: never drawn. */
+    test_batch(m, ZC, 0, 0, 0, 0, 0, g_tag++);
+    set_rect(m, 0, 0, 0, 0, 10, 10, 0xFF00, 4);
+    run(m, ZT, 4, 2);
+    CHECK_EQ(perf_pixels(m), 0);
+    set_rect(m, 0, 0, 0, 0, 10, 10, 0xFEFF, 4);
+    run(m, ZT, 4, 2);
+    CHECK_EQ(perf_pixels(m), 100);
+    free(m);
+
+    /* Out-of-range settings are replaced by 16 (as an unsupported SPAN_W
+     * is by 8), and 16 reports 16 in CAPS. */
+    m = alloc_depth_model(0);
+    CHECK_EQ(m->cfg.zbuf_bits, 16);
+    free(m);
+    m = alloc_depth_model(17);
+    CHECK_EQ(m->cfg.zbuf_bits, 16);
+    CHECK_EQ((gpu_model_caps(m) & GPU_CAPS_ZBUF_BITS_MASK) >> GPU_CAPS_ZBUF_BITS_LSB, 16);
+    free(m);
+}
+
 void test_depth(void)
 {
     test_plane();
     test_saturation();
     test_ztest_rules();
     test_lines_and_absent();
+    test_zbuf_bits();
 }

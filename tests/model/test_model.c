@@ -62,7 +62,7 @@ gpu_model *test_new_model(void)
 gpu_model *test_new_model_cfg(unsigned span_w, bool lines, bool zbuf)
 {
     gpu_model *m = alloc_model();
-    gpu_model_config cfg = { span_w, lines, zbuf, 0, 0, false }; /* capacities: the contract's */
+    gpu_model_config cfg = { span_w, lines, zbuf, 0, 0, GPU_MODEL_DEFAULT_ZBUF_BITS, false }; /* capacities: the contract's */
     gpu_model_reset_config(m, &cfg);
     return m;
 }
