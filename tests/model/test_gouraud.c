@@ -104,7 +104,7 @@ static uint32_t ramp_at(int x, int y)
 
 void test_gouraud(void)
 {
-    gpu_model_config cfg = { 8, true, false, 0, 0, true };
+    gpu_model_config cfg = { 8, true, false, 0, 0, 0, true };  /* zbuf_bits 0: the default */
     gpu_model *m = malloc(sizeof *m);
     if (m == NULL) {
         CHECK(false);
