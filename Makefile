@@ -15,10 +15,19 @@ include tools/manifest.mk
 
 SPAN_W      ?= 8
 ZBUF        ?= 0
-GPUSIM      := $(BUILD)/sim-w$(SPAN_W)/gpusim
+# GOURAUD=1: run on a GPU built with Gouraud triangles (ENABLE_GOURAUD, with the depth buffer):
+# sim-g-w<SPAN_W> and sim-fast-g-w<SPAN_W>; the scenes with vertex normals are then shaded.
+GOURAUD     ?= 0
+GPUSIM_G    := $(if $(filter 1,$(GOURAUD)),g-)
+GPUSIM      := $(BUILD)/sim-$(GPUSIM_G)w$(SPAN_W)/gpusim
 BENCH_SIMS  := $(foreach w,1 4 8 16,$(BUILD)/sim-w$(w)/gpusim)
 ZBUF_SIM    := $(BUILD)/sim-z-w8/gpusim
 ZBUF_SIMS   := $(foreach w,1 4 8 16,$(BUILD)/sim-z-w$(w)/gpusim)
+# Gouraud triangles (ENABLE_GOURAUD) with the depth buffer: sim-g-w<SPAN_W> (bench-gpu's is w8) and
+# on the fast display path sim-fast-g-w<SPAN_W> (make test's and random-long's: the rasterizer is
+# their subject, not the scan-out).
+GOURAUD_SIM := $(BUILD)/sim-g-w8/gpusim
+GOURAUD_SIM_FAST := $(BUILD)/sim-fast-g-w8/gpusim
 # The depth buffer keeping fewer bits (ZBUF_BITS, contract "Depth"), SPAN_W 8: bench-error's depth-bit
 # rows; the 8-bit one is also tested against the model (suite rtl-vs-model-zbuf8).
 ZBITS_SIMS  := $(foreach b,12 8,$(BUILD)/sim-zb$(b)-w8/gpusim)
@@ -26,7 +35,7 @@ ZBITS_SIMS  := $(foreach b,12 8,$(BUILD)/sim-zb$(b)-w8/gpusim)
 # rtl-vs-model-smallcap checks it against the golden model built with the same capacities.
 SMALLCAP_SIM := $(BUILD)/sim-fast-cfg-w8-v32-t16/gpusim
 GPUSIM_W8   := $(BUILD)/sim-w8/gpusim
-GPUSIM_FAST := $(BUILD)/sim-fast-w$(SPAN_W)/gpusim
+GPUSIM_FAST := $(BUILD)/sim-fast-$(GPUSIM_G)w$(SPAN_W)/gpusim
 PNG_DIFF    := $(BUILD)/tools/png_diff
 # Defined up here: bench-error-path-run's prerequisites are expanded where that rule is read.
 EXACT_REF   := $(BUILD)/tools/exact_ref
@@ -105,7 +114,7 @@ BUILD_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 TEST_ENV = GPUSIM=$(GPUSIM) GPUSIM_FAST=$(GPUSIM_FAST) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUITE='$(SUITE)' \
            $(if $(TEST_JOBS),TEST_JOBS=$(TEST_JOBS))
 # The simulators first: the longest builds, started early so that the short ones fill the tail.
-TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) $(GPUSIM_FAST) $(SMALLCAP_SIM) $(BUILD)/sim-zb8-w8/gpusim fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
+TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM_FAST) $(GPUSIM_FAST) $(SMALLCAP_SIM) $(BUILD)/sim-zb8-w8/gpusim fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
              fw-test-deps $(PNG_DIFF) $(MESHCONV) $(UPLOAD_PEER)
 test: setup
 	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) VERILATOR_JOBS=1 TEST_BUILD_ONLY=1 test-quick
@@ -135,9 +144,12 @@ lint:
 	@echo "lint: $(words $(RTL_V)) files of $(RTL_FILES) clean under -Wall"
 
 # ---- longer randomized RTL-vs-model run ----
-random-long: $(GPUSIM)
+random-long: $(GPUSIM) $(GOURAUD_SIM_FAST)
 	for seed in 101 102 103 104 105 106 107 108 109 110; do \
 	  $(GPUSIM) random --seed $$seed --batches 500 --tris 500 --swap-percent 10 --min-prims 100000 || exit 1; done
+	@# Gouraud triangles (40 % of the primitives there, random intensities, extremes, slow gradients).
+	for seed in 111 112 113; do \
+	  $(GOURAUD_SIM_FAST) random --seed $$seed --batches 500 --tris 500 --swap-percent 10 --min-prims 100000 || exit 1; done
 
 # ---- the GPU without firmware: a primitive list through RTL and model ----
 raster: $(GPUSIM)
@@ -145,7 +157,7 @@ raster: $(GPUSIM)
 	$(GPUSIM) raster --in $(IN) --out $(OUT)
 
 # ---- GPU performance, counted in simulated cycles, for each span width ----
-bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(FW_ELF)
+bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM) $(FW_ELF)
 	@rm -rf $(BUILD)/bench-gpu/scene-lists && mkdir -p $(BUILD)/bench-gpu/scene-lists
 	@$(GPUSIM) cosim --fw $(FW_ELF) --frames $(BUILD)/bench-gpu/scene-frames --no-model-check \
 	  --dump-lists $(BUILD)/bench-gpu/scene-lists >/dev/null
@@ -212,7 +224,7 @@ $(PNG_DIFF): tools/png_diff.c
 # ---- synthesis: yosys for 7-series (resource counts) and iCE40 place-and-route (fmax) ----
 synth:
 	@bash tools/setup.sh packages-synth.txt
-	@ZBUF=$(ZBUF) bash synth/synth.sh $(BUILD)
+	@ZBUF=$(ZBUF) GOURAUD=$(GOURAUD) bash synth/synth.sh $(BUILD)
 
 # ---- host-side simulator: Verilated GPU + co-simulation bridge + golden model ----
 HOST_OBJ := $(patsubst %.c,$(BUILD)/host/%.o,$(COSIM_C_SRC))
@@ -272,12 +284,18 @@ $(BUILD)/sim-w%/gpusim: $(SIM_DEPS)
 $(BUILD)/sim-z-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$* -GENABLE_ZBUF=1)
 
+$(BUILD)/sim-g-w%/gpusim: $(SIM_DEPS)
+	$(call verilate,$@,-GSPAN_W=$* -GENABLE_ZBUF=1 -GENABLE_GOURAUD=1)
+
 # sim-zb<BITS>-w8: the depth buffer keeping BITS bits (ZBUF_BITS), SPAN_W 8.
 $(BUILD)/sim-zb%-w8/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=8 -GENABLE_ZBUF=1 -GZBUF_BITS=$*)
 
 $(BUILD)/sim-fast-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$*,gpu_core,-DGPUSIM_FAST_DISPLAY=1)
+
+$(BUILD)/sim-fast-g-w%/gpusim: $(SIM_DEPS)
+	$(call verilate,$@,-GSPAN_W=$* -GENABLE_ZBUF=1 -GENABLE_GOURAUD=1,gpu_core,-DGPUSIM_FAST_DISPLAY=1)
 
 # A scene manifest's GPU (tools/manifest.mk): sim-cfg-<tag>, sim-fast-cfg-<tag>, e.g. w8-v32-t32.
 $(BUILD)/sim-cfg-%/gpusim: $(SIM_DEPS)

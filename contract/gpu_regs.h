@@ -20,6 +20,7 @@
 #define GPU_DEFAULT_ENABLE_ZBUF      0u  /* 16-bit depth buffer (CAPS_ZBUF); without it CTRL_ZTEST and CTRL_ZCLEAR have no effect. */
 #define GPU_DEFAULT_ENABLE_WMASK     1u  /* Framebuffer write mask (CAPS_WMASK): each pixel's two 4-bit planes have their own write enables, FB_WRITE_MASK chooses the planes a batch writes; without it every batch writes all 8 bits and FB_WRITE_MASK reads 3. */
 #define GPU_DEFAULT_ZBUF_BITS        16u  /* Depth bits the depth buffer keeps, 1 to 16 (CAPS_ZBUF_BITS): the top ZBUF_BITS bits of each depth are stored and compared; fewer bits, less block RAM. */
+#define GPU_DEFAULT_ENABLE_GOURAUD   0u  /* Gouraud triangles (PRIM_KIND_TRI_GOURAUD: VTX_I interpolated, palette ramp, CTRL_DITHER; CAPS_GOURAUD); without them such a triangle sets ERR_KIND. */
 
 /* Bus windows: byte offset and size from the GPU base. */
 #define GPU_WIN_REGS                 0x00000u  /* Registers, 32-bit words. */
@@ -92,6 +93,8 @@
 #define GPU_CTRL_ZTEST_MASK          0x00000004u
 #define GPU_CTRL_ZCLEAR_LSB          3u  /* in CTRL: Fill the depth buffer with 0xFFFF before drawing (needs CAPS_ZBUF; ignored without). */
 #define GPU_CTRL_ZCLEAR_MASK         0x00000008u
+#define GPU_CTRL_DITHER_LSB          4u  /* in CTRL: Gouraud triangles pick between adjacent ramp levels by the 4x4 ordered-dither threshold; without, the level is rounded down (stored with any build; acts only with CAPS_GOURAUD). */
+#define GPU_CTRL_DITHER_MASK         0x00000010u
 #define GPU_STATUS_BUSY_LSB          0u  /* in STATUS: A batch is running (drawing or waiting for vsync). */
 #define GPU_STATUS_BUSY_MASK         0x00000001u
 #define GPU_STATUS_FRONT_LSB         1u  /* in STATUS: Which framebuffer (0/1) is scanned out. */
@@ -102,6 +105,8 @@
 #define GPU_CAPS_ZBUF_MASK           0x00000002u
 #define GPU_CAPS_WMASK_LSB           2u  /* in CAPS: The framebuffer write mask (FB_WRITE_MASK) is built in. */
 #define GPU_CAPS_WMASK_MASK          0x00000004u
+#define GPU_CAPS_GOURAUD_LSB         4u  /* in CAPS: Gouraud triangles (PRIM_KIND_TRI_GOURAUD) are supported. */
+#define GPU_CAPS_GOURAUD_MASK        0x00000010u
 #define GPU_CAPS_SPAN_W_LSB          8u  /* in CAPS: Pixels the rasterizer evaluates per clock. */
 #define GPU_CAPS_SPAN_W_MASK         0x0000FF00u
 #define GPU_WMASK_LO_LSB             0u  /* in FB_WRITE_MASK: Write the low plane, bits [3:0] of each pixel's palette index (the anaglyph's right eye). */
@@ -129,6 +134,9 @@
 #define GPU_VTX_Z_WORD               1u  /* unsigned: Depth, unsigned (0 = near); reserved for the optional depth buffer. */
 #define GPU_VTX_Z_LSB                0u
 #define GPU_VTX_Z_MASK               0xFFFFu  /* applied after the shift */
+#define GPU_VTX_I_WORD               1u  /* unsigned: Intensity of a Gouraud triangle's vertex, unsigned Q4.12 shade level (0 .. 15.9998); read only by PRIM_KIND_TRI_GOURAUD. */
+#define GPU_VTX_I_LSB                16u
+#define GPU_VTX_I_MASK               0xFFFFu  /* applied after the shift */
 #define GPU_PRIM_I0_WORD             0u  /* unsigned: First vertex index (relative to VTX_BASE). */
 #define GPU_PRIM_I0_LSB              0u
 #define GPU_PRIM_I0_MASK             0xFFFFu  /* applied after the shift */
@@ -147,6 +155,7 @@
 
 #define GPU_PRIM_KIND_TRI            0u
 #define GPU_PRIM_KIND_LINE           1u
+#define GPU_PRIM_KIND_TRI_GOURAUD    2u
 #define GPU_VTX_WORDS                2u
 #define GPU_PRIM_WORDS               2u
 

@@ -97,6 +97,14 @@ void BatchBridge::dump_list()
         } else if (kind == GPU_PRIM_KIND_TRI && i2 < vcount) {
             vertex(i2, op, 2);
             op.kind = depth ? ListOp::ZTri : ListOp::Tri;
+        } else if (kind == GPU_PRIM_KIND_TRI_GOURAUD && i2 < vcount) {
+            // A Gouraud triangle keeps its intensities (the list format has no depth-tested one).
+            vertex(i2, op, 2);
+            op.kind = ListOp::GTri;
+            for (uint32_t k = 0; k < 3; k++) {
+                const uint32_t vi = k == 0 ? i0 : (k == 1 ? i1 : i2);
+                op.z[k] = (shadow_[(GPU_WIN_VTX + 8 * (vbase + vi) + 4) / 4] >> GPU_VTX_I_LSB) & GPU_VTX_I_MASK;
+            }
         } else {
             continue;
         }

@@ -31,6 +31,9 @@ extern "C" {
 #ifndef GPU_BUILD_ZBUF_BITS
 #define GPU_BUILD_ZBUF_BITS GPU_DEFAULT_ZBUF_BITS
 #endif
+#ifndef GPU_BUILD_ENABLE_GOURAUD
+#define GPU_BUILD_ENABLE_GOURAUD GPU_DEFAULT_ENABLE_GOURAUD
+#endif
 #ifndef GPU_BUILD_VTX_CAP
 #define GPU_BUILD_VTX_CAP GPU_VTX_CAP
 #endif
@@ -46,6 +49,7 @@ inline gpu_model_config gpu_build_config()
     cfg.lines = GPU_BUILD_ENABLE_LINES != 0;
     cfg.zbuf = GPU_BUILD_ENABLE_ZBUF != 0;
     cfg.wmask = GPU_BUILD_ENABLE_WMASK != 0;
+    cfg.gouraud = GPU_BUILD_ENABLE_GOURAUD != 0;
     cfg.vtx_cap = GPU_BUILD_VTX_CAP;
     cfg.tri_cap = GPU_BUILD_TRI_CAP;
     cfg.zbuf_bits = GPU_BUILD_ZBUF_BITS;

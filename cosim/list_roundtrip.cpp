@@ -21,10 +21,10 @@ namespace {
 // One op, every field as stored (not through the writer under test).
 std::string describe(const ListOp &op)
 {
-    static const char *const names[] = {"clear", "tri", "line", "ztri"};
+    static const char *const names[] = {"clear", "tri", "line", "ztri", "gtri"};
     char text[200];
     std::snprintf(text, sizeof text, "%s v {%d %d %d %d %d %d} z {%u %u %u} colour %u",
-                  op.kind >= 0 && op.kind < 4 ? names[op.kind] : "?", op.v[0], op.v[1], op.v[2], op.v[3], op.v[4],
+                  op.kind >= 0 && op.kind < 5 ? names[op.kind] : "?", op.v[0], op.v[1], op.v[2], op.v[3], op.v[4],
                   op.v[5], op.z[0], op.z[1], op.z[2], op.color);
     return text;
 }
@@ -48,13 +48,13 @@ std::string compare(const std::vector<ListOp> &a, const std::vector<ListOp> &b)
 
 std::string census(const std::vector<ListOp> &ops)
 {
-    unsigned n[4] = {0, 0, 0, 0};
+    unsigned n[5] = {0, 0, 0, 0, 0};
     for (const ListOp &op : ops) {
         n[op.kind]++;
     }
     char text[120];
-    std::snprintf(text, sizeof text, "%zu ops (clear %u, tri %u, line %u, ztri %u)", ops.size(), n[ListOp::Clear],
-                  n[ListOp::Tri], n[ListOp::Line], n[ListOp::ZTri]);
+    std::snprintf(text, sizeof text, "%zu ops (clear %u, tri %u, line %u, ztri %u, gtri %u)", ops.size(),
+                  n[ListOp::Clear], n[ListOp::Tri], n[ListOp::Line], n[ListOp::ZTri], n[ListOp::GTri]);
     return text;
 }
 
@@ -97,7 +97,7 @@ ListOp random_op(Rng &r, ListOp::Kind kind)
     for (int i = 0; i < coords; i++) {
         op.v[i] = static_cast<int32_t>(edge_value(r, -32768, 32767));
     }
-    if (kind == ListOp::ZTri) {
+    if (kind == ListOp::ZTri || kind == ListOp::GTri) {
         for (int i = 0; i < 3; i++) {
             op.z[i] = static_cast<uint32_t>(edge_value(r, 0, 65535));
         }
@@ -110,7 +110,7 @@ std::vector<ListOp> random_list(Rng &r)
 {
     std::vector<ListOp> ops;
     // Every kind with every field at both ends of its range, then random ops of random kinds.
-    for (int k = 0; k < 4; k++) {
+    for (int k = 0; k < 5; k++) {
         for (int end = 0; end < 2; end++) {
             ListOp op{};
             op.kind = static_cast<ListOp::Kind>(k);
@@ -118,7 +118,7 @@ std::vector<ListOp> random_list(Rng &r)
             for (int i = 0; i < coords; i++) {
                 op.v[i] = end ? 32767 : -32768;
             }
-            if (k == ListOp::ZTri) {
+            if (k == ListOp::ZTri || k == ListOp::GTri) {
                 op.z[0] = op.z[1] = op.z[2] = end ? 65535u : 0u;
             }
             op.color = end ? 255u : 0u;
@@ -127,7 +127,7 @@ std::vector<ListOp> random_list(Rng &r)
     }
     const int32_t more = r.range(0, 200);
     for (int32_t i = 0; i < more; i++) {
-        ops.push_back(random_op(r, static_cast<ListOp::Kind>(r.range(0, 3))));
+        ops.push_back(random_op(r, static_cast<ListOp::Kind>(r.range(0, 4))));
     }
     // Shuffle, so that the kinds also follow each other in every order.
     for (size_t i = ops.size() - 1; i > 0; i--) {

@@ -61,8 +61,11 @@ bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops_out, std:
         } else if (word == "ztri") {
             op.kind = ListOp::ZTri;
             count = 9;
+        } else if (word == "gtri") {
+            op.kind = ListOp::GTri;
+            count = 9;
         } else {
-            error = std::to_string(number) + ": unknown primitive '" + printable(word) + "' (clear, tri, line, ztri)";
+            error = std::to_string(number) + ": unknown primitive '" + printable(word) + "' (clear, tri, line, ztri, gtri)";
             return false;
         }
         std::vector<long> values;
@@ -84,10 +87,11 @@ bool prim_list_parse(const std::string &text, std::vector<ListOp> &ops_out, std:
                     std::to_string(values.size());
             return false;
         }
-        if (op.kind == ListOp::ZTri) {  // x y z triples: move the depths aside
+        if (op.kind == ListOp::ZTri || op.kind == ListOp::GTri) {  // x y z (or i) triples: move z aside
             for (int i = 0; i < 3; i++) {
                 if (values[3 * i + 2] < 0 || values[3 * i + 2] > 65535) {
-                    error = std::to_string(number) + ": depth " + std::to_string(values[3 * i + 2]) +
+                    error = std::to_string(number) + (op.kind == ListOp::ZTri ? ": depth " : ": intensity ") +
+                            std::to_string(values[3 * i + 2]) +
                             " is outside 0..65535";
                     return false;
                 }
@@ -171,6 +175,10 @@ std::string prim_list_write(const std::vector<ListOp> &ops)
             std::snprintf(line, sizeof line, "ztri %d %d %u %d %d %u %d %d %u %u\n", v[0], v[1], op.z[0], v[2],
                           v[3], op.z[1], v[4], v[5], op.z[2], op.color);
             break;
+        case ListOp::GTri:
+            std::snprintf(line, sizeof line, "gtri %d %d %u %d %d %u %d %d %u %u\n", v[0], v[1], op.z[0], v[2],
+                          v[3], op.z[1], v[4], v[5], op.z[2], op.color);
+            break;
         }
         text += line;
     }
@@ -180,11 +188,14 @@ std::string prim_list_write(const std::vector<ListOp> &ops)
 std::vector<Batch> prim_list_batches(const std::vector<ListOp> &ops, uint32_t vtx_cap, uint32_t tri_cap)
 {
     bool depth = false;
+    bool dither = false;
     for (const ListOp &op : ops) {
         depth = depth || op.kind == ListOp::ZTri;
+        dither = dither || op.kind == ListOp::GTri;
     }
     std::vector<Batch> batches(1);
     batches.back().depth = depth;
+    batches.back().dither = dither;
     for (const ListOp &op : ops) {
         if (op.kind == ListOp::Clear) {
             // A clear while the current batch has no primitive yet (the list's start, or a clear just
@@ -194,6 +205,7 @@ std::vector<Batch> prim_list_batches(const std::vector<ListOp> &ops, uint32_t vt
                 batches.emplace_back();
             }
             batches.back().depth = depth;
+            batches.back().dither = dither;
             batches.back().clear = true;
             batches.back().clear_color = op.color;
             continue;
@@ -205,13 +217,16 @@ std::vector<Batch> prim_list_batches(const std::vector<ListOp> &ops, uint32_t vt
             batches.emplace_back();
             b = &batches.back();
             b->depth = depth;
+            b->dither = dither;
         }
         const uint32_t first = static_cast<uint32_t>(b->vtx.size() / 2);
         for (uint32_t i = 0; i < nv; i++) {
             b->vtx.push_back(static_cast<uint16_t>(op.v[2 * i]) | static_cast<uint32_t>(static_cast<uint16_t>(op.v[2 * i + 1])) << 16);
-            b->vtx.push_back(op.kind == ListOp::ZTri ? op.z[i] << GPU_VTX_Z_LSB : 0);
+            b->vtx.push_back(op.kind == ListOp::ZTri ? op.z[i] << GPU_VTX_Z_LSB
+                             : op.kind == ListOp::GTri ? op.z[i] << GPU_VTX_I_LSB : 0);
         }
-        const uint32_t kind = tri ? GPU_PRIM_KIND_TRI : GPU_PRIM_KIND_LINE;
+        const uint32_t kind = op.kind == ListOp::GTri ? GPU_PRIM_KIND_TRI_GOURAUD
+                              : tri ? GPU_PRIM_KIND_TRI : GPU_PRIM_KIND_LINE;
         const uint32_t i2 = tri ? first + 2 : 0;
         b->idx.push_back(first | (first + 1) << 16);
         b->idx.push_back(i2 | op.color << GPU_PRIM_COLOR_LSB | kind << GPU_PRIM_KIND_LSB);

@@ -5,7 +5,9 @@
 // (coordinates Q12.4, -32768..32767; C a palette index 0..255); `#` starts a comment; blank lines
 // are ignored. Primitives are drawn in list order, later over earlier. On a GPU built with the depth
 // buffer, `ztri X0 Y0 Z0 X1 Y1 Z1 X2 Y2 Z2 C` (Z 0..65535) draws a depth-tested triangle; a `clear`
-// also resets the depths when the list has any `ztri`.
+// also resets the depths when the list has any `ztri`. On a GPU built with Gouraud triangles,
+// `gtri X0 Y0 I0 X1 Y1 I1 X2 Y2 I2 C` (I: VTX_I, 0..65535, Q4.12) draws one shaded from palette
+// index C up its ramp, dithered (CTRL_DITHER is set for a list with any `gtri`).
 #ifndef PRIM_LIST_H
 #define PRIM_LIST_H
 
@@ -14,9 +16,9 @@
 #include <vector>
 
 struct ListOp {
-    enum Kind { Clear, Tri, Line, ZTri } kind;
+    enum Kind { Clear, Tri, Line, ZTri, GTri } kind;
     int32_t v[6];   // x0 y0 x1 y1 x2 y2 (unused ones 0)
-    uint32_t z[3];  // depths of a ztri
+    uint32_t z[3];  // depths of a ztri, intensities of a gtri
     uint32_t color;
 };
 
@@ -42,6 +44,7 @@ std::string prim_list_write(const std::vector<ListOp> &ops);
 struct Batch {
     bool clear = false;
     bool depth = false;          // ZTEST (and ZCLEAR with the clear): the list has a ztri
+    bool dither = false;         // CTRL_DITHER: the list has a gtri
     uint32_t clear_color = 0;
     std::vector<uint32_t> vtx;   // 2 words per vertex
     std::vector<uint32_t> idx;   // 2 words per primitive

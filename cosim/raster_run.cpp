@@ -99,6 +99,9 @@ int raster_main(int argc, char **argv)
         write(GPU_REG_TRI_COUNT, static_cast<uint32_t>(b.idx.size() / 2));
         write(GPU_REG_CLEAR_COLOR, b.clear_color);
         uint32_t ctrl = (b.clear ? GPU_CTRL_CLEAR_MASK : 0) | (last ? GPU_CTRL_SWAP_MASK : 0);
+        if (b.dither) {
+            ctrl |= GPU_CTRL_DITHER_MASK;
+        }
         if (b.depth) {
             ctrl |= GPU_CTRL_ZTEST_MASK | ((b.clear || k == 0) ? GPU_CTRL_ZCLEAR_MASK : 0);
         }

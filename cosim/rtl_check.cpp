@@ -126,6 +126,10 @@ int rtl_check_main(int argc, char **argv)
         std::fprintf(stderr, "random: VTX_CAP %u / TRI_CAP %u hold no triangle\n", vcap, tcap);
         return 2;
     }
+    // Gouraud triangles: a good share of the primitives where the GPU has them; a few elsewhere,
+    // where each must be refused with ERR_KIND.
+    const uint32_t gouraud_percent = cfg.gouraud ? 40 : 2;
+    uint64_t shaded = 0;
     Writer write{sim, model};
     const bool wmask = (sim.read(GPU_REG_CAPS) & GPU_CAPS_WMASK_MASK) != 0;
     uint64_t tris = 0, pixels = 0, frames = 0, resets = 0, back_checks = 0, overflows = 0, index_errors = 0;
@@ -164,6 +168,11 @@ int rtl_check_main(int argc, char **argv)
         const uint32_t vbase = past ? r.below(vcap) : r.below(vcap - nv + 1);
         const uint32_t tbase = past ? r.below(tcap) : r.below(tcap - nt + 1);
         const int family = static_cast<int>(r.below(5));
+        // Intensities (VTX_I, Q4.12) of this batch: anywhere, only the extremes 0 and 65535, or
+        // close together (slow gradients, where the fraction and the dither decide).
+        const uint32_t ifamily = r.below(3);
+        const uint32_t ibase = r.below(65536);
+        uint64_t batch_shaded = 0;  // counted once the batch is checked
         Vertex anchor = {r.range(0, kFbW * 16), r.range(0, kFbH * 16)};
         for (uint32_t v = 0; v < nv; v++) {
             if (family == 1 && r.chance(20)) {
@@ -172,7 +181,9 @@ int rtl_check_main(int argc, char **argv)
             Vertex vx = random_vertex(r, r.chance(80) ? family : static_cast<int>(r.below(5)), anchor);
             const uint32_t word = static_cast<uint16_t>(clamp16(vx.x)) | static_cast<uint32_t>(static_cast<uint16_t>(clamp16(vx.y))) << 16;
             write(GPU_WIN_VTX + 8 * (vbase + v), word);
-            write(GPU_WIN_VTX + 8 * (vbase + v) + 4, r.below(65536));
+            uint32_t inten = ifamily == 0 ? r.below(65536) : ifamily == 1 ? (r.chance(50) ? 0u : 65535u)
+                                                                       : std::min<uint32_t>(65535, ibase + r.below(600));
+            write(GPU_WIN_VTX + 8 * (vbase + v) + 4, r.below(65536) | inten << GPU_VTX_I_LSB);
         }
         for (uint32_t t = 0; t < nt; t++) {
             uint32_t i0 = r.below(nv), i1 = r.below(nv), i2 = r.below(nv);
@@ -182,6 +193,9 @@ int rtl_check_main(int argc, char **argv)
             uint32_t kind = GPU_PRIM_KIND_TRI;
             if (r.chance(12)) {
                 kind = r.chance(85) ? GPU_PRIM_KIND_LINE : r.below(256);
+            } else if (r.chance(gouraud_percent)) {
+                kind = GPU_PRIM_KIND_TRI_GOURAUD;
+                batch_shaded++;
             }
             write(GPU_WIN_IDX + 8 * (tbase + t), i0 | i1 << 16);
             write(GPU_WIN_IDX + 8 * (tbase + t) + 4, i2 | r.below(256) << 16 | kind << 24);
@@ -217,6 +231,9 @@ int rtl_check_main(int argc, char **argv)
         }
         if (r.chance(30) || b == 0 || clear_forced) {  // a reset may also leave the depths half done
             ctrl |= GPU_CTRL_ZCLEAR_MASK;
+        }
+        if (r.chance(50)) {  // ordered dithering of Gouraud triangles (ignored without CAPS_GOURAUD)
+            ctrl |= GPU_CTRL_DITHER_MASK;
         }
         write(GPU_WIN_REGS + GPU_REG_CTRL, ctrl);
         const uint32_t tag = static_cast<uint32_t>(b + 1);
@@ -276,6 +293,7 @@ int rtl_check_main(int argc, char **argv)
             return 1;
         }
         tris += sim.read(GPU_REG_PERF_TRIS_IN);
+        shaded += (over_capacity || past) ? 0 : batch_shaded;
         pixels += sim.read(GPU_REG_PERF_PIXELS);
         const uint32_t errors = sim.read(GPU_REG_ERRORS);  // equal to the model's (compared above)
         overflows += (errors & GPU_ERR_COUNT_MASK) != 0;
@@ -292,10 +310,11 @@ int rtl_check_main(int argc, char **argv)
         return 1;
     }
     std::printf("random: seed %llu: VTX_CAP %u TRI_CAP %u, %d batches (%llu over the capacities, %llu with bad "
-                "indices, %llu plane-masked), %llu primitives, %llu pixels, %llu back buffers, %llu frames, %llu resets: "
+                "indices, %llu plane-masked), %llu primitives (%llu of kind Gouraud), %llu pixels, %llu back buffers, %llu frames, %llu resets: "
                 "RTL equals model\n",
                 static_cast<unsigned long long>(seed), vcap, tcap, batches, static_cast<unsigned long long>(overflows),
                 static_cast<unsigned long long>(index_errors), static_cast<unsigned long long>(masked), static_cast<unsigned long long>(tris),
+                static_cast<unsigned long long>(shaded),
                 static_cast<unsigned long long>(pixels), static_cast<unsigned long long>(back_checks),
                 static_cast<unsigned long long>(frames), static_cast<unsigned long long>(resets));
     return 0;

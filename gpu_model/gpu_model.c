@@ -32,12 +32,13 @@
 #define VTX_WORDS_TOTAL(m) ((m)->cfg.vtx_cap * GPU_VTX_WORDS)
 #define IDX_WORDS_TOTAL(m) ((m)->cfg.tri_cap * GPU_PRIM_WORDS)
 
-/* A vertex: position in Q12.4 and depth (VTX_Z, unsigned 16-bit), widened
- * so every later product is exact. */
+/* A vertex: position in Q12.4, depth (VTX_Z, unsigned 16-bit) and intensity
+ * (VTX_I, unsigned Q4.12), widened so every later product is exact. */
 typedef struct {
     int64_t x;
     int64_t y;
     int64_t z;
+    int64_t i;
 } gpu_model_pt;
 
 /* Q16 fixed point of the depth plane. */
@@ -200,13 +201,72 @@ static uint16_t depth_at(const depth_plane *d, gpu_model_pt v0,
     return (uint16_t)z;
 }
 
+/* Intensity plane of an oriented Gouraud triangle (contract "Gouraud
+ * intensity"): the depth plane's formula with VTX_I in place of VTX_Z,
+ *   IA = sat32(trunc(2^16 (di1 dy2 - di2 dy1) / area))
+ *   IB = sat32(trunc(2^16 (di2 dx1 - di1 dx2) / area))
+ * with the same bounds (numerators below 2^33, times 2^16 below 2^49). */
+typedef struct {
+    int64_t ia;
+    int64_t ib;
+} intensity_plane;
+
+static intensity_plane intensity_setup(gpu_model_pt v0, gpu_model_pt v1,
+                                       gpu_model_pt v2, int64_t area)
+{
+    int64_t dx1 = v1.x - v0.x, dy1 = v1.y - v0.y, di1 = v1.i - v0.i;
+    int64_t dx2 = v2.x - v0.x, dy2 = v2.y - v0.y, di2 = v2.i - v0.i;
+    intensity_plane d;
+    d.ia = sat32(trunc_div(DEPTH_ONE * (di1 * dy2 - di2 * dy1), area));
+    d.ib = sat32(trunc_div(DEPTH_ONE * (di2 * dx1 - di1 * dx2), area));
+    return d;
+}
+
+/* The 4x4 ordered-dither (Bayer) thresholds, [y & 3][x & 3]. */
+static const uint8_t bayer4[4][4] = {
+    { 0, 8, 2, 10 },
+    { 12, 4, 14, 6 },
+    { 3, 11, 1, 9 },
+    { 15, 7, 13, 5 },
+};
+
+/* The colour of a Gouraud triangle's pixel (px, py) at centre p:
+ *   i(p)  = clamp(floor((2^16 i0 + IA (p.x - x0) + IB (p.y - y0)) / 2^16),
+ *                 0, 65535)                                  (Q4.12)
+ *   level = i(p) >> 12, plus 1 when dithering and ((i(p) >> 8) & 15) is
+ *           greater than bayer4[py & 3][px & 3], at most 15
+ *   colour = (PRIM_COLOR + level) mod 256
+ * evaluated directly at p; the sum is below 2^50 (as depth_at's). */
+static uint8_t shade_at(const intensity_plane *d, gpu_model_pt v0,
+                        gpu_model_pt p, int64_t px, int64_t py, uint8_t color,
+                        bool dither)
+{
+    int64_t sum = DEPTH_ONE * v0.i + d->ia * (p.x - v0.x) +
+                  d->ib * (p.y - v0.y);
+    int64_t i = floor_div(sum, DEPTH_ONE);
+    if (i < 0) {
+        i = 0;
+    }
+    if (i > 0xFFFF) {
+        i = 0xFFFF;
+    }
+    int64_t level = i >> 12;
+    int64_t frac = (i >> 8) & 15;
+    if (dither && frac > bayer4[py & 3][px & 3] && level < 15) {
+        level++;
+    }
+    return (uint8_t)((color + level) & 0xFF);
+}
+
 /* Draw one triangle into the back buffer following "Triangle rule (exact)"
  * and, with ztest (CTRL_ZTEST on a GPU built with the depth buffer),
- * "Depth".  Adds its samples, spans and pixels to the counters and reports
- * drawn / rejected. */
+ * "Depth"; with shaded (a Gouraud triangle) "Gouraud intensity", dithered
+ * with dither.  Adds its samples, spans and pixels to the counters and
+ * reports drawn / rejected. */
 static prim_result draw_triangle(gpu_model *m, gpu_model_pt v0,
                                  gpu_model_pt v1, gpu_model_pt v2,
-                                 uint8_t color, bool ztest)
+                                 uint8_t color, bool ztest, bool shaded,
+                                 bool dither)
 {
     uint8_t *fb = back_buffer(m);
 
@@ -259,6 +319,10 @@ static prim_result draw_triangle(gpu_model *m, gpu_model_pt v0,
     if (ztest) {
         plane = depth_setup(v0, v1, v2, area);
     }
+    intensity_plane iplane = { 0, 0 };
+    if (shaded) {
+        iplane = intensity_setup(v0, v1, v2, area);
+    }
 
     m->perf.samples += (uint32_t)((px1 - px0 + 1) * (py1 - py0 + 1));
 
@@ -270,7 +334,7 @@ static prim_result draw_triangle(gpu_model *m, gpu_model_pt v0,
         int64_t last_span = -1; /* last span of this row already counted */
         for (int64_t px = px0; px <= px1; px++) {
             gpu_model_pt p = { SUBPIXEL_ONE * px + SUBPIXEL_HALF,
-                               SUBPIXEL_ONE * py + SUBPIXEL_HALF, 0 };
+                               SUBPIXEL_ONE * py + SUBPIXEL_HALF, 0, 0 };
             if (!(edge_covers(edge_fn(v0, v1, p), tl01) &&
                   edge_covers(edge_fn(v1, v2, p), tl12) &&
                   edge_covers(edge_fn(v2, v0, p), tl20))) {
@@ -292,7 +356,7 @@ static prim_result draw_triangle(gpu_model *m, gpu_model_pt v0,
                 }
                 m->zbuf[i] = z;
             }
-            put_pixel(m, fb, i, color);
+            put_pixel(m, fb, i, shaded ? shade_at(&iplane, v0, p, px, py, color, dither) : color);
             m->perf.pixels++;
         }
     }
@@ -364,13 +428,16 @@ static gpu_model_pt vertex_pos(const gpu_model *m, uint32_t index)
     const uint32_t *w = &m->vtx[(size_t)index * GPU_VTX_WORDS];
     gpu_model_pt p = { sign_extend(GPU_MODEL_FIELD(w, VTX_X), GPU_VTX_X_MASK),
                        sign_extend(GPU_MODEL_FIELD(w, VTX_Y), GPU_VTX_Y_MASK),
-                       (int64_t)GPU_MODEL_FIELD(w, VTX_Z) };
+                       (int64_t)GPU_MODEL_FIELD(w, VTX_Z),
+                       (int64_t)GPU_MODEL_FIELD(w, VTX_I) };
     return p;
 }
 
 /* One primitive, contract "Primitives" steps 2-4 (step 1, the TRIS_IN count,
- * is done by the caller).  ztest: depth-test triangles. */
-static prim_result run_primitive(gpu_model *m, uint32_t prim, bool ztest)
+ * is done by the caller).  ztest: depth-test triangles; dither: CTRL_DITHER
+ * for Gouraud ones. */
+static prim_result run_primitive(gpu_model *m, uint32_t prim, bool ztest,
+                                 bool dither)
 {
     const uint32_t *w = &m->idx[(size_t)prim * GPU_PRIM_WORDS];
     uint32_t kind = GPU_MODEL_FIELD(w, PRIM_KIND);
@@ -380,10 +447,12 @@ static prim_result run_primitive(gpu_model *m, uint32_t prim, bool ztest)
     uint8_t color = (uint8_t)GPU_MODEL_FIELD(w, PRIM_COLOR);
 
     bool is_line = kind == GPU_PRIM_KIND_LINE;
+    bool shaded = kind == GPU_PRIM_KIND_TRI_GOURAUD;
 
-    /* 2. Kind: triangles always, lines only when built with them; anything
-     *    else is skipped with ERR_KIND. */
-    if (!(kind == GPU_PRIM_KIND_TRI || (is_line && m->cfg.lines))) {
+    /* 2. Kind: triangles always, lines and Gouraud triangles only when built
+     *    with them; anything else is skipped with ERR_KIND. */
+    if (!(kind == GPU_PRIM_KIND_TRI || (is_line && m->cfg.lines) ||
+          (shaded && m->cfg.gouraud))) {
         m->errors |= GPU_ERR_KIND_MASK;
         return PRIM_REJECTED;
     }
@@ -405,7 +474,8 @@ static prim_result run_primitive(gpu_model *m, uint32_t prim, bool ztest)
                          color);
     }
     return draw_triangle(m, vertex_pos(m, base + i0), vertex_pos(m, base + i1),
-                         vertex_pos(m, base + i2), color, ztest);
+                         vertex_pos(m, base + i2), color, ztest, shaded,
+                         dither);
 }
 
 /* A batch, contract "A batch, and the frame handshake" steps 1-6, run to
@@ -417,6 +487,7 @@ static void run_batch(gpu_model *m, uint32_t tag)
      * depth buffer; otherwise they are ignored. */
     bool ztest = m->cfg.zbuf && (ctrl & GPU_CTRL_ZTEST_MASK) != 0;
     bool zclear = m->cfg.zbuf && (ctrl & GPU_CTRL_ZCLEAR_MASK) != 0;
+    bool dither = m->cfg.gouraud && (ctrl & GPU_CTRL_DITHER_MASK) != 0;
 
     /* 1. Clear ERRORS and the PERF_* counters. */
     m->errors = 0;
@@ -449,7 +520,7 @@ static void run_batch(gpu_model *m, uint32_t tag)
         /* 4. Primitives in order; later ones overwrite earlier ones. */
         for (uint32_t i = 0; i < m->regs.tri_count; i++) {
             m->perf.tris_in++;
-            if (run_primitive(m, m->regs.tri_base + i, ztest) ==
+            if (run_primitive(m, m->regs.tri_base + i, ztest, dither) ==
                 PRIM_DRAWN) {
                 m->perf.tris_drawn++;
             } else {
@@ -508,7 +579,7 @@ void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
     gpu_model_config c = { GPU_MODEL_DEFAULT_SPAN_W, GPU_MODEL_DEFAULT_LINES,
                            GPU_MODEL_DEFAULT_ZBUF, GPU_MODEL_MAX_VTX_CAP,
                            GPU_MODEL_MAX_TRI_CAP, GPU_MODEL_DEFAULT_ZBUF_BITS,
-                           GPU_MODEL_DEFAULT_WMASK };
+                           GPU_MODEL_DEFAULT_WMASK, GPU_MODEL_DEFAULT_GOURAUD };
     if (cfg != NULL) {
         c = *cfg;
         if (!span_w_supported(c.span_w)) {
@@ -552,6 +623,9 @@ uint32_t gpu_model_caps(const gpu_model *m)
     if (m->cfg.wmask) {
         caps |= GPU_CAPS_WMASK_MASK;
     }
+    if (m->cfg.gouraud) {
+        caps |= GPU_CAPS_GOURAUD_MASK;
+    }
     return caps;
 }
 
@@ -588,7 +662,7 @@ void gpu_model_write(gpu_model *m, uint32_t offset, uint32_t value)
      * read-only registers and to holes are ignored. */
     switch (offset) {
     case GPU_REG_CTRL:
-        m->regs.ctrl = value & GPU_MODEL_CTRL_BITS; /* the 4 defined bits */
+        m->regs.ctrl = value & GPU_MODEL_CTRL_BITS; /* the defined bits */
         break;
     case GPU_REG_VTX_BASE:
         m->regs.vtx_base = value;

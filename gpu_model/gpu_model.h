@@ -11,10 +11,10 @@
  * swap) to completion inside gpu_model_write(), so STATUS.BUSY is never seen
  * set, ERR_WRITE_BUSY can never happen and a RESET write has nothing to abort.
  *
- * Like the RTL, the model is built with three options (contract "Build
- * options, reported in CAPS"): the span width, lines, and the depth buffer;
- * and with the RTL's two capacities (VTX_CAP, TRI_CAP), at most the
- * contract's limits.
+ * Like the RTL, the model is built with four options (contract "Build
+ * options, reported in CAPS"): the span width, lines, the depth buffer and
+ * Gouraud triangles; and with the RTL's two capacities (VTX_CAP, TRI_CAP),
+ * at most the contract's limits.
  *
  * Host C11 (and includable from C++), no dependencies beyond the C library.
  * The state is one plain struct (~310 KiB because of the two framebuffers and
@@ -45,6 +45,7 @@
 /* The bits of FB_WRITE_MASK the contract defines (the planes). */
 #define GPU_MODEL_WMASK_BITS (GPU_WMASK_LO_MASK | GPU_WMASK_HI_MASK)
 #define GPU_MODEL_DEFAULT_ZBUF_BITS GPU_DEFAULT_ZBUF_BITS
+#define GPU_MODEL_DEFAULT_GOURAUD (GPU_DEFAULT_ENABLE_GOURAUD != 0u)
 
 /* The largest capacities the model holds: the contract's limits, also the
  * RTL's parameter defaults.  A GPU may be built with smaller buffers. */
@@ -55,7 +56,7 @@
  * these, whatever the build options. */
 #define GPU_MODEL_CTRL_BITS \
     (GPU_CTRL_CLEAR_MASK | GPU_CTRL_SWAP_MASK | GPU_CTRL_ZTEST_MASK | \
-     GPU_CTRL_ZCLEAR_MASK)
+     GPU_CTRL_ZCLEAR_MASK | GPU_CTRL_DITHER_MASK)
 
 /*
  * The build options the modelled GPU was "built" with; CAPS reports them.
@@ -81,6 +82,10 @@
  *           "Depth"; any other value, 0 included, is replaced by the default
  *           16, as span_w's is); CAPS_ZBUF_BITS reports it with zbuf, 0
  *           without.
+ *   gouraud: ENABLE_GOURAUD; without it a PRIM_KIND_TRI_GOURAUD primitive
+ *           sets ERR_KIND and CTRL_DITHER has no effect (it is still stored).
+ *           Last, so that an initializer naming only the fields before it
+ *           leaves it false, the RTL's default.
  */
 typedef struct gpu_model_config {
     unsigned span_w;
@@ -89,7 +94,8 @@ typedef struct gpu_model_config {
     uint32_t vtx_cap;
     uint32_t tri_cap;
     unsigned zbuf_bits;  /* configs written before it get 0 = 16 */
-    bool wmask;          /* last: configs written before it get false (no mask) */
+    bool wmask;          /* configs written before it get false (no mask) */
+    bool gouraud;        /* last: configs written before it get false (flat only) */
 } gpu_model_config;
 
 /*
@@ -101,7 +107,7 @@ typedef struct gpu_model {
     /* The build options (set by gpu_model_reset_config(); read-only after). */
     gpu_model_config cfg;
 
-    /* Batch registers (rw).  ctrl keeps the four defined CTRL bits
+    /* Batch registers (rw).  ctrl keeps the five defined CTRL bits
      * (GPU_MODEL_CTRL_BITS), the others the whole 32-bit value written.  A
      * batch uses CTRL_CLEAR, CTRL_SWAP, CTRL_ZTEST and CTRL_ZCLEAR (the last
      * two only with cfg.zbuf) and CLEAR_COLOR[7:0]. */

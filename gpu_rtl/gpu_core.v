@@ -28,6 +28,8 @@ module gpu_core #(
                                                                          // (CAPS_WMASK): 4-bit lanes
     parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,        // depth bits kept, 1..16
                                                                          // (CAPS_ZBUF_BITS): 76,800 bits each
+    parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,  // Gouraud triangles
+                                         // (CAPS_GOURAUD): VTX_I RAM, two dividers, intensity lanes
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer VTX_AW = $clog2(VTX_CAP * 2),
@@ -62,10 +64,11 @@ module gpu_core #(
                            | (32'(ENABLE_LINES != 0) << gpu_pkg::GPU_CAPS_LINES_LSB)
                            | (32'(ENABLE_ZBUF != 0) << gpu_pkg::GPU_CAPS_ZBUF_LSB)
                            | (32'(ENABLE_WMASK != 0) << gpu_pkg::GPU_CAPS_WMASK_LSB)
-                           | (32'(ENABLE_ZBUF != 0 ? ZBUF_BITS : 0) << gpu_pkg::GPU_CAPS_ZBUF_BITS_LSB);
+                           | (32'(ENABLE_ZBUF != 0 ? ZBUF_BITS : 0) << gpu_pkg::GPU_CAPS_ZBUF_BITS_LSB)
+                           | (32'(ENABLE_GOURAUD != 0) << gpu_pkg::GPU_CAPS_GOURAUD_LSB);
 
     // Batch description and status between the register block and the rasterizer.
-    wire        ctrl_clear, ctrl_swap, ctrl_ztest, ctrl_zclear, start, soft_reset;
+    wire        ctrl_clear, ctrl_swap, ctrl_ztest, ctrl_zclear, ctrl_dither, start, soft_reset;
     wire        busy, front, swap;
     wire [31:0] vtx_base, vtx_count, tri_base, tri_count, doorbell_tag, done_seq, frame_count;
     wire [7:0]  clear_color;
@@ -92,7 +95,7 @@ module gpu_core #(
         .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr), .bus_wdata(bus_wdata),
         .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid),
         .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .ctrl_ztest(ctrl_ztest),
-        .ctrl_zclear(ctrl_zclear), .vtx_base(vtx_base), .vtx_count(vtx_count),
+        .ctrl_zclear(ctrl_zclear), .ctrl_dither(ctrl_dither), .vtx_base(vtx_base), .vtx_count(vtx_count),
         .tri_base(tri_base), .tri_count(tri_count), .clear_color(clear_color), .fb_wmask(fb_wmask),
         .doorbell_tag(doorbell_tag), .start(start), .soft_reset(soft_reset),
         .vtx_wr_en(vtx_wr_en), .vtx_wr_addr(vtx_wr_addr), .idx_wr_en(idx_wr_en),
@@ -143,6 +146,21 @@ module gpu_core #(
         end
     endgenerate
 
+    // Gouraud: the vertices' intensity (word 1, VTX_I) exists only in a build that shades.
+    wire [15:0] vi_rd_data;
+    generate
+        if (ENABLE_GOURAUD != 0) begin : g_gouraud
+            gpu_ram #(.DEPTH(VTX_CAP), .WIDTH(16)) u_vtx_i_ram (
+                .wr_clk(clk), .rd_clk(clk),
+                .wr_en(vtx_wr_en && vtx_wr_addr[0] == 1'b1), .wr_addr(vtx_wr_addr[VTX_AW-1:1]),
+                .wr_data(bus_wdata[gpu_pkg::GPU_VTX_I_LSB +: 16]), .wr_mask(1'b1),
+                .rd_en(vtx_rd_en), .rd_addr(vtx_rd_addr), .rd_data(vi_rd_data)
+            );
+        end else begin : g_no_gouraud
+            assign vi_rd_data = 16'd0;
+        end
+    endgenerate
+
     // Vertex word 0 (x, y) is all the rasterizer reads for coverage.
     gpu_ram #(.DEPTH(VTX_CAP), .WIDTH(32)) u_vtx_xy_ram (
         .wr_clk(clk), .rd_clk(clk),
@@ -166,16 +184,18 @@ module gpu_core #(
     );
 
     gpu_raster #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .SPAN_W(SPAN_W),
-                 .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS)) u_raster (
+                 .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS),
+                 .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_raster (
         .clk(clk), .rst(rst), .soft_reset(soft_reset),
         .start(start), .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .ctrl_ztest(ctrl_ztest),
-        .ctrl_zclear(ctrl_zclear), .vtx_base(vtx_base), .vtx_count(vtx_count), .tri_base(tri_base), .tri_count(tri_count),
+        .ctrl_zclear(ctrl_zclear), .ctrl_dither(ctrl_dither), .vtx_base(vtx_base), .vtx_count(vtx_count),
+        .tri_base(tri_base), .tri_count(tri_count),
         .clear_color(clear_color), .doorbell_tag(doorbell_tag),
         .busy(busy), .done_seq(done_seq), .frame_count(frame_count), .errors(raster_errors),
         .perf(perf),
         .idx_rd_en(idx_rd_en), .idx_rd_addr(idx_rd_addr), .idx_rd_data(idx_rd_data),
         .vtx_rd_en(vtx_rd_en), .vtx_rd_addr(vtx_rd_addr), .vtx_rd_data(vtx_rd_data),
-        .vz_rd_data(vz_rd_data), .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data),
+        .vz_rd_data(vz_rd_data), .vi_rd_data(vi_rd_data), .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data),
         .z_wr_en(z_wr_en), .z_wr_addr(z_wr_addr), .z_wr_data(z_wr_data), .z_wr_mask(z_wr_mask),
         .fb_wr_en(fb_wr_en), .fb_wr_addr(fb_wr_addr), .fb_wr_data(fb_wr_data),
         .fb_wr_mask(fb_wr_mask), .vblank_start(vblank_start), .swap(swap)

@@ -38,6 +38,17 @@ package gpu_pkg;
     localparam integer Z_W = 52;
     localparam integer ZSTEP_W = 40;
 
+    // Intensity plane (ENABLE_GOURAUD): VTX_I is an unsigned 16-bit value like VTX_Z, and the
+    // contract defines its plane with the depth plane's formula (contract, "Gouraud intensity"), so
+    // the same argument bounds it: IA, IB saturated to 32 bits, the Q16 accumulator 2^16 i0 + IA dx
+    // + IB dy below 2^50 at every pixel centre of the triangle's clamped box; the walker asserts it.
+    // The accumulator and its steps take the depth plane's widths.
+    localparam integer I_W = Z_W;
+    localparam integer ISTEP_W = ZSTEP_W;
+    // What a lane keeps of its clamped intensity (Q4.12): the level (bits 15..12) and the four
+    // fraction bits the 4x4 dither threshold is compared with (bits 11..8).
+    localparam integer ILVL_W = 8;
+
     // Lines: endpoint pixels are the Q12.4 coordinates shifted right by the sub-pixel bits, signed
     // PIX_W = 12 bits; a step count (the major delta, <= 4095) is PIX_W bits unsigned, twice a delta
     // PIX_W + 1. The Bresenham error starts at 2 minor - major and stays within +-2 * 4095, PIX_W + 2
@@ -56,9 +67,14 @@ package gpu_pkg;
 
     // ---- the primitive descriptor: gpu_prim_setup -> gpu_span_walker, one per drawn primitive ----
     // Triangles use the edge and box fields, lines the line_* fields; the depth fields are 0 unless
-    // the triangle is depth-tested. The depth fields come first (most significant), so that a user
-    // without depth (synth/ice40_walker_core.v) leaves bits that nothing reads at one end.
+    // the triangle is depth-tested, the intensity fields 0 unless it is a Gouraud triangle. The
+    // intensity and depth fields come first (most significant), so that a user without them
+    // (synth/ice40_walker_core.v) leaves bits that nothing reads at one end.
     typedef struct packed {
+        logic                      shaded;            // a Gouraud triangle (PRIM_KIND_TRI_GOURAUD)
+        logic signed [I_W-1:0]     i_start;           // Q16 intensity at lane 0 of the first span
+        logic signed [ISTEP_W-1:0] i_dx;              // per pixel right (16 IA)
+        logic signed [ISTEP_W-1:0] i_dy;              // per row down (16 IB)
         logic signed [Z_W-1:0]     z_start;           // Q16 depth at lane 0 of the first span
         logic signed [ZSTEP_W-1:0] z_dx;              // per pixel right (16 ZA)
         logic signed [ZSTEP_W-1:0] z_dy;              // per row down (16 ZB)

@@ -17,14 +17,17 @@
 // A depth-tested triangle (ENABLE_ZBUF, CTRL.ZTEST) holds stage B for the depth-plane division:
 // ceil(31 / DIV_QBITS) + 2 clocks (18), its throughput then; the fetch of the next primitives and
 // the walk of the previous ones go on meanwhile, so large triangles hide it completely.
+// A Gouraud triangle (ENABLE_GOURAUD, PRIM_KIND_TRI_GOURAUD) holds it the same way for the intensity
+// plane's two divisions; they run beside the depth ones, so a triangle that is both waits once.
 //
 // Pipeline: fetch FSM -> stage A (vertices) -> stage B (area, box, line endpoints) -> stage C
-// (the descriptor: edge values at the first span, steps, line Bresenham state, depth at the first
-// span and its steps). A stage loads when it
+// (the descriptor: edge values at the first span, steps, line Bresenham state, depth and intensity
+// at the first span and their steps). A stage loads when it
 // is empty or the stage after it moves; a full descriptor with out_ready low stalls everything behind.
 //
 // Widths: the descriptor is a gpu_pkg::desc_t; the range arguments of its fields (edge values need
-// EDGE_NEED_W = 34 bits, EDGE_W = 36; the depth accumulator Z_W) are in gpu_pkg.sv.
+// EDGE_NEED_W = 34 bits, EDGE_W = 36; the depth accumulator Z_W, the intensity one I_W) are in
+// gpu_pkg.sv.
 `default_nettype none
 
 module gpu_prim_setup #(
@@ -34,6 +37,8 @@ module gpu_prim_setup #(
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,  // depth-plane set-up (a division
                                          // per triangle while CTRL.ZTEST is on)
+    parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,  // intensity-plane set-up
+                                         // (two more dividers, used by Gouraud triangles only)
     parameter integer DIV_QBITS = 2,     // quotient bits per clock of the depth dividers: a depth-
                                          // tested triangle holds stage B ceil(31 / DIV_QBITS) + 2
                                          // clocks (18 with 2; 1 halves the dividers' subtractors
@@ -45,7 +50,9 @@ module gpu_prim_setup #(
     localparam integer EDGE_W = gpu_pkg::EDGE_W,
     localparam integer STEP_W = gpu_pkg::STEP_W,   // edge steps
     localparam integer Z_W = gpu_pkg::Z_W,
-    localparam integer ZSTEP_W = gpu_pkg::ZSTEP_W
+    localparam integer ZSTEP_W = gpu_pkg::ZSTEP_W,
+    localparam integer I_W = gpu_pkg::I_W,
+    localparam integer ISTEP_W = gpu_pkg::ISTEP_W
 ) (
     input  wire                     clk,
     input  wire                     rst,
@@ -66,6 +73,7 @@ module gpu_prim_setup #(
     output wire [VI_W-1:0]          vtx_rd_addr,
     input  wire [31:0]              vtx_rd_data,
     input  wire [15:0]              vz_rd_data,    // the vertex's depth, read with it (ENABLE_ZBUF)
+    input  wire [15:0]              vi_rd_data,    // its intensity, read with it (ENABLE_GOURAUD)
     // descriptor to the walker
     output reg                      out_valid,
     input  wire                     out_ready,
@@ -88,6 +96,8 @@ module gpu_prim_setup #(
     reg is_line_q;
     reg signed [15:0] fx0_q, fy0_q, fx1_q, fy1_q;
     reg [15:0] fz0_q, fz1_q;
+    reg [15:0] fi0_q, fi1_q;
+    reg shade_q;                       // the primitive in fetch is a Gouraud triangle
     reg v2_pending_q;                  // vertex 2 (or a line's end) is on the RAM output for stage A
     reg v2_is_line_q;
     reg idx_was_read_q;                // F_V1 read the next primitive's index words
@@ -101,14 +111,16 @@ module gpu_prim_setup #(
         idx_rd_data[32 + gpu_pkg::GPU_PRIM_COLOR_LSB +: gpu_pkg::GPU_PRIM_COLOR_WIDTH];
     wire [7:0]  w_kind = idx_rd_data[32 + gpu_pkg::GPU_PRIM_KIND_LSB +: gpu_pkg::GPU_PRIM_KIND_WIDTH];
     wire w_is_line = (w_kind == gpu_pkg::GPU_PRIM_KIND_LINE);
-    wire w_kind_ok = (w_kind == gpu_pkg::GPU_PRIM_KIND_TRI) || (w_is_line && ENABLE_LINES != 0);
+    wire w_is_shaded = (w_kind == gpu_pkg::GPU_PRIM_KIND_TRI_GOURAUD);
+    wire w_kind_ok = (w_kind == gpu_pkg::GPU_PRIM_KIND_TRI) || (w_is_line && ENABLE_LINES != 0)
+                  || (w_is_shaded && ENABLE_GOURAUD != 0);
     wire w_index_ok = (32'(w_i0) < vtx_count) && (32'(w_i1) < vtx_count)
                    && (w_is_line || 32'(w_i2) < vtx_count);
     // ... and decoded, one clock later, for F_CHECK.
     reg idx_fresh_q;                   // idx_rd_data holds words read in the previous clock
     reg [15:0] d_i0_q, d_i1_q, d_i2_q;
     reg [gpu_pkg::COLOR_W-1:0] d_color_q;
-    reg d_is_line_q, d_kind_ok_q, d_index_ok_q;
+    reg d_is_line_q, d_kind_ok_q, d_index_ok_q, d_shaded_q;
     always @(posedge clk) begin
         idx_fresh_q <= idx_rd_en;
         if (idx_fresh_q) begin
@@ -117,6 +129,7 @@ module gpu_prim_setup #(
             d_i2_q <= w_i2;
             d_color_q <= w_color;
             d_is_line_q <= w_is_line;
+            d_shaded_q <= w_is_shaded;
             d_kind_ok_q <= w_kind_ok;
             d_index_ok_q <= w_index_ok;
         end
@@ -174,6 +187,7 @@ module gpu_prim_setup #(
                         i2_q <= d_i2_q;
                         color_q <= d_color_q;
                         is_line_q <= d_is_line_q;
+                        shade_q <= d_shaded_q;
                         fstate_q <= F_V1;
                     end
                 end
@@ -181,6 +195,7 @@ module gpu_prim_setup #(
                     fx0_q <= vx;
                     fy0_q <= vy;
                     fz0_q <= vz_rd_data;
+                    fi0_q <= vi_rd_data;
                     if (more_prims) begin
                         prim_q <= prim_q + 1'b1;
                     end
@@ -190,6 +205,7 @@ module gpu_prim_setup #(
                     fx1_q <= vx;
                     fy1_q <= vy;
                     fz1_q <= vz_rd_data;
+                    fi1_q <= vi_rd_data;
                     v2_pending_q <= 1'b1;
                     v2_is_line_q <= is_line_q;
                     // The next primitive's index words were read in F_V1 if there was one.
@@ -220,6 +236,8 @@ module gpu_prim_setup #(
     reg [gpu_pkg::COLOR_W-1:0] a_color_q;
     reg signed [15:0] ax0_q, ay0_q, ax1_q, ay1_q, ax2_q, ay2_q;
     reg [15:0] az0_q, az1_q, az2_q;
+    reg a_shaded_q;
+    reg [15:0] ai0_q, ai1_q, ai2_q;
     wire b_free;
 
     assign stage_a_free = !a_valid_q || b_free;
@@ -241,6 +259,10 @@ module gpu_prim_setup #(
                 az0_q <= fz0_q;
                 az1_q <= fz1_q;
                 az2_q <= vz_rd_data;
+                a_shaded_q <= shade_q;
+                ai0_q <= fi0_q;
+                ai1_q <= fi1_q;
+                ai2_q <= vi_rd_data;
             end
         end
     end
@@ -284,8 +306,12 @@ module gpu_prim_setup #(
     reg signed [34:0] b_area_q;
     reg signed [12:0] b_rpx0_q, b_rpx1_q, b_rpy0_q, b_rpy1_q;  // box of pixel centres, unclamped
     reg [15:0] bz0_q, bz1_q, bz2_q;
+    reg b_shaded_q;
+    reg [15:0] bi0_q, bi1_q, bi2_q;
     wire c_free;
-    wire b_z_ready;                    // the depth gradients are known (or not needed)
+    wire b_z_ready;                    // the depth and intensity gradients are known (or not needed)
+    wire z_ready, i_ready;             // each of them
+    assign b_z_ready = z_ready && i_ready;
 
     assign b_free = !b_valid_q || (c_free && b_z_ready);
 
@@ -307,6 +333,10 @@ module gpu_prim_setup #(
                 bz0_q <= az0_q;
                 bz1_q <= az1_q;
                 bz2_q <= az2_q;
+                b_shaded_q <= a_shaded_q;
+                bi0_q <= ai0_q;
+                bi1_q <= ai1_q;
+                bi2_q <= ai2_q;
                 b_rpx0_q <= first_centre(min3(ax0_q, ax1_q, ax2_q));
                 b_rpx1_q <= last_centre(max3(ax0_q, ax1_q, ax2_q));
                 b_rpy0_q <= first_centre(min3(ay0_q, ay1_q, ay2_q));
@@ -413,7 +443,7 @@ module gpu_prim_setup #(
             // clocks develop the quotients, and in the clock after they are valid and stage C takes
             // them straight from the dividers (they hold until the next start, a clock later at the
             // earliest): STEPS + 2 clocks a depth-tested triangle.
-            assign b_z_ready = !need || (started_q && valid_a);
+            assign z_ready = !need || (started_q && valid_a);
             // Depth at lane 0 of the first span: 2^16 z0 + ZA (pcx - x0) + ZB (pcy - y0).
             wire signed [17:0] off_x = pcx - 18'(bx0_q);  // -32759 .. 37896: 17 bits
             wire signed [17:0] off_y = pcy - 18'(by0_q);
@@ -423,11 +453,58 @@ module gpu_prim_setup #(
             assign z_dy_w = ZSTEP_W'(zb) <<< 4;
             wire unused_div = valid_b;
         end else begin : g_no_z
-            assign b_z_ready = 1'b1;
+            assign z_ready = 1'b1;
             assign z_start_w = {Z_W{1'b0}};
             assign z_dx_w = {ZSTEP_W{1'b0}};
             assign z_dy_w = {ZSTEP_W{1'b0}};
             wire unused_z = ctrl_ztest | (|vz_rd_data) | (|bz0_q) | (|bz1_q) | (|bz2_q);
+        end
+    endgenerate
+
+    // ---- intensity plane (ENABLE_GOURAUD): the depth plane's formula on VTX_I (contract, "Gouraud
+    // intensity"), IA, IB by two more dividers, started with the depth ones and as long ----
+    wire signed [I_W-1:0] i_start_w;
+    wire signed [ISTEP_W-1:0] i_dx_w, i_dy_w;
+    generate
+        if (ENABLE_GOURAUD != 0) begin : g_i
+            // The same widths as the depth plane's: di is a difference of two 16-bit unsigned values.
+            wire signed [17:0] di1 = 18'({2'b00, bi1_q}) - 18'({2'b00, bi0_q});
+            wire signed [17:0] di2 = 18'({2'b00, bi2_q}) - 18'({2'b00, bi0_q});
+            wire signed [17:0] dx1 = 18'(bx1_q) - 18'(bx0_q), dy1 = 18'(by1_q) - 18'(by0_q);
+            wire signed [17:0] dx2 = 18'(bx2_q) - 18'(bx0_q), dy2 = 18'(by2_q) - 18'(by0_q);
+            wire signed [50:0] num_a = 51'(di1 * dy2 - di2 * dy1) <<< 16;
+            wire signed [50:0] num_b = 51'(di2 * dx1 - di1 * dx2) <<< 16;
+            wire need = b_valid_q && !b_is_line_q && b_shaded_q && b_drawable;
+            reg started_q;
+            wire div_start = need && !started_q;
+            wire valid_a, valid_b;
+            wire signed [31:0] ia, ib;
+            gpu_div #(.QBITS(DIV_QBITS)) u_div_ia (.clk(clk), .rst(rst), .start(div_start),
+                .dividend(num_a), .divisor(b_area_q), .valid(valid_a), .quotient(ia));
+            gpu_div #(.QBITS(DIV_QBITS)) u_div_ib (.clk(clk), .rst(rst), .start(div_start),
+                .dividend(num_b), .divisor(b_area_q), .valid(valid_b), .quotient(ib));
+            always @(posedge clk) begin
+                if (rst || b_leaves || !b_valid_q) begin
+                    started_q <= 1'b0;
+                end else if (div_start) begin
+                    started_q <= 1'b1;
+                end
+            end
+            assign i_ready = !need || (started_q && valid_a);
+            wire signed [17:0] off_x = pcx - 18'(bx0_q);  // as the depth plane's offsets
+            wire signed [17:0] off_y = pcy - 18'(by0_q);
+            // (Meaningless for a triangle that is not shaded: the walker then ignores them.)
+            assign i_start_w = (I_W'($signed({1'b0, bi0_q})) <<< 16)
+                             + I_W'(ia) * I_W'(off_x) + I_W'(ib) * I_W'(off_y);
+            assign i_dx_w = ISTEP_W'(ia) <<< 4;
+            assign i_dy_w = ISTEP_W'(ib) <<< 4;
+            wire unused_i_div = valid_b;
+        end else begin : g_no_i
+            assign i_ready = 1'b1;
+            assign i_start_w = {I_W{1'b0}};
+            assign i_dx_w = {ISTEP_W{1'b0}};
+            assign i_dy_w = {ISTEP_W{1'b0}};
+            wire unused_i = (|vi_rd_data) | (|bi0_q) | (|bi1_q) | (|bi2_q) | b_shaded_q;
         end
     endgenerate
 
@@ -469,6 +546,10 @@ module gpu_prim_setup #(
                 out_desc.z_start <= z_start_w;
                 out_desc.z_dx <= z_dx_w;
                 out_desc.z_dy <= z_dy_w;
+                out_desc.shaded <= ENABLE_GOURAUD != 0 && b_shaded_q && !b_is_line_q;
+                out_desc.i_start <= i_start_w;
+                out_desc.i_dx <= i_dx_w;
+                out_desc.i_dy <= i_dy_w;
             end
         end
     end

@@ -18,6 +18,7 @@ module gpu_raster #(
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
     parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,
+    parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer WORDS = gpu_pkg::GPU_FB_PIXELS / SPAN_W,   // spans in a frame
@@ -33,6 +34,7 @@ module gpu_raster #(
     input  wire                ctrl_swap,
     input  wire                ctrl_ztest,
     input  wire                ctrl_zclear,
+    input  wire                ctrl_dither,
     input  wire [31:0]         vtx_base,
     input  wire [31:0]         vtx_count,
     input  wire [31:0]         tri_base,
@@ -54,6 +56,7 @@ module gpu_raster #(
     output wire [VI_W-1:0]     vtx_rd_addr,
     input  wire [31:0]         vtx_rd_data,
     input  wire [15:0]         vz_rd_data,   // the vertex's depth (ENABLE_ZBUF)
+    input  wire [15:0]         vi_rd_data,   // the vertex's intensity (ENABLE_GOURAUD)
     // depth buffer (ENABLE_ZBUF)
     output wire                z_rd_en,
     output wire [WAW-1:0]      z_rd_addr,
@@ -97,13 +100,14 @@ module gpu_raster #(
     wire [SPAN_W-1:0] walker_wr_mask;
 
     gpu_prim_setup #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .SPAN_W(SPAN_W),
-                     .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF)) u_setup (
+                     .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF),
+                     .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_setup (
         .clk(clk), .rst(pipe_rst),
         .start(state_q == S_CHECK && !count_error), .vtx_base(vtx_base), .vtx_count(vtx_count),
         .tri_base(tri_base), .tri_count(tri_count), .ctrl_ztest(ztest), .idle(setup_idle),
         .idx_rd_en(idx_rd_en), .idx_rd_addr(idx_rd_addr), .idx_rd_data(idx_rd_data),
         .vtx_rd_en(vtx_rd_en), .vtx_rd_addr(vtx_rd_addr), .vtx_rd_data(vtx_rd_data),
-        .vz_rd_data(vz_rd_data), .out_valid(desc_valid), .out_ready(desc_ready), .out_desc(desc),
+        .vz_rd_data(vz_rd_data), .vi_rd_data(vi_rd_data), .out_valid(desc_valid), .out_ready(desc_ready), .out_desc(desc),
         .ev_prim_in(ev_prim_in), .ev_rejected(ev_rejected), .ev_drawn(ev_drawn),
         .ev_samples(ev_samples), .ev_err_kind(ev_err_kind), .ev_err_index(ev_err_index)
     );
@@ -111,9 +115,11 @@ module gpu_raster #(
     // The walker does not start on a descriptor until the clear is over (the setup may run ahead).
     wire walk_enable = state_q == S_DRAW || state_q == S_DRAIN;
 
-    gpu_span_walker #(.SPAN_W(SPAN_W), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS)) u_walker (
+    gpu_span_walker #(.SPAN_W(SPAN_W), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS),
+                      .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_walker (
         .clk(clk), .rst(pipe_rst),
         .in_valid(desc_valid && walk_enable), .in_ready(walker_ready), .in_desc(desc), .ztest(ztest),
+        .dither(ENABLE_GOURAUD != 0 && ctrl_dither),
         .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data),
         .z_wr_en(walker_z_wr_en), .z_wr_addr(walker_z_wr_addr), .z_wr_data(walker_z_wr_data),
         .z_wr_mask(walker_z_wr_mask),

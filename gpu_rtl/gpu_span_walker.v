@@ -18,7 +18,15 @@
 //
 // Widths: the descriptor is a gpu_pkg::desc_t. Edge values at lanes -1 .. SPAN_W of any on-screen
 // span are values at pixel centres within one pixel of the screen, inside the EDGE_NEED_W-bit bound
-// argued in gpu_pkg.sv; EDGE_W = 36. The depth accumulator's bound (Z_W) is argued there too.
+// argued in gpu_pkg.sv; EDGE_W = 36. The depth accumulator's bound (Z_W) is argued there too, and
+// the intensity accumulator's (I_W), which is the same.
+//
+// Gouraud triangles (ENABLE_GOURAUD, desc.shaded): the Q16 intensity plane is stepped exactly as the
+// depth plane is (the same adds, at the same places), each lane's value clamped to 0 .. 65535 (Q4.12)
+// and its top byte kept with the span. In the write stage each lane's colour is the triangle's
+// PRIM_COLOR plus its level: the intensity's bits 15..12, plus one where dithering is on and the
+// fraction bits 11..8 exceed the 4x4 Bayer threshold of the pixel (x & 3, y & 3), at most 15
+// (contract, "Gouraud intensity"). Flat triangles and lines keep their colour as it is.
 `default_nettype none
 
 module gpu_span_walker #(
@@ -27,6 +35,8 @@ module gpu_span_walker #(
                                                                       // buffer port
     parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,     // depth bits kept (contract
                                                                       // "Depth"): the rest read 0
+    parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,  // intensity stepping and
+                                                                      // the ramp/dither write stage
     localparam integer WORDS_PER_ROW = gpu_pkg::GPU_FB_WIDTH / SPAN_W,
     localparam integer COL_W = $clog2(WORDS_PER_ROW),                 // span column
     localparam integer WAW = $clog2(gpu_pkg::GPU_FB_PIXELS / SPAN_W),
@@ -36,6 +46,9 @@ module gpu_span_walker #(
     localparam integer STEP_W = gpu_pkg::STEP_W,                      // edge steps, sign-extended
     localparam integer Z_W = gpu_pkg::Z_W,
     localparam integer ZSTEP_W = gpu_pkg::ZSTEP_W,
+    localparam integer I_W = gpu_pkg::I_W,
+    localparam integer ISTEP_W = gpu_pkg::ISTEP_W,
+    localparam integer ILVL_W = gpu_pkg::ILVL_W,
     localparam integer PIX_W = gpu_pkg::PIX_W,                        // line pixel coordinates
     localparam integer LERR_W = gpu_pkg::LERR_W,
     localparam integer ROW_W = gpu_pkg::ROW_W,
@@ -48,6 +61,7 @@ module gpu_span_walker #(
     output wire                     in_ready,
     input  gpu_pkg::desc_t          in_desc,      // the primitive; columns in its low COL_W bits
     input  wire                     ztest,        // CTRL.ZTEST of the batch
+    input  wire                     dither,       // CTRL.DITHER of the batch (Gouraud triangles)
     // depth buffer (ENABLE_ZBUF): read the span's depths, write the winners'
     output wire                     z_rd_en,
     output wire [WAW-1:0]           z_rd_addr,
@@ -199,6 +213,27 @@ module gpu_span_walker #(
         end
     end
 
+    // ---- intensity of each lane (ENABLE_GOURAUD): clamp(floor(Ifix / 2^16), 0, 65535), its top byte ----
+    reg signed [I_W-1:0] i_q, ifirst_q;
+    reg signed [ISTEP_W-1:0] idx_q, idy_q;
+    reg shade_q;                             // the triangle is a Gouraud one
+    function automatic [ILVL_W-1:0] iclamp_top(input signed [I_W-1:0] ifix);
+        reg signed [I_W-1:0] whole;
+        begin
+            whole = ifix >>> 16;
+            iclamp_top = (whole < 0) ? {ILVL_W{1'b0}}
+                       : ((whole > 65535) ? {ILVL_W{1'b1}} : whole[15 -: ILVL_W]);
+        end
+    endfunction
+    reg [SPAN_W*ILVL_W-1:0] lane_lvl;
+    always @(*) begin
+        for (l = 0; l < SPAN_W; l = l + 1) begin
+            lane_lvl[l*ILVL_W +: ILVL_W] = iclamp_top(i_q + I_W'(times(Z_W'(idx_q), l)));
+        end
+    end
+    wire signed [I_W-1:0] i_down = i_q + I_W'(idy_q);
+    wire signed [I_W-1:0] ifirst_down = ifirst_q + I_W'(idy_q);
+
     // The next row's start from either candidate, both summed while the seek decides between them
     // (first_span), so that the decision meets a multiplexer, not an adder.
     wire signed [EDGE_W-1:0] e_down [0:2];
@@ -219,6 +254,9 @@ module gpu_span_walker #(
     reg [SPAN_W*8-1:0] cand_data_q;
     reg [SPAN_W-1:0] cand_mask_q;
     reg [SPAN_W*16-1:0] cand_z_q;
+    reg cand_shade_q;                    // a Gouraud triangle's span: colours from cand_lvl_q
+    reg [SPAN_W*ILVL_W-1:0] cand_lvl_q;
+    reg [1:0] cand_x_q, cand_y_q;        // the span's first pixel x & 3 and its row y & 3
     reg [SPAN_W-1:0] final_mask;
 
     assign in_ready = state_q == S_IDLE;
@@ -242,6 +280,11 @@ module gpu_span_walker #(
                     zdx_q <= in_desc.z_dx;
                     zdy_q <= in_desc.z_dy;
                     ztest_q <= ztest && !in_desc.is_line;
+                    i_q <= in_desc.i_start;
+                    ifirst_q <= in_desc.i_start;
+                    idx_q <= in_desc.i_dx;
+                    idy_q <= in_desc.i_dy;
+                    shade_q <= ENABLE_GOURAUD != 0 && in_desc.shaded && !in_desc.is_line;
                     if (in_desc.is_line) begin
                         lx_q <= in_desc.line_x;
                         ly_q <= in_desc.line_y;
@@ -288,12 +331,17 @@ module gpu_span_walker #(
                         cand_data_q <= {SPAN_W{color_q}};
                         cand_mask_q <= lane_cov;
                         cand_z_q <= lane_z;
+                        cand_shade_q <= shade_q;
+                        cand_lvl_q <= lane_lvl;
+                        cand_x_q <= 2'(32'(col_q) * SPAN_W);
+                        cand_y_q <= row_q[1:0];
                         ev_span_written <= 1'b1;
                     end
                     if (first_span) begin
                         col_first_q <= col_q;
                         for (k = 0; k < 3; k = k + 1) efirst_q[k] <= e_q[k];
                         zfirst_q <= z_q;
+                        ifirst_q <= i_q;
                     end
                     if (row_end) begin
                         if (row_q == row_hi_q) begin
@@ -309,16 +357,20 @@ module gpu_span_walker #(
                             end
                             zfirst_q <= first_span ? z_down : zfirst_down;
                             z_q <= first_span ? z_down : zfirst_down;
+                            ifirst_q <= first_span ? i_down : ifirst_down;
+                            i_q <= first_span ? i_down : ifirst_down;
                             state_q <= S_SEEK;
                         end
                     end else if (go_left) begin
                         col_q <= col_q - 1'b1;
                         for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] - edge_times(EDGE_W'(sx_q[k]), SPAN_W);
                         z_q <= z_q - times(Z_W'(zdx_q), SPAN_W);
+                        i_q <= i_q - I_W'(times(Z_W'(idx_q), SPAN_W));
                     end else begin  // seeking right past a rejected span, or the scan's next span
                         col_q <= col_q + 1'b1;
                         for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] + edge_times(EDGE_W'(sx_q[k]), SPAN_W);
                         z_q <= z_q + times(Z_W'(zdx_q), SPAN_W);
+                        i_q <= i_q + I_W'(times(Z_W'(idx_q), SPAN_W));
                         if (draw_span) begin
                             state_q <= S_SCAN;
                         end
@@ -328,6 +380,7 @@ module gpu_span_walker #(
                     if (line_on_screen) begin
                         cand_valid_q <= 1'b1;
                         cand_depth_q <= 1'b0;
+                        cand_shade_q <= 1'b0;
                         cand_addr_q <= line_addr;
                         cand_data_q <= {SPAN_W{color_q}};
                         cand_mask_q <= SPAN_W'(1) << line_lane;
@@ -409,7 +462,52 @@ module gpu_span_walker #(
 
     assign fb_wr_en = cand_valid_q && final_mask != {SPAN_W{1'b0}};
     assign fb_wr_addr = cand_addr_q;
-    assign fb_wr_data = cand_data_q;
+    // ---- the write stage's colours: flat, or each lane's ramp level (dithered) over the base ----
+    wire [SPAN_W*8-1:0] wr_data;
+    generate
+        if (ENABLE_GOURAUD != 0) begin : g_i
+            // The 4x4 Bayer matrix, row-major by (y & 3, x & 3): thresholds 0 .. 15, each once.
+            localparam [63:0] BAYER = {4'd5, 4'd13, 4'd7, 4'd15,   // y = 3, x = 3 .. 0
+                                       4'd9, 4'd1, 4'd11, 4'd3,    // y = 2
+                                       4'd6, 4'd14, 4'd4, 4'd12,   // y = 1
+                                       4'd10, 4'd2, 4'd8, 4'd0};   // y = 0
+            reg [SPAN_W*8-1:0] shaded_data;
+            reg [3:0] level, frac, threshold;
+            reg [1:0] lx;
+            reg up;
+            integer n;
+            always @(*) begin
+                for (n = 0; n < SPAN_W; n = n + 1) begin
+                    level = cand_lvl_q[n*ILVL_W + 4 +: 4];
+                    frac = cand_lvl_q[n*ILVL_W +: 4];
+                    lx = cand_x_q + 2'(n);
+                    threshold = BAYER[{cand_y_q, lx} * 4 +: 4];
+                    up = dither && frac > threshold && level != 4'd15;
+                    shaded_data[n*8 +: 8] = cand_data_q[n*8 +: 8] + 8'(level) + 8'(up);
+                end
+            end
+            assign wr_data = cand_shade_q ? shaded_data : cand_data_q;
+        end else begin : g_no_i
+            assign wr_data = cand_data_q;
+            wire unused_i = dither | cand_shade_q | (|cand_lvl_q) | (|cand_x_q) | (|cand_y_q);
+        end
+    endgenerate
+`ifndef SYNTHESIS
+    // The intensity range argument (gpu_pkg, the depth plane's): below 2^50 at every lane of every
+    // span a Gouraud triangle writes.
+    localparam signed [I_W-1:0] I_LIMIT = I_W'(1) <<< (gpu_pkg::Z_NEED_W - 1);
+    always @(posedge clk) begin
+        if (!rst && shade_q && (seek || scan) && draw_span) begin
+            for (k = 0; k < SPAN_W; k = k + 1) begin
+                assert ((i_q + I_W'(times(Z_W'(idx_q), k))) < I_LIMIT
+                        && (i_q + I_W'(times(Z_W'(idx_q), k))) > -I_LIMIT)
+                    else $error("gpu_span_walker: intensity accumulator exceeds 2^50");
+            end
+        end
+    end
+`endif
+
+    assign fb_wr_data = wr_data;
     assign fb_wr_mask = final_mask;
     assign ev_pixels = cand_valid_q ? CNT_W'($countones(final_mask)) : {CNT_W{1'b0}};
 endmodule

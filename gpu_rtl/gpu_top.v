@@ -29,6 +29,8 @@ module gpu_top #(
                                                                          // (CAPS_WMASK)
     parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,        // depth bits kept, 1..16
                                                                          // (CAPS_ZBUF_BITS; see gpu_core)
+    parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,  // Gouraud triangles
+                                         // (CAPS_GOURAUD): VTX_I RAM, two dividers, intensity lanes
     parameter integer PIX_DIV = 4,       // clk_pix clocks per VGA pixel (1 for a 25 MHz clk_pix)
     localparam integer FB_PAW = $clog2(gpu_pkg::GPU_FB_PIXELS)
 ) (
@@ -63,7 +65,7 @@ module gpu_top #(
 
     gpu_core #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .SPAN_W(SPAN_W),
                .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS),
-               .ENABLE_WMASK(ENABLE_WMASK)) u_core (
+               .ENABLE_WMASK(ENABLE_WMASK), .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_core (
         .clk(clk), .rst(rst),
         .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr), .bus_wdata(bus_wdata),
         .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid),

@@ -6,9 +6,9 @@
 //
 // Load port: each ld_valid shifts ld_data into a descriptor register (a gpu_pkg::desc_t, 32 bits a
 // load, the first word loaded ending up in the most significant bits); ld_go hands the descriptor to
-// the walker. The walker is built without depth (ENABLE_ZBUF = 0), so its depth fields are tied to 0
-// here: they are the descriptor's most significant bits, the end of the shift chain, and synthesis
-// removes them. Span writes leave on fb_wr_*.
+// the walker. The walker is built without depth (ENABLE_ZBUF = 0) and Gouraud (ENABLE_GOURAUD = 0), so
+// its depth and intensity fields are tied to 0 here: they are the descriptor's most significant
+// bits, the end of the shift chain, and synthesis removes them. Span writes leave on fb_wr_*.
 `default_nettype none
 
 module ice40_walker_core #(
@@ -46,6 +46,10 @@ module ice40_walker_core #(
         walker_desc.z_start = '0;
         walker_desc.z_dx = '0;
         walker_desc.z_dy = '0;
+        walker_desc.shaded = 1'b0;   // built without Gouraud (ENABLE_GOURAUD = 0): no intensity
+        walker_desc.i_start = '0;
+        walker_desc.i_dx = '0;
+        walker_desc.i_dy = '0;
     end
 
     wire ev_span_visit;

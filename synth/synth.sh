@@ -4,8 +4,9 @@
 #  2. iCE40 HX8K place-and-route (nextpnr-ice40) of the span walker (synth/ice40_walker_core.v,
 #     SPAN_W=4): utilisation and fmax. (The whole rasterizer needs ~12k LUT4 on an iCE40 for its
 #     set-up multipliers, measured, and does not fit the 7680 of the largest part.)
-# Usage: [ZBUF=1] synth.sh BUILD_DIR (ZBUF=1: gpu_top with ENABLE_ZBUF in step 1). Prints a Markdown
-# table; logs in BUILD_DIR/synth/.
+# Usage: [ZBUF=1] [GOURAUD=1] synth.sh BUILD_DIR (ZBUF=1: gpu_top with ENABLE_ZBUF in step 1;
+# GOURAUD=1: with ENABLE_GOURAUD, the intensity interpolator). Prints a Markdown table; logs in
+# BUILD_DIR/synth/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${1:-build}/synth"
@@ -14,10 +15,12 @@ mkdir -p "$out"
 rtl=$(sed -e 's://.*::' gpu_rtl/files.f | tr '\n' ' ')
 zbuf="${ZBUF:-0}"
 [ "$zbuf" = 1 ] && zlabel="depth buffer" || zlabel="no z"
+gouraud="${GOURAUD:-0}"
+[ "$gouraud" = 1 ] && zlabel="$zlabel, Gouraud"
 
-echo "synth: yosys synth_xilinx (xc7) on gpu_top, ENABLE_ZBUF=$zbuf ..." >&2
+echo "synth: yosys synth_xilinx (xc7) on gpu_top, ENABLE_ZBUF=$zbuf ENABLE_GOURAUD=$gouraud ..." >&2
 yosys -q -l "$out/xc7.log" 2>"$out/xc7.warnings" -p "read_verilog -sv $rtl; \
-    chparam -set ENABLE_ZBUF $zbuf gpu_top; synth_xilinx -family xc7 -top gpu_top -flatten; tee -q -o $out/xc7_stat.txt stat" >/dev/null
+    chparam -set ENABLE_ZBUF $zbuf -set ENABLE_GOURAUD $gouraud gpu_top; synth_xilinx -family xc7 -top gpu_top -flatten; tee -q -o $out/xc7_stat.txt stat" >/dev/null
 
 count() { awk -v pat="$1" '$1 ~ pat && $2 ~ /^[0-9]+$/ { n += $2 } END { print n + 0 }' "$out/xc7_stat.txt"; }
 luts=$(count '^LUT[1-6]$')

@@ -12,6 +12,11 @@ that passed the depth test):
   zlarge - the large triangles, depth-tested
   ztiny  - the tiny triangles, depth-tested (those that cover a pixel centre each need the depth-plane
            division)
+and on the Gouraud build (sim-g-w8, ENABLE_GOURAUD with the depth buffer, SPAN_W = 8), the same
+triangles as Gouraud `gtri` with random vertex intensities, dithered (no depth test):
+  glarge - the large triangles, Gouraud shaded
+  gtiny  - the tiny triangles, Gouraud shaded (each drawn one needs the intensity-plane division)
+  large, tiny on that build again as flat `tri`: what building the interpolator in costs flat ones
 
     bench_gpu.py BUILD SCENE_LISTS_DIR
 """
@@ -56,6 +61,16 @@ def write_depth(path, src, rng):
                                                                 z[2], v[7]))
 
 
+def write_gouraud(path, src, rng):
+    """The triangles of src again, as gtri with random vertex intensities (VTX_I, Q4.12)."""
+    with open(src) as f, open(path, "w") as out:
+        for line in f:
+            v = line.split()
+            i = [rng.randint(0, 65535) for _ in range(3)]
+            out.write("gtri %s %s %d %s %s %d %s %s %d %d\n" % (v[1], v[2], i[0], v[3], v[4], i[1], v[5], v[6],
+                                                                i[2], int(v[7]) & 0xF0))
+
+
 def write_scene(path, lists_dir):
     with open(path, "w") as f:
         for name in sorted(os.listdir(lists_dir)):
@@ -79,10 +94,16 @@ def main():
 
     runs = [(os.path.join(build, "sim-w%d" % width, "gpusim"), width, workloads) for width in WIDTHS]
     runs.append((os.path.join(build, "sim-z-w8", "gpusim"), 8, zworkloads))
+    gworkloads = {"glarge": os.path.join(work, "glarge.txt"), "gtiny": os.path.join(work, "gtiny.txt")}
+    write_gouraud(gworkloads["glarge"], workloads["large"], rng)
+    write_gouraud(gworkloads["gtiny"], workloads["tiny"], rng)
+    gworkloads["large (g build)"] = workloads["large"]
+    gworkloads["tiny (g build)"] = workloads["tiny"]
+    runs.append((os.path.join(build, "sim-g-w8", "gpusim"), 8, gworkloads))
     rows = []
     for sim, width, loads in runs:
         for name, path in loads.items():
-            out = os.path.join(work, "%s-w%d" % (name, width))
+            out = os.path.join(work, "%s-w%d" % (name.split()[0] + ("-g" if "(g" in name else ""), width))
             print("bench-gpu: %s, SPAN_W=%d ..." % (name, width), file=sys.stderr, flush=True)
             subprocess.run([sim, "raster", "--in", path, "--out", out], check=True, stdout=subprocess.DEVNULL)
             s = json.load(open(os.path.join(out, "stats.json")))

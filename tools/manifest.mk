@@ -43,6 +43,12 @@ endif
 MANIFEST_MK := $(BUILD)/manifest/$(LEAN_SCENE).mk
 include $(MANIFEST_MK)
 LEAN_DIR    := $(LEAN_ROOT)/$(LEAN_SCENE)
+# GOURAUD=1: the manifest's GPU with Gouraud triangles too (tag g1), for the scenes that carry
+# vertex normals (the firmware's FW_WITH_GOURAUD is on in every build unless FW_DEFS says not).
+ifeq ($(GOURAUD),1)
+MANIFEST_GPU_TAG    := $(if $(MANIFEST_GPU_TAG),$(MANIFEST_GPU_TAG)-g1,g1)
+MANIFEST_GPU_GFLAGS := $(strip $(MANIFEST_GPU_GFLAGS) -GENABLE_GOURAUD=1)
+endif
 MANIFEST_SIM_NAME := $(if $(MANIFEST_GPU_TAG),cfg-w$(SPAN_W)-$(MANIFEST_GPU_TAG),w$(SPAN_W))
 # Firmware: firmware.mk's FW_DIR (QEMU and soc platforms), socsim.mk's run-soc ELF, board.mk's.
 override FW_DIR        = $(LEAN_DIR)/firmware$(FW_PSUFFIX)
@@ -66,15 +72,16 @@ $(BUILD)/manifest/%.mk: firmware/scenes/%.manifest.toml tools/manifest.py firmwa
 	@$(PYTHON) tools/manifest.py $* --out $@
 
 # $(BUILD)/sim-cfg-<tag>/gpusim and sim-fast-cfg-<tag>/gpusim: the tag's words as -G parameters
-# (w SPAN_W, l ENABLE_LINES, z ENABLE_ZBUF, v VTX_CAP, t TRI_CAP); the rules are the Makefile's.
-manifest_gflags = $(foreach p,$(subst -, ,$(1)),$(patsubst t%,-GTRI_CAP=%,$(patsubst v%,-GVTX_CAP=%,\
-  $(patsubst z%,-GENABLE_ZBUF=%,$(patsubst l%,-GENABLE_LINES=%,$(patsubst w%,-GSPAN_W=%,$(p)))))))
+# (w SPAN_W, l ENABLE_LINES, z ENABLE_ZBUF, v VTX_CAP, t TRI_CAP, g ENABLE_GOURAUD); the rules are
+# the Makefile's.
+manifest_gflags = $(foreach p,$(subst -, ,$(1)),$(patsubst g%,-GENABLE_GOURAUD=%,$(patsubst t%,-GTRI_CAP=%,\
+  $(patsubst v%,-GVTX_CAP=%,$(patsubst z%,-GENABLE_ZBUF=%,$(patsubst l%,-GENABLE_LINES=%,$(patsubst w%,-GSPAN_W=%,$(p))))))))
 
 # The GPU parameters of a list of Verilator flags, as C definitions for the harness's per-simulator
 # sources (cosim/gpu_build.h): -GVTX_CAP=32 -> -DGPU_BUILD_VTX_CAP=32. Made from the same flags the
 # RTL is Verilated with, so the golden model beside a simulator has that simulator's sizes. (Here,
 # the first fragment the Makefile reads, so that every later one can use it at parse time.)
-GPU_BUILD_PARAMS := SPAN_W ENABLE_LINES ENABLE_ZBUF ZBUF_BITS VTX_CAP TRI_CAP
+GPU_BUILD_PARAMS := SPAN_W ENABLE_LINES ENABLE_ZBUF ZBUF_BITS ENABLE_GOURAUD VTX_CAP TRI_CAP
 gpu_build_defs = $(patsubst -G%,-DGPU_BUILD_%,$(filter $(foreach p,$(GPU_BUILD_PARAMS),-G$(p)=%),$(1)))
 
 .PHONY: manifest-show manifest-check lean-report

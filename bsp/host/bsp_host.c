@@ -44,6 +44,7 @@ void bsp_init(void)
     mc.lines = host_cfg.lines;
     mc.zbuf = host_cfg.zbuf;
     mc.wmask = !host_cfg.no_wmask;
+    mc.gouraud = host_cfg.gouraud;
     mc.zbuf_bits = host_cfg.zbuf_bits;
     gpu_model_reset_config(host_gpu, &mc);
     setvbuf(stdout, NULL, _IOLBF, 0);

@@ -23,6 +23,7 @@ struct bsp_host_config {
     bool lines;
     bool zbuf;
     bool no_wmask;           /* a GPU built without the write mask (CAPS_WMASK = 0) */
+    bool gouraud;            /* a GPU built with Gouraud triangles (CAPS_GOURAUD) */
     unsigned zbuf_bits;      /* ZBUF_BITS, 1 .. 16 */
     const char *dump_dir;    /* the scene of every frame for tools/exact_ref, NULL: none */
 };

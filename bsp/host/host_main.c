@@ -3,7 +3,7 @@
  * rendering through the golden model.
  *
  *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--zbuf-bits N] [--no-wmask]
- *           [--span-w N] [--model FILE] [--dump-scene DIR]
+ *           [--gouraud] [--span-w N] [--model FILE] [--dump-scene DIR]
  *
  *   --frames DIR      write each swapped frame as DIR/NNNN.png (as gpusim cosim does)
  *   --keys-at N:TEXT  type TEXT just before doorbell N (1 = first) is serviced, byte for byte
@@ -12,6 +12,7 @@
  *   --zbuf            model a GPU built with the depth buffer (CAPS_ZBUF = 1)
  *   --no-wmask        model a GPU built without the framebuffer write mask (CAPS_WMASK = 0)
  *   --zbuf-bits N     the depth bits its buffer keeps (ZBUF_BITS, CAPS_ZBUF_BITS: 1 .. 16; default 16)
+ *   --gouraud         model a GPU built with Gouraud triangles (CAPS_GOURAUD = 1)
  *   --span-w N        SPAN_W the model reports (1, 4, 8, 16; default 8)
  *   --dump-scene DIR  write each frame's scene after its update as DIR/NNNN.scene: world-space
  *                     triangles with their normals and materials, light, camera, palette (the
@@ -51,7 +52,7 @@ static int host_load_model(const char *path)
 static int host_usage(void)
 {
     fprintf(stderr, "usage: fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] "
-                    "[--zbuf-bits N] [--no-wmask] [--span-w N] [--model FILE] [--dump-scene DIR]\n");
+                    "[--zbuf-bits N] [--no-wmask] [--gouraud] [--span-w N] [--model FILE] [--dump-scene DIR]\n");
     return 2;
 }
 
@@ -104,6 +105,8 @@ int main(int argc, char **argv)
                 return 2;
             }
             cfg.zbuf_bits = (unsigned)bits;
+        } else if (strcmp(a, "--gouraud") == 0) {
+            cfg.gouraud = true;
         } else if (strcmp(a, "--dump-scene") == 0 && has_value) {
             cfg.dump_dir = argv[++i];
             if (mkdir(cfg.dump_dir, 0755) != 0) {

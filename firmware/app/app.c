@@ -476,6 +476,9 @@ static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last
         if (app->depth_test) {
             batch.ctrl |= GPU_CTRL_ZTEST_MASK | (first ? GPU_CTRL_ZCLEAR_MASK : 0u);
         }
+        if (FW_WITH_GOURAUD && FW_GOURAUD && FW_DITHER && gpu_caps_gouraud(app->gpu.info.caps)) {
+            batch.ctrl |= GPU_CTRL_DITHER_MASK;  /* acts on Gouraud triangles only */
+        }
         rc = gpu_submit_batch(&app->gpu, &batch, &tag);
         if (rc != GPU_OK) {
             printf("error: frame %u: batch not submitted: %s\n", frame_no, gpu_strerror(rc));
@@ -529,6 +532,7 @@ static void app_render_pass(struct app *app, int eye, struct frame_totals *tot)
     opts.depth_test = app->depth_test;
     opts.gpu_lines = gpu_caps_lines(app->gpu.info.caps);
     opts.eye_planes = app_eye_planes(app);
+    opts.gouraud = FW_WITH_GOURAUD && FW_GOURAUD && gpu_caps_gouraud(app->gpu.info.caps);
     pipeline_pass(&app->frame, &app->scene, &opts, eye, app_clock, &times);
     tot->t_draw = times.draw;
     tot->t_sort = times.sort;

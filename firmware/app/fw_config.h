@@ -26,6 +26,17 @@
 #define FW_DEPTH_TEST 0
 #endif
 
+/* Gouraud shading (needs FW_WITH_GOURAUD and a GPU with CAPS_GOURAUD): 1, the default, draws the
+ * meshes that carry vertex normals (the landscape's) with per-vertex light, interpolated by the GPU;
+ * 0 draws every scene flat. FW_DITHER: 1 sets CTRL_DITHER (4x4 ordered dither between adjacent
+ * ramp levels), 0 rounds each pixel's level down. Both accuracy knobs of `make bench-error`. */
+#ifndef FW_GOURAUD
+#define FW_GOURAUD 1
+#endif
+#ifndef FW_DITHER
+#define FW_DITHER 1
+#endif
+
 /* Fraction bits kept in projected screen coordinates, 0..4 (the contract's Q12.4 carries 4):
  * fewer bits round every vertex to a coarser grid (0: whole pixels). An accuracy knob for
  * `make bench-error`; 4, the default, builds exactly the full-precision code. make FW_SUBPIXEL_BITS=... */
@@ -43,7 +54,9 @@
  *                      the F key on a GPU without lines then says so and stays off
  *   FW_WITH_ANAGLYPH   the G key's red/cyan stereo (a second pass per frame)
  *   FW_WITH_DEPTH      the GPU's depth test: VTX_Z per vertex and the Z key
- *   FW_WITH_LIGHTING   flat light per face; without, every face shows its material at full level */
+ *   FW_WITH_LIGHTING   flat light per face; without, every face shows its material at full level
+ *   FW_WITH_GOURAUD    per-vertex light and Gouraud triangles for meshes with vertex normals;
+ *                      without, every face is flat (and the scenes keep no vertex normals) */
 #ifndef FW_WITH_WIREFRAME
 #define FW_WITH_WIREFRAME 1
 #endif
@@ -58,6 +71,9 @@
 #endif
 #ifndef FW_WITH_LIGHTING
 #define FW_WITH_LIGHTING 1
+#endif
+#ifndef FW_WITH_GOURAUD
+#define FW_WITH_GOURAUD 1
 #endif
 
 /* 1: models can be uploaded over the UART while the firmware runs (model/upload.c,

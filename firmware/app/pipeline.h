@@ -29,6 +29,7 @@ struct pipeline_opts {
     bool gpu_lines;   /* the GPU draws line primitives (CAPS_LINES) */
     bool eye_planes;  /* anaglyph through the write mask (CAPS_WMASK): an eye's colours are levels
                        * in both nibbles (palette.h, palette_build_anaglyph), its pass writing one */
+    bool gouraud;     /* meshes with vertex normals as Gouraud triangles (CAPS_GOURAUD, FW_GOURAUD) */
 };
 
 /* An eye pass's colours as the write mask's anaglyph wants them: each primitive's light level (the
@@ -79,6 +80,7 @@ static inline void pipeline_pass(struct render_frame *f, const struct scene *s,
     pass.proj.zbuf = opts->depth_test;
     pass.wireframe = opts->wireframe;
     pass.gpu_lines = opts->gpu_lines;
+    pass.gouraud = FW_WITH_GOURAUD && opts->gouraud;
     pass.eye_material = (eye < 0) ? MAT_ANAGLYPH_LEFT : ((eye > 0) ? MAT_ANAGLYPH_RIGHT : 0u);
     render_frame_begin(f);
     scene_draw(s, f, &pass);

@@ -16,7 +16,7 @@ void batch_begin(struct batch_cursor *cur)
 #if !(defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && \
       GPU_VTX_WORDS == 2 && GPU_PRIM_WORDS == 2 && \
       GPU_VTX_X_WORD == 0 && GPU_VTX_X_LSB == 0 && GPU_VTX_Y_WORD == 0 && GPU_VTX_Y_LSB == 16 && \
-      GPU_VTX_Z_WORD == 1 && GPU_VTX_Z_LSB == 0 && \
+      GPU_VTX_Z_WORD == 1 && GPU_VTX_Z_LSB == 0 && GPU_VTX_I_WORD == 1 && GPU_VTX_I_LSB == 16 && \
       GPU_PRIM_I0_WORD == 0 && GPU_PRIM_I0_LSB == 0 && GPU_PRIM_I1_WORD == 0 && \
       GPU_PRIM_I1_LSB == 16 && GPU_PRIM_I2_WORD == 1 && GPU_PRIM_I2_LSB == 0 && \
       GPU_PRIM_COLOR_WORD == 1 && GPU_PRIM_COLOR_LSB == 16 && GPU_PRIM_KIND_WORD == 1 && \
@@ -24,10 +24,13 @@ void batch_begin(struct batch_cursor *cur)
 #error "batch.c copies proj_vertex and render_prim words as the GPU's: this CPU or contract differs"
 #endif
 
+/* Word 1: VTX_Z and, with Gouraud built in, VTX_I from the depth half-word, which holds a shaded
+ * object's vertex intensity by now (render.h); a flat object's sort depth there is never read,
+ * since only Gouraud triangles read VTX_I. */
 static inline void batch_put_vertex(uint32_t *w, const struct proj_vertex *v)
 {
     w[0] = v->sxy;
-    w[1] = v->zbuf;
+    w[1] = FW_WITH_GOURAUD ? v->zd : v->zbuf;
 }
 
 /* The vertex's slot in the current batch, writing it there first if the batch lacks it.

@@ -71,6 +71,11 @@ static inline uint32_t gpu_caps_zbuf_bits(uint32_t caps)
     return (caps & GPU_CAPS_ZBUF_BITS_MASK) >> GPU_CAPS_ZBUF_BITS_LSB;
 }
 
+static inline bool gpu_caps_gouraud(uint32_t caps)
+{
+    return (caps & GPU_CAPS_GOURAUD_MASK) != 0u;
+}
+
 /* What the device reports about itself (read by gpu_init). */
 struct gpu_info {
     uint32_t id;

@@ -106,6 +106,32 @@ uvec3 uvec3_normalize(uvec3 u)
 #endif
 }
 
+uvec3 uvec3_mean_direction(const uvec3 *u, uint32_t n)
+{
+#if REAL_IS_FIXED
+    /* n <= 64 unit vectors of |u_i| <= 2^30 (q2_30, a little over 1 at most): sums below 2^37. */
+    int64_t x = 0;
+    int64_t y = 0;
+    int64_t z = 0;
+
+    for (uint32_t i = 0; i < n; i++) {
+        x += u[i].x;
+        y += u[i].y;
+        z += u[i].z;
+    }
+    return vec_direction64(x, y, z);
+#else
+    vec3 s = vec3_make(0.0f, 0.0f, 0.0f);
+
+    for (uint32_t i = 0; i < n; i++) {
+        s.x += u[i].x;
+        s.y += u[i].y;
+        s.z += u[i].z;
+    }
+    return vec3_direction(s);
+#endif
+}
+
 uvec3 vec3_triangle_normal(vec3 a, vec3 b, vec3 c)
 {
 #if REAL_IS_FIXED

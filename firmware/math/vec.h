@@ -120,6 +120,9 @@ real_t vec3_length(vec3 v);
 uvec3 vec3_direction(vec3 v);
 /* u / |u| for a direction that has drifted from unit length; {0, 0, 0} for u = 0. */
 uvec3 uvec3_normalize(uvec3 u);
+/* The direction of u[0] + ... + u[n-1] (n <= 64 unit vectors): a vertex normal averaged from the
+ * normals of the faces around it; {0, 0, 0} when they cancel. Fixed: summed exactly in int64. */
+uvec3 uvec3_mean_direction(const uvec3 *u, uint32_t n);
 /* Unit normal of (b - a) x (c - a); {0, 0, 0} for a degenerate triangle. Coordinates within
  * +-8192 (the fixed backend forms the cross product exactly in int64: edges < 2^30 raw, products
  * < 2^60, differences < 2^61). */

@@ -57,12 +57,27 @@ static real_t clip_lerp(real_t a, real_t b, clip_value_t da, clip_value_t db)
 #endif
 }
 
+/* An intensity (0 .. 65535) at the same t: fixed, clip_lerp's exact form on the integers ((b - a)
+ * da < 2^16 * 2^31.2); float, the same lerp, rounded to nearest and kept in range. */
+static int32_t clip_lerp_shade(int32_t a, int32_t b, clip_value_t da, clip_value_t db)
+{
+#if REAL_IS_FIXED
+    return (int32_t)clip_lerp((real_t)a, (real_t)b, da, db);
+#else
+    const float s = (float)a + (float)(b - a) * (da / (da - db));
+    const int32_t r = (int32_t)(s + 0.5f);
+
+    return (r < 0) ? 0 : ((r > 65535) ? 65535 : r);
+#endif
+}
+
 uint32_t clip_against(const struct proj_setup *ps, struct clip_polygon *poly, enum clip_plane plane)
 {
     struct clip_polygon out;
     const uint32_t n = poly->count;
 
     out.count = 0;
+    out.has_shade = poly->has_shade;
     for (uint32_t i = 0; i < n; i++) {
         const vec3 a = poly->v[i];
         const vec3 b = poly->v[(i + 1u) % n];
@@ -70,6 +85,9 @@ uint32_t clip_against(const struct proj_setup *ps, struct clip_polygon *poly, en
         const clip_value_t db = clip_value(ps, b, plane);
 
         if (da >= 0 && out.count < CLIP_MAX_VERTS) {
+            if (poly->has_shade) {
+                out.shade[out.count] = poly->shade[i];
+            }
             out.v[out.count++] = a;
         }
         if (((da > 0 && db < 0) || (da < 0 && db > 0)) && out.count < CLIP_MAX_VERTS) {
@@ -78,12 +96,17 @@ uint32_t clip_against(const struct proj_setup *ps, struct clip_polygon *poly, en
             p.x = clip_lerp(a.x, b.x, da, db);
             p.y = clip_lerp(a.y, b.y, da, db);
             p.z = (plane == CLIP_NEAR) ? ps->near : clip_lerp(a.z, b.z, da, db);
+            if (poly->has_shade) {
+                out.shade[out.count] = clip_lerp_shade(poly->shade[i], poly->shade[(i + 1u) % n], da, db);
+            }
             out.v[out.count++] = p;
         }
     }
     *poly = out;
     return out.count;
 }
+
+static uint32_t clip_run(const struct proj_setup *ps, struct clip_polygon *out);
 
 uint32_t clip_triangle(const struct proj_setup *ps, vec3 a, vec3 b, vec3 c,
                        struct clip_polygon *out)
@@ -92,6 +115,26 @@ uint32_t clip_triangle(const struct proj_setup *ps, vec3 a, vec3 b, vec3 c,
     out->v[1] = b;
     out->v[2] = c;
     out->count = 3;
+    out->has_shade = false;
+    return clip_run(ps, out);
+}
+
+uint32_t clip_triangle_shaded(const struct proj_setup *ps, vec3 a, vec3 b, vec3 c,
+                              const int32_t shade[3], struct clip_polygon *out)
+{
+    out->v[0] = a;
+    out->v[1] = b;
+    out->v[2] = c;
+    out->shade[0] = shade[0];
+    out->shade[1] = shade[1];
+    out->shade[2] = shade[2];
+    out->count = 3;
+    out->has_shade = true;
+    return clip_run(ps, out);
+}
+
+static uint32_t clip_run(const struct proj_setup *ps, struct clip_polygon *out)
+{
     for (int plane = CLIP_NEAR; plane < CLIP_PLANE_COUNT && out->count >= 3u; plane++) {
         uint32_t outside = 0;
 

@@ -19,6 +19,7 @@
 #ifndef CLIP_H
 #define CLIP_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "render/proj.h"
@@ -35,9 +36,14 @@ enum clip_plane {
     CLIP_PLANE_COUNT
 };
 
+/* shade: a Gouraud vertex intensity (Q4.12, 0 .. 65535) per vertex, carried through the clip when
+ * has_shade: a new vertex gets a + (b - a) t, rounded like its coordinates (t the same), so it lies
+ * on the intensity plane of the triangle up to that rounding. */
 struct clip_polygon {
     vec3 v[CLIP_MAX_VERTS];
+    int32_t shade[CLIP_MAX_VERTS];
     uint32_t count;
+    bool has_shade;
 };
 
 /* Clip the polygon in place against one plane; returns the new vertex count (0: all outside). */
@@ -47,6 +53,9 @@ uint32_t clip_against(const struct proj_setup *ps, struct clip_polygon *poly, en
  * outside of. Returns the vertex count of *out (0, or 3 .. CLIP_MAX_VERTS), winding preserved. */
 uint32_t clip_triangle(const struct proj_setup *ps, vec3 a, vec3 b, vec3 c,
                        struct clip_polygon *out);
+/* The same, carrying the three vertices' intensities shade[0..2] (0 .. 65535) into out->shade. */
+uint32_t clip_triangle_shaded(const struct proj_setup *ps, vec3 a, vec3 b, vec3 c,
+                              const int32_t shade[3], struct clip_polygon *out);
 
 /* True when v is inside (value >= 0) the plane. */
 int clip_inside(const struct proj_setup *ps, vec3 v, enum clip_plane plane);

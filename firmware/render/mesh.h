@@ -132,6 +132,27 @@ static inline void mesh_grid_face(const struct mesh_grid *g, uint32_t i, uint32_
     out->flags = (uint8_t)MESH_FACE_EDGE_HIDDEN((half == 0u) ? 2u : 0u);
 }
 
+/* Per-vertex normals (a render_object's vnormal14, render.h): 3 Q1.14 values a vertex, as a grid
+ * mesh's normal14 holds per quad. Normal i widened as mesh_normal widens a grid's. */
+static inline uvec3 mesh_q14_normal(const int16_t *normal14, uint32_t i)
+{
+    const int16_t *n = &normal14[3u * i];
+    uvec3 u;
+
+    u.x = unit_from_q16((q16_16)n[0] * 4);
+    u.y = unit_from_q16((q16_16)n[1] * 4);
+    u.z = unit_from_q16((q16_16)n[2] * 4);
+    return u;
+}
+
+/* A unit normal as such a Q1.14 triple (mesh_q14_from_unit per component). */
+static inline void mesh_normal_to_q14(uvec3 n, int16_t out[3])
+{
+    out[0] = mesh_q14_from_unit(n.x);
+    out[1] = mesh_q14_from_unit(n.y);
+    out[2] = mesh_q14_from_unit(n.z);
+}
+
 /* Face fi of any mesh: a pointer into faces[], or for a grid mesh *tmp filled. */
 const struct mesh_face *mesh_face_at(const struct mesh *m, uint32_t fi, struct mesh_face *tmp);
 

@@ -128,4 +128,43 @@ static inline uint32_t palette_light_level(const struct palette_light *pl, uvec3
 #endif
 }
 
+/* The largest VTX_I the firmware writes: level 15.0 in the GPU's Q4.12 (contract, "Gouraud
+ * intensity"), the material's full colour, as the flat rule's top level. */
+#define PAL_INTENSITY_MAX (15u << 12)
+
+/*
+ * The same light as a Gouraud vertex intensity, Q4.12 (VTX_I): the level before rounding down,
+ *   I = 4096 (ambient + (15 - ambient) max(0, n . l))      (at most PAL_INTENSITY_MAX)
+ * so that I >> 12 is exactly palette_light_level's level for the same normal (the GPU's undithered
+ * level of a vertex) and the fraction is what the GPU interpolates and dithers. Fixed: the sum d is
+ * the level's Q7.25 (palette_light_level: 0 <= d < 15 * 2^25 when positive), and d >> 13 its
+ * Q.12, below 15 * 2^12; plus ambient * 2^12 <= 15 * 2^12 the total stays below 2^17, clamped to
+ * PAL_INTENSITY_MAX. Float: the same on floats, truncated to Q4.12.
+ */
+static inline uint32_t palette_light_intensity(const struct palette_light *pl, uvec3 n)
+{
+#if !FW_WITH_LIGHTING
+    (void)pl;
+    (void)n;
+    return PAL_INTENSITY_MAX;
+#else
+    uint32_t inten = pl->ambient << 12;
+#if REAL_IS_FIXED
+    const int32_t d = fx_mulh(n.x, pl->scaled[0]) + fx_mulh(n.y, pl->scaled[1]) +
+                      fx_mulh(n.z, pl->scaled[2]);
+
+    if (d > 0) {
+        inten += (uint32_t)d >> 13;
+    }
+#else
+    const float d = n.x * pl->scaled[0] + n.y * pl->scaled[1] + n.z * pl->scaled[2];
+
+    if (d > 0.0f) {
+        inten += (uint32_t)(d * 4096.0f);
+    }
+#endif
+    return (inten > PAL_INTENSITY_MAX) ? PAL_INTENSITY_MAX : inten;
+#endif
+}
+
 #endif /* PALETTE_H */

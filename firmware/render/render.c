@@ -38,6 +38,7 @@ void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,
     pass->eye_material = 0;
     pass->wireframe = false;
     pass->gpu_lines = true;
+    pass->gouraud = false;
 }
 
 void render_level_cache_init(struct render_level_cache *c, uint8_t *storage, uint32_t cap)
@@ -321,7 +322,7 @@ static bool render_edge_first(struct render_frame *f, uint32_t a, uint32_t b)
  * n-1 -> 0, in that order, all with the polygon's key. n <= 9 (clip.h), so a bit mask holds them. */
 static void render_emit_polygon(struct render_frame *f, const struct render_pass *pass,
                                 const uint32_t *idx, uint32_t n, uint32_t hidden, uint8_t color,
-                                uint16_t key)
+                                uint16_t key, uint8_t tri_kind)
 {
     const bool wire = FW_WITH_WIREFRAME && pass->wireframe;
     uint32_t draw = 0;  /* bit k: edge k is drawn */
@@ -344,7 +345,7 @@ static void render_emit_polygon(struct render_frame *f, const struct render_pass
         return;  /* without emulation app.c keeps the wireframe off on such a GPU */
     }
     for (uint32_t k = 1; k + 1u < n; k++) {
-        uint8_t kind = (uint8_t)GPU_PRIM_KIND_TRI;
+        uint8_t kind = tri_kind;  /* GPU_PRIM_KIND_TRI, or _TRI_GOURAUD (never in wireframe) */
 
         if (wire) {
             const uint32_t edges = (((draw >> k) & 1u) << 1) | ((k == 1u) ? (draw & 1u) : 0u) |
@@ -395,8 +396,10 @@ static uint32_t render_material_override(const struct render_pass *pass,
 static void render_clipped_face(struct render_frame *f, const struct render_pass *pass,
                                 const xf_affine *mv, const struct mesh *mesh,
                                 const struct mesh_face *face, const struct palette_light *light,
-                                uint32_t material_override)
+                                uint32_t material_override, const int16_t *vnormal14)
 {
+    const bool shaded = FW_WITH_GOURAUD && vnormal14 != 0;  /* Gouraud: its vertex normals
+                                                             * (render_object) */
     struct clip_polygon poly;
     uint32_t idx[CLIP_MAX_VERTS];
     const uint32_t first = f->vert_count;
@@ -407,9 +410,23 @@ static void render_clipped_face(struct render_frame *f, const struct render_pass
 
     f->stats.faces_clipped++;
     /* The same transform as the fast path, so shared vertices land on the same pixels. */
-    n = clip_triangle(&pass->proj, xf_apply(mv, mesh->verts[face->v[0]]),
-                      xf_apply(mv, mesh->verts[face->v[1]]),
-                      xf_apply(mv, mesh->verts[face->v[2]]), &poly);
+#if FW_WITH_GOURAUD
+    if (shaded) {
+        int32_t shade[3];
+
+        for (uint32_t k = 0; k < 3u; k++) {
+            shade[k] = (int32_t)palette_light_intensity(light, mesh_q14_normal(vnormal14, face->v[k]));
+        }
+        n = clip_triangle_shaded(&pass->proj, xf_apply(mv, mesh->verts[face->v[0]]),
+                                 xf_apply(mv, mesh->verts[face->v[1]]),
+                                 xf_apply(mv, mesh->verts[face->v[2]]), shade, &poly);
+    } else
+#endif
+    {
+        n = clip_triangle(&pass->proj, xf_apply(mv, mesh->verts[face->v[0]]),
+                          xf_apply(mv, mesh->verts[face->v[1]]),
+                          xf_apply(mv, mesh->verts[face->v[2]]), &poly);
+    }
     if (n == 0u) {
         f->stats.faces_clipped_away++;
         return;
@@ -443,10 +460,28 @@ static void render_clipped_face(struct render_frame *f, const struct render_pass
     }
     /* Key: the polygon's mean depth, times three like the fast path's sum. n <= 9. */
     depth_sum = depth_sum * 3u / n;
+#if FW_WITH_GOURAUD
+    if (shaded) {
+        const uint32_t mat = (material_override != 0u) ? material_override : face->material;
+
+        /* A clipped polygon's edges are not the face's (hidden edges are not tracked through
+         * clip.c): every one is drawn. */
+        render_emit_polygon(f, pass, idx, n, 0u, PAL_INDEX(mat, 0u),
+                            (uint16_t)((depth_sum > 65535u) ? 65535u : depth_sum),
+                            (uint8_t)GPU_PRIM_KIND_TRI_GOURAUD);
+        /* The key is formed: the new vertices' depth half-words now carry their intensity. */
+        for (uint32_t k = 0; k < n; k++) {
+            f->vert[idx[k]].depth = (uint16_t)poly.shade[k];
+        }
+        f->stats.faces_emitted++;
+        return;
+    }
+#endif
     /* A clipped polygon's edges are not the face's (hidden edges are not tracked through
      * clip.c): every one is drawn. */
     render_emit_polygon(f, pass, idx, n, 0u, render_face_color(light, mesh, face, material_override),
-                        (uint16_t)((depth_sum > 65535u) ? 65535u : depth_sum));
+                        (uint16_t)((depth_sum > 65535u) ? 65535u : depth_sum),
+                        (uint8_t)GPU_PRIM_KIND_TRI);
     f->stats.faces_emitted++;
 }
 
@@ -497,22 +532,28 @@ render_project_box(const struct proj_setup *ps, const xf_affine *mv, const struc
 static void __attribute__((noinline))
 render_face_general(struct render_frame *f, const struct render_pass *pass, const xf_affine *mv,
                     const struct mesh *mesh, const struct mesh_face *face, uint32_t base,
-                    const struct palette_light *light, uint32_t material_override)
+                    const struct palette_light *light, uint32_t material_override,
+                    const int16_t *vnormal14)
 {
+    const bool shaded = FW_WITH_GOURAUD && vnormal14 != 0;
     const struct proj_vertex *a = &f->vert[base + face->v[0]];
     const struct proj_vertex *b = &f->vert[base + face->v[1]];
     const struct proj_vertex *c = &f->vert[base + face->v[2]];
 
     if (((a->code | b->code | c->code) & PROJ_CLIP_BITS) != 0u) {
-        render_clipped_face(f, pass, mv, mesh, face, light, material_override);
+        render_clipped_face(f, pass, mv, mesh, face, light, material_override, vnormal14);
     } else if (proj_signed_area(a, b, c) <= 0) {
         f->stats.faces_back++;
     } else {
         const uint32_t idx[3] = {base + face->v[0], base + face->v[1], base + face->v[2]};
 
+        const uint32_t mat = (material_override != 0u) ? material_override : face->material;
+
         render_emit_polygon(f, pass, idx, 3u, (uint32_t)(face->flags & MESH_FACE_EDGES_HIDDEN) >> 1,
-                            render_face_color(light, mesh, face, material_override),
-                            (uint16_t)render_face_key(face, a, b, c));
+                            shaded ? PAL_INDEX(mat, 0u)
+                                   : render_face_color(light, mesh, face, material_override),
+                            (uint16_t)render_face_key(face, a, b, c),
+                            shaded ? (uint8_t)GPU_PRIM_KIND_TRI_GOURAUD : (uint8_t)GPU_PRIM_KIND_TRI);
         f->stats.faces_emitted++;
     }
 }
@@ -526,6 +567,7 @@ struct render_faces_job {
     uint8_t *levels;             /* 0, or the object's cached level per normal (filled lazily) */
     uint32_t base;               /* index of the object's first vertex in the frame */
     uint32_t material_override;
+    const int16_t *vnormal14;    /* Gouraud: the object's vertex normals; 0: flat */
 };
 
 /*
@@ -548,6 +590,7 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     const uint32_t base = job->base;
     const uint32_t material_override = job->material_override;
     const bool general = FW_WITH_WIREFRAME && job->pass->wireframe;
+    const bool shaded = FW_WITH_GOURAUD && job->vnormal14 != 0;  /* 0 in wireframe (render_object) */
     struct render_prim *prim = f->prim;
     uint32_t *sort_item = f->sort_item;
     const uint32_t prim_cap = f->prim_cap;
@@ -588,7 +631,7 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
         if ((check && ((a->code | b->code | c->code) & PROJ_CLIP_BITS) != 0u) || general) {
             f->prim_count = np;
             render_face_general(f, job->pass, job->mv, mesh, face, base, job->light,
-                                material_override);
+                                material_override, job->vnormal14);
             np_general += f->prim_count - np;
             np = f->prim_count;
             continue;
@@ -606,6 +649,13 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
         p->v[1] = (uint16_t)(base + face->v[1]);
         p->v[2] = (uint16_t)(base + face->v[2]);
         mat = (material_override != 0u) ? material_override : face->material;
+        if (shaded) {
+            p->color = PAL_INDEX(mat, 0u);
+            p->kind = (uint8_t)GPU_PRIM_KIND_TRI_GOURAUD;
+            sort_item[np] = render_sort_item(render_face_key(face, a, b, c), np);
+            np++;
+            continue;
+        }
         if (cached) {
             level = levels[face->normal];
             if (level == RENDER_LEVEL_UNKNOWN) {
@@ -685,6 +735,8 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
     job.mesh = mesh;
     job.light = &light;
     job.material_override = render_material_override(pass, obj);
+    job.vnormal14 = (FW_WITH_GOURAUD && pass->gouraud && !(FW_WITH_WIREFRAME && pass->wireframe))
+                        ? obj->vnormal14 : 0;
     /* Four specialisations of the face loop, so that neither test costs a face anything; a grid
      * mesh (implicit faces, mesh.h) takes a fifth, with every test on and no cache. */
     if (mesh->grid.rows != 0u) {
@@ -703,6 +755,17 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
             render_faces(f, &job, true, false, false);
         }
     }
+#if FW_WITH_GOURAUD
+    /* Every face has its sort key: the object's vertices' depth half-words become their
+     * intensities (VTX_I), which only its Gouraud triangles read. */
+    if (job.vnormal14 != 0) {
+        struct proj_vertex *v = &f->vert[job.base];
+
+        for (uint32_t i = 0; i < nv; i++) {
+            v[i].depth = (uint16_t)palette_light_intensity(&light, mesh_q14_normal(obj->vnormal14, i));
+        }
+    }
+#endif
 }
 
 void render_sort(struct render_frame *f)

@@ -23,6 +23,13 @@
  *
  * Colour: flat lighting per face (palette.h), the light taken into model space once per object.
  * In anaglyph mode the face's material is replaced by the eye's red or cyan ramp.
+ * Gouraud (FW_WITH_GOURAUD, pass.gouraud, a mesh with vertex normals, filled faces): every vertex
+ * gets its light as a Q4.12 intensity (palette_light_intensity of its averaged normal) and each
+ * face becomes a GPU_PRIM_KIND_TRI_GOURAUD primitive coloured with its material's ramp base
+ * (shade 0): the GPU interpolates the intensity and adds the level. The intensity travels in the
+ * frame vertex's `depth` half-word, written once the object's faces have their sort keys (the
+ * only reader of `depth`), so a frame vertex stays 12 bytes; a clipped face's new vertices get
+ * theirs through clip.c, interpolated like their positions.
  *
  * All state lives in the caller's render_frame; nothing is global.
  */
@@ -117,6 +124,7 @@ struct render_pass {
     uint8_t eye_material; /* 0, or MAT_ANAGLYPH_LEFT / _RIGHT: every face uses that ramp */
     bool wireframe;
     bool gpu_lines;       /* the GPU draws line primitives (CAPS_LINES) */
+    bool gouraud;         /* meshes with vertex normals are Gouraud shaded (CAPS_GOURAUD) */
 };
 
 /*
@@ -155,6 +163,9 @@ struct render_object {
     vec3 pos;
     uint8_t material;     /* 0: each face's own material; else this one for every face */
     struct render_level_cache *levels;  /* 0, or the cache of a static mesh's light levels */
+    /* 0, or the mesh's per-vertex unit normals (3 Q1.14 values a vertex, mesh_q14_normal): the
+     * object asks to be Gouraud shaded (where pass.gouraud; flat otherwise, and in wireframe). */
+    const int16_t *vnormal14;
 };
 
 /* Compose a pass. light: unit vector towards the light in world space. */

@@ -3,6 +3,11 @@
  * each (2048), in 4 x 4 tiles so that frustum culling can drop whole tiles. Heights from a few
  * table sines of the grid indices (integer inputs: both backends build the same terrain), water
  * flattened at sea level, materials by height. Fly mode.
+ *
+ * Gouraud (FW_WITH_GOURAUD): every vertex carries the mean of the unit normals of the faces around
+ * its grid point in the whole terrain (land_vertex_normal), so the tiles' shared border vertices
+ * get the same normal on either side and the shading has no seams; the GPU then interpolates the
+ * light across each face where it can (CAPS_GOURAUD), and the scene stays flat where it cannot.
  */
 #include "render/palette.h"
 #include "scenes/scene.h"
@@ -20,6 +25,9 @@ struct landscape_tile {
     /* The terrain never changes: its light levels carry over from frame to frame (render.h). */
     uint8_t level[LANDSCAPE_TILE_FACES];
     struct render_level_cache levels;
+#if FW_WITH_GOURAUD
+    int16_t vnormal[LANDSCAPE_TILE_VERTS * 3];  /* per-vertex normals, Q1.14 (mesh.h) */
+#endif
 };
 
 struct landscape_state {
@@ -60,6 +68,55 @@ static uint8_t land_material(q16_16 mean_height)
     return MAT_WHITE;
 }
 
+/* Grid point (gi, gj) of the terrain, model space: the vertex land_build_tile makes for it. */
+static vec3 land_point(int32_t gi, int32_t gj)
+{
+    return vec3_make(real_from_int((gi - LAND_CELLS / 2) * LAND_CELL_SIZE),
+                     real_from_q16(land_height(gi, gj) * 3 / 2),
+                     real_from_int((gj - LAND_CELLS / 2) * LAND_CELL_SIZE));
+}
+
+#if FW_WITH_GOURAUD
+/* The normal of grid point (gi, gj): the direction of the sum of the unit normals of every face
+ * of the whole terrain that has it as a corner (the cells (gi-1 .. gi, gj-1 .. gj) that exist,
+ * each split along the diagonal land_build_tile chooses; 1 .. 8 faces). The face normals are the
+ * ones mesh_add_face computes from the same corners and winding, so the mean is the faces' own. */
+static uvec3 land_vertex_normal(int32_t gi, int32_t gj)
+{
+    uvec3 n[8];
+    uint32_t count = 0;
+
+    for (int32_t cj = gj - 1; cj <= gj; cj++) {
+        for (int32_t ci = gi - 1; ci <= gi; ci++) {
+            /* Corners as land_build_tile's: a = (i, j), b = (i, j+1), c = (i+1, j+1), d = (i+1, j). */
+            const int32_t ci_[4] = {ci, ci, ci + 1, ci + 1};
+            const int32_t cj_[4] = {cj, cj + 1, cj + 1, cj};
+            /* The two faces of the cell as corner numbers (0 = a .. 3 = d). */
+            static const uint8_t even[2][3] = {{0, 1, 2}, {0, 2, 3}};
+            static const uint8_t odd[2][3] = {{0, 1, 3}, {1, 2, 3}};
+
+            if (ci < 0 || cj < 0 || ci >= LAND_CELLS || cj >= LAND_CELLS) {
+                continue;
+            }
+            for (uint32_t h = 0; h < 2u; h++) {
+                const uint8_t *fc = (((ci + cj) & 1) == 0) ? even[h] : odd[h];
+                bool has = false;
+
+                for (uint32_t k = 0; k < 3u; k++) {
+                    has = has || (ci_[fc[k]] == gi && cj_[fc[k]] == gj);
+                }
+                if (has) {
+                    n[count++] = vec3_triangle_normal(land_point(ci_[fc[0]], cj_[fc[0]]),
+                                                      land_point(ci_[fc[1]], cj_[fc[1]]),
+                                                      land_point(ci_[fc[2]], cj_[fc[2]]));
+                }
+            }
+        }
+    }
+    return uvec3_mean_direction(n, count);
+}
+#endif
+
 static void land_build_tile(struct landscape_tile *t, int32_t ti, int32_t tj)
 {
     struct mesh *m = &t->mesh;
@@ -72,9 +129,10 @@ static void land_build_tile(struct landscape_tile *t, int32_t ti, int32_t tj)
             const int32_t gi = ti * n + i;
             const int32_t gj = tj * n + j;
 
-            mesh_add_vertex(m, vec3_make(real_from_int((gi - LAND_CELLS / 2) * LAND_CELL_SIZE),
-                                         real_from_q16(land_height(gi, gj) * 3 / 2),
-                                         real_from_int((gj - LAND_CELLS / 2) * LAND_CELL_SIZE)));
+            mesh_add_vertex(m, land_point(gi, gj));
+#if FW_WITH_GOURAUD
+            mesh_normal_to_q14(land_vertex_normal(gi, gj), &t->vnormal[3 * (j * (n + 1) + i)]);
+#endif
         }
     }
     for (int32_t j = 0; j < n; j++) {
@@ -118,6 +176,9 @@ static void land_init(struct scene *s)
             scene_add_object(s, &t->mesh, &id, vec3_make(0, 0, 0), 0);
             render_level_cache_init(&t->levels, t->level, LANDSCAPE_TILE_FACES);
             s->object[s->object_count - 1u].levels = &t->levels;
+#if FW_WITH_GOURAUD
+            s->object[s->object_count - 1u].vnormal14 = t->vnormal;
+#endif
         }
     }
     cfg.box_min = vec3_make(REAL_C(-96), REAL_C(-8), REAL_C(-96));

@@ -114,6 +114,7 @@ void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, ve
     o->pos = pos;
     o->material = material;
     o->levels = 0;
+    o->vnormal14 = 0;
 }
 
 bool scene_start(struct scene *s, const struct scene_desc *desc)

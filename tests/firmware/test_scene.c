@@ -579,3 +579,41 @@ void test_scene_voxel_pool(void)
     }
     CHECK_EQ(faces, VOXEL_POOL_GEN_FACES);
 }
+
+/* The landscape asks for Gouraud shading: every tile carries vertex normals, unit length and
+ * facing up (a height field), and a grid point shared by two tiles has the same normal in both
+ * (averaged over the whole terrain's faces: no seam in the shading at a tile border). */
+void test_scene_landscape_normals(void)
+{
+    uint32_t shared = 0;
+
+    CHECK(scene_start(&scene, scene_find("landscape")));
+    for (uint32_t a = 0; a < scene.object_count; a++) {
+        const struct render_object *oa = &scene.object[a];
+
+        CHECK(FW_WITH_GOURAUD == 0 || oa->vnormal14 != 0);
+        if (oa->vnormal14 == 0) {
+            continue;
+        }
+        for (uint32_t i = 0; i < oa->mesh->vert_count; i++) {
+            const uvec3 n = mesh_q14_normal(oa->vnormal14, i);
+            const double len = sqrt(ud(n.x) * ud(n.x) + ud(n.y) * ud(n.y) + ud(n.z) * ud(n.z));
+
+            CHECK(fabs(len - 1.0) < 1e-3 && ud(n.y) > 0.0);
+            for (uint32_t b = a + 1u; b < scene.object_count; b++) {
+                const struct render_object *ob = &scene.object[b];
+
+                for (uint32_t j = 0; j < ob->mesh->vert_count; j++) {
+                    const vec3 p = oa->mesh->verts[i];
+                    const vec3 q = ob->mesh->verts[j];
+
+                    if (p.x == q.x && p.y == q.y && p.z == q.z) {
+                        shared++;
+                        CHECK(memcmp(&oa->vnormal14[3u * i], &ob->vnormal14[3u * j], 6) == 0);
+                    }
+                }
+            }
+        }
+    }
+    CHECK(FW_WITH_GOURAUD == 0 || shared > 0u);
+}

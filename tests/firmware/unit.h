@@ -87,6 +87,9 @@ void unit_srand(uint32_t seed);
     X(test_sort_small_without_scratch) \
     X(test_palette_ramps)             \
     X(test_palette_light_levels)      \
+    X(test_palette_light_intensity)   \
+    X(test_vertex_normal_average)     \
+    X(test_scene_landscape_normals)   \
     X(test_render_backface)           \
     X(test_render_mesh_model_range)   \
     X(test_render_level_cache)        \

@@ -193,6 +193,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     cfg.zbuf = (opt & 0x10u) != 0u;
     cfg.wmask = (opt & 0x40u) != 0u;
     cfg.zbuf_bits = (const unsigned[]){16u, 8u, 12u, 0u}[opt >> 6];  /* 0: replaced by 16 */
+    cfg.gouraud = (opt & 0x04u) != 0u;
     gpu_model_reset_config(m, (opt & 0x20u) ? &cfg : NULL);
     if ((opt & 0x20u) == 0u) {
         REQUIRE(m->cfg.span_w == 8u && m->cfg.lines && !m->cfg.zbuf, "default options");

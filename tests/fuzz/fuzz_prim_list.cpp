@@ -98,6 +98,8 @@ bool reference_line(std::string line, bool *blank, ListOp *op)
         o.kind = ListOp::Line, count = 5;
     } else if (words[0] == "ztri") {
         o.kind = ListOp::ZTri, count = 10;
+    } else if (words[0] == "gtri") {
+        o.kind = ListOp::GTri, count = 10;
     } else {
         return false;
     }
@@ -124,7 +126,7 @@ bool reference_line(std::string line, bool *blank, ListOp *op)
         v.push_back(w[0] == '-' ? -value : value);
     }
     std::vector<long long> xy;
-    if (o.kind == ListOp::ZTri) {
+    if (o.kind == ListOp::ZTri || o.kind == ListOp::GTri) {
         for (int i = 0; i < 3; i++) {
             if (v[3 * i + 2] < 0 || v[3 * i + 2] > 65535) {
                 return false;
@@ -181,7 +183,8 @@ void check_batches(const std::vector<ListOp> &ops, uint32_t vtx_cap, uint32_t tr
             const uint32_t kind = (w1 >> GPU_PRIM_KIND_LSB) & GPU_PRIM_KIND_MASK;
             const bool tri = op.kind != ListOp::Line;
             REQUIRE(i0 < nv && i1 < nv && (!tri || i2 < nv), "index outside the batch");
-            REQUIRE(kind == (tri ? GPU_PRIM_KIND_TRI : GPU_PRIM_KIND_LINE), "wrong kind");
+            REQUIRE(kind == (op.kind == ListOp::GTri ? GPU_PRIM_KIND_TRI_GOURAUD
+                             : tri ? GPU_PRIM_KIND_TRI : GPU_PRIM_KIND_LINE), "wrong kind");
             REQUIRE(((w1 >> GPU_PRIM_COLOR_LSB) & GPU_PRIM_COLOR_MASK) == op.color, "wrong colour");
             const uint32_t at[3] = {i0, i1, i2};
             for (int k = 0; k < (tri ? 3 : 2); k++) {
@@ -190,7 +193,9 @@ void check_batches(const std::vector<ListOp> &ops, uint32_t vtx_cap, uint32_t tr
                             static_cast<int16_t>(xy >> 16) == op.v[2 * k + 1],
                         "vertex moved");
                 const uint32_t z = op.kind == ListOp::ZTri ? op.z[k] : 0;
+                const uint32_t in = op.kind == ListOp::GTri ? op.z[k] : 0;
                 REQUIRE(((b.vtx[2 * at[k] + 1] >> GPU_VTX_Z_LSB) & GPU_VTX_Z_MASK) == z, "depth");
+                REQUIRE(((b.vtx[2 * at[k] + 1] >> GPU_VTX_I_LSB) & GPU_VTX_I_MASK) == in, "intensity");
             }
         }
     }

@@ -99,18 +99,18 @@ static void test_caps(void)
 
 static void test_ctrl(void)
 {
-    /* CTRL keeps CLEAR [0], SWAP [1], ZTEST [2], ZCLEAR [3]; other bits are
-     * not stored.  Same with and without the depth buffer (without it
-     * ZTEST/ZCLEAR are stored but ignored, see test_depth.c). */
+    /* CTRL keeps CLEAR [0], SWAP [1], ZTEST [2], ZCLEAR [3], DITHER [4];
+     * other bits are not stored.  Same with and without the depth buffer
+     * (without it ZTEST/ZCLEAR are stored but ignored, see test_depth.c). */
     for (int z = 0; z < 2; z++) {
         gpu_model *m = test_new_model_cfg(8, true, z != 0);
         gpu_model_write(m, GPU_REG_CTRL, 0xFFFFFFFFu);
-        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0xF);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x1F);
         gpu_model_write(m, GPU_REG_CTRL, GPU_CTRL_ZTEST_MASK);
         CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x4);
-        gpu_model_write(m, GPU_REG_CTRL, GPU_CTRL_ZCLEAR_MASK | 0x10u);
+        gpu_model_write(m, GPU_REG_CTRL, GPU_CTRL_ZCLEAR_MASK | 0x20u);
         CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x8);
-        gpu_model_write(m, GPU_REG_CTRL, 0xFFFFFFF0u);
+        gpu_model_write(m, GPU_REG_CTRL, 0xFFFFFFE0u);
         CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0);
         gpu_model_write(m, GPU_REG_CTRL, 0x5u);
         CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x5);

@@ -62,7 +62,7 @@ gpu_model *test_new_model(void)
 gpu_model *test_new_model_cfg(unsigned span_w, bool lines, bool zbuf)
 {
     gpu_model *m = alloc_model();
-    gpu_model_config cfg = { span_w, lines, zbuf, 0, 0, GPU_MODEL_DEFAULT_ZBUF_BITS, false }; /* capacities: the contract's; no write mask */
+    gpu_model_config cfg = { span_w, lines, zbuf, 0, 0, GPU_MODEL_DEFAULT_ZBUF_BITS, false, false }; /* capacities: the contract's; no write mask, flat only */
     gpu_model_reset_config(m, &cfg);
     return m;
 }
@@ -674,6 +674,7 @@ int main(void)
     test_config();
     test_lines();
     test_depth();
+    test_gouraud();
     printf("%u passed, %u failed\n", test_passed, test_failed);
     return test_failed ? 1 : 0;
 }
