@@ -102,6 +102,7 @@ suite rtl-vs-model-span4      14 "$BUILD/sim-w4/gpusim" random --seed 5 --batche
 suite rtl-vs-model-span16     18 "$BUILD/sim-w16/gpusim" random --seed 6 --batches 20 --tris 100 --swap-percent 25
 suite rtl-vs-model-zbuf       25 "$BUILD/sim-z-w8/gpusim" random --seed 7 --batches 40 --tris 300 --swap-percent 25
 suite rtl-vs-model-zbuf8      11 "$BUILD/sim-zb8-w8/gpusim" random --seed 8 --batches 20 --tris 300 --swap-percent 25
+suite rtl-vs-model-gouraud     5 "$BUILD/sim-fast-g-w8/gpusim" random --seed 8 --batches 40 --tris 300 --swap-percent 25
 suite raster-mesh-exact-once  19 bash tests/raster/mesh.sh
 suite raster-bad-input         1 bash tests/raster/bad_input.sh
 suite raster-list-roundtrip    1 bash tests/raster/roundtrip.sh
@@ -130,6 +131,7 @@ suite scene-watchdog          15 bash tests/scenes/watchdog.sh
 suite scene-keys-burst         9 bash tests/scenes/keys_burst.sh
 suite scene-host-features     13 bash tests/scenes/host_features.sh
 suite scene-anaglyph          10 bash tests/scenes/anaglyph.sh
+suite scene-gouraud            4 bash tests/scenes/gouraud.sh
 suite scene-lean-build        12 bash tests/scenes/lean_build.sh
 suite scene-manifest           3 bash tests/manifest/manifest.sh
 suite soc-vs-cosim            55 bash tests/soc/vs_cosim.sh
