@@ -430,7 +430,7 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2 fixed-nr0 f
 # one VGA frame (840,000 cycles) after a boot of ~2.4 M: <scene>-<variant>[-z]-<N>v.elf.
 FW_PATH_SOC_VIEWS := 1
 FW_PATH_SOC_ELFS  :=
-$(foreach s,$(FW_SCENES),$(foreach v,fixed float fixed-z float-z float-sp0-z float-sp2-z fixed-nr0-z fixed-nr2-z float-sin6-z float-sin10-z,\
+$(foreach s,$(FW_SCENES),$(foreach v,fixed float fixed-z float-z float-sp0-z float-sp2-z fixed-nr0-z fixed-nr2-z,\
   $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v)-$(FW_PATH_SOC_VIEWS)v.elf,$(s),$(v:-z=),$(FW_PATH_SOC_VIEWS),,\
     $(FW_PATH_DEFS)$(if $(filter %-z,$(v)), -DFW_DEPTH_TEST=1)))\
   $(eval FW_PATH_SOC_ELFS += $(FW_PATH_DIR)/$(s)-$(v)-$(FW_PATH_SOC_VIEWS)v.elf)))

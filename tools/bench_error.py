@@ -398,6 +398,11 @@ def path_run(build, scene, key, views, cost_views, rerun):
 
 SOC_DIR = "soc"
 SOC_GPUS = ("sim-w8", "sim-z-w8")  # the GPUs measured on the SoC: the depth buffer or not, SPAN_W 8
+# Configurations not run on the SoC, shown with R's number ("as R"): the span widths and depth bits
+# (GPU knobs: R's firmware), and the sine tables, whose only change is the table's size and index
+# shift (the same instructions a sine; QEMU counts 1.00 of R's on every scene), and whose 1024 entries
+# (4 KiB) put voxel's image 1,952 bytes over the SoC's 192 KiB.
+SOC_AS_R_KEYS = ("sin6", "sin10")
 
 
 def soc_elf(build, scene, variant, views):
@@ -467,7 +472,7 @@ def soc_measure(build, socsims, scenes, keys, views, span_scenes, jobs):
     """{(scene, key): soc result} for every key whose GPU socsims has; the span widths' keys get R's
     result marked "as_r"; ("span-check", scene): R's firmware on the SPAN_W 1 GPU where given."""
     todo = [(sc, k, None) for sc in scenes for k in keys
-            if PATH_CONFIGS[k][1] in SOC_GPUS and PATH_CONFIGS[k][1] in socsims]
+            if PATH_CONFIGS[k][1] in SOC_GPUS and PATH_CONFIGS[k][1] in socsims and k not in SOC_AS_R_KEYS]
     if "sim-z-w1" in socsims:
         todo += [(sc, "ref", "sim-z-w1") for sc in span_scenes if sc in scenes]
     out = {}
@@ -506,7 +511,7 @@ def soc_notes(soc, scenes, views):
     lines = ["- SoC CPU cycles: the same configuration built for the SoC on socsim (VexRiscv_Full, 50 MHz "
              "model), mcycle per frame without the DONE_SEQ polls, on %s of the scene's camera path "
              "(frame 0: cold caches), measured once and shown in both tables; its frames equal the host "
-             "build's on those views; span widths: R's firmware (\"as R\")" % (
+             "build's on those views; span widths, depth bits and sine tables: R's number (\"as R\", see SOC_AS_R_KEYS)" % (
                  "the first view" if views == 1 else "the first %d views (mean)" % views)]
     checks = [(sc, soc[("span-check", sc)]["cpu"], soc[(sc, "ref")]["cpu"]) for sc in scenes if ("span-check", sc) in soc]
     if checks:
