@@ -82,12 +82,16 @@ void UartPty::close()
 {
     // Closing the master hangs the slave up, which discards what a client has not read yet: the
     // firmware's last lines (a result the client waits for) would be lost. So the client gets up
-    // to kDrainMs to read them; what is still queued then has no reader.
-    for (int ms = 0; slave_ >= 0 && ms < kDrainMs; ms += 10) {
+    // to kDrainMs to read them; what is still queued then has no reader. The kernel moves the
+    // master's last write into the slave's queue a little later (its flip buffer's work), so an
+    // empty queue counts only when it is seen twice, 10 ms apart (seen here: a lost last newline).
+    int empty_seen = 0;
+    for (int ms = 0; slave_ >= 0 && ms < kDrainMs && empty_seen < 2; ms += 10) {
         int queued = 0;
-        if (ioctl(slave_, TIOCINQ, &queued) != 0 || queued == 0) {
+        if (ioctl(slave_, TIOCINQ, &queued) != 0) {
             break;
         }
+        empty_seen = (queued == 0) ? empty_seen + 1 : 0;
         usleep(10000);
     }
     if (!link_.empty()) {

@@ -172,14 +172,23 @@ typedef struct {
     int64_t zb;
 } depth_plane;
 
+/* The two slopes of the plane through the vertices' values q0, q1, q2 (depth or intensity, both
+ * 16-bit unsigned, so the bounds above hold for either). */
+static void plane_slopes(gpu_model_pt v0, gpu_model_pt v1, gpu_model_pt v2,
+                         int64_t q0, int64_t q1, int64_t q2, int64_t area,
+                         int64_t *a, int64_t *b)
+{
+    int64_t dx1 = v1.x - v0.x, dy1 = v1.y - v0.y, dq1 = q1 - q0;
+    int64_t dx2 = v2.x - v0.x, dy2 = v2.y - v0.y, dq2 = q2 - q0;
+    *a = sat32(trunc_div(DEPTH_ONE * (dq1 * dy2 - dq2 * dy1), area));
+    *b = sat32(trunc_div(DEPTH_ONE * (dq2 * dx1 - dq1 * dx2), area));
+}
+
 static depth_plane depth_setup(gpu_model_pt v0, gpu_model_pt v1,
                                gpu_model_pt v2, int64_t area)
 {
-    int64_t dx1 = v1.x - v0.x, dy1 = v1.y - v0.y, dz1 = v1.z - v0.z;
-    int64_t dx2 = v2.x - v0.x, dy2 = v2.y - v0.y, dz2 = v2.z - v0.z;
     depth_plane d;
-    d.za = sat32(trunc_div(DEPTH_ONE * (dz1 * dy2 - dz2 * dy1), area));
-    d.zb = sat32(trunc_div(DEPTH_ONE * (dz2 * dx1 - dz1 * dx2), area));
+    plane_slopes(v0, v1, v2, v0.z, v1.z, v2.z, area, &d.za, &d.zb);
     return d;
 }
 
@@ -214,11 +223,8 @@ typedef struct {
 static intensity_plane intensity_setup(gpu_model_pt v0, gpu_model_pt v1,
                                        gpu_model_pt v2, int64_t area)
 {
-    int64_t dx1 = v1.x - v0.x, dy1 = v1.y - v0.y, di1 = v1.i - v0.i;
-    int64_t dx2 = v2.x - v0.x, dy2 = v2.y - v0.y, di2 = v2.i - v0.i;
     intensity_plane d;
-    d.ia = sat32(trunc_div(DEPTH_ONE * (di1 * dy2 - di2 * dy1), area));
-    d.ib = sat32(trunc_div(DEPTH_ONE * (di2 * dx1 - di1 * dx2), area));
+    plane_slopes(v0, v1, v2, v0.i, v1.i, v2.i, area, &d.ia, &d.ib);
     return d;
 }
 
@@ -507,8 +513,13 @@ static void run_batch(gpu_model *m, uint32_t tag)
         if (ctrl & GPU_CTRL_CLEAR_MASK) {
             /* Through the write mask, like every pixel a batch writes. */
             uint8_t *fb = back_buffer(m);
-            for (size_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
-                put_pixel(m, fb, i, (uint8_t)(m->regs.clear_color & 0xFFu));
+            const uint8_t color = (uint8_t)(m->regs.clear_color & 0xFFu);
+            if (written_bits(m) == 0xFFu) {
+                memset(fb, color, GPU_MODEL_FB_PIXELS); /* the usual, unmasked clear: fast */
+            } else {
+                for (size_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
+                    put_pixel(m, fb, i, color);
+                }
             }
         }
         if (zclear) {

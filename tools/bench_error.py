@@ -257,33 +257,43 @@ def notes(results, scenes):
     return out
 
 
+# Both plots' marker per configuration (the path's configurations are a superset of the default view's).
+MARKERS = {"ref": "*", "fixed": "s", "painter": "D", "sp2": "v", "sp0": "^",
+           "w1": "1", "w4": "2", "w16": "3", "default": "o", "nr0": "<", "nr2": ">",
+           "sin6": "P", "sin10": "X", "zb12": "p", "zb8": "h"}
+
+
+def cost_panels(results, scenes, relative):
+    """The plots' x axes: instructions, GPU cycles and, where measured, the SoC's CPU cycles."""
+    rel = ", relative to R" if relative else ""
+    panels = [("instr", "firmware instructions / frame%s (QEMU -icount)" % rel),
+              ("cycles", "GPU cycles / frame%s (Verilator%s)" % (rel, "" if relative else ", PERF_BUSY_CYCLES"))]
+    if "soc" in results[(scenes[0], "ref")]:
+        panels.append(("soc", "CPU cycles / frame on the SoC%s (socsim%s)" % (rel, "" if relative else ", path view 0")))
+    return panels
+
+
 def plot(results, scenes, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.patches
     import matplotlib.pyplot as plt
 
-    markers = {"ref": "*", "fixed": "s", "painter": "D", "sp2": "v", "sp0": "^",
-               "w1": "1", "w4": "2", "w16": "3", "default": "o", "sin6": "P", "sin10": "X",
-               "zb12": "p", "zb8": "h"}
     colours = dict(zip(scenes, ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown"]))
-    panels = [("instr", "firmware instructions / frame (QEMU -icount)"),
-              ("cycles", "GPU cycles / frame (Verilator, PERF_BUSY_CYCLES)")]
-    if "soc" in results[(scenes[0], "ref")]:
-        panels.append(("soc", "CPU cycles / frame on the SoC (socsim, path view 0)"))
+    panels = cost_panels(results, scenes, relative=False)
     fig, axes = plt.subplots(1, len(panels), figsize=(5.5 * len(panels), 4.6), sharey=True)
     for ax, (cost, label) in zip(axes, panels):
         for scene in scenes:
             for key in CONFIGS:
                 r = results[(scene, key)]
-                ax.scatter(r[cost], r["differing"], marker=markers[key], color=colours[scene], s=36)
+                ax.scatter(r[cost], r["differing"], marker=MARKERS[key], color=colours[scene], s=36)
         ax.set_xscale("log")
         ax.set_yscale("symlog", linthresh=1.0)
         ax.set_ylim(bottom=-0.2)
         ax.set_xlabel(label)
         ax.grid(True, which="both", alpha=0.3)
     axes[0].set_ylabel("framebuffer pixels differing from R / frame")
-    handles = [plt.Line2D([], [], color="grey", marker=markers[k], linestyle="", label=CONFIGS[k][2])
+    handles = [plt.Line2D([], [], color="grey", marker=MARKERS[k], linestyle="", label=CONFIGS[k][2])
                for k in CONFIGS]
     handles += [matplotlib.patches.Patch(color=colours[s], label=s) for s in scenes]
     fig.legend(handles=handles, loc="center right", fontsize=8, frameon=False)
@@ -697,13 +707,7 @@ def path_plot(results, scenes, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    markers = {"ref": "*", "fixed": "s", "painter": "D", "sp2": "v", "sp0": "^",
-               "w1": "1", "w4": "2", "w16": "3", "default": "o", "nr0": "<", "nr2": ">",
-               "sin6": "P", "sin10": "X", "zb12": "p", "zb8": "h"}
-    panels = [("instr", "firmware instructions / frame, relative to R (QEMU -icount)"),
-              ("cycles", "GPU cycles / frame, relative to R (Verilator)")]
-    if "soc" in results[(scenes[0], "ref")]:
-        panels.append(("soc", "CPU cycles / frame on the SoC, relative to R (socsim)"))
+    panels = cost_panels(results, scenes, relative=True)
     fig, axes = plt.subplots(1, len(panels), figsize=(5.5 * len(panels), 4.6), sharey=True)
     for ax, (cost, label) in zip(axes, panels):
         agg = path_aggregate(results, scenes, cost)
@@ -712,7 +716,7 @@ def path_plot(results, scenes, path):
                 alpha=0.5, label="Pareto front")
         for key in PATH_CONFIGS:
             c, e = agg[key]
-            ax.scatter(c, e, marker=markers[key], s=60 if key == "default" else 40,
+            ax.scatter(c, e, marker=MARKERS[key], s=60 if key == "default" else 40,
                        color="tab:red" if key in front else "tab:blue")
             ax.annotate(PATH_CONFIGS[key][2] + ("" if key != "default" else (" (on the front)" if key in front else " (off the front)")),
                         (c, e), fontsize=7, xytext=(4, 3), textcoords="offset points")

@@ -66,7 +66,9 @@ struct Model {
         reg[GPU_REG_CAPS / 4] = (GPU_DEFAULT_SPAN_W << GPU_CAPS_SPAN_W_LSB) |
                                 (GPU_DEFAULT_ENABLE_LINES ? GPU_CAPS_LINES_MASK : 0) |
                                 (GPU_DEFAULT_ENABLE_ZBUF ? GPU_CAPS_ZBUF_MASK : 0) |
-                                (GPU_DEFAULT_ENABLE_GOURAUD ? GPU_CAPS_GOURAUD_MASK : 0);
+                                (GPU_DEFAULT_ENABLE_GOURAUD ? GPU_CAPS_GOURAUD_MASK : 0) |
+                                (GPU_DEFAULT_ENABLE_WMASK ? GPU_CAPS_WMASK_MASK : 0);
+        reg[GPU_REG_FB_WRITE_MASK / 4] = GPU_WMASK_LO_MASK | GPU_WMASK_HI_MASK;  // all of each pixel
         reg[GPU_REG_VTX_CAP / 4] = GPU_VTX_CAP;
         reg[GPU_REG_TRI_CAP / 4] = GPU_TRI_CAP;
         reg[GPU_REG_FB_SIZE / 4] = (GPU_FB_HEIGHT << 16) | GPU_FB_WIDTH;
@@ -78,6 +80,7 @@ struct Model {
             return GPU_CTRL_CLEAR_MASK | GPU_CTRL_SWAP_MASK | GPU_CTRL_ZTEST_MASK | GPU_CTRL_ZCLEAR_MASK |
                    GPU_CTRL_DITHER_MASK;
         case GPU_REG_CLEAR_COLOR: return 0xffu;
+        case GPU_REG_FB_WRITE_MASK: return GPU_DEFAULT_ENABLE_WMASK ? GPU_WMASK_LO_MASK | GPU_WMASK_HI_MASK : 0u;
         case GPU_REG_VTX_BASE: case GPU_REG_VTX_COUNT: case GPU_REG_TRI_BASE: case GPU_REG_TRI_COUNT:
         case GPU_REG_DOORBELL: case GPU_REG_RESET: return 0xffffffffu;
         default: return 0;
