@@ -192,22 +192,28 @@ static depth_plane depth_setup(gpu_model_pt v0, gpu_model_pt v1,
     return d;
 }
 
-/* z(p) = clamp(floor((2^16 z0 + ZA (p.x - x0) + ZB (p.y - y0)) / 2^16),
- *              0, 65535), evaluated directly at p.  |ZA (p.x - x0)| < 2^48,
- * the sum < 2^50: exact in int64. */
+/* q(p) = clamp(floor((2^16 q0 + A (p.x - x0) + B (p.y - y0)) / 2^16),
+ *              0, 65535), evaluated directly at p: the depth (q = z, A, B =
+ * ZA, ZB) and the intensity plane's value.  |A (p.x - x0)| < 2^48, the sum
+ * < 2^50: exact in int64. */
+static uint16_t plane_value(int64_t a, int64_t b, int64_t q0, gpu_model_pt v0,
+                            gpu_model_pt p)
+{
+    int64_t sum = DEPTH_ONE * q0 + a * (p.x - v0.x) + b * (p.y - v0.y);
+    int64_t q = floor_div(sum, DEPTH_ONE);
+    if (q < 0) {
+        q = 0;
+    }
+    if (q > 0xFFFF) {
+        q = 0xFFFF;
+    }
+    return (uint16_t)q;
+}
+
 static uint16_t depth_at(const depth_plane *d, gpu_model_pt v0,
                          gpu_model_pt p)
 {
-    int64_t sum = DEPTH_ONE * v0.z + d->za * (p.x - v0.x) +
-                  d->zb * (p.y - v0.y);
-    int64_t z = floor_div(sum, DEPTH_ONE);
-    if (z < 0) {
-        z = 0;
-    }
-    if (z > 0xFFFF) {
-        z = 0xFFFF;
-    }
-    return (uint16_t)z;
+    return plane_value(d->za, d->zb, v0.z, v0, p);
 }
 
 /* Intensity plane of an oriented Gouraud triangle (contract "Gouraud
@@ -247,15 +253,7 @@ static uint8_t shade_at(const intensity_plane *d, gpu_model_pt v0,
                         gpu_model_pt p, int64_t px, int64_t py, uint8_t color,
                         bool dither)
 {
-    int64_t sum = DEPTH_ONE * v0.i + d->ia * (p.x - v0.x) +
-                  d->ib * (p.y - v0.y);
-    int64_t i = floor_div(sum, DEPTH_ONE);
-    if (i < 0) {
-        i = 0;
-    }
-    if (i > 0xFFFF) {
-        i = 0xFFFF;
-    }
+    int64_t i = plane_value(d->ia, d->ib, v0.i, v0, p);
     int64_t level = i >> 12;
     int64_t frac = (i >> 8) & 15;
     if (dither && frac > bayer4[py & 3][px & 3] && level < 15) {
