@@ -72,7 +72,8 @@ include boards/ulx3s/board.mk
 include boards/digilent/board.mk
 
 .PHONY: all setup run run-built test test-quick test-list lint check-contract contract random-long raster \
-        bench-gpu bench-sim bench-error bench-error-run bench-error-path bench-error-path-run synth clean
+        bench-gpu bench-sim bench-error bench-error-run bench-error-path bench-error-path-run \
+        bench-error-shading bench-error-shading-run synth clean
 
 all: $(FW_ELF) $(GPUSIM)
 
@@ -181,6 +182,7 @@ bench-error-run: $(FW_ERR_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(ZBITS_SIMS) $(PNG_DI
 	$(BENCH_ERROR_CHECK)
 	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --frames $(FW_ERR_FRAMES) $(BENCH_SOC_ARGS) $(FW_SCENES)
 	@$(MAKE) --no-print-directory bench-error-path-run
+	@$(MAKE) --no-print-directory bench-error-shading-run
 
 # Both halves' CPU cycles on the SoC (tools/bench_error.py --socsim): the path ELFs of the first
 # FW_PATH_SOC_VIEWS views built for bsp/soc (firmware.mk FW_PATH_SOC_ELFS, $(BUILD)/fw-path-soc/),
@@ -209,6 +211,19 @@ bench-error-path-run: $(FW_PATH_HOSTS) $(FW_PATH_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS)
 	$(BENCH_ERROR_CHECK)
 	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --path $(FW_PATH_VIEWS) \
 	  --cost-views $(BENCH_COST_VIEWS) $(BENCH_SOC_ARGS) $(BENCH_PATH_SCENES)
+
+# The shading knobs (tools/bench_shading.py): flat, Gouraud and Gouraud dithered on the scenes with
+# vertex normals (FW_SHADING_SCENES), against the undithered reference, on the same camera path;
+# `make bench-error-shading` runs only these.
+bench-error-shading:
+	$(BENCH_ERROR_CHECK)
+	@bash tools/setup.sh packages-plot.txt
+	@$(MAKE) --no-print-directory bench-error-shading-run
+
+bench-error-shading-run: $(FW_SHADING_HOSTS) $(FW_SHADING_ELFS) $(GOURAUD_SIM) $(PNG_DIFF)
+	$(BENCH_ERROR_CHECK)
+	@$(PLOT_PYTHON) tools/bench_shading.py --build $(BUILD) --views $(FW_PATH_VIEWS) \
+	  --cost-views $(BENCH_COST_VIEWS) $(FW_SHADING_SCENES)
 
 # The exact reference of bench-error's camera paths (double precision, the pipeline's definitions
 # written anew: tools/exact_ref/exact_ref.c), and its self-test on known polygons.

@@ -226,6 +226,13 @@ FW_SP_VARIANTS += fixed-nr0 fixed-nr2
 # 256 (FW_SIN_TABLE_BITS, math/fixed.h; both backends rotate with fx_sin): bench-error's sine rows.
 $(foreach n,6 10,$(eval FW_BACKEND_DEFS_float-sin$(n) := $(FW_BACKEND_DEFS_float))$(eval FW_VARIANT_DEFS_float-sin$(n) := -DFW_SIN_TABLE_BITS=$(n) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)))
 FW_SP_VARIANTS += float-sin6 float-sin10
+# fixed-flat / fixed-nodither: the fixed backend drawing flat on a Gouraud GPU (FW_GOURAUD=0) / Gouraud
+# without the dither (FW_DITHER=0): bench-error's shading rows (tools/bench_shading.py).
+FW_BACKEND_DEFS_fixed-flat :=
+FW_VARIANT_DEFS_fixed-flat := -DFW_GOURAUD=0 -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)
+FW_BACKEND_DEFS_fixed-nodither :=
+FW_VARIANT_DEFS_fixed-nodither := -DFW_DITHER=0 -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)
+FW_SP_VARIANTS += fixed-flat fixed-nodither
 # -ffp-contract=off: no fused multiply-adds, so the float backend rounds identically on the host
 # and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
 # -fno-tree-loop-distribute-patterns: GCC would turn the pipeline's clearing loops (the sort's
@@ -376,6 +383,9 @@ FW_TEST_DEPS += $(FW_TEST_DIR)/cubes-lean.elf
 # tetra built with an explicit FW_SUBPIXEL_BITS=4: must be the same program as tetra.elf.
 $(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/tetra-fixed-sp4.elf,tetra,fixed-sp4,$(FW_TEST_FRAMES),))
 FW_TEST_DEPS += $(FW_TEST_DIR)/tetra-fixed-sp4.elf
+# the landscape's Gouraud without the dither (tests/scenes/gouraud.sh: the dither's error seen from afar).
+$(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-landscape-nodither,landscape,fixed-nodither,$(FW_TEST_FRAMES)))
+FW_TEST_DEPS += $(FW_TEST_DIR)/host-landscape-nodither
 
 # Benchmark builds: FW_BENCH_FRAMES frames of every scene, both backends.
 FW_BENCH_FRAMES := 8
@@ -423,6 +433,19 @@ $(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2 fixed-nr0 f
   $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
   $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/host-$(s)-$(v)-z)\
   $(eval FW_PATH_ELFS += $(FW_PATH_DIR)/$(s)-$(v)-z.elf)))
+
+# bench-error's shading rows (tools/bench_shading.py): the scenes whose meshes carry vertex normals
+# (the others draw nothing Gouraud), on the same camera path, depth test on (the Gouraud GPU has the
+# buffer): Gouraud dithered (fixed, the default), undithered (fixed-nodither) and flat (fixed-flat).
+FW_SHADING_SCENES := landscape
+FW_SHADING_VARIANTS := fixed-z fixed-nodither-z fixed-flat-z
+FW_SHADING_HOSTS :=
+FW_SHADING_ELFS  :=
+$(foreach s,$(FW_SHADING_SCENES),$(foreach v,fixed-nodither fixed-flat,\
+  $(eval $(call FW_HOST_RULES,$(FW_PATH_DIR)/host-$(s)-$(v)-z,$(s),$(v),$(FW_PATH_VIEWS),$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
+  $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))))
+FW_SHADING_HOSTS := $(foreach s,$(FW_SHADING_SCENES),$(foreach v,$(FW_SHADING_VARIANTS),$(FW_PATH_DIR)/host-$(s)-$(v)))
+FW_SHADING_ELFS  := $(foreach s,$(FW_SHADING_SCENES),$(foreach v,$(FW_SHADING_VARIANTS),$(FW_PATH_DIR)/$(s)-$(v).elf))
 
 # bench-error's CPU cycles on the SoC (built with FW_PLATFORM=soc, so under $(BUILD)/fw-path-soc/):
 # the path ELFs again with only the first FW_PATH_SOC_VIEWS views (frames), the same program

@@ -124,11 +124,22 @@ static uint8_t written_bits(const gpu_model *m)
     return bits;
 }
 
-/* Store palette index `color` into pixel i of fb through the write mask. */
+/* The shade probe's word for pixel i of fb (the attached probe's). */
+static uint32_t *probe_word(const gpu_model *m, const uint8_t *fb, size_t i)
+{
+    return &m->shade_probe->px[fb == m->fb[1] ? 1 : 0][i];
+}
+
+/* Store palette index `color` into pixel i of fb through the write mask; a
+ * probe records "as its palette index" (draw_triangle overrides that for a
+ * Gouraud pixel). */
 static void put_pixel(const gpu_model *m, uint8_t *fb, size_t i, uint8_t color)
 {
     uint8_t bits = written_bits(m);
     fb[i] = (uint8_t)((fb[i] & (uint8_t)~bits) | (color & bits));
+    if (m->shade_probe != NULL) {
+        *probe_word(m, fb, i) = 0;
+    }
 }
 
 static bool on_screen(int64_t px, int64_t py)
@@ -242,18 +253,17 @@ static const uint8_t bayer4[4][4] = {
     { 15, 7, 13, 5 },
 };
 
-/* The colour of a Gouraud triangle's pixel (px, py) at centre p:
+/* The colour of a Gouraud triangle's pixel (px, py) of intensity i = i(p):
  *   i(p)  = clamp(floor((2^16 i0 + IA (p.x - x0) + IB (p.y - y0)) / 2^16),
  *                 0, 65535)                                  (Q4.12)
+ *           evaluated directly at p (plane_value; the sum is below 2^50, as
+ *           depth_at's)
  *   level = i(p) >> 12, plus 1 when dithering and ((i(p) >> 8) & 15) is
  *           greater than bayer4[py & 3][px & 3], at most 15
- *   colour = (PRIM_COLOR + level) mod 256
- * evaluated directly at p; the sum is below 2^50 (as depth_at's). */
-static uint8_t shade_at(const intensity_plane *d, gpu_model_pt v0,
-                        gpu_model_pt p, int64_t px, int64_t py, uint8_t color,
-                        bool dither)
+ *   colour = (PRIM_COLOR + level) mod 256 */
+static uint8_t shade_color(int64_t i, int64_t px, int64_t py, uint8_t color,
+                           bool dither)
 {
-    int64_t i = plane_value(d->ia, d->ib, v0.i, v0, p);
     int64_t level = i >> 12;
     int64_t frac = (i >> 8) & 15;
     if (dither && frac > bayer4[py & 3][px & 3] && level < 15) {
@@ -360,7 +370,16 @@ static prim_result draw_triangle(gpu_model *m, gpu_model_pt v0,
                 }
                 m->zbuf[i] = z;
             }
-            put_pixel(m, fb, i, shaded ? shade_at(&iplane, v0, p, px, py, color, dither) : color);
+            if (shaded) {
+                int64_t inten = plane_value(iplane.ia, iplane.ib, v0.i, v0, p);
+                put_pixel(m, fb, i, shade_color(inten, px, py, color, dither));
+                if (m->shade_probe != NULL && written_bits(m) == 0xFFu) {
+                    *probe_word(m, fb, i) = GPU_MODEL_PROBE_SHADED |
+                                            (uint32_t)color << 16 | (uint32_t)inten;
+                }
+            } else {
+                put_pixel(m, fb, i, color);
+            }
             m->perf.pixels++;
         }
     }
@@ -514,6 +533,9 @@ static void run_batch(gpu_model *m, uint32_t tag)
             const uint8_t color = (uint8_t)(m->regs.clear_color & 0xFFu);
             if (written_bits(m) == 0xFFu) {
                 memset(fb, color, GPU_MODEL_FB_PIXELS); /* the usual, unmasked clear: fast */
+                if (m->shade_probe != NULL) {
+                    memset(probe_word(m, fb, 0), 0, GPU_MODEL_FB_PIXELS * sizeof(uint32_t));
+                }
             } else {
                 for (size_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
                     put_pixel(m, fb, i, color);
@@ -607,9 +629,17 @@ void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
     /* Everything is zero at power-on: registers (RESET included), counters,
      * front = 0, palette black, both framebuffers palette index 0, depth
      * buffer 0 (block RAM initial values). */
-    memset(m, 0, sizeof *m);
+    memset(m, 0, sizeof *m); /* the shade probe detached too */
     m->cfg = c;
     m->regs.fb_write_mask = GPU_MODEL_WMASK_BITS; /* both planes */
+}
+
+void gpu_model_attach_shade_probe(gpu_model *m, gpu_model_shade_probe *probe)
+{
+    m->shade_probe = probe;
+    if (probe != NULL) {
+        memset(probe, 0, sizeof *probe);
+    }
 }
 
 void gpu_model_reset(gpu_model *m)
@@ -802,6 +832,42 @@ void gpu_model_scanout(const gpu_model *m, uint8_t *rgb)
             out[0] = (uint8_t)(((c >> 8) & 0xFu) * 17u);
             out[1] = (uint8_t)(((c >> 4) & 0xFu) * 17u);
             out[2] = (uint8_t)((c & 0xFu) * 17u);
+        }
+    }
+}
+
+/* One RGB444 channel (4 bits at lsb) of palette entries a and b expanded to
+ * 0..255 (n * 17) and mixed by frac / 4096 towards b, rounded. */
+static uint8_t mix_channel(uint16_t a, uint16_t b, unsigned lsb, uint32_t frac)
+{
+    uint32_t ca = ((a >> lsb) & 0xFu) * 17u;
+    uint32_t cb = ((b >> lsb) & 0xFu) * 17u;
+    return (uint8_t)((ca * (4096u - frac) + cb * frac + 2048u) / 4096u);
+}
+
+void gpu_model_scanout_unquantised(const gpu_model *m, uint8_t *rgb)
+{
+    const uint32_t *probe = m->shade_probe->px[m->front & 1u];
+    gpu_model_scanout(m, rgb);
+    for (uint32_t y = 0; y < GPU_MODEL_SCREEN_H; y++) {
+        for (uint32_t x = 0; x < GPU_MODEL_SCREEN_W; x++) {
+            uint32_t word = probe[(y / 2u) * GPU_FB_WIDTH + x / 2u];
+            if ((word & GPU_MODEL_PROBE_SHADED) == 0) {
+                continue;
+            }
+            uint32_t inten = word & 0xFFFFu;
+            if (inten > 15u << 12) {
+                inten = 15u << 12; /* the ramp ends at level 15 */
+            }
+            uint32_t base = (word >> 16) & 0xFFu;
+            uint32_t level = inten >> 12;
+            uint32_t frac = inten & 0xFFFu;
+            uint16_t lo = m->palette[(base + level) & 0xFFu];
+            uint16_t hi = m->palette[(base + level + (frac != 0u)) & 0xFFu];
+            uint8_t *out = &rgb[((size_t)y * GPU_MODEL_SCREEN_W + x) * 3u];
+            out[0] = mix_channel(lo, hi, 8, frac);
+            out[1] = mix_channel(lo, hi, 4, frac);
+            out[2] = mix_channel(lo, hi, 0, frac);
         }
     }
 }

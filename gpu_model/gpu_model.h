@@ -167,7 +167,28 @@ typedef struct gpu_model {
      * framebuffers), 2^zbuf_bits - 1 (0xFFFF at 16 bits) after a CTRL_ZCLEAR.
      * Only used with cfg.zbuf; without it, it stays 0. */
     uint16_t zbuf[GPU_MODEL_FB_PIXELS];
+
+    /* A measurement aid, not GPU state: NULL unless attached
+     * (gpu_model_attach_shade_probe) after the last reset. */
+    struct gpu_model_shade_probe *shade_probe;
 } gpu_model;
+
+/* The unquantised Gouraud colours (bench-error's undithered reference; not
+ * in the contract, nothing the RTL has): with a probe attached, every write
+ * to a framebuffer pixel also records in the probe's word for that pixel of
+ * that framebuffer what the pixel would show before its level is rounded -
+ * for a Gouraud triangle's pixel written through the full write mask,
+ * GPU_MODEL_PROBE_SHADED | PRIM_COLOR << 16 | i(p) (contract "Gouraud
+ * intensity", Q4.12); for any other write (clear, flat triangle, line, a
+ * masked write) 0, "as its palette index". */
+#define GPU_MODEL_PROBE_SHADED (1u << 24)
+typedef struct gpu_model_shade_probe {
+    uint32_t px[2][GPU_MODEL_FB_PIXELS];
+} gpu_model_shade_probe;
+
+/* Attach (or, with NULL, detach) a probe; its words start at 0. A reset
+ * detaches it. */
+void gpu_model_attach_shade_probe(gpu_model *m, gpu_model_shade_probe *probe);
 
 /* Power-on state with the default build options (SPAN_W = 8, lines, no
  * depth buffer): all registers, counters and flags 0 (the identity registers
@@ -211,5 +232,12 @@ const uint8_t *gpu_model_back(const gpu_model *m);
  * bytes of RGB888, row-major, each front-buffer pixel as a 2 x 2 block, each
  * RGB444 channel n expanded to n * 17 (0x0 -> 0x00, 0xF -> 0xFF). */
 void gpu_model_scanout(const gpu_model *m, uint8_t *rgb);
+
+/* gpu_model_scanout with the probe's unquantised colours (m needs a probe):
+ * a recorded Gouraud pixel shows its intensity I = min(i(p), 15 * 4096) /
+ * 4096 on its ramp, each channel of palette[PRIM_COLOR + floor(I)] and
+ * palette[PRIM_COLOR + ceil(I)] (mod 256) expanded to 0..255 and mixed
+ * linearly by I's fraction, rounded; every other pixel as gpu_model_scanout. */
+void gpu_model_scanout_unquantised(const gpu_model *m, uint8_t *rgb);
 
 #endif /* GPU_MODEL_H */

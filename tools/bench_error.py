@@ -137,13 +137,20 @@ def parse_log(work, frames, scene, key, variant, sim):
     return counts
 
 
-def png_diff(tool, ref, img):
-    """(framebuffer pixels differing, sum of |dRGB|) of img against ref."""
-    out = subprocess.run([tool, "--block", "2", ref, img], check=True, capture_output=True,
+def png_diff_fields(tool, ref, img, *options):
+    """png_diff's fields (pixels, differing, abs_sum, max_abs; box_abs_sum with --box) of img
+    against ref, compared in framebuffer pixels."""
+    out = subprocess.run([tool, "--block", "2", *options, ref, img], check=True, capture_output=True,
                          text=True).stdout.split()
     fields = dict(zip(out[0::2], (int(v) for v in out[1::2])))
     if fields["pixels"] != FB_PIXELS:
         raise RuntimeError("%s: %d framebuffer pixels, expected %d" % (img, fields["pixels"], FB_PIXELS))
+    return fields
+
+
+def png_diff(tool, ref, img):
+    """(framebuffer pixels differing, sum of |dRGB|) of img against ref."""
+    fields = png_diff_fields(tool, ref, img)
     return fields["differing"], fields["abs_sum"]
 
 
@@ -370,27 +377,35 @@ def path_run(build, scene, key, views, cost_views, rerun):
             subprocess.run([os.path.join(build, "tools", "exact_ref"), "--dir", dump,
                             os.path.join(work, "exact")], check=True, stdout=subprocess.DEVNULL)
         if cost_views > 0:
-            cmd = [os.path.join(build, sim, "gpusim"), "cosim",
-                   "--fw", os.path.join(build, "fw-path", "%s-%s.elf" % (scene, variant)),
-                   "--frames", os.path.join(work, "cosim-frames"),
-                   "--uart-log", os.path.join(work, "uart.log"), "--no-model-check",
-                   "--stop-after-frames", str(cost_views)]
-            with open(os.path.join(work, "cosim.out"), "w") as out:
-                if subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT).returncode != 0:
-                    raise RuntimeError("%s %s: co-simulation failed, see %s/cosim.out" % (scene, key, work))
+            path_cosim(build, sim, os.path.join(build, "fw-path", "%s-%s.elf" % (scene, variant)), work,
+                       cost_views)
         open(os.path.join(work, "done"), "w").close()
+    return work, path_costs(work, cost_views) if cost_views > 0 else {}
+
+
+def path_cosim(build, sim, elf, work, views):
+    """Co-simulate the first views of a path ELF on BUILD/<sim>/gpusim: work/cosim-frames, work/uart.log."""
+    cmd = [os.path.join(build, sim, "gpusim"), "cosim", "--fw", elf,
+           "--frames", os.path.join(work, "cosim-frames"),
+           "--uart-log", os.path.join(work, "uart.log"), "--no-model-check",
+           "--stop-after-frames", str(views)]
+    with open(os.path.join(work, "cosim.out"), "w") as out:
+        if subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT).returncode != 0:
+            raise RuntimeError("%s on %s: co-simulation failed, see %s/cosim.out" % (elf, sim, work))
+
+
+def path_costs(work, views):
+    """{view: (fw instr, gpu cycles)} of path_cosim's first views. The run may log a frame past the
+    last one captured (the firmware runs ahead of the overlapped scan-out): those are left out."""
     counts = {}
-    if cost_views > 0:
-        # The run may log a frame past the last one captured (the firmware runs ahead of the
-        # overlapped scan-out): the first cost_views are kept.
-        with open(os.path.join(work, "uart.log")) as log:
-            for line in log:
-                m = FRAME_RE.match(line)
-                if m and int(m.group(1)) < cost_views:
-                    counts[int(m.group(1))] = (int(m.group(2)), int(m.group(3)))
-        if sorted(counts) != list(range(cost_views)):
-            raise RuntimeError("%s %s: expected frames 0..%d in %s/uart.log" % (scene, key, cost_views - 1, work))
-    return work, counts
+    with open(os.path.join(work, "uart.log")) as log:
+        for line in log:
+            m = FRAME_RE.match(line)
+            if m and int(m.group(1)) < views:
+                counts[int(m.group(1))] = (int(m.group(2)), int(m.group(3)))
+    if sorted(counts) != list(range(views)):
+        raise RuntimeError("expected frames 0..%d in %s/uart.log" % (views - 1, work))
+    return counts
 
 
 # ---- CPU cycles on the SoC (--socsim) -------------------------------------------------------------
@@ -751,11 +766,16 @@ def check_metric(tool, work):
     changed[(2 * w + 5) * 3 + 1] ^= 0x10   # one pixel, green channel, |d| = 16
     changed[(3 * w + 1) * 3 + 0] = 255 - changed[(3 * w + 1) * 3 + 0]
     expected_sum = 16 + abs(255 - 2 * base[(3 * w + 1) * 3])
-    paths = {n: os.path.join(work, n + ".png") for n in ("a", "b", "c", "small")}
+    # Two changes of one 2 x 2 box that cancel in its mean: pixels (2, 4) and (3, 5), blue +-10.
+    cancel = list(base)
+    cancel[(4 * w + 2) * 3 + 2] = base[(4 * w + 2) * 3 + 2] + 10 if base[(4 * w + 2) * 3 + 2] < 200 else base[(4 * w + 2) * 3 + 2] - 10
+    cancel[(5 * w + 3) * 3 + 2] = base[(5 * w + 3) * 3 + 2] - (cancel[(4 * w + 2) * 3 + 2] - base[(4 * w + 2) * 3 + 2])
+    paths = {n: os.path.join(work, n + ".png") for n in ("a", "b", "c", "small", "cancel")}
     write_png(paths["a"], w, h, base)
     write_png(paths["b"], w, h, base)
     write_png(paths["c"], w, h, changed)
     write_png(paths["small"], w, h - 2, base[:w * (h - 2) * 3])
+    write_png(paths["cancel"], w, h, cancel)
 
     def diff(*args):
         r = subprocess.run([tool, *args], capture_output=True, text=True)
@@ -775,6 +795,16 @@ def check_metric(tool, work):
     rc, _ = diff(paths["a"], paths["small"])
     if rc != 2:
         failures.append("different sizes: status %d, want 2" % rc)
+    # --box: the changes of c lie in different 2 x 2 boxes (their sum stays), those of cancel in one.
+    rc, out = diff("--box", "2", paths["a"], paths["c"])
+    if rc != 0 or out[-2:] != ["box_abs_sum", str(expected_sum)]:
+        failures.append("--box 2, changes in two boxes: %s (status %d)" % (" ".join(out), rc))
+    rc, out = diff("--box", "2", paths["a"], paths["cancel"])
+    if rc != 0 or out[4:6] != ["abs_sum", "20"] or out[-2:] != ["box_abs_sum", "0"]:
+        failures.append("--box 2, changes cancelling in one box: %s (status %d)" % (" ".join(out), rc))
+    rc, _ = diff("--box", "3", paths["a"], paths["c"])  # 8 x 6 is no whole number of 3 x 3 boxes
+    if rc != 2:
+        failures.append("--box 3 on 8 x 6: status %d, want 2" % rc)
     for f in failures:
         print("metric: " + f)
     return not failures
@@ -820,7 +850,7 @@ def main():
         select(a.only.split(","), ap)
     if a.check_metric:
         ok = check_metric(*a.check_metric)
-        print("metric: 0 for identical images, the known sum for 2 changed pixels, sizes checked"
+        print("metric: 0 for identical images, the known sum for 2 changed pixels, box means, sizes checked"
               if ok else "metric: FAILED")
         return 0 if ok else 1
     socsims = {}

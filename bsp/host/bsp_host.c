@@ -47,6 +47,11 @@ void bsp_init(void)
     mc.gouraud = host_cfg.gouraud;
     mc.zbuf_bits = host_cfg.zbuf_bits;
     gpu_model_reset_config(host_gpu, &mc);
+    if (host_cfg.unquantised_dir != NULL) {
+        static gpu_model_shade_probe probe;
+
+        gpu_model_attach_shade_probe(host_gpu, &probe);
+    }
     setvbuf(stdout, NULL, _IOLBF, 0);
 }
 
@@ -78,6 +83,18 @@ static void host_type(const char *text)
     }
 }
 
+/* host_rgb as DIR/NNNN.png, NNNN the frame's number. */
+static void host_write_frame(const char *dir)
+{
+    char path[1024];
+
+    snprintf(path, sizeof path, "%s/%04u.png", dir, (unsigned)host_frames_written);
+    if (png_write_rgb(path, host_rgb, GPU_MODEL_SCREEN_W, GPU_MODEL_SCREEN_H) != 0) {
+        fprintf(stderr, "host bsp: cannot write %s\n", path);
+        exit(1);
+    }
+}
+
 static void host_doorbell(uint32_t offset, uint32_t value)
 {
     const uint32_t frames_before = gpu_model_read(host_gpu, GPU_REG_FRAME_COUNT);
@@ -91,15 +108,12 @@ static void host_doorbell(uint32_t offset, uint32_t value)
     gpu_model_write(host_gpu, offset, value);
     if (gpu_model_read(host_gpu, GPU_REG_FRAME_COUNT) != frames_before) {
         if (host_cfg.frames_dir != NULL) {
-            char path[1024];
-
-            snprintf(path, sizeof path, "%s/%04u.png", host_cfg.frames_dir,
-                     (unsigned)host_frames_written);
             gpu_model_scanout(host_gpu, host_rgb);
-            if (png_write_rgb(path, host_rgb, GPU_MODEL_SCREEN_W, GPU_MODEL_SCREEN_H) != 0) {
-                fprintf(stderr, "host bsp: cannot write %s\n", path);
-                exit(1);
-            }
+            host_write_frame(host_cfg.frames_dir);
+        }
+        if (host_cfg.unquantised_dir != NULL) {
+            gpu_model_scanout_unquantised(host_gpu, host_rgb);
+            host_write_frame(host_cfg.unquantised_dir);
         }
         host_frames_written++;
     }

@@ -26,6 +26,7 @@ struct bsp_host_config {
     bool gouraud;            /* a GPU built with Gouraud triangles (CAPS_GOURAUD) */
     unsigned zbuf_bits;      /* ZBUF_BITS, 1 .. 16 */
     const char *dump_dir;    /* the scene of every frame for tools/exact_ref, NULL: none */
+    const char *unquantised_dir;  /* PNG per swapped frame in unquantised Gouraud colours, NULL: none */
 };
 
 /* Set before app_run(); bsp_init() applies it. */

@@ -3,9 +3,13 @@
  * rendering through the golden model.
  *
  *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--zbuf-bits N] [--no-wmask]
- *           [--gouraud] [--span-w N] [--model FILE] [--dump-scene DIR]
+ *           [--gouraud] [--span-w N] [--model FILE] [--dump-scene DIR] [--unquantised-frames DIR]
  *
  *   --frames DIR      write each swapped frame as DIR/NNNN.png (as gpusim cosim does)
+ *   --unquantised-frames DIR  also write each swapped frame as DIR/NNNN.png with its Gouraud pixels
+ *                     in their unquantised colours (the model's shade probe: the intensity before
+ *                     the level is rounded or dithered, mixed between its ramp's entries):
+ *                     bench-error's undithered reference
  *   --keys-at N:TEXT  type TEXT just before doorbell N (1 = first) is serviced, byte for byte
  *                     (as gpusim cosim; use the shell's $'...' for control bytes)
  *   --no-lines        model a GPU built without line primitives (CAPS_LINES = 0)
@@ -49,10 +53,23 @@ static int host_load_model(const char *path)
     return 0;
 }
 
+/* An output directory: made, or already there. */
+static int host_make_dir(const char *dir)
+{
+    struct stat st;
+
+    if (mkdir(dir, 0755) != 0 && (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))) {
+        fprintf(stderr, "fw-host: cannot create %s\n", dir);
+        return -1;
+    }
+    return 0;
+}
+
 static int host_usage(void)
 {
     fprintf(stderr, "usage: fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] "
-                    "[--zbuf-bits N] [--no-wmask] [--gouraud] [--span-w N] [--model FILE] [--dump-scene DIR]\n");
+                    "[--zbuf-bits N] [--no-wmask] [--gouraud] [--span-w N] [--model FILE] [--dump-scene DIR] "
+                    "[--unquantised-frames DIR]\n");
     return 2;
 }
 
@@ -71,13 +88,13 @@ int main(int argc, char **argv)
 
         if (strcmp(a, "--frames") == 0 && has_value) {
             cfg.frames_dir = argv[++i];
-            if (mkdir(cfg.frames_dir, 0755) != 0) {
-                struct stat st;
-
-                if (stat(cfg.frames_dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
-                    fprintf(stderr, "fw-host: cannot create %s\n", cfg.frames_dir);
-                    return 2;
-                }
+            if (host_make_dir(cfg.frames_dir) != 0) {
+                return 2;
+            }
+        } else if (strcmp(a, "--unquantised-frames") == 0 && has_value) {
+            cfg.unquantised_dir = argv[++i];
+            if (host_make_dir(cfg.unquantised_dir) != 0) {
+                return 2;
             }
         } else if (strcmp(a, "--keys-at") == 0 && has_value) {
             const char *spec = argv[++i];
@@ -109,13 +126,8 @@ int main(int argc, char **argv)
             cfg.gouraud = true;
         } else if (strcmp(a, "--dump-scene") == 0 && has_value) {
             cfg.dump_dir = argv[++i];
-            if (mkdir(cfg.dump_dir, 0755) != 0) {
-                struct stat st;
-
-                if (stat(cfg.dump_dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
-                    fprintf(stderr, "fw-host: cannot create %s\n", cfg.dump_dir);
-                    return 2;
-                }
+            if (host_make_dir(cfg.dump_dir) != 0) {
+                return 2;
             }
         } else if (strcmp(a, "--model") == 0 && has_value) {
             if (host_load_model(argv[++i]) != 0) {

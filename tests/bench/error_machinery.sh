@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The machinery of `make bench-error` (which is too long for `make test`), on tiny inputs:
 #  1. the metric (tools/png_diff through tools/bench_error.py): 0 for identical images, the known
-#     count and sum for two changed pixels, one pixel per block with --block, sizes checked;
+#     count and sum for two changed pixels, one pixel per block with --block, box means with
+#     --box (changes in two boxes add, changes in one box cancel), sizes checked;
 #  2. FW_SUBPIXEL_BITS=4 builds the same program as the default build (tetra, fixed point: the
 #     loaded bytes of the two ELFs are equal);
 #  3. FW_SUBPIXEL_BITS outside 0..4 is refused by the build.

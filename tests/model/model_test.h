@@ -100,5 +100,6 @@ void test_config(void);  /* test_config.c: CAPS, CTRL, RESET, spans */
 void test_lines(void);   /* test_lines.c: the line rule */
 void test_depth(void);   /* test_depth.c: the depth buffer */
 void test_gouraud(void); /* test_gouraud.c: Gouraud triangles */
+void test_gouraud_probe(void); /* test_gouraud.c: the shade probe, the unquantised scan-out */
 
 #endif /* MODEL_TEST_H */

@@ -7,8 +7,12 @@
  * most 15. Checked on hand-computed pixels: constant intensities (dither
  * density exactly frac / 16), the top of the range (no level 16), a linear
  * ramp whose plane is exact, the colour wrap, either winding, and a GPU built
- * without Gouraud refusing the kind with ERR_KIND.
+ * without Gouraud refusing the kind with ERR_KIND. test_gouraud_probe: the
+ * shade probe (a measurement aid, not the contract) records i(p) of every
+ * Gouraud pixel and "none" for anything else, and the unquantised scan-out
+ * mixes the ramp's two entries around i(p).
  */
+#include <math.h>
 #include <stdlib.h>
 
 #include "model_test.h"
@@ -172,5 +176,82 @@ void test_gouraud(void)
     CHECK(gpu_model_read(m, GPU_REG_ERRORS) & GPU_ERR_KIND_MASK);
     CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_TRIS_REJECTED), 2);
     CHECK_EQ(gpu_model_back(m)[0], 7);
+    free(m);
+}
+
+/* Channel c (0 R, 1 G, 2 B) of ramp entry k of test_gouraud_probe's palette:
+ * R = k, G = 5, B = 15 - k (RGB444). */
+static int probe_channel(int k, int c)
+{
+    return c == 0 ? k : (c == 1 ? 5 : 15 - k);
+}
+
+void test_gouraud_probe(void)
+{
+    gpu_model_config cfg = { 8, true, false, 0, 0, 0, false, true };
+    gpu_model *m = malloc(sizeof *m);
+    gpu_model_shade_probe *probe = malloc(sizeof *probe);
+    uint8_t *rgb = malloc((size_t)GPU_MODEL_SCREEN_W * GPU_MODEL_SCREEN_H * 3u);
+    if (m == NULL || probe == NULL || rgb == NULL) {
+        CHECK(false);
+        free(m);
+        free(probe);
+        free(rgb);
+        return;
+    }
+    gpu_model_reset_config(m, &cfg);
+    gpu_model_attach_shade_probe(m, probe);
+    for (uint32_t k = 0; k < 16u; k++) {
+        gpu_model_write(m, GPU_WIN_PALETTE + 4u * (0x10u + k),
+                        (uint32_t)(probe_channel((int)k, 0) << 8 | probe_channel((int)k, 1) << 4 |
+                                   probe_channel((int)k, 2)));
+    }
+
+    /* The ramp, dithered, swapped to the front: pixel px at i = 128 px + 64. */
+    set_screen(m, ramp, 0x10, false);
+    test_batch(m, CL | DI | GPU_CTRL_SWAP_MASK, 0, 4, 0, 2, 0, g_tag++);
+    uint32_t bad_words = 0, bad_rgb = 0;
+    gpu_model_scanout_unquantised(m, rgb);
+    for (int y = 0; y < (int)GPU_FB_HEIGHT; y++) {
+        for (int x = 0; x < (int)GPU_FB_WIDTH; x++) {
+            const uint32_t i = ramp_at(x, y);
+            bad_words += probe->px[m->front][y * GPU_FB_WIDTH + x] !=
+                         (GPU_MODEL_PROBE_SHADED | 0x10u << 16 | i);
+            for (int c = 0; c < 3; c++) {
+                /* Entry k and k + 1 mixed by the fraction: 17 (k + f (k+1 - k)). */
+                const int k = (int)(i >> 12);
+                const double f = (double)(i & 0xFFFu) / 4096.0;
+                const double v = 17.0 * (probe_channel(k, c) + f * (probe_channel(k + 1, c) - probe_channel(k, c)));
+                bad_rgb += rgb[((size_t)(2 * y + 1) * GPU_MODEL_SCREEN_W + (size_t)(2 * x + 1)) * 3u + (size_t)c] !=
+                           (uint8_t)floor(v + 0.5);
+            }
+        }
+    }
+    CHECK_EQ(bad_words, 0);
+    CHECK_EQ(bad_rgb, 0);
+    /* The frame itself is the dithered one, untouched by the probe. */
+    CHECK_EQ(gpu_model_front(m)[100], 0x13 + (((12864u >> 8) & 15u) > (unsigned)bayer[0][0]));
+
+    /* The top of the range shows entry 15 exactly; a flat triangle and a
+     * clear record "none" and scan out as their palette index. */
+    g_const = 0xFFFF;
+    set_screen(m, constant, 0x10, false);
+    test_batch(m, CL | GPU_CTRL_SWAP_MASK, 0, 4, 0, 1, 0, g_tag++);  /* the upper-right half only */
+    gpu_model_scanout_unquantised(m, rgb);
+    {
+        const size_t shaded = ((size_t)1 * GPU_MODEL_SCREEN_W + 600) * 3u;  /* pixel (300, 0) */
+        const size_t cleared = ((size_t)400 * GPU_MODEL_SCREEN_W + 20) * 3u;  /* pixel (10, 200) */
+        CHECK_EQ(rgb[shaded + 0], 15 * 17);
+        CHECK_EQ(rgb[shaded + 2], 0);
+        CHECK_EQ(probe->px[m->front][200 * GPU_FB_WIDTH + 10], 0);
+        CHECK_EQ(rgb[cleared + 0], 0);  /* palette entry 0: black */
+    }
+    test_set_prim(m, 0, 0, 1, 2, 0x18, GPU_PRIM_KIND_TRI);
+    test_batch(m, CL | GPU_CTRL_SWAP_MASK, 0, 4, 0, 1, 0, g_tag++);
+    CHECK_EQ(probe->px[m->front][0 * GPU_FB_WIDTH + 300], 0);
+    gpu_model_scanout_unquantised(m, rgb);
+    CHECK_EQ(rgb[((size_t)1 * GPU_MODEL_SCREEN_W + 600) * 3u + 0], 8 * 17);
+    free(rgb);
+    free(probe);
     free(m);
 }

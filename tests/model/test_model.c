@@ -675,6 +675,7 @@ int main(void)
     test_lines();
     test_depth();
     test_gouraud();
+    test_gouraud_probe();
     printf("%u passed, %u failed\n", test_passed, test_failed);
     return test_failed ? 1 : 0;
 }

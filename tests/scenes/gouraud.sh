@@ -7,12 +7,16 @@
 #     Gouraud ones (the shading is really there), and a Gouraud frame has more distinct colours.
 #  3. Scenes without vertex normals are unchanged by a GPU with Gouraud (tetra, knot: identical
 #     frames with and without --gouraud), and the float backend shades the landscape too.
+#  4. Against the unquantised frames U (fw-host --unquantised-frames: bench-error's undithered
+#     reference), frame by frame: Gouraud undithered is nearer than flat, and the dither brings the
+#     4 x 4 box means nearer than without it (png_diff --box 4); the frames drawn beside U are
+#     those drawn without it.
 source "$(dirname "$0")/../lib.sh"
 need BUILD
 dir="$BUILD/fw-test"
 gsim="$BUILD/sim-fast-g-w8/gpusim"
 need_file "$dir/landscape.elf" "$dir/host-landscape" "$dir/host-landscape-float" "$dir/host-tetra" \
-    "$dir/host-knot" "$gsim"
+    "$dir/host-knot" "$dir/host-landscape-nodither" "$BUILD/tools/png_diff" "$gsim"
 work=$(fresh_dir scene-gouraud)
 
 # 1. co-simulated against the host build
@@ -77,4 +81,22 @@ done
 "$dir/host-landscape-float" --gouraud --frames "$work/float-g" >/dev/null
 "$dir/host-landscape-float" --frames "$work/float-flat" >/dev/null
 cmp -s "$work/float-g/0001.png" "$work/float-flat/0001.png" && fail "float backend: Gouraud frame equals the flat one"
-pass "gouraud: landscape co-simulated on the Gouraud GPU = host build; flat elsewhere; other scenes unchanged"
+
+# 4. the error against the unquantised frames
+"$dir/host-landscape" --gouraud --frames "$work/dithered" --unquantised-frames "$work/unquantised" >/dev/null
+"$dir/host-landscape-nodither" --gouraud --frames "$work/undithered" >/dev/null
+same_pngs "$work/dithered" "$work/host" "the landscape with and without --unquantised-frames"
+field() { "$BUILD/tools/png_diff" --block 2 --box 4 "$work/unquantised/$2" "$work/$3/$2" | awk -v k="$1" '{for (i = 1; i < NF; i++) if ($i == k) print $(i + 1)}'; }
+for f in "$work"/unquantised/*.png; do
+    n=$(basename "$f")
+    flat=$(field abs_sum "$n" flat)
+    und=$(field abs_sum "$n" undithered)
+    und_box=$(field box_abs_sum "$n" undithered)
+    dith_box=$(field box_abs_sum "$n" dithered)
+    [ -n "$flat" ] && [ -n "$und" ] && [ -n "$und_box" ] && [ -n "$dith_box" ] || fail "png_diff on $n"
+    [ "$und" -gt 0 ] || fail "$n: the unquantised frame equals the undithered one (no Gouraud pixel?)"
+    [ "$und" -lt "$flat" ] || fail "$n: undithered Gouraud ($und) not nearer U than flat ($flat)"
+    [ "$dith_box" -lt "$und_box" ] || fail "$n: 4x4 box error dithered $dith_box not below undithered $und_box"
+done
+echo "unquantised: last frame's |dRGB| sums against U: flat $flat, Gouraud $und; 4x4 box sums: undithered $und_box, dithered $dith_box"
+pass "gouraud: landscape co-simulated on the Gouraud GPU = host build; flat elsewhere; other scenes unchanged; nearer U: Gouraud than flat, dithered boxes than undithered"
