@@ -154,24 +154,33 @@ def png_diff(tool, ref, img):
     return fields["differing"], fields["abs_sum"]
 
 
+def parallel(items, work, jobs, report):
+    """{item: work(*item)} for every item, jobs at a time, stopping at the first failure;
+    report(done, total, item, result) after each, for the progress lines."""
+    out = {}
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = {pool.submit(work, *item): item for item in items}
+        for done, fut in enumerate(concurrent.futures.as_completed(futures), 1):
+            item = futures[fut]
+            try:
+                out[item] = fut.result()
+            except Exception:
+                pool.shutdown(wait=True, cancel_futures=True)
+                raise
+            report(done, len(items), item, out[item])
+    return out
+
+
 def measure(build, frames, scenes, jobs, rerun):
     tool = os.path.join(build, "tools", "png_diff")
     todo = [(scene, key) for scene in scenes for key in CONFIGS]
-    runs = {}
-    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        futures = {pool.submit(run_config, build, frames, scene, key, rerun): (scene, key) for scene, key in todo}
-        done = 0
-        for fut in concurrent.futures.as_completed(futures):
-            scene, key = futures[fut]
-            try:
-                runs[(scene, key)] = fut.result()
-            except Exception:
-                pool.shutdown(wait=True, cancel_futures=True)  # stop at the first failure
-                raise
-            done += 1
-            variant, sim, _ = CONFIGS[key]
-            print("bench-error: [%2d/%d] %-9s %-8s %s-%s.elf on %s" % (done, len(todo), scene, key, scene,
-                                                                     variant, sim), file=sys.stderr, flush=True)
+
+    def report(done, total, item, _):
+        scene, key = item
+        variant, sim, _ = CONFIGS[key]
+        print("bench-error: [%2d/%d] %-9s %-8s %s-%s.elf on %s" % (done, total, scene, key, scene, variant, sim),
+              file=sys.stderr, flush=True)
+    runs = parallel(todo, lambda scene, key: run_config(build, frames, scene, key, rerun), jobs, report)
     results = {}
     compared = range(frames)
     for scene, key in todo:
@@ -500,23 +509,16 @@ def soc_measure(build, socsims, scenes, keys, views, span_scenes, jobs):
             if PATH_CONFIGS[k][1] in SOC_GPUS and PATH_CONFIGS[k][1] in socsims and k not in SOC_AS_R_KEYS]
     if "sim-z-w1" in socsims:
         todo += [(sc, "ref", "sim-z-w1") for sc in span_scenes if sc in scenes]
-    out = {}
     t0 = os.times()
-    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        futures = {pool.submit(soc_run, build, socsims, sc, k, views, sim): (sc, k, sim) for sc, k, sim in todo}
-        done = 0
-        for fut in concurrent.futures.as_completed(futures):
-            sc, k, sim = futures[fut]
-            try:
-                r, cached = fut.result()
-            except Exception:
-                pool.shutdown(wait=True, cancel_futures=True)
-                raise
-            done += 1
-            out[(sc, k) if sim is None else ("span-check", sc)] = r
-            print("bench-error SoC: [%2d/%d] %-9s %-8s%s cpu cycles/frame %d%s" % (
-                done, len(todo), sc, k, "" if sim is None else " on " + sim, r["cpu"],
-                " (cached)" if cached else ""), file=sys.stderr, flush=True)
+
+    def report(done, total, item, result):
+        sc, k, sim = item
+        r, cached = result
+        print("bench-error SoC: [%2d/%d] %-9s %-8s%s cpu cycles/frame %d%s" % (
+            done, total, sc, k, "" if sim is None else " on " + sim, r["cpu"],
+            " (cached)" if cached else ""), file=sys.stderr, flush=True)
+    runs = parallel(todo, lambda sc, k, sim: soc_run(build, socsims, sc, k, views, sim), jobs, report)
+    out = {(sc, k) if sim is None else ("span-check", sc): r for (sc, k, sim), (r, _) in runs.items()}
     t1 = os.times()
     print("bench-error SoC: %d socsim runs, %.0f s of CPU" % (len(todo), (t1.children_user + t1.children_system)
                                                               - (t0.children_user + t0.children_system)),
@@ -588,21 +590,9 @@ def percentile(values, q):
 def path_measure(build, scenes, views, cost_views, jobs, rerun):
     tool = os.path.join(build, "tools", "png_diff")
     todo = [(scene, key) for scene in scenes for key in PATH_CONFIGS]
-    runs = {}
-    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        futures = {pool.submit(path_run, build, scene, key, views, cost_views, rerun): (scene, key)
-                   for scene, key in todo}
-        done = 0
-        for fut in concurrent.futures.as_completed(futures):
-            scene, key = futures[fut]
-            try:
-                runs[(scene, key)] = fut.result()
-            except Exception:
-                pool.shutdown(wait=True, cancel_futures=True)
-                raise
-            done += 1
-            print("bench-error --path: [%2d/%d] %-9s %-8s" % (done, len(todo), scene, key),
-                  file=sys.stderr, flush=True)
+    runs = parallel(todo, lambda scene, key: path_run(build, scene, key, views, cost_views, rerun), jobs,
+                    lambda done, total, item, _: print("bench-error --path: [%2d/%d] %-9s %-8s" % (
+                        done, total, *item), file=sys.stderr, flush=True))
     results = {}
     mismatches = []
     for scene, key in todo:

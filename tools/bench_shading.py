@@ -26,13 +26,12 @@ the first COST_VIEWS views; the co-simulated frames must equal the host build's.
     bench_shading.py --build BUILD --views N [--cost-views K] [--jobs J] [--no-run] SCENE...
 """
 import argparse
-import concurrent.futures
 import os
 import shutil
 import subprocess
 import sys
 
-from bench_error import FB_PIXELS, pareto, path_cosim, path_costs, percentile, png_diff_fields
+from bench_error import FB_PIXELS, parallel, pareto, path_cosim, path_costs, percentile, png_diff_fields
 
 SIM = "sim-g-w8"  # ENABLE_GOURAUD with the depth buffer, SPAN_W 8
 # key -> (firmware variant, $(FW_PATH_DIR)/host-<scene>-<variant> and <scene>-<variant>.elf; label)
@@ -68,18 +67,9 @@ def run(build, scene, key, views, cost_views, rerun):
 def measure(build, scenes, views, cost_views, jobs, rerun):
     tool = os.path.join(build, "tools", "png_diff")
     todo = [(scene, key) for scene in scenes for key in CONFIGS]
-    runs = {}
-    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        futures = {pool.submit(run, build, scene, key, views, cost_views, rerun): (scene, key)
-                   for scene, key in todo}
-        for done, fut in enumerate(concurrent.futures.as_completed(futures), 1):
-            scene, key = futures[fut]
-            try:
-                runs[(scene, key)] = fut.result()
-            except Exception:
-                pool.shutdown(wait=True, cancel_futures=True)
-                raise
-            print("bench-error shading: [%d/%d] %-9s %s" % (done, len(todo), scene, key), file=sys.stderr, flush=True)
+    runs = parallel(todo, lambda scene, key: run(build, scene, key, views, cost_views, rerun), jobs,
+                    lambda done, total, item, _: print("bench-error shading: [%d/%d] %-9s %s" % (
+                        done, total, *item), file=sys.stderr, flush=True))
     results, mismatches = {}, []
     for scene, key in todo:
         work, counts = runs[(scene, key)]
