@@ -434,8 +434,7 @@ SOC_DIR = "soc"
 SOC_GPUS = ("sim-w8", "sim-z-w8")  # the GPUs measured on the SoC: the depth buffer or not, SPAN_W 8
 # Configurations not run on the SoC, shown with R's number ("as R"): the span widths and depth bits
 # (GPU knobs: R's firmware), and the sine tables, whose only change is the table's size and index
-# shift (the same instructions a sine; QEMU counts 1.00 of R's on every scene), and whose 1024 entries
-# (4 KiB) put voxel's image 1,952 bytes over the SoC's 192 KiB.
+# shift (the same instructions a sine; QEMU counts 1.00 of R's on every scene).
 SOC_AS_R_KEYS = ("sin6", "sin10")
 
 
