@@ -81,7 +81,7 @@ manifest_gflags = $(foreach p,$(subst -, ,$(1)),$(patsubst g%,-GENABLE_GOURAUD=%
 # sources (cosim/gpu_build.h): -GVTX_CAP=32 -> -DGPU_BUILD_VTX_CAP=32. Made from the same flags the
 # RTL is Verilated with, so the golden model beside a simulator has that simulator's sizes. (Here,
 # the first fragment the Makefile reads, so that every later one can use it at parse time.)
-GPU_BUILD_PARAMS := SPAN_W ENABLE_LINES ENABLE_ZBUF ZBUF_BITS ENABLE_GOURAUD VTX_CAP TRI_CAP
+GPU_BUILD_PARAMS := SPAN_W ENABLE_LINES ENABLE_ZBUF ZBUF_BITS ENABLE_WMASK ENABLE_GOURAUD VTX_CAP TRI_CAP
 gpu_build_defs = $(patsubst -G%,-DGPU_BUILD_%,$(filter $(foreach p,$(GPU_BUILD_PARAMS),-G$(p)=%),$(1)))
 
 .PHONY: manifest-show manifest-check lean-report
