@@ -30,6 +30,8 @@ module soc_top #(
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
     parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,
+    parameter integer ENABLE_WMASK = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK,      // 4 EBR on ECP5 (README)
+    parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,
     parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,   // a scene's manifest may size the buffers to it
     parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,
     localparam integer PIX_HZ = 25000000,      // VGA 640x480@60 pixel rate
@@ -250,6 +252,8 @@ module soc_top #(
         .ENABLE_LINES (ENABLE_LINES),
         .ENABLE_ZBUF  (ENABLE_ZBUF),
         .ZBUF_BITS    (ZBUF_BITS),
+        .ENABLE_WMASK (ENABLE_WMASK),
+        .ENABLE_GOURAUD (ENABLE_GOURAUD),
         .VTX_CAP      (VTX_CAP),
         .TRI_CAP      (TRI_CAP),
         .PIX_DIV      (PIX_DIV)

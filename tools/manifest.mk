@@ -17,7 +17,8 @@
 # rebuilt differently: firmware under $(LEAN_ROOT)/<scene>/ (firmware/, firmware-soc/, board-fw/,
 # board-ulx3s/); simulators per parameter set: the default ones where the manifest's GPU is the
 # default (SPAN_W aside), else $(BUILD)/sim-cfg-w<N>-<tag>/, sim-fast-cfg-w<N>-<tag>/ and
-# socsim-<RAM>k-w<N>-<tag>/ (tag: z1 depth buffer, l0 no lines, v<N> t<N> capacities), shared by
+# socsim-<RAM>k-w<N>-<tag>/ (tag: z1 depth buffer, l0 no lines, m0 no framebuffer write mask: a scene
+# without the anaglyph, v<N> t<N> capacities, g1 Gouraud), shared by
 # every scene with that set.
 #
 #   manifest-show [SCENE=x] [FULL=1]   what such a build uses: its ELFs, simulators, RTL parameters
@@ -72,16 +73,17 @@ $(BUILD)/manifest/%.mk: firmware/scenes/%.manifest.toml tools/manifest.py firmwa
 	@$(PYTHON) tools/manifest.py $* --out $@
 
 # $(BUILD)/sim-cfg-<tag>/gpusim and sim-fast-cfg-<tag>/gpusim: the tag's words as -G parameters
-# (w SPAN_W, l ENABLE_LINES, z ENABLE_ZBUF, v VTX_CAP, t TRI_CAP, g ENABLE_GOURAUD); the rules are
-# the Makefile's.
+# (w SPAN_W, l ENABLE_LINES, z ENABLE_ZBUF, m ENABLE_WMASK, v VTX_CAP, t TRI_CAP, g ENABLE_GOURAUD);
+# the rules are the Makefile's.
 manifest_gflags = $(foreach p,$(subst -, ,$(1)),$(patsubst g%,-GENABLE_GOURAUD=%,$(patsubst t%,-GTRI_CAP=%,\
-  $(patsubst v%,-GVTX_CAP=%,$(patsubst z%,-GENABLE_ZBUF=%,$(patsubst l%,-GENABLE_LINES=%,$(patsubst w%,-GSPAN_W=%,$(p))))))))
+  $(patsubst v%,-GVTX_CAP=%,$(patsubst m%,-GENABLE_WMASK=%,$(patsubst z%,-GENABLE_ZBUF=%,\
+  $(patsubst l%,-GENABLE_LINES=%,$(patsubst w%,-GSPAN_W=%,$(p)))))))))
 
 # The GPU parameters of a list of Verilator flags, as C definitions for the harness's per-simulator
 # sources (cosim/gpu_build.h): -GVTX_CAP=32 -> -DGPU_BUILD_VTX_CAP=32. Made from the same flags the
 # RTL is Verilated with, so the golden model beside a simulator has that simulator's sizes. (Here,
 # the first fragment the Makefile reads, so that every later one can use it at parse time.)
-GPU_BUILD_PARAMS := SPAN_W ENABLE_LINES ENABLE_ZBUF ZBUF_BITS ENABLE_GOURAUD VTX_CAP TRI_CAP
+GPU_BUILD_PARAMS := SPAN_W ENABLE_LINES ENABLE_ZBUF ZBUF_BITS ENABLE_WMASK ENABLE_GOURAUD VTX_CAP TRI_CAP
 gpu_build_defs = $(patsubst -G%,-DGPU_BUILD_%,$(filter $(foreach p,$(GPU_BUILD_PARAMS),-G$(p)=%),$(1)))
 
 .PHONY: manifest-show manifest-check lean-report

@@ -187,6 +187,8 @@ def fragment(data, path):
     extra = []  # the GPU's parameters where they differ from the defaults
     if not feat["lines"]:
         extra.append(("l0", "-GENABLE_LINES=0"))
+    if not feat["anaglyph"]:  # the write mask's planes serve the anaglyph only: 4 EBR saved
+        extra.append(("m0", "-GENABLE_WMASK=0"))
     if gpu["vtx_cap"] != vtx_max:
         extra.append((f"v{gpu['vtx_cap']}", f"-GVTX_CAP={gpu['vtx_cap']}"))
     if gpu["tri_cap"] != tri_max:

@@ -1,7 +1,7 @@
 # boards/ulx3s/board.mk — the Radiona ULX3S (LFE5U-85F): bitstream, flash, terminal; included by
 # the top-level Makefile (paths relative to the repository root).
 #
-#   bitstream BOARD=ulx3s [SCENE=… SYS_MHZ=50 SOC_RAM_KIB=… SEED=…]
+#   bitstream BOARD=ulx3s [SCENE=… SYS_MHZ=50 SOC_RAM_KIB=… SEED=… ZBUF=1 WMASK=0|1]
 #       the firmware of SCENE (FRAMES 0: until Q) as the RAM's initial contents, then
 #       synth/ecp5_bitstream.py: yosys synth_ecp5, nextpnr-ecp5 --85k CABGA381 speed 6 (every clock
 #       constrained through the PLL; fails when one misses), ecppack -> $(ULX3S_BIT)
@@ -18,8 +18,14 @@
 #                             firmware, its text back; Ctrl-A Ctrl-X leaves
 SYS_MHZ     ?= 50
 SEED        ?= 1
+# The framebuffer write mask (ENABLE_WMASK, the anaglyph's planes) costs 4 EBR: on by default, off
+# beside the depth buffer, which leaves too few (with it, the smallest depth-buffer build needs 209
+# of the 85F's 208 EBR; the firmware reads CAPS_WMASK and draws the anaglyph's eyes one over the other).
+WMASK       ?= $(if $(filter 1,$(ZBUF)),0,1)
 TERM_PORT   ?= /dev/ttyUSB0
-ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)
+# A scene's manifest decides the mask itself (its GPU flags, tag m0); otherwise WMASK.
+ULX3S_WMASK  = $(if $(filter --param ENABLE_WMASK=%,$(ULX3S_GPU_PARAMS)),,--param ENABLE_WMASK=$(WMASK))
+ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)$(if $(ULX3S_WMASK),$(if $(filter 0,$(WMASK)),-nomask))
 ULX3S_DIR    = $(BUILD)/board-ulx3s/$(ULX3S_NAME)
 ULX3S_BIT    = $(ULX3S_DIR)/ulx3s_top.bit
 ULX3S_FW_ELF = $(BUILD)/board-fw/$(SCENE)-$(SOC_RAM_KIB)k.elf
@@ -27,7 +33,8 @@ ULX3S_FLOW   = $(PYTHON) synth/ecp5_bitstream.py --top ulx3s_top --lpf boards/ul
   --device 85k --package CABGA381 --speed 6 --seed $(SEED) --out $(ULX3S_DIR) \
   --files $(RTL_FILES) --extra $(SOC_CPU_V_REL) --files $(SOC_FILES) --files boards/ulx3s/files.f \
   --files boards/ulx3s/files_top.f --param SYS_MHZ=$(SYS_MHZ) --param RAM_BYTES=$(SOC_RAM_BYTES) \
-  --param RAM_INIT=$(ULX3S_FW_ELF).hex --param SPAN_W=$(SPAN_W) --param ENABLE_ZBUF=$(ZBUF) $(ULX3S_GPU_PARAMS)
+  --param RAM_INIT=$(ULX3S_FW_ELF).hex --param SPAN_W=$(SPAN_W) --param ENABLE_ZBUF=$(ZBUF) \
+  $(ULX3S_WMASK) $(ULX3S_GPU_PARAMS)
 # YoWASP's tools see the working directory only: the core's path relative to it (in .venv/).
 SOC_CPU_V_REL = $(patsubst $(CURDIR)/%,%,$(SOC_CPU_V))
 

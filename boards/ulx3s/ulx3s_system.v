@@ -22,6 +22,8 @@ module ulx3s_system #(
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
     parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,  // depth bits kept (gpu_core)
+    parameter integer ENABLE_WMASK = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK,      // framebuffer write mask
+    parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,  // Gouraud triangles
     parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,              // buffer capacities (a scene's manifest)
     parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP
 ) (
@@ -59,6 +61,8 @@ module ulx3s_system #(
         .ENABLE_LINES (ENABLE_LINES),
         .ENABLE_ZBUF  (ENABLE_ZBUF),
         .ZBUF_BITS    (ZBUF_BITS),
+        .ENABLE_WMASK (ENABLE_WMASK),
+        .ENABLE_GOURAUD (ENABLE_GOURAUD),
         .VTX_CAP      (VTX_CAP),
         .TRI_CAP      (TRI_CAP)
     ) u_soc (
