@@ -7,7 +7,8 @@ usage: board_fit.py --build BUILD [--pnr] [--jobs N] [--scenes S ...] [--make ma
 
 Builds, each through `make synth-board BOARD=ulx3s` (or `make bitstream`, with --pnr):
   default      SCENE tetra, the contract's 192 KiB RAM, SPAN_W 8, lines, no depth buffer
-  zbuf         the same with ENABLE_ZBUF (the 16-bit depth buffer: 75 EBR more)
+  zbuf         the same with ENABLE_ZBUF (the 16-bit depth buffer: 75 EBR more) and without the
+               framebuffer write mask (4 EBR less: board.mk's WMASK default beside the depth buffer)
   <scene>-lean the scene's one-scene firmware and a RAM just large enough for it: its image, bss
                and stack (postlink's "RAM use") rounded up to 8 KiB — the RAM's four byte lanes of
                2 KiB EBR each
