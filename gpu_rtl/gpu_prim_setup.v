@@ -305,9 +305,9 @@ module gpu_prim_setup #(
     reg signed [15:0] bx0_q, by0_q, bx1_q, by1_q, bx2_q, by2_q;
     reg signed [34:0] b_area_q;
     reg signed [12:0] b_rpx0_q, b_rpx1_q, b_rpy0_q, b_rpy1_q;  // box of pixel centres, unclamped
-    reg [15:0] bz0_q, bz1_q, bz2_q;
+    reg [15:0] bz0_q;                  // v0's depth (the planes' numerators: g_z, g_i)
     reg b_shaded_q;
-    reg [15:0] bi0_q, bi1_q, bi2_q;
+    reg [15:0] bi0_q;                  // v0's intensity
     wire c_free;
     wire b_z_ready;                    // the depth and intensity gradients are known (or not needed)
     wire z_ready, i_ready;             // each of them
@@ -331,12 +331,8 @@ module gpu_prim_setup #(
                 by2_q <= ay2_q;
                 b_area_q <= area_w;
                 bz0_q <= az0_q;
-                bz1_q <= az1_q;
-                bz2_q <= az2_q;
                 b_shaded_q <= a_shaded_q;
                 bi0_q <= ai0_q;
-                bi1_q <= ai1_q;
-                bi2_q <= ai2_q;
                 b_rpx0_q <= first_centre(min3(ax0_q, ax1_q, ax2_q));
                 b_rpx1_q <= last_centre(max3(ax0_q, ax1_q, ax2_q));
                 b_rpy0_q <= first_centre(min3(ay0_q, ay1_q, ay2_q));
@@ -416,13 +412,22 @@ module gpu_prim_setup #(
     wire signed [ZSTEP_W-1:0] z_dx_w, z_dy_w;
     generate
         if (ENABLE_ZBUF != 0) begin : g_z
-            wire signed [17:0] dz1 = 18'({2'b00, bz1_q}) - 18'({2'b00, bz0_q});
-            wire signed [17:0] dz2 = 18'({2'b00, bz2_q}) - 18'({2'b00, bz0_q});
-            wire signed [17:0] dx1 = 18'(bx1_q) - 18'(bx0_q), dy1 = 18'(by1_q) - 18'(by0_q);
-            wire signed [17:0] dx2 = 18'(bx2_q) - 18'(bx0_q), dy2 = 18'(by2_q) - 18'(by0_q);
-            // Numerators below 2^33 in magnitude; times 2^16 below 2^49 (contract, "Depth").
-            wire signed [50:0] num_a = 51'(dz1 * dy2 - dz2 * dy1) <<< 16;
-            wire signed [50:0] num_b = 51'(dz2 * dx1 - dz1 * dx2) <<< 16;
+            // The numerators from stage A's corners (the area's differences), registered as stage B
+            // takes the triangle, as its area is: the products end in a register, not in the
+            // dividers' inputs. Below 2^33 in magnitude; times 2^16 below 2^49 (contract, "Depth").
+            wire signed [16:0] dz1 = 17'({1'b0, az1_q}) - 17'({1'b0, az0_q});
+            wire signed [16:0] dz2 = 17'({1'b0, az2_q}) - 17'({1'b0, az0_q});
+            wire signed [34:0] num_a_w = dz1 * d02y - dz2 * d01y;  // operands widen to 35 bits first
+            wire signed [34:0] num_b_w = dz2 * d01x - dz1 * d02x;
+            reg signed [34:0] num_a_q, num_b_q;
+            always @(posedge clk) begin
+                if (b_free && a_valid_q) begin
+                    num_a_q <= num_a_w;
+                    num_b_q <= num_b_w;
+                end
+            end
+            wire signed [50:0] num_a = 51'(num_a_q) <<< 16;
+            wire signed [50:0] num_b = 51'(num_b_q) <<< 16;
             wire need = b_valid_q && !b_is_line_q && ctrl_ztest && b_drawable;
             reg started_q;             // this triangle's division has been started
             wire div_start = need && !started_q;
@@ -457,7 +462,7 @@ module gpu_prim_setup #(
             assign z_start_w = {Z_W{1'b0}};
             assign z_dx_w = {ZSTEP_W{1'b0}};
             assign z_dy_w = {ZSTEP_W{1'b0}};
-            wire unused_z = ctrl_ztest | (|vz_rd_data) | (|bz0_q) | (|bz1_q) | (|bz2_q);
+            wire unused_z = ctrl_ztest | (|vz_rd_data) | (|bz0_q) | (|az1_q) | (|az2_q);
         end
     endgenerate
 
@@ -467,13 +472,22 @@ module gpu_prim_setup #(
     wire signed [ISTEP_W-1:0] i_dx_w, i_dy_w;
     generate
         if (ENABLE_GOURAUD != 0) begin : g_i
-            // The same widths as the depth plane's: di is a difference of two 16-bit unsigned values.
-            wire signed [17:0] di1 = 18'({2'b00, bi1_q}) - 18'({2'b00, bi0_q});
-            wire signed [17:0] di2 = 18'({2'b00, bi2_q}) - 18'({2'b00, bi0_q});
-            wire signed [17:0] dx1 = 18'(bx1_q) - 18'(bx0_q), dy1 = 18'(by1_q) - 18'(by0_q);
-            wire signed [17:0] dx2 = 18'(bx2_q) - 18'(bx0_q), dy2 = 18'(by2_q) - 18'(by0_q);
-            wire signed [50:0] num_a = 51'(di1 * dy2 - di2 * dy1) <<< 16;
-            wire signed [50:0] num_b = 51'(di2 * dx1 - di1 * dx2) <<< 16;
+            // The same widths as the depth plane's (di is a difference of two 16-bit unsigned
+            // values), and registered as its numerators are: computed in the dividers' inputs,
+            // they held the ECP5's system clock to 43.6 MHz against 50.
+            wire signed [16:0] di1 = 17'({1'b0, ai1_q}) - 17'({1'b0, ai0_q});
+            wire signed [16:0] di2 = 17'({1'b0, ai2_q}) - 17'({1'b0, ai0_q});
+            wire signed [34:0] num_a_w = di1 * d02y - di2 * d01y;
+            wire signed [34:0] num_b_w = di2 * d01x - di1 * d02x;
+            reg signed [34:0] num_a_q, num_b_q;
+            always @(posedge clk) begin
+                if (b_free && a_valid_q) begin
+                    num_a_q <= num_a_w;
+                    num_b_q <= num_b_w;
+                end
+            end
+            wire signed [50:0] num_a = 51'(num_a_q) <<< 16;
+            wire signed [50:0] num_b = 51'(num_b_q) <<< 16;
             wire need = b_valid_q && !b_is_line_q && b_shaded_q && b_drawable;
             reg started_q;
             wire div_start = need && !started_q;
@@ -504,7 +518,7 @@ module gpu_prim_setup #(
             assign i_start_w = {I_W{1'b0}};
             assign i_dx_w = {ISTEP_W{1'b0}};
             assign i_dy_w = {ISTEP_W{1'b0}};
-            wire unused_i = (|vi_rd_data) | (|bi0_q) | (|bi1_q) | (|bi2_q) | b_shaded_q;
+            wire unused_i = (|vi_rd_data) | (|bi0_q) | (|ai1_q) | (|ai2_q) | b_shaded_q;
         end
     endgenerate
 
