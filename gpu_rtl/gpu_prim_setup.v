@@ -267,7 +267,7 @@ module gpu_prim_setup #(
         end
     end
 
-    // ------------------------------------------------------------------ stage B: area, box, endpoints
+    // ---------------------------------------- stage B: area, box, endpoints (and the planes' numerators)
     function automatic signed [15:0] min3(input signed [15:0] a, input signed [15:0] b, input signed [15:0] c);
         min3 = (a < b) ? ((a < c) ? a : c) : ((b < c) ? b : c);
     endfunction
@@ -305,9 +305,9 @@ module gpu_prim_setup #(
     reg signed [15:0] bx0_q, by0_q, bx1_q, by1_q, bx2_q, by2_q;
     reg signed [34:0] b_area_q;
     reg signed [12:0] b_rpx0_q, b_rpx1_q, b_rpy0_q, b_rpy1_q;  // box of pixel centres, unclamped
-    reg [15:0] bz0_q;                  // v0's depth (the planes' numerators: g_z, g_i)
+    reg [15:0] bz0_q;                  // v0's depth: the depth plane's start (g_z)
     reg b_shaded_q;
-    reg [15:0] bi0_q;                  // v0's intensity
+    reg [15:0] bi0_q;                  // v0's intensity: the intensity plane's start (g_i)
     wire c_free;
     wire b_z_ready;                    // the depth and intensity gradients are known (or not needed)
     wire z_ready, i_ready;             // each of them
