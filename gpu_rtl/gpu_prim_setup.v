@@ -293,6 +293,21 @@ module gpu_prim_setup #(
         clamp = (v < 13'sd0) ? 13'sd0 : ((v > hi) ? hi : v);
     endfunction
 
+    localparam signed [12:0] X_LAST = 13'(gpu_pkg::GPU_FB_WIDTH - 1);   // last pixel column
+    localparam signed [12:0] Y_LAST = 13'(gpu_pkg::GPU_FB_HEIGHT - 1);  // last pixel row
+    // Centre, Q12.4, of lane 0 of the span holding on-screen pixel column px, and of pixel row py.
+    function automatic signed [17:0] span_centre_x(input [8:0] px);
+        span_centre_x = 18'(32'(COL_W'(px / 9'(SPAN_W))) * SPAN_W * 16 + 8);
+    endfunction
+    function automatic signed [17:0] row_centre_y(input [7:0] py);
+        row_centre_y = 18'({py, 4'd8});
+    endfunction
+
+    // The box's first pixel centres from stage A's corners (unclamped).
+    wire signed [12:0] a_rpx0 = first_centre(min3(ax0_q, ax1_q, ax2_q));
+    wire signed [12:0] a_rpy0 = first_centre(min3(ay0_q, ay1_q, ay2_q));
+    wire [8:0] a_px0 = 9'(clamp(a_rpx0, X_LAST));  // clamped as stage C clamps b_rpx0_q
+    wire [7:0] a_py0 = 8'(clamp(a_rpy0, Y_LAST));
     wire signed [16:0] d01x = 17'(ax1_q) - 17'(ax0_q);
     wire signed [16:0] d01y = 17'(ay1_q) - 17'(ay0_q);
     wire signed [16:0] d02x = 17'(ax2_q) - 17'(ax0_q);
@@ -306,6 +321,10 @@ module gpu_prim_setup #(
     reg signed [34:0] b_area_q;
     reg signed [12:0] b_rpx0_q, b_rpx1_q, b_rpy0_q, b_rpy1_q;  // box of pixel centres, unclamped
     reg [15:0] bz0_q;                  // v0's depth: the depth plane's start (g_z)
+    // Lane 0 of the first span minus v0, Q12.4: the planes' start offsets (g_z, g_i), registered
+    // here so that stage C's products start from registers (the box, the clamp and the span
+    // in front of them held the Gouraud board build to 46.2 MHz against 50).
+    reg signed [17:0] b_off_x_q, b_off_y_q;
     reg b_shaded_q;
     reg [15:0] bi0_q;                  // v0's intensity: the intensity plane's start (g_i)
     wire c_free;
@@ -333,18 +352,18 @@ module gpu_prim_setup #(
                 bz0_q <= az0_q;
                 b_shaded_q <= a_shaded_q;
                 bi0_q <= ai0_q;
-                b_rpx0_q <= first_centre(min3(ax0_q, ax1_q, ax2_q));
+                b_rpx0_q <= a_rpx0;
                 b_rpx1_q <= last_centre(max3(ax0_q, ax1_q, ax2_q));
-                b_rpy0_q <= first_centre(min3(ay0_q, ay1_q, ay2_q));
+                b_rpy0_q <= a_rpy0;
                 b_rpy1_q <= last_centre(max3(ay0_q, ay1_q, ay2_q));
+                b_off_x_q <= span_centre_x(a_px0) - 18'(ax0_q);  // -32759 .. 37896
+                b_off_y_q <= row_centre_y(a_py0) - 18'(ay0_q);
             end
         end
     end
 
     // Clamped to the screen: px0 = max(0, raw), px1 = min(X_LAST, raw). Empty when px0 > px1, i.e.
     // when the raw box is empty or lies wholly off one side.
-    localparam signed [12:0] X_LAST = 13'(gpu_pkg::GPU_FB_WIDTH - 1);   // last pixel column
-    localparam signed [12:0] Y_LAST = 13'(gpu_pkg::GPU_FB_HEIGHT - 1);  // last pixel row
     wire signed [12:0] b_px0 = clamp(b_rpx0_q, X_LAST), b_px1 = clamp(b_rpx1_q, X_LAST);
     wire signed [12:0] b_py0 = clamp(b_rpy0_q, Y_LAST), b_py1 = clamp(b_rpy1_q, Y_LAST);
     wire box_empty = b_rpx0_q > b_rpx1_q || b_rpy0_q > b_rpy1_q || b_rpx1_q < 13'sd0
@@ -360,8 +379,8 @@ module gpu_prim_setup #(
     wire [COL_W-1:0] col_lo = COL_W'(b_px0[8:0] / 9'(SPAN_W));
     wire [COL_W-1:0] col_hi = COL_W'(b_px1[8:0] / 9'(SPAN_W));
     // Centre of lane 0 of the first span, Q12.4: 16 * (col_lo * SPAN_W) + 8.
-    wire signed [17:0] pcx = 18'(32'(col_lo) * SPAN_W * 16 + 8);
-    wire signed [17:0] pcy = 18'({b_py0[7:0], 4'd8});
+    wire signed [17:0] pcx = span_centre_x(b_px0[8:0]);
+    wire signed [17:0] pcy = row_centre_y(b_py0[7:0]);
 
     function automatic signed [EDGE_W-1:0] edge_at(input signed [15:0] ax, input signed [15:0] ay,
                                                    input signed [15:0] bx, input signed [15:0] by,
@@ -450,8 +469,8 @@ module gpu_prim_setup #(
             // earliest): STEPS + 2 clocks a depth-tested triangle.
             assign z_ready = !need || (started_q && valid_a);
             // Depth at lane 0 of the first span: 2^16 z0 + ZA (pcx - x0) + ZB (pcy - y0).
-            wire signed [17:0] off_x = pcx - 18'(bx0_q);  // -32759 .. 37896: 17 bits
-            wire signed [17:0] off_y = pcy - 18'(by0_q);
+            wire signed [17:0] off_x = b_off_x_q;  // -32759 .. 37896: 17 bits
+            wire signed [17:0] off_y = b_off_y_q;
             assign z_start_w = (Z_W'($signed({1'b0, bz0_q})) <<< 16)
                              + Z_W'(za) * Z_W'(off_x) + Z_W'(zb) * Z_W'(off_y);
             assign z_dx_w = ZSTEP_W'(za) <<< 4;
@@ -505,8 +524,8 @@ module gpu_prim_setup #(
                 end
             end
             assign i_ready = !need || (started_q && valid_a);
-            wire signed [17:0] off_x = pcx - 18'(bx0_q);  // as the depth plane's offsets
-            wire signed [17:0] off_y = pcy - 18'(by0_q);
+            wire signed [17:0] off_x = b_off_x_q;  // as the depth plane's offsets
+            wire signed [17:0] off_y = b_off_y_q;
             // (Meaningless for a triangle that is not shaded: the walker then ignores them.)
             assign i_start_w = (I_W'($signed({1'b0, bi0_q})) <<< 16)
                              + I_W'(ia) * I_W'(off_x) + I_W'(ib) * I_W'(off_y);
@@ -518,7 +537,8 @@ module gpu_prim_setup #(
             assign i_start_w = {I_W{1'b0}};
             assign i_dx_w = {ISTEP_W{1'b0}};
             assign i_dy_w = {ISTEP_W{1'b0}};
-            wire unused_i = (|vi_rd_data) | (|bi0_q) | (|ai1_q) | (|ai2_q) | b_shaded_q;
+            wire unused_i = (|vi_rd_data) | (|bi0_q) | (|ai1_q) | (|ai2_q) | b_shaded_q
+                          | (|b_off_x_q) | (|b_off_y_q);  // the depth plane's too, if built
         end
     endgenerate
 
