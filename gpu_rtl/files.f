@@ -5,6 +5,7 @@ gpu_rtl/gpu_ram.v
 gpu_rtl/gpu_cdc_sync.v
 gpu_rtl/gpu_cdc_pulse.v
 gpu_rtl/gpu_div.v
+gpu_rtl/gpu_plane_setup.v
 gpu_rtl/gpu_regs.v
 gpu_rtl/gpu_prim_setup.v
 gpu_rtl/gpu_span_walker.v

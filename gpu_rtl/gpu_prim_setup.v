@@ -426,56 +426,21 @@ module gpu_prim_setup #(
     wire b_leaves = b_valid_q && c_free && b_z_ready;   // stage B hands on (or drops) its primitive
     assign c_free = !out_valid || out_ready;
 
-    // ---- depth plane (ENABLE_ZBUF): ZA, ZB by two dividers while stage B holds the triangle ----
+    // ---- the depth plane (ENABLE_ZBUF) and the intensity plane (ENABLE_GOURAUD: the same formula
+    // on VTX_I), each by its gpu_plane_setup while stage B holds the triangle ----
+    wire a_load = b_free && a_valid_q;               // stage B takes stage A's triangle
+    wire b_next = b_leaves || !b_valid_q;            // ... and hands it on, or holds none
     wire signed [Z_W-1:0] z_start_w;
     wire signed [ZSTEP_W-1:0] z_dx_w, z_dy_w;
     generate
         if (ENABLE_ZBUF != 0) begin : g_z
-            // The numerators from stage A's corners (the area's differences), registered as stage B
-            // takes the triangle, as its area is: the products end in a register, not in the
-            // dividers' inputs. Below 2^33 in magnitude; times 2^16 below 2^49 (contract, "Depth").
-            wire signed [16:0] dz1 = 17'({1'b0, az1_q}) - 17'({1'b0, az0_q});
-            wire signed [16:0] dz2 = 17'({1'b0, az2_q}) - 17'({1'b0, az0_q});
-            wire signed [34:0] num_a_w = dz1 * d02y - dz2 * d01y;  // operands widen to 35 bits first
-            wire signed [34:0] num_b_w = dz2 * d01x - dz1 * d02x;
-            reg signed [34:0] num_a_q, num_b_q;
-            always @(posedge clk) begin
-                if (b_free && a_valid_q) begin
-                    num_a_q <= num_a_w;
-                    num_b_q <= num_b_w;
-                end
-            end
-            wire signed [50:0] num_a = 51'(num_a_q) <<< 16;
-            wire signed [50:0] num_b = 51'(num_b_q) <<< 16;
-            wire need = b_valid_q && !b_is_line_q && ctrl_ztest && b_drawable;
-            reg started_q;             // this triangle's division has been started
-            wire div_start = need && !started_q;
-            wire valid_a, valid_b;     // the quotients are ready (both dividers take the same time)
-            wire signed [31:0] za, zb;
-            gpu_div #(.QBITS(DIV_QBITS)) u_div_a (.clk(clk), .rst(rst), .start(div_start),
-                .dividend(num_a), .divisor(b_area_q), .valid(valid_a), .quotient(za));
-            gpu_div #(.QBITS(DIV_QBITS)) u_div_b (.clk(clk), .rst(rst), .start(div_start),
-                .dividend(num_b), .divisor(b_area_q), .valid(valid_b), .quotient(zb));
-            always @(posedge clk) begin
-                if (rst || b_leaves || !b_valid_q) begin
-                    started_q <= 1'b0;
-                end else if (div_start) begin
-                    started_q <= 1'b1;
-                end
-            end
-            // Timeline in stage B: clock 0 starts both dividers from B's registers, the next STEPS
-            // clocks develop the quotients, and in the clock after they are valid and stage C takes
-            // them straight from the dividers (they hold until the next start, a clock later at the
-            // earliest): STEPS + 2 clocks a depth-tested triangle.
-            assign z_ready = !need || (started_q && valid_a);
-            // Depth at lane 0 of the first span: 2^16 z0 + ZA (pcx - x0) + ZB (pcy - y0).
-            wire signed [17:0] off_x = b_off_x_q;  // -32759 .. 37896: 17 bits
-            wire signed [17:0] off_y = b_off_y_q;
-            assign z_start_w = (Z_W'($signed({1'b0, bz0_q})) <<< 16)
-                             + Z_W'(za) * Z_W'(off_x) + Z_W'(zb) * Z_W'(off_y);
-            assign z_dx_w = ZSTEP_W'(za) <<< 4;
-            assign z_dy_w = ZSTEP_W'(zb) <<< 4;
-            wire unused_div = valid_b;
+            gpu_plane_setup #(.DIV_QBITS(DIV_QBITS), .START_W(Z_W), .STEP_W(ZSTEP_W)) u_plane (
+                .clk(clk), .rst(rst),
+                .a_load(a_load), .a_v0(az0_q), .a_v1(az1_q), .a_v2(az2_q),
+                .a_d01x(d01x), .a_d01y(d01y), .a_d02x(d02x), .a_d02y(d02y),
+                .b_need(b_valid_q && !b_is_line_q && ctrl_ztest && b_drawable), .b_next(b_next),
+                .b_area(b_area_q), .b_v0(bz0_q), .b_off_x(b_off_x_q), .b_off_y(b_off_y_q),
+                .ready(z_ready), .start(z_start_w), .dx(z_dx_w), .dy(z_dy_w));
         end else begin : g_no_z
             assign z_ready = 1'b1;
             assign z_start_w = {Z_W{1'b0}};
@@ -485,60 +450,25 @@ module gpu_prim_setup #(
         end
     endgenerate
 
-    // ---- intensity plane (ENABLE_GOURAUD): the depth plane's formula on VTX_I (contract, "Gouraud
-    // intensity"), IA, IB by two more dividers, started with the depth ones and as long ----
     wire signed [I_W-1:0] i_start_w;
     wire signed [ISTEP_W-1:0] i_dx_w, i_dy_w;
     generate
         if (ENABLE_GOURAUD != 0) begin : g_i
-            // The same widths as the depth plane's (di is a difference of two 16-bit unsigned
-            // values), and registered as its numerators are: computed in the dividers' inputs,
-            // they held the ECP5's system clock to 43.6 MHz against 50.
-            wire signed [16:0] di1 = 17'({1'b0, ai1_q}) - 17'({1'b0, ai0_q});
-            wire signed [16:0] di2 = 17'({1'b0, ai2_q}) - 17'({1'b0, ai0_q});
-            wire signed [34:0] num_a_w = di1 * d02y - di2 * d01y;
-            wire signed [34:0] num_b_w = di2 * d01x - di1 * d02x;
-            reg signed [34:0] num_a_q, num_b_q;
-            always @(posedge clk) begin
-                if (b_free && a_valid_q) begin
-                    num_a_q <= num_a_w;
-                    num_b_q <= num_b_w;
-                end
-            end
-            wire signed [50:0] num_a = 51'(num_a_q) <<< 16;
-            wire signed [50:0] num_b = 51'(num_b_q) <<< 16;
-            wire need = b_valid_q && !b_is_line_q && b_shaded_q && b_drawable;
-            reg started_q;
-            wire div_start = need && !started_q;
-            wire valid_a, valid_b;
-            wire signed [31:0] ia, ib;
-            gpu_div #(.QBITS(DIV_QBITS)) u_div_ia (.clk(clk), .rst(rst), .start(div_start),
-                .dividend(num_a), .divisor(b_area_q), .valid(valid_a), .quotient(ia));
-            gpu_div #(.QBITS(DIV_QBITS)) u_div_ib (.clk(clk), .rst(rst), .start(div_start),
-                .dividend(num_b), .divisor(b_area_q), .valid(valid_b), .quotient(ib));
-            always @(posedge clk) begin
-                if (rst || b_leaves || !b_valid_q) begin
-                    started_q <= 1'b0;
-                end else if (div_start) begin
-                    started_q <= 1'b1;
-                end
-            end
-            assign i_ready = !need || (started_q && valid_a);
-            wire signed [17:0] off_x = b_off_x_q;  // as the depth plane's offsets
-            wire signed [17:0] off_y = b_off_y_q;
             // (Meaningless for a triangle that is not shaded: the walker then ignores them.)
-            assign i_start_w = (I_W'($signed({1'b0, bi0_q})) <<< 16)
-                             + I_W'(ia) * I_W'(off_x) + I_W'(ib) * I_W'(off_y);
-            assign i_dx_w = ISTEP_W'(ia) <<< 4;
-            assign i_dy_w = ISTEP_W'(ib) <<< 4;
-            wire unused_i_div = valid_b;
+            gpu_plane_setup #(.DIV_QBITS(DIV_QBITS), .START_W(I_W), .STEP_W(ISTEP_W)) u_plane (
+                .clk(clk), .rst(rst),
+                .a_load(a_load), .a_v0(ai0_q), .a_v1(ai1_q), .a_v2(ai2_q),
+                .a_d01x(d01x), .a_d01y(d01y), .a_d02x(d02x), .a_d02y(d02y),
+                .b_need(b_valid_q && !b_is_line_q && b_shaded_q && b_drawable), .b_next(b_next),
+                .b_area(b_area_q), .b_v0(bi0_q), .b_off_x(b_off_x_q), .b_off_y(b_off_y_q),
+                .ready(i_ready), .start(i_start_w), .dx(i_dx_w), .dy(i_dy_w));
         end else begin : g_no_i
             assign i_ready = 1'b1;
             assign i_start_w = {I_W{1'b0}};
             assign i_dx_w = {ISTEP_W{1'b0}};
             assign i_dy_w = {ISTEP_W{1'b0}};
             wire unused_i = (|vi_rd_data) | (|bi0_q) | (|ai1_q) | (|ai2_q) | b_shaded_q
-                          | (|b_off_x_q) | (|b_off_y_q);  // the depth plane's too, if built
+                          | (|b_off_x_q) | (|b_off_y_q) | a_load | b_next;  // the depth plane's too, if built
         end
     endgenerate
 
