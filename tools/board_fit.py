@@ -9,9 +9,9 @@ Builds, each through `make synth-board BOARD=ulx3s` (or `make bitstream`, with -
   default      SCENE tetra, the contract's 192 KiB RAM, SPAN_W 8, lines, no depth buffer
   zbuf         the same with ENABLE_ZBUF (the 16-bit depth buffer: 75 EBR more) and without the
                framebuffer write mask (4 EBR less: board.mk's WMASK default beside the depth buffer)
-  <scene>-lean the scene's one-scene firmware and a RAM just large enough for it: its image, bss
-               and stack (postlink's "RAM use") rounded up to 8 KiB — the RAM's four byte lanes of
-               2 KiB EBR each
+  <scene>-lean the scene's one-scene firmware and a RAM just large enough for it: the linked
+               image's need (bsp/soc/postlink.py's <elf>.ramkib: image, bss and stack, rounded up
+               to the RAM's granule), as the scene's manifest build sizes it
   zbuf-<scene>-lean  the depth-buffer build with the smallest lean RAM (a depth buffer fits only so)
 The firmware of every build is made first, one after another (they share object files); then the
 builds run JOBS at a time (default 2: yosys and nextpnr use one core each). Each build's numbers come from synth/ecp5_bitstream.py's resources.json and fmax.json in its
@@ -19,7 +19,6 @@ directory; a build that does not fit the 85F is reported as such (no place and r
 """
 import argparse
 import json
-import math
 import os
 import re
 import subprocess
@@ -27,7 +26,6 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
 
-RAM_USE = re.compile(r"RAM use (\d+) of (\d+) bytes")
 SCENES = ["tetra", "cubes", "landscape", "voxel", "knot"]
 
 
@@ -40,17 +38,22 @@ def make(args, targets, variables, log):
         return status, f.read()
 
 
+def default_kib():
+    """The contract's default RAM (contract/soc_map.h SOC_RAM_DEFAULT_BYTES), in KiB."""
+    with open("contract/soc_map.h") as f:
+        return int(re.search(r"#define SOC_RAM_DEFAULT_BYTES\s+(0x[0-9A-Fa-f]+|\d+)", f.read()).group(1), 0) // 1024
+
+
 def lean_kib(args, scene, logdir):
-    """The scene's RAM need (postlink's "RAM use" of its 192 KiB build), rounded up to 8 KiB."""
+    """The scene's RAM need: its board firmware's <elf>.ramkib (bsp/soc/postlink.py: the linked
+    image's stack top, rounded up to the RAM's granule)."""
     log = os.path.join(logdir, f"fw-{scene}.log")
     status, _ = make(args, ["board-fw"], {"BOARD": "ulx3s", "SCENE": scene, "BUILD": args.build}, log)
-    elf = os.path.join(args.build, "board-fw", f"{scene}-192k.elf")
+    elf = os.path.join(args.build, "board-fw", f"{scene}-{default_kib()}k.elf")
     if status != 0 or not os.path.exists(elf):
         sys.exit(f"board_fit: could not build {scene}'s firmware (see {log})")
-    # postlink again on the built ELF (same RAM size: it rewrites the same hex) for its numbers.
-    out = subprocess.run([sys.executable, "bsp/soc/postlink.py", "--ram-bytes", str(192 * 1024), elf],
-                         check=True, capture_output=True, text=True).stdout
-    return int(math.ceil(int(RAM_USE.search(out).group(1)) / 8192.0)) * 8
+    with open(elf + ".ramkib") as f:
+        return int(f.read())
 
 
 def main():
@@ -66,7 +69,7 @@ def main():
 
     kib = {s: lean_kib(args, s, logdir) for s in args.scenes}
     smallest = min(args.scenes, key=lambda s: kib[s])
-    builds = [("default", "tetra", 192, 0), ("zbuf", "tetra", 192, 1)]
+    builds = [("default", "tetra", default_kib(), 0), ("zbuf", "tetra", default_kib(), 1)]
     builds += [(f"{s}-lean", s, kib[s], 0) for s in args.scenes]
     builds += [(f"zbuf-{smallest}-lean", smallest, kib[smallest], 1)]
 

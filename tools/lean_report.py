@@ -14,6 +14,8 @@ Per scene and build (full: `FULL=1`; lean: the manifest's):
   frames identical          the lean build's socsim frames against the full build's, byte for byte
                             (each run is also checked against the golden model, which socsim
                             builds with its GPU's own parameters, capacities included)
+A lean build's RAM is the one its manifest build derives from the linked image (the board
+firmware's <elf>.ramkib, bsp/soc/postlink.py); the full build's is the contract's default.
 Caching: a synthesis whose resources.json is newer than its firmware image and every RTL file is
 not run again. The full builds of all scenes have one RTL configuration (the contract's GPU,
 192 KiB): only the RAM's contents differ, so the first scene's full synthesis stands for all of
@@ -103,6 +105,14 @@ def main():
     info = {}
     for s, kind, v in builds:
         name = f"{s}-{kind}"
+        if kind == "lean":
+            # The manifest build's RAM is what its board firmware needs (SOC_RAM_KIB=auto,
+            # bsp/soc/soc_ram.mk): that firmware first, then every step with its size, the firmware
+            # keeping the fit check it was linked with (so it is not linked again).
+            auto = show(args, dict(v, BOARD="ulx3s"))
+            make(args, ["board-fw"], dict(v, BOARD="ulx3s"), os.path.join(logdir, f"boardfw-{name}.log"))
+            with open(auto["ULX3S_FW_ELF"] + ".ramkib") as f:
+                v.update(SOC_RAM_KIB=int(f.read()), SOC_FW_RAM_BYTES=auto["SOC_FW_RAM_BYTES"])
         info[name] = show(args, dict(v, BOARD="ulx3s"))
         print(f"lean_report: {name}: firmware and socsim ...", flush=True)
         make(args, ["board-fw", "socsim"], dict(v, BOARD="ulx3s"), os.path.join(logdir, f"fw-{name}.log"))

@@ -15,7 +15,8 @@
 # The decision is exported as LEAN_SCENE, so that the recursive makes (run -> run-built, soc-fw,
 # board-fw) build the same. Its outputs have their own folders, so nothing make test uses is
 # rebuilt differently: firmware under $(LEAN_ROOT)/<scene>/ (firmware/, firmware-soc/, board-fw/,
-# board-ulx3s/); simulators per parameter set: the default ones where the manifest's GPU is the
+# board-ulx3s/), the SoC's RAM sized to the linked image (SOC_RAM_KIB=auto, bsp/soc/soc_ram.mk);
+# simulators per parameter set: the default ones where the manifest's GPU is the
 # default (SPAN_W aside), else $(BUILD)/sim-cfg-w<N>-<tag>/, sim-fast-cfg-w<N>-<tag>/ and
 # socsim-<RAM>k-w<N>-<tag>/ (tag: z1 depth buffer, l0 no lines, m0 no framebuffer write mask: a scene
 # without the anaglyph, v<N> t<N> capacities, g1 Gouraud), shared by
@@ -44,6 +45,8 @@ endif
 MANIFEST_MK := $(BUILD)/manifest/$(LEAN_SCENE).mk
 include $(MANIFEST_MK)
 LEAN_DIR    := $(LEAN_ROOT)/$(LEAN_SCENE)
+# The SoC's RAM: what the linked image needs (bsp/soc/soc_ram.mk), unless the command line says.
+SOC_RAM_KIB ?= auto
 # GOURAUD=1: the manifest's GPU with Gouraud triangles too (tag g1), for the scenes that carry
 # vertex normals (the firmware's FW_WITH_GOURAUD is on in every build unless FW_DEFS says not).
 ifeq ($(GOURAUD),1)
@@ -54,7 +57,7 @@ MANIFEST_SIM_NAME := $(if $(MANIFEST_GPU_TAG),cfg-w$(SPAN_W)-$(MANIFEST_GPU_TAG)
 # Firmware: firmware.mk's FW_DIR (QEMU and soc platforms), socsim.mk's run-soc ELF, board.mk's.
 override FW_DIR        = $(LEAN_DIR)/firmware$(FW_PSUFFIX)
 override SOC_FW_DIR   := $(LEAN_DIR)/firmware-soc
-override ULX3S_FW_ELF  = $(LEAN_DIR)/board-fw/$(SCENE)-$(SOC_RAM_KIB)k.elf
+override ULX3S_FW_ELF  = $(LEAN_DIR)/board-fw/$(SCENE).elf
 override ULX3S_DIR     = $(LEAN_DIR)/board-ulx3s/$(ULX3S_NAME)$(if $(MANIFEST_GPU_TAG),-$(MANIFEST_GPU_TAG))
 # The GPU: the co-simulators, socsim (its -G flags after -GSPAN_W) and the board's --param list.
 override GPUSIM       := $(BUILD)/sim-$(MANIFEST_SIM_NAME)/gpusim
@@ -97,6 +100,7 @@ manifest-show:
 	@echo "ULX3S_DIR=$(ULX3S_DIR)"
 	@echo "ULX3S_FW_ELF=$(ULX3S_FW_ELF)"
 	@echo "SOC_RAM_KIB=$(SOC_RAM_KIB)"
+	@echo "SOC_FW_RAM_BYTES=$(SOC_FW_RAM_BYTES)"
 	@echo "FW_DEFS=$(FW_DEFS) FW_SCENE_SET=$(FW_SCENE_SET) FW_LINE_EMULATION=$(FW_LINE_EMULATION)"
 	@echo "GPU=-GSPAN_W=$(SPAN_W) -GENABLE_ZBUF=$(ZBUF) $(MANIFEST_GPU_GFLAGS)"
 
@@ -108,9 +112,13 @@ manifest-check:
 LEAN_SCENES ?= $(filter $(patsubst firmware/scenes/%.manifest.toml,%,$(wildcard firmware/scenes/*.manifest.toml)),$(FW_SCENES))
 # (The make it calls through a variable of its own: a recipe naming $$(MAKE) would run under -n.)
 LEAN_REPORT_MAKE := $(MAKE)
+# LEAN_SYNTH=0 leaves the ECP5 synthesis columns out; LEAN_FRAMES: socsim's frames per build (4).
+LEAN_SYNTH  ?= 1
+LEAN_FRAMES ?= 4
 lean-report:
 	@bash tools/setup.sh
-	$(PYTHON) tools/lean_report.py --build $(BUILD) --make $(LEAN_REPORT_MAKE) $(if $(JOBS),--jobs $(JOBS)) $(LEAN_SCENES)
+	$(PYTHON) tools/lean_report.py --build $(BUILD) --make $(LEAN_REPORT_MAKE) $(if $(JOBS),--jobs $(JOBS)) \
+	  --frames $(LEAN_FRAMES) $(if $(filter 0,$(LEAN_SYNTH)),--no-synth) $(LEAN_SCENES)
 
 # make test's manifest build (tests/manifest/manifest.sh): cubes as its manifest says, the test
 # builds' FW_TEST_FRAMES frames, under $(BUILD)/lean-test (apart from `make run SCENE=cubes`'s).

