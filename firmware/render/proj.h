@@ -47,7 +47,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#include "app/fw_config.h"
+#include "config/build_options.h"
 #include "gpu_regs.h"
 #include "math/vec.h"
 

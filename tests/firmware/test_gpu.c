@@ -74,7 +74,6 @@ void test_gpu_native_words(void)
     CHECK_EQ((p.w[GPU_PRIM_COLOR_WORD] >> GPU_PRIM_COLOR_LSB) & GPU_PRIM_COLOR_MASK, 0xA5u);
     CHECK_EQ((p.w[GPU_PRIM_KIND_WORD] >> GPU_PRIM_KIND_LSB) & GPU_PRIM_KIND_MASK,
              GPU_PRIM_KIND_LINE);
-    CHECK_EQ(GPU_RGB444(0xF, 0xA, 0x5), 0xFA5u);
 }
 
 void test_gpu_init_checks(void)
