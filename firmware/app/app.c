@@ -141,6 +141,64 @@ static inline void frame_stats_exclude(struct frame_stats *st, struct frame_span
     st->wait_cycles += bsp_cycles() - s.cycles;
 }
 
+/* The instruction counter: a mark that a frame_stats_* function below closes, and pipeline_pass's
+ * clock (inlined there). */
+static inline uint64_t frame_stats_mark(void)
+{
+    return bsp_instret();
+}
+
+/* batch_fill, from mark t0, is done: its instructions; returns the mark where submitting starts. */
+static inline uint64_t frame_stats_batch_filled(struct frame_stats *st, uint64_t t0)
+{
+    const uint64_t t1 = bsp_instret();
+
+    st->t_batch += t1 - t0;
+    return t1;
+}
+
+/* The batch went out (submitting since mark t1); the wait for DONE_SEQ starts, not counted. */
+static inline struct frame_span frame_stats_wait_begin(struct frame_stats *st, uint64_t t1)
+{
+    struct frame_span s;
+
+    s.cycles = bsp_cycles();
+    s.instr = bsp_instret();
+    st->t_submit += s.instr - t1;
+    return s;
+}
+
+/* The wait is over; returns the mark where reading the GPU's counters starts. */
+static inline uint64_t frame_stats_wait_end(struct frame_stats *st, struct frame_span s)
+{
+    const uint64_t t0 = bsp_instret();
+
+    st->wait_cycles += bsp_cycles() - s.cycles;
+    st->wait_instr += t0 - s.instr;
+    return t0;
+}
+
+/* The GPU's counters are read (since mark t0): the driver's part of the batch is done. */
+static inline void frame_stats_submitted(struct frame_stats *st, uint64_t t0)
+{
+    st->t_submit += bsp_instret() - t0;
+}
+
+/* pipeline_pass's times go on from the frame's and come back to it. */
+static inline struct pipeline_times frame_stats_pass_times(const struct frame_stats *st)
+{
+    const struct pipeline_times t = {st->t_draw, st->t_sort};
+
+    return t;
+}
+
+static inline void frame_stats_set_pass_times(struct frame_stats *st,
+                                              const struct pipeline_times *t)
+{
+    st->t_draw = t->draw;
+    st->t_sort = t->sort;
+}
+
 /* Keys, camera and scene are done: what they took, counted from the frame's start. */
 static inline void frame_stats_updated(struct frame_stats *st)
 {
@@ -715,17 +773,15 @@ static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last
     do {
         struct gpu_stats stats;
         uint32_t tag;
+        struct frame_span wait;
         uint64_t t0;
         uint64_t t1;
-        uint64_t t_wait;
-        uint64_t c_wait;
         bool last;
         int rc;
 
-        t0 = bsp_instret();
+        t0 = frame_stats_mark();
         batch_fill(&cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap, &app->words);
-        t1 = bsp_instret();
-        tot->t_batch += t1 - t0;
+        t1 = frame_stats_batch_filled(tot, t0);
         last = last_pass && batch_done(&cur, &app->frame);
         batch.vtx_count = app->words.vtx_count;
         batch.prim_count = app->words.prim_count;
@@ -743,13 +799,9 @@ static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last
         }
         frame_stats_add_batch(tot, batch.prim_count);
 
-        c_wait = bsp_cycles();
-        t_wait = bsp_instret();
-        tot->t_submit += t_wait - t1;
+        wait = frame_stats_wait_begin(tot, t1);
         rc = app_wait_batch(app, tag);
-        t0 = bsp_instret();
-        tot->wait_cycles += bsp_cycles() - c_wait;
-        tot->wait_instr += t0 - t_wait;
+        t0 = frame_stats_wait_end(tot, wait);
         if (rc != GPU_OK) {
             printf("watchdog: frame %u batch %lu: GPU did not finish (DONE_SEQ=0x%08lx, expected "
                    "tag 0x%08lx after %lu polls): resetting it, dropping the frame\n",
@@ -759,33 +811,26 @@ static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last
             return false;
         }
         gpu_read_stats(&app->gpu, &stats);
-        tot->t_submit += bsp_instret() - t0;
+        frame_stats_submitted(tot, t0);
         frame_stats_add_gpu(tot, &stats);
         first = false;
     } while (!batch_done(&cur, &app->frame));
     return true;
 }
 
-/* The instruction counter, as pipeline_pass's clock (inlined there). */
-static inline uint64_t app_clock(void)
-{
-    return bsp_instret();
-}
-
 /* One pass (pipeline.h): the scene seen from one eye, sorted, then the overlay. */
 static void app_render_pass(struct app *app, int eye, struct frame_stats *tot)
 {
     struct pipeline_opts opts;
-    struct pipeline_times times = {tot->t_draw, tot->t_sort};
+    struct pipeline_times times = frame_stats_pass_times(tot);
 
     opts.wireframe = app->wireframe;
     opts.depth_test = app->depth_test;
     opts.gpu_lines = gpu_caps_lines(app->gpu.info.caps);
     opts.eye_planes = app_eye_planes(app);
     opts.gouraud = FW_WITH_GOURAUD && FW_GOURAUD && gpu_caps_gouraud(app->gpu.info.caps);
-    pipeline_pass(&app->frame, &app->scene, &opts, eye, app_clock, &times);
-    tot->t_draw = times.draw;
-    tot->t_sort = times.sort;
+    pipeline_pass(&app->frame, &app->scene, &opts, eye, frame_stats_mark, &times);
+    frame_stats_set_pass_times(tot, &times);
 }
 
 /* The running scene's line; the model scene's says where its model came from, or why it has
