@@ -77,6 +77,13 @@ static void begin(void)
     render_stats_clear(&test_frame.stats);
 }
 
+/* A frame of one object: m at the origin, its own materials. */
+static void draw_alone(const struct render_pass *pass, const struct mesh *m)
+{
+    begin();
+    draw(pass, m, v3(0, 0, 0), 0);
+}
+
 /* Edge-function test of a pixel centre against an emitted triangle (either winding). */
 static int covers(const struct render_prim *p, int px, int py)
 {
@@ -103,8 +110,7 @@ void test_render_backface(void)
     tri_mesh_add(&t, v3(0, 0, 3), v3(0, 1, 3), v3(1, 0, 3), MAT_RED);  /* faces the eye (-z) */
     tri_mesh_add(&t, v3(0, 0, 4), v3(1, 0, 4), v3(0, 1, 4), MAT_RED);  /* faces away */
     mesh_finish(&t.m);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    draw_alone(&pass, &t.m);
     CHECK_EQ(test_frame.prim_count, 1);
     CHECK_EQ(test_frame.stats.faces_back, 1);
     CHECK_EQ(test_frame.stats.faces_emitted, 1);
@@ -116,8 +122,7 @@ void test_render_backface(void)
     tri_mesh_init(&t);
     tri_mesh_add(&t, v3(0, 0, 3), v3(0, 0, 4), v3(0, 1, 3), MAT_RED);  /* in the plane x = 0 */
     mesh_finish(&t.m);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    draw_alone(&pass, &t.m);
     CHECK_EQ(test_frame.prim_count, 0);
     CHECK_EQ(test_frame.stats.faces_back, 1);
 }
@@ -140,8 +145,7 @@ void test_render_level_cache(void)
     tri_mesh_add(&t, v3(-2, 0, 3), v3(-2, 1, 4), v3(-1, 0, 3), MAT_GRASS);   /* tilted */
     tri_mesh_add(&t, v3(0, -2, 4), v3(0, -1, 3), v3(1, -2, 4), MAT_STONE);   /* tilted */
     mesh_finish(&t.m);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    draw_alone(&pass, &t.m);
     n = test_frame.prim_count;
     CHECK_EQ(n, 3);
     memcpy(plain, test_frame.prim, n * sizeof plain[0]);
@@ -162,8 +166,7 @@ void test_render_level_cache(void)
     }
     /* Another light: the cache is emptied and refilled, and agrees with the uncached path. */
     pass.light_scene = u3(0.6, 0.0, -0.8);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    draw_alone(&pass, &t.m);
     memcpy(plain, test_frame.prim, n * sizeof plain[0]);
     begin();
     render_object(&test_frame, &pass, &o);
@@ -212,8 +215,7 @@ void test_render_frustum_culling(void)
     tri_mesh_add(&t, v3(0, 0, 170), v3(0, 1, 170), v3(1, 0, 170), MAT_RED);  /* beyond far */
     tri_mesh_add(&t, v3(0, 0, -3), v3(1, 0, -3), v3(0, 1, -3), MAT_RED);     /* behind */
     mesh_finish(&t.m);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    draw_alone(&pass, &t.m);
     CHECK_EQ(test_frame.prim_count, 1);
     CHECK_EQ(test_frame.stats.faces_frustum, 4);
     CHECK_EQ(test_frame.stats.objects_culled, 0);
@@ -291,8 +293,7 @@ void test_render_near_clipping(void)
     tri_mesh_add(&t, v3(-2, -1, -3), v3(-2, -1, 10), v3(2, -1, 10), MAT_GREEN);
     tri_mesh_add(&t, v3(-2, -1, -3), v3(2, -1, 10), v3(2, -1, -3), MAT_GREEN);
     mesh_finish(&t.m);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    draw_alone(&pass, &t.m);
     CHECK_EQ(test_frame.stats.faces_clipped, 2);
     CHECK(test_frame.prim_count >= 2);
     for (uint32_t i = 0; i < test_frame.prim_count; i++) {
@@ -309,8 +310,7 @@ void test_render_near_clipping(void)
     tri_mesh_init(&t);
     tri_mesh_add(&t, v3(-3, -1, 2), v3(-1, -1, 2), v3(-2, -1, -5), MAT_GREEN);  /* faces up */
     mesh_finish(&t.m);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    draw_alone(&pass, &t.m);
     CHECK(test_frame.prim_count >= 1);
     for (uint32_t i = 0; i < test_frame.prim_count; i++) {
         for (int k = 0; k < 3; k++) {
@@ -411,8 +411,7 @@ void test_render_wireframe(void)
     mesh_finish(&t.m);
     pass.wireframe = true;
     pass.gpu_lines = true;
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    draw_alone(&pass, &t.m);
     CHECK_EQ(test_frame.prim_count, 1);
     CHECK_EQ(test_frame.outline_count, 1);
     CHECK_EQ(test_frame.prim[0].kind, RENDER_PRIM_OUTLINE | 0x07u);
@@ -442,8 +441,7 @@ void test_render_wireframe(void)
     }
 
     pass.gpu_lines = false;
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    draw_alone(&pass, &t.m);
     CHECK_EQ(test_frame.prim_count, 6);
     CHECK_EQ(test_frame.vert_count, 6u + 12u);
     CHECK_EQ(test_frame.outline_count, 0);
@@ -465,8 +463,7 @@ void test_render_lighting_and_colour(void)
 
     setup_pass(&pass);  /* light towards -z: straight at the faces that face the eye */
     tri_mesh_unit(&t, 3, MAT_RED);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    draw_alone(&pass, &t.m);
     CHECK_EQ(test_frame.prim[0].color, PAL_INDEX(MAT_RED, 15u));
     draw(&pass, &t.m, v3(0, 0, 0), MAT_BLUE);
     CHECK_EQ(test_frame.prim[1].color, PAL_INDEX(MAT_BLUE, 15u));
@@ -497,8 +494,7 @@ void test_render_overlay(void)
 
     setup_pass(&pass);
     tri_mesh_unit(&t, 3, MAT_RED);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    draw_alone(&pass, &t.m);
     draw(&pass, &t.m, v3(0, 0, 1), 0);
     render_sort(&test_frame);
     render_overlay_crosshair(&test_frame, &pass, 5, PAL_WHITE);
