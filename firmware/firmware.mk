@@ -28,7 +28,7 @@
 #                  scenes/scene_list.h); 0: it does not (the F key then says so on such a GPU) and
 #                  the frame needs only the filled columns: -DFW_WITH_LINE_EMULATION (default 1;
 #                  a platform whose GPU has CAPS_LINES may set FW_LINE_EMULATION ?= 0 in bsp.mk)
-#   FW_DEFS        further -D settings of every object, e.g. "-DFW_WITH_LIGHTING=0" (fw_config.h:
+#   FW_DEFS        further -D settings of every object, e.g. "-DFW_WITH_LIGHTING=0" (config/build_options.h:
 #                  the FW_WITH_* features a scene may not need)
 #   GPUSIM         the co-simulator (set by the top-level Makefile), for bench-fw
 #
@@ -206,7 +206,7 @@ FW_VARIANT_DEFS_fixed := $(if $(FW_SUBPIXEL_BITS),-DFW_SUBPIXEL_BITS=$(FW_SUBPIX
 FW_VARIANT_DEFS_float := $(FW_VARIANT_DEFS_fixed)
 FW_SP_VARIANTS := fixed-sp4 float-sp0 float-sp2
 $(foreach v,$(FW_SP_VARIANTS),  $(eval FW_BACKEND_DEFS_$(v) := $(FW_BACKEND_DEFS_$(word 1,$(subst -, ,$(v)))))  $(eval FW_VARIANT_DEFS_$(v) := -DFW_SUBPIXEL_BITS=$(patsubst sp%,%,$(word 2,$(subst -, ,$(v)))) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)))
-# fixed-lean: the fixed backend with every optional feature left out (fw_config.h FW_WITH_*), for
+# fixed-lean: the fixed backend with every optional feature left out (config/build_options.h FW_WITH_*), for
 # the test that such a build runs and is smaller.
 FW_LEAN_DEFS := -DFW_WITH_WIREFRAME=0 -DFW_WITH_ANAGLYPH=0 -DFW_WITH_DEPTH=0 -DFW_WITH_LIGHTING=0
 FW_BACKEND_DEFS_fixed-lean :=
