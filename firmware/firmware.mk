@@ -28,7 +28,7 @@
 #                  scenes/scene_list.h); 0: it does not (the F key then says so on such a GPU) and
 #                  the frame needs only the filled columns: -DFW_WITH_LINE_EMULATION (default 1;
 #                  a platform whose GPU has CAPS_LINES may set FW_LINE_EMULATION ?= 0 in bsp.mk)
-#   FW_DEFS        further -D settings of every object, e.g. "-DFW_WITH_LIGHTING=0" (fw_config.h:
+#   FW_DEFS        further -D settings of every object, e.g. "-DFW_WITH_LIGHTING=0" (config/build_options.h:
 #                  the FW_WITH_* features a scene may not need)
 #   GPUSIM         the co-simulator (set by the top-level Makefile), for bench-fw
 #
@@ -140,10 +140,17 @@ FW_PURE_SRCS := firmware/math/fixed.c firmware/math/vec.c firmware/camera/camera
 FW_DRIVER_SRC := firmware/gpu/gpu.c
 FW_APP_SRC    := firmware/app/app.c
 FW_MAIN_SRC   := firmware/app/main.c
-FW_HOST_SRCS  := bsp/host/bsp_host.c bsp/host/host_main.c bsp/host/scene_dump.c
+# The host build's own sources: its BSP and command line, the frames' output, the scene's export
+# for --dump-scene, and the same main() as the target's (the stress test links the rest without
+# these).
+FW_HOST_SRCS  := bsp/host/bsp_host.c bsp/host/host_main.c bsp/host/scene_dump.c \
+                 bsp/host/frame_out_png.c firmware/scenes/scene_export.c $(FW_MAIN_SRC)
 # Other components in the host build come as their own libraries, built once by their own rules
-# (the golden model, gpu_model/model.mk; the PNG writer, the top-level Makefile).
+# (the golden model, gpu_model/model.mk; the PNG writer, the top-level Makefile). Their headers:
+# the golden model's everywhere in the host build (the BSP is built on it); the PNG writer's
+# (cosim/) only where frame_out_png.c, the one file that calls it, is compiled.
 FW_HOST_LIBS  := $(COSIM_C_LIB) $(GPU_MODEL_LIB)
+FW_HOST_PNG_OBJ_CFLAGS = -Icosim $(FW_PNG_CFLAGS)
 
 FW_PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 FW_PNG_LIBS   := $(or $(shell pkg-config --libs libpng 2>/dev/null),-lpng)
@@ -199,7 +206,7 @@ FW_VARIANT_DEFS_fixed := $(if $(FW_SUBPIXEL_BITS),-DFW_SUBPIXEL_BITS=$(FW_SUBPIX
 FW_VARIANT_DEFS_float := $(FW_VARIANT_DEFS_fixed)
 FW_SP_VARIANTS := fixed-sp4 float-sp0 float-sp2
 $(foreach v,$(FW_SP_VARIANTS),  $(eval FW_BACKEND_DEFS_$(v) := $(FW_BACKEND_DEFS_$(word 1,$(subst -, ,$(v)))))  $(eval FW_VARIANT_DEFS_$(v) := -DFW_SUBPIXEL_BITS=$(patsubst sp%,%,$(word 2,$(subst -, ,$(v)))) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)))
-# fixed-lean: the fixed backend with every optional feature left out (fw_config.h FW_WITH_*), for
+# fixed-lean: the fixed backend with every optional feature left out (config/build_options.h FW_WITH_*), for
 # the test that such a build runs and is smaller.
 FW_LEAN_DEFS := -DFW_WITH_WIREFRAME=0 -DFW_WITH_ANAGLYPH=0 -DFW_WITH_DEPTH=0 -DFW_WITH_LIGHTING=0
 FW_BACKEND_DEFS_fixed-lean :=
@@ -242,7 +249,7 @@ FW_CFLAGS_BASE := $(FW_ARCH_FLAGS) -O2 -g $(FW_WARN) -ffp-contract=off -ffunctio
                   -fdata-sections -fno-tree-loop-distribute-patterns \
                   -Ibsp/$(FW_PLATFORM) -Ibsp -Icontract -Ifirmware $(FW_MODEL_DEFS)
 FW_HOST_CFLAGS_BASE = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Ibsp/host -Ibsp -Icontract \
-                      -Ifirmware -Igpu_model -Icosim $(FW_MODEL_DEFS)
+                      -Ifirmware -Igpu_model $(FW_MODEL_DEFS)
 FW_LDFLAGS_BASE := $(FW_ARCH_FLAGS) $(FW_BSP_LDFLAGS) -T$(FW_LDSCRIPT) -Wl,--gc-sections
 
 # Record a command line in a file, rewriting it only when it changed: objects depend on it.
@@ -263,8 +270,7 @@ FW_OBJS_$(1)      := $$(patsubst %.c,$$(FW_OBJ_DIR_$(1))/%.o,$(FW_PURE_SRCS) $(F
 FW_CORE_OBJS_$(1) := $$(filter-out $$(patsubst %.c,$$(FW_OBJ_DIR_$(1))/%.o,$(FW_ALL_SCENE_SRCS)),\
                      $$(FW_OBJS_$(1)))
 HOST_OBJ_DIR_$(1) := $(BUILD)/fw-host/obj-$(1)
-FW_HOST_CFLAGS_$(1) = $(FW_HOST_CFLAGS_BASE) $(FW_BACKEND_DEFS_$(1)) $(FW_VARIANT_DEFS_$(1)) \
-                      $(FW_PNG_CFLAGS)
+FW_HOST_CFLAGS_$(1) = $(FW_HOST_CFLAGS_BASE) $(FW_BACKEND_DEFS_$(1)) $(FW_VARIANT_DEFS_$(1))
 FW_HOST_OBJS_$(1) := $$(patsubst %.c,$$(HOST_OBJ_DIR_$(1))/%.o,$(FW_PURE_SRCS) $(FW_DRIVER_SRC) \
                      $(FW_HOST_SRCS))
 FW_HOST_CORE_OBJS_$(1) := $$(filter-out \
@@ -282,7 +288,8 @@ $$(HOST_OBJ_DIR_$(1))/cflags.txt: fw-force
 
 $$(HOST_OBJ_DIR_$(1))/%.o: %.c $$(HOST_OBJ_DIR_$(1))/cflags.txt
 	@mkdir -p $$(@D)
-	$$(HOST_CC) $$(FW_HOST_CFLAGS_$(1)) -MMD -MP -c $$< -o $$@
+	$$(HOST_CC) $$(FW_HOST_CFLAGS_$(1)) $$(if $$(filter %/frame_out_png.o,$$@),$$(FW_HOST_PNG_OBJ_CFLAGS)) \
+	  -MMD -MP -c $$< -o $$@
 
 FW_DEP_FILES += $$(FW_OBJS_$(1):.o=.d) $$(FW_HOST_OBJS_$(1):.o=.d)
 endef

@@ -1,5 +1,6 @@
 /*
- * bsp_host.c — the host BSP (see bsp.h): golden-model GPU, scripted UART, PNG frames.
+ * bsp_host.c — the host BSP (see bsp.h): golden-model GPU, scripted UART, frames out
+ * (frame_out.h: PNG files).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -7,8 +8,8 @@
 
 #include "bsp.h"
 #include "bsp_host.h"
+#include "frame_out.h"
 #include "gpu_model.h"
-#include "png_write.h"
 
 static struct bsp_host_config host_cfg;
 static gpu_model *host_gpu;
@@ -27,6 +28,12 @@ void bsp_host_configure(const struct bsp_host_config *cfg)
 const char *bsp_host_dump_dir(void)
 {
     return host_cfg.dump_dir;
+}
+
+uint32_t bsp_host_boot_model(const uint8_t **file)
+{
+    *file = host_cfg.model_file;
+    return host_cfg.model_bytes;
 }
 
 void bsp_init(void)
@@ -83,14 +90,11 @@ static void host_type(const char *text)
     }
 }
 
-/* host_rgb as DIR/NNNN.png, NNNN the frame's number. */
+/* host_rgb as frame host_frames_written of dir (frame_out.h). */
 static void host_write_frame(const char *dir)
 {
-    char path[1024];
-
-    snprintf(path, sizeof path, "%s/%04u.png", dir, (unsigned)host_frames_written);
-    if (png_write_rgb(path, host_rgb, GPU_MODEL_SCREEN_W, GPU_MODEL_SCREEN_H) != 0) {
-        fprintf(stderr, "host bsp: cannot write %s\n", path);
+    if (frame_out_write(dir, (unsigned)host_frames_written, host_rgb, GPU_MODEL_SCREEN_W,
+                        GPU_MODEL_SCREEN_H) != 0) {
         exit(1);
     }
 }

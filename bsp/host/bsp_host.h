@@ -1,6 +1,6 @@
 /*
- * bsp_host.h — configuration of the host BSP, set by host_main.c before app_run(). Not part of the
- * bsp.h interface.
+ * bsp_host.h — configuration of the host BSP, set by host_main.c (bsp_args) before the frame loop
+ * runs. Not part of the bsp.h interface.
  */
 #ifndef BSP_HOST_H
 #define BSP_HOST_H
@@ -27,9 +27,11 @@ struct bsp_host_config {
     unsigned zbuf_bits;      /* ZBUF_BITS, 1 .. 16 */
     const char *dump_dir;    /* the scene of every frame for tools/exact_ref, NULL: none */
     const char *unquantised_dir;  /* PNG per swapped frame in unquantised Gouraud colours, NULL: none */
+    const uint8_t *model_file;    /* --model's mesh file, NULL: none (bsp_host_boot_model) */
+    uint32_t model_bytes;
 };
 
-/* Set before app_run(); bsp_init() applies it. */
+/* Set before the frame loop runs; bsp_init() applies it. */
 void bsp_host_configure(const struct bsp_host_config *cfg);
 /* --dump-scene's directory, or NULL (scene_dump.c). */
 const char *bsp_host_dump_dir(void);

@@ -14,7 +14,8 @@
  *   - with --dump-scene DIR, every frame's scene is written as DIR/NNNN.scene for the exact
  *     reference (bsp_host_scene_dump, scene_dump.c; tools/exact_ref/exact_ref.c reads it).
  *
- * bsp/host/host_main.c parses the options and calls app_run().
+ * bsp/host/host_main.c parses the options (bsp_args, called by the firmware's main before the
+ * frame loop).
  */
 #ifndef BSP_PLATFORM_H
 #define BSP_PLATFORM_H
@@ -50,10 +51,21 @@ static inline uint32_t *bsp_gpu_buffer(uint32_t offset)
     return 0;
 }
 
+/* The platform has a command line: main() passes it to bsp_args first, which returns 0 to run
+ * the frame loop, else the exit status (bad options). */
+#define BSP_HAS_ARGS 1
+int bsp_args(int argc, char **argv);
+
 /* The frame's scene after its update, as tools/exact_ref reads it: app.c calls it once per frame
- * (a no-op without --dump-scene). */
+ * (a no-op without --dump-scene). The scene is opaque here: scene_dump.c reads it through
+ * scenes/scene_export.h. */
 #define BSP_HOST_SCENE_DUMP 1
 struct scene;
 void bsp_host_scene_dump(const struct scene *s, const uint16_t *palette, unsigned frame);
+
+/* --model's mesh file: its bytes, *file set (NULL and 0: none). The frame loop asks once at boot
+ * and gives it to the model scene as if it had been uploaded before the first frame. */
+#define BSP_HOST_BOOT_MODEL 1
+uint32_t bsp_host_boot_model(const uint8_t **file);
 
 #endif /* BSP_PLATFORM_H */

@@ -1,6 +1,8 @@
 /*
- * host_main.c — command line of the host build: the firmware's frame loop (app_run) on Linux,
- * rendering through the golden model.
+ * host_main.c — command line of the host build: the firmware's frame loop on Linux, rendering
+ * through the golden model. firmware/app/main.c's main() hands argc and argv to bsp_args (this
+ * file) before it runs the loop, so the BSP knows nothing of the loop or the scenes: the options
+ * become a bsp_host_config, which bsp_init() applies and the loop's hooks read (bsp_platform.h).
  *
  *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--zbuf-bits N] [--no-wmask]
  *           [--gouraud] [--span-w N] [--model FILE] [--dump-scene DIR] [--unquantised-frames DIR]
@@ -24,6 +26,7 @@
  *   --model FILE      the model scene draws this mesh file (docs/mesh-format.md) instead of the
  *                     built-in one, as if it had been uploaded before the first frame: the
  *                     reference renders of the upload test, and a quick look at a converted model
+ *                     (read here; the frame loop takes it at boot, bsp_host_boot_model)
  *
  * The scene and the number of frames are built in, like the target's (make SCENE=... FRAMES=...).
  */
@@ -32,12 +35,11 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "app/app.h"
+#include "bsp.h"
 #include "bsp_host.h"
-#include "scenes/model/model.h"
 
 /* A mesh file for --model: read whole (the validator, at the scene's start, says what is wrong). */
-static int host_load_model(const char *path)
+static int host_load_model(const char *path, struct bsp_host_config *cfg)
 {
     static uint8_t file[4u << 20];
     FILE *f = fopen(path, "rb");
@@ -49,7 +51,8 @@ static int host_load_model(const char *path)
     }
     n = fread(file, 1, sizeof file, f);
     fclose(f);
-    model_scene_source(file, (uint32_t)n);
+    cfg->model_file = file;
+    cfg->model_bytes = (uint32_t)n;
     return 0;
 }
 
@@ -73,7 +76,7 @@ static int host_usage(void)
     return 2;
 }
 
-int main(int argc, char **argv)
+int bsp_args(int argc, char **argv)
 {
     struct bsp_host_config cfg;
 
@@ -130,7 +133,7 @@ int main(int argc, char **argv)
                 return 2;
             }
         } else if (strcmp(a, "--model") == 0 && has_value) {
-            if (host_load_model(argv[++i]) != 0) {
+            if (host_load_model(argv[++i], &cfg) != 0) {
                 return 2;
             }
         } else if (strcmp(a, "--span-w") == 0 && has_value) {
@@ -140,5 +143,5 @@ int main(int argc, char **argv)
         }
     }
     bsp_host_configure(&cfg);
-    return app_run();
+    return 0;
 }

@@ -23,60 +23,34 @@
  *                                   and its material (the object's override applied)
  * World = the scene's frame after object mode's rotation O about the focus:
  * w = O (R p + pos - focus) + focus, n = O R n_model (render.h's composition, in double).
+ * The numbers come through the scene's export interface (scenes/scene_export.h); this file only
+ * formats them.
  */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "app/fw_config.h"
 #include "bsp.h"
 #include "bsp_host.h"
 #include "gpu_regs.h"
-#include "render/mesh.h"
-#include "render/palette.h"
-#include "scenes/scene.h"
+#include "scenes/scene_export.h"
 
-static double dump_real(real_t r)
+static void dump_tri(void *ctx, const struct scene_export_tri *t)
 {
-#if FW_BACKEND_FLOAT
-    return (double)r;
-#else
-    return (double)r / 65536.0;  /* q16_16 */
-#endif
-}
+    FILE *f = ctx;
 
-static double dump_unit(unit_t u)
-{
-#if FW_BACKEND_FLOAT
-    return (double)u;
-#else
-    return (double)u / 1073741824.0;  /* q2_30 */
-#endif
-}
-
-static void dump_mat(const mat3 *m, double out[3][3])
-{
-    for (int r = 0; r < 3; r++) {
-        for (int c = 0; c < 3; c++) {
-            out[r][c] = dump_unit(m->m[r][c]);
-        }
+    fputc('t', f);
+    for (int k = 0; k < 3; k++) {
+        fprintf(f, " %a %a %a", t->v[k][0], t->v[k][1], t->v[k][2]);
     }
-}
-
-static void dump_apply(const double m[3][3], const double v[3], double out[3])
-{
-    for (int r = 0; r < 3; r++) {
-        out[r] = m[r][0] * v[0] + m[r][1] * v[1] + m[r][2] * v[2];
-    }
+    fprintf(f, " %a %a %a %u\n", t->n[0], t->n[1], t->n[2], (unsigned)t->material);
 }
 
 void bsp_host_scene_dump(const struct scene *s, const uint16_t *palette, unsigned frame)
 {
     const char *dir = bsp_host_dump_dir();
     char path[1024];
-    double o[3][3];
-    double focus[3];
-    uint32_t tris = 0;
+    struct scene_export_view v;
     FILE *f;
 
     if (dir == NULL) {
@@ -88,60 +62,19 @@ void bsp_host_scene_dump(const struct scene *s, const uint16_t *palette, unsigne
         fprintf(stderr, "fw-host: cannot write %s\n", path);
         exit(2);
     }
-    dump_mat(&s->cam.scene_rot, o);
-    focus[0] = dump_real(s->cam.cfg.focus.x);
-    focus[1] = dump_real(s->cam.cfg.focus.y);
-    focus[2] = dump_real(s->cam.cfg.focus.z);
+    scene_export_view(s, &v);
     fprintf(f, "exactref-scene 1\n");
     fprintf(f, "screen %u %u %a %a %a %a %a\n", (unsigned)GPU_FB_WIDTH, (unsigned)GPU_FB_HEIGHT,
-            s->proj.cx_q4 / 16.0, s->proj.cy_q4 / 16.0, s->proj.focal_q4 / 16.0,
-            dump_real(s->proj.near), dump_real(s->proj.far));
-    fprintf(f, "camera %a %a %a %u %ld\n", dump_real(s->cam.eye.x), dump_real(s->cam.eye.y),
-            dump_real(s->cam.eye.z), (unsigned)s->cam.yaw, (long)s->cam.pitch);
-    fprintf(f, "light %a %a %a %u %d\n", dump_unit(s->light.x), dump_unit(s->light.y),
-            dump_unit(s->light.z), (unsigned)s->ambient, FW_WITH_LIGHTING ? 1 : 0);
-    fprintf(f, "clear %u\npalette", (unsigned)PAL_SKY);
-    for (uint32_t i = 0; i < PAL_ENTRIES; i++) {
+            v.cx, v.cy, v.focal, v.near, v.far);
+    fprintf(f, "camera %a %a %a %u %ld\n", v.eye[0], v.eye[1], v.eye[2], (unsigned)v.yaw,
+            (long)v.pitch);
+    fprintf(f, "light %a %a %a %u %d\n", v.light[0], v.light[1], v.light[2],
+            (unsigned)v.ambient, v.lit);
+    fprintf(f, "clear %u\npalette", (unsigned)v.clear_index);
+    for (uint32_t i = 0; i < v.palette_entries; i++) {
         fprintf(f, " %03x", (unsigned)palette[i]);
     }
-    for (uint32_t i = 0; i < s->object_count; i++) {
-        tris += s->object[i].mesh->face_count;
-    }
-    fprintf(f, "\ntris %lu\n", (unsigned long)tris);
-    for (uint32_t i = 0; i < s->object_count; i++) {
-        const struct render_object *obj = &s->object[i];
-        const struct mesh *m = obj->mesh;
-        double r[3][3];
-        double pos[3] = {dump_real(obj->pos.x), dump_real(obj->pos.y), dump_real(obj->pos.z)};
-
-        dump_mat(&obj->rot, r);
-        for (uint32_t fi = 0; fi < m->face_count; fi++) {
-            struct mesh_face tmp;
-            const struct mesh_face *face = mesh_face_at(m, fi, &tmp);
-            const uvec3 nu = mesh_normal(m, face->normal);
-            const double nm[3] = {dump_unit(nu.x), dump_unit(nu.y), dump_unit(nu.z)};
-            double nr[3];
-            double nw[3];
-
-            fputc('t', f);
-            for (int k = 0; k < 3; k++) {
-                const vec3 p = m->verts[face->v[k]];
-                const double pm[3] = {dump_real(p.x), dump_real(p.y), dump_real(p.z)};
-                double ps[3];
-                double w[3];
-
-                dump_apply(r, pm, ps);
-                for (int c = 0; c < 3; c++) {
-                    ps[c] += pos[c] - focus[c];
-                }
-                dump_apply(o, ps, w);
-                fprintf(f, " %a %a %a", w[0] + focus[0], w[1] + focus[1], w[2] + focus[2]);
-            }
-            dump_apply(r, nm, nr);
-            dump_apply(o, nr, nw);
-            fprintf(f, " %a %a %a %u\n", nw[0], nw[1], nw[2],
-                    (unsigned)((obj->material != 0u) ? obj->material : face->material));
-        }
-    }
+    fprintf(f, "\ntris %lu\n", (unsigned long)v.tris);
+    scene_export_tris(s, dump_tri, f);
     fclose(f);
 }

@@ -3,6 +3,13 @@
  * statistics line per frame. This file and the driver edge (gpu.c) are the only ones that touch
  * the platform (bsp.h); everything they call is pure and host-tested.
  *
+ * Layout: app_run is boot, then per frame the named stages app_input (steps 0-2's keys),
+ * app_update (the scene), app_draw (per pass app_render_pass, then app_submit: step 3-4),
+ * app_print_notes and app_statistics; the frame's counters are one struct frame_stats and its
+ * frame_stats_* functions; what a build leaves out (uploads, the platform's GPU buffers and
+ * hooks, the measurement camera) is decided in one block of #if's, each giving the stages a
+ * function that is empty where the feature is not built.
+ *
  * Per frame:
  *   0. a model uploaded over the UART and committed in the last frame is swapped in: the model
  *      scene starts from it (model/upload.h; FW_WITH_UPLOAD);
@@ -80,15 +87,22 @@ struct app {
 #endif
 };
 
-/* What one frame sent and what the GPU reported, summed over its batches and passes. */
-struct frame_totals {
+/* ---- the frame's counters: one struct, changed only by these functions ----------------------- */
+
+/* What one frame sent and what the GPU reported, summed over its batches and passes, and where
+ * its instructions went. */
+struct frame_stats {
+    uint64_t t_start;     /* bsp_instret() at the frame's start */
+    uint64_t c_start;     /* bsp_cycles() at the frame's start */
+    uint64_t instr;       /* fw instr: the frame's instructions, the excluded spans taken out */
+    uint64_t cycles;      /* cpu cycles, likewise */
     uint32_t batches;
     uint32_t prims;
     uint32_t drawn;
     uint32_t busy_cycles;
     uint32_t errors;
-    uint64_t wait_instr;  /* instructions spent polling DONE_SEQ (excluded from fw instr) */
-    uint64_t wait_cycles; /* cycles spent polling DONE_SEQ (excluded from cpu cycles) */
+    uint64_t wait_instr;  /* instructions spent polling DONE_SEQ or printing (excluded) */
+    uint64_t wait_cycles; /* cycles spent likewise (excluded) */
     /* Where the instructions went (FW_PROFILE=1 prints them): */
     uint64_t t_update;    /* keys, camera, scene update */
     uint64_t t_draw;      /* transform, project, cull, clip, light, emit */
@@ -98,29 +112,153 @@ struct frame_totals {
     struct render_stats render;
 };
 
+/* An excluded span's start (frame_stats_exclude). */
+struct frame_span {
+    uint64_t instr;
+    uint64_t cycles;
+};
+
+static void frame_stats_begin(struct frame_stats *st)
+{
+    *st = (struct frame_stats){0};
+    st->c_start = bsp_cycles();
+    st->t_start = bsp_instret();
+}
+
+static inline struct frame_span frame_span_begin(void)
+{
+    struct frame_span s;
+
+    s.instr = bsp_instret();
+    s.cycles = bsp_cycles();
+    return s;
+}
+
+/* Work since span s that is not the firmware's (printing, the measurement camera): not counted. */
+static inline void frame_stats_exclude(struct frame_stats *st, struct frame_span s)
+{
+    st->wait_instr += bsp_instret() - s.instr;
+    st->wait_cycles += bsp_cycles() - s.cycles;
+}
+
+/* The instruction counter: a mark that a frame_stats_* function below closes, and pipeline_pass's
+ * clock (inlined there). */
+static inline uint64_t frame_stats_mark(void)
+{
+    return bsp_instret();
+}
+
+/* batch_fill, from mark t0, is done: its instructions; returns the mark where submitting starts. */
+static inline uint64_t frame_stats_batch_filled(struct frame_stats *st, uint64_t t0)
+{
+    const uint64_t t1 = bsp_instret();
+
+    st->t_batch += t1 - t0;
+    return t1;
+}
+
+/* The batch went out (submitting since mark t1); the wait for DONE_SEQ starts, not counted. */
+static inline struct frame_span frame_stats_wait_begin(struct frame_stats *st, uint64_t t1)
+{
+    struct frame_span s;
+
+    s.cycles = bsp_cycles();
+    s.instr = bsp_instret();
+    st->t_submit += s.instr - t1;
+    return s;
+}
+
+/* The wait is over; returns the mark where reading the GPU's counters starts. */
+static inline uint64_t frame_stats_wait_end(struct frame_stats *st, struct frame_span s)
+{
+    const uint64_t t0 = bsp_instret();
+
+    st->wait_cycles += bsp_cycles() - s.cycles;
+    st->wait_instr += t0 - s.instr;
+    return t0;
+}
+
+/* The GPU's counters are read (since mark t0): the driver's part of the batch is done. */
+static inline void frame_stats_submitted(struct frame_stats *st, uint64_t t0)
+{
+    st->t_submit += bsp_instret() - t0;
+}
+
+/* pipeline_pass's times go on from the frame's and come back to it. */
+static inline struct pipeline_times frame_stats_pass_times(const struct frame_stats *st)
+{
+    const struct pipeline_times t = {st->t_draw, st->t_sort};
+
+    return t;
+}
+
+static inline void frame_stats_set_pass_times(struct frame_stats *st,
+                                              const struct pipeline_times *t)
+{
+    st->t_draw = t->draw;
+    st->t_sort = t->sort;
+}
+
+/* Keys, camera and scene are done: what they took, counted from the frame's start. */
+static inline void frame_stats_updated(struct frame_stats *st)
+{
+    st->t_update = bsp_instret() - st->t_start;
+}
+
+/* A batch went out; the GPU's counters of it once it finished. */
+static inline void frame_stats_add_batch(struct frame_stats *st, uint32_t prims)
+{
+    st->batches++;
+    st->prims += prims;
+}
+
+static inline void frame_stats_add_gpu(struct frame_stats *st, const struct gpu_stats *gpu)
+{
+    st->drawn += gpu->tris_drawn;
+    st->busy_cycles += gpu->busy_cycles;
+    st->errors |= gpu->errors;
+}
+
+/* A pass's pipeline statistics (the frame's primitive list's), added to the frame's. */
+static inline void frame_stats_add_pass(struct frame_stats *st, const struct render_stats *pass)
+{
+    st->render.faces_in += pass->faces_in;
+    st->render.faces_culled_object += pass->faces_culled_object;
+    st->render.faces_frustum += pass->faces_frustum;
+    st->render.faces_back += pass->faces_back;
+    st->render.faces_clipped += pass->faces_clipped;
+    st->render.dropped += pass->dropped;
+}
+
+static void frame_stats_end(struct frame_stats *st)
+{
+    const uint64_t t_end = bsp_instret();
+    const uint64_t c_end = bsp_cycles();
+
+    st->instr = (t_end - st->t_start) - st->wait_instr;
+    st->cycles = (c_end - st->c_start) - st->wait_cycles;
+}
+
+/* The frame's line (app.c's header), and with FW_PROFILE its instructions per stage. */
+static void frame_stats_print(unsigned frame, const struct frame_stats *st)
+{
+    printf("frame %u: tris submitted %lu drawn %lu | fw instr %lu | gpu cycles %lu | errors "
+           "0x%lx | prims %lu batches %lu | culled object %lu frustum %lu back %lu | clipped "
+           "%lu | cpu cycles %lu\n",
+           frame, (unsigned long)st->render.faces_in, (unsigned long)st->drawn,
+           (unsigned long)st->instr, (unsigned long)st->busy_cycles, (unsigned long)st->errors,
+           (unsigned long)st->prims, (unsigned long)st->batches,
+           (unsigned long)st->render.faces_culled_object,
+           (unsigned long)st->render.faces_frustum, (unsigned long)st->render.faces_back,
+           (unsigned long)st->render.faces_clipped, (unsigned long)st->cycles);
+    if (FW_PROFILE) {
+        printf("profile %u: update %lu draw %lu sort %lu batch %lu submit %lu\n", frame,
+               (unsigned long)st->t_update, (unsigned long)st->t_draw, (unsigned long)st->t_sort,
+               (unsigned long)st->t_batch, (unsigned long)st->t_submit);
+    }
+}
+
 static struct app app_state;
-#if FW_WITH_UPLOAD
-/* The upload's staging buffer: one mesh file of the model scene's capacity, and its chunk map. */
-#define APP_UPLOAD_BYTES MESHFILE_BYTES(FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES)
-static uint8_t app_upload_file[APP_UPLOAD_BYTES];
-static uint8_t app_upload_map[UPLOAD_MAP_BYTES(APP_UPLOAD_BYTES)];
-#define APP_UART_BYTES_PER_FRAME FW_UART_BYTES_PER_FRAME
-/* UART bytes drained while the GPU works (app_drain_uart), read at the next frame's start: a
- * UART's own FIFO may hold only 16 (QEMU's 16550), far less than a frame's worth of upload. */
-static struct {
-    uint8_t byte[FW_UART_BYTES_PER_FRAME];
-    uint32_t head;   /* next to read */
-    uint32_t count;
-} app_uart_ring;
-#else
-#define APP_UART_BYTES_PER_FRAME INPUT_MAX_BYTES_PER_FRAME
-#endif
-#if !BSP_GPU_BUFFERS_MAPPED
-/* Batch staging, for platforms whose GPU buffers are not CPU memory (bsp_gpu_buffer NULL); where
- * they are (BSP_GPU_BUFFERS_MAPPED), batches are built in place and these 12 KiB are not needed. */
-static uint32_t app_vtx_staging[GPU_VTX_CAP * GPU_VTX_WORDS];
-static uint32_t app_prim_staging[GPU_TRI_CAP * GPU_PRIM_WORDS];
-#endif
 
 static void app_fail(int status) __attribute__((noreturn));
 static void app_fail(int status)
@@ -209,83 +347,6 @@ static void app_report_lines(const struct app *app)
     }
 }
 
-#if FW_WITH_UPLOAD
-/* gpu_wait_idle's work: move what the UART holds into the ring, until the ring is full (the rest
- * waits in the UART). */
-static void app_drain_uart(void *unused)
-{
-    (void)unused;
-    while (app_uart_ring.count < FW_UART_BYTES_PER_FRAME) {
-        const int c = bsp_uart_getc_nonblock();
-
-        if (c < 0) {
-            break;
-        }
-        app_uart_ring.byte[(app_uart_ring.head + app_uart_ring.count) % FW_UART_BYTES_PER_FRAME] =
-            (uint8_t)c;
-        app_uart_ring.count++;
-    }
-}
-
-/* The next UART byte: the ring's first, then the UART's; -1 when neither has one. */
-static int app_uart_getc(void)
-{
-    if (app_uart_ring.count != 0u) {
-        const uint8_t c = app_uart_ring.byte[app_uart_ring.head];
-
-        app_uart_ring.head = (app_uart_ring.head + 1u) % FW_UART_BYTES_PER_FRAME;
-        app_uart_ring.count--;
-        return c;
-    }
-    return bsp_uart_getc_nonblock();
-}
-#else
-#define app_uart_getc bsp_uart_getc_nonblock
-#endif
-
-/* Read this frame's UART bytes, never waiting: the upload's frames to its receiver, the rest
- * decoded into keys. */
-static void app_read_uart(struct app *app, struct input_counts *keys)
-{
-    input_counts_clear(keys);
-    for (uint32_t i = 0; i < APP_UART_BYTES_PER_FRAME; i++) {
-        const int c = app_uart_getc();
-
-        if (c < 0) {
-            break;
-        }
-#if FW_WITH_UPLOAD
-        if (upload_feed(&app->upload, (uint8_t)c)) {
-            continue;
-        }
-#endif
-        input_counts_add(keys, input_decode(&app->decoder, (uint8_t)c));
-    }
-#if FW_WITH_UPLOAD
-    upload_frame_end(&app->upload);
-    if (app->model_from_upload && !app->upload.staging_valid) {
-        /* A new transfer is filling the staging buffer: the model scene's key restarts the scene
-         * from the built-in model instead (the running scene keeps its own copy). */
-        model_scene_source(0, 0);
-        app->model_from_upload = false;
-    }
-#endif
-}
-
-#if FW_WITH_UPLOAD
-/* This frame's upload responses, one line each. */
-static void app_print_upload(struct app *app)
-{
-    char line[112];
-
-    for (uint32_t i = 0; i < app->upload.resp_count; i++) {
-        upload_response_line(&app->upload, i, line, sizeof line);
-        puts(line);
-    }
-    upload_responses_clear(&app->upload);
-}
-#endif
-
 /* What the global keys changed, printed after the frame so printing stays out of the count. */
 struct app_notes {
     bool help;
@@ -368,7 +429,87 @@ static void app_start_scene(struct app *app, const struct scene_desc *desc)
     }
 }
 
+/* ---- what the build leaves out: every #if of the loop ---------------------------------------- *
+ * Each feature gives the stages the same functions; where it is not built they are empty (or the
+ * plain alternative) and compile to nothing. */
+
 #if FW_WITH_UPLOAD
+/* The upload's staging buffer: one mesh file of the model scene's capacity, and its chunk map. */
+#define APP_UPLOAD_BYTES MESHFILE_BYTES(FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES)
+static uint8_t app_upload_file[APP_UPLOAD_BYTES];
+static uint8_t app_upload_map[UPLOAD_MAP_BYTES(APP_UPLOAD_BYTES)];
+#define APP_UART_BYTES_PER_FRAME FW_UART_BYTES_PER_FRAME
+/* UART bytes drained while the GPU works (app_drain_uart), read at the next frame's start: a
+ * UART's own FIFO may hold only 16 (QEMU's 16550), far less than a frame's worth of upload. */
+static struct {
+    uint8_t byte[FW_UART_BYTES_PER_FRAME];
+    uint32_t head;   /* next to read */
+    uint32_t count;
+} app_uart_ring;
+
+/* gpu_wait_idle's work: move what the UART holds into the ring, until the ring is full (the rest
+ * waits in the UART). */
+static void app_drain_uart(void *unused)
+{
+    (void)unused;
+    while (app_uart_ring.count < FW_UART_BYTES_PER_FRAME) {
+        const int c = bsp_uart_getc_nonblock();
+
+        if (c < 0) {
+            break;
+        }
+        app_uart_ring.byte[(app_uart_ring.head + app_uart_ring.count) % FW_UART_BYTES_PER_FRAME] =
+            (uint8_t)c;
+        app_uart_ring.count++;
+    }
+}
+
+/* The next UART byte: the ring's first, then the UART's; -1 when neither has one. */
+static int app_uart_getc(void)
+{
+    if (app_uart_ring.count != 0u) {
+        const uint8_t c = app_uart_ring.byte[app_uart_ring.head];
+
+        app_uart_ring.head = (app_uart_ring.head + 1u) % FW_UART_BYTES_PER_FRAME;
+        app_uart_ring.count--;
+        return c;
+    }
+    return bsp_uart_getc_nonblock();
+}
+
+/* A UART byte the upload's receiver takes (true), or a key (false). */
+static inline bool app_upload_feed(struct app *app, uint8_t c)
+{
+    return upload_feed(&app->upload, c);
+}
+
+/* The frame's bytes are read: the receiver's timeouts; a new transfer filling the staging buffer
+ * makes the model scene's key restart the scene from the built-in model instead (the running
+ * scene keeps its own copy). */
+static void app_upload_frame_end(struct app *app)
+{
+    upload_frame_end(&app->upload);
+    if (app->model_from_upload && !app->upload.staging_valid) {
+        model_scene_source(0, 0);
+        app->model_from_upload = false;
+    }
+}
+
+/* This frame's upload responses, one line each, at once, before the frame is drawn: the sender's
+ * next frames then arrive during this frame's GPU wait. Printing is not counted. */
+static void app_print_upload(struct app *app, struct frame_stats *st)
+{
+    const struct frame_span span = frame_span_begin();
+    char line[112];
+
+    for (uint32_t i = 0; i < app->upload.resp_count; i++) {
+        upload_response_line(&app->upload, i, line, sizeof line);
+        puts(line);
+    }
+    upload_responses_clear(&app->upload);
+    frame_stats_exclude(st, span);
+}
+
 /* A model committed in the last frame: the model scene starts from it, at this frame boundary. */
 static void app_swap_upload(struct app *app, struct app_notes *notes)
 {
@@ -383,7 +524,181 @@ static void app_swap_upload(struct app *app, struct app_notes *notes)
     upload_taken(&app->upload);
     notes->scene_changed = true;
 }
+
+static void app_upload_init(struct app *app)
+{
+    upload_init(&app->upload, app_upload_file, sizeof app_upload_file, app_upload_map,
+                sizeof app_upload_map, FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES);
+}
+
+/* The batch's wait (the watchdog), draining the UART meanwhile. */
+static inline int app_wait_batch(struct app *app, uint32_t tag)
+{
+    return gpu_wait_idle(&app->gpu, tag, FW_GPU_MAX_POLLS, app_drain_uart, 0);
+}
+#else
+#define APP_UART_BYTES_PER_FRAME INPUT_MAX_BYTES_PER_FRAME
+#define app_uart_getc bsp_uart_getc_nonblock
+static inline bool app_upload_feed(struct app *app, uint8_t c)
+{
+    (void)app;
+    (void)c;
+    return false;
+}
+static inline void app_upload_frame_end(struct app *app)
+{
+    (void)app;
+}
+static inline void app_print_upload(struct app *app, struct frame_stats *st)
+{
+    (void)app;
+    (void)st;
+}
+static inline void app_swap_upload(struct app *app, struct app_notes *notes)
+{
+    (void)app;
+    (void)notes;
+}
+static inline void app_upload_init(struct app *app)
+{
+    (void)app;
+}
+static inline int app_wait_batch(struct app *app, uint32_t tag)
+{
+    return gpu_wait(&app->gpu, tag, FW_GPU_MAX_POLLS);
+}
 #endif
+
+/* Where batches are built: in the GPU's own buffers where the platform maps them, else staged. */
+#if BSP_GPU_BUFFERS_MAPPED
+static void app_attach_words(struct app *app)
+{
+    app->words.vtx = gpu_buffer_words(GPU_WIN_VTX);
+    app->words.prim = gpu_buffer_words(GPU_WIN_IDX);
+}
+
+/* After the boot banner: a platform that promised mapped buffers must have them. */
+static void app_check_words(const struct app *app)
+{
+    if (app->words.vtx == NULL || app->words.prim == NULL) {
+        printf("error: the platform says its GPU buffers are mapped (BSP_GPU_BUFFERS_MAPPED) but "
+               "bsp_gpu_buffer returned NULL\n");
+        app_fail(FW_EXIT_CONFIG);
+    }
+}
+#else
+/* Batch staging, for platforms whose GPU buffers are not CPU memory (bsp_gpu_buffer NULL); where
+ * they are (BSP_GPU_BUFFERS_MAPPED), batches are built in place and these 12 KiB are not needed. */
+static uint32_t app_vtx_staging[GPU_VTX_CAP * GPU_VTX_WORDS];
+static uint32_t app_prim_staging[GPU_TRI_CAP * GPU_PRIM_WORDS];
+
+static void app_attach_words(struct app *app)
+{
+    app->words.vtx = gpu_buffer_words(GPU_WIN_VTX);
+    app->words.prim = gpu_buffer_words(GPU_WIN_IDX);
+    if (app->words.vtx == NULL || app->words.prim == NULL) {
+        app->words.vtx = app_vtx_staging;
+        app->words.prim = app_prim_staging;
+    }
+}
+
+static inline void app_check_words(const struct app *app)
+{
+    (void)app;
+}
+#endif
+
+/* The host build's hooks (bsp/host/bsp_platform.h): the scene of every frame for the exact
+ * reference (--dump-scene), and a model file given on the command line (--model). */
+#if BSP_HOST_SCENE_DUMP
+static inline void app_scene_dump(const struct app *app, unsigned frame)
+{
+    bsp_host_scene_dump(&app->scene, app->palette, frame);
+}
+#else
+static inline void app_scene_dump(const struct app *app, unsigned frame)
+{
+    (void)app;
+    (void)frame;
+}
+#endif
+#if BSP_HOST_BOOT_MODEL && FW_MODEL_SCENE_BUILT
+/* The model scene starts from it, as if it had been uploaded before the first frame. */
+static void app_boot_model(void)
+{
+    const uint8_t *file;
+    const uint32_t bytes = bsp_host_boot_model(&file);
+
+    if (file != NULL) {
+        model_scene_source(file, bytes);
+    }
+}
+#elif BSP_HOST_BOOT_MODEL
+static void app_boot_model(void)
+{
+    const uint8_t *file;
+
+    (void)bsp_host_boot_model(&file);
+    if (file != NULL) {
+        printf("error: a model file was given, but the model scene is not built in\n");
+        app_fail(FW_EXIT_CONFIG);
+    }
+}
+#else
+static inline void app_boot_model(void)
+{
+}
+#endif
+
+/* The measurement's seeded camera path (cam_path.h, FW_CAMERA_PATH): it is not the firmware's
+ * work, so its instructions are not counted. */
+#if FW_CAMERA_PATH
+static void app_path_start(struct app *app)
+{
+    cam_path_start(&app->scene);
+}
+
+static void app_path_apply(struct app *app, unsigned frame, struct frame_stats *st)
+{
+    const struct frame_span span = frame_span_begin();
+
+    cam_path_apply(&app->scene, frame);
+    frame_stats_exclude(st, span);
+}
+#else
+static inline void app_path_start(struct app *app)
+{
+    (void)app;
+}
+
+static inline void app_path_apply(struct app *app, unsigned frame, struct frame_stats *st)
+{
+    (void)app;
+    (void)frame;
+    (void)st;
+}
+#endif
+
+/* ---- the stages --------------------------------------------------------------------------- */
+
+/* Read this frame's UART bytes, never waiting: the upload's frames to its receiver, the rest
+ * decoded into keys. */
+static void app_read_uart(struct app *app, struct input_counts *keys)
+{
+    input_counts_clear(keys);
+    for (uint32_t i = 0; i < APP_UART_BYTES_PER_FRAME; i++) {
+        const int c = app_uart_getc();
+
+        if (c < 0) {
+            break;
+        }
+        if (app_upload_feed(app, (uint8_t)c)) {
+            continue;
+        }
+        input_counts_add(keys, input_decode(&app->decoder, (uint8_t)c));
+    }
+    app_upload_frame_end(app);
+}
 
 /* Keys that belong to the loop rather than the scene. Returns false to quit. */
 static bool app_global_keys(struct app *app, const struct input_counts *keys,
@@ -442,7 +757,7 @@ static bool app_global_keys(struct app *app, const struct input_counts *keys,
  * (the GPU has been reset and the frame is abandoned).
  */
 static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last_pass,
-                       struct frame_totals *tot)
+                       struct frame_stats *tot)
 {
     struct batch_cursor cur;
     bool first = true;
@@ -458,17 +773,15 @@ static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last
     do {
         struct gpu_stats stats;
         uint32_t tag;
+        struct frame_span wait;
         uint64_t t0;
         uint64_t t1;
-        uint64_t t_wait;
-        uint64_t c_wait;
         bool last;
         int rc;
 
-        t0 = bsp_instret();
+        t0 = frame_stats_mark();
         batch_fill(&cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap, &app->words);
-        t1 = bsp_instret();
-        tot->t_batch += t1 - t0;
+        t1 = frame_stats_batch_filled(tot, t0);
         last = last_pass && batch_done(&cur, &app->frame);
         batch.vtx_count = app->words.vtx_count;
         batch.prim_count = app->words.prim_count;
@@ -484,20 +797,11 @@ static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last
             printf("error: frame %u: batch not submitted: %s\n", frame_no, gpu_strerror(rc));
             app_fail(FW_EXIT_GPU_SUBMIT);
         }
-        tot->batches++;
-        tot->prims += batch.prim_count;
+        frame_stats_add_batch(tot, batch.prim_count);
 
-        c_wait = bsp_cycles();
-        t_wait = bsp_instret();
-        tot->t_submit += t_wait - t1;
-#if FW_WITH_UPLOAD
-        rc = gpu_wait_idle(&app->gpu, tag, FW_GPU_MAX_POLLS, app_drain_uart, 0);
-#else
-        rc = gpu_wait(&app->gpu, tag, FW_GPU_MAX_POLLS);
-#endif
-        t0 = bsp_instret();
-        tot->wait_cycles += bsp_cycles() - c_wait;
-        tot->wait_instr += t0 - t_wait;
+        wait = frame_stats_wait_begin(tot, t1);
+        rc = app_wait_batch(app, tag);
+        t0 = frame_stats_wait_end(tot, wait);
         if (rc != GPU_OK) {
             printf("watchdog: frame %u batch %lu: GPU did not finish (DONE_SEQ=0x%08lx, expected "
                    "tag 0x%08lx after %lu polls): resetting it, dropping the frame\n",
@@ -507,35 +811,26 @@ static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last
             return false;
         }
         gpu_read_stats(&app->gpu, &stats);
-        tot->t_submit += bsp_instret() - t0;
-        tot->drawn += stats.tris_drawn;
-        tot->busy_cycles += stats.busy_cycles;
-        tot->errors |= stats.errors;
+        frame_stats_submitted(tot, t0);
+        frame_stats_add_gpu(tot, &stats);
         first = false;
     } while (!batch_done(&cur, &app->frame));
     return true;
 }
 
-/* The instruction counter, as pipeline_pass's clock (inlined there). */
-static inline uint64_t app_clock(void)
-{
-    return bsp_instret();
-}
-
 /* One pass (pipeline.h): the scene seen from one eye, sorted, then the overlay. */
-static void app_render_pass(struct app *app, int eye, struct frame_totals *tot)
+static void app_render_pass(struct app *app, int eye, struct frame_stats *tot)
 {
     struct pipeline_opts opts;
-    struct pipeline_times times = {tot->t_draw, tot->t_sort};
+    struct pipeline_times times = frame_stats_pass_times(tot);
 
     opts.wireframe = app->wireframe;
     opts.depth_test = app->depth_test;
     opts.gpu_lines = gpu_caps_lines(app->gpu.info.caps);
     opts.eye_planes = app_eye_planes(app);
     opts.gouraud = FW_WITH_GOURAUD && FW_GOURAUD && gpu_caps_gouraud(app->gpu.info.caps);
-    pipeline_pass(&app->frame, &app->scene, &opts, eye, app_clock, &times);
-    tot->t_draw = times.draw;
-    tot->t_sort = times.sort;
+    pipeline_pass(&app->frame, &app->scene, &opts, eye, frame_stats_mark, &times);
+    frame_stats_set_pass_times(tot, &times);
 }
 
 /* The running scene's line; the model scene's says where its model came from, or why it has
@@ -594,9 +889,29 @@ static void app_print_event(const struct scene *s, const struct scene_event *ev)
     }
 }
 
-int app_run(void)
+/* What the frame's keys changed and what the scene reported, printed after the frame so printing
+ * stays out of the count. */
+static void app_print_notes(const struct app *app, const struct app_notes *notes,
+                            enum cam_mode mode_before, const struct scene_event *ev)
 {
-    struct app *app = &app_state;
+    if (notes->scene_changed) {
+        app_print_scene(app);
+    }
+    for (uint32_t m = 0; m < notes->msg_count; m++) {
+        printf("%s\n", notes->msg[m]);
+    }
+    if (app->scene.cam.mode != mode_before && !notes->scene_changed) {
+        printf("camera: %s\n", cam_mode_name(app->scene.cam.mode));
+    }
+    app_print_event(&app->scene, ev);
+    if (notes->help) {
+        app_print_keys(&app->scene);
+    }
+}
+
+/* Boot: the platform, the GPU (or stop with its error), the batch buffers, the boot scene. */
+static void app_boot(struct app *app)
+{
     const struct scene_desc *desc;
     int rc;
 
@@ -604,15 +919,7 @@ int app_run(void)
     scene_set_attach(&app->scene, &app->frame);
     palette_build(app->palette);
     rc = gpu_init(&app->gpu, app->palette, PAL_ENTRIES);
-    /* Batches are built in the GPU's own buffers where the platform maps them, else staged. */
-    app->words.vtx = gpu_buffer_words(GPU_WIN_VTX);
-    app->words.prim = gpu_buffer_words(GPU_WIN_IDX);
-#if !BSP_GPU_BUFFERS_MAPPED
-    if (app->words.vtx == NULL || app->words.prim == NULL) {
-        app->words.vtx = app_vtx_staging;
-        app->words.prim = app_prim_staging;
-    }
-#endif
+    app_attach_words(app);
     printf("%s fw (%s, %s): GPU id 0x%08lx version 0x%08lx caps 0x%08lx vtx_cap %lu tri_cap %lu "
            "fb %lux%lu | frames %u\n",
            FW_SCENE, BSP_NAME, REAL_BACKEND_NAME, (unsigned long)app->gpu.info.id,
@@ -624,23 +931,14 @@ int app_run(void)
         app_report_init_error(rc, &app->gpu.info);
         app_fail(FW_EXIT_GPU_INIT);
     }
-#if BSP_GPU_BUFFERS_MAPPED
-    if (app->words.vtx == NULL || app->words.prim == NULL) {
-        printf("error: the platform says its GPU buffers are mapped (BSP_GPU_BUFFERS_MAPPED) but "
-               "bsp_gpu_buffer returned NULL\n");
-        app_fail(FW_EXIT_CONFIG);
-    }
-#endif
+    app_check_words(app);
     desc = scene_find(FW_SCENE);
     if (desc == 0) {
         printf("error: no scene named '%s' built in\n", FW_SCENE);
         app_fail(FW_EXIT_CONFIG);
     }
     input_decoder_init(&app->decoder);
-#if FW_WITH_UPLOAD
-    upload_init(&app->upload, app_upload_file, sizeof app_upload_file, app_upload_map,
-                sizeof app_upload_map, FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES);
-#endif
+    app_upload_init(app);
     app->wireframe = false;
     app->anaglyph = false;
     app->write_mask = APP_WRITE_MASK_UNKNOWN;
@@ -650,146 +948,113 @@ int app_run(void)
                (unsigned)gpu_caps_zbuf_bits(app->gpu.info.caps));
     }
     app->lost_in_a_row = 0;
+    app_boot_model();
     app_start_scene(app, desc);
-#if FW_CAMERA_PATH
-    cam_path_start(&app->scene);
-#endif
+    app_path_start(app);
     app_report_lines(app);
     app_print_keys(&app->scene);
     app_print_scene(app);
+}
 
+/* Input: a model committed in the last frame swapped in, this frame's UART bytes (the upload's
+ * frames, then keys), the upload's answers, the global keys. Returns false to quit. */
+static bool app_input(struct app *app, struct input_counts *keys, struct app_notes *notes,
+                      struct frame_stats *st)
+{
+    notes->scene_changed = false;
+    app_swap_upload(app, notes);
+    app_read_uart(app, keys);
+    app_print_upload(app, st);
+    return app_global_keys(app, keys, notes);
+}
+
+/* Update: the scene's camera keys, animation and own keys (or the measurement's camera). */
+static void app_update(struct app *app, unsigned frame, const struct input_counts *keys,
+                       struct scene_event *ev, struct frame_stats *st)
+{
+    scene_update(&app->scene, keys, ev);
+    app_path_apply(app, frame, st);
+    frame_stats_updated(st);
+    app_scene_dump(app, frame);
+}
+
+/* The frame's passes, each rendered then submitted: one, or two for the anaglyph (left eye red,
+ * right eye cyan). Returns false when the watchdog dropped the frame. */
+static bool app_draw(struct app *app, unsigned frame, struct frame_stats *st)
+{
+    const int passes = (FW_WITH_ANAGLYPH && app->anaglyph) ? 2 : 1;
+    bool completed = true;
+
+    for (int p = 0; p < passes && completed; p++) {
+        const int eye = app->anaglyph ? ((p == 0) ? -1 : 1) : 0;
+
+        app_render_pass(app, eye, st);
+        app_set_write_mask(app, eye);
+        completed = app_submit(app, frame, p == 0 || app_eye_planes(app), p == passes - 1, st);
+        frame_stats_add_pass(st, &app->frame.stats);
+    }
+    return completed;
+}
+
+/* Statistics: the frame's line, or the watchdog's count of lost frames; the frame's errors stop
+ * the firmware. */
+static void app_statistics(struct app *app, unsigned frame, bool completed,
+                           const struct frame_stats *st)
+{
+    if (!completed) {
+        app->lost_in_a_row++;
+        if (app->lost_in_a_row >= FW_WATCHDOG_GIVE_UP) {
+            printf("error: frame %u: the GPU is still hung after %u resets; giving up\n", frame,
+                   (unsigned)app->lost_in_a_row);
+            app_fail(FW_EXIT_GPU_TIMEOUT);
+        }
+        return;
+    }
+    app->lost_in_a_row = 0;
+    frame_stats_print(frame, st);
+    if (st->render.dropped != 0u) {
+        /* A capacity of this build (scene_list.h) was too small: what did not fit was not
+         * drawn. Reported on every such frame; the run goes on. */
+        printf("error: frame %u: %lu primitives or vertices dropped: the frame holds %lu "
+               "vertices and %lu primitives in this build (scenes/scene_list.h)\n",
+               frame, (unsigned long)st->render.dropped, (unsigned long)app->frame.vert_cap,
+               (unsigned long)app->frame.prim_cap);
+    }
+    if (st->errors != 0u) {
+        app_report_gpu_errors(frame, st->errors);
+        app_fail(FW_EXIT_GPU_ERRORS);
+    }
+    if (fx_overflow_count() != 0u) {
+        printf("error: frame %u: %lu fixed-point overflow(s): a range argument failed\n",
+               frame, (unsigned long)fx_overflow_count());
+        app_fail(FW_EXIT_FX_OVERFLOW);
+    }
+}
+
+int app_run(void)
+{
+    struct app *app = &app_state;
+
+    app_boot(app);
     /* FW_FRAMES frames, or (FW_FRAMES = 0) until Q; the frame number wraps after 2^32 frames. */
     for (unsigned frame = 0, left = FW_FRAMES; FW_FRAMES == 0 || left > 0u; frame++, left--) {
         struct input_counts keys;
         struct scene_event ev;
-        struct frame_totals tot = {0};
-        const enum cam_mode mode_before = app->scene.cam.mode;
         struct app_notes notes;
-        bool completed = true;
-        uint64_t t_start;
-        uint64_t t_end;
-        uint64_t c_start;
-        uint64_t c_end;
-        int passes;
+        struct frame_stats st;
+        const enum cam_mode mode_before = app->scene.cam.mode;
+        bool completed;
 
-        c_start = bsp_cycles();
-        t_start = bsp_instret();
-        notes.scene_changed = false;
-#if FW_WITH_UPLOAD
-        app_swap_upload(app, &notes);
-#endif
-        app_read_uart(app, &keys);
-#if FW_WITH_UPLOAD
-        {
-            /* The upload's answers go out at once, before the frame is drawn: the sender's next
-             * frames then arrive during this frame's GPU wait. Its instructions and cycles join
-             * the excluded wait: printing is not counted. */
-            const uint64_t p0 = bsp_instret();
-            const uint64_t q0 = bsp_cycles();
-
-            app_print_upload(app);
-            tot.wait_instr += bsp_instret() - p0;
-            tot.wait_cycles += bsp_cycles() - q0;
-        }
-#endif
-        if (!app_global_keys(app, &keys, &notes)) {
+        frame_stats_begin(&st);
+        if (!app_input(app, &keys, &notes, &st)) {
             printf("quit at frame %u\n", frame);
             break;
         }
-        scene_update(&app->scene, &keys, &ev);
-#if FW_CAMERA_PATH
-        {
-            /* The measurement's camera (cam_path.h) is not the firmware's work: not counted. */
-            const uint64_t p0 = bsp_instret();
-            const uint64_t q0 = bsp_cycles();
-
-            cam_path_apply(&app->scene, frame);
-            tot.wait_instr += bsp_instret() - p0;
-            tot.wait_cycles += bsp_cycles() - q0;
-        }
-#endif
-        tot.t_update = bsp_instret() - t_start;
-#if BSP_HOST_SCENE_DUMP
-        bsp_host_scene_dump(&app->scene, app->palette, frame);  /* host build, --dump-scene */
-#endif
-
-        render_stats_clear(&tot.render);
-        passes = (FW_WITH_ANAGLYPH && app->anaglyph) ? 2 : 1;
-        for (int p = 0; p < passes && completed; p++) {
-            const int eye = app->anaglyph ? ((p == 0) ? -1 : 1) : 0;
-
-            app_render_pass(app, eye, &tot);
-            app_set_write_mask(app, eye);
-            completed = app_submit(app, frame, p == 0 || app_eye_planes(app), p == passes - 1,
-                                   &tot);
-            tot.render.faces_in += app->frame.stats.faces_in;
-            tot.render.faces_culled_object += app->frame.stats.faces_culled_object;
-            tot.render.faces_frustum += app->frame.stats.faces_frustum;
-            tot.render.faces_back += app->frame.stats.faces_back;
-            tot.render.faces_clipped += app->frame.stats.faces_clipped;
-            tot.render.dropped += app->frame.stats.dropped;
-        }
-        t_end = bsp_instret();
-        c_end = bsp_cycles();
-
-        if (notes.scene_changed) {
-            app_print_scene(app);
-        }
-        for (uint32_t m = 0; m < notes.msg_count; m++) {
-            printf("%s\n", notes.msg[m]);
-        }
-        if (app->scene.cam.mode != mode_before && !notes.scene_changed) {
-            printf("camera: %s\n", cam_mode_name(app->scene.cam.mode));
-        }
-        app_print_event(&app->scene, &ev);
-        if (notes.help) {
-            app_print_keys(&app->scene);
-        }
-
-        if (!completed) {
-            app->lost_in_a_row++;
-            if (app->lost_in_a_row >= FW_WATCHDOG_GIVE_UP) {
-                printf("error: frame %u: the GPU is still hung after %u resets; giving up\n", frame,
-                       (unsigned)app->lost_in_a_row);
-                app_fail(FW_EXIT_GPU_TIMEOUT);
-            }
-            continue;
-        }
-        app->lost_in_a_row = 0;
-        printf("frame %u: tris submitted %lu drawn %lu | fw instr %lu | gpu cycles %lu | errors "
-               "0x%lx | prims %lu batches %lu | culled object %lu frustum %lu back %lu | clipped "
-               "%lu | cpu cycles %lu\n",
-               frame, (unsigned long)tot.render.faces_in, (unsigned long)tot.drawn,
-               (unsigned long)((t_end - t_start) - tot.wait_instr),
-               (unsigned long)tot.busy_cycles, (unsigned long)tot.errors,
-               (unsigned long)tot.prims, (unsigned long)tot.batches,
-               (unsigned long)tot.render.faces_culled_object,
-               (unsigned long)tot.render.faces_frustum, (unsigned long)tot.render.faces_back,
-               (unsigned long)tot.render.faces_clipped,
-               (unsigned long)((c_end - c_start) - tot.wait_cycles));
-        if (FW_PROFILE) {
-            printf("profile %u: update %lu draw %lu sort %lu batch %lu submit %lu\n", frame,
-                   (unsigned long)tot.t_update, (unsigned long)tot.t_draw,
-                   (unsigned long)tot.t_sort, (unsigned long)tot.t_batch,
-                   (unsigned long)tot.t_submit);
-        }
-        if (tot.render.dropped != 0u) {
-            /* A capacity of this build (scene_list.h) was too small: what did not fit was not
-             * drawn. Reported on every such frame; the run goes on. */
-            printf("error: frame %u: %lu primitives or vertices dropped: the frame holds %lu "
-                   "vertices and %lu primitives in this build (scenes/scene_list.h)\n",
-                   frame, (unsigned long)tot.render.dropped, (unsigned long)app->frame.vert_cap,
-                   (unsigned long)app->frame.prim_cap);
-        }
-        if (tot.errors != 0u) {
-            app_report_gpu_errors(frame, tot.errors);
-            app_fail(FW_EXIT_GPU_ERRORS);
-        }
-        if (fx_overflow_count() != 0u) {
-            printf("error: frame %u: %lu fixed-point overflow(s): a range argument failed\n",
-                   frame, (unsigned long)fx_overflow_count());
-            app_fail(FW_EXIT_FX_OVERFLOW);
-        }
+        app_update(app, frame, &keys, &ev, &st);
+        completed = app_draw(app, frame, &st);
+        frame_stats_end(&st);
+        app_print_notes(app, &notes, mode_before, &ev);
+        app_statistics(app, frame, completed, &st);
     }
     if (app->gpu.resets != 0u) {
         printf("watchdog: %lu GPU reset(s) in this run\n", (unsigned long)app->gpu.resets);

@@ -57,4 +57,18 @@ static inline bool batch_done(const struct batch_cursor *cur, const struct rende
     return cur->next >= f->prim_count;
 }
 
+/* The driver's descriptor of the batch batch_fill just wrote: its words from buffer offset 0,
+ * with these CTRL bits and clear colour. */
+static inline struct gpu_batch batch_descriptor(const struct batch_words *w, uint32_t ctrl,
+                                                uint8_t clear_color)
+{
+    const struct gpu_batch b = {
+        .vtx_words = w->vtx, .vtx_base = 0, .vtx_count = w->vtx_count,
+        .prim_words = w->prim, .tri_base = 0, .prim_count = w->prim_count,
+        .ctrl = ctrl, .clear_color = clear_color,
+    };
+
+    return b;
+}
+
 #endif /* BATCH_H */

@@ -25,9 +25,7 @@
  * batch.c writes both as the words of proj_vertex and render_prim (their layout is the
  * contract's on every platform of this firmware; batch.c stops the build where it is not). */
 
-/* RGB444 palette word from 4-bit channels. */
-#define GPU_RGB444(r, g, b) ((((uint32_t)(r) & 0xFu) << 8) | (((uint32_t)(g) & 0xFu) << 4) | \
-                             ((uint32_t)(b) & 0xFu))
+/* Palette words (RGB444) are built by render/palette.h (PAL_RGB444) and loaded as they are. */
 
 /* ---- edge: the device ---------------------------------------------------------------------- */
 

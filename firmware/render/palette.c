@@ -3,8 +3,6 @@
  */
 #include "render/palette.h"
 
-#include "gpu/gpu.h"
-
 /* Full-light colour of each material, RGB 0..15 per channel. */
 static const uint8_t pal_material_rgb[PAL_MATERIALS][3] = {
     {0, 0, 0},     /* 0: fixed colours, see palette_build */
@@ -35,15 +33,15 @@ void palette_build(uint16_t pal[PAL_ENTRIES])
             const uint32_t g = (c[1] * (s + 1u) + 8u) / 16u;
             const uint32_t b = (c[2] * (s + 1u) + 8u) / 16u;
 
-            pal[PAL_INDEX(m, s)] = (uint16_t)GPU_RGB444(r, g, b);
+            pal[PAL_INDEX(m, s)] = (uint16_t)PAL_RGB444(r, g, b);
         }
     }
     for (uint32_t s = 0; s < PAL_SHADES; s++) {
-        pal[PAL_INDEX(0u, s)] = (uint16_t)GPU_RGB444(0, 0, 0);
+        pal[PAL_INDEX(0u, s)] = (uint16_t)PAL_RGB444(0, 0, 0);
     }
-    pal[PAL_SKY] = (uint16_t)GPU_RGB444(0x2, 0x3, 0x6);
-    pal[PAL_WHITE] = (uint16_t)GPU_RGB444(0xF, 0xF, 0xF);
-    pal[PAL_NIGHT] = (uint16_t)GPU_RGB444(0x0, 0x0, 0x0);
+    pal[PAL_SKY] = (uint16_t)PAL_RGB444(0x2, 0x3, 0x6);
+    pal[PAL_WHITE] = (uint16_t)PAL_RGB444(0xF, 0xF, 0xF);
+    pal[PAL_NIGHT] = (uint16_t)PAL_RGB444(0x0, 0x0, 0x0);
 }
 
 void palette_build_anaglyph(uint16_t pal[PAL_ENTRIES])
@@ -52,6 +50,6 @@ void palette_build_anaglyph(uint16_t pal[PAL_ENTRIES])
         const uint32_t left = i >> 4;
         const uint32_t right = i & 0xFu;
 
-        pal[i] = (uint16_t)GPU_RGB444(left, right, right);
+        pal[i] = (uint16_t)PAL_RGB444(left, right, right);
     }
 }

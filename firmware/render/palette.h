@@ -16,7 +16,7 @@
 
 #include <stdint.h>
 
-#include "app/fw_config.h"
+#include "config/build_options.h"
 #include "math/real.h"
 #include "math/vec.h"
 
@@ -25,6 +25,12 @@
 #define PAL_ENTRIES    256u
 
 #define PAL_INDEX(material, shade) ((uint8_t)(((material) << 4) | (shade)))
+
+/* A palette entry as the GPU's palette window holds it (contract/gpu-contract.md, PALETTE):
+ * RGB444 from 4-bit channels, R in bits 11:8. The palette builds its entries in that format and
+ * the driver loads them as they are, so the format is the palette's, not the driver's. */
+#define PAL_RGB444(r, g, b) ((((uint32_t)(r) & 0xFu) << 8) | (((uint32_t)(g) & 0xFu) << 4) | \
+                             ((uint32_t)(b) & 0xFu))
 
 /* Material 0: fixed colours. */
 #define PAL_BLACK      PAL_INDEX(0u, 0u)

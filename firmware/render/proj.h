@@ -47,7 +47,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#include "app/fw_config.h"
+#include "config/build_options.h"
 #include "gpu_regs.h"
 #include "math/vec.h"
 
@@ -57,7 +57,7 @@
 #define PROJ_DEPTH_MAX   21845u           /* 3 * 21845 = 65535 */
 #define PROJ_DEPTH_SCALE 128              /* depth units per view unit */
 
-/* Sub-pixel precision of projected vertices (FW_SUBPIXEL_BITS, fw_config.h): the screen offsets
+/* Sub-pixel precision of projected vertices (FW_SUBPIXEL_BITS, config/build_options.h): the screen offsets
  * are rounded once, to the nearest multiple of PROJ_SUBPIXEL_STEP Q12.4 units. At the default 4
  * bits the step is 1 and every expression below folds back to the full-precision code. */
 #if FW_SUBPIXEL_BITS < 0 || FW_SUBPIXEL_BITS > 4

@@ -3,9 +3,9 @@
  */
 #include "render/render.h"
 
+#include "config/build_options.h"
+#include "gpu_regs.h"  /* the contract's primitive kinds (GPU_PRIM_KIND_*): no driver needed */
 #include "render/clip.h"
-#include "gpu/gpu.h"
-#include "app/fw_config.h"
 #include "render/palette.h"
 
 /* The light in the rotated scene's frame, O^T l, and in an object's model space, R^T (O^T l):

@@ -22,7 +22,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "app/fw_config.h"
+#include "config/build_options.h"
 #include "camera/camera.h"
 #include "input/input.h"
 #include "render/mesh.h"

@@ -10,20 +10,10 @@
 #include "gpu/batch.h"
 #include "render/palette.h"
 #include "render/render.h"
+#include "test_frame.h"
 #include "test_util.h"
 #include "unit.h"
 
-/* The tests' frame: the historical 16384 vertices and primitives (a firmware build sizes its own,
- * scenes/scene_set.h), attached before any case runs. */
-#define TEST_FRAME_VERTS 16384u
-#define TEST_FRAME_PRIMS 16384u
-RENDER_FRAME_STORAGE(test_frame, TEST_FRAME_VERTS, TEST_FRAME_PRIMS);
-static struct render_frame frame;
-static void attach_frame(void) __attribute__((constructor));
-static void attach_frame(void)
-{
-    RENDER_FRAME_ATTACH(&frame, test_frame);
-}
 static uint32_t vtx_words[GPU_VTX_CAP * GPU_VTX_WORDS];
 static uint32_t prim_words[GPU_TRI_CAP * GPU_PRIM_WORDS];
 static struct batch_words words = {vtx_words, prim_words, 0, 0};
@@ -75,11 +65,11 @@ static void render_grid_pass(int n, bool wireframe)
     o.pos = v3(0, 0, 0);
     o.material = 0;
     o.levels = 0;
-    render_frame_begin(&frame);
-    render_stats_clear(&frame.stats);
-    render_object(&frame, &pass, &o);
-    render_sort(&frame);
-    render_overlay_crosshair(&frame, &pass, 4, PAL_WHITE);
+    render_frame_begin(&test_frame);
+    render_stats_clear(&test_frame.stats);
+    render_object(&test_frame, &pass, &o);
+    render_sort(&test_frame);
+    render_overlay_crosshair(&test_frame, &pass, 4, PAL_WHITE);
 }
 
 static void render_grid(int n)
@@ -96,14 +86,14 @@ static void check_batches(uint32_t vtx_cap, uint32_t tri_cap, uint32_t *batches_
 
     batch_begin(&cur);
     do {
-        batch_fill(&cur, &frame, vtx_cap, tri_cap, &words);
+        batch_fill(&cur, &test_frame, vtx_cap, tri_cap, &words);
         batches++;
         CHECK(words.prim_count >= 1u);
         CHECK(words.prim_count <= tri_cap);
         CHECK(words.vtx_count <= vtx_cap);
         for (uint32_t i = 0; i < words.prim_count; i++) {
             const uint32_t *pw = &words.prim[i * GPU_PRIM_WORDS];
-            const struct render_prim *p = &frame.prim[render_draw_index(&frame, next)];
+            const struct render_prim *p = &test_frame.prim[render_draw_index(&test_frame, next)];
             const uint32_t idx[3] = {(pw[GPU_PRIM_I0_WORD] >> GPU_PRIM_I0_LSB) & GPU_PRIM_I0_MASK,
                                      (pw[GPU_PRIM_I1_WORD] >> GPU_PRIM_I1_LSB) & GPU_PRIM_I1_MASK,
                                      (pw[GPU_PRIM_I2_WORD] >> GPU_PRIM_I2_LSB) & GPU_PRIM_I2_MASK};
@@ -112,7 +102,7 @@ static void check_batches(uint32_t vtx_cap, uint32_t tri_cap, uint32_t *batches_
             CHECK_EQ((pw[GPU_PRIM_KIND_WORD] >> GPU_PRIM_KIND_LSB) & GPU_PRIM_KIND_MASK, p->kind);
             for (int k = 0; k < 3; k++) {
                 const uint32_t *vw = &words.vtx[idx[k] * GPU_VTX_WORDS];
-                const struct proj_vertex *want = &frame.vert[p->v[k]];
+                const struct proj_vertex *want = &test_frame.vert[p->v[k]];
 
                 CHECK(idx[k] < words.vtx_count);
                 CHECK_EQ((int16_t)((vw[GPU_VTX_X_WORD] >> GPU_VTX_X_LSB) & GPU_VTX_X_MASK), want->sx);
@@ -128,8 +118,8 @@ static void check_batches(uint32_t vtx_cap, uint32_t tri_cap, uint32_t *batches_
                       words.vtx[a * GPU_VTX_WORDS + 1u] != words.vtx[b * GPU_VTX_WORDS + 1u]);
             }
         }
-    } while (!batch_done(&cur, &frame));
-    CHECK_EQ(next, frame.prim_count);  /* every primitive, once, in draw order */
+    } while (!batch_done(&cur, &test_frame));
+    CHECK_EQ(next, test_frame.prim_count);  /* every primitive, once, in draw order */
     *batches_out = batches;
 }
 
@@ -138,7 +128,7 @@ void test_batch_split_and_renumber(void)
     uint32_t b;
 
     render_grid(40);  /* 3200 triangles, 1681 vertices, plus the crosshair */
-    CHECK_EQ(frame.prim_count, 3202);
+    CHECK_EQ(test_frame.prim_count, 3202);
     check_batches(GPU_VTX_CAP, GPU_TRI_CAP, &b);
     CHECK(b >= 7u);  /* 3202 / 512 */
     check_batches(30, 7, &b);
@@ -157,16 +147,16 @@ void test_batch_shares_vertices(void)
 
     render_grid(10);
     batch_begin(&cur);
-    batch_fill(&cur, &frame, GPU_VTX_CAP, GPU_TRI_CAP, &words);
-    CHECK(batch_done(&cur, &frame));
+    batch_fill(&cur, &test_frame, GPU_VTX_CAP, GPU_TRI_CAP, &words);
+    CHECK(batch_done(&cur, &test_frame));
     CHECK_EQ(words.prim_count, 202);
     CHECK_EQ(words.vtx_count, 121u + 4u);
     /* An empty frame still makes one (empty) batch: the frame's clear and swap must happen. */
-    render_frame_begin(&frame);
+    render_frame_begin(&test_frame);
     batch_begin(&cur);
-    batch_fill(&cur, &frame, GPU_VTX_CAP, GPU_TRI_CAP, &words);
+    batch_fill(&cur, &test_frame, GPU_VTX_CAP, GPU_TRI_CAP, &words);
     CHECK_EQ(words.prim_count, 0);
-    CHECK(batch_done(&cur, &frame));
+    CHECK(batch_done(&cur, &test_frame));
 }
 
 /* A wireframe frame with GPU lines: each outline primitive becomes its edges' LINE primitives,
@@ -179,8 +169,8 @@ void test_batch_outlines(void)
     static const uint32_t caps[][2] = {{GPU_VTX_CAP, GPU_TRI_CAP}, {30, 7}, {3, 1}, {3, 3}};
 
     render_grid_pass(10, true);  /* 200 outlines (each keeps an edge), the crosshair's 2 lines */
-    CHECK_EQ(frame.prim_count, 202);
-    CHECK_EQ(frame.outline_count, 200);
+    CHECK_EQ(test_frame.prim_count, 202);
+    CHECK_EQ(test_frame.outline_count, 200);
     for (uint32_t c = 0; c < sizeof caps / sizeof caps[0]; c++) {
         struct batch_cursor cur;
         uint32_t lines = 0;
@@ -190,13 +180,13 @@ void test_batch_outlines(void)
         do {
             uint32_t i = 0;
 
-            batch_fill(&cur, &frame, caps[c][0], caps[c][1], &words);
+            batch_fill(&cur, &test_frame, caps[c][0], caps[c][1], &words);
             CHECK(words.prim_count >= 1u);
             CHECK(words.prim_count <= ((caps[c][1] < 3u) ? 3u : caps[c][1]));
             CHECK(words.vtx_count <= ((caps[c][0] < 3u) ? 3u : caps[c][0]));
             /* Walk the frame's primitives this batch took, matching its lines in order. */
             while (next < cur.next) {
-                const struct render_prim *p = &frame.prim[render_draw_index(&frame, next)];
+                const struct render_prim *p = &test_frame.prim[render_draw_index(&test_frame, next)];
                 const uint32_t edges = ((p->kind & RENDER_PRIM_OUTLINE) != 0u)
                                            ? (p->kind & RENDER_PRIM_OUTLINE_EDGES) : 0u;
 
@@ -212,8 +202,8 @@ void test_batch_outlines(void)
                     CHECK_EQ(pw[1] >> GPU_PRIM_KIND_LSB, GPU_PRIM_KIND_LINE);
                     CHECK_EQ((pw[1] >> GPU_PRIM_COLOR_LSB) & GPU_PRIM_COLOR_MASK, p->color);
                     if (edges != 0u) {
-                        CHECK_EQ(words.vtx[a * GPU_VTX_WORDS], frame.vert[p->v[k]].sxy);
-                        CHECK_EQ(words.vtx[b * GPU_VTX_WORDS], frame.vert[p->v[(k + 1u) % 3u]].sxy);
+                        CHECK_EQ(words.vtx[a * GPU_VTX_WORDS], test_frame.vert[p->v[k]].sxy);
+                        CHECK_EQ(words.vtx[b * GPU_VTX_WORDS], test_frame.vert[p->v[(k + 1u) % 3u]].sxy);
                     }
                     i++;
                     lines++;
@@ -224,7 +214,7 @@ void test_batch_outlines(void)
                 next++;
             }
             CHECK_EQ(i, words.prim_count);
-        } while (!batch_done(&cur, &frame));
+        } while (!batch_done(&cur, &test_frame));
         CHECK_EQ(lines, 2u * 10u * 11u + 2u);
     }
 }

@@ -3,7 +3,6 @@
  */
 #include <stdint.h>
 
-#include "gpu/gpu.h"
 #include "render/mesh.h"
 #include "render/palette.h"
 #include "test_util.h"
@@ -13,11 +12,12 @@ void test_palette_ramps(void)
 {
     uint16_t pal[PAL_ENTRIES];
 
+    CHECK_EQ(PAL_RGB444(0xF, 0xA, 0x5), 0xFA5u);  /* the palette window's RGB444: R in 11:8 */
     palette_build(pal);
-    CHECK_EQ(pal[PAL_INDEX(MAT_RED, 15u)], GPU_RGB444(15, 3, 2));  /* full light: the material */
-    CHECK_EQ(pal[PAL_INDEX(MAT_ANAGLYPH_LEFT, 15u)], GPU_RGB444(15, 0, 0));
-    CHECK_EQ(pal[PAL_INDEX(MAT_ANAGLYPH_RIGHT, 15u)], GPU_RGB444(0, 15, 15));
-    CHECK_EQ(pal[PAL_WHITE], GPU_RGB444(15, 15, 15));
+    CHECK_EQ(pal[PAL_INDEX(MAT_RED, 15u)], PAL_RGB444(15, 3, 2));  /* full light: the material */
+    CHECK_EQ(pal[PAL_INDEX(MAT_ANAGLYPH_LEFT, 15u)], PAL_RGB444(15, 0, 0));
+    CHECK_EQ(pal[PAL_INDEX(MAT_ANAGLYPH_RIGHT, 15u)], PAL_RGB444(0, 15, 15));
+    CHECK_EQ(pal[PAL_WHITE], PAL_RGB444(15, 15, 15));
     for (uint32_t m = 1; m < PAL_MATERIALS; m++) {
         for (uint32_t s = 1; s < PAL_SHADES; s++) {
             const uint16_t a = pal[PAL_INDEX(m, s - 1u)];

@@ -10,20 +10,10 @@
 #include "gpu/batch.h"
 #include "render/palette.h"
 #include "render/render.h"
+#include "test_frame.h"
 #include "test_util.h"
 #include "unit.h"
 
-/* The tests' frame: the historical 16384 vertices and primitives (a firmware build sizes its own,
- * scenes/scene_set.h), attached before any case runs. */
-#define TEST_FRAME_VERTS 16384u
-#define TEST_FRAME_PRIMS 16384u
-RENDER_FRAME_STORAGE(test_frame, TEST_FRAME_VERTS, TEST_FRAME_PRIMS);
-static struct render_frame frame;
-static void attach_frame(void) __attribute__((constructor));
-static void attach_frame(void)
-{
-    RENDER_FRAME_ATTACH(&frame, test_frame);
-}
 
 /* Camera at the origin looking along +z, no scene rotation, light from behind the camera. */
 static void setup_pass(struct render_pass *pass)
@@ -60,6 +50,15 @@ static void tri_mesh_add(struct tri_mesh *t, vec3 a, vec3 b, vec3 c, uint8_t mat
     mesh_add_face(&t->m, i, (uint16_t)(i + 1u), (uint16_t)(i + 2u), mat);
 }
 
+/* A mesh of one unit triangle at depth z, (0,0) (0,1) (1,0): facing an eye at the origin that
+ * looks along +z. */
+static void tri_mesh_unit(struct tri_mesh *t, double z, uint8_t mat)
+{
+    tri_mesh_init(t);
+    tri_mesh_add(t, v3(0, 0, z), v3(0, 1, z), v3(1, 0, z), mat);
+    mesh_finish(&t->m);
+}
+
 static void draw(const struct render_pass *pass, const struct mesh *m, vec3 pos, uint8_t mat)
 {
     struct render_object o;
@@ -69,13 +68,20 @@ static void draw(const struct render_pass *pass, const struct mesh *m, vec3 pos,
     o.pos = pos;
     o.material = mat;
     o.levels = 0;
-    render_object(&frame, pass, &o);
+    render_object(&test_frame, pass, &o);
 }
 
 static void begin(void)
 {
-    render_frame_begin(&frame);
-    render_stats_clear(&frame.stats);
+    render_frame_begin(&test_frame);
+    render_stats_clear(&test_frame.stats);
+}
+
+/* A frame of one object: m at the origin, its own materials. */
+static void draw_alone(const struct render_pass *pass, const struct mesh *m)
+{
+    begin();
+    draw(pass, m, v3(0, 0, 0), 0);
 }
 
 /* Edge-function test of a pixel centre against an emitted triangle (either winding). */
@@ -86,8 +92,8 @@ static int covers(const struct render_prim *p, int px, int py)
     int64_t e[3];
 
     for (int k = 0; k < 3; k++) {
-        const struct proj_vertex *a = &frame.vert[p->v[k]];
-        const struct proj_vertex *b = &frame.vert[p->v[(k + 1) % 3]];
+        const struct proj_vertex *a = &test_frame.vert[p->v[k]];
+        const struct proj_vertex *b = &test_frame.vert[p->v[(k + 1) % 3]];
 
         e[k] = (int64_t)(b->sx - a->sx) * (y - a->sy) - (int64_t)(b->sy - a->sy) * (x - a->sx);
     }
@@ -104,23 +110,21 @@ void test_render_backface(void)
     tri_mesh_add(&t, v3(0, 0, 3), v3(0, 1, 3), v3(1, 0, 3), MAT_RED);  /* faces the eye (-z) */
     tri_mesh_add(&t, v3(0, 0, 4), v3(1, 0, 4), v3(0, 1, 4), MAT_RED);  /* faces away */
     mesh_finish(&t.m);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
-    CHECK_EQ(frame.prim_count, 1);
-    CHECK_EQ(frame.stats.faces_back, 1);
-    CHECK_EQ(frame.stats.faces_emitted, 1);
-    CHECK_EQ(frame.prim[0].kind, GPU_PRIM_KIND_TRI);
+    draw_alone(&pass, &t.m);
+    CHECK_EQ(test_frame.prim_count, 1);
+    CHECK_EQ(test_frame.stats.faces_back, 1);
+    CHECK_EQ(test_frame.stats.faces_emitted, 1);
+    CHECK_EQ(test_frame.prim[0].kind, GPU_PRIM_KIND_TRI);
     /* The kept face has a positive signed area in the contract's sense. */
-    CHECK(proj_signed_area(&frame.vert[frame.prim[0].v[0]], &frame.vert[frame.prim[0].v[1]],
-                           &frame.vert[frame.prim[0].v[2]]) > 0);
+    CHECK(proj_signed_area(&test_frame.vert[test_frame.prim[0].v[0]], &test_frame.vert[test_frame.prim[0].v[1]],
+                           &test_frame.vert[test_frame.prim[0].v[2]]) > 0);
     /* Edge-on: zero area counts as back-facing. */
     tri_mesh_init(&t);
     tri_mesh_add(&t, v3(0, 0, 3), v3(0, 0, 4), v3(0, 1, 3), MAT_RED);  /* in the plane x = 0 */
     mesh_finish(&t.m);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
-    CHECK_EQ(frame.prim_count, 0);
-    CHECK_EQ(frame.stats.faces_back, 1);
+    draw_alone(&pass, &t.m);
+    CHECK_EQ(test_frame.prim_count, 0);
+    CHECK_EQ(test_frame.stats.faces_back, 1);
 }
 
 /* The level cache of a static mesh: the same colours as without it, in the first frame (filled
@@ -141,11 +145,10 @@ void test_render_level_cache(void)
     tri_mesh_add(&t, v3(-2, 0, 3), v3(-2, 1, 4), v3(-1, 0, 3), MAT_GRASS);   /* tilted */
     tri_mesh_add(&t, v3(0, -2, 4), v3(0, -1, 3), v3(1, -2, 4), MAT_STONE);   /* tilted */
     mesh_finish(&t.m);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
-    n = frame.prim_count;
+    draw_alone(&pass, &t.m);
+    n = test_frame.prim_count;
     CHECK_EQ(n, 3);
-    memcpy(plain, frame.prim, n * sizeof plain[0]);
+    memcpy(plain, test_frame.prim, n * sizeof plain[0]);
 
     render_level_cache_init(&cache, level, 32);
     o.mesh = &t.m;
@@ -155,20 +158,19 @@ void test_render_level_cache(void)
     o.levels = &cache;
     for (int rep = 0; rep < 2; rep++) {
         begin();
-        render_object(&frame, &pass, &o);
-        CHECK_EQ(frame.prim_count, n);
-        CHECK(memcmp(frame.prim, plain, n * sizeof plain[0]) == 0);
+        render_object(&test_frame, &pass, &o);
+        CHECK_EQ(test_frame.prim_count, n);
+        CHECK(memcmp(test_frame.prim, plain, n * sizeof plain[0]) == 0);
         CHECK(cache.valid);
         CHECK(level[t.m.faces[0].normal] <= 15u);
     }
     /* Another light: the cache is emptied and refilled, and agrees with the uncached path. */
     pass.light_scene = u3(0.6, 0.0, -0.8);
+    draw_alone(&pass, &t.m);
+    memcpy(plain, test_frame.prim, n * sizeof plain[0]);
     begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
-    memcpy(plain, frame.prim, n * sizeof plain[0]);
-    begin();
-    render_object(&frame, &pass, &o);
-    CHECK(memcmp(frame.prim, plain, n * sizeof plain[0]) == 0);
+    render_object(&test_frame, &pass, &o);
+    CHECK(memcmp(test_frame.prim, plain, n * sizeof plain[0]) == 0);
     {
         /* the cache holds the light in model space, as render_object forms it */
         const uvec3 l = mat3_apply_transposed_unit_fast(&o.rot, pass.light_scene);
@@ -189,10 +191,10 @@ void test_render_level_cache(void)
         }
         begin();
         draw(&pass, &t.m, v3(0, 0, 0), 0);
-        memcpy(plain, frame.prim, n * sizeof plain[0]);
+        memcpy(plain, test_frame.prim, n * sizeof plain[0]);
         begin();
-        render_object(&frame, &pass, &o);
-        CHECK(memcmp(frame.prim, plain, n * sizeof plain[0]) == 0);
+        render_object(&test_frame, &pass, &o);
+        CHECK(memcmp(test_frame.prim, plain, n * sizeof plain[0]) == 0);
         CHECK(cache.valid);
     }
 }
@@ -213,15 +215,12 @@ void test_render_frustum_culling(void)
     tri_mesh_add(&t, v3(0, 0, 170), v3(0, 1, 170), v3(1, 0, 170), MAT_RED);  /* beyond far */
     tri_mesh_add(&t, v3(0, 0, -3), v3(1, 0, -3), v3(0, 1, -3), MAT_RED);     /* behind */
     mesh_finish(&t.m);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
-    CHECK_EQ(frame.prim_count, 1);
-    CHECK_EQ(frame.stats.faces_frustum, 4);
-    CHECK_EQ(frame.stats.objects_culled, 0);
+    draw_alone(&pass, &t.m);
+    CHECK_EQ(test_frame.prim_count, 1);
+    CHECK_EQ(test_frame.stats.faces_frustum, 4);
+    CHECK_EQ(test_frame.stats.objects_culled, 0);
 
-    tri_mesh_init(&t);
-    tri_mesh_add(&t, v3(0, 0, 0), v3(0, 1, 0), v3(1, 0, 0), MAT_RED);
-    mesh_finish(&t.m);
+    tri_mesh_unit(&t, 0, MAT_RED);
     begin();
     draw(&pass, &t.m, v3(0, 0, -5), 0);    /* behind the eye */
     draw(&pass, &t.m, v3(0, 0, 200), 0);   /* beyond far */
@@ -229,12 +228,12 @@ void test_render_frustum_culling(void)
     draw(&pass, &t.m, v3(50, 0, 5), 0);    /* right */
     draw(&pass, &t.m, v3(0, 50, 5), 0);    /* above */
     draw(&pass, &t.m, v3(0, -50, 5), 0);   /* below */
-    CHECK_EQ(frame.stats.objects_culled, 6);
-    CHECK_EQ(frame.stats.faces_culled_object, 6);
-    CHECK_EQ(frame.vert_count, 0);  /* nothing was even transformed */
+    CHECK_EQ(test_frame.stats.objects_culled, 6);
+    CHECK_EQ(test_frame.stats.faces_culled_object, 6);
+    CHECK_EQ(test_frame.vert_count, 0);  /* nothing was even transformed */
     draw(&pass, &t.m, v3(-0.5, 0, 5), 0);
-    CHECK_EQ(frame.stats.objects_culled, 6);
-    CHECK_EQ(frame.prim_count, 1);
+    CHECK_EQ(test_frame.stats.objects_culled, 6);
+    CHECK_EQ(test_frame.prim_count, 1);
     /* A sphere straddling an edge plane is kept; inside, crossing and outside are told apart
      * (the left edge plane at z = 5 is at x = -4; the near plane at z = 0.25). */
     CHECK(render_sphere_visible(&pass.proj, v3(-4.1, 0, 5), to_real(0.5)));
@@ -262,20 +261,20 @@ void test_render_inside_shortcut(void)
     mesh_finish(&t.m);
     begin();
     draw(&pass, &t.m, v3(0, 0, 5), 0);  /* well inside */
-    CHECK_EQ(frame.prim_count, 1);
-    CHECK_EQ(frame.vert[0].code, 0);
-    memcpy(inside, frame.prim, sizeof inside);
-    memcpy(inside_v, frame.vert, sizeof inside_v);
+    CHECK_EQ(test_frame.prim_count, 1);
+    CHECK_EQ(test_frame.vert[0].code, 0);
+    memcpy(inside, test_frame.prim, sizeof inside);
+    memcpy(inside_v, test_frame.vert, sizeof inside_v);
     /* Same object, same view position, but a far plane that cuts its sphere: full path. */
     pass.proj.far = to_real(5.1);
     begin();
     draw(&pass, &t.m, v3(0, 0, 5), 0);
-    CHECK_EQ(frame.prim_count, 1);
-    CHECK_EQ(frame.stats.faces_back, 1);
-    CHECK(memcmp(&frame.prim[0], &inside[0], sizeof inside[0]) == 0);
+    CHECK_EQ(test_frame.prim_count, 1);
+    CHECK_EQ(test_frame.stats.faces_back, 1);
+    CHECK(memcmp(&test_frame.prim[0], &inside[0], sizeof inside[0]) == 0);
     for (int k = 0; k < 3; k++) {
-        CHECK_EQ(frame.vert[k].sxy, inside_v[k].sxy);
-        CHECK_EQ(frame.vert[k].depth, inside_v[k].depth);
+        CHECK_EQ(test_frame.vert[k].sxy, inside_v[k].sxy);
+        CHECK_EQ(test_frame.vert[k].depth, inside_v[k].depth);
     }
 }
 
@@ -294,17 +293,16 @@ void test_render_near_clipping(void)
     tri_mesh_add(&t, v3(-2, -1, -3), v3(-2, -1, 10), v3(2, -1, 10), MAT_GREEN);
     tri_mesh_add(&t, v3(-2, -1, -3), v3(2, -1, 10), v3(2, -1, -3), MAT_GREEN);
     mesh_finish(&t.m);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
-    CHECK_EQ(frame.stats.faces_clipped, 2);
-    CHECK(frame.prim_count >= 2);
-    for (uint32_t i = 0; i < frame.prim_count; i++) {
+    draw_alone(&pass, &t.m);
+    CHECK_EQ(test_frame.stats.faces_clipped, 2);
+    CHECK(test_frame.prim_count >= 2);
+    for (uint32_t i = 0; i < test_frame.prim_count; i++) {
         for (int k = 0; k < 3; k++) {
-            CHECK((frame.vert[frame.prim[i].v[k]].code & PROJ_CLIP_BITS) == 0);
+            CHECK((test_frame.vert[test_frame.prim[i].v[k]].code & PROJ_CLIP_BITS) == 0);
         }
-        covered |= covers(&frame.prim[i], 160, 239);  /* bottom centre: floor right in front */
-        CHECK(proj_signed_area(&frame.vert[frame.prim[i].v[0]], &frame.vert[frame.prim[i].v[1]],
-                               &frame.vert[frame.prim[i].v[2]]) >= 0);
+        covered |= covers(&test_frame.prim[i], 160, 239);  /* bottom centre: floor right in front */
+        CHECK(proj_signed_area(&test_frame.vert[test_frame.prim[i].v[0]], &test_frame.vert[test_frame.prim[i].v[1]],
+                               &test_frame.vert[test_frame.prim[i].v[2]]) >= 0);
     }
     CHECK(covered);
 
@@ -312,12 +310,11 @@ void test_render_near_clipping(void)
     tri_mesh_init(&t);
     tri_mesh_add(&t, v3(-3, -1, 2), v3(-1, -1, 2), v3(-2, -1, -5), MAT_GREEN);  /* faces up */
     mesh_finish(&t.m);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
-    CHECK(frame.prim_count >= 1);
-    for (uint32_t i = 0; i < frame.prim_count; i++) {
+    draw_alone(&pass, &t.m);
+    CHECK(test_frame.prim_count >= 1);
+    for (uint32_t i = 0; i < test_frame.prim_count; i++) {
         for (int k = 0; k < 3; k++) {
-            CHECK(frame.vert[frame.prim[i].v[k]].sx <= 2560);
+            CHECK(test_frame.vert[test_frame.prim[i].v[k]].sx <= 2560);
         }
     }
     CHECK_EQ(fx_overflow_count(), 0);
@@ -331,21 +328,17 @@ void test_render_painter_order(void)
     struct render_pass pass;
 
     setup_pass(&pass);
-    tri_mesh_init(&near_t);
-    tri_mesh_add(&near_t, v3(0, 0, 2), v3(0, 1, 2), v3(1, 0, 2), MAT_RED);
-    mesh_finish(&near_t.m);
-    tri_mesh_init(&far_t);
-    tri_mesh_add(&far_t, v3(0, 0, 4), v3(0, 1, 4), v3(1, 0, 4), MAT_BLUE);
-    mesh_finish(&far_t.m);
+    tri_mesh_unit(&near_t, 2, MAT_RED);
+    tri_mesh_unit(&far_t, 4, MAT_BLUE);
     begin();
     draw(&pass, &near_t.m, v3(0, 0, 0), 0);
     draw(&pass, &far_t.m, v3(0, 0, 0), 0);
     draw(&pass, &near_t.m, v3(0, 0, 0), MAT_YELLOW);  /* same depth as the first, later */
-    CHECK(render_depth_key(&frame, 1) > render_depth_key(&frame, 0));
-    render_sort(&frame);
-    CHECK_EQ(render_draw_index(&frame, 0), 1);  /* far first */
-    CHECK_EQ(render_draw_index(&frame, 1), 0);  /* then the two near ones, in emission order */
-    CHECK_EQ(render_draw_index(&frame, 2), 2);
+    CHECK(render_depth_key(&test_frame, 1) > render_depth_key(&test_frame, 0));
+    render_sort(&test_frame);
+    CHECK_EQ(render_draw_index(&test_frame, 0), 1);  /* far first */
+    CHECK_EQ(render_draw_index(&test_frame, 1), 0);  /* then the two near ones, in emission order */
+    CHECK_EQ(render_draw_index(&test_frame, 2), 2);
     /* Many primitives: the draw order is non-increasing in depth. */
     begin();
     for (int i = 0; i < 300; i++) {
@@ -356,12 +349,12 @@ void test_render_painter_order(void)
     {
         uint16_t keys[TEST_FRAME_PRIMS];
 
-        for (uint32_t i = 0; i < frame.prim_count; i++) {
-            keys[i] = render_depth_key(&frame, i);
+        for (uint32_t i = 0; i < test_frame.prim_count; i++) {
+            keys[i] = render_depth_key(&test_frame, i);
         }
-        render_sort(&frame);
-        for (uint32_t i = 1; i < frame.prim_count; i++) {
-            CHECK(keys[render_draw_index(&frame, i - 1u)] >= keys[render_draw_index(&frame, i)]);
+        render_sort(&test_frame);
+        for (uint32_t i = 1; i < test_frame.prim_count; i++) {
+            CHECK(keys[render_draw_index(&test_frame, i - 1u)] >= keys[render_draw_index(&test_frame, i)]);
         }
     }
 }
@@ -377,8 +370,8 @@ static uint32_t wire_lines(uint32_t lines[][2], uint32_t max)
     uint32_t n = 0;
 
     batch_begin(&cur);
-    while (!batch_done(&cur, &frame)) {
-        batch_fill(&cur, &frame, GPU_VTX_CAP, GPU_TRI_CAP, &w);
+    while (!batch_done(&cur, &test_frame)) {
+        batch_fill(&cur, &test_frame, GPU_VTX_CAP, GPU_TRI_CAP, &w);
         for (uint32_t i = 0; i < w.prim_count && n < max; i++) {
             const uint32_t *pw = &prim[i * GPU_PRIM_WORDS];
             const uint32_t slot[2] = {pw[0] & 0xFFFFu, pw[0] >> 16};
@@ -388,7 +381,7 @@ static uint32_t wire_lines(uint32_t lines[][2], uint32_t max)
             for (int k = 0; k < 2; k++) {
                 uint32_t v = 0;
 
-                while (v < frame.vert_count && frame.vert[v].sxy != vtx[slot[k] * GPU_VTX_WORDS]) {
+                while (v < test_frame.vert_count && test_frame.vert[v].sxy != vtx[slot[k] * GPU_VTX_WORDS]) {
                     v++;
                 }
                 lines[n][k] = v;
@@ -418,17 +411,16 @@ void test_render_wireframe(void)
     mesh_finish(&t.m);
     pass.wireframe = true;
     pass.gpu_lines = true;
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
-    CHECK_EQ(frame.prim_count, 1);
-    CHECK_EQ(frame.outline_count, 1);
-    CHECK_EQ(frame.prim[0].kind, RENDER_PRIM_OUTLINE | 0x07u);
-    CHECK_EQ(frame.stats.faces_back, 1);
-    render_sort(&frame);
+    draw_alone(&pass, &t.m);
+    CHECK_EQ(test_frame.prim_count, 1);
+    CHECK_EQ(test_frame.outline_count, 1);
+    CHECK_EQ(test_frame.prim[0].kind, RENDER_PRIM_OUTLINE | 0x07u);
+    CHECK_EQ(test_frame.stats.faces_back, 1);
+    render_sort(&test_frame);
     n = wire_lines(lines, 64);
     CHECK_EQ(n, 3);
     for (uint32_t i = 0; i < 3; i++) {
-        CHECK_EQ(lines[i][0], frame.prim[0].v[i]);
+        CHECK_EQ(lines[i][0], test_frame.prim[0].v[i]);
         CHECK_EQ(lines[i][1], lines[(i + 1u) % 3u][0]);  /* a closed outline */
     }
 
@@ -438,28 +430,27 @@ void test_render_wireframe(void)
     mesh_finish(&floor.m);
     begin();
     draw(&pass, &floor.m, v3(0, 0, 0), 0);
-    CHECK_EQ(frame.stats.faces_clipped, 1);
-    CHECK(frame.prim_count >= 2u);  /* a fan: the polygon has 4 or more vertices */
-    render_sort(&frame);
+    CHECK_EQ(test_frame.stats.faces_clipped, 1);
+    CHECK(test_frame.prim_count >= 2u);  /* a fan: the polygon has 4 or more vertices */
+    render_sort(&test_frame);
     n = wire_lines(lines, 64);
-    CHECK_EQ(n, frame.prim_count + 2u);  /* n - 2 triangles outline n edges */
+    CHECK_EQ(n, test_frame.prim_count + 2u);  /* n - 2 triangles outline n edges */
     for (uint32_t i = 0; i < n; i++) {
         CHECK_EQ(lines[i][1], lines[(i + 1u) % n][0]);  /* one closed loop, in order */
         CHECK(lines[i][0] != lines[i][1]);
     }
 
     pass.gpu_lines = false;
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
-    CHECK_EQ(frame.prim_count, 6);
-    CHECK_EQ(frame.vert_count, 6u + 12u);
-    CHECK_EQ(frame.outline_count, 0);
+    draw_alone(&pass, &t.m);
+    CHECK_EQ(test_frame.prim_count, 6);
+    CHECK_EQ(test_frame.vert_count, 6u + 12u);
+    CHECK_EQ(test_frame.outline_count, 0);
     for (uint32_t i = 0; i < 6; i++) {
-        const struct render_prim *p = &frame.prim[i];
+        const struct render_prim *p = &test_frame.prim[i];
 
         CHECK_EQ(p->kind, GPU_PRIM_KIND_TRI);
         /* one pixel wide: the quad's two long sides are 16 sixteenths apart */
-        CHECK(proj_signed_area(&frame.vert[p->v[0]], &frame.vert[p->v[1]], &frame.vert[p->v[2]]) != 0);
+        CHECK(proj_signed_area(&test_frame.vert[p->v[0]], &test_frame.vert[p->v[1]], &test_frame.vert[p->v[2]]) != 0);
     }
 }
 
@@ -471,17 +462,14 @@ void test_render_lighting_and_colour(void)
     struct render_pass pass;
 
     setup_pass(&pass);  /* light towards -z: straight at the faces that face the eye */
-    tri_mesh_init(&t);
-    tri_mesh_add(&t, v3(0, 0, 3), v3(0, 1, 3), v3(1, 0, 3), MAT_RED);
-    mesh_finish(&t.m);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
-    CHECK_EQ(frame.prim[0].color, PAL_INDEX(MAT_RED, 15u));
+    tri_mesh_unit(&t, 3, MAT_RED);
+    draw_alone(&pass, &t.m);
+    CHECK_EQ(test_frame.prim[0].color, PAL_INDEX(MAT_RED, 15u));
     draw(&pass, &t.m, v3(0, 0, 0), MAT_BLUE);
-    CHECK_EQ(frame.prim[1].color, PAL_INDEX(MAT_BLUE, 15u));
+    CHECK_EQ(test_frame.prim[1].color, PAL_INDEX(MAT_BLUE, 15u));
     pass.eye_material = MAT_ANAGLYPH_LEFT;
     draw(&pass, &t.m, v3(0, 0, 0), MAT_BLUE);
-    CHECK_EQ(frame.prim[2].color, PAL_INDEX(MAT_ANAGLYPH_LEFT, 15u));
+    CHECK_EQ(test_frame.prim[2].color, PAL_INDEX(MAT_ANAGLYPH_LEFT, 15u));
     /* Light from the side (towards +x), perpendicular to the face's normal: ambient only. */
     {
         struct cam_view view;
@@ -494,7 +482,7 @@ void test_render_lighting_and_colour(void)
         render_pass_init(&pass, &ps, &view, &id, v3(0, 0, 0), u3(1, 0, 0), 4);
         begin();
         draw(&pass, &t.m, v3(0, 0, 0), 0);
-        CHECK_EQ(frame.prim[0].color, PAL_INDEX(MAT_RED, 4u));
+        CHECK_EQ(test_frame.prim[0].color, PAL_INDEX(MAT_RED, 4u));
     }
 }
 
@@ -505,24 +493,21 @@ void test_render_overlay(void)
     struct render_pass pass;
 
     setup_pass(&pass);
-    tri_mesh_init(&t);
-    tri_mesh_add(&t, v3(0, 0, 3), v3(0, 1, 3), v3(1, 0, 3), MAT_RED);
-    mesh_finish(&t.m);
-    begin();
-    draw(&pass, &t.m, v3(0, 0, 0), 0);
+    tri_mesh_unit(&t, 3, MAT_RED);
+    draw_alone(&pass, &t.m);
     draw(&pass, &t.m, v3(0, 0, 1), 0);
-    render_sort(&frame);
-    render_overlay_crosshair(&frame, &pass, 5, PAL_WHITE);
-    CHECK_EQ(frame.sorted_count, 2);
-    CHECK_EQ(frame.prim_count, 4);
-    CHECK_EQ(render_draw_index(&frame, 2), 2);
-    CHECK_EQ(render_draw_index(&frame, 3), 3);
-    CHECK_EQ(frame.prim[3].kind, GPU_PRIM_KIND_LINE);
-    CHECK_EQ(frame.prim[3].color, PAL_WHITE);
+    render_sort(&test_frame);
+    render_overlay_crosshair(&test_frame, &pass, 5, PAL_WHITE);
+    CHECK_EQ(test_frame.sorted_count, 2);
+    CHECK_EQ(test_frame.prim_count, 4);
+    CHECK_EQ(render_draw_index(&test_frame, 2), 2);
+    CHECK_EQ(render_draw_index(&test_frame, 3), 3);
+    CHECK_EQ(test_frame.prim[3].kind, GPU_PRIM_KIND_LINE);
+    CHECK_EQ(test_frame.prim[3].color, PAL_WHITE);
     pass.gpu_lines = false;
-    render_overlay_crosshair(&frame, &pass, 5, PAL_WHITE);
-    CHECK_EQ(frame.prim_count, 8);
-    CHECK_EQ(frame.prim[7].kind, GPU_PRIM_KIND_TRI);
+    render_overlay_crosshair(&test_frame, &pass, 5, PAL_WHITE);
+    CHECK_EQ(test_frame.prim_count, 8);
+    CHECK_EQ(test_frame.prim[7].kind, GPU_PRIM_KIND_TRI);
 }
 
 /* More primitives than the frame holds: the excess is counted, nothing is written past the
@@ -550,11 +535,11 @@ void test_render_capacity(void)
     for (int k = 0; k < 6; k++) {
         draw(&pass, &m, v3(0, 0, 0), 0);
     }
-    CHECK_EQ(frame.prim_count, TEST_FRAME_PRIMS);
-    CHECK_EQ(frame.stats.dropped, 6u * 3000u - TEST_FRAME_PRIMS);
-    CHECK_EQ(frame.vert_count, 18);
-    render_sort(&frame);
-    CHECK_EQ(frame.sorted_count, TEST_FRAME_PRIMS);
+    CHECK_EQ(test_frame.prim_count, TEST_FRAME_PRIMS);
+    CHECK_EQ(test_frame.stats.dropped, 6u * 3000u - TEST_FRAME_PRIMS);
+    CHECK_EQ(test_frame.vert_count, 18);
+    render_sort(&test_frame);
+    CHECK_EQ(test_frame.sorted_count, TEST_FRAME_PRIMS);
 }
 
 /* Model coordinates beyond +-8192 would wrap in xf_apply's unchecked vertex loop: mesh_finish

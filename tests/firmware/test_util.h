@@ -14,20 +14,12 @@
 
 static inline double rd(real_t r)
 {
-#if REAL_IS_FIXED
-    return (double)r / 65536.0;
-#else
-    return (double)r;
-#endif
+    return real_as_double(r);
 }
 
 static inline double ud(unit_t u)
 {
-#if REAL_IS_FIXED
-    return (double)u / 1073741824.0;
-#else
-    return (double)u;
-#endif
+    return unit_as_double(u);
 }
 
 static inline real_t to_real(double d)

@@ -307,14 +307,7 @@ static void submit_frame(struct gpu_dev *dev)
                 words.vtx_count, words.prim_count, vcap, tcap);
         REQUIRE(words.prim_count > 0u || frame.prim_count == 0u, "no progress");
         REQUIRE(cur.next == next + words.prim_count, "cursor");
-        b.vtx_words = words.vtx;
-        b.vtx_base = 0;
-        b.vtx_count = words.vtx_count;
-        b.prim_words = words.prim;
-        b.tri_base = 0;
-        b.prim_count = words.prim_count;
-        b.ctrl = GPU_CTRL_CLEAR_MASK;
-        b.clear_color = 0;
+        b = batch_descriptor(&words, GPU_CTRL_CLEAR_MASK, 0);
         REQUIRE(submit(dev, &b, &tag) == GPU_OK, "a batch_fill batch was refused");
         REQUIRE(wait(dev, tag, 1u) == GPU_OK, "wait");
         REQUIRE(gpu_model_read(gpu, GPU_REG_ERRORS) == 0u, "the GPU flagged 0x%x",

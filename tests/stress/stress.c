@@ -104,15 +104,10 @@ static void gpu_frame(struct render_frame *f, struct frame_result *r)
         int rc;
 
         batch_fill(&cur, f, stress_dev.info.vtx_cap, stress_dev.info.tri_cap, &words);
-        b.vtx_words = words.vtx;
-        b.vtx_base = 0;
-        b.vtx_count = words.vtx_count;
-        b.prim_words = words.prim;
-        b.tri_base = 0;
-        b.prim_count = words.prim_count;
-        b.clear_color = PAL_SKY;
-        b.ctrl = (first ? GPU_CTRL_CLEAR_MASK : 0u) |
-                 (batch_done(&cur, f) ? GPU_CTRL_SWAP_MASK : 0u);
+        b = batch_descriptor(&words,
+                             (first ? GPU_CTRL_CLEAR_MASK : 0u) |
+                                 (batch_done(&cur, f) ? GPU_CTRL_SWAP_MASK : 0u),
+                             PAL_SKY);
         rc = gpu_submit_batch(&stress_dev, &b, &tag);
         if (rc == GPU_OK) {
             rc = gpu_wait(&stress_dev, tag, 1000u);

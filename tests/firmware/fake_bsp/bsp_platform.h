@@ -7,9 +7,10 @@
 #ifndef BSP_PLATFORM_H
 #define BSP_PLATFORM_H
 
+#include <stdint.h>
 #include <stdlib.h>
 
-#include <stdint.h>
+#include "bsp_idle.h"
 
 #define BSP_NAME "host-test"
 #define BSP_EXIT_TRAP 126
@@ -56,35 +57,10 @@ static inline uint32_t *bsp_gpu_buffer(uint32_t offset)
     return &fake_gpu_mem[offset / 4u];
 }
 
-static inline void bsp_init(void)
-{
-}
-
 static inline void bsp_exit(int code) __attribute__((noreturn));
 static inline void bsp_exit(int code)
 {
     exit(code);
-}
-
-static inline int bsp_uart_getc_nonblock(void)
-{
-    return -1;
-}
-
-static inline void bsp_uart_putc(char c)
-{
-    (void)c;
-}
-
-static inline uint64_t bsp_instret(void)
-{
-    return 0u;
-}
-
-/* No cycles either: 0. */
-static inline uint64_t bsp_cycles(void)
-{
-    return 0u;
 }
 
 #endif /* BSP_PLATFORM_H */

@@ -10,6 +10,8 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "../../firmware/fake_bsp/bsp_idle.h"  /* init, console, counters: idle */
+
 #define BSP_NAME "fuzz"
 #define BSP_GPU_BASE 0u
 #define BSP_EXIT_TRAP 126
@@ -48,36 +50,11 @@ static inline uint32_t *bsp_gpu_buffer(uint32_t offset)
     return 0;
 }
 
-static inline void bsp_init(void)
-{
-}
-
 static inline void bsp_exit(int code) __attribute__((noreturn));
 static inline void bsp_exit(int code)
 {
     (void)code;
     abort();
-}
-
-static inline int bsp_uart_getc_nonblock(void)
-{
-    return -1;
-}
-
-static inline void bsp_uart_putc(char c)
-{
-    (void)c;
-}
-
-static inline uint64_t bsp_instret(void)
-{
-    return 0u;
-}
-
-/* No cycles either: 0. */
-static inline uint64_t bsp_cycles(void)
-{
-    return 0u;
 }
 
 #endif /* BSP_PLATFORM_H */

@@ -1,0 +1,58 @@
+/*
+ * build_options.h — the firmware's build options that leave code out or size storage: the
+ * features a scene may not need (FW_WITH_*) and the projection's sub-pixel precision. Override
+ * them with -D on the compiler command line (firmware/firmware.mk does: FW_DEFS, FW_SUBPIXEL_BITS,
+ * FW_LINE_EMULATION).
+ *
+ * Why a folder of its own, at the bottom: every layer reads these switches (render/ leaves the
+ * wireframe and Gouraud code out, scenes/ size their frames by them, gpu/ packs the vertex words
+ * by them, app/ refuses the keys of what is not built in), so they belong to none of those layers;
+ * a header that includes nothing can be included from anywhere without an upward edge. What the
+ * frame loop chooses while running (depth test on or off, wireframe, Gouraud or flat, the GPU's
+ * capabilities) is not here: it reaches the render stages as data, struct render_pass
+ * (render/render.h). The loop's own settings (scene, frames, watchdog, exit statuses, the
+ * start-up state of its toggles) stay in app/fw_config.h.
+ */
+#ifndef CONFIG_BUILD_OPTIONS_H
+#define CONFIG_BUILD_OPTIONS_H
+
+/* Fraction bits kept in projected screen coordinates, 0..4 (the contract's Q12.4 carries 4):
+ * fewer bits round every vertex to a coarser grid (0: whole pixels). An accuracy knob for
+ * `make bench-error`; 4, the default, builds exactly the full-precision code. make FW_SUBPIXEL_BITS=... */
+#ifndef FW_SUBPIXEL_BITS
+#define FW_SUBPIXEL_BITS 4
+#endif
+
+/* Features a scene may not need: 1 builds them in (the default), 0 leaves their code out, and
+ * their key then says so. make FW_DEFS="-DFW_WITH_LIGHTING=0 ..." (firmware/README.md):
+ *   FW_WITH_WIREFRAME  the F key's outline mode (the crosshair's lines stay)
+ *   FW_WITH_LINE_EMULATION  the wireframe on a GPU without line primitives (CAPS_LINES = 0): each
+ *                      edge as two triangles on four new vertices, so the wireframe columns of
+ *                      scenes/scene_list.h (wverts, wprims) are reserved; 0 (a platform whose GPU
+ *                      draws lines: bsp/<platform>/bsp.mk) reserves only the filled columns, and
+ *                      the F key on a GPU without lines then says so and stays off
+ *   FW_WITH_ANAGLYPH   the G key's red/cyan stereo (a second pass per frame)
+ *   FW_WITH_DEPTH      the GPU's depth test: VTX_Z per vertex and the Z key
+ *   FW_WITH_LIGHTING   flat light per face; without, every face shows its material at full level
+ *   FW_WITH_GOURAUD    per-vertex light and Gouraud triangles for meshes with vertex normals;
+ *                      without, every face is flat (and the scenes keep no vertex normals) */
+#ifndef FW_WITH_WIREFRAME
+#define FW_WITH_WIREFRAME 1
+#endif
+#ifndef FW_WITH_LINE_EMULATION
+#define FW_WITH_LINE_EMULATION 1
+#endif
+#ifndef FW_WITH_ANAGLYPH
+#define FW_WITH_ANAGLYPH 1
+#endif
+#ifndef FW_WITH_DEPTH
+#define FW_WITH_DEPTH 1
+#endif
+#ifndef FW_WITH_LIGHTING
+#define FW_WITH_LIGHTING 1
+#endif
+#ifndef FW_WITH_GOURAUD
+#define FW_WITH_GOURAUD 1
+#endif
+
+#endif /* CONFIG_BUILD_OPTIONS_H */
