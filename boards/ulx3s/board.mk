@@ -5,8 +5,8 @@
 #       the firmware of SCENE (FRAMES 0: until Q) as the RAM's initial contents, then
 #       synth/ecp5_bitstream.py: yosys synth_ecp5, nextpnr-ecp5 --85k CABGA381 speed 6 (every clock
 #       constrained through the PLL; fails when one misses), ecppack -> $(ULX3S_BIT)
-#       BITSTREAM_STOP=elaborate: stop once yosys has read and elaborated the design with its
-#       parameters and RAM image (seconds; the tests' check of the bitstream's inputs)
+#       BITSTREAM_STOP=inputs: the firmware, then the flow's inputs checked (sources, constraints,
+#       tools, the RAM image against RAM_BYTES) and no synthesis: the tests' form
 #   synth-board BOARD=ulx3s   the same, synthesis only: resources and the 45F/85F fit
 #   board-fit [PNR=1]         tools/board_fit.py: that table for the default build, the depth-buffer
 #                             build and every scene's lean build (RAM sized to the scene); PNR=1 adds
@@ -66,7 +66,7 @@ bitstream synth-board ulx3s-dir flash load: board-fw
 else
 bitstream: board-fw
 	@bash tools/setup.sh
-	$(ULX3S_FLOW) $(if $(filter elaborate,$(BITSTREAM_STOP)),--elaborate-only)
+	$(ULX3S_FLOW) $(if $(filter inputs,$(BITSTREAM_STOP)),--inputs-only)
 
 synth-board: board-fw
 	@bash tools/setup.sh

@@ -16,8 +16,8 @@ The ways (tests/docs/readme_commands.sh runs the "run" ones):
   run    the command itself, with settings that keep it short and in the test's own folders:
          `make run …` with HEADLESS=1 FRAMES=2 (frames from the pins, two of them) and OUT in the
          test's folder; `make lean-report …` with LEAN_SYNTH=0 (the table without the ECP5
-         synthesis); `make bitstream …` with BITSTREAM_STOP=elaborate (the firmware and yosys'
-         elaboration of the board's design with its RAM image: everything before synthesis).
+         synthesis); `make bitstream …` with BITSTREAM_STOP=inputs (the firmware, its RAM sized,
+         and every input of the flow checked: everything before synthesis).
   same   once shortened, the same as an earlier "run" (named): run once.
   suite  another suite's command line in tests/run_all.sh is this command (checked there).
   none   commands no test can run here, each with its reason (make test itself; a board on USB;
@@ -45,7 +45,7 @@ NOT_RUN = {
 SHORT = {
     "run": ["HEADLESS=1", "FRAMES=2"],
     "lean-report": ["LEAN_SYNTH=0", "LEAN_FRAMES=2"],
-    "bitstream": ["BITSTREAM_STOP=elaborate"],
+    "bitstream": ["BITSTREAM_STOP=inputs"],
 }
 PLACEHOLDER = re.compile(r"[<>\[\]…]|\.\.\.")
 

@@ -47,7 +47,8 @@ $(FUZZ_DIR)/fuzz_gpu_model: tests/fuzz/fuzz_gpu_model.c tests/fuzz/fuzz_common.h
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -Igpu_model -Icontract $(filter %.c %.o,$^) -o $@
 
 $(FUZZ_DIR)/fuzz_gpu_driver: tests/fuzz/fuzz_gpu_driver.c tests/fuzz/fuzz_common.h firmware/gpu/gpu.c firmware/gpu/batch.c \
-                             $(FUZZ_DIR)/gpu_model.o tests/fuzz/driver_bsp/bsp_platform.h $(FUZZ_FW_HDRS) \
+                             $(FUZZ_DIR)/gpu_model.o tests/fuzz/driver_bsp/bsp_platform.h tests/firmware/fake_bsp/bsp_idle.h \
+                             $(FUZZ_FW_HDRS) \
                              $(GPU_MODEL_HDR)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -Itests/fuzz/driver_bsp -Ibsp -Igpu_model -Icontract \

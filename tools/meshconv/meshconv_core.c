@@ -43,7 +43,7 @@ const char *meshconv_material_name(uint8_t material)
 uint8_t meshconv_nearest_material(float r, float g, float b)
 {
     /* The firmware's own palette, so that a colour lands where the screen shows it: the full-light
-     * entry of each material, RGB444 with R in bits 11:8 (gpu.h's GPU_RGB444). */
+     * entry of each material, RGB444 with R in bits 11:8 (render/palette.h's PAL_RGB444). */
     static uint16_t pal[PAL_ENTRIES];
     static bool built;
     const double want[3] = {(double)r * 15.0, (double)g * 15.0, (double)b * 15.0};
