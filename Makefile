@@ -1,6 +1,12 @@
 # Top-level build. `make run` and `make test` install what is missing first (tools/setup.sh).
 # Every other target is listed in README.md and the pages of docs/.
 
+# Quiet builds, as Kbuild's: one short line a step (`CC firmware/render/clip.c`, `VERILATE sim-w8`),
+# the full commands with V=1. A recipe line starts with $(Q)$(call say,STEP,WHAT).
+V           ?= 0
+Q           := $(if $(filter 1,$(V)),,@)
+say          = $(if $(filter 1,$(V)),,printf '  %-8s %s\n' '$(1)' '$(2)';)
+
 BUILD       ?= build
 OUT         ?= out
 FRAMES      ?= 24
@@ -97,11 +103,11 @@ run-built: run-soc
 else ifneq ($(WINDOW),)
 run-built: $(FW_ELF) $(GPUSIM_FAST)
 	@mkdir -p $(OUT)
-	$(GPUSIM_FAST) cosim --fw $(FW_ELF) --window --uart-log $(OUT)/uart.log $(if $(UART_PTY),--uart-pty $(UART_PTY))
+	$(Q)$(call say,RUN,gpusim cosim $(FW_ELF))$(GPUSIM_FAST) cosim --fw $(FW_ELF) --window --uart-log $(OUT)/uart.log $(if $(UART_PTY),--uart-pty $(UART_PTY))
 else
 run-built: $(FW_ELF) $(GPUSIM)
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
-	$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log \
+	$(Q)$(call say,RUN,gpusim cosim $(FW_ELF))$(GPUSIM) cosim --fw $(FW_ELF) --frames $(OUT)/frames --uart-log $(OUT)/uart.log \
 	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
 endif
 
@@ -129,33 +135,33 @@ test-list:
 
 # ---- the contract: regenerate, or check that the generated files are current ----
 contract:
-	$(PYTHON) contract/gen_contract.py
+	$(Q)$(call say,GEN,contract)$(PYTHON) contract/gen_contract.py
 
 check-contract:
-	$(PYTHON) contract/gen_contract.py --check
+	$(Q)$(call say,CHECK,contract)$(PYTHON) contract/gen_contract.py --check
 
 # files.f is the one list, so a source left out of it would be neither linted nor built: refused.
 RTL_BUS_SLAVES := gpu_wb_slave gpu_axil_slave
 RTL_UNLISTED = $(filter-out $(RTL_V),$(wildcard gpu_rtl/*.v gpu_rtl/*.sv))
 lint:
 	@test -z "$(RTL_UNLISTED)" || { echo "lint: not in $(RTL_FILES): $(RTL_UNLISTED)"; exit 1; }
-	$(VERILATOR) --lint-only -Wall --top-module gpu_top $(RTL_LINT) -f $(RTL_FILES)
+	$(Q)$(call say,LINT,gpu_top)$(VERILATOR) --lint-only -Wall --top-module gpu_top $(RTL_LINT) -f $(RTL_FILES)
 	@# The bus slaves are not under gpu_top (a SoC puts one in front of it): each is its own top.
-	$(foreach m,$(RTL_BUS_SLAVES),$(VERILATOR) --lint-only -Wall --top-module $(m) $(RTL_LINT) gpu_rtl/$(m).v &&) true
+	$(Q)$(call say,LINT,$(RTL_BUS_SLAVES))$(foreach m,$(RTL_BUS_SLAVES),$(VERILATOR) --lint-only -Wall --top-module $(m) $(RTL_LINT) gpu_rtl/$(m).v &&) true
 	@echo "lint: $(words $(RTL_V)) files of $(RTL_FILES) clean under -Wall"
 
 # ---- longer randomized RTL-vs-model run ----
 random-long: $(GPUSIM) $(GOURAUD_SIM_FAST)
-	for seed in 101 102 103 104 105 106 107 108 109 110; do \
+	$(Q)$(call say,RUN,gpusim random: seeds 101-110)for seed in 101 102 103 104 105 106 107 108 109 110; do \
 	  $(GPUSIM) random --seed $$seed --batches 500 --tris 500 --swap-percent 10 --min-prims 100000 || exit 1; done
 	@# Gouraud triangles (40 % of the primitives there, random intensities, extremes, slow gradients).
-	for seed in 111 112 113; do \
+	$(Q)$(call say,RUN,gpusim random: Gouraud seeds 111-113)for seed in 111 112 113; do \
 	  $(GOURAUD_SIM_FAST) random --seed $$seed --batches 500 --tris 500 --swap-percent 10 --min-prims 100000 || exit 1; done
 
 # ---- the GPU without firmware: a primitive list through RTL and model ----
 raster: $(GPUSIM)
 	@test -n "$(IN)" -a -n "$(OUT)" || { echo "usage: make raster IN=<list> OUT=<dir>"; exit 2; }
-	$(GPUSIM) raster --in $(IN) --out $(OUT)
+	$(Q)$(call say,RUN,gpusim raster $(IN))$(GPUSIM) raster --in $(IN) --out $(OUT)
 
 # ---- GPU performance, counted in simulated cycles, for each span width ----
 bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM) $(FW_ELF)
@@ -235,12 +241,12 @@ bench-error-shading-run: $(FW_SHADING_HOSTS) $(FW_SHADING_ELFS) $(GOURAUD_SIM) $
 # written anew: tools/exact_ref/exact_ref.c), and its self-test on known polygons.
 $(EXACT_REF): tools/exact_ref/exact_ref.c cosim/png_write.c cosim/png_write.h
 	@mkdir -p $(dir $@)
-	$(HOST_CC) $(HOST_CFLAGS) -Icosim $$(pkg-config --cflags libpng) tools/exact_ref/exact_ref.c \
+	$(Q)$(call say,LD,$@)$(HOST_CC) $(HOST_CFLAGS) -Icosim $$(pkg-config --cflags libpng) tools/exact_ref/exact_ref.c \
 	  cosim/png_write.c -o $@ $$(pkg-config --libs libpng) -lm
 
 $(PNG_DIFF): tools/png_diff.c
 	@mkdir -p $(dir $@)
-	$(HOST_CC) $(HOST_CFLAGS) $$(pkg-config --cflags libpng) $< -o $@ $$(pkg-config --libs libpng)
+	$(Q)$(call say,LD,$@)$(HOST_CC) $(HOST_CFLAGS) $$(pkg-config --cflags libpng) $< -o $@ $$(pkg-config --libs libpng)
 
 # ---- synthesis: yosys for 7-series (resource counts) and iCE40 place-and-route (fmax) ----
 synth:
@@ -252,11 +258,11 @@ HOST_OBJ := $(patsubst %.c,$(BUILD)/host/%.o,$(COSIM_C_SRC))
 
 $(BUILD)/host/%.o: %.c
 	@mkdir -p $(dir $@)
-	$(HOST_CC) $(HOST_CFLAGS) -MMD -MP $(HOST_INC) $$(pkg-config --cflags libpng) -c $< -o $@
+	$(Q)$(call say,CC,$<)$(HOST_CC) $(HOST_CFLAGS) -MMD -MP $(HOST_INC) $$(pkg-config --cflags libpng) -c $< -o $@
 
 $(COSIM_C_LIB): $(HOST_OBJ)
 	@rm -f $@
-	ar rcs $@ $^
+	$(Q)$(call say,AR,$@)ar rcs $@ $^
 
 # SIM_CXX compiles the simulators' C++: clang's code of the Verilated model runs about 9 % faster
 # than GCC 12's (rtl-vs-model-seed1: 10.0 s of CPU against 10.9 s), for the same build time.
@@ -273,11 +279,11 @@ COSIM_CXX_LIB  := $(BUILD)/host/libcosim_sim.a
 
 $(BUILD)/host/%.o: %.cpp
 	@mkdir -p $(dir $@)
-	$(SIM_CXX) $(COSIM_CXXFLAGS) -MMD -MP $(HOST_INC) $$(pkg-config --cflags sdl2) -c $< -o $@
+	$(Q)$(call say,CXX,$<)$(SIM_CXX) $(COSIM_CXXFLAGS) -MMD -MP $(HOST_INC) $$(pkg-config --cflags sdl2) -c $< -o $@
 
 $(COSIM_CXX_LIB): $(COSIM_CXX_OBJ)
 	@rm -f $@
-	ar rcs $@ $^
+	$(Q)$(call say,AR,$@)ar rcs $@ $^
 
 # One simulator per configuration: $(BUILD)/sim-w<SPAN_W>/gpusim, sim-z-w<SPAN_W> with the depth
 # buffer built in, and sim-fast-w<SPAN_W> on the fast display path (gpu_core with the harness as its
@@ -290,7 +296,7 @@ VERILATOR_JOBS ?= 2
 define verilate
 	@mkdir -p $(dir $(1))
 	@rm -f $(1)
-	$(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) --assert -O3 --x-assign fast --x-initial fast \
+	$(Q)$(call say,VERILATE,$(patsubst $(BUILD)/%/,%,$(dir $(1))))$(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) --assert -O3 --x-assign fast --x-initial fast \
 	  --top-module $(or $(3),gpu_top) $(2) -f $(RTL_FILES) $(abspath $(COSIM_CPP_SIM)) \
 	  -CFLAGS "-O2 -std=c++17 $(call gpu_build_defs,$(2)) $(4) $(addprefix -I$(CURDIR)/,$(patsubst -I%,%,$(HOST_INC)))" \
 	  -LDFLAGS "$(abspath $(COSIM_CXX_LIB) $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng sdl2)" \
@@ -329,6 +335,6 @@ $(BUILD)/sim-fast-cfg-%/gpusim: $(SIM_DEPS)
 include cosim/waves.mk
 
 clean:
-	rm -rf $(BUILD) $(OUT)
+	$(Q)$(call say,CLEAN,$(BUILD) $(OUT))rm -rf $(BUILD) $(OUT)
 
 -include $(HOST_OBJ:.o=.d) $(COSIM_CXX_OBJ:.o=.d)

@@ -67,7 +67,7 @@ waves:
 waves-gpu: $(if $(FAST),$(GPUSIM_FAST_TRACE),$(GPUSIM_TRACE)) $(WAVES_FW_ELF)
 	$(WAVES_RUN)
 	$(if $(FAST),@sed $(WAVES_FAST_SED) cosim/waves/gpu.gtkw >$(WAVES_GTKW))
-	$(if $(FAST),$(GPUSIM_FAST_TRACE),$(GPUSIM_TRACE)) cosim --fw $(WAVES_FW_ELF) --frames $(WAVES_DIR)/$(WAVES_NAME)-frames \
+	$(Q)$(call say,TRACE,$(WAVES_FST))$(if $(FAST),$(GPUSIM_FAST_TRACE),$(GPUSIM_TRACE)) cosim --fw $(WAVES_FW_ELF) --frames $(WAVES_DIR)/$(WAVES_NAME)-frames \
 	  --uart-log $(WAVES_DIR)/$(WAVES_NAME)-uart.log --trace $(WAVES_FST) --trace-frame $(FRAME)
 	$(WAVES_DONE)
 
@@ -76,6 +76,6 @@ socsim-trace: $(SOCSIM_TRACE)
 waves-soc: $(SOCSIM_TRACE)
 	+@$(SOC_FW_MAKE) SCENE=$(SCENE) FRAME=$(FRAME) FW_BACKEND=$(FW_BACKEND) $(WAVES_SOC_FW_ELF)
 	$(WAVES_RUN)
-	$(SOCSIM_TRACE) --fw $(WAVES_SOC_FW_ELF) --frames $(WAVES_DIR)/$(WAVES_NAME)-frames \
+	$(Q)$(call say,TRACE,$(WAVES_FST))$(SOCSIM_TRACE) --fw $(WAVES_SOC_FW_ELF) --frames $(WAVES_DIR)/$(WAVES_NAME)-frames \
 	  --uart-log $(WAVES_DIR)/$(WAVES_NAME)-uart.log --trace $(WAVES_FST) --trace-frame $(FRAME)
 	$(WAVES_DONE)

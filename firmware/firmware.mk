@@ -174,7 +174,7 @@ FW_MODEL_HOST_OBJ  := $(BUILD)/fw-host/model-blob/$(FW_MODEL_TAG).o
 # A .gmsh MODEL is taken as it is once the validator accepts it at this capacity.
 $(FW_MODEL_GMSH): $(MODEL) $(MESHCONV)
 	@mkdir -p $(@D)
-	$(if $(filter .gmsh,$(suffix $(MODEL))),\
+	$(Q)$(call say,MESHCONV,$(MODEL))$(if $(filter .gmsh,$(suffix $(MODEL))),\
 	  $(MESHCONV) --check $(MODEL) --max-verts $(FW_MODEL_MAX_VERTS) --max-faces $(FW_MODEL_MAX_FACES) && cp $(MODEL) $@,\
 	  $(MESHCONV) $(MODEL) $@ --max-verts $(FW_MODEL_MAX_VERTS) --max-faces $(FW_MODEL_MAX_FACES))
 
@@ -185,11 +185,11 @@ $(BUILD)/model/$(FW_MODEL_TAG).S: $(FW_MODEL_GMSH)
 
 $(FW_MODEL_OBJ): $(BUILD)/model/$(FW_MODEL_TAG).S
 	@mkdir -p $(@D)
-	$(FW_CC) $(FW_ARCH_FLAGS) -c $< -o $@
+	$(Q)$(call say,CC,$<)$(FW_CC) $(FW_ARCH_FLAGS) -c $< -o $@
 
 $(FW_MODEL_HOST_OBJ): $(BUILD)/model/$(FW_MODEL_TAG).S
 	@mkdir -p $(@D)
-	$(HOST_CC) -c $< -o $@
+	$(Q)$(call say,CC,$<)$(HOST_CC) -c $< -o $@
 
 # The built-in model's object where scene set $(1) with boot scene $(2) has the model scene;
 # $(3) = the object of the platform (FW_MODEL_OBJ or FW_MODEL_HOST_OBJ).
@@ -281,14 +281,14 @@ $$(FW_OBJ_DIR_$(1))/cflags.txt: fw-force
 
 $$(FW_OBJ_DIR_$(1))/%.o: %.c $$(FW_OBJ_DIR_$(1))/cflags.txt
 	@mkdir -p $$(@D)
-	$$(FW_CC) $$(FW_CFLAGS_$(1)) -MMD -MP -c $$< -o $$@
+	$$(Q)$$(call say,CC,$$<)$$(FW_CC) $$(FW_CFLAGS_$(1)) -MMD -MP -c $$< -o $$@
 
 $$(HOST_OBJ_DIR_$(1))/cflags.txt: fw-force
 	$$(call fw_flags_file,$$@,$$(HOST_CC) $$(FW_HOST_CFLAGS_$(1)))
 
 $$(HOST_OBJ_DIR_$(1))/%.o: %.c $$(HOST_OBJ_DIR_$(1))/cflags.txt
 	@mkdir -p $$(@D)
-	$$(HOST_CC) $$(FW_HOST_CFLAGS_$(1)) $$(if $$(filter %/frame_out_png.o,$$@),$$(FW_HOST_PNG_OBJ_CFLAGS)) \
+	$$(Q)$$(call say,CC,$$<)$$(HOST_CC) $$(FW_HOST_CFLAGS_$(1)) $$(if $$(filter %/frame_out_png.o,$$@),$$(FW_HOST_PNG_OBJ_CFLAGS)) \
 	  -MMD -MP -c $$< -o $$@
 
 FW_DEP_FILES += $$(FW_OBJS_$(1):.o=.d) $$(FW_HOST_OBJS_$(1):.o=.d)
@@ -306,7 +306,7 @@ fw_set_objs   = $(patsubst %.c,$(3)/%.o,$(foreach s,$(call fw_set_scenes,$(1),$(
 # $(6) = further -D settings of app.c (may be empty), $(7) = scene set (default FW_SCENE_SET)
 define FW_ELF_RULES
 $(1:.elf=)/app.o: $(FW_APP_SRC) $(1:.elf=)/cflags.txt
-	$$(FW_CC) $$(FW_CFLAGS_$(3)) -DFW_SCENE='"$(2)"' -DFW_FRAMES=$(4) \
+	$$(Q)$$(call say,CC,$$<)$$(FW_CC) $$(FW_CFLAGS_$(3)) -DFW_SCENE='"$(2)"' -DFW_FRAMES=$(4) \
 	  $(if $(5),-DFW_GPU_MAX_POLLS=$(5)) $(if $(FW_PROFILE),-DFW_PROFILE=$(FW_PROFILE)) $(6) \
 	  $(call fw_set_defs,$(or $(7),$(FW_SCENE_SET)),$(2)) \
 	  $(if $(call fw_model_obj,$(or $(7),$(FW_SCENE_SET)),$(2),1),-DFW_MODEL_SCENE_BUILT=1) \
@@ -318,11 +318,11 @@ $(1:.elf=)/cflags.txt: fw-force
 
 $(1): $$(FW_CORE_OBJS_$(3)) $(call fw_set_objs,$(or $(7),$(FW_SCENE_SET)),$(2),$$(FW_OBJ_DIR_$(3))) \
       $(call fw_model_obj,$(or $(7),$(FW_SCENE_SET)),$(2),$(FW_MODEL_OBJ)) $(1:.elf=)/app.o $(FW_LDSCRIPT)
-	$$(FW_CC) $$(FW_LDFLAGS_BASE) -Wl,-Map=$(1:.elf=.map) -o $$@ $$(FW_CORE_OBJS_$(3)) \
+	$$(Q)$$(call say,LD,$$@)$$(FW_CC) $$(FW_LDFLAGS_BASE) -Wl,-Map=$(1:.elf=.map) -o $$@ $$(FW_CORE_OBJS_$(3)) \
 	  $(call fw_set_objs,$(or $(7),$(FW_SCENE_SET)),$(2),$$(FW_OBJ_DIR_$(3))) \
 	  $(call fw_model_obj,$(or $(7),$(FW_SCENE_SET)),$(2),$(FW_MODEL_OBJ)) $(1:.elf=)/app.o -lm
-	$$(FW_OBJDUMP) -d -S $$@ > $(1:.elf=.lst)
-	$(if $(FW_POSTLINK),$(FW_POSTLINK) $$@)
+	$$(Q)$$(call say,OBJDUMP,$$@)$$(FW_OBJDUMP) -d -S $$@ > $(1:.elf=.lst)
+	$(if $(FW_POSTLINK),$$(Q)$$(call say,POSTLINK,$$@)$(FW_POSTLINK) $$@)
 
 FW_DEP_FILES += $(1:.elf=)/app.d
 endef
@@ -332,7 +332,7 @@ endef
 define FW_HOST_RULES
 $(1).obj/app.o: $(FW_APP_SRC) $(1).obj/cflags.txt
 	@mkdir -p $$(@D)
-	$$(HOST_CC) $$(FW_HOST_CFLAGS_$(3)) -DFW_SCENE='"$(2)"' -DFW_FRAMES=$(4) $(5) \
+	$$(Q)$$(call say,CC,$$<)$$(HOST_CC) $$(FW_HOST_CFLAGS_$(3)) -DFW_SCENE='"$(2)"' -DFW_FRAMES=$(4) $(5) \
 	  $(call fw_set_defs,$(FW_SCENE_SET),$(2)) \
 	  $(if $(call fw_model_obj,$(FW_SCENE_SET),$(2),1),-DFW_MODEL_SCENE_BUILT=1) -MMD -MP -c $$< -o $$@
 
@@ -341,7 +341,7 @@ $(1).obj/cflags.txt: fw-force
 
 $(1): $$(FW_HOST_CORE_OBJS_$(3)) $(call fw_set_objs,$(FW_SCENE_SET),$(2),$$(HOST_OBJ_DIR_$(3))) \
       $(call fw_model_obj,$(FW_SCENE_SET),$(2),$(FW_MODEL_HOST_OBJ)) $(1).obj/app.o $(FW_HOST_LIBS)
-	$$(HOST_CC) -o $$@ $$(FW_HOST_CORE_OBJS_$(3)) \
+	$$(Q)$$(call say,LD,$$@)$$(HOST_CC) -o $$@ $$(FW_HOST_CORE_OBJS_$(3)) \
 	  $(call fw_set_objs,$(FW_SCENE_SET),$(2),$$(HOST_OBJ_DIR_$(3))) \
 	  $(call fw_model_obj,$(FW_SCENE_SET),$(2),$(FW_MODEL_HOST_OBJ)) $(1).obj/app.o \
 	  $(FW_HOST_LIBS) $(FW_PNG_LIBS) -lm
@@ -510,10 +510,10 @@ $$($(1)_OBJ)/cflags.txt: fw-force
 
 $$($(1)_OBJ)/%.o: %.c $$($(1)_OBJ)/cflags.txt
 	@mkdir -p $$(@D)
-	$$(HOST_CC) $$(FW_UNIT_CFLAGS) $$(FW_BACKEND_DEFS_$(2)) -MMD -MP -c $$< -o $$@
+	$$(Q)$$(call say,CC,$$<)$$(HOST_CC) $$(FW_UNIT_CFLAGS) $$(FW_BACKEND_DEFS_$(2)) -MMD -MP -c $$< -o $$@
 
 $(1): $$($(1)_OBJS) $(FW_MODEL_HOST_OBJ)
-	$$(HOST_CC) -o $$@ $$($(1)_OBJS) $(FW_MODEL_HOST_OBJ) -lm
+	$$(Q)$$(call say,LD,$$@)$$(HOST_CC) -o $$@ $$($(1)_OBJS) $(FW_MODEL_HOST_OBJ) -lm
 
 FW_DEP_FILES += $$($(1)_OBJS:.o=.d)
 endef
@@ -543,8 +543,8 @@ fw-all: $(FW_ALL_ELFS) $(FW_ALL_HOSTS)
 fw-host: $(FW_HOST)
 
 fw-unit: $(FW_UNIT) $(FW_UNIT_FLOAT)
-	$(FW_UNIT)
-	$(FW_UNIT_FLOAT)
+	$(Q)$(call say,RUN,$(FW_UNIT))$(FW_UNIT)
+	$(Q)$(call say,RUN,$(FW_UNIT_FLOAT))$(FW_UNIT_FLOAT)
 
 fw-test-deps: $(FW_TEST_DEPS)
 
@@ -587,13 +587,13 @@ UPLOAD_PEER_SRCS := tests/upload/upload_peer.c $(addprefix firmware/model/,crc32
                     firmware/render/mesh.c firmware/math/vec.c firmware/math/fixed.c
 $(UPLOAD_PEER): $(UPLOAD_PEER_SRCS) $(wildcard firmware/model/*.h)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(HOST_CFLAGS) -Ifirmware -Icontract $(FW_MODEL_DEFS) $(filter %.c,$^) -o $@ -lm
+	$(Q)$(call say,LD,$@)$(HOST_CC) $(HOST_CFLAGS) -Ifirmware -Icontract $(FW_MODEL_DEFS) $(filter %.c,$^) -o $@ -lm
 
 # The same at a 2,048-face capacity, for `make bench-upload`'s larger model.
 UPLOAD_PEER_2048 := $(BUILD)/tests/upload_peer-2048
 $(UPLOAD_PEER_2048): $(filter-out %.h,$(UPLOAD_PEER_SRCS)) $(wildcard firmware/model/*.h)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(HOST_CFLAGS) -Ifirmware -Icontract -DFW_MODEL_MAX_VERTS=2048u -DFW_MODEL_MAX_FACES=2048u \
+	$(Q)$(call say,LD,$@)$(HOST_CC) $(HOST_CFLAGS) -Ifirmware -Icontract -DFW_MODEL_MAX_VERTS=2048u -DFW_MODEL_MAX_FACES=2048u \
 	  $(filter %.c,$^) -o $@ -lm
 
 .PHONY: bench-upload

@@ -19,14 +19,14 @@ GPU_MODEL_UNIT     := $(BUILD)/tests/model_unit
 
 $(BUILD)/gpu_model/gpu_model.o: $(GPU_MODEL_SRC) $(GPU_MODEL_HDR)
 	@mkdir -p $(dir $@)
-	$(HOST_CC) $(HOST_CFLAGS) $(GPU_MODEL_INC) -c $< -o $@
+	$(Q)$(call say,CC,$<)$(HOST_CC) $(HOST_CFLAGS) $(GPU_MODEL_INC) -c $< -o $@
 
 $(GPU_MODEL_LIB): $(BUILD)/gpu_model/gpu_model.o
 	@rm -f $@
-	ar rcs $@ $^
+	$(Q)$(call say,AR,$@)ar rcs $@ $^
 
 # The unit-test runner: prints one line per failed check, then
 # "N passed, N failed"; exits non-zero on any failure. Needs only the model's library.
 $(GPU_MODEL_UNIT): $(GPU_MODEL_TEST_SRC) $(GPU_MODEL_TEST_HDR) $(GPU_MODEL_LIB)
 	@mkdir -p $(dir $@)
-	$(HOST_CC) $(HOST_CFLAGS) $(GPU_MODEL_INC) $(GPU_MODEL_TEST_SRC) $(GPU_MODEL_LIB) -o $@
+	$(Q)$(call say,LD,$@)$(HOST_CC) $(HOST_CFLAGS) $(GPU_MODEL_INC) $(GPU_MODEL_TEST_SRC) $(GPU_MODEL_LIB) -o $@

@@ -27,7 +27,7 @@ $(SOC_VENV): tools/requirements.txt
 SOC_UNLISTED = $(filter-out $(SOC_RTL_V),$(wildcard soc_rtl/*.v soc_rtl/*.sv))
 lint-soc: $(SOC_VENV)
 	@test -z "$(SOC_UNLISTED)" || { echo "lint-soc: not in $(SOC_FILES): $(SOC_UNLISTED)"; exit 1; }
-	$(VERILATOR) --lint-only -Wall --top-module soc_top $(SOC_VFLAGS)
+	$(Q)$(call say,LINT,soc_top)$(VERILATOR) --lint-only -Wall --top-module soc_top $(SOC_VFLAGS)
 	@echo "lint-soc: $(words $(SOC_RTL_V)) files of $(SOC_FILES) clean under -Wall (with the GPU and $(notdir $(SOC_CPU_V)))"
 
 # yosys synth_ecp5 of soc_top: LUT4, FF, EBR per memory, MULT18X18D (installs yosys). ZBUF=1
@@ -46,8 +46,8 @@ SOC_SMOKE_SRC  := tests/soc/smoke_crt0.S tests/soc/smoke.c
 
 $(SOC_SMOKE_ELF): $(SOC_SMOKE_SRC) tests/soc/smoke.ld contract/soc_map.h contract/gpu_regs.h
 	@mkdir -p $(dir $@)
-	$(RV_CC) $(SOC_RV_FLAGS) -Os -g -ffreestanding -nostdlib -nostartfiles -Wall -Wextra -Werror \
+	$(Q)$(call say,LD,$@)$(RV_CC) $(SOC_RV_FLAGS) -Os -g -ffreestanding -nostdlib -nostartfiles -Wall -Wextra -Werror \
 	  -Icontract -T tests/soc/smoke.ld -Wl,--no-warn-rwx-segments $(SOC_SMOKE_SRC) -o $@
 
 $(SOC_SMOKE_HEX): $(SOC_SMOKE_ELF) tools/elf_to_hex.py
-	$(PYTHON) tools/elf_to_hex.py $< $@
+	$(Q)$(call say,GEN,$@)$(PYTHON) tools/elf_to_hex.py $< $@

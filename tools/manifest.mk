@@ -117,7 +117,7 @@ LEAN_SYNTH  ?= 1
 LEAN_FRAMES ?= 4
 lean-report:
 	@bash tools/setup.sh
-	$(PYTHON) tools/lean_report.py --build $(BUILD) --make $(LEAN_REPORT_MAKE) $(if $(JOBS),--jobs $(JOBS)) \
+	$(Q)$(call say,RUN,lean_report.py $(LEAN_SCENES))$(PYTHON) tools/lean_report.py --build $(BUILD) --make $(LEAN_REPORT_MAKE) $(if $(JOBS),--jobs $(JOBS)) \
 	  --frames $(LEAN_FRAMES) $(if $(filter 0,$(LEAN_SYNTH)),--no-synth) $(LEAN_SCENES)
 
 # make test's manifest build (tests/manifest/manifest.sh): cubes as its manifest says, the test

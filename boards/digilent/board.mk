@@ -9,7 +9,7 @@ DIGILENT_BOARDS := basys3 nexys_a7
 ifneq ($(filter $(DIGILENT_BOARDS),$(BOARD)),)
 synth-board: $(SOC_VENV)
 	@bash tools/setup.sh packages-synth.txt
-	bash synth/synth_xilinx.sh $(BOARD) $(BUILD)
+	$(Q)$(call say,SYNTH,$(BOARD))bash synth/synth_xilinx.sh $(BOARD) $(BUILD)
 
 bitstream flash load:
 	@echo "$@ BOARD=$(BOARD): needs Vivado, which is not part of this project's set-up:"

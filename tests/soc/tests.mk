@@ -31,13 +31,13 @@ SOC_DRIVER_OBJ := $(FW_OBJ_DIR_fixed)/$(FW_DRIVER_SRC:.c=.o)
 
 $(SOC_TEST_DIR)/%.o: tests/soc/%.c $(FW_OBJ_DIR_fixed)/cflags.txt
 	@mkdir -p $(@D)
-	$(FW_CC) $(FW_CFLAGS_fixed) -MMD -MP -c $< -o $@
+	$(Q)$(call say,CC,$<)$(FW_CC) $(FW_CFLAGS_fixed) -MMD -MP -c $< -o $@
 
 # $(1) = program name, $(2) = further objects
 define SOC_TEST_PROGRAM
 $(SOC_TEST_DIR)/$(1).elf: $(SOC_TEST_DIR)/$(1).o $(2) $(SOC_BSP_OBJS) $(FW_LDSCRIPT)
-	$$(FW_CC) $$(FW_LDFLAGS_BASE) -o $$@ $(SOC_TEST_DIR)/$(1).o $(2) $(SOC_BSP_OBJS)
-	$$(if $$(FW_POSTLINK),$$(FW_POSTLINK) $$@)
+	$$(Q)$$(call say,LD,$$@)$$(FW_CC) $$(FW_LDFLAGS_BASE) -o $$@ $(SOC_TEST_DIR)/$(1).o $(2) $(SOC_BSP_OBJS)
+	$$(if $$(FW_POSTLINK),$$(Q)$$(call say,POSTLINK,$$@)$$(FW_POSTLINK) $$@)
 
 -include $(SOC_TEST_DIR)/$(1).d
 endef

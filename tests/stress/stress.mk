@@ -32,10 +32,10 @@ $(1)_FW_OBJS := $$(filter-out $$(patsubst %.c,$$(HOST_OBJ_DIR_$(2))/%.o,$(FW_HOS
 
 $$($(1)_OBJ)/%.o: %.c $$(HOST_OBJ_DIR_$(2))/cflags.txt
 	@mkdir -p $$(@D)
-	$$(HOST_CC) $$(FW_HOST_CFLAGS_$(2)) -Itests/stress -Itests/firmware -MMD -MP -c $$< -o $$@
+	$$(Q)$$(call say,CC,$$<)$$(HOST_CC) $$(FW_HOST_CFLAGS_$(2)) -Itests/stress -Itests/firmware -MMD -MP -c $$< -o $$@
 
 $(1): $$($(1)_OBJS) $$($(1)_FW_OBJS) $(FW_MODEL_HOST_OBJ) $(GPU_MODEL_LIB)
-	$$(HOST_CC) -o $$@ $$($(1)_OBJS) $$($(1)_FW_OBJS) $(FW_MODEL_HOST_OBJ) $(GPU_MODEL_LIB) -lm
+	$$(Q)$$(call say,LD,$$@)$$(HOST_CC) -o $$@ $$($(1)_OBJS) $$($(1)_FW_OBJS) $(FW_MODEL_HOST_OBJ) $(GPU_MODEL_LIB) -lm
 
 -include $$($(1)_OBJS:.o=.d)
 endef
@@ -65,7 +65,7 @@ STRESS_SAN_FLAGS := -std=c11 -O1 -g -fsanitize=address,undefined -fno-sanitize-r
 $(STRESS_SAN) $(STRESS_SAN_FLOAT): $(STRESS_SAN_SRCS) $(FW_MODEL_HOST_OBJ) $(wildcard firmware/*/*.h \
                                    firmware/scenes/*/*.h gpu_model/*.h tests/stress/*.h)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(STRESS_SAN_FLAGS) $(if $(filter %-float,$@),-DFW_BACKEND_FLOAT=1) \
+	$(Q)$(call say,LD,$@)$(HOST_CC) $(STRESS_SAN_FLAGS) $(if $(filter %-float,$@),-DFW_BACKEND_FLOAT=1) \
 	  $(STRESS_SAN_SRCS) $(FW_MODEL_HOST_OBJ) -o $@ -lm
 
 .PHONY: stress-san

@@ -27,7 +27,7 @@ meshconv: $(MESHCONV)
 
 $(MESHCONV): $(MESHCONV_SRCS) $(wildcard tools/meshconv/*.h firmware/model/*.h firmware/render/palette.h)
 	@mkdir -p $(dir $@)
-	$(HOST_CC) $(MESHCONV_CFLAGS) $(filter %.c,$^) -o $@ $(MESHCONV_LIBS)
+	$(Q)$(call say,LD,$@)$(HOST_CC) $(MESHCONV_CFLAGS) $(filter %.c,$^) -o $@ $(MESHCONV_LIBS)
 
 meshconv-sweep: $(MESHCONV)
 	@MESHCONV=$(MESHCONV) BUILD=$(BUILD) MESHCONV_TIMEOUT=$(MESHCONV_TIMEOUT) \
