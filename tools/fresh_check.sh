@@ -98,7 +98,7 @@ trap 'exit 143' TERM
 # Leftovers of an interrupted run (a killed shell runs no trap): unmount before deleting anything.
 unmount_leftovers() {
     local m
-    findmnt -rn -o TARGET | grep -E "^$root(/|$)" | sort -r | while read -r m; do
+    for m in $(findmnt -rn -o TARGET | grep -E "^$root(/|$)" | sort -r); do
         umount "$m" 2>/dev/null || umount -l "$m"
     done
 }
