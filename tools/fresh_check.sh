@@ -65,6 +65,14 @@ if [ -z "$mirror" ]; then
     exit 2
 fi
 
+# Leftovers of an interrupted run (a killed shell runs no trap): unmount before deleting anything.
+unmount_leftovers() {
+    local m
+    for m in $(findmnt -rn -o TARGET | grep -E "^$root(/|$)" | sort -r); do
+        umount "$m" 2>/dev/null || umount -l "$m"
+    done
+}
+
 # ---- cleanup: end what still runs in the root, unmount, on every exit ----
 mounted=()  # mount points in mount order; unmounted in reverse
 processes_in_root() {
@@ -90,24 +98,17 @@ cleanup() {
             echo "fresh-check: could not unmount ${mounted[i]}" >&2
     done
     mounted=()
+    unmount_leftovers  # debootstrap's own /proc, when it was interrupted
 }
 trap cleanup EXIT
 trap 'exit 130' INT
 trap 'exit 143' TERM
 
-# Leftovers of an interrupted run (a killed shell runs no trap): unmount before deleting anything.
-unmount_leftovers() {
-    local m
-    for m in $(findmnt -rn -o TARGET | grep -E "^$root(/|$)" | sort -r); do
-        umount "$m" 2>/dev/null || umount -l "$m"
-    done
-}
-
 # ---- steps: one line each, output in a log, the table at the end ----
 table=()
 failed=0
 # step NAME COMMAND...: run COMMAND with its output in $logs/NAME.log; print "NAME ... N s";
-# on failure the log's tail. Returns COMMAND's status; RESULT_NOTE, set by the caller, is appended.
+# on failure the log's tail. Adds the step's row to the table; returns COMMAND's status.
 step() {
     local name="$1" start=$SECONDS status=0 result
     shift
@@ -192,8 +193,9 @@ step "make-test" in_root "make test CI=true" || failed=1
 cleanup
 
 summary=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$logs/make-test.log" | tail -n 1 || true)
+failing=$(sed -n -E 's/^FAIL +([^ ]+).*/\1/p' "$logs/make-test.log" | tr '\n' ' ' || true)
 echo
 printf '%-12s %7s  %s\n' step seconds result
 printf '%s\n' "${table[@]}"
-[ -z "$summary" ] || echo "make test: $summary"
+[ -z "$summary" ] || echo "make test: $summary${failing:+ (failed: ${failing% })}"
 exit "$failed"
