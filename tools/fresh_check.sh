@@ -101,7 +101,7 @@ cleanup() {
     unmount_leftovers  # debootstrap's own /proc, when it was interrupted
 }
 trap cleanup EXIT
-trap 'exit 130' INT
+trap 'echo; echo "fresh-check: interrupted (mounts and processes in the root cleaned up)" >&2; exit 130' INT
 trap 'exit 143' TERM
 
 # ---- steps: one line each, output in a log, the table at the end ----
