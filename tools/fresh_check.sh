@@ -101,7 +101,9 @@ cleanup() {
     unmount_leftovers  # debootstrap's own /proc, when it was interrupted
 }
 trap cleanup EXIT
-trap 'echo; echo "fresh-check: interrupted (mounts and processes in the root cleaned up)" >&2; exit 130' INT
+# The trap can run inside a step, whose output goes to its log: fd 3 is the caller's stderr.
+exec 3>&2
+trap 'printf "\nfresh-check: interrupted (processes in the root ended, mounts undone)\n" >&3; exit 130' INT
 trap 'exit 143' TERM
 
 # ---- steps: one line each, output in a log, the table at the end ----
