@@ -253,6 +253,11 @@ synth:
 	@bash tools/setup.sh packages-synth.txt
 	@ZBUF=$(ZBUF) GOURAUD=$(GOURAUD) bash synth/synth.sh $(BUILD)
 
+# ---- the README's two commands on a fresh Debian 12: a debootstrap chroot in $(BUILD)/fresh (root) ----
+.PHONY: fresh-check
+fresh-check:
+	@BUILD=$(BUILD) bash tools/fresh_check.sh
+
 # ---- host-side simulator: Verilated GPU + co-simulation bridge + golden model ----
 HOST_OBJ := $(patsubst %.c,$(BUILD)/host/%.o,$(COSIM_C_SRC))
 
