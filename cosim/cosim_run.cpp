@@ -20,7 +20,9 @@
 // line on stderr, stops QEMU, restores the terminal, flushes the UART's last output and returns 1;
 // usage errors return 2; a firmware that ends with status 0, and a run stopped by
 // --stop-after-frames, return 0. With --summary FILE the run's outcome is also written as key=value
-// lines (harness.h's keys) for tests and scripts to read instead of the prose.
+// lines (harness.h's keys, then frame_wall_first_s and frame_wall_last_s, the monotonic clock when the
+// first and the last frame were captured, and frame_cycles_first and frame_cycles_last, the GPU
+// clocks simulated by then) for tests and scripts to read instead of the prose.
 #include <cerrno>
 #include <climits>
 #include <cstdio>
@@ -112,7 +114,7 @@ private:
         c.gpu_cycles = bridge_.cycles();
         return c;
     }
-    void summary_keys(FILE *) const override {}
+    void summary_keys(FILE *f) const override;
     void shutdown();
     void pump_uart(bool final) { uart_.pump(qemu_.uart_out_fd(), final); }
     void forward_pty();
@@ -122,6 +124,15 @@ private:
     SharedRam ram_;
     QemuProcess qemu_;
 };
+
+// When the first and the last frame were captured (tools/bench_sim.sh's speeds).
+void CosimRun::summary_keys(FILE *f) const
+{
+    const FrameClock &c = frame_clock();
+    std::fprintf(f, "frame_wall_first_s=%.6f\nframe_wall_last_s=%.6f\n", c.first_s, c.last_s);
+    std::fprintf(f, "frame_cycles_first=%llu\nframe_cycles_last=%llu\n",
+                 static_cast<unsigned long long>(c.first_cycles), static_cast<unsigned long long>(c.last_cycles));
+}
 
 // The pty's bytes, as many as the UART's input pipe takes without blocking (POLLOUT: room for
 // PIPE_BUF): the rest wait in the pty, which then holds its client back, instead of this loop

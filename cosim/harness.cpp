@@ -229,11 +229,11 @@ bool Harness::take_frame(const uint8_t *rgb, ModelCheck &model, uint64_t cycles,
     std::printf("%s: frame %04u -> %s | %s%s\n", prog_, frames_, text, detail.c_str(),
                 hopt_.check_model ? " | equals golden model" : "");
     std::fflush(stdout);
-    last_frame_s_ = harness_now_s();
-    last_frame_cycles_ = cycles;
+    frame_clock_.last_s = harness_now_s();
+    frame_clock_.last_cycles = cycles;
     if (frames_ == 0) {
-        first_frame_s_ = last_frame_s_;
-        first_frame_cycles_ = last_frame_cycles_;
+        frame_clock_.first_s = frame_clock_.last_s;
+        frame_clock_.first_cycles = cycles;
     }
     frames_++;
     frames_checked_ += hopt_.check_model ? 1 : 0;
@@ -276,10 +276,6 @@ void Harness::write_summary(const char *error) const
                  c.gpu_resets);
     std::fprintf(f, "frames=%u\nframes_model_checked=%u\ngpu_cycles=%llu\n", frames_, frames_checked_,
                  static_cast<unsigned long long>(c.gpu_cycles));
-    std::fprintf(f, "frame_wall_first_s=%.6f\nframe_wall_last_s=%.6f\n", first_frame_s_, last_frame_s_);
-    std::fprintf(f, "frame_cycles_first=%llu\nframe_cycles_last=%llu\n",
-                 static_cast<unsigned long long>(first_frame_cycles_),
-                 static_cast<unsigned long long>(last_frame_cycles_));
     std::fprintf(f, "uart_pty_in=%llu\nuart_pty_dropped=%llu\n", static_cast<unsigned long long>(pty_.bytes_in()),
                  static_cast<unsigned long long>(pty_.bytes_dropped()));
     summary_keys(f);

@@ -30,9 +30,10 @@
 //     *error and *kind (model-mismatch, write) set.
 //   - The summary (--summary FILE) holds key=value lines: result, error, firmware_status, batches,
 //     doorbells_dropped, gpu_resets, frames, frames_model_checked, gpu_cycles (counts(), the
-//     subclass's), frame_wall_first_s and frame_wall_last_s (the monotonic clock when the first and
-//     the last frame were taken), frame_cycles_first and frame_cycles_last (the clocks simulated by
-//     then), uart_pty_in, uart_pty_dropped, then the subclass's own (summary_keys()).
+//     subclass's), uart_pty_in, uart_pty_dropped, then the subclass's own (summary_keys()). Every
+//     key is a function of the run's input alone (socsim's determinism compares whole summaries)
+//     but the subclass's wall-clock ones: frame_clock() says when the first and the last frame
+//     were taken, on the monotonic clock and in clocks simulated by then.
 // The virtual calls are on these ends and per frame only, never per simulated clock.
 #ifndef HARNESS_H
 #define HARNESS_H
@@ -99,6 +100,11 @@ public:
                     std::string *error, const char **kind);
     uint32_t frames() const { return frames_; }
     uint32_t frames_model_checked() const { return frames_checked_; }
+    struct FrameClock {
+        double first_s = 0, last_s = 0;
+        uint64_t first_cycles = 0, last_cycles = 0;
+    };
+    const FrameClock &frame_clock() const { return frame_clock_; }
 
 protected:
     int open_outputs(const std::string &window_title);
@@ -137,9 +143,7 @@ private:
     double window_polled_at_ = 0;
     double window_closed_at_ = -1;  // when the window was closed (the run is ending), or -1
     uint32_t frames_ = 0, frames_checked_ = 0;
-    // When the first and the last frame were taken: wall time, simulated clocks.
-    double first_frame_s_ = 0, last_frame_s_ = 0;
-    uint64_t first_frame_cycles_ = 0, last_frame_cycles_ = 0;
+    FrameClock frame_clock_;
 };
 
 #endif
