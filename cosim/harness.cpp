@@ -178,8 +178,11 @@ bool Harness::stop_requested(std::string *keys)
 
 std::string Harness::window_keys()
 {
+    if (!window_.is_open()) {  // before the clock: the loops call this at every turn
+        return "";
+    }
     const double now = harness_now_s();
-    if (!window_.is_open() || now - window_polled_at_ < 0.01) {  // 100 times a second is enough
+    if (now - window_polled_at_ < 0.01) {  // 100 times a second is enough
         return "";
     }
     window_polled_at_ = now;
