@@ -8,7 +8,6 @@
 
 extern "C" {
 #include "gpu_regs.h"
-#include "png_write.h"
 }
 
 namespace {
@@ -26,8 +25,9 @@ std::string format(const char *fmt, ...)
 
 }  // namespace
 
-BatchBridge::BatchBridge(const BridgeOptions &o)
-    : opt_(o), model_(GpuSim::build_config()), shadow_(GPU_APERTURE_BYTES / 4, 0)
+BatchBridge::BatchBridge(const BridgeOptions &o, Harness &harness)
+    : opt_(o), harness_(harness), hopt_(harness.options()), model_(GpuSim::build_config()),
+      shadow_(GPU_APERTURE_BYTES / 4, 0)
 {
 }
 
@@ -50,7 +50,7 @@ bool BatchBridge::service_reset(uint32_t value, std::string *error)
         return false;
     }
     sim_.write(GPU_REG_RESET, value);
-    if (opt_.check_model) {
+    if (hopt_.check_model) {
         model_.write(GPU_REG_RESET, value);
     }
     shadow_[GPU_REG_RESET / 4] = value;
@@ -137,13 +137,13 @@ void BatchBridge::publish_registers()
 bool BatchBridge::service_batch(uint32_t tag, std::string *error)
 {
     __atomic_thread_fence(__ATOMIC_ACQUIRE);
-    if (!opt_.trace.empty() && trace_ == Trace::Waiting && frames_written_ == opt_.trace_frame) {
-        if (!sim_.trace_open(opt_.trace, error)) {
+    if (!hopt_.trace.empty() && trace_ == Trace::Waiting && harness_.frames() == hopt_.trace_frame) {
+        if (!sim_.trace_open(hopt_.trace, error)) {
             error_kind_ = "trace";
             return false;
         }
         trace_ = Trace::On;
-        std::printf("cosim: tracing frame %u -> %s\n", opt_.trace_frame, opt_.trace.c_str());
+        std::printf("cosim: tracing frame %u -> %s\n", hopt_.trace_frame, hopt_.trace.c_str());
     }
     const uint32_t doorbell_word = GPU_REG_DOORBELL / 4;
     // A palette write shows at once on the pins: the frame being scanned out is captured first.
@@ -153,12 +153,13 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
         }
     }
     // Replay the firmware's stores into the RTL: every word that changed since the last batch,
-    // DOORBELL last. The model takes them once the frame on the pins is compared (model_writes_).
+    // DOORBELL last. The model takes them once the frame on the pins is compared (held writes).
+    model_.hold_writes();
     for (uint32_t w = 0; w < shadow_.size(); w++) {
         const uint32_t value = window_[w];
         if (value != shadow_[w] && w != doorbell_word) {
             sim_.write(w * 4, value);
-            model_writes_.emplace_back(w * 4, value);
+            feed_model_write(w * 4, value);
             shadow_[w] = value;
         }
     }
@@ -175,7 +176,7 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
     }
     const uint32_t frames_before = sim_.read(GPU_REG_FRAME_COUNT);
     sim_.write(GPU_REG_DOORBELL, tag);
-    model_writes_.emplace_back(GPU_REG_DOORBELL, tag);
+    feed_model_write(GPU_REG_DOORBELL, tag);
     shadow_[doorbell_word] = tag;
     batches_++;
 
@@ -194,7 +195,7 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
         return false;
     }
     feed_model();
-    if (opt_.check_model) {
+    if (hopt_.check_model) {
         const std::string diff = model_.compare_registers(sim_);
         if (!diff.empty()) {
             error_kind_ = "model-mismatch";
@@ -208,7 +209,7 @@ bool BatchBridge::service_batch(uint32_t tag, std::string *error)
         // run capture it at once.
         sim_.arm_capture();
         capture_pending_ = true;
-        if ((GpuSim::fast_display() || !opt_.trace.empty()) && !finish_capture(error)) {
+        if ((GpuSim::fast_display() || !hopt_.trace.empty()) && !finish_capture(error)) {
             return false;
         }
     }
@@ -224,16 +225,11 @@ bool BatchBridge::finish_frames(std::string *error)
 // The model takes the stores the RTL took, in the same order.
 void BatchBridge::feed_model()
 {
-    if (opt_.check_model) {
-        for (const auto &w : model_writes_) {
-            model_.write(w.first, w.second);
-        }
-    }
-    model_writes_.clear();
+    model_.release_writes();
 }
 
-// The armed frame: scanned to its end (a frame at most), compared with the model's front buffer
-// (which the model's next batch has not yet changed), written, counted.
+// The armed frame: scanned to its end (a frame at most), then the harness's (compared with the
+// model's front buffer, which the model's next batch has not yet changed; written; counted).
 bool BatchBridge::finish_capture(std::string *error)
 {
     capture_pending_ = false;
@@ -243,34 +239,15 @@ bool BatchBridge::finish_capture(std::string *error)
         *error = format("no frame captured from the VGA pins: %s", sim_.vga_error()[0] ? sim_.vga_error() : "timeout");
         return false;
     }
-    if (opt_.check_model) {
-        const std::string diff = model_.compare_frame(sim_.frame_rgb());
-        if (!diff.empty()) {
-            error_kind_ = "model-mismatch";
-            *error = format("frame %u: VGA output differs from the golden model: %s", frames_written_, diff.c_str());
-            return false;
-        }
+    const std::string detail = format("gpu busy %u cycles | simulated %llu cycles", sim_.read(GPU_REG_PERF_BUSY_CYCLES),
+                                      static_cast<unsigned long long>(sim_.cycles()));
+    if (!harness_.take_frame(sim_.frame_rgb(), model_, sim_.cycles(), detail, error, &error_kind_)) {
+        return false;
     }
-    std::string where = "(not written)";
-    if (!opt_.frames_dir.empty()) {
-        char path[512];
-        std::snprintf(path, sizeof path, "%s/%04u.png", opt_.frames_dir.c_str(), frames_written_);
-        if (png_write_rgb(path, sim_.frame_rgb(), VGA_W, VGA_H) != 0) {
-            error_kind_ = "write";
-            *error = format("cannot write %s", path);
-            return false;
-        }
-        where = path;
-    }
-    std::printf("cosim: frame %04u -> %s | gpu busy %u cycles | simulated %llu cycles%s\n", frames_written_,
-                where.c_str(), sim_.read(GPU_REG_PERF_BUSY_CYCLES), static_cast<unsigned long long>(sim_.cycles()),
-                opt_.check_model ? " | equals golden model" : "");
-    frames_written_++;
-    frames_checked_ += opt_.check_model ? 1 : 0;
     if (trace_ == Trace::On) {
         sim_.trace_close();
         trace_ = Trace::Done;
-        std::printf("cosim: trace of frame %u written: %s\n", opt_.trace_frame, opt_.trace.c_str());
+        std::printf("cosim: trace of frame %u written: %s\n", hopt_.trace_frame, hopt_.trace.c_str());
     }
     return true;
 }

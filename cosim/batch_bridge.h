@@ -11,8 +11,9 @@
 //   - service_batch(tag) replays every window word that changed since the last batch into the RTL
 //     (and the model), DOORBELL last; runs the GPU until DONE_SEQ shows the tag; compares the
 //     registers with the model; when FRAME_COUNT moved, the frame the new front buffer shows is
-//     captured from the VGA pins, compared with the model and written as FRAMES_DIR/NNNN.png (none
-//     when frames_dir is empty), with one "cosim: frame" line; then it publishes the registers.
+//     captured from the VGA pins and handed to the harness (Harness::take_frame: compared with the
+//     model, written as FRAMES_DIR/NNNN.png, shown, one "cosim: frame" line); then it publishes
+//     the registers.
 //     On the pin path that capture overlaps the firmware's next frame, as on a board: the frame is
 //     scanned out while the next batches draw (the firmware sees DONE_SEQ after the swap, not after
 //     the scan), and it is finished — compared before the model runs the batch that ends its scan —
@@ -20,7 +21,7 @@
 //     RESET would change the pins, or by finish_frames(), which the caller calls when the firmware
 //     has ended. Each displayed frame costs one scan of simulated time instead of two (the wait for
 //     the swap's vertical blank, then the scan). The fast path and a traced run capture at once.
-//     frame_rgb() is the last frame captured (VGA_W x VGA_H RGB888). With --drop-doorbell N batch N is recorded but never run. With
+//     With --drop-doorbell N batch N is recorded but never run. With
 //     --dump-lists DIR each batch is written first as DIR/batchNNNN.txt (prim_list.h format: ztri
 //     when CTRL.ZTEST is set). On a GPU timeout, a disagreement, or a frame that cannot be captured
 //     or written, it returns false with *error set (the caller reports it) and error_kind() naming
@@ -43,21 +44,19 @@
 #include <vector>
 
 #include "gpu_sim.h"
+#include "harness.h"
 #include "model_check.h"
 
+// The bridge's own options; the frames', the model's and the trace's are the harness's.
 struct BridgeOptions {
-    std::string frames_dir = "out/frames";  // empty: no PNG files
     uint64_t max_batch_cycles = 100000000;  // 1 s of GPU time at 100 MHz
-    bool check_model = true;
     uint32_t drop_doorbell = 0;  // batch number never serviced (0: none)
     std::string dump_lists;      // directory for each batch as a primitive list
-    std::string trace;           // --trace FILE.fst: the waves of frame trace_frame (a trace build)
-    uint32_t trace_frame = 0;
 };
 
 class BatchBridge {
 public:
-    explicit BatchBridge(const BridgeOptions &o);
+    BatchBridge(const BridgeOptions &o, Harness &harness);
 
     // The firmware's view of the window starts as the GPU's power-on registers where they are not
     // 0 (FB_WRITE_MASK: both planes), so that the shadow and the RTL agree before the first
@@ -77,10 +76,7 @@ public:
     uint32_t batches() const { return batches_; }  // doorbells taken so far (dropped ones included)
     uint32_t doorbells_dropped() const { return dropped_; }
     uint32_t resets() const { return resets_; }
-    uint32_t frames() const { return frames_written_; }
-    uint32_t frames_model_checked() const { return frames_checked_; }
     uint64_t cycles() const { return sim_.cycles(); }
-    const uint8_t *frame_rgb() const { return sim_.frame_rgb(); }
     const char *error_kind() const { return error_kind_; }
     // The harness's UART work during a batch (GpuSim::set_background).
     void set_background(std::function<void()> fn, uint64_t every) { sim_.set_background(std::move(fn), every); }
@@ -88,17 +84,22 @@ public:
 private:
     void dump_list();
     void feed_model();
+    void feed_model_write(uint32_t offset, uint32_t value)
+    {
+        if (hopt_.check_model) {
+            model_.write(offset, value);
+        }
+    }
     bool finish_capture(std::string *error);
 
     const BridgeOptions &opt_;
+    Harness &harness_;
+    const HarnessOptions &hopt_;
     GpuSim sim_;
     ModelCheck model_;
     volatile uint32_t *window_ = nullptr;
     std::vector<uint32_t> shadow_;  // the window as last forwarded to the RTL
-    std::vector<std::pair<uint32_t, uint32_t>> model_writes_;  // (offset, value) the model has yet to take
     bool capture_pending_ = false;  // a swapped frame is armed on the pins, not yet finished
-    uint32_t frames_written_ = 0;  // frames captured (and written, with a frames_dir)
-    uint32_t frames_checked_ = 0;  // frames compared with the golden model and found equal
     uint32_t batches_ = 0;
     uint32_t dropped_ = 0;
     uint32_t resets_ = 0;

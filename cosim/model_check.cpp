@@ -61,6 +61,15 @@ ModelCheck::~ModelCheck()
     delete model_;
 }
 
+void ModelCheck::release_writes()
+{
+    holding_ = false;
+    for (const auto &w : held_) {
+        gpu_model_write(model_, w.first, w.second);
+    }
+    held_.clear();
+}
+
 std::string ModelCheck::compare_registers(GpuSim &sim)
 {
     for (int i = 0; i < kReadOnlyRegCount; i++) {

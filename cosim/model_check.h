@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 extern "C" {
@@ -22,7 +23,20 @@ public:
     // otherwise be checked against another GPU.
     explicit ModelCheck(const gpu_model_config &cfg);
     ~ModelCheck();
-    void write(uint32_t offset, uint32_t value) { gpu_model_write(model_, offset, value); }
+    // A write, at once or, after hold_writes(), held until release_writes(): while a frame is on
+    // its way to the pins the firmware may already draw (and swap) the next one, so the model's
+    // front buffer must stay that frame's until the frame is compared (Harness::take_frame).
+    void write(uint32_t offset, uint32_t value)
+    {
+        if (holding_) {
+            held_.emplace_back(offset, value);
+        } else {
+            gpu_model_write(model_, offset, value);
+        }
+    }
+    void hold_writes() { holding_ = true; }
+    void release_writes();  // the held writes, in order; the writes that follow go at once
+    bool holds_writes() const { return !held_.empty(); }
     // Compare the read-only registers; returns "" when equal, else a description.
     std::string compare_registers(GpuSim &sim);
     // Compare a captured 640x480 RGB frame with the model's front buffer through its palette.
@@ -32,6 +46,8 @@ public:
 private:
     gpu_model *model_;
     std::vector<uint8_t> expected_;
+    bool holding_ = false;
+    std::vector<std::pair<uint32_t, uint32_t>> held_;  // (offset, value), in the order written
 };
 
 // Read-only registers copied back to the firmware after a batch, DONE_SEQ last: the contract's

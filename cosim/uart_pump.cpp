@@ -22,38 +22,52 @@ void UartPump::close_log()
     }
 }
 
+void UartPump::feed(const char *data, size_t n)
+{
+    if (tee_ != nullptr) {
+        tee_->write(data, n);
+    }
+    for (size_t i = 0; i < n; i++) {
+        if (data[i] == '\r') {
+            continue;
+        }
+        line_ += data[i];
+        if (data[i] == '\n') {
+            std::fputs(line_.c_str(), stdout);
+            std::fflush(stdout);
+            if (log_) {
+                std::fputs(line_.c_str(), log_);
+            }
+            if (on_line_) {
+                line_.pop_back();
+                on_line_(line_);
+            }
+            line_.clear();
+        }
+    }
+}
+
+void UartPump::finish()
+{
+    if (!line_.empty()) {
+        std::printf("%s\n", line_.c_str());
+        line_.clear();
+    }
+    std::fflush(stdout);
+}
+
 void UartPump::pump(int uart_out_fd, bool final)
 {
     char buf[4096];
     for (;;) {
-        ssize_t n = read(uart_out_fd, buf, sizeof buf);
+        const ssize_t n = read(uart_out_fd, buf, sizeof buf);
         if (n <= 0) {
             break;
         }
-        if (tee_ != nullptr) {
-            tee_->write(buf, static_cast<size_t>(n));
-        }
-        for (ssize_t i = 0; i < n; i++) {
-            if (buf[i] == '\r') {
-                continue;
-            }
-            line_ += buf[i];
-            if (buf[i] == '\n') {
-                std::fputs(line_.c_str(), stdout);
-                if (log_) {
-                    std::fputs(line_.c_str(), log_);
-                }
-                if (on_line_) {
-                    line_.pop_back();
-                    on_line_(line_);
-                }
-                line_.clear();
-            }
-        }
+        feed(buf, static_cast<size_t>(n));
     }
-    if (final && !line_.empty()) {
-        std::printf("%s\n", line_.c_str());
-        line_.clear();
+    if (final) {
+        finish();
     }
     std::fflush(stdout);
 }

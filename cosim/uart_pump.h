@@ -1,17 +1,20 @@
-// uart_pump: the firmware's UART as this process sees it — what the firmware prints goes to stdout
-// (and a log file), line by line; typed or scripted keys go to the firmware.
+// uart_pump: the firmware's UART as the harness sees it (cosim/harness) — what the firmware prints
+// goes to stdout (and a log file), line by line; typed or scripted keys go to the firmware.
 //
-// Contract: pump() drains what the UART's output pipe holds without blocking, drops '\r', and writes
-// each complete line to stdout and the log; with final set it also writes an unfinished last line
-// (with a '\n' added, on stdout only). stdout is flushed on every call, so the firmware's lines and
-// the harness's own "cosim: ..." lines appear in the order they happened. type() writes keys to the
-// UART's input pipe (a failure is a warning, not an error). The pipes belong to QemuProcess; a
-// closed pipe (-1) is simply skipped. With tee_to(pty), every byte read from the UART also goes to
-// the pty (cosim/uart_pty) as it came, '\r' included: a client there sees the raw line. With
-// on_line(fn), fn sees each complete line too (without its '\n'), after it was written.
+// Contract: feed() takes the firmware's bytes as they came, from any source (socsim decodes them
+// from the TX pin), drops '\r', and writes each complete line to stdout and the log, flushing
+// stdout after a line, so the firmware's lines and the harness's own "cosim: ..." / "socsim: ..."
+// lines appear in the order they happened. finish() writes an unfinished last line (with a '\n'
+// added, on stdout only). pump() drains what QEMU's UART output pipe holds without blocking into
+// feed() (finish() too with final set) and flushes stdout on every call. type() writes keys to
+// QEMU's UART input pipe (a failure is a warning, not an error). The pipes belong to QemuProcess;
+// a closed pipe (-1) is simply skipped. With tee_to(pty), every byte fed also goes to the pty
+// (cosim/uart_pty) as it came, '\r' included: a client there sees the raw line. With on_line(fn),
+// fn sees each complete line too (without its '\n'), after it was written.
 #ifndef UART_PUMP_H
 #define UART_PUMP_H
 
+#include <cstddef>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -27,6 +30,8 @@ public:
 
     bool open_log(const std::string &path);  // false if the file cannot be created (errno set)
     void close_log();
+    void feed(const char *data, size_t n);
+    void finish();
     void pump(int uart_out_fd, bool final);
     void type(int uart_in_fd, const std::string &text);
     void tee_to(UartPty *pty) { tee_ = pty; }

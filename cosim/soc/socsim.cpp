@@ -57,21 +57,19 @@
 // --summary FILE holds the outcome as key=value lines, with the keys of `gpusim cosim --summary`
 // and the SoC's own counts and pins: exit_valid, the LEDs (the VGA build), the vertical syncs the
 // monitor saw (vga_vsyncs, with or without a swap), the replies sent. Simulation is deterministic:
-// the same image gives the same files.
+// the same image gives the same files. The options both simulators take, the frames' path (model
+// check, PNG, window, frame line), the failures and the summary's common keys are the harness
+// core's (cosim/harness.h), shared with `gpusim cosim`; this file adds the SoC, its RAM image, its
+// clocks and pins, its taps and the board's TMDS decoder.
 #include <algorithm>
 #include <cerrno>
-#include <csignal>
-#include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <ctime>
 #include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <sys/stat.h>
 
 #ifdef SOCSIM_BOARD_ULX3S
 #include "Vulx3s_system.h"
@@ -90,18 +88,14 @@ using SocModel = Vsoc_top;
 #include "verilated_fst_c.h"
 #endif
 
-#include "keys_at.h"
 #include "gpu_build.h"
+#include "harness.h"
 #include "model_check.h"
 #include "uart_line.h"
-#include "uart_pty.h"
 #include "uart_reply.h"
-#include "uart_terminal.h"
-#include "sdl_window.h"
 
 extern "C" {
 #include "gpu_regs.h"
-#include "png_write.h"
 #include "soc_map.h"
 #include "vga_monitor.h"
 }
@@ -117,113 +111,56 @@ extern "C" long long socsim_read_instret();  // exported by socsim_cpu_tap
 
 namespace {
 
-volatile sig_atomic_t g_signal = 0;
-void on_signal(int sig) { g_signal = sig; }
-
-double now_s()
-{
-    timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
 struct Options {
+    HarnessOptions harness;
     std::string hex;
-    std::string frames_dir = "out/frames";
-    std::string uart_log;
-    std::string summary;
-    std::string uart_pty;  // the pseudo-terminal's link, or empty
-    bool window = false;   // the frames in a window too (cosim/sdl_window)
-    double window_fps = 60.0;
-    std::string trace;     // --trace FILE.fst, or empty
-    uint32_t trace_frame = 0;
     uint64_t max_cycles = 3000000000ull;  // 60 s of SoC time at 50 MHz
     uint64_t progress_cycles = 50000000;  // a progress line after this many cycles without a frame
     uint32_t uart_divider = (SOCSIM_CLK_HZ + SOC_UART_BAUD / 2) / SOC_UART_BAUD;  // as soc_uart rounds
-    bool check_model = true;
-    KeysAt keys_at;
     UartReplies replies;
 };
 
 int usage()
 {
-    std::fprintf(stderr,
-                 "usage: socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]\n"
-                 "              [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--no-model-check]\n"
-                 "              [--uart-divider N] [--uart-pty LINK] [--window] [--window-fps N]\n"
-                 "              [--trace FILE.fst [--trace-frame N]]\n"
-                 "  --fw FILE.elf     run FILE.elf.hex (the soc build's RAM image); -kernel FILE.elf is the same\n"
-                 "  --hex FILE        run FILE, a RAM image (one 32-bit hex word per line from address 0)\n"
-                 "  --keys-at N:TEXT  send TEXT on uart_rx when the GPU takes DOORBELL write N (from 1)\n"
-                 "  --reply PROMPT=TEXT  send TEXT on uart_rx each time the text from uart_tx ends with PROMPT\n"
-                 "                    (\\n a newline, \\f a frame with a low stop bit)\n"
-                 "  --max-cycles N    give up after N clocks (default 3e9: 60 s at 50 MHz)\n"
-                 "  --summary FILE    write the run's outcome and counts as key=value lines\n"
-                 "  --uart-pty LINK   also offer the UART as a pseudo-terminal, LINK a symlink to it (raw, 8 bits):\n"
-                 "                    what a client writes there is sent on uart_rx, uart_tx's bytes are sent there\n"
-                 "  --window          show the frames in a window as well (no PNG files unless --frames is given);\n"
-                 "                    its keys go on uart_rx, closing it ends the run as Q does\n"
-                 "  --window-fps N    at most N frames a second in the window (default 60, 0: no cap)\n"
-                 "  --trace FILE.fst  every signal over frame N (--trace-frame N, default 0), from the swap before it\n"
-                 "                    to its capture (a simulator built for tracing: make waves PLATFORM=soc)\n"
-                 "  With a terminal on stdin, keystrokes go to the firmware's UART; Ctrl-C ends the run.\n"
-                 "  Exit status: the firmware's (SYS EXIT); 1 on a harness error; 2 on a usage error.\n");
-    return 2;
+    return harness_usage(
+        "usage: socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]\n"
+        "              [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--no-model-check]\n"
+        "              [--uart-divider N] [--uart-pty LINK] [--window] [--window-fps N]\n"
+        "              [--trace FILE.fst [--trace-frame N]]\n"
+        "  --fw FILE.elf      run FILE.elf.hex (the soc build's RAM image); -kernel FILE.elf is the same\n"
+        "  --hex FILE         run FILE, a RAM image (one 32-bit hex word per line from address 0)\n"
+        "  --reply PROMPT=TEXT  send TEXT on uart_rx each time the text from uart_tx ends with PROMPT\n"
+        "                     (\\n a newline, \\f a frame with a low stop bit)\n"
+        "  --max-cycles N     give up after N clocks (default 3e9: 60 s at 50 MHz)\n"
+        "  Exit status: the firmware's (SYS EXIT); 1 on a harness error; 2 on a usage error.\n");
 }
 
 bool parse(int argc, char **argv, Options &o)
 {
-    bool frames_given = false;
-    for (int i = 1; i < argc; i++) {
-        const std::string a = argv[i];
-        const bool has_value = i + 1 < argc;
-        if ((a == "--fw" || a == "-kernel") && has_value) {
-            o.hex = std::string(argv[++i]) + ".hex";
+    const auto own = [&](const std::string &a, bool has_value, int *i) {
+        if (a == "-kernel" && has_value) {
+            o.harness.firmware = argv[++*i];
         } else if (a == "--hex" && has_value) {
-            o.hex = argv[++i];
-        } else if (a == "--frames" && has_value) {
-            o.frames_dir = argv[++i];
-            frames_given = true;
-        } else if (a == "--uart-log" && has_value) {
-            o.uart_log = argv[++i];
-        } else if (a == "--summary" && has_value) {
-            o.summary = argv[++i];
-        } else if (a == "--uart-pty" && has_value) {
-            o.uart_pty = argv[++i];
-        } else if (a == "--window") {
-            o.window = true;
-        } else if (a == "--window-fps" && has_value) {
-            o.window_fps = std::atof(argv[++i]);
+            o.hex = argv[++*i];
         } else if (a == "--max-cycles" && has_value) {
-            o.max_cycles = static_cast<uint64_t>(std::strtod(argv[++i], nullptr));
+            o.max_cycles = static_cast<uint64_t>(std::strtod(argv[++*i], nullptr));
         } else if (a == "--uart-divider" && has_value) {
-            o.uart_divider = static_cast<uint32_t>(std::strtoul(argv[++i], nullptr, 0));
-        } else if (a == "--keys-at" && has_value) {
-            if (!parse_keys_at("socsim", argv[++i], &o.keys_at)) {
-                return false;
-            }
+            o.uart_divider = static_cast<uint32_t>(std::strtoul(argv[++*i], nullptr, 0));
         } else if (a == "--reply" && has_value) {
-            if (!o.replies.add(argv[++i])) {
-                std::fprintf(stderr, "socsim: --reply wants PROMPT=TEXT, got '%s'\n", argv[i]);
-                return false;
+            if (!o.replies.add(argv[++*i])) {
+                std::fprintf(stderr, "socsim: --reply wants PROMPT=TEXT, got '%s'\n", argv[*i]);
+                return HarnessArg::Bad;
             }
-        } else if (a == "--trace" && has_value) {
-            o.trace = argv[++i];
-            if (!SOCSIM_TRACE) {
-                std::fprintf(stderr, "socsim: --trace: this simulator was built without tracing: use make waves\n");
-                return false;
-            }
-        } else if (a == "--trace-frame" && has_value) {
-            o.trace_frame = static_cast<uint32_t>(std::strtoul(argv[++i], nullptr, 10));
-        } else if (a == "--no-model-check") {
-            o.check_model = false;
         } else {
-            std::fprintf(stderr, "socsim: unknown or incomplete option '%s'\n", a.c_str());
-            return false;
+            return HarnessArg::Other;
         }
+        return HarnessArg::Taken;
+    };
+    if (!harness_parse("socsim", argc, argv, 1, SOCSIM_TRACE != 0, &o.harness, own)) {
+        return false;
     }
-    if (o.window && !frames_given) {
-        o.frames_dir.clear();
+    if (!o.harness.firmware.empty()) {
+        o.hex = o.harness.firmware + ".hex";  // --fw FILE.elf: its RAM image
     }
     return !o.hex.empty() && o.uart_divider >= 4;
 }
@@ -240,16 +177,16 @@ class SocRun;
 SocRun *g_run = nullptr;  // the DPI callbacks' target (one run per process)
 svScope g_cpu_scope = nullptr;
 
-class SocRun {
+class SocRun : public Harness {
 public:
     explicit SocRun(const Options &o)
-        : opt_(o), top_(new SocModel(context_.get())), model_(gpu_build_config()), rx_(o.uart_divider),
-          tx_(o.uart_divider), replies_(o.replies)
+        : Harness("socsim", o.harness), opt_(o), top_(new SocModel(context_.get())), model_(gpu_build_config()),
+          rx_(o.uart_divider), tx_(o.uart_divider), replies_(o.replies)
     {
         g_run = this;
         vga_monitor_reset(&monitor_);
     }
-    ~SocRun()
+    ~SocRun() override
     {
         trace_close();
         terminal_.restore();
@@ -273,16 +210,23 @@ private:
         bool done = false;
     };
 
-    int fail(const char *kind, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+    // The harness's ends (harness.h): the last UART output, the terminal, the speed line.
+    void stop_parts() override;
+    HarnessCounts counts() const override
+    {
+        HarnessCounts c;
+        c.batches = doorbells_;
+        c.gpu_resets = resets_;
+        c.gpu_cycles = cycles_;
+        return c;
+    }
+    void summary_keys(FILE *f) const override;
     bool load_ram(std::string *error);
     void tick();
     void clock_once();   // the model's clocks up to the system clock's next rising edge
     void uart_byte(uint8_t b);
     void vga_sample(int hsync_n, int vsync_n, int r, int g, int b);
-    void flush_uart(bool final);
-    bool finish_frame(std::string *error);
-    void write_summary(const char *error);
-    void report_speed();
+    bool finish_frame(std::string *error, const char **kind);
     uint64_t instret() const;
     bool trace_open(std::string *error);
     void trace_close();
@@ -312,14 +256,8 @@ private:
     ModelCheck model_;
     UartLineDecoder rx_;   // the firmware's output: soc_top's uart_tx
     UartLineSender tx_;    // keys: soc_top's uart_rx
-    UartTerminal terminal_;
-    UartPty pty_;
-    SdlWindow window_;
-    double window_closed_at_ = -1;  // when the window was closed (the run is ending), or -1
     static constexpr size_t kPtyQueue = 64;  // bytes from the pty queued ahead of the line, at most
     vga_monitor monitor_;
-    FILE *log_ = nullptr;
-    std::string line_;
     std::string ram_init_arg_;
 
     uint64_t cycles_ = 0;
@@ -334,10 +272,9 @@ private:
     uint64_t icache_at_frame_ = 0, dcache_at_frame_ = 0;
     bool arm_pending_ = false;     // a swap happened in this cycle's eval: arm the monitor after it
     bool capture_pending_ = false; // armed, waiting for the frame
-    std::vector<std::pair<uint32_t, uint32_t>> deferred_;  // model writes held back during a capture
     std::vector<KeyWatch> watches_;
 
-    uint32_t doorbells_ = 0, resets_ = 0, frames_ = 0, frames_checked_ = 0, keys_late_ = 0;
+    uint32_t doorbells_ = 0, resets_ = 0, keys_late_ = 0;
     uint32_t last_tag_ = 0;       // the last DOORBELL value
     bool batch_done_ = true;      // the firmware has read DONE_SEQ == last_tag_ since (or no batch yet)
     uint64_t regs_checked_ = 0;   // register reads compared with the model
@@ -346,7 +283,6 @@ private:
     uint64_t vsyncs_ = 0;          // vertical sync pulses at the monitor: the scan-out runs
     bool vsync_n_ = true;
     UartReplies replies_;          // --reply: a copy, since it keeps what was received
-    int firmware_status_ = -1;
     uint32_t swaps_ = 0;
 #if SOCSIM_TRACE
     std::unique_ptr<VerilatedFstC> fst_;  // open while frame trace_frame is traced
@@ -355,12 +291,8 @@ private:
 
 void SocRun::on_gpu_write(uint32_t offset, uint32_t value)
 {
-    if (opt_.check_model) {
-        if (capture_pending_ || arm_pending_) {
-            deferred_.emplace_back(offset, value);
-        } else {
-            model_.write(offset, value);
-        }
+    if (hopt_.check_model) {
+        model_.write(offset, value);  // held from a swap until its frame is compared (on_gpu_swap)
     }
     if (offset == GPU_REG_RESET) {
         resets_++;
@@ -377,7 +309,7 @@ void SocRun::on_gpu_write(uint32_t offset, uint32_t value)
     if (ctrl_ & GPU_CTRL_SWAP_MASK) {
         swap_doorbell_cycle_ = cycles_;
     }
-    for (const auto &k : opt_.keys_at) {
+    for (const auto &k : hopt_.keys_at) {
         if (k.first == doorbells_) {
             tx_.queue(k.second);
             KeyWatch w{doorbells_};
@@ -395,7 +327,7 @@ void SocRun::on_gpu_read(uint32_t offset, uint32_t value)
     if (offset == GPU_REG_DONE_SEQ && value == last_tag_) {
         batch_done_ = true;
     }
-    if (!opt_.check_model || !batch_done_ || !deferred_.empty() || !reg_error_.empty() ||
+    if (!hopt_.check_model || !batch_done_ || model_.holds_writes() || !reg_error_.empty() ||
         offset == GPU_REG_PERF_BUSY_CYCLES || offset == GPU_REG_PERF_SPANS_VISITED) {
         return;
     }
@@ -419,6 +351,7 @@ void SocRun::on_gpu_read(uint32_t offset, uint32_t value)
 void SocRun::on_gpu_swap(uint32_t)
 {
     arm_pending_ = true;
+    model_.hold_writes();
     prev_swap_cycle_ = swap_cycle_;
     swap_cycle_ = cycles_;
     frame_doorbell_cycle_ = swap_doorbell_cycle_;
@@ -590,87 +523,34 @@ void SocRun::vga_sample(int hsync_n, int vsync_n, int r, int g, int b)
 
 void SocRun::uart_byte(uint8_t b)
 {
-    pty_.write(reinterpret_cast<const char *>(&b), 1);
     replies_.byte(b, &tx_);
-    if (b == '\r') {
-        return;
-    }
-    line_.push_back(static_cast<char>(b));
-    if (b == '\n') {
-        flush_uart(false);
-    }
+    uart_.feed(reinterpret_cast<const char *>(&b), 1);
 }
 
-// Complete lines to stdout and the log; with final, an unfinished last line too (stdout only).
-void SocRun::flush_uart(bool final)
-{
-    if (line_.empty()) {
-        return;
-    }
-    const bool complete = line_.back() == '\n';
-    if (!complete && !final) {
-        return;
-    }
-    std::fputs(line_.c_str(), stdout);
-    if (!complete) {
-        std::fputc('\n', stdout);
-    }
-    const std::string status = window_.is_open() ? frame_line_status(line_) : "";
-    if (!status.empty()) {
-        window_.set_status(status);
-    }
-    if (log_ != nullptr && complete) {
-        std::fputs(line_.c_str(), log_);
-    }
-    std::fflush(stdout);
-    line_.clear();
-}
-
-bool SocRun::finish_frame(std::string *error)
+bool SocRun::finish_frame(std::string *error, const char **kind)
 {
     capture_pending_ = false;
-    if (opt_.check_model) {
-        const std::string diff = model_.compare_frame(monitor_.rgb);
-        if (!diff.empty()) {
-            *error = "frame " + std::to_string(frames_) + ": VGA output differs from the golden model: " + diff;
-            return false;
-        }
-        for (const auto &w : deferred_) {
-            model_.write(w.first, w.second);
-        }
-        deferred_.clear();
-    }
-    char path[512] = "(not written)";
-    if (!opt_.frames_dir.empty()) {
-        std::snprintf(path, sizeof path, "%s/%04u.png", opt_.frames_dir.c_str(), frames_);
-        if (png_write_rgb(path, monitor_.rgb, VGA_W, VGA_H) != 0) {
-            *error = std::string("cannot write ") + path;
-            return false;
-        }
-    }
-    window_.show(monitor_.rgb);
-    flush_uart(false);
     // swap: the cycle of the swap, since the previous one; ready: from the previous swap to the
     // doorbell of this frame's last batch (what the frame's work took before its swap waited).
-    std::printf("socsim: frame %04u -> %s | swap at cycle %llu, +%llu | ready +%llu | instructions %llu | "
-                "refills I$ %llu D$ %llu%s\n",
-                frames_, path, static_cast<unsigned long long>(swap_cycle_),
-                static_cast<unsigned long long>(swap_cycle_ - prev_swap_cycle_),
-                static_cast<unsigned long long>(frame_doorbell_cycle_ - prev_swap_cycle_),
-                static_cast<unsigned long long>(instret()),
-                static_cast<unsigned long long>(icache_refills_ - icache_at_frame_),
-                static_cast<unsigned long long>(dcache_refills_ - dcache_at_frame_),
-                opt_.check_model ? " | equals golden model" : "");
+    char detail[256];
+    std::snprintf(detail, sizeof detail,
+                  "swap at cycle %llu, +%llu | ready +%llu | instructions %llu | refills I$ %llu D$ %llu",
+                  static_cast<unsigned long long>(swap_cycle_),
+                  static_cast<unsigned long long>(swap_cycle_ - prev_swap_cycle_),
+                  static_cast<unsigned long long>(frame_doorbell_cycle_ - prev_swap_cycle_),
+                  static_cast<unsigned long long>(instret()),
+                  static_cast<unsigned long long>(icache_refills_ - icache_at_frame_),
+                  static_cast<unsigned long long>(dcache_refills_ - dcache_at_frame_));
+    if (!take_frame(monitor_.rgb, model_, cycles_, detail, error, kind)) {
+        return false;
+    }
     icache_at_frame_ = icache_refills_;
     dcache_at_frame_ = dcache_refills_;
-    std::fflush(stdout);
-    frames_++;
-    frames_checked_ += opt_.check_model ? 1 : 0;
     last_frame_cycle_ = cycles_;
 #if SOCSIM_TRACE
-    if (fst_ != nullptr && frames_ == opt_.trace_frame + 1) {
+    if (fst_ != nullptr && frames() == hopt_.trace_frame + 1) {
         trace_close();
-        std::printf("socsim: trace of frame %u written: %s\n", opt_.trace_frame, opt_.trace.c_str());
+        std::printf("socsim: trace of frame %u written: %s\n", hopt_.trace_frame, hopt_.trace.c_str());
         std::fflush(stdout);
     }
 #endif
@@ -685,13 +565,13 @@ bool SocRun::trace_open(std::string *error)
     fst_->set_time_unit("1ps");
     fst_->set_time_resolution("1ps");
     top_->trace(fst_.get(), 99);
-    fst_->open(opt_.trace.c_str());
+    fst_->open(hopt_.trace.c_str());
     if (!fst_->isOpen()) {
         fst_.reset();
-        *error = "cannot create " + opt_.trace;
+        *error = "cannot create " + hopt_.trace;
         return false;
     }
-    std::printf("socsim: tracing frame %u -> %s\n", opt_.trace_frame, opt_.trace.c_str());
+    std::printf("socsim: tracing frame %u -> %s\n", hopt_.trace_frame, hopt_.trace.c_str());
     std::fflush(stdout);
     return true;
 #else
@@ -710,26 +590,12 @@ void SocRun::trace_close()
 #endif
 }
 
-void SocRun::write_summary(const char *error)
+// The SoC's own keys, after the harness's.
+void SocRun::summary_keys(FILE *f) const
 {
-    if (opt_.summary.empty()) {
-        return;
-    }
-    FILE *f = std::fopen(opt_.summary.c_str(), "w");
-    if (f == nullptr) {
-        std::fprintf(stderr, "socsim: warning: cannot write %s: %s\n", opt_.summary.c_str(), std::strerror(errno));
-        return;
-    }
-    std::fprintf(f, "result=%s\nerror=%s\nfirmware_status=%d\n", std::strcmp(error, "none") ? "error" : "ok", error,
-                 firmware_status_);
-    std::fprintf(f, "batches=%u\ndoorbells_dropped=0\ngpu_resets=%u\n", doorbells_, resets_);
-    std::fprintf(f, "frames=%u\nframes_model_checked=%u\ngpu_cycles=%llu\n", frames_, frames_checked_,
-                 static_cast<unsigned long long>(cycles_));
     std::fprintf(f, "cycles=%llu\ninstructions=%llu\nkeys_late=%u\n", static_cast<unsigned long long>(cycles_),
                  static_cast<unsigned long long>(instret()), keys_late_);
     std::fprintf(f, "registers_model_checked=%llu\n", static_cast<unsigned long long>(regs_checked_));
-    std::fprintf(f, "uart_pty_in=%llu\nuart_pty_dropped=%llu\n", static_cast<unsigned long long>(pty_.bytes_in()),
-                 static_cast<unsigned long long>(pty_.bytes_dropped()));
     std::fprintf(f, "icache_refills=%llu\ndcache_refills=%llu\nuart_framing_errors=%u\n",
                  static_cast<unsigned long long>(icache_refills_), static_cast<unsigned long long>(dcache_refills_),
                  rx_.framing_errors());
@@ -745,71 +611,33 @@ void SocRun::write_summary(const char *error)
 #else
     std::fprintf(f, "leds=0x%02x\n", static_cast<unsigned>(top_->leds));  // SYS LEDS, soc_top's port
 #endif
-    std::fclose(f);
 }
 
-void SocRun::report_speed()
+// The firmware's unfinished last line, the terminal back, and the simulation's speed.
+void SocRun::stop_parts()
 {
-    const double wall = now_s() - t_start_;
+    uart_.finish();
+    terminal_.restore();
+    const double wall = harness_now_s() - t_start_;
     std::printf("socsim: %llu cycles (%.3f s at %.0f MHz) in %.1f s: %.2f M cycles/s\n",
                 static_cast<unsigned long long>(cycles_), cycles_ / static_cast<double>(SOCSIM_CLK_HZ),
                 SOCSIM_CLK_HZ / 1e6, wall, wall > 0 ? cycles_ / wall / 1e6 : 0.0);
     std::fflush(stdout);
 }
 
-int SocRun::fail(const char *kind, const char *fmt, ...)
-{
-    flush_uart(true);
-    va_list ap;
-    va_start(ap, fmt);
-    std::fflush(stdout);
-    std::fputs("socsim: error: ", stderr);
-    std::vfprintf(stderr, fmt, ap);
-    std::fputc('\n', stderr);
-    va_end(ap);
-    terminal_.restore();
-    write_summary(kind);
-    report_speed();
-    return 1;
-}
-
 int SocRun::run()
 {
-    std::signal(SIGINT, on_signal);
-    std::signal(SIGTERM, on_signal);
-    std::signal(SIGHUP, on_signal);
-    std::signal(SIGPIPE, SIG_IGN);
-    t_start_ = now_s();
+    catch_signals();
+    t_start_ = harness_now_s();
 
-    if (!opt_.frames_dir.empty() && mkdir(opt_.frames_dir.c_str(), 0755) != 0 && errno != EEXIST) {
-        return fail("setup", "cannot create %s: %s", opt_.frames_dir.c_str(), std::strerror(errno));
-    }
-    if (!opt_.uart_log.empty()) {
-        log_ = std::fopen(opt_.uart_log.c_str(), "w");
-        if (log_ == nullptr) {
-            return fail("setup", "cannot create %s: %s", opt_.uart_log.c_str(), std::strerror(errno));
-        }
+    const std::string &fw = opt_.harness.firmware.empty() ? opt_.hex : opt_.harness.firmware;
+    if (const int status = open_outputs("socsim " + fw.substr(fw.rfind('/') + 1))) {  // npos + 1 = 0
+        return status;
     }
     std::string error;
+    const char *kind = "none";  // a failed frame's (Harness::take_frame)
     if (!load_ram(&error)) {
         return fail("setup", "%s", error.c_str());
-    }
-    if (!opt_.uart_pty.empty()) {
-        if (!pty_.open(opt_.uart_pty, &error)) {
-            return fail("setup", "--uart-pty %s: %s", opt_.uart_pty.c_str(), error.c_str());
-        }
-        std::printf("socsim: UART on %s (%s)\n", pty_.link().c_str(), pty_.slave_path().c_str());
-        std::fflush(stdout);
-    }
-    if (opt_.window) {
-        std::string fw = opt_.hex.substr(opt_.hex.rfind('/') + 1);  // npos + 1 = 0
-        if (fw.size() > 8 && fw.compare(fw.size() - 8, 8, ".elf.hex") == 0) {
-            fw.resize(fw.size() - 4);  // the ELF it was made from (--fw)
-        }
-        if (!window_.open("socsim " + fw, &error)) {
-            return fail("setup", "--window: %s", error.c_str());
-        }
-        window_.set_max_fps(opt_.window_fps);
     }
 #ifdef SOCSIM_BOARD_ULX3S
     top_->clk_sys = top_->clk_pix = top_->clk_tmds = 0;
@@ -821,7 +649,7 @@ int SocRun::run()
 #endif
     top_->uart_rx = 1;
     top_->eval();  // initial blocks: soc_ram reads the image
-    if (!opt_.trace.empty() && opt_.trace_frame == 0 && !trace_open(&error)) {
+    if (!hopt_.trace.empty() && hopt_.trace_frame == 0 && !trace_open(&error)) {
         return fail("trace", "%s", error.c_str());
     }
     terminal_.enter_raw();
@@ -837,15 +665,12 @@ int SocRun::run()
             vga_monitor_arm(&monitor_);
             capture_pending_ = true;
             swaps_++;
-            if (!opt_.trace.empty() && opt_.trace_frame != 0 && swaps_ == opt_.trace_frame && !trace_open(&error)) {
+            if (!hopt_.trace.empty() && hopt_.trace_frame != 0 && swaps_ == hopt_.trace_frame && !trace_open(&error)) {
                 return fail("trace", "%s", error.c_str());
             }
         }
-        if (capture_pending_ && monitor_.frame_ready) {
-            if (!finish_frame(&error)) {
-                return fail(opt_.check_model && error.find("golden") != std::string::npos ? "model-mismatch" : "write",
-                            "%s", error.c_str());
-            }
+        if (capture_pending_ && monitor_.frame_ready && !finish_frame(&error, &kind)) {
+            return fail(kind, "%s", error.c_str());
         }
         if (monitor_.error[0] != '\0') {
             return fail("capture", "VGA timing: %s", monitor_.error);
@@ -869,47 +694,28 @@ int SocRun::run()
                     return fail("capture", "the last frame did not reach the VGA pins: %s",
                                 monitor_.error[0] ? monitor_.error : "timeout");
                 }
-                if (!finish_frame(&error)) {
-                    return fail(error.find("golden") != std::string::npos ? "model-mismatch" : "write", "%s",
-                                error.c_str());
+                if (!finish_frame(&error, &kind)) {
+                    return fail(kind, "%s", error.c_str());
                 }
             }
-            flush_uart(true);
+            uart_.finish();
             std::printf("socsim: firmware exited with status %d: %u doorbells, %u frames, %llu cycles, %llu "
                         "instructions\n",
-                        firmware_status_, doorbells_, frames_, static_cast<unsigned long long>(cycles_),
+                        firmware_status_, doorbells_, frames(), static_cast<unsigned long long>(cycles_),
                         static_cast<unsigned long long>(instret()));
-            terminal_.restore();
-            write_summary(firmware_status_ == 0 ? "none" : "firmware-status");
-            report_speed();
-            return firmware_status_;
+            return end(firmware_status_, firmware_status_ == 0 ? "none" : "firmware-status");
         }
         if ((cycles_ & 0xFFFF) != 0) {
             continue;
         }
-        if (g_signal) {
-            return fail("signal", "stopped by signal %d", static_cast<int>(g_signal));
-        }
-        bool ctrl_c = false;
-        const std::string keys = terminal_.read_keys(&ctrl_c);
-        if (ctrl_c) {
-            g_signal = SIGINT;
+        std::string keys;
+        if (stop_requested(&keys)) {
+            return fail_signal();
         }
         tx_.queue(keys);
-        if (window_.is_open()) {
-            bool closed = false;
-            tx_.queue(window_.poll(&closed));
-            if (closed && window_closed_at_ < 0) {
-                window_closed_at_ = now_s();
-                tx_.queue("q");  // the firmware quits as on Q, with its status
-            } else if (closed && now_s() - window_closed_at_ > 10.0) {
-                flush_uart(true);
-                std::printf("socsim: the window was closed and the firmware did not quit: stopped\n");
-                terminal_.restore();
-                write_summary("none");
-                report_speed();
-                return 0;
-            }
+        tx_.queue(window_keys());  // "q" once it is closed: the firmware quits as on Q, with its status
+        if (window_given_up(10.0)) {
+            return end_by_window();
         }
         if (tx_.queued() < kPtyQueue) {
             tx_.queue(pty_.read(kPtyQueue - tx_.queued()));
@@ -920,8 +726,8 @@ int SocRun::run()
         }
         // Slow frames: a line every progress_cycles without one.
         if (cycles_ - std::max(last_frame_cycle_, last_progress_cycle_) >= opt_.progress_cycles) {
-            flush_uart(false);
-            std::printf("socsim: %u frames, %llu M cycles\n", frames_, static_cast<unsigned long long>(cycles_ / 1000000));
+            std::printf("socsim: %u frames, %llu M cycles\n", frames(),
+                        static_cast<unsigned long long>(cycles_ / 1000000));
             std::fflush(stdout);
             last_progress_cycle_ = cycles_;
         }

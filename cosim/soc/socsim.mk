@@ -24,8 +24,9 @@ include bsp/soc/soc_ram.mk
 SOCSIM_GPU_GFLAGS ?= $(if $(filter 1,$(ZBUF)), -GENABLE_ZBUF=1)
 SOCSIM_DIR   := $(BUILD)/socsim-$(SOC_RAM_KIB)k$(if $(filter 1,$(ZBUF)),-z)$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
 SOCSIM       := $(SOCSIM_DIR)/socsim
-SOCSIM_SRC   := $(filter-out cosim/soc/tmds_decoder.cpp,$(wildcard cosim/soc/*.cpp)) cosim/model_check.cpp \
-                cosim/uart_terminal.cpp cosim/uart_pty.cpp cosim/sdl_window.cpp
+SOCSIM_SRC   := $(filter-out cosim/soc/tmds_decoder.cpp,$(wildcard cosim/soc/*.cpp)) cosim/harness.cpp \
+                cosim/model_check.cpp cosim/uart_pump.cpp cosim/uart_terminal.cpp cosim/uart_pty.cpp \
+                cosim/sdl_window.cpp
 SOCSIM_SV    := cosim/soc/socsim_taps.sv
 # soc firmware: the same sources as `make run`, built by a recursive make for FW_PLATFORM=soc.
 SOC_FW_DIR   := $(BUILD)/firmware-soc
@@ -35,7 +36,8 @@ SOC_FW_MAKE   = $(MAKE) --no-print-directory FW_PLATFORM=soc BUILD=$(BUILD) SOC_
 
 SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_FILES) contract/gpu_regs.vh \
                contract/soc_map.vh contract/soc_map.h $(SOCSIM_SRC) $(SOCSIM_SV) $(wildcard cosim/soc/*.h) \
-               cosim/model_check.h cosim/keys_at.h cosim/uart_pty.h cosim/sdl_window.h $(COSIM_C_LIB) $(GPU_MODEL_LIB)
+               cosim/harness.h cosim/model_check.h cosim/keys_at.h cosim/uart_pump.h cosim/uart_pty.h \
+               cosim/uart_terminal.h cosim/sdl_window.h $(COSIM_C_LIB) $(GPU_MODEL_LIB)
 
 # The Verilator command of a socsim build, recorded in <dir>/cmd.txt (rewritten only when it changes)
 # so that a change of parameters or flags rebuilds, and an edit elsewhere in this file does not.
