@@ -12,7 +12,7 @@ work=$(fresh_dir docs-readme-commands)
 
 run_to "$work/plan.tsv" 20 "$PYTHON" tests/docs/readme_commands.py --plan
 expect_status 0 "readme_commands.py --plan: $(cat "$work/plan.tsv")"
-bash tests/run_all.sh --list >"$work/suites.txt"
+SUITE='*' bash tests/run_all.sh --list >"$work/suites.txt"
 
 n=0 ran=0 elsewhere=0 skipped=()
 while IFS=$'\t' read -r way first second; do
@@ -22,12 +22,14 @@ while IFS=$'\t' read -r way first second; do
         eval "args=($first)"
         out="$work/$n"
         mkdir -p "$out"
-        echo "== make $first" >>"$work/commands.log"
+        start=$SECONDS
         build="$BUILD"
         # make clean removes BUILD and OUT: here, a BUILD and an OUT of its own.
         [[ " $first " != *" clean "* ]] || { build="$out/build"; mkdir -p "$build" "$out/out"; }
+        # One firmware folder for all the commands: those with the same flags share their objects.
         run_to "$out/make.log" 1200 make --no-print-directory "${args[@]}" BUILD="$build" OUT="$out/out" \
-            FW_DIR="$out/fw" SOC_FW_DIR="$out/fw-soc" LEAN_ROOT="$out/lean" </dev/null
+            FW_DIR="$work/fw" SOC_FW_DIR="$work/fw-soc" LEAN_ROOT="$work/lean" </dev/null
+        echo "== make $first ($((SECONDS - start)) s)" >>"$work/commands.log"
         cat "$out/make.log" >>"$work/commands.log"
         [ "$status" -eq 0 ] || fail "README's 'make $first' failed (status $status): $(tail -n 15 "$out/make.log")"
         # Quiet by default: one short line a step, never a compiler's or Verilator's command line.
