@@ -11,12 +11,9 @@
 //               holds stage B until then (at once when the triangle does not need the plane);
 //   outputs     start = 2^16 v0 + A off_x + B off_y at lane 0 of the first span; dx, dy = 16 A,
 //               16 B, the steps per pixel. Valid while `ready` and stage B holds the triangle.
-// A build without the plane (ENABLE 0: no depth buffer, or no Gouraud triangles) has none of this:
-// ready at once, start and steps 0, the inputs unused.
 `default_nettype none
 
 module gpu_plane_setup #(
-    parameter integer ENABLE = 1,      // 0: the plane is not built (ENABLE_ZBUF, ENABLE_GOURAUD)
     parameter integer DIV_QBITS = 2,   // quotient bits per divider clock (gpu_div QBITS)
     parameter integer START_W = gpu_pkg::Z_W,      // the start value's width (Z_W, I_W)
     parameter integer STEP_W = gpu_pkg::ZSTEP_W    // the steps' width (ZSTEP_W, ISTEP_W)
@@ -44,53 +41,41 @@ module gpu_plane_setup #(
     output wire signed [STEP_W-1:0]  dx,
     output wire signed [STEP_W-1:0]  dy
 );
-    generate
-        if (ENABLE != 0) begin : g_plane
-        wire signed [16:0] dv1 = 17'({1'b0, a_v1}) - 17'({1'b0, a_v0});
-        wire signed [16:0] dv2 = 17'({1'b0, a_v2}) - 17'({1'b0, a_v0});
-        wire signed [34:0] num_a_w = dv1 * a_d02y - dv2 * a_d01y;  // operands widen to 35 bits first
-        wire signed [34:0] num_b_w = dv2 * a_d01x - dv1 * a_d02x;
-        reg signed [34:0] num_a_q, num_b_q;
-        always @(posedge clk) begin
-            if (a_load) begin
-                num_a_q <= num_a_w;
-                num_b_q <= num_b_w;
-            end
+    wire signed [16:0] dv1 = 17'({1'b0, a_v1}) - 17'({1'b0, a_v0});
+    wire signed [16:0] dv2 = 17'({1'b0, a_v2}) - 17'({1'b0, a_v0});
+    wire signed [34:0] num_a_w = dv1 * a_d02y - dv2 * a_d01y;  // operands widen to 35 bits first
+    wire signed [34:0] num_b_w = dv2 * a_d01x - dv1 * a_d02x;
+    reg signed [34:0] num_a_q, num_b_q;
+    always @(posedge clk) begin
+        if (a_load) begin
+            num_a_q <= num_a_w;
+            num_b_q <= num_b_w;
         end
+    end
 
-        reg started_q;                     // this triangle's division has been started
-        wire div_start = b_need && !started_q;
-        wire valid_a, valid_b;             // the quotients are ready (both dividers take the same time)
-        wire signed [31:0] grad_a, grad_b;
-        gpu_div #(.QBITS(DIV_QBITS)) u_div_a (.clk(clk), .rst(rst), .start(div_start),
-            .dividend(51'(num_a_q) <<< 16), .divisor(b_area), .valid(valid_a), .quotient(grad_a));
-        gpu_div #(.QBITS(DIV_QBITS)) u_div_b (.clk(clk), .rst(rst), .start(div_start),
-            .dividend(51'(num_b_q) <<< 16), .divisor(b_area), .valid(valid_b), .quotient(grad_b));
-        always @(posedge clk) begin
-            if (rst || b_next) begin
-                started_q <= 1'b0;
-            end else if (div_start) begin
-                started_q <= 1'b1;
-            end
+    reg started_q;                     // this triangle's division has been started
+    wire div_start = b_need && !started_q;
+    wire valid_a, valid_b;             // the quotients are ready (both dividers take the same time)
+    wire signed [31:0] grad_a, grad_b;
+    gpu_div #(.QBITS(DIV_QBITS)) u_div_a (.clk(clk), .rst(rst), .start(div_start),
+        .dividend(51'(num_a_q) <<< 16), .divisor(b_area), .valid(valid_a), .quotient(grad_a));
+    gpu_div #(.QBITS(DIV_QBITS)) u_div_b (.clk(clk), .rst(rst), .start(div_start),
+        .dividend(51'(num_b_q) <<< 16), .divisor(b_area), .valid(valid_b), .quotient(grad_b));
+    always @(posedge clk) begin
+        if (rst || b_next) begin
+            started_q <= 1'b0;
+        end else if (div_start) begin
+            started_q <= 1'b1;
         end
-        // Timeline in stage B: clock 0 starts both dividers from the registered numerators, the next
-        // STEPS clocks develop the quotients, and in the clock after they are valid and stage C takes
-        // them straight from the dividers (they hold until the next start, a clock later at the
-        // earliest): STEPS + 2 clocks a triangle that needs the plane.
-        assign ready = !b_need || (started_q && valid_a);
-        assign start = (START_W'($signed({1'b0, b_v0})) <<< 16)
-                     + START_W'(grad_a) * START_W'(b_off_x) + START_W'(grad_b) * START_W'(b_off_y);
-        assign dx = STEP_W'(grad_a) <<< 4;
-        assign dy = STEP_W'(grad_b) <<< 4;
-        wire unused_valid_b = valid_b;
-        end else begin : g_none
-            assign ready = 1'b1;
-            assign start = {START_W{1'b0}};
-            assign dx = {STEP_W{1'b0}};
-            assign dy = {STEP_W{1'b0}};
-            wire unused = clk | rst | a_load | (|a_v0) | (|a_v1) | (|a_v2) | (|a_d01x) | (|a_d01y)
-                        | (|a_d02x) | (|a_d02y) | b_need | b_next | (|b_area) | (|b_v0) | (|b_off_x)
-                        | (|b_off_y);
-        end
-    endgenerate
+    end
+    // Timeline in stage B: clock 0 starts both dividers from the registered numerators, the next
+    // STEPS clocks develop the quotients, and in the clock after they are valid and stage C takes
+    // them straight from the dividers (they hold until the next start, a clock later at the
+    // earliest): STEPS + 2 clocks a triangle that needs the plane.
+    assign ready = !b_need || (started_q && valid_a);
+    assign start = (START_W'($signed({1'b0, b_v0})) <<< 16)
+                 + START_W'(grad_a) * START_W'(b_off_x) + START_W'(grad_b) * START_W'(b_off_y);
+    assign dx = STEP_W'(grad_a) <<< 4;
+    assign dy = STEP_W'(grad_b) <<< 4;
+    wire unused_valid_b = valid_b;
 endmodule

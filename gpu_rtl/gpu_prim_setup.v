@@ -274,13 +274,13 @@ module gpu_prim_setup #(
     function automatic signed [15:0] max3(input signed [15:0] a, input signed [15:0] b, input signed [15:0] c);
         max3 = (a > b) ? ((a > c) ? a : c) : ((b > c) ? b : c);
     endfunction
-    // Pixels by their centres (16p + 8): floor((v + bias) / 16) is the first pixel whose centre is
-    // >= v with FIRST_CENTRE (+7), the last one whose centre is <= v with LAST_CENTRE (-8).
-    localparam signed [4:0] FIRST_CENTRE = 5'sd7, LAST_CENTRE = -5'sd8;
-    function automatic signed [12:0] centre_pixel(input signed [15:0] v, input signed [4:0] bias);
+    // Pixels by their centres (16p + 8): with FIRST_CENTRE the first pixel whose centre is >= v,
+    // floor((v + 7) / 16); with LAST_CENTRE the last one whose centre is <= v, floor((v - 8) / 16).
+    localparam FIRST_CENTRE = 1'b1, LAST_CENTRE = 1'b0;
+    function automatic signed [12:0] centre_pixel(input signed [15:0] v, input first);
         reg signed [16:0] t;
         begin
-            t = 17'(v) + 17'(bias);
+            t = first ? 17'(v) + 17'sd7 : 17'(v) - 17'sd8;
             centre_pixel = 13'(t >>> 4);
         end
     endfunction
@@ -315,13 +315,13 @@ module gpu_prim_setup #(
     reg signed [15:0] bx0_q, by0_q, bx1_q, by1_q, bx2_q, by2_q;
     reg signed [34:0] b_area_q;
     reg signed [12:0] b_rpx0_q, b_rpx1_q, b_rpy0_q, b_rpy1_q;  // box of pixel centres, unclamped
-    reg [15:0] bz0_q;                  // v0's depth: the depth plane's start (u_z_plane)
-    // Lane 0 of the first span minus v0, Q12.4: the planes' start offsets (u_z_plane, u_i_plane),
-    // registered here so that stage C's products start from registers (the box, the clamp and the
-    // span in front of them held the Gouraud board build to 46.2 MHz against 50).
+    reg [15:0] bz0_q;                  // v0's depth: the depth plane's start (g_z)
+    // Lane 0 of the first span minus v0, Q12.4: the planes' start offsets (g_z, g_i), registered
+    // here so that stage C's products start from registers (the box, the clamp and the span
+    // in front of them held the Gouraud board build to 46.2 MHz against 50).
     reg signed [17:0] b_off_x_q, b_off_y_q;
     reg b_shaded_q;
-    reg [15:0] bi0_q;                  // v0's intensity: the intensity plane's start (u_i_plane)
+    reg [15:0] bi0_q;                  // v0's intensity: the intensity plane's start (g_i)
     wire c_free;
     wire b_z_ready;                    // the depth and intensity gradients are known (or not needed)
     wire z_ready, i_ready;             // each of them
@@ -422,30 +422,50 @@ module gpu_prim_setup #(
     assign c_free = !out_valid || out_ready;
 
     // ---- the depth plane (ENABLE_ZBUF) and the intensity plane (ENABLE_GOURAUD: the same formula
-    // on VTX_I), each by its gpu_plane_setup while stage B holds the triangle (a build without the
-    // plane has an empty one: ready, zeros) ----
+    // on VTX_I), each by its gpu_plane_setup while stage B holds the triangle ----
     wire a_load = b_free && a_valid_q;               // stage B takes stage A's triangle
     wire b_next = b_leaves || !b_valid_q;            // ... and hands it on, or holds none
     wire signed [Z_W-1:0] z_start_w;
     wire signed [ZSTEP_W-1:0] z_dx_w, z_dy_w;
-    gpu_plane_setup #(.ENABLE(ENABLE_ZBUF), .DIV_QBITS(DIV_QBITS), .START_W(Z_W), .STEP_W(ZSTEP_W)) u_z_plane (
-        .clk(clk), .rst(rst),
-        .a_load(a_load), .a_v0(az0_q), .a_v1(az1_q), .a_v2(az2_q),
-        .a_d01x(d01x), .a_d01y(d01y), .a_d02x(d02x), .a_d02y(d02y),
-        .b_need(b_valid_q && !b_is_line_q && ctrl_ztest && b_drawable), .b_next(b_next),
-        .b_area(b_area_q), .b_v0(bz0_q), .b_off_x(b_off_x_q), .b_off_y(b_off_y_q),
-        .ready(z_ready), .start(z_start_w), .dx(z_dx_w), .dy(z_dy_w));
+    generate
+        if (ENABLE_ZBUF != 0) begin : g_z
+            gpu_plane_setup #(.DIV_QBITS(DIV_QBITS), .START_W(Z_W), .STEP_W(ZSTEP_W)) u_plane (
+                .clk(clk), .rst(rst),
+                .a_load(a_load), .a_v0(az0_q), .a_v1(az1_q), .a_v2(az2_q),
+                .a_d01x(d01x), .a_d01y(d01y), .a_d02x(d02x), .a_d02y(d02y),
+                .b_need(b_valid_q && !b_is_line_q && ctrl_ztest && b_drawable), .b_next(b_next),
+                .b_area(b_area_q), .b_v0(bz0_q), .b_off_x(b_off_x_q), .b_off_y(b_off_y_q),
+                .ready(z_ready), .start(z_start_w), .dx(z_dx_w), .dy(z_dy_w));
+        end else begin : g_no_z
+            assign z_ready = 1'b1;
+            assign z_start_w = {Z_W{1'b0}};
+            assign z_dx_w = {ZSTEP_W{1'b0}};
+            assign z_dy_w = {ZSTEP_W{1'b0}};
+            wire unused_z = ctrl_ztest | (|vz_rd_data) | (|bz0_q) | (|az1_q) | (|az2_q);
+        end
+    endgenerate
 
-    // (Meaningless for a triangle that is not shaded: the walker then ignores them.)
     wire signed [I_W-1:0] i_start_w;
     wire signed [ISTEP_W-1:0] i_dx_w, i_dy_w;
-    gpu_plane_setup #(.ENABLE(ENABLE_GOURAUD), .DIV_QBITS(DIV_QBITS), .START_W(I_W), .STEP_W(ISTEP_W)) u_i_plane (
-        .clk(clk), .rst(rst),
-        .a_load(a_load), .a_v0(ai0_q), .a_v1(ai1_q), .a_v2(ai2_q),
-        .a_d01x(d01x), .a_d01y(d01y), .a_d02x(d02x), .a_d02y(d02y),
-        .b_need(b_valid_q && !b_is_line_q && b_shaded_q && b_drawable), .b_next(b_next),
-        .b_area(b_area_q), .b_v0(bi0_q), .b_off_x(b_off_x_q), .b_off_y(b_off_y_q),
-        .ready(i_ready), .start(i_start_w), .dx(i_dx_w), .dy(i_dy_w));
+    generate
+        if (ENABLE_GOURAUD != 0) begin : g_i
+            // (Meaningless for a triangle that is not shaded: the walker then ignores them.)
+            gpu_plane_setup #(.DIV_QBITS(DIV_QBITS), .START_W(I_W), .STEP_W(ISTEP_W)) u_plane (
+                .clk(clk), .rst(rst),
+                .a_load(a_load), .a_v0(ai0_q), .a_v1(ai1_q), .a_v2(ai2_q),
+                .a_d01x(d01x), .a_d01y(d01y), .a_d02x(d02x), .a_d02y(d02y),
+                .b_need(b_valid_q && !b_is_line_q && b_shaded_q && b_drawable), .b_next(b_next),
+                .b_area(b_area_q), .b_v0(bi0_q), .b_off_x(b_off_x_q), .b_off_y(b_off_y_q),
+                .ready(i_ready), .start(i_start_w), .dx(i_dx_w), .dy(i_dy_w));
+        end else begin : g_no_i
+            assign i_ready = 1'b1;
+            assign i_start_w = {I_W{1'b0}};
+            assign i_dx_w = {ISTEP_W{1'b0}};
+            assign i_dy_w = {ISTEP_W{1'b0}};
+            wire unused_i = (|vi_rd_data) | (|bi0_q) | (|ai1_q) | (|ai2_q) | b_shaded_q
+                          | (|b_off_x_q) | (|b_off_y_q) | a_load | b_next;  // the depth plane's too, if built
+        end
+    endgenerate
 
     wire [8:0] box_w = 9'(b_px1 - b_px0 + 13'sd1);
     wire [7:0] box_h = 8'(b_py1 - b_py0 + 13'sd1);
