@@ -11,25 +11,17 @@
 // bank may change without a visible tear. The read ports have one cycle of latency: fb_rd_addr is a
 // pixel of the front bank (row-major, GPU_FB_WIDTH a row), pal_rd_addr a palette entry, RGB444. The
 // palette is written on clk and read on clk_pix without a handshake (gpu_top says why that is
-// enough). Build options leave out what a scene does not need and are reported in CAPS; their
-// defaults, the capacities and the frame size come from the contract (gpu_pkg::GPU_*, generated
-// from contract/gpu_contract.toml).
+// enough). Build options leave out what a scene does not need and are reported in CAPS. The build
+// parameters (capacities and options; defaults, like the frame size, from the contract) are
+// declared once, in contract/gpu_build_params.vh, generated from contract/gpu_contract.toml. What a
+// build option costs: ENABLE_ZBUF 1.2 Mb more block RAM (ZBUF_BITS / 16 of it: 76,800 bits a depth
+// bit kept) and a 16-bit VTX_Z RAM; ENABLE_WMASK 4-bit framebuffer lanes; ENABLE_GOURAUD a 16-bit
+// VTX_I RAM, two dividers and the intensity lanes.
+`include "contract/gpu_build_params.vh"
 `default_nettype none
 
 module gpu_core #(
-    // Capacities and build options; defaults from the contract (limits and [build] table).
-    parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,                    // vertex buffer capacity
-    parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,                    // index buffer capacity
-    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,              // pixels per clock: 1, 4, 8, 16
-    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,  // line primitives (CAPS_LINES)
-    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,    // 16-bit depth buffer (CAPS_ZBUF):
-                                                                         // 1.2 Mb more block RAM
-    parameter integer ENABLE_WMASK = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK,  // framebuffer write mask
-                                                                         // (CAPS_WMASK): 4-bit lanes
-    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,        // depth bits kept, 1..16
-                                                                         // (CAPS_ZBUF_BITS): 76,800 bits each
-    parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,  // Gouraud triangles
-                                         // (CAPS_GOURAUD): VTX_I RAM, two dividers, intensity lanes
+    `GPU_BUILD_PARAMS,                   // capacities and build options (contract/gpu_build_params.vh)
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer VTX_AW = $clog2(VTX_CAP * 2),

@@ -274,19 +274,14 @@ module gpu_prim_setup #(
     function automatic signed [15:0] max3(input signed [15:0] a, input signed [15:0] b, input signed [15:0] c);
         max3 = (a > b) ? ((a > c) ? a : c) : ((b > c) ? b : c);
     endfunction
-    // First pixel whose centre (16p + 8) is >= v: floor((v + 7) / 16). Last one <= v: floor((v - 8) / 16).
-    function automatic signed [12:0] first_centre(input signed [15:0] v);
+    // Pixels by their centres (16p + 8): with FIRST_CENTRE the first pixel whose centre is >= v,
+    // floor((v + 7) / 16); with LAST_CENTRE the last one whose centre is <= v, floor((v - 8) / 16).
+    localparam FIRST_CENTRE = 1'b1, LAST_CENTRE = 1'b0;
+    function automatic signed [12:0] centre_pixel(input signed [15:0] v, input first);
         reg signed [16:0] t;
         begin
-            t = 17'(v) + 17'sd7;
-            first_centre = 13'(t >>> 4);
-        end
-    endfunction
-    function automatic signed [12:0] last_centre(input signed [15:0] v);
-        reg signed [16:0] t;
-        begin
-            t = 17'(v) - 17'sd8;
-            last_centre = 13'(t >>> 4);
+            t = first ? 17'(v) + 17'sd7 : 17'(v) - 17'sd8;
+            centre_pixel = 13'(t >>> 4);
         end
     endfunction
     function automatic signed [12:0] clamp(input signed [12:0] v, input signed [12:0] hi);
@@ -304,8 +299,8 @@ module gpu_prim_setup #(
     endfunction
 
     // The box's first pixel centres from stage A's corners (unclamped).
-    wire signed [12:0] a_rpx0 = first_centre(min3(ax0_q, ax1_q, ax2_q));
-    wire signed [12:0] a_rpy0 = first_centre(min3(ay0_q, ay1_q, ay2_q));
+    wire signed [12:0] a_rpx0 = centre_pixel(min3(ax0_q, ax1_q, ax2_q), FIRST_CENTRE);
+    wire signed [12:0] a_rpy0 = centre_pixel(min3(ay0_q, ay1_q, ay2_q), FIRST_CENTRE);
     wire [8:0] a_px0 = 9'(clamp(a_rpx0, X_LAST));  // clamped as stage C clamps b_rpx0_q
     wire [7:0] a_py0 = 8'(clamp(a_rpy0, Y_LAST));
     wire signed [16:0] d01x = 17'(ax1_q) - 17'(ax0_q);
@@ -353,9 +348,9 @@ module gpu_prim_setup #(
                 b_shaded_q <= a_shaded_q;
                 bi0_q <= ai0_q;
                 b_rpx0_q <= a_rpx0;
-                b_rpx1_q <= last_centre(max3(ax0_q, ax1_q, ax2_q));
+                b_rpx1_q <= centre_pixel(max3(ax0_q, ax1_q, ax2_q), LAST_CENTRE);
                 b_rpy0_q <= a_rpy0;
-                b_rpy1_q <= last_centre(max3(ay0_q, ay1_q, ay2_q));
+                b_rpy1_q <= centre_pixel(max3(ay0_q, ay1_q, ay2_q), LAST_CENTRE);
                 b_off_x_q <= span_centre_x(a_px0) - 18'(ax0_q);  // -32759 .. 37896
                 b_off_y_q <= row_centre_y(a_py0) - 18'(ay0_q);
             end

@@ -12,25 +12,13 @@
 // gpu_framebuffer: it changes only at vertical blank) and the reset (gpu_cdc_sync below: rst_pix
 // follows rst two clk_pix cycles later). The palette is written on clk and read on clk_pix without
 // a handshake: a palette write during the visible area may show one wrong colour for one pixel (the
-// firmware writes it at start and when a scene changes). Build options leave out what a scene does not need and
-// are reported in CAPS; their defaults, the capacities and the frame size come from the contract
-// (gpu_pkg::GPU_*, generated from contract/gpu_contract.toml).
+// firmware writes it at start and when a scene changes). The build parameters (capacities and
+// options, reported in CAPS) are gpu_core's, declared once in contract/gpu_build_params.vh.
+`include "contract/gpu_build_params.vh"
 `default_nettype none
 
 module gpu_top #(
-    // Capacities and build options; defaults from the contract (limits and [build] table).
-    parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,                    // vertex buffer capacity
-    parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,                    // index buffer capacity
-    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,              // pixels per clock: 1, 4, 8, 16
-    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,  // line primitives (CAPS_LINES)
-    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,    // 16-bit depth buffer (CAPS_ZBUF):
-                                                                         // 1.2 Mb more block RAM
-    parameter integer ENABLE_WMASK = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK,  // framebuffer write mask
-                                                                         // (CAPS_WMASK)
-    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,        // depth bits kept, 1..16
-                                                                         // (CAPS_ZBUF_BITS; see gpu_core)
-    parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,  // Gouraud triangles
-                                         // (CAPS_GOURAUD): VTX_I RAM, two dividers, intensity lanes
+    `GPU_BUILD_PARAMS,                   // capacities and build options, passed to gpu_core
     parameter integer PIX_DIV = 4,       // clk_pix clocks per VGA pixel (1 for a 25 MHz clk_pix)
     localparam integer FB_PAW = $clog2(gpu_pkg::GPU_FB_PIXELS)
 ) (
@@ -63,9 +51,7 @@ module gpu_top #(
     wire [7:0] fb_rd_data, pal_rd_addr;
     wire [11:0] pal_rd_data;
 
-    gpu_core #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .SPAN_W(SPAN_W),
-               .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS),
-               .ENABLE_WMASK(ENABLE_WMASK), .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_core (
+    gpu_core #(`GPU_BUILD_PARAMS_PASS) u_core (
         .clk(clk), .rst(rst),
         .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr), .bus_wdata(bus_wdata),
         .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid),

@@ -17,6 +17,9 @@
 // Clocks: clk runs everything but the GPU's scan-out, which runs on clk_pix (gpu_top crosses between
 // them): a board gives a 25 MHz pixel clock; a simulation may tie clk_pix to clk and say so with
 // PIX_CLK_HZ = CLK_HZ. PIX_CLK_HZ must be a multiple of the 25 MHz VGA pixel rate.
+// The GPU's build parameters (contract/gpu_build_params.vh) are passed through to gpu_top; a scene's
+// manifest may size the buffers (VTX_CAP, TRI_CAP) to it; ENABLE_WMASK costs 4 EBR on ECP5 (README).
+`include "contract/gpu_build_params.vh"
 `default_nettype none
 
 module soc_top #(
@@ -25,15 +28,7 @@ module soc_top #(
     parameter integer CLK_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,  // clk's frequency: UART divider, SYS CLK_HZ
     parameter integer PIX_CLK_HZ = 25000000,   // clk_pix's frequency: 25 MHz, or CLK_HZ when tied to clk
     parameter integer BAUD = soc_pkg::SOC_UART_BAUD,         // UART bits per second
-    // The GPU's build options (gpu_top), passed through; defaults from the GPU contract.
-    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
-    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
-    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
-    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,
-    parameter integer ENABLE_WMASK = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK,      // 4 EBR on ECP5 (README)
-    parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,
-    parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,   // a scene's manifest may size the buffers to it
-    parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,
+    `GPU_BUILD_PARAMS,                         // the GPU's (gpu_top), passed through
     localparam integer PIX_HZ = 25000000,      // VGA 640x480@60 pixel rate
     localparam integer PIX_DIV = PIX_CLK_HZ / PIX_HZ,
     localparam integer RAM_AW = $clog2(RAM_BYTES / 4),
@@ -248,14 +243,7 @@ module soc_top #(
     );
 
     gpu_top #(
-        .SPAN_W       (SPAN_W),
-        .ENABLE_LINES (ENABLE_LINES),
-        .ENABLE_ZBUF  (ENABLE_ZBUF),
-        .ZBUF_BITS    (ZBUF_BITS),
-        .ENABLE_WMASK (ENABLE_WMASK),
-        .ENABLE_GOURAUD (ENABLE_GOURAUD),
-        .VTX_CAP      (VTX_CAP),
-        .TRI_CAP      (TRI_CAP),
+        `GPU_BUILD_PARAMS_PASS,
         .PIX_DIV      (PIX_DIV)
     ) u_gpu (
         .clk         (clk),

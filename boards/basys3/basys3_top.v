@@ -1,5 +1,5 @@
 // basys3_top: the SoC on the Digilent Basys3 (XC7A35T-1CPG236C) — the board's pins
-// (boards/basys3/basys3.xdc) and its clocks (digilent_clocks: one MMCM) around digilent_system.
+// (boards/basys3/basys3.xdc) on digilent_top (the clocks, one MMCM, around digilent_system).
 //
 // Contract: from the 100 MHz oscillator, digilent_clocks makes the system clock (SYS_MHZ) and the
 // 25 MHz pixel clock; the SoC is held in reset until the MMCM locks and while the centre button
@@ -11,17 +11,15 @@
 // the SoC's RAM (8 KiB a RAMB36). So RAM_BYTES defaults to 16 KiB here, the largest that fits (49
 // of 50; 24 KiB needs 51, the SoC's default 192 KiB 93): too small for any scene (tetra needs
 // 57.5 KiB), enough for small test programs. yosys synth_xilinx counts: boards/basys3/README.md.
-// Only the pin names and the reset polarity live here; the logic is in digilent_system.
+// Only the pin names, the reset polarity and the RAM size live here; the rest is digilent_top's.
+`include "contract/gpu_build_params.vh"
 `default_nettype none
 
 module basys3_top #(
     parameter integer SYS_MHZ = 50,                    // a divisor of 8000 (digilent_clocks)
     parameter integer RAM_BYTES = 16 * 1024,           // the firmware's SOC_RAM_KIB (see above)
     parameter RAM_INIT = "",                           // the firmware's RAM image
-    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
-    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
-    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
-    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS
+    `GPU_BUILD_PARAMS                                  // the GPU's (digilent_top)
 ) (
     input  wire        clk,            // W5, 100 MHz
     // USB-UART (FT2232HQ channel B)
@@ -37,35 +35,22 @@ module basys3_top #(
     output wire        Hsync,          // active low
     output wire        Vsync           // active low
 );
-    wire clk_sys, clk_pix, mmcm_locked;
-    digilent_clocks #(.SYS_MHZ(SYS_MHZ)) u_clocks (
-        .clk_100mhz (clk),
-        .clk_sys    (clk_sys),
-        .clk_pix    (clk_pix),
-        .locked     (mmcm_locked)
-    );
-
-    digilent_system #(
-        .SYS_HZ       (SYS_MHZ * 1000000),
+    digilent_top #(
+        .SYS_MHZ      (SYS_MHZ),
         .RAM_BYTES    (RAM_BYTES),
         .RAM_INIT     (RAM_INIT),
-        .SPAN_W       (SPAN_W),
-        .ENABLE_LINES (ENABLE_LINES),
-        .ENABLE_ZBUF  (ENABLE_ZBUF),
-        .ZBUF_BITS    (ZBUF_BITS)
-    ) u_system (
-        .clk_sys     (clk_sys),
-        .clk_pix     (clk_pix),
-        .mmcm_locked (mmcm_locked),
-        .btn_reset   (btnC),
-        .uart_rx     (RsRx),
-        .uart_tx     (RsTx),
-        .led         (led),
-        .vga_r       (vgaRed),
-        .vga_g       (vgaGreen),
-        .vga_b       (vgaBlue),
-        .vga_hs_n    (Hsync),
-        .vga_vs_n    (Vsync)
+        `GPU_BUILD_PARAMS_PASS
+    ) u_board (
+        .clk_100mhz (clk),
+        .uart_rx    (RsRx),
+        .uart_tx    (RsTx),
+        .btn_reset  (btnC),
+        .led        (led),
+        .vga_r      (vgaRed),
+        .vga_g      (vgaGreen),
+        .vga_b      (vgaBlue),
+        .vga_hs_n   (Hsync),
+        .vga_vs_n   (Vsync)
     );
 endmodule
 

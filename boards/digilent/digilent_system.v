@@ -16,16 +16,15 @@
 // Clock domains: clk_sys and clk_pix; every crossing is soc_top's / gpu_top's own (gpu_cdc_sync,
 // gpu_cdc_pulse). The only logic here on clk_pix is the output register, fed by gpu_top's clk_pix
 // outputs.
+// The GPU's build parameters (contract/gpu_build_params.vh) are passed through to soc_top.
+`include "contract/gpu_build_params.vh"
 `default_nettype none
 
 module digilent_system #(
     parameter integer SYS_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,        // clk_sys: the SoC's CLK_HZ
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // on-chip RAM (soc_top)
     parameter RAM_INIT = "",                                       // the firmware image (soc_top)
-    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,        // the GPU's build options
-    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
-    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
-    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS
+    `GPU_BUILD_PARAMS                                              // the GPU's (soc_top)
 ) (
     // clocks (the board top's MMCM)
     input  wire        clk_sys,
@@ -53,10 +52,7 @@ module digilent_system #(
         .RAM_INIT     (RAM_INIT),
         .CLK_HZ       (SYS_HZ),
         .PIX_CLK_HZ   (25000000),
-        .SPAN_W       (SPAN_W),
-        .ENABLE_LINES (ENABLE_LINES),
-        .ENABLE_ZBUF  (ENABLE_ZBUF),
-        .ZBUF_BITS    (ZBUF_BITS)
+        `GPU_BUILD_PARAMS_PASS
     ) u_soc (
         .clk               (clk_sys),
         .clk_pix           (clk_pix),

@@ -1,5 +1,5 @@
 // nexys_a7_top: the SoC on the Digilent Nexys A7-100T (XC7A100T-1CSG324C) — the board's pins
-// (boards/nexys_a7/nexys_a7.xdc) and its clocks (digilent_clocks: one MMCM) around digilent_system.
+// (boards/nexys_a7/nexys_a7.xdc) on digilent_top (the clocks, one MMCM, around digilent_system).
 //
 // Contract: from the 100 MHz oscillator, digilent_clocks makes the system clock (SYS_MHZ) and the
 // 25 MHz pixel clock; the SoC is held in reset until the MMCM locks and while the red CPU RESET
@@ -7,17 +7,15 @@
 // (UART_TXD_IN in, UART_RXD_OUT out: named from the bridge's side; 115200 8N1, no flow control).
 // The 12-bit VGA connector shows the GPU's 640x480@60 picture. The 16 LEDs are digilent_system's
 // (0 heartbeat, 1 frames, 2 GPU error, 3 exited, 11:4 SYS LEDS, 15:12 exit code).
-// Only the pin names and the reset polarity live here; the logic is in digilent_system.
+// Only the pin names and the reset polarity live here; the rest is digilent_top's.
+`include "contract/gpu_build_params.vh"
 `default_nettype none
 
 module nexys_a7_top #(
     parameter integer SYS_MHZ = 50,                                // a divisor of 8000 (digilent_clocks)
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // the firmware's SOC_RAM_KIB
     parameter RAM_INIT = "",                                       // the firmware's RAM image
-    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
-    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
-    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
-    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS
+    `GPU_BUILD_PARAMS                                              // the GPU's (digilent_top)
 ) (
     input  wire        CLK100MHZ,      // E3, 100 MHz
     // USB-UART (FT2232HQ)
@@ -33,35 +31,22 @@ module nexys_a7_top #(
     output wire        VGA_HS,         // active low
     output wire        VGA_VS          // active low
 );
-    wire clk_sys, clk_pix, mmcm_locked;
-    digilent_clocks #(.SYS_MHZ(SYS_MHZ)) u_clocks (
-        .clk_100mhz (CLK100MHZ),
-        .clk_sys    (clk_sys),
-        .clk_pix    (clk_pix),
-        .locked     (mmcm_locked)
-    );
-
-    digilent_system #(
-        .SYS_HZ       (SYS_MHZ * 1000000),
+    digilent_top #(
+        .SYS_MHZ      (SYS_MHZ),
         .RAM_BYTES    (RAM_BYTES),
         .RAM_INIT     (RAM_INIT),
-        .SPAN_W       (SPAN_W),
-        .ENABLE_LINES (ENABLE_LINES),
-        .ENABLE_ZBUF  (ENABLE_ZBUF),
-        .ZBUF_BITS    (ZBUF_BITS)
-    ) u_system (
-        .clk_sys     (clk_sys),
-        .clk_pix     (clk_pix),
-        .mmcm_locked (mmcm_locked),
-        .btn_reset   (!CPU_RESETN),
-        .uart_rx     (UART_TXD_IN),
-        .uart_tx     (UART_RXD_OUT),
-        .led         (LED),
-        .vga_r       (VGA_R),
-        .vga_g       (VGA_G),
-        .vga_b       (VGA_B),
-        .vga_hs_n    (VGA_HS),
-        .vga_vs_n    (VGA_VS)
+        `GPU_BUILD_PARAMS_PASS
+    ) u_board (
+        .clk_100mhz (CLK100MHZ),
+        .uart_rx    (UART_TXD_IN),
+        .uart_tx    (UART_RXD_OUT),
+        .btn_reset  (!CPU_RESETN),
+        .led        (LED),
+        .vga_r      (VGA_R),
+        .vga_g      (VGA_G),
+        .vga_b      (VGA_B),
+        .vga_hs_n   (VGA_HS),
+        .vga_vs_n   (VGA_VS)
     );
 endmodule
 

@@ -12,20 +12,15 @@
 // firmware has exited (SYS EXIT), 7:4 SYS LEDS 3:0 (the firmware's).
 // Clock domains: each reset crosses through gpu_cdc_sync; the video crossings are gpu_top's (system
 // to pixel clock) and dvi_tx's (pixel to TMDS clock).
+// The GPU's build parameters (contract/gpu_build_params.vh) are passed through to soc_top.
+`include "contract/gpu_build_params.vh"
 `default_nettype none
 
 module ulx3s_system #(
     parameter integer SYS_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,        // clk_sys: the SoC's CLK_HZ
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // on-chip RAM (soc_top)
     parameter RAM_INIT = "",                                       // the firmware image (soc_top)
-    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,        // the GPU's build options
-    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
-    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
-    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,  // depth bits kept (gpu_core)
-    parameter integer ENABLE_WMASK = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK,      // framebuffer write mask
-    parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,  // Gouraud triangles
-    parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,              // buffer capacities (a scene's manifest)
-    parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP
+    `GPU_BUILD_PARAMS                                              // the GPU's (soc_top)
 ) (
     // clocks (ulx3s_pll)
     input  wire       clk_sys,
@@ -57,14 +52,7 @@ module ulx3s_system #(
         .RAM_INIT     (RAM_INIT),
         .CLK_HZ       (SYS_HZ),
         .PIX_CLK_HZ   (25000000),
-        .SPAN_W       (SPAN_W),
-        .ENABLE_LINES (ENABLE_LINES),
-        .ENABLE_ZBUF  (ENABLE_ZBUF),
-        .ZBUF_BITS    (ZBUF_BITS),
-        .ENABLE_WMASK (ENABLE_WMASK),
-        .ENABLE_GOURAUD (ENABLE_GOURAUD),
-        .VTX_CAP      (VTX_CAP),
-        .TRI_CAP      (TRI_CAP)
+        `GPU_BUILD_PARAMS_PASS
     ) u_soc (
         .clk               (clk_sys),
         .clk_pix           (clk_pix),

@@ -6,21 +6,17 @@
 // rising edge, D1 after the falling one: 250 Mbit/s = 10 bits per 25 MHz pixel) on a gpdi_dp pin,
 // whose complement the LVCMOS33D standard drives on the paired dn pin. The FT231X carries the
 // UART (keys in, the firmware's text out). FIRE1 resets. wifi_gpio0 stays high so the ESP32 does
-// not reset the FPGA. Only the primitives live here; the logic is in ulx3s_system.
+// not reset the FPGA. Only the primitives live here; the logic is in ulx3s_system. The GPU's build
+// parameters (contract/gpu_build_params.vh) are passed through: a scene's manifest may size the
+// buffers (VTX_CAP, TRI_CAP); ENABLE_WMASK costs 4 EBR, board.mk turns it off beside a depth buffer.
+`include "contract/gpu_build_params.vh"
 `default_nettype none
 
 module ulx3s_top #(
     parameter integer SYS_MHZ = 50,                                // a divisor of 750 (ulx3s_pll)
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // the firmware's SOC_RAM_KIB
     parameter RAM_INIT = "",                                       // the firmware's RAM image
-    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
-    parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
-    parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
-    parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,  // depth bits kept (gpu_core)
-    parameter integer ENABLE_WMASK = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK,  // 4 EBR; off beside a depth buffer
-    parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,  // Gouraud triangles
-    parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,  // buffer capacities (a scene's manifest)
-    parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP
+    `GPU_BUILD_PARAMS                                              // the GPU's (ulx3s_system)
 ) (
     input  wire       clk_25mhz,      // G2
     // FT231X USB serial
@@ -50,14 +46,7 @@ module ulx3s_top #(
         .SYS_HZ       (SYS_MHZ * 1000000),
         .RAM_BYTES    (RAM_BYTES),
         .RAM_INIT     (RAM_INIT),
-        .SPAN_W       (SPAN_W),
-        .ENABLE_LINES (ENABLE_LINES),
-        .ENABLE_ZBUF  (ENABLE_ZBUF),
-        .ZBUF_BITS    (ZBUF_BITS),
-        .ENABLE_WMASK (ENABLE_WMASK),
-        .ENABLE_GOURAUD (ENABLE_GOURAUD),
-        .VTX_CAP      (VTX_CAP),
-        .TRI_CAP      (TRI_CAP)
+        `GPU_BUILD_PARAMS_PASS
     ) u_system (
         .clk_sys    (clk_sys),
         .clk_pix    (clk_pix),
