@@ -86,7 +86,8 @@ manifest_gflags = $(foreach p,$(subst -, ,$(1)),$(patsubst g%,-GENABLE_GOURAUD=%
 # sources (cosim/gpu_build.h): -GVTX_CAP=32 -> -DGPU_BUILD_VTX_CAP=32. Made from the same flags the
 # RTL is Verilated with, so the golden model beside a simulator has that simulator's sizes. (Here,
 # the first fragment the Makefile reads, so that every later one can use it at parse time.)
-GPU_BUILD_PARAMS := SPAN_W ENABLE_LINES ENABLE_ZBUF ZBUF_BITS ENABLE_WMASK ENABLE_GOURAUD VTX_CAP TRI_CAP
+# The names are the contract's (contract/gpu_build_params.vh, generated from its build table).
+GPU_BUILD_PARAMS := $(shell sed -n 's/^ *parameter integer \([A-Z_]*\) .*/\1/p' contract/gpu_build_params.vh)
 gpu_build_defs = $(patsubst -G%,-DGPU_BUILD_%,$(filter $(foreach p,$(GPU_BUILD_PARAMS),-G$(p)=%),$(1)))
 
 .PHONY: manifest-show manifest-check lean-report
