@@ -43,7 +43,10 @@ run_to "$work/gdb.out" 60 bash cosim/debug.sh --batch "$work/commands.gdb" "$GPU
 grep '^check: ' "$work/gdb.out" >"$work/checks" || fail "no check lines from gdb ($(tail -n 3 "$work/gdb.out"))"
 
 line() { sed -n "${1}p" "$work/checks"; }
-[ "$(line 1)" = "check: at main firmware/app/main.c:9" ] || fail "break main: '$(line 1)'"
+# gdb stops at main's first statement: the QEMU build's main (no command line) is `return app_run();`.
+main_line=$(grep -n '^    return app_run();$' firmware/app/main.c | cut -d: -f1)
+[ -n "$main_line" ] || fail "no 'return app_run();' in firmware/app/main.c"
+[ "$(line 1)" = "check: at main firmware/app/main.c:$main_line" ] || fail "break main: '$(line 1)', expected line $main_line"
 [[ "$(line 2)" =~ ^check:\ at\ app_run\ firmware/app/app.c:[0-9]+$ ]] || fail "step into app_run: '$(line 2)'"
 re='^check: at gpu_submit_batch firmware/gpu/gpu.c:([0-9]+)$'
 [[ "$(line 3)" =~ $re ]] || fail "break gpu_submit_batch: '$(line 3)'"
