@@ -88,6 +88,14 @@ static int off_diagonal(const gpu_model *m, int k0, int k1, int xs, uint16_t z, 
     return bad;
 }
 
+/* The square of pixels 0..9 x 0..9 (prims 0, 1) at depth z in colour `color`, alone, run with
+ * ctrl. */
+static void draw_square(gpu_model *m, uint32_t ctrl, uint32_t z, uint32_t color)
+{
+    set_rect(m, 0, 0, 0, 0, 10, 10, z, color);
+    run(m, ctrl, 4, 2);
+}
+
 /* A pixel and the depth it must hold. */
 struct z_at {
     int px, py;
@@ -386,8 +394,7 @@ static void test_ztest_rules(void)
      * rectangle: upper triangle rows r = 0..9 px r..9 (spans {0,1} for
      * r <= 7, {1} for r = 8, 9: 18), lower rows 1..9 px 0..r-1 ({0} for
      * r <= 8, {0,1} for r = 9: 10): 28 spans, 55 + 45 pixels. */
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0, 1);
-    run(m, CL | ZT, 4, 2);
+    draw_square(m, CL | ZT, 0, 1);
     CHECK_EQ(z_not(m, 0), 0);
     CHECK_PERF6(m, 2, 2, 0, 0, 200, 28);
     CHECK_EQ(px_eq(m, 1), 0);
@@ -400,35 +407,29 @@ static void test_ztest_rules(void)
     CHECK_EQ(px_eq(m, 9), GPU_MODEL_FB_PIXELS);
 
     /* A depth of 0xFFFF is never less than the cleared value. */
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0xFFFF, 1);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 0xFFFF, 1);
     CHECK_PERF6(m, 2, 2, 0, 0, 200, 28);
 
     /* Strictly less, then replaced: 100 at 100; again at 100 (equal, not
      * written); at 101 (not written); at 99 (written). */
-    set_rect(m, 0, 0, 0, 0, 10, 10, 100, 1);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 100, 1);
     CHECK_PERF6(m, 2, 2, 0, 100, 200, 28);
     CHECK_EQ(test_z(m, 9, 9), 100);
     CHECK_EQ(z_not(m, 0xFFFF), 100);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 100, 2);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 100, 2);
     CHECK_PERF6(m, 2, 2, 0, 0, 200, 28);
     CHECK_EQ(px_eq(m, 1), 100);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 101, 3);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 101, 3);
     CHECK_EQ(perf_pixels(m), 0);
     CHECK_EQ(px_eq(m, 1), 100);
     CHECK_EQ(test_z(m, 0, 0), 100);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 99, 4);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 99, 4);
     CHECK_EQ(perf_pixels(m), 100);
     CHECK_EQ(px_eq(m, 4), 100);
     CHECK_EQ(test_z(m, 5, 5), 99);
 
     /* Without ZTEST (depth buffer built): written regardless, depth kept. */
-    set_rect(m, 0, 0, 0, 0, 10, 10, 50000, 5);
-    run(m, 0, 4, 2);
+    draw_square(m, 0, 50000, 5);
     CHECK_EQ(perf_pixels(m), 100);
     CHECK_EQ(px_eq(m, 5), 100);
     CHECK_EQ(test_z(m, 5, 5), 99);
@@ -437,8 +438,7 @@ static void test_ztest_rules(void)
      * double-buffered, so it survives a swap. */
     run(m, CL | GPU_CTRL_SWAP_MASK, 0, 0);
     CHECK_EQ(test_z(m, 5, 5), 99);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 99, 6);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 99, 6);
     CHECK_EQ(perf_pixels(m), 0);
 
     /* ERR_COUNT skips the depth clear too (the swap still happens). */
@@ -529,17 +529,14 @@ static void test_lines_and_absent(void)
      * again. */
     m = test_new_model_cfg(8, true, false);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS) & GPU_CAPS_ZBUF_MASK, 0);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 100, 1);
-    run(m, CL | ZC | ZT, 4, 2);
+    draw_square(m, CL | ZC | ZT, 100, 1);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), CL | ZC | ZT);
     CHECK_EQ(perf_pixels(m), 100);
     CHECK_EQ(z_not(m, 0), 0);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 100, 2);
-    run(m, ZC | ZT, 4, 2);
+    draw_square(m, ZC | ZT, 100, 2);
     CHECK_EQ(perf_pixels(m), 100);
     CHECK_EQ(px_eq(m, 2), 100);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0xFFFF, 3);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 0xFFFF, 3);
     CHECK_EQ(perf_pixels(m), 100);
     CHECK_EQ(px_eq(m, 3), 100);
     CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
@@ -567,26 +564,21 @@ static void test_zbuf_bits(void)
 
     /* 0x1234 stored as 0x12; 0x12FF and 0x1200 (same top byte) are not
      * nearer; 0x11FF is. */
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0x1234, 1);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 0x1234, 1);
     CHECK_EQ(perf_pixels(m), 100);
     CHECK_EQ(test_z(m, 3, 3), 0x12);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0x1200, 2);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 0x1200, 2);
     CHECK_EQ(perf_pixels(m), 0);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0x11FF, 3);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 0x11FF, 3);
     CHECK_EQ(perf_pixels(m), 100);
     CHECK_EQ(test_z(m, 3, 3), 0x11);
     CHECK_EQ(px_eq(m, 3), 100);
 
     /* 0xFF00 .. 0xFFFF keep 255, the cleared value: never drawn. */
     test_batch(m, ZC, 0, 0, 0, 0, 0, g_tag++);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0xFF00, 4);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 0xFF00, 4);
     CHECK_EQ(perf_pixels(m), 0);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0xFEFF, 4);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 0xFEFF, 4);
     CHECK_EQ(perf_pixels(m), 100);
     free(m);
 
