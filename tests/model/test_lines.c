@@ -262,6 +262,24 @@ static void test_line_guard_band(void)
 
 /* ------------------------------------------ rejection, indices, kinds */
 
+/* Vertices 0.. at the listed Q12.4 (x, y), primitives 0.. as listed (i0, i1, i2, colour, kind). */
+static void load(gpu_model *m, const int32_t (*vtx)[2], size_t n_vtx, const uint32_t (*prims)[5],
+                 size_t n_prims)
+{
+    for (size_t i = 0; i < n_vtx; i++) {
+        test_set_vtx(m, (uint32_t)i, vtx[i][0], vtx[i][1]);
+    }
+    for (size_t i = 0; i < n_prims; i++) {
+        test_set_prim(m, (uint32_t)i, prims[i][0], prims[i][1], prims[i][2], prims[i][3],
+                      prims[i][4]);
+    }
+}
+
+#define KIND_LINE GPU_PRIM_KIND_LINE
+#define KIND_TRI  GPU_PRIM_KIND_TRI
+#define LOAD(m, vtx, prims) \
+    load((m), (vtx), sizeof(vtx) / sizeof((vtx)[0]), (prims), sizeof(prims) / sizeof((prims)[0]))
+
 static bool back_all_zero(void)
 {
     for (uint32_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
@@ -292,12 +310,12 @@ static void test_line_reject(void)
 
     /* Index checks use I0 and I1 only: I2 = 0xFFFF is fine for a line,
      * I0 or I1 = VTX_COUNT is ERR_VTX_INDEX. */
-    test_set_vtx(g_m, 0, Q(1, 0), Q(1, 0));
-    test_set_vtx(g_m, 1, Q(4, 0), Q(1, 0));
-    test_set_prim(g_m, 0, 0, 1, 0xFFFF, 7, GPU_PRIM_KIND_LINE);
-    test_set_prim(g_m, 1, 2, 1, 0, 8, GPU_PRIM_KIND_LINE);
-    test_set_prim(g_m, 2, 0, 2, 0, 8, GPU_PRIM_KIND_LINE);
-    test_set_prim(g_m, 3, 0xFFFF, 0, 1, 8, GPU_PRIM_KIND_LINE);
+    static const int32_t idx_vtx[][2] = { { Q(1, 0), Q(1, 0) }, { Q(4, 0), Q(1, 0) } };
+    static const uint32_t idx_prims[][5] = {
+        { 0, 1, 0xFFFF, 7, KIND_LINE }, { 2, 1, 0, 8, KIND_LINE },
+        { 0, 2, 0, 8, KIND_LINE },      { 0xFFFF, 0, 1, 8, KIND_LINE },
+    };
+    LOAD(g_m, idx_vtx, idx_prims);
     test_batch(g_m, GPU_CTRL_CLEAR_MASK, 0, 2, 0, 1, 0, 0x50);
     static const int ok[][2] = { { 1, 1 }, { 2, 1 }, { 3, 1 } };
     CHECK_PIXELS(g_m, ok, 7, 0);
@@ -318,12 +336,12 @@ static void test_line_reject(void)
     /* A GPU built without lines: ERR_KIND, rejected, checked before the
      * indices (a line with a bad index reports only ERR_KIND). */
     gpu_model *nl = test_new_model_cfg(4, false, true);
-    test_set_vtx(nl, 0, Q(1, 0), Q(1, 0));
-    test_set_vtx(nl, 1, Q(4, 0), Q(1, 0));
-    test_set_vtx(nl, 2, Q(1, 0), Q(4, 0));
-    test_set_prim(nl, 0, 0, 1, 0, 7, GPU_PRIM_KIND_LINE);
-    test_set_prim(nl, 1, 0, 5, 0, 7, GPU_PRIM_KIND_LINE);
-    test_set_prim(nl, 2, 0, 1, 2, 3, GPU_PRIM_KIND_TRI);
+    static const int32_t nl_vtx[][2] = { { Q(1, 0), Q(1, 0) }, { Q(4, 0), Q(1, 0) },
+                                         { Q(1, 0), Q(4, 0) } };
+    static const uint32_t nl_prims[][5] = {
+        { 0, 1, 0, 7, KIND_LINE }, { 0, 5, 0, 7, KIND_LINE }, { 0, 1, 2, 3, KIND_TRI },
+    };
+    LOAD(nl, nl_vtx, nl_prims);
     test_batch(nl, GPU_CTRL_CLEAR_MASK, 0, 3, 0, 3, 0, 0x53);
     CHECK_EQ(gpu_model_read(nl, GPU_REG_ERRORS), GPU_ERR_KIND_MASK);
     CHECK_EQ(gpu_model_read(nl, GPU_REG_PERF_TRIS_IN), 3);
@@ -336,19 +354,24 @@ static void test_line_reject(void)
 
 /* ---------------------------------------------- polygons, batches */
 
+/* The closed polygon through the centres of the n listed pixels, one line from each vertex to the
+ * next (the last back to the first) in colour 4, in one batch of its own. */
+static void closed_polygon(const int (*px)[2], uint32_t n, uint32_t tag)
+{
+    for (uint32_t k = 0; k < n; k++) {
+        test_set_vtx(g_m, k, Q(px[k][0], 8), Q(px[k][1], 8));
+        test_set_prim(g_m, k, k, (k + 1) % n, 0, 4, GPU_PRIM_KIND_LINE);
+    }
+    test_batch(g_m, GPU_CTRL_CLEAR_MASK, 0, n, 0, n, 0, tag);
+}
+
 static void test_polygons(void)
 {
     /* A closed square of four lines through pixels (10,10) (20,10) (20,20)
      * (10,20): each line draws its first corner and not its last, so the
      * 40 border pixels of the 11 x 11 square are each written once. */
-    test_set_vtx(g_m, 0, Q(10, 8), Q(10, 8));
-    test_set_vtx(g_m, 1, Q(20, 8), Q(10, 8));
-    test_set_vtx(g_m, 2, Q(20, 8), Q(20, 8));
-    test_set_vtx(g_m, 3, Q(10, 8), Q(20, 8));
-    for (uint32_t k = 0; k < 4; k++) {
-        test_set_prim(g_m, k, k, (k + 1) % 4, 0, 4, GPU_PRIM_KIND_LINE);
-    }
-    test_batch(g_m, GPU_CTRL_CLEAR_MASK, 0, 4, 0, 4, 0, 0x60);
+    static const int square[][2] = { { 10, 10 }, { 20, 10 }, { 20, 20 }, { 10, 20 } };
+    closed_polygon(square, 4, 0x60);
     int border[40][2];
     int n = 0;
     for (int y = 10; y <= 20; y++) {
@@ -401,13 +424,7 @@ static void test_polygons(void)
     free(acc);
     /* The triangle's lines again, in one batch: n = max(10,4) + max(7,11)
      * + max(3,15) = 36 steps, all on screen. */
-    test_set_vtx(g_m, 0, Q(30, 8), Q(30, 8));
-    test_set_vtx(g_m, 1, Q(40, 8), Q(34, 8));
-    test_set_vtx(g_m, 2, Q(33, 8), Q(45, 8));
-    for (uint32_t k = 0; k < 3; k++) {
-        test_set_prim(g_m, k, k, (k + 1) % 3, 0, 4, GPU_PRIM_KIND_LINE);
-    }
-    test_batch(g_m, GPU_CTRL_CLEAR_MASK, 0, 3, 0, 3, 0, 0x62);
+    closed_polygon(poly, 3, 0x62);
     CHECK_PERF6(g_m, 3, 3, 0, 36, 36, 0);
 
     /* Lines and triangles in one batch, in order: a later primitive
@@ -415,17 +432,15 @@ static void test_polygons(void)
      * (1..3, 1), (1..2, 2), (1, 3) (colour 5), then a line through row 1
      * (colour 6), then the triangle again (colour 7) over a line in row 4
      * (colour 8, drawn after). */
-    test_set_vtx(g_m, 0, 16, 16);
-    test_set_vtx(g_m, 1, 80, 16);
-    test_set_vtx(g_m, 2, 16, 80);
-    test_set_vtx(g_m, 3, Q(0, 0), Q(1, 0));
-    test_set_vtx(g_m, 4, Q(6, 0), Q(1, 0));
-    test_set_vtx(g_m, 5, Q(0, 0), Q(4, 0));
-    test_set_vtx(g_m, 6, Q(6, 0), Q(4, 0));
-    test_set_prim(g_m, 0, 0, 1, 2, 5, GPU_PRIM_KIND_TRI);
-    test_set_prim(g_m, 1, 3, 4, 0, 6, GPU_PRIM_KIND_LINE);
-    test_set_prim(g_m, 2, 5, 6, 0, 8, GPU_PRIM_KIND_LINE);
-    test_set_prim(g_m, 3, 0, 1, 2, 7, GPU_PRIM_KIND_TRI);
+    static const int32_t mix_vtx[][2] = {
+        { 16, 16 }, { 80, 16 }, { 16, 80 }, { Q(0, 0), Q(1, 0) },
+        { Q(6, 0), Q(1, 0) }, { Q(0, 0), Q(4, 0) }, { Q(6, 0), Q(4, 0) },
+    };
+    static const uint32_t mix_prims[][5] = {
+        { 0, 1, 2, 5, KIND_TRI }, { 3, 4, 0, 6, KIND_LINE },
+        { 5, 6, 0, 8, KIND_LINE }, { 0, 1, 2, 7, KIND_TRI },
+    };
+    LOAD(g_m, mix_vtx, mix_prims);
     test_batch(g_m, GPU_CTRL_CLEAR_MASK, 0, 7, 0, 4, 0, 0x61);
     CHECK_EQ(test_back_px(g_m, 0, 1), 6);
     CHECK_EQ(test_back_px(g_m, 1, 1), 7);
