@@ -102,18 +102,22 @@ static void test_ctrl(void)
     /* CTRL keeps CLEAR [0], SWAP [1], ZTEST [2], ZCLEAR [3], DITHER [4];
      * other bits are not stored.  Same with and without the depth buffer
      * (without it ZTEST/ZCLEAR are stored but ignored, see test_depth.c). */
+    static const uint32_t written_read[][2] = {
+        { 0xFFFFFFFFu, 0x1F },
+        { GPU_CTRL_ZTEST_MASK, 0x4 },
+        { GPU_CTRL_ZCLEAR_MASK | 0x20u, 0x8 },
+        { 0xFFFFFFE0u, 0 },
+        { 0x5u, 0x5 },
+    };
     for (int z = 0; z < 2; z++) {
         gpu_model *m = test_new_model_cfg(8, true, z != 0);
-        gpu_model_write(m, GPU_REG_CTRL, 0xFFFFFFFFu);
-        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x1F);
-        gpu_model_write(m, GPU_REG_CTRL, GPU_CTRL_ZTEST_MASK);
-        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x4);
-        gpu_model_write(m, GPU_REG_CTRL, GPU_CTRL_ZCLEAR_MASK | 0x20u);
-        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x8);
-        gpu_model_write(m, GPU_REG_CTRL, 0xFFFFFFE0u);
-        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0);
-        gpu_model_write(m, GPU_REG_CTRL, 0x5u);
-        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x5);
+        for (size_t i = 0; i < sizeof written_read / sizeof written_read[0]; i++) {
+            gpu_model_write(m, GPU_REG_CTRL, written_read[i][0]);
+            if (!CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), written_read[i][1])) {
+                printf("  CTRL written 0x%08X, %s depth buffer\n", (unsigned)written_read[i][0],
+                       z ? "with" : "without");
+            }
+        }
         /* A batch does not change it. */
         gpu_model_write(m, GPU_REG_DOORBELL, 1);
         CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x5);
