@@ -15,6 +15,18 @@
 #   expect_no_line PATTERN FILE  fail if any line of FILE matches
 #   same_pngs DIR_A DIR_B WHAT   fail unless both hold the same PNG names with identical bytes
 #   summary KEY FILE             a field of a `gpusim cosim --summary` file (key=value lines)
+#   pty_session TIMEOUT CMD... -- CLIENT_ARG...
+#                                CMD (a simulator given --uart-pty "$work/tty") in the background,
+#                                output to $work/out, while tests/cosim/pty_keys.py types into the
+#                                pty (transcript to $work/transcript); sets $status (the simulator's)
+#                                and $client (the client's), shows their last lines
+#   expect_pty_echo WHO          after pty_session: WHO (cosim, socsim) announced the pty and removed
+#                                its link, the help came twice, nothing was dropped, and the
+#                                transcript ('\r' dropped) equals the UART log byte for byte
+#   cosim_run SIM ELF TIMEOUT ARG...
+#                                `SIM cosim` of ELF, frames to $work/frames, UART to $work/uart.log,
+#                                summary to $work/summary, output to $work/out; sets $status
+#   expect_frames N              N frame lines in $work/uart.log, all N equal to the golden model
 #   no_qemu_left                 fail if a co-simulation QEMU started by this test still runs (other
 #                                suites run beside it: their QEMUs do not count)
 #   pass MESSAGE                 the summary line; the test ends with status 0
@@ -109,6 +121,46 @@ summary() {
     value=$(sed -n "s/^$1=//p" "$2")
     [ -n "$value" ] || fail "no '$1' in $2"
     echo "$value"
+}
+
+pty_session() {
+    local limit="$1" cmd=() sim
+    shift
+    while [ "$1" != -- ]; do
+        cmd+=("$1")
+        shift
+    done
+    shift
+    timeout "$limit" "${cmd[@]}" >"$work/out" 2>&1 &
+    sim=$!
+    client=0
+    python3 tests/cosim/pty_keys.py "$work/tty" "$work/transcript" "$@" >"$work/client.out" 2>&1 || client=$?
+    status=0
+    wait "$sim" || status=$?
+    cat "$work/client.out"
+    tail -n 3 "$work/out"
+}
+
+expect_pty_echo() {
+    local link="$work/tty"
+    expect_line "^$1: UART on $link \(/dev/pts/[0-9]+\)$" "$work/out"
+    [ ! -e "$link" ] || fail "the link $link is still there after the run"
+    expect_eq "$(count 'H this help' "$work/uart.log")" 2 "help texts in the log (boot and H)"
+    expect_eq "$(summary uart_pty_dropped "$work/summary")" 0 "bytes dropped (summary)"
+    tr -d '\r' <"$work/transcript" >"$work/transcript.lf"
+    cmp -s "$work/transcript.lf" "$work/uart.log" || fail "the pty's transcript differs from the UART log"
+}
+
+cosim_run() {
+    local sim="$1" elf="$2" limit="$3"
+    shift 3
+    run_to "$work/out" "$limit" "$sim" cosim --fw "$elf" --frames "$work/frames" --uart-log "$work/uart.log" \
+        --summary "$work/summary" "$@"
+}
+
+expect_frames() {
+    expect_eq "$(count '^frame ' "$work/uart.log")" "$1" "frames rendered"
+    expect_eq "$(summary frames_model_checked "$work/summary")" "$1" "frames equal to the model"
 }
 
 no_qemu_left() {

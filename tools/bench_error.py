@@ -198,16 +198,27 @@ def measure(build, frames, scenes, jobs, rerun):
     return results
 
 
+def knob_rows(knobs, scenes, results, cells):
+    """Markdown rows, one per knob setting and scene (knob by knob, scene by scene): knob, setting,
+    scene, then cells(scene, r) for that configuration's results r."""
+    return ["| %s |" % " | ".join([knob, setting, scene] + cells(scene, results[(scene, key)]))
+            for knob, settings in knobs for scene in scenes for setting, key in settings]
+
+
+def differing_cell(r):
+    return "%.1f (%.2f%%)" % (r["differing"], 100.0 * r["differing"] / FB_PIXELS)
+
+
+def progress(fmt):
+    """A report for parallel(): fmt % (done, total, *item) on stderr."""
+    return lambda done, total, item, _: print(fmt % (done, total, *item), file=sys.stderr, flush=True)
+
+
 def table(results, scenes, frames, soc_lines=()):
     lines = ["| knob | setting | scene | pixels differing | mean abs dRGB | fw instructions/frame | GPU cycles/frame | SoC CPU cycles/frame |",
              "|---|---|---|---:|---:|---:|---:|---:|"]
-    for knob, settings in KNOBS:
-        for scene in scenes:
-            for setting, key in settings:
-                r = results[(scene, key)]
-                lines.append("| %s | %s | %s | %.1f (%.2f%%) | %.4f | %d | %d | %s |" % (
-                    knob, setting, scene, r["differing"], 100.0 * r["differing"] / FB_PIXELS, r["mae"],
-                    round(r["instr"]), round(r["cycles"]), soc_cell(r)))
+    lines += knob_rows(KNOBS, scenes, results, lambda scene, r: [
+        differing_cell(r), "%.4f" % r["mae"], "%d" % round(r["instr"]), "%d" % round(r["cycles"]), soc_cell(r)])
     lines.append("")
     lines.append("R = float, depth buffer (16 bits), 4 sub-pixel bits, SPAN_W 8, 256 sine entries. Error against R's frame; means "
                  "over the first %d frames of each scene's default view; counts from co-simulation "
@@ -551,13 +562,9 @@ def soc_table(soc, scenes, views):
     """--soc-only: the SoC column alone, every configuration of the camera paths."""
     lines = ["| knob | setting | scene | SoC CPU cycles/frame | / R's | SoC instructions/frame | CPI |",
              "|---|---|---|---:|---:|---:|---:|"]
-    for knob, settings in PATH_KNOBS:
-        for scene in scenes:
-            for setting, key in settings:
-                r = soc[(scene, key)]
-                lines.append("| %s | %s | %s | %s | %.2f | %s | %s |" % (knob, setting, scene, soc_cell(
-                    {"soc": r["cpu"], "soc_as_r": r.get("as_r", False)}), r["cpu"] / soc[(scene, "ref")]["cpu"],
-                    "%d" % r["instr"] if "instr" in r else "—", "%.2f" % (r["cpu"] / r["instr"]) if "instr" in r else "—"))
+    lines += knob_rows(PATH_KNOBS, scenes, soc, lambda scene, r: [
+        soc_cell({"soc": r["cpu"], "soc_as_r": r.get("as_r", False)}), "%.2f" % (r["cpu"] / soc[(scene, "ref")]["cpu"]),
+        "%d" % r["instr"] if "instr" in r else "—", "%.2f" % (r["cpu"] / r["instr"]) if "instr" in r else "—"])
     lines.append("")
     lines.extend(soc_notes(soc, scenes, views))
     return "\n".join(lines)
@@ -590,8 +597,7 @@ def path_measure(build, scenes, views, cost_views, jobs, rerun):
     tool = os.path.join(build, "tools", "png_diff")
     todo = [(scene, key) for scene in scenes for key in PATH_CONFIGS]
     runs = parallel(todo, lambda scene, key: path_run(build, scene, key, views, cost_views, rerun), jobs,
-                    lambda done, total, item, _: print("bench-error --path: [%2d/%d] %-9s %-8s" % (
-                        done, total, *item), file=sys.stderr, flush=True))
+                    progress("bench-error --path: [%2d/%d] %-9s %-8s"))
     results = {}
     mismatches = []
     for scene, key in todo:
@@ -668,13 +674,9 @@ def path_aggregate(results, scenes, cost):
 def path_table(results, scenes, views, cost_views, mismatches, soc_lines=()):
     lines = ["| knob | setting | scene | pixels differing from E: mean | p95 | worst (view) | mean abs dRGB | fw instructions/frame | GPU cycles/frame | SoC CPU cycles/frame |",
              "|---|---|---|---:|---:|---:|---:|---:|---:|---:|"]
-    for knob, settings in PATH_KNOBS:
-        for scene in scenes:
-            for setting, key in settings:
-                r = results[(scene, key)]
-                lines.append("| %s | %s | %s | %.1f (%.2f%%) | %.0f | %d (%d) | %.4f | %d | %d | %s |" % (
-                    knob, setting, scene, r["differing"], 100.0 * r["differing"] / FB_PIXELS, r["p95"],
-                    r["worst"], r["worst_view"], r["mae"], round(r["instr"]), round(r["cycles"]), soc_cell(r)))
+    lines += knob_rows(PATH_KNOBS, scenes, results, lambda scene, r: [
+        differing_cell(r), "%.0f" % r["p95"], "%d (%d)" % (r["worst"], r["worst_view"]), "%.4f" % r["mae"],
+        "%d" % round(r["instr"]), "%d" % round(r["cycles"]), soc_cell(r)])
     lines.append("")
     lines.append("E = the exact reference (tools/exact_ref). Errors over the %d views of each scene's "
                  "camera path (firmware/app/cam_path.h, seed FW_PATH_SEED), frames from the host build "

@@ -51,24 +51,25 @@ def write_tiny(path, rng):
             f.write("tri %d %d %d %d %d %d %d\n" % (*pts[0], *pts[1], *pts[2], rng.randint(1, 255)))
 
 
-def write_depth(path, src, rng):
-    """The triangles of src again, as ztri with random vertex depths."""
+def write_per_vertex(path, src, rng, kind, colour):
+    """The triangles of src again, as `kind` lines with a random 16-bit value after each vertex and
+    colour(the colour field) as their colour."""
     with open(src) as f, open(path, "w") as out:
         for line in f:
             v = line.split()
-            z = [rng.randint(0, 65535) for _ in range(3)]
-            out.write("ztri %s %s %d %s %s %d %s %s %d %s\n" % (v[1], v[2], z[0], v[3], v[4], z[1], v[5], v[6],
-                                                                z[2], v[7]))
+            w = [rng.randint(0, 65535) for _ in range(3)]
+            out.write("%s %s %s %d %s %s %d %s %s %d %s\n" % (kind, v[1], v[2], w[0], v[3], v[4], w[1], v[5], v[6],
+                                                               w[2], colour(v[7])))
+
+
+def write_depth(path, src, rng):
+    """The triangles of src again, as ztri with random vertex depths."""
+    write_per_vertex(path, src, rng, "ztri", lambda c: c)
 
 
 def write_gouraud(path, src, rng):
     """The triangles of src again, as gtri with random vertex intensities (VTX_I, Q4.12)."""
-    with open(src) as f, open(path, "w") as out:
-        for line in f:
-            v = line.split()
-            i = [rng.randint(0, 65535) for _ in range(3)]
-            out.write("gtri %s %s %d %s %s %d %s %s %d %d\n" % (v[1], v[2], i[0], v[3], v[4], i[1], v[5], v[6],
-                                                                i[2], int(v[7]) & 0xF0))
+    write_per_vertex(path, src, rng, "gtri", lambda c: "%d" % (int(c) & 0xF0))
 
 
 def write_scene(path, lists_dir):

@@ -31,7 +31,7 @@ import shutil
 import subprocess
 import sys
 
-from bench_error import FB_PIXELS, parallel, pareto, path_cosim, path_costs, percentile, png_diff_fields
+from bench_error import FB_PIXELS, parallel, pareto, path_cosim, path_costs, percentile, png_diff_fields, progress
 
 SIM = "sim-g-w8"  # ENABLE_GOURAUD with the depth buffer, SPAN_W 8
 # key -> (firmware variant, $(FW_PATH_DIR)/host-<scene>-<variant> and <scene>-<variant>.elf; label)
@@ -68,8 +68,7 @@ def measure(build, scenes, views, cost_views, jobs, rerun):
     tool = os.path.join(build, "tools", "png_diff")
     todo = [(scene, key) for scene in scenes for key in CONFIGS]
     runs = parallel(todo, lambda scene, key: run(build, scene, key, views, cost_views, rerun), jobs,
-                    lambda done, total, item, _: print("bench-error shading: [%d/%d] %-9s %s" % (
-                        done, total, *item), file=sys.stderr, flush=True))
+                    progress("bench-error shading: [%d/%d] %-9s %s"))
     results, mismatches = {}, []
     for scene, key in todo:
         work, counts = runs[(scene, key)]

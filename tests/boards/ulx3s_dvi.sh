@@ -31,8 +31,7 @@ one_scene() {
     expect_eq "$(summary frames_model_checked "$work/$s.dvi.summary")" "$frames" "$s: DVI frames equal to the model"
     expect_eq "$(summary keys_late "$work/$s.dvi.summary")" 0 "$s: keys still on the line when read"
     same_pngs "$work/$s-dvi" "$work/$s-vga" "$s: the frames from the DVI pins against the VGA build's"
-    diff <(grep '^frame ' "$work/$s.dvi.uart" | sed 's/ | fw instr.*//') \
-         <(grep '^frame ' "$work/$s.vga.uart" | sed 's/ | fw instr.*//') >/dev/null ||
+    diff <(frame_lines "$work/$s.dvi.uart") <(frame_lines "$work/$s.vga.uart") >/dev/null ||
         fail "$s: the firmware's frame lines differ between the DVI and the VGA build"
     # Blanking is sent as control symbols; the running disparity stays within the encoding's bound.
     [ "$(summary tmds_control_symbols "$work/$s.dvi.summary")" -gt 0 ] || fail "$s: no TMDS control period"
@@ -43,16 +42,6 @@ one_scene() {
         "$(summary tmds_pixels "$work/$s.dvi.summary") pixels, max |disparity| $(summary tmds_max_disparity "$work/$s.dvi.summary")"
 }
 
-pids=()
-for s in $scenes; do
-    one_scene "$s" &
-    pids+=($!)
-done
-for p in "${pids[@]}"; do
-    wait "$p" || fail "a scene failed (see above)"
-done
-total=0
-for s in $scenes; do
-    total=$((total + $(summary frames "$work/$s.dvi.summary")))
-done
+each_scene "$(echo $scenes | wc -w)" one_scene $scenes  # all at once
+total=$(total_frames "$work/%.dvi.summary" $scenes)
 pass "boards-ulx3s-dvi: $(echo $scenes | wc -w) scenes, $total frames decoded from the DVI pins, equal to the golden model and byte-identical to the VGA build"

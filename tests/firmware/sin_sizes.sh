@@ -8,8 +8,8 @@ CC=${HOST_CC:-gcc}
 out=$(fresh_dir fw-sin-sizes)
 for bits in 6 8 10; do
     "$CC" -std=c11 -O2 -Wall -Wextra -Werror -ffp-contract=off -Itests/firmware -Ifirmware \
-        -DFW_SIN_TABLE_BITS=$bits tests/firmware/sin_sizes/main.c tests/firmware/test_fixed.c \
-        tests/firmware/test_cam_path.c firmware/math/fixed.c -o "$out/sin$bits" -lm
+        -DFW_SIN_TABLE_BITS=$bits tests/firmware/sin_sizes/main.c tests/firmware/unit_rand.c \
+        tests/firmware/test_fixed.c tests/firmware/test_cam_path.c firmware/math/fixed.c -o "$out/sin$bits" -lm
     "$out/sin$bits" || fail "FW_SIN_TABLE_BITS=$bits"
 done
 # A size the table does not have is refused at compile time.

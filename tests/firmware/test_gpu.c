@@ -50,6 +50,17 @@ static void fake_reset(void)
 
 static const uint16_t test_palette[3] = {0x000, 0x123, 0xFA5};
 
+/* The driver brought up on a device just reset whose DOORBELL and DONE_SEQ read the given values
+ * (as after earlier batches). Returns gpu_init's result. */
+static int init_at_seq(struct gpu_dev *dev, uint32_t doorbell, uint32_t done_seq,
+                       const uint16_t *palette, uint32_t n)
+{
+    fake_reset();
+    REG(GPU_REG_DOORBELL) = doorbell;
+    REG(GPU_REG_DONE_SEQ) = done_seq;
+    return gpu_init(dev, palette, n);
+}
+
 /* The words batch.c copies are the contract's: proj_vertex's first word decodes, through the
  * contract's field definitions, to its x and y (sign-extended), render_prim's two words to its
  * indices, colour and kind. */
@@ -140,10 +151,7 @@ void test_gpu_init_first_tag(void)
     struct gpu_dev dev;
 
     for (unsigned i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        fake_reset();
-        REG(GPU_REG_DOORBELL) = cases[i][0];
-        REG(GPU_REG_DONE_SEQ) = cases[i][1];
-        CHECK_EQ(gpu_init(&dev, NULL, 0), GPU_OK);
+        CHECK_EQ(init_at_seq(&dev, cases[i][0], cases[i][1], NULL, 0), GPU_OK);
         CHECK_EQ(dev.next_tag, cases[i][2]);
     }
 }
@@ -163,10 +171,7 @@ void test_gpu_submit(void)
     uint32_t tag = 0;
     uint32_t tag2 = 0;
 
-    fake_reset();
-    REG(GPU_REG_DOORBELL) = 41u;
-    REG(GPU_REG_DONE_SEQ) = 41u;
-    CHECK_EQ(gpu_init(&dev, test_palette, 3), GPU_OK);
+    CHECK_EQ(init_at_seq(&dev, 41u, 41u, test_palette, 3), GPU_OK);
     CHECK_EQ(gpu_submit_batch(&dev, &b, &tag), GPU_OK);
     CHECK_EQ(tag, 42u);
     CHECK(dev.pending);
@@ -354,10 +359,7 @@ void test_gpu_tag_wrap(void)
     struct gpu_dev dev;
     uint32_t tag = 0;
 
-    fake_reset();
-    REG(GPU_REG_DOORBELL) = 0xFFFFFFFEu;
-    REG(GPU_REG_DONE_SEQ) = 0xFFFFFFFEu;
-    CHECK_EQ(gpu_init(&dev, NULL, 0), GPU_OK);
+    CHECK_EQ(init_at_seq(&dev, 0xFFFFFFFEu, 0xFFFFFFFEu, NULL, 0), GPU_OK);
     CHECK_EQ(gpu_submit_batch(&dev, &b, &tag), GPU_OK);
     CHECK_EQ(tag, 0xFFFFFFFFu);
     REG(GPU_REG_DONE_SEQ) = tag;

@@ -2,6 +2,7 @@
  * test_input.c — the UART key decoder: the key map, case, arrow-key escape sequences, unknown
  * bytes and sequences ignored, counting.
  */
+#include <stddef.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -22,22 +23,38 @@ static void feed(struct input_counts *c, const char *s)
     feed_n(c, s, (uint32_t)strlen(s));
 }
 
+struct key_count {
+    enum input_key key;
+    uint32_t n;
+};
+
+/* Each listed key counted exactly as often as listed (the failure names the key by number). */
+static void check_counts(const struct input_counts *c, const struct key_count *want, size_t n_want)
+{
+    for (size_t i = 0; i < n_want; i++) {
+        if (c->n[want[i].key] != want[i].n) {
+            unit_fail(__FILE__, __LINE__, "key %u counted %u times, expected %u",
+                      (unsigned)want[i].key, (unsigned)c->n[want[i].key], (unsigned)want[i].n);
+        }
+    }
+}
+
+#define CHECK_COUNTS(c, ...)                                                          \
+    do {                                                                              \
+        static const struct key_count want_[] = { __VA_ARGS__ };                      \
+        check_counts((c), want_, sizeof want_ / sizeof want_[0]);                     \
+    } while (0)
+
 void test_input_key_map(void)
 {
     struct input_counts c;
 
     feed(&c, "wasd c");
-    CHECK_EQ(c.n[KEY_FORWARD], 1);
-    CHECK_EQ(c.n[KEY_LEFT], 1);
-    CHECK_EQ(c.n[KEY_BACK], 1);
-    CHECK_EQ(c.n[KEY_RIGHT], 1);
-    CHECK_EQ(c.n[KEY_UP], 1);
-    CHECK_EQ(c.n[KEY_DOWN], 1);
+    CHECK_COUNTS(&c, { KEY_FORWARD, 1 }, { KEY_LEFT, 1 }, { KEY_BACK, 1 }, { KEY_RIGHT, 1 },
+                 { KEY_UP, 1 }, { KEY_DOWN, 1 });
     feed(&c, "IJKLuo");
-    CHECK_EQ(c.n[KEY_LOOK_UP], 1);
-    CHECK_EQ(c.n[KEY_LOOK_LEFT], 1);
-    CHECK_EQ(c.n[KEY_LOOK_DOWN], 1);
-    CHECK_EQ(c.n[KEY_LOOK_RIGHT], 1);
+    CHECK_COUNTS(&c, { KEY_LOOK_UP, 1 }, { KEY_LOOK_LEFT, 1 }, { KEY_LOOK_DOWN, 1 },
+                 { KEY_LOOK_RIGHT, 1 });
     CHECK_EQ(c.n[KEY_ROLL_LEFT] + c.n[KEY_ROLL_RIGHT], 2);
     feed(&c, "mfgztpbnrh?q123456789");
     CHECK_EQ(c.n[KEY_MODE] + c.n[KEY_WIREFRAME] + c.n[KEY_ANAGLYPH] + c.n[KEY_DEPTH] +
@@ -61,10 +78,8 @@ void test_input_escape_and_unknown(void)
     struct input_counts c;
 
     feed(&c, "\x1b[A\x1b[B\x1b[C\x1b[D\x1bOA");
-    CHECK_EQ(c.n[KEY_LOOK_UP], 2);
-    CHECK_EQ(c.n[KEY_LOOK_DOWN], 1);
-    CHECK_EQ(c.n[KEY_LOOK_RIGHT], 1);
-    CHECK_EQ(c.n[KEY_LOOK_LEFT], 1);
+    CHECK_COUNTS(&c, { KEY_LOOK_UP, 2 }, { KEY_LOOK_DOWN, 1 }, { KEY_LOOK_RIGHT, 1 },
+                 { KEY_LOOK_LEFT, 1 });
     CHECK_EQ(c.total, 5);
     /* F5 is ESC [ 1 5 ~; Shift-arrow ESC [ 1 ; 2 A counts as the arrow. */
     feed(&c, "\x1b[15~\x1b[1;2A");

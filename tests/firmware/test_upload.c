@@ -234,21 +234,33 @@ static void rx_reset(void)
     upload_init(&t_rx, t_buf, T_CAP, t_map, sizeof t_map, 8, 12);
 }
 
+/* The file the transfer tests send: the cube, its size and CRC (rx_reset_with_cube fills it). */
+static struct {
+    uint8_t file[512];
+    uint32_t size;
+    uint32_t crc;
+} t_cube;
+
+static void rx_reset_with_cube(void)
+{
+    rx_reset();
+    t_cube.size = cube_file(t_cube.file);
+    t_cube.crc = crc32_update(0, t_cube.file, t_cube.size);
+}
+
 /* A whole transfer of the cube in 64-byte chunks: acks, ok, the file in the buffer. */
 void test_upload_transfer(void)
 {
-    static uint8_t file[512];
     uint8_t fr[600];
-    const uint32_t size = cube_file(file);
-    const uint32_t crc = crc32_update(0, file, size);
-    const uint32_t chunks = (size + 63u) / 64u;
 
-    rx_reset();
+    rx_reset_with_cube();
+    const uint32_t chunks = (t_cube.size + 63u) / 64u;
+
     CHECK_EQ(feed((const uint8_t *)"wasd", 4), 4);   /* keys pass through outside a transfer */
-    CHECK_EQ(feed(fr, begin_frame(fr, 7, size, crc, 64)), 0);
+    CHECK_EQ(feed(fr, begin_frame(fr, 7, t_cube.size, t_cube.crc, 64)), 0);
     CHECK_STR(responses(), "@up ack 7 0");
     for (uint32_t k = 0; k < chunks; k++) {
-        CHECK_EQ(feed(fr, data_frame(fr, 7, file, size, 64, k)), 0);
+        CHECK_EQ(feed(fr, data_frame(fr, 7, t_cube.file, t_cube.size, 64, k)), 0);
     }
     CHECK_EQ(t_rx.resp_count, chunks);
     (void)responses();
@@ -257,8 +269,8 @@ void test_upload_transfer(void)
     CHECK_STR(responses(), "@up ok 7 faces 12 verts 8");
     CHECK(upload_ready(&t_rx));
     CHECK(t_rx.staging_valid);
-    CHECK_EQ(memcmp(t_buf, file, size), 0);
-    CHECK_EQ(t_rx.total, size);
+    CHECK_EQ(memcmp(t_buf, t_cube.file, t_cube.size), 0);
+    CHECK_EQ(t_rx.total, t_cube.size);
     /* The ok was lost: a resent COMMIT is answered again. */
     feed(fr, frame(fr, UPLOAD_COMMIT, 7, (uint16_t)(chunks + 1u), 0, 0));
     CHECK_STR(responses(), "@up ok 7 faces 12 verts 8");
@@ -274,7 +286,7 @@ void test_upload_transfer(void)
     upload_frame_end(&t_rx);
     CHECK_EQ(feed((const uint8_t *)"w", 1), 1);
     /* A new BEGIN: the buffer no longer holds the committed file. */
-    feed(fr, begin_frame(fr, 8, size, crc, 64));
+    feed(fr, begin_frame(fr, 8, t_cube.size, t_cube.crc, 64));
     CHECK_STR(responses(), "@up ack 8 0");
     CHECK(!t_rx.staging_valid);
 }
@@ -282,28 +294,26 @@ void test_upload_transfer(void)
 /* Duplicated, reordered, corrupted, oversized and truncated frames, and garbage between them. */
 void test_upload_line_faults(void)
 {
-    static uint8_t file[512];
     uint8_t fr[600];
     uint8_t fr2[600];
-    const uint32_t size = cube_file(file);
-    const uint32_t crc = crc32_update(0, file, size);
-    const uint32_t chunks = (size + 63u) / 64u;
     uint32_t n;
 
-    rx_reset();
+    rx_reset_with_cube();
+    const uint32_t chunks = (t_cube.size + 63u) / 64u;
+
     /* An oversized frame: nak big, and the next frame is still understood. */
-    n = frame(fr, UPLOAD_DATA, 3, 1, file, 8);
+    n = frame(fr, UPLOAD_DATA, 3, 1, t_cube.file, 8);
     put16(fr + 6, 600);
     CHECK_EQ(feed(fr, 8), 0);
     CHECK_STR(responses(), "@up nak big 600");
     CHECK_EQ(feed(fr + 8, n - 8u), 0);   /* its remains: stray, not keys (quiet after SOF0) */
-    feed(fr, begin_frame(fr, 3, size, crc, 64));
+    feed(fr, begin_frame(fr, 3, t_cube.size, t_cube.crc, 64));
     CHECK_STR(responses(), "@up ack 3 0");
     /* Chunks in reverse order, each twice, one corrupted first, garbage between. */
     for (uint32_t k = chunks; k-- > 0;) {
         static const uint8_t garbage[] = {0x80, 'q', 0xA5, 'w', 0xFF, '1'};
 
-        n = data_frame(fr, 3, file, size, 64, k);
+        n = data_frame(fr, 3, t_cube.file, t_cube.size, 64, k);
         memcpy(fr2, fr, n);
         fr2[20] ^= 0x10;
         CHECK_EQ(feed(fr2, n), 0);
@@ -329,28 +339,25 @@ void test_upload_line_faults(void)
     feed(fr, n);
     CHECK_STR(responses(), "@up ok 3 faces 12 verts 8");
     CHECK(upload_ready(&t_rx));
-    CHECK_EQ(memcmp(t_buf, file, size), 0);
+    CHECK_EQ(memcmp(t_buf, t_cube.file, t_cube.size), 0);
 }
 
 /* Refusals: capacity, chunk size, frames of no transfer or another, an incomplete file, a file
  * whose CRC or rules fail; an abandoned transfer times out; keys outside stay keys. */
 void test_upload_refusals(void)
 {
-    static uint8_t file[512];
     uint8_t fr[600];
-    const uint32_t size = cube_file(file);
-    const uint32_t crc = crc32_update(0, file, size);
 
-    rx_reset();
-    feed(fr, begin_frame(fr, 1, T_CAP + 1u, crc, 64));
+    rx_reset_with_cube();
+    feed(fr, begin_frame(fr, 1, T_CAP + 1u, t_cube.crc, 64));
     CHECK_STR(responses(), "@up reject 1 capacity: 4097 bytes, this build holds 4096");
-    feed(fr, begin_frame(fr, 1, size, crc, 32));
+    feed(fr, begin_frame(fr, 1, t_cube.size, t_cube.crc, 32));
     CHECK_STR(responses(), "@up reject 1 chunk: 32 bytes (64 to 512)");
-    feed(fr, data_frame(fr, 1, file, size, 64, 0));
+    feed(fr, data_frame(fr, 1, t_cube.file, t_cube.size, 64, 0));
     CHECK_STR(responses(), "@up nak 1 1 state");
-    feed(fr, begin_frame(fr, 2, size, crc, 64));
+    feed(fr, begin_frame(fr, 2, t_cube.size, t_cube.crc, 64));
     CHECK_STR(responses(), "@up ack 2 0");
-    feed(fr, data_frame(fr, 5, file, size, 64, 0));
+    feed(fr, data_frame(fr, 5, t_cube.file, t_cube.size, 64, 0));
     CHECK_STR(responses(), "@up nak 5 1 session");
     /* Offsets and lengths. */
     {
@@ -365,24 +372,24 @@ void test_upload_refusals(void)
         feed(fr, frame(fr, 9, 2, 1, p, 8));
         CHECK_STR(responses(), "@up nak 2 1 type");
     }
-    feed(fr, data_frame(fr, 2, file, size, 64, 0));
+    feed(fr, data_frame(fr, 2, t_cube.file, t_cube.size, 64, 0));
     (void)responses();
     feed(fr, frame(fr, UPLOAD_COMMIT, 2, 9, 0, 0));
     CHECK(strstr(responses(), "@up reject 2 incomplete:") != 0);
     CHECK(!upload_ready(&t_rx));
     /* The whole file's CRC. */
-    send_file(3, file, size, crc ^ 1u);
+    send_file(3, t_cube.file, t_cube.size, t_cube.crc ^ 1u);
     feed(fr, frame(fr, UPLOAD_COMMIT, 3, 0, 0, 0));
     CHECK_STR(responses(), "@up reject 3 crc: the file's CRC does not match BEGIN's");
     /* A file that breaks a rule: the validator's message. */
-    file[32 + 48 + 2] = 9;
-    refresh_crc(file, size);
-    send_file(4, file, size, crc32_update(0, file, size));
+    t_cube.file[32 + 48 + 2] = 9;
+    refresh_crc(t_cube.file, t_cube.size);
+    send_file(4, t_cube.file, t_cube.size, crc32_update(0, t_cube.file, t_cube.size));
     feed(fr, frame(fr, UPLOAD_COMMIT, 4, 0, 0, 0));
     CHECK_STR(responses(), "@up reject 4 mesh: face 0: index 9 out of range (8 vertices)");
     CHECK(!upload_ready(&t_rx));
     /* Abandoned half way: the timeout closes it, and counts what it ignored. */
-    feed(fr, begin_frame(fr, 6, size, crc, 64));
+    feed(fr, begin_frame(fr, 6, t_cube.size, t_cube.crc, 64));
     feed((const uint8_t *)"xyz", 3);
     (void)responses();
     for (uint32_t i = 0; i + 1u < UPLOAD_TIMEOUT_FRAMES; i++) {
@@ -393,8 +400,8 @@ void test_upload_refusals(void)
     CHECK_STR(responses(), "@up abandoned 6 (3 stray bytes ignored)");
     CHECK_EQ(t_rx.session, 0);
     /* A new session replaces an open one. */
-    feed(fr, begin_frame(fr, 10, size, crc, 64));
-    feed(fr, begin_frame(fr, 11, size, crc, 64));
+    feed(fr, begin_frame(fr, 10, t_cube.size, t_cube.crc, 64));
+    feed(fr, begin_frame(fr, 11, t_cube.size, t_cube.crc, 64));
     CHECK_STR(responses(), "@up ack 10 0|@up abandoned 10 (0 stray bytes ignored)|@up ack 11 0");
 }
 
@@ -403,40 +410,38 @@ void test_upload_refusals(void)
  * committed file is still in the buffer. */
 void test_upload_sessions(void)
 {
-    static uint8_t file[512];
     uint8_t fr[600];
-    const uint32_t size = cube_file(file);
-    const uint32_t crc = crc32_update(0, file, size);
 
-    rx_reset();
-    feed(fr, begin_frame(fr, 0, size, crc, 64));
+    rx_reset_with_cube();
+    feed(fr, begin_frame(fr, 0, t_cube.size, t_cube.crc, 64));
     CHECK_STR(responses(), "@up nak 0 0 session");
     CHECK_EQ(t_rx.session, 0);
     /* Commit session 7. */
-    send_file(7, file, size, crc);
+    send_file(7, t_cube.file, t_cube.size, t_cube.crc);
     feed(fr, frame(fr, UPLOAD_COMMIT, 7, 0, 0, 0));
     (void)responses();
     CHECK(t_rx.staging_valid);
     /* Session 7 again, with another file that fails: its repeated COMMIT must not get the old ok. */
-    feed(fr, begin_frame(fr, 7, size, crc ^ 1u, 64));
+    feed(fr, begin_frame(fr, 7, t_cube.size, t_cube.crc ^ 1u, 64));
     CHECK_STR(responses(), "@up ack 7 0");
-    send_file(7, file, size, crc ^ 1u);   /* a resent BEGIN (acked again), then the chunks */
+    /* a resent BEGIN (acked again), then the chunks */
+    send_file(7, t_cube.file, t_cube.size, t_cube.crc ^ 1u);
     feed(fr, frame(fr, UPLOAD_COMMIT, 7, 0, 0, 0));
     CHECK_STR(responses(), "@up reject 7 crc: the file's CRC does not match BEGIN's");
     feed(fr, frame(fr, UPLOAD_COMMIT, 7, 0, 0, 0));
     CHECK_STR(responses(), "@up nak 7 0 state");
     /* An open transfer survives a refused BEGIN of another sender. */
-    feed(fr, begin_frame(fr, 8, size, crc, 64));
-    feed(fr, data_frame(fr, 8, file, size, 64, 0));
+    feed(fr, begin_frame(fr, 8, t_cube.size, t_cube.crc, 64));
+    feed(fr, data_frame(fr, 8, t_cube.file, t_cube.size, 64, 0));
     (void)responses();
-    feed(fr, begin_frame(fr, 9, size, crc, 32));
+    feed(fr, begin_frame(fr, 9, t_cube.size, t_cube.crc, 32));
     CHECK_STR(responses(), "@up reject 9 chunk: 32 bytes (64 to 512)");
-    feed(fr, begin_frame(fr, 9, T_CAP + 1u, crc, 64));
+    feed(fr, begin_frame(fr, 9, T_CAP + 1u, t_cube.crc, 64));
     CHECK(strncmp(responses(), "@up reject 9 capacity", 21) == 0);
     CHECK_EQ(t_rx.session, 8);
     CHECK_EQ(t_rx.received, 1);
     /* Session 8 starting over with other parameters: a fresh transfer, not "abandoned". */
-    feed(fr, begin_frame(fr, 8, size, crc, 128));
+    feed(fr, begin_frame(fr, 8, t_cube.size, t_cube.crc, 128));
     CHECK_STR(responses(), "@up ack 8 0");
     CHECK_EQ(t_rx.received, 0);
 }

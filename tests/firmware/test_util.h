@@ -22,22 +22,22 @@ static inline double ud(unit_t u)
     return unit_as_double(u);
 }
 
+/* d as the backend holds it: rounded to the nearest step of the fixed-point build (`one` is its
+ * 1.0), as is in the float build. */
+#if REAL_IS_FIXED
+#define TEST_FROM_DOUBLE(type, d, one) ((type)llround((d) * (double)(one)))
+#else
+#define TEST_FROM_DOUBLE(type, d, one) ((type)(d))
+#endif
+
 static inline real_t to_real(double d)
 {
-#if REAL_IS_FIXED
-    return (real_t)llround(d * 65536.0);
-#else
-    return (real_t)d;
-#endif
+    return TEST_FROM_DOUBLE(real_t, d, REAL_ONE);
 }
 
 static inline unit_t to_unit(double d)
 {
-#if REAL_IS_FIXED
-    return (unit_t)llround(d * 1073741824.0);
-#else
-    return (unit_t)d;
-#endif
+    return TEST_FROM_DOUBLE(unit_t, d, UNIT_ONE);
 }
 
 /* max |M M^T - I| over the entries: how far a rotation is from orthonormal. */

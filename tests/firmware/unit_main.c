@@ -9,7 +9,6 @@
 
 static int unit_case_failures;
 static const char *unit_case_name;
-static uint32_t unit_rng = 0x12345678u;
 
 void unit_fail(const char *file, int line, const char *fmt, ...)
 {
@@ -23,19 +22,6 @@ void unit_fail(const char *file, int line, const char *fmt, ...)
         printf("\n");
     }
     unit_case_failures++;
-}
-
-uint32_t unit_rand(void)
-{
-    unit_rng ^= unit_rng << 13;
-    unit_rng ^= unit_rng >> 17;
-    unit_rng ^= unit_rng << 5;
-    return unit_rng;
-}
-
-void unit_srand(uint32_t seed)
-{
-    unit_rng = (seed != 0u) ? seed : 1u;
 }
 
 int main(void)

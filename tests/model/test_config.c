@@ -102,18 +102,22 @@ static void test_ctrl(void)
     /* CTRL keeps CLEAR [0], SWAP [1], ZTEST [2], ZCLEAR [3], DITHER [4];
      * other bits are not stored.  Same with and without the depth buffer
      * (without it ZTEST/ZCLEAR are stored but ignored, see test_depth.c). */
+    static const uint32_t written_read[][2] = {
+        { 0xFFFFFFFFu, 0x1F },
+        { GPU_CTRL_ZTEST_MASK, 0x4 },
+        { GPU_CTRL_ZCLEAR_MASK | 0x20u, 0x8 },
+        { 0xFFFFFFE0u, 0 },
+        { 0x5u, 0x5 },
+    };
     for (int z = 0; z < 2; z++) {
         gpu_model *m = test_new_model_cfg(8, true, z != 0);
-        gpu_model_write(m, GPU_REG_CTRL, 0xFFFFFFFFu);
-        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x1F);
-        gpu_model_write(m, GPU_REG_CTRL, GPU_CTRL_ZTEST_MASK);
-        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x4);
-        gpu_model_write(m, GPU_REG_CTRL, GPU_CTRL_ZCLEAR_MASK | 0x20u);
-        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x8);
-        gpu_model_write(m, GPU_REG_CTRL, 0xFFFFFFE0u);
-        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0);
-        gpu_model_write(m, GPU_REG_CTRL, 0x5u);
-        CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x5);
+        for (size_t i = 0; i < sizeof written_read / sizeof written_read[0]; i++) {
+            gpu_model_write(m, GPU_REG_CTRL, written_read[i][0]);
+            if (!CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), written_read[i][1])) {
+                printf("  CTRL written 0x%08X, %s depth buffer\n", (unsigned)written_read[i][0],
+                       z ? "with" : "without");
+            }
+        }
         /* A batch does not change it. */
         gpu_model_write(m, GPU_REG_DOORBELL, 1);
         CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), 0x5);
@@ -206,6 +210,25 @@ static uint32_t spans_of(gpu_model *m, uint32_t nv, uint32_t n)
     return gpu_model_read(m, GPU_REG_PERF_SPANS_WRITTEN);
 }
 
+/* Vertices 0..2 at Q12.4 (x0, y0), (x1, y1), (x2, y2). */
+static void set_vtx3(gpu_model *m, int32_t x0, int32_t y0, int32_t x1, int32_t y1, int32_t x2,
+                     int32_t y2)
+{
+    test_set_vtx(m, 0, x0, y0);
+    test_set_vtx(m, 1, x1, y1);
+    test_set_vtx(m, 2, x2, y2);
+}
+
+/* The rectangle (x0, y0) - (x1, y1) (Q12.4) as vertices 0..3 and two triangles split along the
+ * diagonal: prim 0 (0, 1, 2) in colour 1, prim 1 (0, 2, 3) in colour 2. */
+static void set_quad(gpu_model *m, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
+{
+    set_vtx3(m, x0, y0, x1, y0, x1, y1);
+    test_set_vtx(m, 3, x0, y1);
+    test_set_prim(m, 0, 0, 1, 2, 1, GPU_PRIM_KIND_TRI);
+    test_set_prim(m, 1, 0, 2, 3, 2, GPU_PRIM_KIND_TRI);
+}
+
 static void test_spans(void)
 {
     static const unsigned widths[4] = { 1, 4, 8, 16 };
@@ -261,36 +284,23 @@ static void test_spans(void)
     for (int k = 0; k < 4; k++) {
         gpu_model *m = test_new_model_cfg(widths[k], true, false);
 
-        test_set_vtx(m, 0, 96, 32);
-        test_set_vtx(m, 1, 288, 32);
-        test_set_vtx(m, 2, 288, 64);
-        test_set_vtx(m, 3, 96, 64);
-        test_set_prim(m, 0, 0, 1, 2, 1, GPU_PRIM_KIND_TRI);
-        test_set_prim(m, 1, 0, 2, 3, 2, GPU_PRIM_KIND_TRI);
+        set_quad(m, 96, 32, 288, 64);
         CHECK_EQ(spans_of(m, 4, 2), want_rect[k]);
         CHECK_PERF6(m, 2, 2, 0, 24, 48, want_rect[k]);
         /* Only the other winding of A: the same. */
         test_set_prim(m, 0, 0, 2, 1, 1, GPU_PRIM_KIND_TRI);
         CHECK_EQ(spans_of(m, 4, 1), want_a[k]);
 
-        test_set_vtx(m, 0, 20, 4);
-        test_set_vtx(m, 1, 100, 40);
-        test_set_vtx(m, 2, 30, 90);
+        set_vtx3(m, 20, 4, 100, 40, 30, 90);
         test_set_prim(m, 0, 0, 1, 2, 1, GPU_PRIM_KIND_TRI);
         CHECK_EQ(spans_of(m, 3, 1), want_t2[k]);
         CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_PIXELS), 12);
 
-        test_set_vtx(m, 0, -100, 0);
-        test_set_vtx(m, 1, 40, 8);
-        test_set_vtx(m, 2, -100, 100);
+        set_vtx3(m, -100, 0, 40, 8, -100, 100);
         CHECK_EQ(spans_of(m, 3, 1), want_left[k]);
         CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_PIXELS), 3);
 
-        test_set_vtx(m, 0, 4960, 0);
-        test_set_vtx(m, 1, 5120, 0);
-        test_set_vtx(m, 2, 5120, 16);
-        test_set_vtx(m, 3, 4960, 16);
-        test_set_prim(m, 1, 0, 2, 3, 2, GPU_PRIM_KIND_TRI);
+        set_quad(m, 4960, 0, 5120, 16);  /* prim 0 as it already is */
         CHECK_EQ(spans_of(m, 4, 2), want_right[k]);
         CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_PIXELS), 10);
         CHECK_EQ(test_back_px(m, 314, 0), 2);
@@ -298,9 +308,7 @@ static void test_spans(void)
 
         /* A rejected (zero-area / off-screen) triangle and a line add no
          * spans; a line after a triangle leaves the triangle's count. */
-        test_set_vtx(m, 0, 20, 4);
-        test_set_vtx(m, 1, 100, 40);
-        test_set_vtx(m, 2, 30, 90);
+        set_vtx3(m, 20, 4, 100, 40, 30, 90);
         test_set_vtx(m, 3, -500, -500);
         test_set_prim(m, 0, 0, 1, 2, 1, GPU_PRIM_KIND_TRI);
         test_set_prim(m, 1, 0, 1, 1, 2, GPU_PRIM_KIND_TRI);  /* zero area */

@@ -68,6 +68,55 @@ static void run(gpu_model *m, uint32_t ctrl, uint32_t nv, uint32_t n)
     test_batch(m, ctrl, 0, nv, 0, n, 0, g_tag++);
 }
 
+/* Triangle 0 (vertices 0..2 as x, y, z triples) alone, on colour and depth buffers just cleared,
+ * with the depth test on. */
+static void draw_ztest(gpu_model *m, const int32_t v[9], uint32_t color)
+{
+    set_tri(m, 0, 0, v, color);
+    run(m, CL | ZC | ZT, 3, 1);
+}
+
+/* Pixels (xs * k, k), k0 <= k < k1, whose depth is not z or (when color >= 0) whose colour is
+ * not color. */
+static int off_diagonal(const gpu_model *m, int k0, int k1, int xs, uint16_t z, int color)
+{
+    int bad = 0;
+    for (int k = k0; k < k1; k++) {
+        bad += test_z(m, xs * k, k) != z;
+        bad += color >= 0 && test_back_px(m, xs * k, k) != color;
+    }
+    return bad;
+}
+
+/* The square of pixels 0..9 x 0..9 (prims 0, 1) at depth z in colour `color`, alone, run with
+ * ctrl. */
+static void draw_square(gpu_model *m, uint32_t ctrl, uint32_t z, uint32_t color)
+{
+    set_rect(m, 0, 0, 0, 0, 10, 10, z, color);
+    run(m, ctrl, 4, 2);
+}
+
+/* A pixel and the depth it must hold. */
+struct z_at {
+    int px, py;
+    uint16_t z;
+};
+
+/* Each listed pixel holds its depth and (when color >= 0) colour `color`; `what` names the case in
+ * a failure. */
+static void check_z_at(const gpu_model *m, const struct z_at *want, size_t n, int color,
+                       const char *what)
+{
+    for (size_t i = 0; i < n; i++) {
+        if (!CHECK_EQ(test_z(m, want[i].px, want[i].py), want[i].z)) {
+            printf("  %s pixel (%d,%d)\n", what, want[i].px, want[i].py);
+        }
+        if (color >= 0) {
+            CHECK_EQ(test_back_px(m, want[i].px, want[i].py), color);
+        }
+    }
+}
+
 static uint32_t perf_pixels(const gpu_model *m)
 {
     return gpu_model_read(m, GPU_REG_PERF_PIXELS);
@@ -91,6 +140,21 @@ static uint32_t px_eq(const gpu_model *m, uint8_t v)
     }
     return n;
 }
+
+/* The occlusion pair: P = pixels 0..9 x 0..9 at depth 100 in colour 1 and Q = 5..14 x 5..14 at
+ * 200 in colour 2, P drawn first or (q_first) Q, run with ctrl. */
+static void draw_p_q(gpu_model *m, bool q_first, uint32_t ctrl)
+{
+    set_rect(m, q_first ? 4 : 0, q_first ? 2 : 0, 0, 0, 10, 10, 100, 1);
+    set_rect(m, q_first ? 0 : 4, q_first ? 0 : 2, 5, 5, 15, 15, 200, 2);
+    run(m, ctrl, 8, 4);
+}
+
+/* After draw_p_q: PERF_PIXELS, and the pixels of P's and of Q's colour. */
+#define CHECK_P_Q(m, pixels, n_p, n_q)      \
+    CHECK_EQ(perf_pixels(m), (pixels));     \
+    CHECK_EQ(px_eq((m), 1), (n_p));         \
+    CHECK_EQ(px_eq((m), 2), (n_q))
 
 /* ------------------------------------------------ plane, by hand */
 
@@ -124,8 +188,7 @@ static void test_plane(void)
     } w1[] = { { 0, 0, 1150 }, { 3, 2, 1850 }, { 5, 1, 1850 },
                { 1, 5, 2250 }, { 8, 0, 1950 }, { 0, 17, 4550 },
                { 4, 8, 3150 } };
-    set_tri(m, 0, 0, t1, 3);
-    run(m, CL | ZC | ZT, 3, 1);
+    draw_ztest(m, t1, 3);
     for (size_t i = 0; i < sizeof w1 / sizeof w1[0]; i++) {
         if (!CHECK_EQ(test_z(m, w1[i].px, w1[i].py), w1[i].z)) {
             printf("  T1 pixel (%d,%d)\n", w1[i].px, w1[i].py);
@@ -164,19 +227,10 @@ static void test_plane(void)
      */
     static const int32_t t3[9] = { -30000, -12000, 48000, 3840, 3552, 32000,
                                    3120,   2224,   13000 };
-    static const struct {
-        int px, py;
-        uint16_t z;
-    } w3[] = { { 0, 56, 16609 },   { 1, 57, 16769 },   { 10, 60, 16348 },
-               { 100, 150, 30762 }, { 200, 200, 31260 }, { 239, 221, 31920 } };
-    set_tri(m, 0, 0, t3, 4);
-    run(m, CL | ZC | ZT, 3, 1);
-    for (size_t i = 0; i < sizeof w3 / sizeof w3[0]; i++) {
-        if (!CHECK_EQ(test_z(m, w3[i].px, w3[i].py), w3[i].z)) {
-            printf("  T3 pixel (%d,%d)\n", w3[i].px, w3[i].py);
-        }
-        CHECK_EQ(test_back_px(m, w3[i].px, w3[i].py), 4);
-    }
+    static const struct z_at w3[] = { { 0, 56, 16609 },   { 1, 57, 16769 },   { 10, 60, 16348 },
+                                      { 100, 150, 30762 }, { 200, 200, 31260 }, { 239, 221, 31920 } };
+    draw_ztest(m, t3, 4);
+    check_z_at(m, w3, sizeof w3 / sizeof w3[0], 4, "T3");
     uint32_t t3_pixels = perf_pixels(m);
     CHECK(t3_pixels > 10000);
     CHECK_EQ(z_not(m, 0xFFFF), t3_pixels);
@@ -191,8 +245,7 @@ static void test_plane(void)
      * swap): the identical oriented triangle, so the identical depths. */
     static const int32_t t3s[9] = { -30000, -12000, 48000, 3120, 2224, 13000,
                                     3840,   3552,   32000 };
-    set_tri(m, 0, 0, t3s, 4);
-    run(m, CL | ZC | ZT, 3, 1);
+    draw_ztest(m, t3s, 4);
     CHECK_EQ(perf_pixels(m), t3_pixels);
     CHECK(memcmp(zsave, m->zbuf, GPU_MODEL_FB_PIXELS * sizeof *zsave) == 0);
 
@@ -202,19 +255,11 @@ static void test_plane(void)
      *   (100,150) 30762, (200,200) 31260 unchanged. */
     static const int32_t t3r[9] = { 3840,   3552,   32000, 3120, 2224, 13000,
                                     -30000, -12000, 48000 };
-    static const struct {
-        int px, py;
-        uint16_t z;
-    } w3r[] = { { 0, 56, 16608 },   { 1, 57, 16768 },   { 10, 60, 16348 },
-                { 100, 150, 30762 }, { 200, 200, 31260 }, { 239, 221, 31919 } };
-    set_tri(m, 0, 0, t3r, 4);
-    run(m, CL | ZC | ZT, 3, 1);
+    static const struct z_at w3r[] = { { 0, 56, 16608 },   { 1, 57, 16768 },   { 10, 60, 16348 },
+                                       { 100, 150, 30762 }, { 200, 200, 31260 }, { 239, 221, 31919 } };
+    draw_ztest(m, t3r, 4);
     CHECK_EQ(perf_pixels(m), t3_pixels);
-    for (size_t i = 0; i < sizeof w3r / sizeof w3r[0]; i++) {
-        if (!CHECK_EQ(test_z(m, w3r[i].px, w3r[i].py), w3r[i].z)) {
-            printf("  T3 rotated pixel (%d,%d)\n", w3r[i].px, w3r[i].py);
-        }
-    }
+    check_z_at(m, w3r, sizeof w3r / sizeof w3r[0], -1, "T3 rotated");
     free(zsave);
 
     /* A constant depth: ZA = ZB = 0 and z = z0 exactly, also 0 and 65534. */
@@ -253,15 +298,9 @@ static void test_saturation(void)
      *   (the exact plane gives 65535 on this edge)
      */
     static const int32_t s1a[9] = { 1, 0, 30000, 1600, 1600, 65535, 0, 0, 65535 };
-    set_tri(m, 0, 0, s1a, 1);
-    run(m, CL | ZC | ZT, 3, 1);
+    draw_ztest(m, s1a, 1);
     CHECK_PERF6(m, 1, 1, 0, 100, 10000, 100);
-    int bad = 0;
-    for (int k = 0; k < 100; k++) {
-        bad += test_z(m, k, k) != 62767;
-        bad += test_back_px(m, k, k) != 1;
-    }
-    CHECK_EQ(bad, 0);
+    CHECK_EQ(off_diagonal(m, 0, 100, 1, 62767, 1), 0);
     CHECK_EQ(z_not(m, 0xFFFF), 100);
 
     /* (b) z = 40000, 0, 0 (dz = -40000): ZA = 65536*40000 -> sat 2^31 - 1,
@@ -270,29 +309,18 @@ static void test_saturation(void)
      *       = 65536*40000 - 2^31 - c + 1 -> z = 40000 - 32769 = 7231
      *   (exact: 0). */
     static const int32_t s1b[9] = { 1, 0, 40000, 1600, 1600, 0, 0, 0, 0 };
-    set_tri(m, 0, 0, s1b, 2);
-    run(m, CL | ZC | ZT, 3, 1);
+    draw_ztest(m, s1b, 2);
     CHECK_EQ(perf_pixels(m), 100);
-    bad = 0;
-    for (int k = 0; k < 100; k++) {
-        bad += test_z(m, k, k) != 7231;
-    }
-    CHECK_EQ(bad, 0);
+    CHECK_EQ(off_diagonal(m, 0, 100, 1, 7231, -1), 0);
 
     /* (c) z = 32768, 0, 0: ZA = 65536*32768 = 2^31 -> sat 2^31 - 1, ZB =
      *   -2^31 (fits): z = floor(32768 - 32769 + ...) = -1 -> clamp 0.  0 is
      *   less than the cleared 0xFFFF, so all 100 pixels are written with
      *   depth 0 (an unclamped -1 would wrap to 0xFFFF and fail the test). */
     static const int32_t s1c[9] = { 1, 0, 32768, 1600, 1600, 0, 0, 0, 0 };
-    set_tri(m, 0, 0, s1c, 3);
-    run(m, CL | ZC | ZT, 3, 1);
+    draw_ztest(m, s1c, 3);
     CHECK_EQ(perf_pixels(m), 100);
-    bad = 0;
-    for (int k = 0; k < 100; k++) {
-        bad += test_z(m, k, k) != 0;
-        bad += test_back_px(m, k, k) != 3;
-    }
-    CHECK_EQ(bad, 0);
+    CHECK_EQ(off_diagonal(m, 0, 100, 1, 0, 3), 0);
 
     /*
      * S2, a sliver of slope 1/2: I0 (9,8), I1 (1608,808), I2 (8,8).
@@ -315,8 +343,7 @@ static void test_saturation(void)
      *   0xFFFF: only (0,0) is written.  Spans still count all 50 rows.
      */
     static const int32_t s2d[9] = { 9, 8, 60000, 1608, 808, 40000, 8, 8, 40000 };
-    set_tri(m, 0, 0, s2d, 4);
-    run(m, CL | ZC | ZT, 3, 1);
+    draw_ztest(m, s2d, 4);
     CHECK_PERF6(m, 1, 1, 0, 1, 5151, 50);
     CHECK_EQ(test_z(m, 0, 0), 40000);
     CHECK_EQ(test_back_px(m, 0, 0), 4);
@@ -331,16 +358,10 @@ static void test_saturation(void)
      *          = -5617221648 -> floor(-85712.0002) = -85713 -> clamp 0.
      *   All 50 are written (0 < 0xFFFF). */
     static const int32_t s2e[9] = { 9, 8, 10000, 1608, 808, 30000, 8, 8, 30000 };
-    set_tri(m, 0, 0, s2e, 5);
-    run(m, CL | ZC | ZT, 3, 1);
+    draw_ztest(m, s2e, 5);
     CHECK_PERF6(m, 1, 1, 0, 50, 5151, 50);
     CHECK_EQ(test_z(m, 0, 0), 30000);
-    bad = 0;
-    for (int k = 1; k < 50; k++) {
-        bad += test_z(m, 2 * k, k) != 0;
-        bad += test_back_px(m, 2 * k, k) != 5;
-    }
-    CHECK_EQ(bad, 0);
+    CHECK_EQ(off_diagonal(m, 1, 50, 2, 0, 5), 0);
     CHECK_EQ(z_not(m, 0xFFFF), 50);
 
     /* (f) z = 65535, 0, 0: ZA = 65536*65535 -> sat 2^31 - 1, ZB =
@@ -348,8 +369,7 @@ static void test_saturation(void)
      *   floor((65536*65535 - (2^31 - 1)) / 65536) = floor(32767.00002) =
      *   32767 (exact: 0); k >= 1 clamps to 65535 and is not written. */
     static const int32_t s2f[9] = { 9, 8, 65535, 1608, 808, 0, 8, 8, 0 };
-    set_tri(m, 0, 0, s2f, 6);
-    run(m, CL | ZC | ZT, 3, 1);
+    draw_ztest(m, s2f, 6);
     CHECK_EQ(perf_pixels(m), 1);
     CHECK_EQ(test_z(m, 0, 0), 32767);
     CHECK_EQ(z_not(m, 0xFFFF), 1);
@@ -374,8 +394,7 @@ static void test_ztest_rules(void)
      * rectangle: upper triangle rows r = 0..9 px r..9 (spans {0,1} for
      * r <= 7, {1} for r = 8, 9: 18), lower rows 1..9 px 0..r-1 ({0} for
      * r <= 8, {0,1} for r = 9: 10): 28 spans, 55 + 45 pixels. */
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0, 1);
-    run(m, CL | ZT, 4, 2);
+    draw_square(m, CL | ZT, 0, 1);
     CHECK_EQ(z_not(m, 0), 0);
     CHECK_PERF6(m, 2, 2, 0, 0, 200, 28);
     CHECK_EQ(px_eq(m, 1), 0);
@@ -388,35 +407,29 @@ static void test_ztest_rules(void)
     CHECK_EQ(px_eq(m, 9), GPU_MODEL_FB_PIXELS);
 
     /* A depth of 0xFFFF is never less than the cleared value. */
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0xFFFF, 1);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 0xFFFF, 1);
     CHECK_PERF6(m, 2, 2, 0, 0, 200, 28);
 
     /* Strictly less, then replaced: 100 at 100; again at 100 (equal, not
      * written); at 101 (not written); at 99 (written). */
-    set_rect(m, 0, 0, 0, 0, 10, 10, 100, 1);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 100, 1);
     CHECK_PERF6(m, 2, 2, 0, 100, 200, 28);
     CHECK_EQ(test_z(m, 9, 9), 100);
     CHECK_EQ(z_not(m, 0xFFFF), 100);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 100, 2);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 100, 2);
     CHECK_PERF6(m, 2, 2, 0, 0, 200, 28);
     CHECK_EQ(px_eq(m, 1), 100);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 101, 3);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 101, 3);
     CHECK_EQ(perf_pixels(m), 0);
     CHECK_EQ(px_eq(m, 1), 100);
     CHECK_EQ(test_z(m, 0, 0), 100);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 99, 4);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 99, 4);
     CHECK_EQ(perf_pixels(m), 100);
     CHECK_EQ(px_eq(m, 4), 100);
     CHECK_EQ(test_z(m, 5, 5), 99);
 
     /* Without ZTEST (depth buffer built): written regardless, depth kept. */
-    set_rect(m, 0, 0, 0, 0, 10, 10, 50000, 5);
-    run(m, 0, 4, 2);
+    draw_square(m, 0, 50000, 5);
     CHECK_EQ(perf_pixels(m), 100);
     CHECK_EQ(px_eq(m, 5), 100);
     CHECK_EQ(test_z(m, 5, 5), 99);
@@ -425,8 +438,7 @@ static void test_ztest_rules(void)
      * double-buffered, so it survives a swap. */
     run(m, CL | GPU_CTRL_SWAP_MASK, 0, 0);
     CHECK_EQ(test_z(m, 5, 5), 99);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 99, 6);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 99, 6);
     CHECK_EQ(perf_pixels(m), 0);
 
     /* ERR_COUNT skips the depth clear too (the swap still happens). */
@@ -438,33 +450,21 @@ static void test_ztest_rules(void)
 
     /* Occlusion, near first: P = pixels 0..9 x 0..9 at 100 (colour 1), Q =
      * 5..14 x 5..14 at 200 (colour 2): Q loses the 25 shared pixels. */
-    set_rect(m, 0, 0, 0, 0, 10, 10, 100, 1);
-    set_rect(m, 4, 2, 5, 5, 15, 15, 200, 2);
-    run(m, CL | ZC | ZT, 8, 4);
-    CHECK_EQ(perf_pixels(m), 175);
-    CHECK_EQ(px_eq(m, 1), 100);
-    CHECK_EQ(px_eq(m, 2), 75);
+    draw_p_q(m, false, CL | ZC | ZT);
+    CHECK_P_Q(m, 175, 100, 75);
     CHECK_EQ(test_back_px(m, 7, 7), 1);
     CHECK_EQ(test_back_px(m, 12, 7), 2);
     CHECK_EQ(test_z(m, 7, 7), 100);
     CHECK_EQ(test_z(m, 12, 12), 200);
     /* Far first: all 200 written, the near one wins the overlap. */
-    set_rect(m, 0, 0, 5, 5, 15, 15, 200, 2);
-    set_rect(m, 4, 2, 0, 0, 10, 10, 100, 1);
-    run(m, CL | ZC | ZT, 8, 4);
-    CHECK_EQ(perf_pixels(m), 200);
-    CHECK_EQ(px_eq(m, 1), 100);
-    CHECK_EQ(px_eq(m, 2), 75);
+    draw_p_q(m, true, CL | ZC | ZT);
+    CHECK_P_Q(m, 200, 100, 75);
     CHECK_EQ(test_z(m, 7, 7), 100);
     /* Without ZTEST the later one simply wins. */
-    run(m, CL | ZC, 8, 4);
-    CHECK_EQ(perf_pixels(m), 200);
-    CHECK_EQ(px_eq(m, 1), 100);
-    CHECK_EQ(px_eq(m, 2), 75);
+    draw_p_q(m, true, CL | ZC);
+    CHECK_P_Q(m, 200, 100, 75);
     CHECK_EQ(z_not(m, 0xFFFF), 0);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 100, 1);
-    set_rect(m, 4, 2, 5, 5, 15, 15, 200, 2);
-    run(m, CL | ZC, 8, 4);
+    draw_p_q(m, false, CL | ZC);
     CHECK_EQ(px_eq(m, 1), 75);
     CHECK_EQ(px_eq(m, 2), 100);
 
@@ -529,25 +529,21 @@ static void test_lines_and_absent(void)
      * again. */
     m = test_new_model_cfg(8, true, false);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS) & GPU_CAPS_ZBUF_MASK, 0);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 100, 1);
-    run(m, CL | ZC | ZT, 4, 2);
+    draw_square(m, CL | ZC | ZT, 100, 1);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CTRL), CL | ZC | ZT);
     CHECK_EQ(perf_pixels(m), 100);
     CHECK_EQ(z_not(m, 0), 0);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 100, 2);
-    run(m, ZC | ZT, 4, 2);
+    draw_square(m, ZC | ZT, 100, 2);
     CHECK_EQ(perf_pixels(m), 100);
     CHECK_EQ(px_eq(m, 2), 100);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0xFFFF, 3);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 0xFFFF, 3);
     CHECK_EQ(perf_pixels(m), 100);
     CHECK_EQ(px_eq(m, 3), 100);
     CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
     CHECK_EQ(z_not(m, 0), 0);
     /* The sliver S2 (d) of test_saturation: all 50 pixels drawn. */
     static const int32_t s2d[9] = { 9, 8, 60000, 1608, 808, 40000, 8, 8, 40000 };
-    set_tri(m, 0, 0, s2d, 4);
-    run(m, CL | ZC | ZT, 3, 1);
+    draw_ztest(m, s2d, 4);
     CHECK_PERF6(m, 1, 1, 0, 50, 5151, 50);
     CHECK_EQ(z_not(m, 0), 0);
     free(m);
@@ -568,26 +564,21 @@ static void test_zbuf_bits(void)
 
     /* 0x1234 stored as 0x12; 0x12FF and 0x1200 (same top byte) are not
      * nearer; 0x11FF is. */
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0x1234, 1);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 0x1234, 1);
     CHECK_EQ(perf_pixels(m), 100);
     CHECK_EQ(test_z(m, 3, 3), 0x12);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0x1200, 2);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 0x1200, 2);
     CHECK_EQ(perf_pixels(m), 0);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0x11FF, 3);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 0x11FF, 3);
     CHECK_EQ(perf_pixels(m), 100);
     CHECK_EQ(test_z(m, 3, 3), 0x11);
     CHECK_EQ(px_eq(m, 3), 100);
 
     /* 0xFF00 .. 0xFFFF keep 255, the cleared value: never drawn. */
     test_batch(m, ZC, 0, 0, 0, 0, 0, g_tag++);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0xFF00, 4);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 0xFF00, 4);
     CHECK_EQ(perf_pixels(m), 0);
-    set_rect(m, 0, 0, 0, 0, 10, 10, 0xFEFF, 4);
-    run(m, ZT, 4, 2);
+    draw_square(m, ZT, 0xFEFF, 4);
     CHECK_EQ(perf_pixels(m), 100);
     free(m);
 

@@ -55,6 +55,8 @@ static void set_screen(gpu_model *m, uint32_t (*f)(int32_t x, int32_t y), uint32
     }
 }
 
+/* The intensity g_const everywhere: at the corners (set_screen) and the pixel centres
+ * (mismatches). */
 static uint32_t g_const;
 static uint32_t constant(int32_t x, int32_t y)
 {
@@ -80,7 +82,7 @@ static int expected(uint32_t i, int px, int py, int base, bool dither)
     return (base + level) & 0xFF;
 }
 
-static uint32_t mismatches(const gpu_model *m, uint32_t (*pixel_i)(int, int), int base,
+static uint32_t mismatches(const gpu_model *m, uint32_t (*pixel_i)(int32_t, int32_t), int base,
                            bool dither)
 {
     uint32_t bad = 0;
@@ -93,14 +95,7 @@ static uint32_t mismatches(const gpu_model *m, uint32_t (*pixel_i)(int, int), in
     return bad;
 }
 
-static uint32_t const_at(int x, int y)
-{
-    (void)x;
-    (void)y;
-    return g_const;
-}
-
-static uint32_t ramp_at(int x, int y)
+static uint32_t ramp_at(int32_t x, int32_t y)
 {
     (void)y;
     return (uint32_t)(128 * x + 64);
@@ -124,9 +119,9 @@ void test_gouraud(void)
     test_batch(m, CL, 0, 4, 0, 2, 0, g_tag++);
     CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
     CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_PIXELS), GPU_MODEL_FB_PIXELS);
-    CHECK_EQ(mismatches(m, const_at, 0x30, false), 0);
+    CHECK_EQ(mismatches(m, constant, 0x30, false), 0);
     test_batch(m, CL | DI, 0, 4, 0, 2, 0, g_tag++);
-    CHECK_EQ(mismatches(m, const_at, 0x30, true), 0);
+    CHECK_EQ(mismatches(m, constant, 0x30, true), 0);
     {
         uint32_t up = 0;
         for (uint32_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
@@ -139,7 +134,7 @@ void test_gouraud(void)
     g_const = 0xFFFF;
     set_screen(m, constant, 0x40, false);
     test_batch(m, CL | DI, 0, 4, 0, 2, 0, g_tag++);
-    CHECK_EQ(mismatches(m, const_at, 0x40, true), 0);
+    CHECK_EQ(mismatches(m, constant, 0x40, true), 0);
     CHECK_EQ(gpu_model_back(m)[0], 0x4F);
 
     /* The colour wraps: 250 + 10. */

@@ -45,6 +45,15 @@ static uint32_t line_px(int x0, int y0, int x1, int y1)
     CHECK_PERF6(g_m, 1, 1, 0, (on), (n), 0); \
     CHECK_EQ(gpu_model_read(g_m, GPU_REG_ERRORS), 0)
 
+/* The line just drawn (`pixels` is line()'s PERF_PIXELS) covers exactly the listed pixels in
+ * colour 1; with _PERF also its counters for n steps. */
+#define CHECK_DRAWN(pixels, list)                                    \
+    CHECK_EQ((pixels), sizeof(list) / sizeof((list)[0]));            \
+    CHECK_PIXELS(g_m, list, 1, 0)
+#define CHECK_DRAWN_PERF(pixels, list, n) \
+    CHECK_DRAWN(pixels, list);            \
+    CHECK_LINE_PERF(n, sizeof(list) / sizeof((list)[0]))
+
 /* ------------------------------------------------------ hand examples */
 
 static void test_hand_lines(void)
@@ -58,18 +67,14 @@ static void test_hand_lines(void)
      * (8,5), the last endpoint, is not drawn. */
     static const int a[][2] = { { 2, 3 }, { 3, 3 }, { 4, 4 },
                                 { 5, 4 }, { 6, 4 }, { 7, 5 } };
-    CHECK_EQ(line(37, 57, 143, 80), 6);
-    CHECK_PIXELS(g_m, a, 1, 0);
-    CHECK_LINE_PERF(6, 6);
+    CHECK_DRAWN_PERF(line(37, 57, 143, 80), a, 6);
 
     /* The same reversed, (8,5) -> (2,3): sx = sy = -1, e = -2:
      *   plot (8,5) -> 2;  plot (7,5) e > 0: Y 4, -> -6;  plot (6,4) -> -2;
      *   plot (5,4) -> 2;  plot (4,4) e > 0: Y 3, -> -6;  plot (3,3). */
     static const int ar[][2] = { { 8, 5 }, { 7, 5 }, { 6, 4 },
                                  { 5, 4 }, { 4, 4 }, { 3, 3 } };
-    CHECK_EQ(line(143, 80, 37, 57), 6);
-    CHECK_PIXELS(g_m, ar, 1, 0);
-    CHECK_LINE_PERF(6, 6);
+    CHECK_DRAWN_PERF(line(143, 80, 37, 57), ar, 6);
 
     /* y-major, (20,20) -> (23,27): dx 3, dy 7, n 7, e = 6 - 7 = -1:
      *   plot (20,20) -> 5;  plot (20,21) e > 0: X 21, e -9 -> -3;
@@ -79,9 +84,7 @@ static void test_hand_lines(void)
     static const int b[][2] = { { 20, 20 }, { 20, 21 }, { 21, 22 },
                                 { 21, 23 }, { 22, 24 }, { 22, 25 },
                                 { 23, 26 } };
-    CHECK_EQ(line_px(20, 20, 23, 27), 7);
-    CHECK_PIXELS(g_m, b, 1, 0);
-    CHECK_LINE_PERF(7, 7);
+    CHECK_DRAWN_PERF(line_px(20, 20, 23, 27), b, 7);
 
     /* Reversed, (23,27) -> (20,20), e = -1:
      *   plot (23,27) -> 5;  plot (23,26) e > 0: X 22, -> -3;
@@ -91,8 +94,7 @@ static void test_hand_lines(void)
     static const int br[][2] = { { 23, 27 }, { 23, 26 }, { 22, 25 },
                                  { 22, 24 }, { 21, 23 }, { 21, 22 },
                                  { 20, 21 } };
-    CHECK_EQ(line_px(23, 27, 20, 20), 7);
-    CHECK_PIXELS(g_m, br, 1, 0);
+    CHECK_DRAWN(line_px(23, 27, 20, 20), br);
 
     /* The tie e == 0 does not step: (10,10) -> (14,12), dx 4, dy 2,
      * e = 4 - 4 = 0:
@@ -100,23 +102,19 @@ static void test_hand_lines(void)
      *   plot (12,11) e 0 -> 4;           plot (13,11). */
     static const int t[][2] = { { 10, 10 }, { 11, 10 }, { 12, 11 },
                                 { 13, 11 } };
-    CHECK_EQ(line_px(10, 10, 14, 12), 4);
-    CHECK_PIXELS(g_m, t, 1, 0);
-    CHECK_LINE_PERF(4, 4);
+    CHECK_DRAWN_PERF(line_px(10, 10, 14, 12), t, 4);
     /* Reversed it is not the mirror image: (14,12) -> (10,10), e = 0:
      *   plot (14,12) -> 4;  plot (13,12) e > 0: Y 11, -> 0;
      *   plot (12,11) -> 4;  plot (11,11). */
     static const int tr[][2] = { { 14, 12 }, { 13, 12 }, { 12, 11 },
                                  { 11, 11 } };
-    CHECK_EQ(line_px(14, 12, 10, 10), 4);
-    CHECK_PIXELS(g_m, tr, 1, 0);
+    CHECK_DRAWN(line_px(14, 12, 10, 10), tr);
     /* y-major tie: (30,10) -> (32,14), dx 2, dy 4, e = 4 - 4 = 0:
      *   plot (30,10) -> 4;  plot (30,11) e > 0: X 31, -> 0;
      *   plot (31,12) -> 4;  plot (31,13). */
     static const int ty[][2] = { { 30, 10 }, { 30, 11 }, { 31, 12 },
                                  { 31, 13 } };
-    CHECK_EQ(line_px(30, 10, 32, 14), 4);
-    CHECK_PIXELS(g_m, ty, 1, 0);
+    CHECK_DRAWN(line_px(30, 10, 32, 14), ty);
 }
 
 /* All eight octants from pixel (100,100): |d| = (5,2) is x-major, (2,5)
@@ -134,26 +132,19 @@ static void test_octants(void)
     for (int s = 0; s < 4; s++) {
         int sx = sgn[s][0], sy = sgn[s][1];
         int want[5][2];
-        /* x-major octant */
-        for (int k = 0; k < 5; k++) {
-            want[k][0] = 100 + sx * xmaj[k][0];
-            want[k][1] = 100 + sy * xmaj[k][1];
+        /* the x-major octant, then the y-major one (u and v exchanged) */
+        for (int ymaj = 0; ymaj < 2; ymaj++) {
+            const int dx = ymaj ? 2 : 5, dy = ymaj ? 5 : 2;
+            for (int k = 0; k < 5; k++) {
+                want[k][0] = 100 + sx * xmaj[k][ymaj];
+                want[k][1] = 100 + sy * xmaj[k][!ymaj];
+            }
+            CHECK_EQ(line_px(100, 100, 100 + dx * sx, 100 + dy * sy), 5);
+            if (!CHECK_PIXELS(g_m, want, 1, 0)) {
+                printf("  %c-major octant sx %d sy %d\n", ymaj ? 'y' : 'x', sx, sy);
+            }
+            CHECK_LINE_PERF(5, 5);
         }
-        CHECK_EQ(line_px(100, 100, 100 + 5 * sx, 100 + 2 * sy), 5);
-        if (!CHECK_PIXELS(g_m, want, 1, 0)) {
-            printf("  x-major octant sx %d sy %d\n", sx, sy);
-        }
-        CHECK_LINE_PERF(5, 5);
-        /* y-major octant */
-        for (int k = 0; k < 5; k++) {
-            want[k][0] = 100 + sx * xmaj[k][1];
-            want[k][1] = 100 + sy * xmaj[k][0];
-        }
-        CHECK_EQ(line_px(100, 100, 100 + 2 * sx, 100 + 5 * sy), 5);
-        if (!CHECK_PIXELS(g_m, want, 1, 0)) {
-            printf("  y-major octant sx %d sy %d\n", sx, sy);
-        }
-        CHECK_LINE_PERF(5, 5);
     }
 
     /* One negative octant written out: (100,100) -> (95,98). */
@@ -173,27 +164,17 @@ static void test_octants(void)
     static const int d2[][2] = { { 50, 60 }, { 49, 61 }, { 48, 62 } };
     static const int d3[][2] = { { 50, 60 }, { 49, 59 }, { 48, 58 } };
     static const int d4[][2] = { { 50, 60 }, { 51, 59 }, { 52, 58 } };
-    CHECK_EQ(line_px(50, 60, 53, 60), 3);
-    CHECK_PIXELS(g_m, h, 1, 0);
-    CHECK_EQ(line_px(53, 60, 50, 60), 3);
-    CHECK_PIXELS(g_m, hr, 1, 0);
-    CHECK_EQ(line_px(50, 60, 50, 63), 3);
-    CHECK_PIXELS(g_m, v, 1, 0);
-    CHECK_EQ(line_px(50, 63, 50, 60), 3);
-    CHECK_PIXELS(g_m, vr, 1, 0);
-    CHECK_EQ(line_px(50, 60, 53, 63), 3);
-    CHECK_PIXELS(g_m, d1, 1, 0);
-    CHECK_EQ(line_px(50, 60, 47, 63), 3);
-    CHECK_PIXELS(g_m, d2, 1, 0);
-    CHECK_EQ(line_px(50, 60, 47, 57), 3);
-    CHECK_PIXELS(g_m, d3, 1, 0);
-    CHECK_EQ(line_px(50, 60, 53, 57), 3);
-    CHECK_PIXELS(g_m, d4, 1, 0);
+    CHECK_DRAWN(line_px(50, 60, 53, 60), h);
+    CHECK_DRAWN(line_px(53, 60, 50, 60), hr);
+    CHECK_DRAWN(line_px(50, 60, 50, 63), v);
+    CHECK_DRAWN(line_px(50, 63, 50, 60), vr);
+    CHECK_DRAWN(line_px(50, 60, 53, 63), d1);
+    CHECK_DRAWN(line_px(50, 60, 47, 63), d2);
+    CHECK_DRAWN(line_px(50, 60, 47, 57), d3);
+    CHECK_DRAWN(line_px(50, 60, 53, 57), d4);
     /* One step: only the first endpoint. */
     static const int one[][2] = { { 7, 9 } };
-    CHECK_EQ(line_px(7, 9, 8, 10), 1);
-    CHECK_PIXELS(g_m, one, 1, 0);
-    CHECK_LINE_PERF(1, 1);
+    CHECK_DRAWN_PERF(line_px(7, 9, 8, 10), one, 1);
 }
 
 /* -------------------------------------- endpoints, guard band, clipping */
@@ -212,20 +193,14 @@ static void test_line_guard_band(void)
      * pixel -1, x = -17 in pixel -2.  Lines from there to pixel 3 of row 0
      * step 4 or 5 times, the on-screen plots are (0,0), (1,0), (2,0). */
     static const int r0[][2] = { { 0, 0 }, { 1, 0 }, { 2, 0 } };
-    CHECK_EQ(line(-1, 8, Q(3, 8), 8), 3);
-    CHECK_PIXELS(g_m, r0, 1, 0);
-    CHECK_LINE_PERF(4, 3);
+    CHECK_DRAWN_PERF(line(-1, 8, Q(3, 8), 8), r0, 4);
     CHECK_EQ(line(-16, 8, Q(3, 8), 8), 3);
     CHECK_LINE_PERF(4, 3);
-    CHECK_EQ(line(-17, 8, Q(3, 8), 8), 3);
-    CHECK_PIXELS(g_m, r0, 1, 0);
-    CHECK_LINE_PERF(5, 3);
+    CHECK_DRAWN_PERF(line(-17, 8, Q(3, 8), 8), r0, 5);
     /* Same in y: y = -49 is pixel -4 (-3.0625 floors to -4); down column 5
      * to pixel row 2: plots rows -4..1, on screen (5,0), (5,1). */
     static const int c5[][2] = { { 5, 0 }, { 5, 1 } };
-    CHECK_EQ(line(Q(5, 0), -49, Q(5, 8), Q(2, 0)), 2);
-    CHECK_PIXELS(g_m, c5, 1, 0);
-    CHECK_LINE_PERF(6, 2);
+    CHECK_DRAWN_PERF(line(Q(5, 0), -49, Q(5, 8), Q(2, 0)), c5, 6);
 
     /* A slanted line entering at the corner: (-41,-1) is pixel (-3,-1),
      * (79,47) is pixel (4,2).  dx 7, dy 3, e = 6 - 7 = -1:
@@ -233,30 +208,22 @@ static void test_line_guard_band(void)
      *   (0,0) e > 0: Y 1, -11 -> -5; (1,1) -> 1; (2,1) e > 0: Y 2, -> -7;
      *   (3,2).  On screen: (0,0), (1,1), (2,1), (3,2). */
     static const int corner[][2] = { { 0, 0 }, { 1, 1 }, { 2, 1 }, { 3, 2 } };
-    CHECK_EQ(line(-41, -1, 79, 47), 4);
-    CHECK_PIXELS(g_m, corner, 1, 0);
-    CHECK_LINE_PERF(7, 4);
+    CHECK_DRAWN_PERF(line(-41, -1, 79, 47), corner, 7);
     /* Reversed: (4,2) -> (-3,-1), e = -1:
      *   (4,2) -> 5; (3,2) e > 0: Y 1, -> -3; (2,1) -> 3; (1,1) e > 0: Y 0,
      *   -> -5; (0,0) -> 1; (-1,0) e > 0: Y -1 -> -7; (-2,-1).
      * On screen: (4,2), (3,2), (2,1), (1,1), (0,0). */
     static const int cornerr[][2] = { { 4, 2 }, { 3, 2 }, { 2, 1 },
                                       { 1, 1 }, { 0, 0 } };
-    CHECK_EQ(line(79, 47, -41, -1), 5);
-    CHECK_PIXELS(g_m, cornerr, 1, 0);
-    CHECK_LINE_PERF(7, 5);
+    CHECK_DRAWN_PERF(line(79, 47, -41, -1), cornerr, 7);
 
     /* Right and bottom edges: pixel (317,239) -> (323,239) plots 317..322,
      * of which 317..319 are on screen; (300,237) -> (300,243) plots rows
      * 237..242, on screen 237..239. */
     static const int re[][2] = { { 317, 239 }, { 318, 239 }, { 319, 239 } };
-    CHECK_EQ(line_px(317, 239, 323, 239), 3);
-    CHECK_PIXELS(g_m, re, 1, 0);
-    CHECK_LINE_PERF(6, 3);
+    CHECK_DRAWN_PERF(line_px(317, 239, 323, 239), re, 6);
     static const int be[][2] = { { 300, 237 }, { 300, 238 }, { 300, 239 } };
-    CHECK_EQ(line_px(300, 237, 300, 243), 3);
-    CHECK_PIXELS(g_m, be, 1, 0);
-    CHECK_LINE_PERF(6, 3);
+    CHECK_DRAWN_PERF(line_px(300, 237, 300, 243), be, 6);
 
     /* Across the whole screen from guard band to guard band: row 100 from
      * pixel -3 to 400 (403 steps, plots -3..399), column 50 from row -10 to
@@ -295,6 +262,24 @@ static void test_line_guard_band(void)
 
 /* ------------------------------------------ rejection, indices, kinds */
 
+/* Vertices 0.. at the listed Q12.4 (x, y), primitives 0.. as listed (i0, i1, i2, colour, kind). */
+static void load(gpu_model *m, const int32_t (*vtx)[2], size_t n_vtx, const uint32_t (*prims)[5],
+                 size_t n_prims)
+{
+    for (size_t i = 0; i < n_vtx; i++) {
+        test_set_vtx(m, (uint32_t)i, vtx[i][0], vtx[i][1]);
+    }
+    for (size_t i = 0; i < n_prims; i++) {
+        test_set_prim(m, (uint32_t)i, prims[i][0], prims[i][1], prims[i][2], prims[i][3],
+                      prims[i][4]);
+    }
+}
+
+#define KIND_LINE GPU_PRIM_KIND_LINE
+#define KIND_TRI  GPU_PRIM_KIND_TRI
+#define LOAD(m, vtx, prims) \
+    load((m), (vtx), sizeof(vtx) / sizeof((vtx)[0]), (prims), sizeof(prims) / sizeof((prims)[0]))
+
 static bool back_all_zero(void)
 {
     for (uint32_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
@@ -325,12 +310,12 @@ static void test_line_reject(void)
 
     /* Index checks use I0 and I1 only: I2 = 0xFFFF is fine for a line,
      * I0 or I1 = VTX_COUNT is ERR_VTX_INDEX. */
-    test_set_vtx(g_m, 0, Q(1, 0), Q(1, 0));
-    test_set_vtx(g_m, 1, Q(4, 0), Q(1, 0));
-    test_set_prim(g_m, 0, 0, 1, 0xFFFF, 7, GPU_PRIM_KIND_LINE);
-    test_set_prim(g_m, 1, 2, 1, 0, 8, GPU_PRIM_KIND_LINE);
-    test_set_prim(g_m, 2, 0, 2, 0, 8, GPU_PRIM_KIND_LINE);
-    test_set_prim(g_m, 3, 0xFFFF, 0, 1, 8, GPU_PRIM_KIND_LINE);
+    static const int32_t idx_vtx[][2] = { { Q(1, 0), Q(1, 0) }, { Q(4, 0), Q(1, 0) } };
+    static const uint32_t idx_prims[][5] = {
+        { 0, 1, 0xFFFF, 7, KIND_LINE }, { 2, 1, 0, 8, KIND_LINE },
+        { 0, 2, 0, 8, KIND_LINE },      { 0xFFFF, 0, 1, 8, KIND_LINE },
+    };
+    LOAD(g_m, idx_vtx, idx_prims);
     test_batch(g_m, GPU_CTRL_CLEAR_MASK, 0, 2, 0, 1, 0, 0x50);
     static const int ok[][2] = { { 1, 1 }, { 2, 1 }, { 3, 1 } };
     CHECK_PIXELS(g_m, ok, 7, 0);
@@ -351,12 +336,12 @@ static void test_line_reject(void)
     /* A GPU built without lines: ERR_KIND, rejected, checked before the
      * indices (a line with a bad index reports only ERR_KIND). */
     gpu_model *nl = test_new_model_cfg(4, false, true);
-    test_set_vtx(nl, 0, Q(1, 0), Q(1, 0));
-    test_set_vtx(nl, 1, Q(4, 0), Q(1, 0));
-    test_set_vtx(nl, 2, Q(1, 0), Q(4, 0));
-    test_set_prim(nl, 0, 0, 1, 0, 7, GPU_PRIM_KIND_LINE);
-    test_set_prim(nl, 1, 0, 5, 0, 7, GPU_PRIM_KIND_LINE);
-    test_set_prim(nl, 2, 0, 1, 2, 3, GPU_PRIM_KIND_TRI);
+    static const int32_t nl_vtx[][2] = { { Q(1, 0), Q(1, 0) }, { Q(4, 0), Q(1, 0) },
+                                         { Q(1, 0), Q(4, 0) } };
+    static const uint32_t nl_prims[][5] = {
+        { 0, 1, 0, 7, KIND_LINE }, { 0, 5, 0, 7, KIND_LINE }, { 0, 1, 2, 3, KIND_TRI },
+    };
+    LOAD(nl, nl_vtx, nl_prims);
     test_batch(nl, GPU_CTRL_CLEAR_MASK, 0, 3, 0, 3, 0, 0x53);
     CHECK_EQ(gpu_model_read(nl, GPU_REG_ERRORS), GPU_ERR_KIND_MASK);
     CHECK_EQ(gpu_model_read(nl, GPU_REG_PERF_TRIS_IN), 3);
@@ -369,19 +354,24 @@ static void test_line_reject(void)
 
 /* ---------------------------------------------- polygons, batches */
 
+/* The closed polygon through the centres of the n listed pixels, one line from each vertex to the
+ * next (the last back to the first) in colour 4, in one batch of its own. */
+static void closed_polygon(const int (*px)[2], uint32_t n, uint32_t tag)
+{
+    for (uint32_t k = 0; k < n; k++) {
+        test_set_vtx(g_m, k, Q(px[k][0], 8), Q(px[k][1], 8));
+        test_set_prim(g_m, k, k, (k + 1) % n, 0, 4, GPU_PRIM_KIND_LINE);
+    }
+    test_batch(g_m, GPU_CTRL_CLEAR_MASK, 0, n, 0, n, 0, tag);
+}
+
 static void test_polygons(void)
 {
     /* A closed square of four lines through pixels (10,10) (20,10) (20,20)
      * (10,20): each line draws its first corner and not its last, so the
      * 40 border pixels of the 11 x 11 square are each written once. */
-    test_set_vtx(g_m, 0, Q(10, 8), Q(10, 8));
-    test_set_vtx(g_m, 1, Q(20, 8), Q(10, 8));
-    test_set_vtx(g_m, 2, Q(20, 8), Q(20, 8));
-    test_set_vtx(g_m, 3, Q(10, 8), Q(20, 8));
-    for (uint32_t k = 0; k < 4; k++) {
-        test_set_prim(g_m, k, k, (k + 1) % 4, 0, 4, GPU_PRIM_KIND_LINE);
-    }
-    test_batch(g_m, GPU_CTRL_CLEAR_MASK, 0, 4, 0, 4, 0, 0x60);
+    static const int square[][2] = { { 10, 10 }, { 20, 10 }, { 20, 20 }, { 10, 20 } };
+    closed_polygon(square, 4, 0x60);
     int border[40][2];
     int n = 0;
     for (int y = 10; y <= 20; y++) {
@@ -434,13 +424,7 @@ static void test_polygons(void)
     free(acc);
     /* The triangle's lines again, in one batch: n = max(10,4) + max(7,11)
      * + max(3,15) = 36 steps, all on screen. */
-    test_set_vtx(g_m, 0, Q(30, 8), Q(30, 8));
-    test_set_vtx(g_m, 1, Q(40, 8), Q(34, 8));
-    test_set_vtx(g_m, 2, Q(33, 8), Q(45, 8));
-    for (uint32_t k = 0; k < 3; k++) {
-        test_set_prim(g_m, k, k, (k + 1) % 3, 0, 4, GPU_PRIM_KIND_LINE);
-    }
-    test_batch(g_m, GPU_CTRL_CLEAR_MASK, 0, 3, 0, 3, 0, 0x62);
+    closed_polygon(poly, 3, 0x62);
     CHECK_PERF6(g_m, 3, 3, 0, 36, 36, 0);
 
     /* Lines and triangles in one batch, in order: a later primitive
@@ -448,17 +432,15 @@ static void test_polygons(void)
      * (1..3, 1), (1..2, 2), (1, 3) (colour 5), then a line through row 1
      * (colour 6), then the triangle again (colour 7) over a line in row 4
      * (colour 8, drawn after). */
-    test_set_vtx(g_m, 0, 16, 16);
-    test_set_vtx(g_m, 1, 80, 16);
-    test_set_vtx(g_m, 2, 16, 80);
-    test_set_vtx(g_m, 3, Q(0, 0), Q(1, 0));
-    test_set_vtx(g_m, 4, Q(6, 0), Q(1, 0));
-    test_set_vtx(g_m, 5, Q(0, 0), Q(4, 0));
-    test_set_vtx(g_m, 6, Q(6, 0), Q(4, 0));
-    test_set_prim(g_m, 0, 0, 1, 2, 5, GPU_PRIM_KIND_TRI);
-    test_set_prim(g_m, 1, 3, 4, 0, 6, GPU_PRIM_KIND_LINE);
-    test_set_prim(g_m, 2, 5, 6, 0, 8, GPU_PRIM_KIND_LINE);
-    test_set_prim(g_m, 3, 0, 1, 2, 7, GPU_PRIM_KIND_TRI);
+    static const int32_t mix_vtx[][2] = {
+        { 16, 16 }, { 80, 16 }, { 16, 80 }, { Q(0, 0), Q(1, 0) },
+        { Q(6, 0), Q(1, 0) }, { Q(0, 0), Q(4, 0) }, { Q(6, 0), Q(4, 0) },
+    };
+    static const uint32_t mix_prims[][5] = {
+        { 0, 1, 2, 5, KIND_TRI }, { 3, 4, 0, 6, KIND_LINE },
+        { 5, 6, 0, 8, KIND_LINE }, { 0, 1, 2, 7, KIND_TRI },
+    };
+    LOAD(g_m, mix_vtx, mix_prims);
     test_batch(g_m, GPU_CTRL_CLEAR_MASK, 0, 7, 0, 4, 0, 0x61);
     CHECK_EQ(test_back_px(g_m, 0, 1), 6);
     CHECK_EQ(test_back_px(g_m, 1, 1), 7);

@@ -14,12 +14,10 @@ for _ in $(seq 1 20); do
     junk+=$'\e[A\e[15~xyzXYZ!@#\x01\x7f\xffjjl'
 done
 [ "${#junk}" -ge 300 ] || fail "burst too short"
-run_to "$work/out" 120 "$GPUSIM" cosim --fw "$elf" --frames "$work/frames" --uart-log "$work/uart.log" \
-    --keys-at "1:$junk" --summary "$work/summary"
+cosim_run "$GPUSIM" "$elf" 120 --keys-at "1:$junk"
 tail -n 4 "$work/out"
 expect_status 0 "the co-simulation"
-expect_eq "$(count '^frame ' "$work/uart.log")" 4 "frames rendered"
-expect_eq "$(summary frames_model_checked "$work/summary")" 4 "frames equal to the model"
+expect_frames 4
 expect_no_line '^error' "$work/uart.log"
 expect_line '^wireframe on' "$work/uart.log"  # the burst reached the firmware
 pass "keys-burst: ${#junk} bytes typed at once, all 4 frames rendered, status 0"

@@ -11,12 +11,10 @@ sim="$BUILD/sim-z-w8/gpusim"
 need_file "$lean" "$full" "$sim"
 work=$(fresh_dir scene-lean-build)
 
-run_to "$work/out" 120 "$sim" cosim --fw "$lean" --frames "$work/frames" --uart-log "$work/uart.log" \
-    --keys-at "1:fgz" --summary "$work/summary"
+cosim_run "$sim" "$lean" 120 --keys-at "1:fgz"
 tail -n 3 "$work/out"
 expect_status 0 "the co-simulation"
-expect_eq "$(count '^frame ' "$work/uart.log")" 4 "frames rendered"
-expect_eq "$(summary frames_model_checked "$work/summary")" 4 "frames equal to the model"
+expect_frames 4
 for what in "wireframe: not built in" "anaglyph: not built in" "depth buffer: not built in"; do
     expect_line "^$what" "$work/uart.log"
 done

@@ -5,12 +5,9 @@
 source "$(dirname "$0")/../lib.sh"
 source "$(dirname "$0")/soc_lib.sh"
 need BUILD
-elf="$soc_test_dir/bus_error.elf"
-need_file "$socsim" "$elf.hex"
-work=$(fresh_dir soc-bus-error)
+soc_test bus_error soc-bus-error
 
-run_to "$work/out" 60 "$socsim" --fw "$elf" --frames "$work/frames" --uart-log "$work/uart.log" \
-    --summary "$work/summary" --max-cycles 5e6
+run_socsim 60 --summary "$work/summary" --max-cycles 5e6
 cat "$work/out"
 expect_status 126 "socsim (BSP_EXIT_TRAP)"
 expect_line '^bus_error: loading from 0x90000000' "$work/uart.log"

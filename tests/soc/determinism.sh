@@ -6,9 +6,7 @@
 source "$(dirname "$0")/../lib.sh"
 source "$(dirname "$0")/soc_lib.sh"
 need BUILD
-elf="$soc_test_dir/tetra-2f.elf"
-need_file "$socsim" "$elf.hex"
-work=$(fresh_dir soc-determinism)
+soc_test tetra-2f soc-determinism
 
 one_run() {
     run_to "$work/$1.out" 120 "$socsim" --fw "$elf" --frames "$work/$1" --uart-log "$work/$1.uart" \

@@ -5,11 +5,9 @@
 source "$(dirname "$0")/../lib.sh"
 source "$(dirname "$0")/soc_lib.sh"
 need BUILD
-elf="$soc_test_dir/poll_cycles.elf"
-need_file "$socsim" "$elf.hex"
-work=$(fresh_dir soc-poll-cycles)
+soc_test poll_cycles soc-poll-cycles
 
-run_to "$work/out" 60 "$socsim" --fw "$elf" --frames "$work/frames" --uart-log "$work/uart.log" --max-cycles 5e6
+run_socsim 60 --max-cycles 5e6
 cat "$work/out"
 expect_status 0 "socsim"
 line=$(grep '^poll_cycles: ' "$work/uart.log") || fail "no poll_cycles line"

@@ -6,28 +6,13 @@
 source "$(dirname "$0")/../lib.sh"
 need BUILD
 source "$(dirname "$0")/soc_lib.sh"
-elf="$soc_test_dir/tetra.elf"
-need_file "$socsim" "$elf.hex"
-work=$(fresh_dir soc-uart-pty)
-link="$work/tty"
+soc_test tetra soc-uart-pty
 
-timeout 300 "$socsim" --fw "$elf" --frames "$work/frames" --uart-log "$work/uart.log" \
-    --summary "$work/summary" --uart-pty "$link" >"$work/out" 2>&1 &
-sim=$!
-client=0
-python3 tests/cosim/pty_keys.py "$link" "$work/transcript" 280 h >"$work/client.out" 2>&1 || client=$?
-status=0
-wait "$sim" || status=$?
-cat "$work/client.out"
-tail -n 3 "$work/out"
+pty_session 300 "$socsim" --fw "$elf" --frames "$work/frames" --uart-log "$work/uart.log" \
+    --summary "$work/summary" --uart-pty "$work/tty" -- 280 h
 expect_status 0 "socsim"
 [ "$client" -eq 0 ] || fail "the pty client did not get the help twice (client.out above)"
-expect_line "^socsim: UART on $link \(/dev/pts/[0-9]+\)$" "$work/out"
-[ ! -e "$link" ] || fail "the link $link is still there after the run"
-expect_eq "$(count 'H this help' "$work/uart.log")" 2 "help texts in the log (boot and H)"
+expect_pty_echo socsim
 expect_eq "$(summary uart_pty_in "$work/summary")" 1 "bytes from the pty (summary)"
-expect_eq "$(summary uart_pty_dropped "$work/summary")" 0 "bytes dropped (summary)"
 expect_eq "$(summary uart_framing_errors "$work/summary")" 0 "framing errors"
-tr -d '\r' <"$work/transcript" >"$work/transcript.lf"
-cmp -s "$work/transcript.lf" "$work/uart.log" || fail "the pty's transcript differs from the UART log"
-pass "soc-uart-pty: H typed through $(basename "$link"), the help came back, $(wc -c <"$work/transcript") bytes received"
+pass "soc-uart-pty: H typed through tty, the help came back, $(wc -c <"$work/transcript") bytes received"

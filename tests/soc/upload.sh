@@ -8,10 +8,9 @@
 source "$(dirname "$0")/../lib.sh"
 need BUILD PYTHON
 source "$(dirname "$0")/soc_lib.sh"
-elf="$soc_test_dir/model-upload.elf"
+soc_test model-upload soc-upload
 host="$BUILD/fw-test/host-upload-model"
-need_file "$socsim" "$elf.hex" "$host"
-work=$(fresh_dir soc-upload)
+need_file "$host"
 frames=$(sed -n 's/^SOC_UPLOAD_FRAMES := //p' tests/soc/tests.mk)
 [ -n "$frames" ] || fail "no SOC_UPLOAD_FRAMES in tests/soc/tests.mk"
 TOOL_PY=${TOOL_PY:-/usr/bin/python3}

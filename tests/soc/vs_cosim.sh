@@ -47,29 +47,11 @@ one_scene() {
         cmp -s "$f" "$work/$s-host/$(basename "$f")" || fail "$s: $(basename "$f") differs from the host build's"
     done
     # Both worlds read the keys at the same frame: the same triangles submitted and drawn per frame.
-    diff <(grep '^frame ' "$work/$s.soc.uart" | sed 's/ | fw instr.*//') \
-         <(grep '^frame ' "$work/$s.host.uart" | sed 's/ | fw instr.*//' | head -n "$frames") >/dev/null ||
+    diff <(frame_lines "$work/$s.soc.uart") <(frame_lines "$work/$s.host.uart" | head -n "$frames") >/dev/null ||
         fail "$s: the firmware's triangle counts differ between socsim and the host build"
     echo "$s: $frames frames identical to the host build's, $(summary cycles "$work/$s.soc.summary") SoC cycles"
 }
 
-pids=()
-names=()
-for s in $scenes; do
-    if [ "${#pids[@]}" -ge 2 ]; then
-        wait "${pids[0]}" || fail "scene ${names[0]} (see above)"
-        pids=("${pids[@]:1}")
-        names=("${names[@]:1}")
-    fi
-    one_scene "$s" &
-    pids+=($!)
-    names+=("$s")
-done
-for i in "${!pids[@]}"; do
-    wait "${pids[$i]}" || fail "scene ${names[$i]} (see above)"
-done
-total=0
-for s in $scenes; do
-    total=$((total + $(summary frames "$work/$s.soc.summary")))
-done
+each_scene 2 one_scene $scenes
+total=$(total_frames "$work/%.soc.summary" $scenes)
 pass "soc-vs-cosim: $(echo $scenes | wc -w) scenes, $total socsim frames byte-identical to the host build's (= co-simulation's), all equal to the model"

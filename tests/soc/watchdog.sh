@@ -7,12 +7,9 @@
 source "$(dirname "$0")/../lib.sh"
 source "$(dirname "$0")/soc_lib.sh"
 need BUILD
-elf="$soc_test_dir/tetra-watchdog-tiny.elf"
-need_file "$socsim" "$elf.hex"
-work=$(fresh_dir soc-watchdog)
+soc_test tetra-watchdog-tiny soc-watchdog
 
-run_to "$work/out" 120 "$socsim" --fw "$elf" --frames "$work/frames" --uart-log "$work/uart.log" \
-    --summary "$work/summary" --max-cycles 50e6
+run_socsim 120 --summary "$work/summary" --max-cycles 50e6
 cat "$work/out"
 expect_status 4 "socsim (the firmware's FW_EXIT_GPU_TIMEOUT)"
 expect_eq "$(summary firmware_status "$work/summary")" 4 "firmware status in the summary"

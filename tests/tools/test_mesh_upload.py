@@ -232,6 +232,19 @@ def transfer_over(rx, clock, data=FILE, chunk=64, window=4, timeout=1.0, retries
 
 
 class Window(unittest.TestCase):
+    def fault_transfer(self, frames, step=0.05, timeout=1.0, **hooks):
+        """`frames` 64-byte DATA frames through a window of 4 to a FakeReceiver advancing its clock
+        by step, with the given hooks (lose, nak, throttle, repeat_acks); the transfer must
+        succeed. Returns (transfer, receiver, clock)."""
+        clock = Clock()
+        rx = FakeReceiver(clock, step=step)
+        for name, value in hooks.items():
+            assert hasattr(rx, name), name
+            setattr(rx, name, value)
+        t, status = transfer_over(rx, clock, data=bytes(64 * frames), window=4, timeout=timeout)
+        self.assertEqual(status, 0)
+        return t, rx, clock
+
     def test_clean(self):
         clock = Clock()
         rx = FakeReceiver(clock)
@@ -260,53 +273,34 @@ class Window(unittest.TestCase):
         self.assertEqual(t.poll(1), [4])
 
     def test_nak_retransmits(self):
-        clock = Clock()
-        rx = FakeReceiver(clock)
-        rx.nak = {6: 1}  # the last DATA frame: no later ack shows it lost, only the nak
-        t, status = transfer_over(rx, clock, data=bytes(64 * 6), window=4, timeout=1000.0)
-        self.assertEqual(status, 0)
+        # A nak for the last DATA frame: no later ack shows it lost, only the nak.
+        t, rx, clock = self.fault_transfer(6, timeout=1000.0, nak={6: 1})
         self.assertEqual(t.counts["naks"], 1)
         self.assertEqual(t.counts["retransmissions"], 1)
         self.assertEqual([q for f, q in rx.received if q == 6], [6, 6])
         self.assertLess(clock.t, 1000.0)  # by the nak, not the timeout
 
     def test_lost_frame_resent_when_a_later_one_is_acked(self):
-        clock = Clock()
-        rx = FakeReceiver(clock)
-        rx.lose = {2: 1}
-        t, status = transfer_over(rx, clock, data=bytes(64 * 6), window=4, timeout=1000.0)
-        self.assertEqual(status, 0)
+        t, rx, clock = self.fault_transfer(6, timeout=1000.0, lose={2: 1})
         self.assertEqual(t.counts["retransmissions"], 1)
         self.assertLess(clock.t, 1000.0)  # not by the timeout
 
     def test_timeout_retransmits(self):
         # The last DATA frame's loss shows by nothing but silence: resent after the timeout.
-        clock = Clock()
-        rx = FakeReceiver(clock, step=0.05)
-        rx.lose = {6: 1}
-        t, status = transfer_over(rx, clock, data=bytes(64 * 6), window=4, timeout=2.0)
-        self.assertEqual(status, 0)
+        t, rx, clock = self.fault_transfer(6, step=0.05, timeout=2.0, lose={6: 1})
         self.assertEqual(t.counts["retransmissions"], 1)
         self.assertGreaterEqual(clock.t, 2.0)
 
     def test_slow_receiver_no_resends(self):
         # 2 bytes a read, 0.05 s a read: 40 bytes/s, so a DATA frame of 80 bytes takes 2 s, more
         # than the timeout: the rate learnt from BEGIN's ack must keep the window from resending.
-        clock = Clock()
-        rx = FakeReceiver(clock, step=0.05)
-        rx.throttle = 2
-        t, status = transfer_over(rx, clock, data=bytes(64 * 6), window=4, timeout=1.0)
-        self.assertEqual(status, 0)
+        t, rx, clock = self.fault_transfer(6, step=0.05, throttle=2)
         self.assertEqual(t.counts["retransmissions"], 0)
         self.assertLess(t.rate, 60)
         self.assertGreater(clock.t, 10.0)  # it was slow: 550 bytes at 40 bytes/s
 
     def test_duplicate_acks_ignored(self):
-        clock = Clock()
-        rx = FakeReceiver(clock)
-        rx.repeat_acks = True
-        t, status = transfer_over(rx, clock, data=bytes(64 * 6))
-        self.assertEqual(status, 0)
+        t, rx, clock = self.fault_transfer(6, repeat_acks=True)
         self.assertEqual(t.counts["retransmissions"], 0)
         self.assertEqual(t.counts["duplicate_acks"], 7)  # BEGIN and six DATA, each acked twice
         self.assertEqual(t.acked_bytes, 64 * 6)
@@ -369,11 +363,7 @@ class Window(unittest.TestCase):
             transfer_over(rx, clock)
 
     def test_commit_only_after_every_ack(self):
-        clock = Clock()
-        rx = FakeReceiver(clock)
-        rx.lose = {1: 2}
-        t, status = transfer_over(rx, clock, data=bytes(64 * 3), window=4, timeout=1.0)
-        self.assertEqual(status, 0)
+        t, rx, clock = self.fault_transfer(3, lose={1: 2})
         kinds = [f for f, _ in rx.received]
         self.assertEqual(kinds.count(mu.COMMIT), 1)
         self.assertEqual(kinds[-1], mu.COMMIT)

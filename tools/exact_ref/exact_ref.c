@@ -379,6 +379,15 @@ static void er_at(double p[3], double sx, double sy, double z)
     p[2] = z;
 }
 
+/* The triangle whose vertices lie on the pixel positions (x0, y0), (x1, y1), (x2, y2) at depth z. */
+static void er_tri_at(double t[][3], double x0, double y0, double x1, double y1, double x2, double y2,
+                      double z)
+{
+    er_at(t[0], x0, y0, z);
+    er_at(t[1], x1, y1, z);
+    er_at(t[2], x2, y2, z);
+}
+
 static int er_count(const struct er_frame *fr, uint8_t index, int *max_writes)
 {
     int n = 0;
@@ -402,9 +411,7 @@ static int er_self_test(void)
      * through pixel centres: the top-left rule takes the left column and the top row, not the
      * right or the bottom: exactly 10 x 10 centres, each covered once (the diagonal too). */
     er_clear(&fr, &v, 0);
-    er_at(t[0], 10.5, 10.5, 1.0);
-    er_at(t[1], 20.5, 10.5, 1.0);
-    er_at(t[2], 20.5, 20.5, 1.0);
+    er_tri_at(t, 10.5, 10.5, 20.5, 10.5, 20.5, 20.5, 1.0);
     er_draw_polygon(&fr, t, 3, 7);
     er_at(t[1], 20.5, 20.5, 1.0);
     er_at(t[2], 10.5, 20.5, 1.0);
@@ -453,12 +460,8 @@ static int er_self_test(void)
         double nearer[3][3], farther[3][3];
 
         er_clear(&fr, &v, 0);
-        er_at(nearer[0], 100.0, 100.0, 2.0);
-        er_at(nearer[1], 140.0, 100.0, 2.0);
-        er_at(nearer[2], 100.0, 140.0, 2.0);
-        er_at(farther[0], 90.0, 90.0, 4.0);
-        er_at(farther[1], 160.0, 90.0, 4.0);
-        er_at(farther[2], 90.0, 160.0, 4.0);
+        er_tri_at(nearer, 100.0, 100.0, 140.0, 100.0, 100.0, 140.0, 2.0);
+        er_tri_at(farther, 90.0, 90.0, 160.0, 90.0, 90.0, 160.0, 4.0);
         if (order == 0) {
             er_draw_polygon(&fr, nearer, 3, 1);
             er_draw_polygon(&fr, farther, 3, 2);
@@ -472,9 +475,7 @@ static int er_self_test(void)
 
     /* 5. Beyond the far plane: nothing. */
     er_clear(&fr, &v, 0);
-    er_at(t[0], 10.5, 10.5, 200.0);
-    er_at(t[1], 20.5, 10.5, 200.0);
-    er_at(t[2], 20.5, 20.5, 200.0);
+    er_tri_at(t, 10.5, 10.5, 20.5, 10.5, 20.5, 20.5, 200.0);
     er_draw_polygon(&fr, t, 3, 7);
     er_expect(er_count(&fr, 7, &most) == 0, "far plane: nothing beyond it");
 

@@ -25,21 +25,6 @@ void unit_fail(const char *file, int line, const char *fmt, ...)
     failures++;
 }
 
-static uint32_t rng = 1u;
-
-uint32_t unit_rand(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 17;
-    rng ^= rng << 5;
-    return rng;
-}
-
-void unit_srand(uint32_t seed)
-{
-    rng = (seed != 0u) ? seed : 1u;
-}
-
 /* Angles where this size's fx_sin differs from the 256-entry function (the path's): 0 exactly at
  * the default size, many at the others — the knob changes the firmware's sine, not the path's. */
 static void test_size_changes_fx_sin_only(void)
