@@ -82,8 +82,7 @@ suite rtl-bus-slaves           8 bash tests/rtl/bus_slaves.sh
 suite rtl-uart-fifo           14 bash tests/rtl/uart_fifo.sh
 suite rtl-soc-lint             3 make --no-print-directory lint-soc
 suite rtl-soc-smoke           16 make --no-print-directory soc-smoke
-suite fw-unit                  1 "$BUILD/tests/fw_unit"
-suite fw-unit-float            1 "$BUILD/tests/fw_unit_float"
+suite fw-unit                 60 make --no-print-directory fw-unit
 suite fw-no-gpu                1 bash tests/firmware/no_gpu.sh
 suite fw-fit                   5 bash tests/firmware/fit.sh
 suite fw-stress                5 bash tests/stress/run.sh
@@ -150,7 +149,8 @@ suite boards-lint               12 make --no-print-directory lint-board
 suite boards-ulx3s-tools        1 bash tests/boards/ulx3s_tools.sh
 suite bench-error-machinery    1 bash tests/bench/error_machinery.sh
 suite bench-exact-ref          3 bash tests/bench/exact_ref.sh
-suite docs-readme-commands   300 bash tests/docs/readme_commands.sh
+suite docs-readme-run        150 bash tests/docs/readme_commands.sh run
+suite docs-readme-other      150 bash tests/docs/readme_commands.sh other
 set +f
 
 [ "$list_only" -eq 1 ] && exit 0

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Every make command README.md shows is run by a test (tests/docs/readme_commands.py: the list and
-# each command's way). This suite runs the "run" ones, short (two frames, no ECP5 synthesis, the
+# each command's way). `readme_commands.sh run` runs the README's `make run` commands on QEMU and the
+# GPU; `readme_commands.sh other` the rest (the SoC's run among them, which shares its simulator with
+# the lean-report's): two suites, so that they run side by side, and never build one thing twice
+# at once. Together they run the "run" ones, short (two frames, no ECP5 synthesis, the
 # bitstream's flow up to its checked inputs), on make test's simulators but with the firmware, the
 # frames and the manifest builds in its own folder, so that the suites running beside it keep
 # theirs; it checks that each ends well, printed no command line (quiet builds: V=1 shows them) and
@@ -8,7 +11,15 @@
 # are listed with their reasons.
 source "$(dirname "$0")/../lib.sh"
 need BUILD PYTHON
-work=$(fresh_dir docs-readme-commands)
+part=${1:?usage: readme_commands.sh run|other}
+[[ "$part" == run || "$part" == other ]] || fail "part '$part': run or other"
+work=$(fresh_dir "docs-readme-$part")
+# mine ARGS: this part's command? `make run` on QEMU for the part "run", the rest for "other".
+mine() {
+    local is_run=other
+    [[ " $1 " == *" run "* && " $1 " != *" PLATFORM=soc "* ]] && is_run=run
+    [ "$is_run" = "$part" ]
+}
 
 run_to "$work/plan.tsv" 20 "$PYTHON" tests/docs/readme_commands.py --plan
 expect_status 0 "readme_commands.py --plan: $(cat "$work/plan.tsv")"
@@ -19,6 +30,7 @@ while IFS=$'\t' read -r way first second; do
     n=$((n + 1))
     case "$way" in
     run)
+        mine "$first" || continue
         eval "args=($first)"
         out="$work/$n"
         mkdir -p "$out"
@@ -49,13 +61,16 @@ while IFS=$'\t' read -r way first second; do
         ran=$((ran + 1))
         ;;
     same)
+        mine "$first" || continue
         elsewhere=$((elsewhere + 1))
         ;;
     suite)
+        [ "$part" = other ] || continue
         grep -qx "$first" "$work/suites.txt" || fail "README's '$second': suite $first is not in tests/run_all.sh"
         elsewhere=$((elsewhere + 1))
         ;;
     none)
+        [ "$part" = other ] || continue
         skipped+=("$first")
         ;;
     *)
@@ -63,5 +78,5 @@ while IFS=$'\t' read -r way first second; do
         ;;
     esac
 done <"$work/plan.tsv"
-[ "$n" -gt 0 ] || fail "README.md shows no make command"
-pass "README: $n make commands: $ran run here, $elsewhere by their suites or as another run, ${#skipped[@]} not runnable here ($(printf '%s; ' "${skipped[@]}"))"
+[ "$ran" -gt 0 ] || fail "README.md shows no make command of part $part"
+pass "README ($part): $n make commands: $ran run here, $elsewhere by their suites or as another run, ${#skipped[@]} not runnable here ($(printf '%s; ' "${skipped[@]}"))"
