@@ -1,14 +1,13 @@
 #!/usr/bin/env bash
-# Every make command README.md shows is run by a test (tests/docs/readme_commands.py: the list and
-# each command's way). `readme_commands.sh run` runs the README's `make run` commands on QEMU and the
-# GPU; `readme_commands.sh other` the rest (the SoC's run among them, which shares its simulator with
-# the lean-report's): two suites, so that they run side by side, and never build one thing twice
-# at once. Together they run the "run" ones, short (two frames, no ECP5 synthesis, the
-# bitstream's flow up to its checked inputs), on make test's simulators but with the firmware, the
-# frames and the manifest builds in its own folder, so that the suites running beside it keep
-# theirs; it checks that each ends well, printed no command line (quiet builds: V=1 shows them) and
-# made what it should (two frames, the lean-report's table, the bitstream's checked inputs). The "suite" ones must name a suite that exists; the "none" ones
-# are listed with their reasons.
+# Every make command README.md shows is run by a test (tests/docs/readme_commands.py lists them and
+# each one's way). Two suites, side by side: `readme_commands.sh run` runs the README's `make run`
+# commands on QEMU and the GPU, `readme_commands.sh other` the rest (the SoC's run among them, with
+# the lean-report that shares its socsim, so that no simulator is built twice at once).
+# Each "run" command runs short (two frames, no ECP5 synthesis, the bitstream's flow up to its
+# checked inputs) on make test's simulators, with its firmware, frames and manifest builds in the
+# suite's own folder. Each must end well, print no command line (quiet builds: V=1 shows them) and
+# make what it should: two frames, the lean-report's table, the bitstream's checked inputs. A
+# "suite" command must name a suite that exists; the "none" ones are listed with their reasons.
 source "$(dirname "$0")/../lib.sh"
 need BUILD PYTHON
 part=${1:?usage: readme_commands.sh run|other}
@@ -79,4 +78,4 @@ while IFS=$'\t' read -r way first second; do
     esac
 done <"$work/plan.tsv"
 [ "$ran" -gt 0 ] || fail "README.md shows no make command of part $part"
-pass "README ($part): $n make commands: $ran run here, $elsewhere by their suites or as another run, ${#skipped[@]} not runnable here ($(printf '%s; ' "${skipped[@]}"))"
+pass "README ($part): $n make commands: $ran run here, $elsewhere by their suites or as another run, ${#skipped[@]} not runnable here${skipped:+ ($(printf '%s; ' "${skipped[@]}"))}"
