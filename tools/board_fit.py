@@ -20,11 +20,13 @@ directory; a build that does not fit the 85F is reported as such (no place and r
 import argparse
 import json
 import os
-import re
 import subprocess
 import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from elf_to_hex import soc_map_value  # noqa: E402  (contract/soc_map.h's values, read once here)
 
 SCENES = ["tetra", "cubes", "landscape", "voxel", "knot"]
 
@@ -40,8 +42,7 @@ def make(args, targets, variables, log):
 
 def default_kib():
     """The contract's default RAM (contract/soc_map.h SOC_RAM_DEFAULT_BYTES), in KiB."""
-    with open("contract/soc_map.h") as f:
-        return int(re.search(r"#define SOC_RAM_DEFAULT_BYTES\s+(0x[0-9A-Fa-f]+|\d+)", f.read()).group(1), 0) // 1024
+    return soc_map_value("SOC_RAM_DEFAULT_BYTES") // 1024
 
 
 def lean_kib(args, scene, logdir):

@@ -120,23 +120,8 @@ static inline int32_t real_round_int(real_t r) { return fx_round_to_int(r); }
 /* A value as double, exactly (both backends' values are doubles' subsets): for tools that read
  * the pipeline's numbers on the host (the host build's scene export, the unit tests); nothing on
  * the target calls them. */
-static inline double real_as_double(real_t r)
-{
-#if REAL_IS_FIXED
-    return (double)r / 65536.0;      /* q16_16 */
-#else
-    return (double)r;
-#endif
-}
-
-static inline double unit_as_double(unit_t u)
-{
-#if REAL_IS_FIXED
-    return (double)u / 1073741824.0; /* q2_30 */
-#else
-    return (double)u;
-#endif
-}
+static inline double real_as_double(real_t r) { return (double)r / (double)REAL_ONE; }
+static inline double unit_as_double(unit_t u) { return (double)u / (double)UNIT_ONE; }
 
 /* Square root of r >= 0 (negative input gives 0). Build-time and per-frame use. */
 real_t real_sqrt(real_t r);
