@@ -17,29 +17,21 @@ HOST_CFLAGS ?= -std=c11 -O2 -g -Wall -Wextra -Werror
 PYTHON      ?= python3
 VERILATOR   ?= verilator
 # SCENE=x on the command line of run, bitstream ...: the scene's manifest build; FULL=1: the full one.
-include tools/manifest.mk
+include mk/manifest.mk
 
 SPAN_W      ?= 8
 ZBUF        ?= 0
+# The builds as data (mk/builds.toml, tests/suites.toml): mk/gen_builds.py writes $(BUILD)/gen/,
+# the lists read here and the rules read below and by firmware/firmware.mk (mk/gen.mk).
+include mk/gen.mk
 # GOURAUD=1: run on a GPU built with Gouraud triangles (ENABLE_GOURAUD, with the depth buffer):
 # sim-g-w<SPAN_W> and sim-fast-g-w<SPAN_W>; the scenes with vertex normals are then shaded.
 GOURAUD     ?= 0
 GPUSIM_G    := $(if $(filter 1,$(GOURAUD)),g-)
 GPUSIM      := $(BUILD)/sim-$(GPUSIM_G)w$(SPAN_W)/gpusim
-BENCH_SIMS  := $(foreach w,1 4 8 16,$(BUILD)/sim-w$(w)/gpusim)
 ZBUF_SIM    := $(BUILD)/sim-z-w8/gpusim
-ZBUF_SIMS   := $(foreach w,1 4 8 16,$(BUILD)/sim-z-w$(w)/gpusim)
-# Gouraud triangles (ENABLE_GOURAUD) with the depth buffer: sim-g-w<SPAN_W> (bench-gpu's is w8) and
-# on the fast display path sim-fast-g-w<SPAN_W> (make test's and random-long's: the rasterizer is
-# their subject, not the scan-out).
 GOURAUD_SIM := $(BUILD)/sim-g-w8/gpusim
 GOURAUD_SIM_FAST := $(BUILD)/sim-fast-g-w8/gpusim
-# The depth buffer keeping fewer bits (ZBUF_BITS, contract "Depth"), SPAN_W 8: bench-error's depth-bit
-# rows; the 8-bit one is also tested against the model (suite rtl-vs-model-zbuf8).
-ZBITS_SIMS  := $(foreach b,12 8,$(BUILD)/sim-zb$(b)-w8/gpusim)
-# A GPU with small buffers (VTX_CAP 32, TRI_CAP 16), on the fast display path: suite scene-manifest
-# (tests/manifest/manifest.sh) checks it against the golden model built with the same capacities.
-SMALLCAP_SIM := $(BUILD)/sim-fast-cfg-w8-v32-t16/gpusim
 GPUSIM_W8   := $(BUILD)/sim-w8/gpusim
 GPUSIM_FAST := $(BUILD)/sim-fast-$(GPUSIM_G)w$(SPAN_W)/gpusim
 PNG_DIFF    := $(BUILD)/tools/png_diff
@@ -56,6 +48,9 @@ include gpu_model/model.mk
 # The model converter (MESHCONV, meshconv, meshconv-sweep): before the firmware, which converts MODEL=.
 include tools/meshconv/meshconv.mk
 include firmware/firmware.mk
+ifeq ($(FW_PLATFORM),soc)
+include tests/soc/tests.mk
+endif
 include tests/stress/stress.mk
 # libFuzzer targets (FUZZ_BINS, fuzz-build) and `make fuzz`.
 include tests/fuzz/fuzz.mk
@@ -112,23 +107,19 @@ run-built: $(FW_ELF) $(GPUSIM)
 endif
 
 # ---- test: every suite (or those matching SUITE, e.g. SUITE='rtl-* fw-unit'), with a summary line ----
-# `make test` builds what the suites need (every prerequisite of test-quick, wherever it is added)
-# BUILD_JOBS recipes at a time (default: the cores), then tests/run_all.sh runs the suites TEST_JOBS
+# `make test` builds what the selected suites need (their `needs` in tests/suites.toml, by the ids of
+# mk/builds.toml) BUILD_JOBS recipes at a time (default: the cores), then tests/run_all.sh runs the suites TEST_JOBS
 # at a time (default: the cores). `make test-quick` builds as the command line says (-j) and runs
 # the suites; TEST_BUILD_ONLY=1 only builds.
 SUITE ?= *
 BUILD_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 TEST_ENV = GPUSIM=$(GPUSIM) GPUSIM_FAST=$(GPUSIM_FAST) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUITE='$(SUITE)' \
            $(if $(TEST_JOBS),TEST_JOBS=$(TEST_JOBS))
-# The simulators first: the longest builds, started early so that the short ones fill the tail.
-TEST_DEPS := $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM_FAST) $(GPUSIM_FAST) $(SMALLCAP_SIM) $(BUILD)/sim-zb8-w8/gpusim fuzz-build $(FW_ELF) $(BUILD)/tests/fw_unit $(BUILD)/tests/model_unit \
-             fw-test-deps $(PNG_DIFF) $(MESHCONV) $(UPLOAD_PEER)
 test: setup
 	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) VERILATOR_JOBS=1 TEST_BUILD_ONLY=1 test-quick
 	@$(MAKE) --no-print-directory test-quick
 
-test-quick: $(TEST_DEPS)
-	@$(if $(TEST_BUILD_ONLY),:,$(TEST_ENV) bash tests/run_all.sh)
+# test-quick's prerequisites (what the selected suites need) are derived at the end of this file.
 
 test-list:
 	@$(TEST_ENV) bash tests/run_all.sh --list
@@ -310,31 +301,13 @@ define verilate
 endef
 SIM_DEPS := $(RTL_FILES) $(RTL_V) contract/gpu_regs.vh $(COSIM_CPP) $(wildcard cosim/*.h) bsp/qemu_virt/platform.h $(COSIM_CXX_LIB) $(COSIM_C_LIB) $(GPU_MODEL_LIB)
 
-$(BUILD)/sim-w%/gpusim: $(SIM_DEPS)
-	$(call verilate,$@,-GSPAN_W=$*)
-
-$(BUILD)/sim-z-w%/gpusim: $(SIM_DEPS)
-	$(call verilate,$@,-GSPAN_W=$* -GENABLE_ZBUF=1)
-
-$(BUILD)/sim-g-w%/gpusim: $(SIM_DEPS)
-	$(call verilate,$@,-GSPAN_W=$* -GENABLE_ZBUF=1 -GENABLE_GOURAUD=1)
-
-# sim-zb<BITS>-w8: the depth buffer keeping BITS bits (ZBUF_BITS), SPAN_W 8.
-$(BUILD)/sim-zb%-w8/gpusim: $(SIM_DEPS)
-	$(call verilate,$@,-GSPAN_W=8 -GENABLE_ZBUF=1 -GZBUF_BITS=$*)
-
-$(BUILD)/sim-fast-w%/gpusim: $(SIM_DEPS)
-	$(call verilate,$@,-GSPAN_W=$*,gpu_core,-DGPUSIM_FAST_DISPLAY=1)
-
-$(BUILD)/sim-fast-g-w%/gpusim: $(SIM_DEPS)
-	$(call verilate,$@,-GSPAN_W=$* -GENABLE_ZBUF=1 -GENABLE_GOURAUD=1,gpu_core,-DGPUSIM_FAST_DISPLAY=1)
-
-# A scene manifest's GPU (tools/manifest.mk): sim-cfg-<tag>, sim-fast-cfg-<tag>, e.g. w8-v32-t32.
-$(BUILD)/sim-cfg-%/gpusim: $(SIM_DEPS)
-	$(call verilate,$@,$(call manifest_gflags,$*))
-
-$(BUILD)/sim-fast-cfg-%/gpusim: $(SIM_DEPS)
-	$(call verilate,$@,$(call manifest_gflags,$*),gpu_core,-DGPUSIM_FAST_DISPLAY=1)
+# Every simulator of mk/builds.toml: $(BUILD)/<id>/gpusim, $(call verilate,...) with its parameters.
+ifneq ($(GEN_READ),)
+include $(GEN_DIR)/gpusim.mk
+ifneq ($(filter-out $(GPUSIM_IDS),$(patsubst $(BUILD)/%/gpusim,%,$(GPUSIM) $(GPUSIM_FAST))),)
+$(error SPAN_W=$(SPAN_W) GOURAUD=$(GOURAUD): $(GPUSIM) is not a simulator of mk/builds.toml (SPAN_W: 1 4 8 16))
+endif
+endif
 
 # `make waves` and its trace builds (sim-trace-w<SPAN_W>: $(2) with --trace-fst), apart from these.
 include cosim/waves.mk
@@ -343,3 +316,15 @@ clean:
 	$(Q)$(call say,CLEAN,$(BUILD) $(OUT))rm -rf $(BUILD) $(OUT)
 
 -include $(HOST_OBJ:.o=.d) $(COSIM_CXX_OBJ:.o=.d)
+
+# make test's builds: what the selected suites need (mk/gen_builds.py --needs), read last, when
+# every fragment has named its targets.
+ifneq ($(filter test-quick test-needs,$(MAKECMDGOALS)),)
+$(eval TEST_DEPS := $(shell $(PYTHON) mk/gen_builds.py --needs '$(SUITE)'))
+endif
+.PHONY: test-needs
+test-quick: $(TEST_DEPS)
+	@$(if $(TEST_BUILD_ONLY),:,$(TEST_ENV) bash tests/run_all.sh)
+
+test-needs:
+	@echo $(TEST_DEPS)

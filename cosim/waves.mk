@@ -19,7 +19,6 @@ GPUSIM_FAST_TRACE := $(BUILD)/sim-fast-trace-w$(SPAN_W)/gpusim
 
 $(BUILD)/sim-trace-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$* --trace-fst,,-DGPUSIM_TRACE=1)
-test-quick: $(GPUSIM_TRACE)
 
 $(BUILD)/sim-fast-trace-w%/gpusim: $(SIM_DEPS)
 	$(call verilate,$@,-GSPAN_W=$* --trace-fst,gpu_core,-DGPUSIM_FAST_DISPLAY=1 -DGPUSIM_TRACE=1)

@@ -196,50 +196,13 @@ $(FW_MODEL_HOST_OBJ): $(BUILD)/model/$(FW_MODEL_TAG).S
 fw_model_obj = $(if $(filter model,$(call fw_set_scenes,$(1),$(2))),$(3))
 
 FW_WARN := -std=c11 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes
-FW_BACKEND_DEFS_fixed :=
-FW_BACKEND_DEFS_float := -DFW_BACKEND_FLOAT=1
-# Object variants: the two backends take the command line's FW_SUBPIXEL_BITS; <backend>-sp<N>
-# (bench-error, and one test) are a backend with N sub-pixel bits, whatever the command line says
-# (and the platform's FW_LINE_EMULATION, as the backends: bench-error's SoC builds have none).
-FW_VARIANT_DEFS_fixed := $(if $(FW_SUBPIXEL_BITS),-DFW_SUBPIXEL_BITS=$(FW_SUBPIXEL_BITS)) \
-                         -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION) $(FW_DEFS)
-FW_VARIANT_DEFS_float := $(FW_VARIANT_DEFS_fixed)
-FW_SP_VARIANTS := fixed-sp4 float-sp0 float-sp2
-$(foreach v,$(FW_SP_VARIANTS),  $(eval FW_BACKEND_DEFS_$(v) := $(FW_BACKEND_DEFS_$(word 1,$(subst -, ,$(v)))))  $(eval FW_VARIANT_DEFS_$(v) := -DFW_SUBPIXEL_BITS=$(patsubst sp%,%,$(word 2,$(subst -, ,$(v)))) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)))
-# fixed-lean: the fixed backend with every optional feature left out (config/build_options.h FW_WITH_*), for
-# the test that such a build runs and is smaller.
-FW_LEAN_DEFS := -DFW_WITH_WIREFRAME=0 -DFW_WITH_ANAGLYPH=0 -DFW_WITH_DEPTH=0 -DFW_WITH_LIGHTING=0
-FW_BACKEND_DEFS_fixed-lean :=
-FW_VARIANT_DEFS_fixed-lean := $(FW_LEAN_DEFS)
-FW_SP_VARIANTS += fixed-lean
-# fixed-nowire: the fixed backend without the wireframe (FW_WITH_WIREFRAME=0), whose frame needs
-# only the filled columns of scenes/scene_list.h: `make fw-size`'s second row per scene.
-FW_BACKEND_DEFS_fixed-nowire :=
-FW_VARIANT_DEFS_fixed-nowire := -DFW_WITH_WIREFRAME=0
-FW_SP_VARIANTS += fixed-nowire
-# fixed-chip / fixed-emul: the fixed backend with line emulation left out / built in, whatever
-# FW_LINE_EMULATION says: `make fw-size`'s rows (the chip's GPU draws lines: the checked row has
-# no emulation; the emulated row is shown for comparison).
-FW_BACKEND_DEFS_fixed-chip :=
-FW_VARIANT_DEFS_fixed-chip := -DFW_WITH_LINE_EMULATION=0
-FW_BACKEND_DEFS_fixed-emul :=
-FW_VARIANT_DEFS_fixed-emul := -DFW_WITH_LINE_EMULATION=1
-FW_SP_VARIANTS += fixed-chip fixed-emul
-# fixed-nr0 / fixed-nr2: the fixed backend with 0 or 2 Newton steps in the projection's reciprocal
-# (FW_RECIP_NEWTON_STEPS, math/fixed.h; default 1): bench-error's camera paths.
-$(foreach n,0 2,$(eval FW_BACKEND_DEFS_fixed-nr$(n) :=)$(eval FW_VARIANT_DEFS_fixed-nr$(n) := -DFW_RECIP_NEWTON_STEPS=$(n) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)))
-FW_SP_VARIANTS += fixed-nr0 fixed-nr2
-# float-sin6 / float-sin10: the float backend (R's) with a 64- or 1024-entry sine table instead of
-# 256 (FW_SIN_TABLE_BITS, math/fixed.h; both backends rotate with fx_sin): bench-error's sine rows.
-$(foreach n,6 10,$(eval FW_BACKEND_DEFS_float-sin$(n) := $(FW_BACKEND_DEFS_float))$(eval FW_VARIANT_DEFS_float-sin$(n) := -DFW_SIN_TABLE_BITS=$(n) -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)))
-FW_SP_VARIANTS += float-sin6 float-sin10
-# fixed-flat / fixed-nodither: the fixed backend drawing flat on a Gouraud GPU (FW_GOURAUD=0) / Gouraud
-# without the dither (FW_DITHER=0): bench-error's shading rows (tools/bench_shading.py).
-FW_BACKEND_DEFS_fixed-flat :=
-FW_VARIANT_DEFS_fixed-flat := -DFW_GOURAUD=0 -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)
-FW_BACKEND_DEFS_fixed-nodither :=
-FW_VARIANT_DEFS_fixed-nodither := -DFW_DITHER=0 -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION)
-FW_SP_VARIANTS += fixed-flat fixed-nodither
+# The object variants (mk/builds.toml [fw_variant]: a backend and its -D settings; the table's
+# fixed and float take the command line's settings below) and the programs built from them
+# ([fw.<family>]) come from the generated $(GEN_DIR)/firmware.mk, read further down.
+FW_BACKEND_DEFS_fixed_BASE :=
+FW_BACKEND_DEFS_float_BASE := -DFW_BACKEND_FLOAT=1
+FW_COMMAND_LINE_DEFS := $(if $(FW_SUBPIXEL_BITS),-DFW_SUBPIXEL_BITS=$(FW_SUBPIXEL_BITS)) \
+                        -DFW_WITH_LINE_EMULATION=$(FW_LINE_EMULATION) $(FW_DEFS)
 # -ffp-contract=off: no fused multiply-adds, so the float backend rounds identically on the host
 # and on rv32 (C11 mode already implies it for GCC; stated for other compilers).
 # -fno-tree-loop-distribute-patterns: GCC would turn the pipeline's clearing loops (the sort's
@@ -349,142 +312,34 @@ $(1): $$(FW_HOST_CORE_OBJS_$(3)) $(call fw_set_objs,$(FW_SCENE_SET),$(2),$$(HOST
 FW_DEP_FILES += $(1).obj/app.d
 endef
 
-$(foreach b,$(FW_BACKENDS) $(FW_SP_VARIANTS),$(eval $(call FW_BACKEND_RULES,$(b))))
-
-# What `make run`, `make fw-all` and `make fw-host` build: FRAMES frames.
-FW_ALL_ELFS :=
-FW_ALL_HOSTS :=
-$(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
-  $(eval $(call FW_ELF_RULES,$(FW_DIR)/$(call fw_name,$(s),$(b)).elf,$(s),$(b),$(FRAMES),$(FW_MAX_POLLS)))\
-  $(eval $(call FW_HOST_RULES,$(BUILD)/fw-host/$(call fw_name,$(s),$(b)),$(s),$(b),$(FRAMES)))\
-  $(eval FW_ALL_ELFS += $(FW_DIR)/$(call fw_name,$(s),$(b)).elf)\
-  $(eval FW_ALL_HOSTS += $(BUILD)/fw-host/$(call fw_name,$(s),$(b)))))
-
-# Test builds: few frames, independent of FRAMES, so `make test` does not depend on what the last
-# `make run` asked for. The watchdog test gets a short watchdog (2^28 polls, ~3 s under QEMU).
+# The programs' folders and settings, which mk/builds.toml's [fw.<family>] tables use:
+# make test's (few frames, independent of FRAMES, so `make test` does not depend on what the last
+# `make run` asked for), the benchmarks' (bench-fw, bench-soc: FW_BENCH_FRAMES; bench-sim: until
+# stopped), bench-error's (FW_ERR_FRAMES frames; its camera paths: FW_PATH_VIEWS views of the seeded
+# path of app/cam_path.h, one a frame, and on the SoC only the first FW_PATH_SOC_VIEWS, since socsim
+# simulates about 0.6 M CPU cycles a second), fw-size's.
 FW_TEST_FRAMES := 4
 FW_TEST_DIR    := $(BUILD)/fw-test$(FW_PSUFFIX)
-FW_TEST_DEPS   :=
-$(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
-  $(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/$(call fw_name,$(s),$(b)).elf,$(s),$(b),$(FW_TEST_FRAMES),))\
-  $(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-$(call fw_name,$(s),$(b)),$(s),$(b),$(FW_TEST_FRAMES)))\
-  $(eval FW_TEST_DEPS += $(FW_TEST_DIR)/$(call fw_name,$(s),$(b)).elf $(FW_TEST_DIR)/host-$(call fw_name,$(s),$(b)))))
-$(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/tetra-watchdog.elf,tetra,fixed,5,268435456))
-# The upload test (tests/upload/cosim_upload.sh): tetra with every scene, long enough for two
-# uploads, and the host builds that render its references (before the swap: tetra; after: the
-# model scene from the uploaded file, fw-host --model).
 FW_UPLOAD_TEST_FRAMES := 16
-$(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/upload-tetra.elf,tetra,fixed,$(FW_UPLOAD_TEST_FRAMES),))
-$(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-upload-tetra,tetra,fixed,$(FW_UPLOAD_TEST_FRAMES)))
-$(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-upload-model,model,fixed,$(FW_UPLOAD_TEST_FRAMES)))
-FW_TEST_DEPS += $(FW_TEST_DIR)/upload-tetra.elf $(FW_TEST_DIR)/host-upload-tetra \
-                $(FW_TEST_DIR)/host-upload-model
-FW_TEST_DEPS += $(FW_TEST_DIR)/tetra-watchdog.elf $(FW_UNIT) $(FW_UNIT_FLOAT)
-# voxel without line emulation, as a chip whose GPU draws lines builds it (tests/scenes/host_features.sh:
-# on a GPU without lines its F key refuses; with lines its frames equal the default build's).
-$(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-voxel-chip,voxel,fixed-chip,$(FW_TEST_FRAMES)))
-FW_TEST_DEPS += $(FW_TEST_DIR)/host-voxel-chip
-# cubes without any optional feature (tests/scenes/lean_build.sh).
-$(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/cubes-lean.elf,cubes,fixed-lean,$(FW_TEST_FRAMES),))
-FW_TEST_DEPS += $(FW_TEST_DIR)/cubes-lean.elf
-# tetra built with an explicit FW_SUBPIXEL_BITS=4: must be the same program as tetra.elf.
-$(eval $(call FW_ELF_RULES,$(FW_TEST_DIR)/tetra-fixed-sp4.elf,tetra,fixed-sp4,$(FW_TEST_FRAMES),))
-FW_TEST_DEPS += $(FW_TEST_DIR)/tetra-fixed-sp4.elf
-# the landscape's Gouraud without the dither (tests/scenes/gouraud.sh: the dither's error seen from afar).
-$(eval $(call FW_HOST_RULES,$(FW_TEST_DIR)/host-landscape-nodither,landscape,fixed-nodither,$(FW_TEST_FRAMES)))
-FW_TEST_DEPS += $(FW_TEST_DIR)/host-landscape-nodither
-
-# Benchmark builds: FW_BENCH_FRAMES frames of every scene, both backends.
+SOC_UPLOAD_FRAMES := 10
 FW_BENCH_FRAMES := 8
 FW_BENCH_DIR    := $(BUILD)/fw-bench$(FW_PSUFFIX)
-FW_BENCH_ELFS   :=
-$(foreach s,$(FW_SCENES),$(foreach b,$(FW_BACKENDS),\
-  $(eval $(call FW_ELF_RULES,$(FW_BENCH_DIR)/$(call fw_name,$(s),$(b)).elf,$(s),$(b),$(FW_BENCH_FRAMES),))\
-  $(eval FW_BENCH_ELFS += $(FW_BENCH_DIR)/$(call fw_name,$(s),$(b)).elf)))
-
-# bench-sim builds (tools/bench_sim.sh): every scene until stopped (FRAMES=0); the harness's
-# --stop-after-frames ends each run.
-FW_SIMBENCH_DIR  := $(BUILD)/fw-simbench$(FW_PSUFFIX)
-FW_SIMBENCH_ELFS := $(foreach s,$(FW_SCENES),$(FW_SIMBENCH_DIR)/$(s).elf)
-$(foreach s,$(FW_SCENES),$(eval $(call FW_ELF_RULES,$(FW_SIMBENCH_DIR)/$(s).elf,$(s),fixed,0,)))
-
-# bench-error builds: FW_ERR_FRAMES frames of every scene, <scene>-<variant>[-z].elf; -z: the
-# depth test on from the first frame (FW_DEPTH_TEST=1, for a GPU built with the depth buffer).
+FW_SIMBENCH_DIR := $(BUILD)/fw-simbench$(FW_PSUFFIX)
 FW_ERR_FRAMES := 3
 FW_ERR_DIR    := $(BUILD)/fw-error$(FW_PSUFFIX)
-FW_ERR_ELFS   :=
-$(foreach s,$(FW_SCENES),$(foreach v,fixed float,\
-  $(eval $(call FW_ELF_RULES,$(FW_ERR_DIR)/$(s)-$(v).elf,$(s),$(v),$(FW_ERR_FRAMES),))\
-  $(eval FW_ERR_ELFS += $(FW_ERR_DIR)/$(s)-$(v).elf)))
-$(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2 float-sin6 float-sin10,\
-  $(eval $(call FW_ELF_RULES,$(FW_ERR_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_ERR_FRAMES),,-DFW_DEPTH_TEST=1))\
-  $(eval FW_ERR_ELFS += $(FW_ERR_DIR)/$(s)-$(v)-z.elf)))
-
-# bench-error's camera paths (tools/bench_error.py --path): the same variants with the seeded
-# path of app/cam_path.h (FW_CAMERA_PATH = FW_PATH_VIEWS views, one a frame), as host programs
-# (the frames, through the golden model, and the scene dumps for the exact reference) and as ELFs
-# (the costs, co-simulated): $(FW_PATH_DIR)/host-<scene>-<variant>[-z] and <scene>-<variant>[-z].elf.
 FW_PATH_VIEWS := 52
 FW_PATH_SEED  := 1
 FW_PATH_DIR   := $(BUILD)/fw-path$(FW_PSUFFIX)
 FW_PATH_DEFS  := -DFW_CAMERA_PATH=$(FW_PATH_VIEWS) -DFW_CAMERA_PATH_SEED=$(FW_PATH_SEED)u
-FW_PATH_HOSTS :=
-FW_PATH_ELFS  :=
-$(foreach s,$(FW_SCENES),$(foreach v,fixed float,\
-  $(eval $(call FW_HOST_RULES,$(FW_PATH_DIR)/host-$(s)-$(v),$(s),$(v),$(FW_PATH_VIEWS),$(FW_PATH_DEFS)))\
-  $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v).elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS)))\
-  $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/host-$(s)-$(v))\
-  $(eval FW_PATH_ELFS += $(FW_PATH_DIR)/$(s)-$(v).elf)))
-$(foreach s,$(FW_SCENES),$(foreach v,fixed float float-sp0 float-sp2 fixed-nr0 fixed-nr2 float-sin6 float-sin10,\
-  $(eval $(call FW_HOST_RULES,$(FW_PATH_DIR)/host-$(s)-$(v)-z,$(s),$(v),$(FW_PATH_VIEWS),$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
-  $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
-  $(eval FW_PATH_HOSTS += $(FW_PATH_DIR)/host-$(s)-$(v)-z)\
-  $(eval FW_PATH_ELFS += $(FW_PATH_DIR)/$(s)-$(v)-z.elf)))
-
-# bench-error's shading rows (tools/bench_shading.py): the scenes whose meshes carry vertex normals
-# (the others draw nothing Gouraud), on the same camera path, depth test on (the Gouraud GPU has the
-# buffer): Gouraud dithered (fixed, the default), undithered (fixed-nodither) and flat (fixed-flat).
-FW_SHADING_SCENES := landscape
-FW_SHADING_VARIANTS := fixed-z fixed-nodither-z fixed-flat-z
-FW_SHADING_HOSTS :=
-FW_SHADING_ELFS  :=
-$(foreach s,$(FW_SHADING_SCENES),$(foreach v,fixed-nodither fixed-flat,\
-  $(eval $(call FW_HOST_RULES,$(FW_PATH_DIR)/host-$(s)-$(v)-z,$(s),$(v),$(FW_PATH_VIEWS),$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))\
-  $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v)-z.elf,$(s),$(v),$(FW_PATH_VIEWS),,$(FW_PATH_DEFS) -DFW_DEPTH_TEST=1))))
-FW_SHADING_HOSTS := $(foreach s,$(FW_SHADING_SCENES),$(foreach v,$(FW_SHADING_VARIANTS),$(FW_PATH_DIR)/host-$(s)-$(v)))
-FW_SHADING_ELFS  := $(foreach s,$(FW_SHADING_SCENES),$(foreach v,$(FW_SHADING_VARIANTS),$(FW_PATH_DIR)/$(s)-$(v).elf))
-
-# bench-error's CPU cycles on the SoC (built with FW_PLATFORM=soc, so under $(BUILD)/fw-path-soc/):
-# the path ELFs again with only the first FW_PATH_SOC_VIEWS views (frames), the same program
-# otherwise, since socsim simulates about 0.6 M cycles a second of CPU and every frame is at least
-# one VGA frame (840,000 cycles) after a boot of ~2.4 M: <scene>-<variant>[-z]-<N>v.elf.
 FW_PATH_SOC_VIEWS := 1
-FW_PATH_SOC_ELFS  :=
-$(foreach s,$(FW_SCENES),$(foreach v,fixed float fixed-z float-z float-sp0-z float-sp2-z fixed-nr0-z fixed-nr2-z,\
-  $(eval $(call FW_ELF_RULES,$(FW_PATH_DIR)/$(s)-$(v)-$(FW_PATH_SOC_VIEWS)v.elf,$(s),$(v:-z=),$(FW_PATH_SOC_VIEWS),,\
-    $(FW_PATH_DEFS)$(if $(filter %-z,$(v)), -DFW_DEPTH_TEST=1)))\
-  $(eval FW_PATH_SOC_ELFS += $(FW_PATH_DIR)/$(s)-$(v)-$(FW_PATH_SOC_VIEWS)v.elf)))
-
-# tests/bench/exact_ref.sh: the exact reference against tetra's path (tools/exact_ref's rule is the
-# top-level Makefile's).
-FW_TEST_DEPS += $(FW_PATH_DIR)/host-tetra-float-z $(BUILD)/tools/exact_ref
-
-# Memory per scene (`make fw-size`, tests/firmware/fit.sh): every scene's one-scene build (what a
-# chip runs: FW_SCENE_SET=one, and no line emulation: the chip's GPU has CAPS_LINES), and for
-# comparison the same with line emulation, without the wireframe, and the all-scene build of the
-# default scene. Frames 0 (until Q), the chip's setting; the frame count changes no size.
 FW_SIZE_DIR    := $(BUILD)/fw-size$(FW_PSUFFIX)
-FW_SIZE_ELFS   := $(foreach s,$(FW_SCENES),$(FW_SIZE_DIR)/$(s).elf $(FW_SIZE_DIR)/$(s)-emul.elf \
-                    $(FW_SIZE_DIR)/$(s)-nowire.elf) \
-                  $(FW_SIZE_DIR)/all-$(SCENE).elf
-$(foreach s,$(FW_SCENES),$(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/$(s).elf,$(s),fixed-chip,0,,,one)))
-$(foreach s,$(FW_SCENES),\
-  $(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/$(s)-emul.elf,$(s),fixed-emul,0,,,one)))
-$(foreach s,$(FW_SCENES),\
-  $(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/$(s)-nowire.elf,$(s),fixed-nowire,0,,,one)))
-$(eval $(call FW_ELF_RULES,$(FW_SIZE_DIR)/all-$(SCENE).elf,$(SCENE),fixed,0,,,all))
+ifneq ($(GEN_READ),)
+include $(GEN_DIR)/firmware.mk
+endif
+FW_TEST_DEPS := $(FW_TEST) $(FW_UNIT) $(FW_UNIT_FLOAT) $(FW_SIZE_ELFS) $(BUILD)/tools/exact_ref
+
+# Memory per scene (`make fw-size`, tests/firmware/fit.sh: mk/builds.toml's fw.fw-size builds).
 # The targets of issue #9: the default scene's image in 64 KiB, every other scene's in 192 KiB.
-FW_TEST_DEPS += $(FW_SIZE_ELFS)
 FW_SIZE_TARGET_DEFAULT := 65536
 FW_SIZE_TARGET_OTHER   := 196608
 FW_SIZE_ENV = SIZE=$(patsubst %gcc,%size,$(FW_CC)) NM=$(patsubst %gcc,%nm,$(FW_CC)) \

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """lean_report.py — `make lean-report`: per scene, the full build against the scene's manifest
-build (firmware/scenes/<scene>.manifest.toml, tools/manifest.mk), as one Markdown table.
+build (firmware/scenes/<scene>.manifest.toml, mk/manifest.mk), as one Markdown table.
 
 usage: lean_report.py --build BUILD [--make make] [--jobs N] [--frames N] [--no-synth] SCENE...
 

@@ -1,7 +1,7 @@
 # bsp/soc/bsp.mk — what firmware/firmware.mk needs to build for the FPGA SoC (soc_rtl/soc_top:
 # VexRiscv_Full, rv32im, on-chip RAM at 0). Set on the command line:
 #   SOC_RAM_KIB   on-chip RAM in KiB (default: contract/soc_map.h SOC_RAM_DEFAULT_BYTES, or the
-#                 image's own need in a scene's manifest build, tools/manifest.mk). The link does
+#                 image's own need in a scene's manifest build, mk/manifest.mk). The link does
 #                 not depend on it (linker/soc.ld: the stack sits above .bss); postlink refuses an
 #                 image that does not fit it and writes the image's need to <elf>.ramkib.
 #   FW_MAX_POLLS  the watchdog's DONE_SEQ reads per batch (default: about one second at 50 MHz).

@@ -6,7 +6,7 @@ and ELF.ramkib: the RAM the program needs, in KiB, rounded up to the RAM's granu
 
 The RAM a program needs is read off its link: linker/soc.ld puts the stack right above .bss, so
 the need is the stack's top (__stack). A build whose RAM is derived (a scene's manifest build,
-tools/manifest.mk) gives --ram-bytes the RAM window's size, then builds its RAM from ELF.ramkib.
+mk/manifest.mk) gives --ram-bytes the RAM window's size, then builds its RAM from ELF.ramkib.
 
 The linker script (linker/soc.ld) links into the whole address range on purpose; this is where an
 image too large is refused, with the numbers: text (code and read-only data), data, bss, the stack

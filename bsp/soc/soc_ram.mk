@@ -3,7 +3,7 @@
 # (bsp/soc/bsp.mk: postlink --ram-bytes). Set SOC_RAM_KIB on the command line; the default and the
 # limit come from contract/soc_map.h (SOC_RAM_DEFAULT_BYTES, SOC_RAM_WINDOW_BYTES).
 #
-# SOC_RAM_KIB=auto (a scene's manifest build, tools/manifest.mk): the RAM is what the linked image
+# SOC_RAM_KIB=auto (a scene's manifest build, mk/manifest.mk): the RAM is what the linked image
 # needs. The link does not depend on the RAM (linker/soc.ld), so the firmware is linked first and
 # checked against the whole window (SOC_FW_RAM_BYTES), postlink writes its need to <elf>.ramkib, and
 # the goals that build hardware run again with SOC_RAM_KIB=<that need> (soc_ram_again below).

@@ -19,7 +19,7 @@
 
 include bsp/soc/soc_ram.mk
 
-# ZBUF=1 (outside a manifest build, whose tools/manifest.mk sets both itself): the GPU with its depth
+# ZBUF=1 (outside a manifest build, whose mk/manifest.mk sets both itself): the GPU with its depth
 # buffer, in a folder of its own (-z), as bench-error's depth-tested configurations run it.
 SOCSIM_GPU_GFLAGS ?= $(if $(filter 1,$(ZBUF)), -GENABLE_ZBUF=1)
 SOCSIM_DIR   := $(BUILD)/socsim-$(SOC_RAM_KIB)k$(if $(filter 1,$(ZBUF)),-z)$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
@@ -94,17 +94,14 @@ run-soc: $(SOCSIM) soc-fw
 	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
 endif
 
-# What tests/soc/*.sh need: socsim and the soc test programs (tests/soc/tests.mk); the suites
-# comparing with co-simulation also use make test's QEMU builds. make test builds them too.
-soc-test-deps: $(SOCSIM)
-	+@$(SOC_FW_MAKE) -f Makefile -f tests/soc/tests.mk soc-test-elfs
-test-quick: soc-test-deps $(SOCSIM_ULX3S)
+# The soc test programs (tests/soc/tests.mk), for the suites that need soc-test (tests/suites.toml).
+soc-test-deps:
+	+@$(SOC_FW_MAKE) soc-test-elfs
 
-# The smoke program's RAM image on socsim, answering its UART prompts (tests/soc/smoke.sh); make
-# test's suite rtl-soc-smoke runs it, so make test's build phase makes the image as well.
+# The smoke program's RAM image on socsim, answering its UART prompts (tests/soc/smoke.sh; suite
+# rtl-soc-smoke).
 soc-smoke: $(SOCSIM) $(SOC_SMOKE_HEX)
 	@BUILD=$(BUILD) SOCSIM=$(SOCSIM) SOC_SMOKE_HEX=$(SOC_SMOKE_HEX) bash tests/soc/smoke.sh
-test-quick: $(SOC_SMOKE_HEX)
 
 # The benchmark builds (firmware.mk's FW_BENCH_FRAMES frames) of every scene, each on socsim, one
 # table (tools/bench_soc.py).

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Scene manifests (firmware/scenes/<scene>.manifest.toml, tools/manifest.py): every scene's parses
+# Scene manifests (firmware/scenes/<scene>.manifest.toml, mk/manifest.py): every scene's parses
 # and its capacities cover its columns of the scene table; a bad manifest is refused with the file
 # and the key; and the cubes' manifest build ($BUILD/lean-test/cubes/firmware/cubes.elf: one scene,
 # no anaglyph, no depth test, no line emulation) co-simulated renders the same frames as make
@@ -15,18 +15,18 @@ small="$BUILD/sim-fast-cfg-w8-v32-t16/gpusim"
 need_file "$lean" "$full" "$GPUSIM_FAST" "$small"
 work=$(fresh_dir manifest)
 
-run_to "$work/check.out" 20 "$PYTHON" tools/manifest.py --check
+run_to "$work/check.out" 20 "$PYTHON" mk/manifest.py --check
 expect_status 0 "manifest.py --check: $(cat "$work/check.out")"
 
 # refused MESSAGE-REGEX: the manifest on stdin must be refused with a message matching it.
 refused() {
     cat >"$work/bad.toml"
-    run_to "$work/bad.out" 20 "$PYTHON" tools/manifest.py --file "$work/bad.toml"
+    run_to "$work/bad.out" 20 "$PYTHON" mk/manifest.py --file "$work/bad.toml"
     [ "$status" -ne 0 ] || fail "a bad manifest accepted (expected: $1)"
     grep -Eq "$1" "$work/bad.out" || fail "refused, but not with '$1': $(cat "$work/bad.out")"
 }
 good=$(cat firmware/scenes/tetra.manifest.toml)
-"$PYTHON" tools/manifest.py --file firmware/scenes/tetra.manifest.toml >/dev/null || fail "tetra's manifest refused"
+"$PYTHON" mk/manifest.py --file firmware/scenes/tetra.manifest.toml >/dev/null || fail "tetra's manifest refused"
 printf '%s\nshadows = true\n' "$good" | refused "unknown key 'gpu.shadows'"
 sed 's/^lines = true /lines = 1 /' <<<"$good" | refused "'features.lines' must be bool"
 sed '/^lighting = /d' <<<"$good" | refused "missing key 'features.lighting'"
@@ -42,7 +42,7 @@ sed 's/^scene = "tetra"/scene = "teapot"/' <<<"$good" | refused "scene 'teapot' 
 # follow the capacities (model.h's macros: 1024 faces need 1282 primitives, over the contract's 512;
 # 64 faces need 82).
 model=$(cat firmware/scenes/model.manifest.toml)
-"$PYTHON" tools/manifest.py --file firmware/scenes/model.manifest.toml >/dev/null || fail "model's manifest refused"
+"$PYTHON" mk/manifest.py --file firmware/scenes/model.manifest.toml >/dev/null || fail "model's manifest refused"
 printf '%s\n[model]\nupload = true\nmax_verts = 64\nmax_faces = 64\n' "$good" | refused "unknown key 'model'"
 sed '/^\[model\]/,/^max_faces/d' <<<"$model" | refused "missing key 'model'"
 sed 's/^tri_cap = 512 /tri_cap = 256 /' <<<"$model" | refused "gpu.tri_cap = 256 is smaller than scene model's prims column \\(1282"

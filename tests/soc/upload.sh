@@ -11,8 +11,8 @@ source "$(dirname "$0")/soc_lib.sh"
 soc_test model-upload soc-upload
 host="$BUILD/fw-test/host-upload-model"
 need_file "$host"
-frames=$(sed -n 's/^SOC_UPLOAD_FRAMES := //p' tests/soc/tests.mk)
-[ -n "$frames" ] || fail "no SOC_UPLOAD_FRAMES in tests/soc/tests.mk"
+frames=$(sed -n 's/^SOC_UPLOAD_FRAMES := //p' firmware/firmware.mk)
+[ -n "$frames" ] || fail "no SOC_UPLOAD_FRAMES in firmware/firmware.mk"
 TOOL_PY=${TOOL_PY:-/usr/bin/python3}
 "$PYTHON" tests/upload/gmsh.py cube "$work/cube.gmsh" --material 1 >/dev/null
 

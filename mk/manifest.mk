@@ -1,6 +1,6 @@
-# tools/manifest.mk — scene manifests: `make run SCENE=x`, `make run PLATFORM=soc SCENE=x` and
+# mk/manifest.mk — scene manifests: `make run SCENE=x`, `make run PLATFORM=soc SCENE=x` and
 # `make bitstream SCENE=x` build what firmware/scenes/x.manifest.toml says the scene needs (the
-# firmware's switches, the GPU's parameters and the RAM from that one file, tools/manifest.py);
+# firmware's switches, the GPU's parameters and the RAM from that one file, mk/manifest.py);
 # FULL=1 builds the default, every feature, as before. Included by the top-level Makefile before
 # every other fragment (the manifest's values must be in place when they read SPAN_W, FW_DEFS ...).
 #
@@ -23,7 +23,7 @@
 # every scene with that set.
 #
 #   manifest-show [SCENE=x] [FULL=1]   what such a build uses: its ELFs, simulators, RTL parameters
-#   manifest-check                      every manifest valid (tools/manifest.py --check)
+#   manifest-check                      every manifest valid (mk/manifest.py --check)
 #   lean-report                         full against lean per scene (tools/lean_report.py)
 FULL       ?=
 LEAN_ROOT  ?= $(BUILD)/lean
@@ -71,16 +71,9 @@ endif
 
 # The fragment: regenerated when the manifest, the generator or the scene table change (make then
 # reads it again before building anything).
-$(BUILD)/manifest/%.mk: firmware/scenes/%.manifest.toml tools/manifest.py firmware/scenes/scene_list.h \
+$(BUILD)/manifest/%.mk: firmware/scenes/%.manifest.toml mk/manifest.py firmware/scenes/scene_list.h \
                         contract/gpu_contract.toml contract/soc_map.h
-	@$(PYTHON) tools/manifest.py $* --out $@
-
-# $(BUILD)/sim-cfg-<tag>/gpusim and sim-fast-cfg-<tag>/gpusim: the tag's words as -G parameters
-# (w SPAN_W, l ENABLE_LINES, z ENABLE_ZBUF, m ENABLE_WMASK, v VTX_CAP, t TRI_CAP, g ENABLE_GOURAUD);
-# the rules are the Makefile's.
-manifest_gflags = $(foreach p,$(subst -, ,$(1)),$(patsubst g%,-GENABLE_GOURAUD=%,$(patsubst t%,-GTRI_CAP=%,\
-  $(patsubst v%,-GVTX_CAP=%,$(patsubst m%,-GENABLE_WMASK=%,$(patsubst z%,-GENABLE_ZBUF=%,\
-  $(patsubst l%,-GENABLE_LINES=%,$(patsubst w%,-GSPAN_W=%,$(p)))))))))
+	@$(PYTHON) mk/manifest.py $* --out $@
 
 # The GPU parameters of a list of Verilator flags, as C definitions for the harness's per-simulator
 # sources (cosim/gpu_build.h): -GVTX_CAP=32 -> -DGPU_BUILD_VTX_CAP=32. Made from the same flags the
@@ -106,7 +99,7 @@ manifest-show:
 	@echo "GPU=-GSPAN_W=$(SPAN_W) -GENABLE_ZBUF=$(ZBUF) $(MANIFEST_GPU_GFLAGS)"
 
 manifest-check:
-	@$(PYTHON) tools/manifest.py --check
+	@$(PYTHON) mk/manifest.py --check
 
 # Full against lean per scene (LEAN_SCENES, default every scene with a manifest): ECP5 synthesis
 # JOBS at a time, firmware sizes, socsim's instructions and cycles per frame, frames compared.
@@ -129,5 +122,4 @@ MANIFEST_TEST_ELF := $(BUILD)/lean-test/cubes/firmware/cubes.elf
 ifeq ($(LEAN_SCENE),)
 $(MANIFEST_TEST_ELF): fw-force
 	+@$(MAKE) --no-print-directory SCENE=cubes FULL= FRAMES=$(FW_TEST_FRAMES) LEAN_ROOT=$(BUILD)/lean-test fw
-test-quick: $(MANIFEST_TEST_ELF)
 endif

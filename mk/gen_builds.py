@@ -1,0 +1,338 @@
+#!/usr/bin/env python3
+"""gen_builds.py — the build table (mk/builds.toml) and the suites (tests/suites.toml) as make and shell.
+
+usage: gen_builds.py --out DIR          write DIR/builds.mk (the lists, read first), DIR/gpusim.mk
+                                        (the simulators' rules) and DIR/firmware.mk (the firmware's
+                                        object variants and programs, read by firmware/firmware.mk)
+       gen_builds.py --needs 'GLOBS'    the make targets the suites matching GLOBS need (make
+                                        expressions, for the Makefile's $(eval))
+       gen_builds.py --suites           the suites as tests/run_all.sh's `suite` lines
+       gen_builds.py --check            both tables valid, every id a suite names defined
+       gen_builds.py --stats            how many builds the table names, how many rules it makes
+
+Everything that can be computed comes from where it is stated: the scenes from scene_list.h, the
+GPU's parameters and their defaults from the contract's [build] table, the manifests' GPUs from
+the manifests (mk/manifest.py's tags). An error names the file and the key.
+"""
+import argparse
+import fnmatch
+import itertools
+import os
+import re
+import sys
+import tomllib
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+BUILDS = os.path.join(ROOT, "mk/builds.toml")
+SUITES = os.path.join(ROOT, "tests/suites.toml")
+CONTRACT = os.path.join(ROOT, "contract/gpu_contract.toml")
+SCENE_TABLE = os.path.join(ROOT, "firmware/scenes/scene_list.h")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import manifest  # noqa: E402  (mk/manifest.py: the manifests' GPU tags)
+
+GPU_KEYS = {"params", "display", "list"}
+FW_ROW_KEYS = {"scene", "variant", "elf", "host", "frames", "polls", "defs", "set", "list"}
+PLACEHOLDER = re.compile(r"\{([A-Za-z_][A-Za-z0-9_-]*)\}")
+
+
+class TableError(Exception):
+    pass
+
+
+def load(path):
+    with open(path, "rb") as f:
+        return tomllib.load(f)
+
+
+def scenes():
+    text = open(SCENE_TABLE).read()
+    return re.findall(r"^SCENE\(([A-Za-z0-9_]+)[,)]", text, re.M)
+
+
+def contract_params():
+    """The GPU's build parameters and their defaults: the capacities (the contract's limits), then
+    the [build] table, as contract/gen_contract.py declares them."""
+    c = load(CONTRACT)
+    params = {"VTX_CAP": c["limits"]["vtx_cap"], "TRI_CAP": c["limits"]["tri_cap"]}
+    params.update({k: v["default"] for k, v in c["build"].items()})
+    return params
+
+
+def expand(pattern, lists):
+    """Every combination of the list-valued keys of `lists`, with the pattern filled in."""
+    keys = [k for k, v in lists.items() if isinstance(v, list)]
+    for combo in itertools.product(*(lists[k] for k in keys)):
+        values = dict(lists, **dict(zip(keys, combo)))
+        yield pattern.format_map({k: str(v) for k, v in values.items()}), values
+
+
+# ---- GPU simulators -----------------------------------------------------------------------------
+def gpusims(table):
+    """id -> (Verilator -G flags, display), in the table's order, manifests' GPUs after."""
+    defaults = contract_params()
+    out = {}
+
+    def add(ident, params, display, where):
+        for name in params:
+            if name not in defaults:
+                raise TableError(f"{where}: {name} is not a build parameter of {CONTRACT}")
+        if display not in ("pins", "fast"):
+            raise TableError(f"{where}: display = {display!r}: pins or fast")
+        if ident in out:
+            raise TableError(f"{where}: simulator {ident} named twice")
+        flags = " ".join(f"-G{k}={v}" for k, v in params.items() if v != defaults[k] or k == "SPAN_W")
+        out[ident] = (flags, display)
+
+    for family, spec in table.get("gpusim", {}).items():
+        where = f"{BUILDS}: gpusim.{family}"
+        unknown = set(spec) - GPU_KEYS
+        if unknown:
+            raise TableError(f"{where}: unknown key {sorted(unknown)[0]}")
+        params = spec.get("params", {})
+        for ident, values in expand(family, params):
+            add(ident, values, spec.get("display", "pins"), where)
+    spec = table.get("manifest_gpusims")
+    if spec:
+        tags = set()
+        for scene in scenes():
+            data = manifest.load(manifest.manifest_path(scene), scene)
+            tags.add(manifest.gpu_extra(data))
+        for extra in sorted(tags):
+            for w in spec["SPAN_W"]:
+                for g in spec["gouraud"]:
+                    full = list(extra) + ([("g1", "-GENABLE_GOURAUD=1")] if g else [])
+                    if not full:
+                        continue  # the default GPU: the table's own simulators
+                    tag = "-".join(t for t, _ in full)
+                    params = {"SPAN_W": w}
+                    for _, flag in full:
+                        k, v = flag[2:].split("=")
+                        params[k] = int(v)
+                    for display, prefix in (("pins", "sim-cfg"), ("fast", "sim-fast-cfg")):
+                        add(f"{prefix}-w{w}-{tag}", params, display, f"{BUILDS}: manifest_gpusims ({tag})")
+    return out
+
+
+def gpusim_lists(table):
+    lists = {}
+    for family, spec in table.get("gpusim", {}).items():
+        if "list" in spec:
+            lists[spec["list"]] = [i for i, _ in expand(family, spec.get("params", {}))]
+    return lists
+
+
+# ---- firmware -----------------------------------------------------------------------------------
+def fw_variants(table):
+    out = {}
+    for family, spec in table.get("fw_variant", {}).items():
+        where = f"{BUILDS}: fw_variant.{family}"
+        if spec.get("backend") not in ("fixed", "float"):
+            raise TableError(f"{where}: backend = {spec.get('backend')!r}: fixed or float")
+        lists = {k: v for k, v in spec.items() if k not in ("backend", "defs")}
+        for ident, values in expand(family, lists):
+            out[ident] = (spec["backend"], spec.get("defs", "").format_map({k: str(v) for k, v in values.items()}))
+    return out
+
+
+def as_list(v):
+    return v if isinstance(v, list) else [v]
+
+
+def fw_programs(table, variants):
+    """Families: id -> (platform or None, [program]); a program is a dict of its row's values."""
+    all_scenes = scenes()
+    out = {}
+    seen = {}  # (kind, path) -> its settings: one path, one program, whichever families list it
+    for family, spec in table.get("fw", {}).items():
+        rows = []
+        for n, row in enumerate(spec.get("build", [])):
+            where = f"{BUILDS}: fw.{family}.build[{n}]"
+            unknown = set(row) - FW_ROW_KEYS
+            if unknown:
+                raise TableError(f"{where}: unknown key {sorted(unknown)[0]}")
+            if "elf" not in row and "host" not in row:
+                raise TableError(f"{where}: neither elf nor host")
+            for key in ("scene", "variant", "frames"):
+                if key not in row:
+                    raise TableError(f"{where}: {key} missing")
+            row_scenes = all_scenes if row["scene"] == "*" else as_list(row["scene"])
+            for s in row_scenes:
+                if "$(" not in s and s not in all_scenes:
+                    raise TableError(f"{where}: scene {s} is not in {SCENE_TABLE}")
+            for s, v in itertools.product(row_scenes, as_list(row["variant"])):
+                if v not in variants:
+                    raise TableError(f"{where}: variant {v} is not a fw_variant")
+                suffix = "" if v == "fixed" else "-float" if v == "float" else f"-{v}"
+                fill = {"scene": s, "variant": v, "suffix": suffix}
+                prog = {"scene": s, "variant": v, "frames": str(row["frames"]),
+                        "polls": str(row.get("polls", "")), "defs": row.get("defs", ""),
+                        "set": row.get("set", ""), "list": row.get("list", "")}
+                for kind in ("elf", "host"):
+                    if kind in row:
+                        path = row[kind].format_map(fill)
+                        key = (kind, path)
+                        same = {k: prog[k] for k in ("scene", "variant", "frames", "polls", "defs", "set")}
+                        if key in seen and seen[key] != same:
+                            raise TableError(f"{where}: {path} is also built with other settings")
+                        prog[kind] = path
+                        seen[key] = same
+                rows.append(prog)
+        out[family] = (spec.get("platform"), rows)
+    return out
+
+
+# ---- the generated make ---------------------------------------------------------------------------
+HEADER = "# Generated by mk/gen_builds.py from mk/builds.toml: do not edit.\n"
+
+
+def builds_mk(table, sims):
+    lines = [HEADER]
+    lines.append(f"GPUSIM_IDS := {' '.join(sims)}")
+    for name, ids in gpusim_lists(table).items():
+        lines.append(f"{name} := {' '.join(f'$(BUILD)/{i}/gpusim' for i in ids)}")
+    return "\n".join(lines) + "\n"
+
+
+def gpusim_mk(sims):
+    lines = [HEADER, "# $(call verilate,OUTPUT,FLAGS[,TOP,CFLAGS]) and SIM_DEPS: the Makefile's.", ""]
+    for ident, (flags, display) in sims.items():
+        lines.append(f"$(BUILD)/{ident}/gpusim: $(SIM_DEPS)")
+        if display == "fast":
+            lines.append(f"\t$(call verilate,$@,{flags},gpu_core,-DGPUSIM_FAST_DISPLAY=1)")
+        else:
+            lines.append(f"\t$(call verilate,$@,{flags})")
+        lines.append("")
+    return "\n".join(lines)
+
+
+def firmware_mk(variants, families):
+    lines = [HEADER, "# FW_BACKEND_RULES, FW_ELF_RULES and FW_HOST_RULES: firmware/firmware.mk's.", ""]
+    lines.append(f"FW_VARIANTS := {' '.join(variants)}")
+    for v, (backend, defs) in variants.items():
+        lines.append(f"FW_BACKEND_DEFS_{v} := $(FW_BACKEND_DEFS_{backend}_BASE)")
+        lines.append(f"FW_VARIANT_DEFS_{v} := {defs}")
+    lines.append("$(foreach v,$(FW_VARIANTS),$(eval $(call FW_BACKEND_RULES,$(v))))")
+    lists = {}
+    done = set()  # a program two families list has its rules once
+    for family, (platform, progs) in families.items():
+        lines += ["", f"# fw.{family}"]
+        if platform:
+            lines.append(f"ifeq ($(FW_PLATFORM),{platform})")
+        for p in progs:
+            lst = p["list"]
+            if lst:
+                lists.setdefault(lst, None)
+            for kind in ("elf", "host"):
+                if kind not in p:
+                    continue
+                if (kind, p[kind]) not in done:
+                    done.add((kind, p[kind]))
+                    if kind == "elf":
+                        args = [p["elf"], p["scene"], p["variant"], p["frames"], p["polls"], p["defs"], p["set"]]
+                        lines.append(f"$(eval $(call FW_ELF_RULES,{','.join(args)}))")
+                    else:
+                        args = [p["host"], p["scene"], p["variant"], p["frames"], p["defs"]]
+                        lines.append(f"$(eval $(call FW_HOST_RULES,{','.join(args)}))")
+                if lst:
+                    kinds = "ELFS" if kind == "elf" else "HOSTS"
+                    lines.append(f"{lst}_{kinds} += {p[kind]}")
+                    lines.append(f"{lst} += {p[kind]}")
+            if lst:
+                lines.append(f"{lst}_SCENES += {p['scene']}")
+        if platform:
+            lines.append("endif")
+    init = [f"{l}_ELFS :=\n{l}_HOSTS :=\n{l} :=\n{l}_SCENES :=" for l in lists]
+    lines[3:3] = init
+    lines.append("")
+    lines += [f"{l}_SCENES := $(sort $({l}_SCENES))" for l in lists]
+    return "\n".join(lines) + "\n"
+
+
+# ---- suites ---------------------------------------------------------------------------------------
+def suites(table, sims, families):
+    data = load(SUITES)
+    out = []
+    ids = set(sims) | set(families) | set(table.get("target", {}))
+    for name, spec in data.get("suite", {}).items():
+        where = f"{SUITES}: suite.{name}"
+        unknown = set(spec) - {"cost", "needs", "run", "alone"}
+        if unknown:
+            raise TableError(f"{where}: unknown key {sorted(unknown)[0]}")
+        if "run" not in spec:
+            raise TableError(f"{where}: run missing")
+        needs = list(spec.get("needs", []))
+        for used in PLACEHOLDER.findall(spec["run"]):
+            if used not in sims:
+                raise TableError(f"{where}: {{{used}}} is not a simulator of {BUILDS}")
+            if used not in needs:
+                needs.append(used)
+        for n in needs:
+            if n not in ids:
+                raise TableError(f"{where}: needs {n}, which {BUILDS} does not name")
+        out.append((name, spec.get("cost", 30), bool(spec.get("alone", False)), needs, spec["run"]))
+    return out
+
+
+def target_of(ident, table, sims, families):
+    if ident in sims:
+        return f"$(BUILD)/{ident}/gpusim"
+    if ident in table.get("target", {}):
+        return table["target"][ident]
+    platform, progs = families[ident]
+    if all(p["list"] for p in progs):
+        return " ".join(dict.fromkeys(f"$({p['list']})" for p in progs))
+    paths = []
+    for p in progs:
+        paths += [p[k] for k in ("elf", "host") if k in p]
+    return " ".join(dict.fromkeys(paths))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--out")
+    ap.add_argument("--needs")
+    ap.add_argument("--suites", action="store_true")
+    ap.add_argument("--check", action="store_true")
+    ap.add_argument("--stats", action="store_true")
+    args = ap.parse_args()
+    try:
+        table = load(BUILDS)
+        sims = gpusims(table)
+        variants = fw_variants(table)
+        families = fw_programs(table, variants)
+        suite_list = suites(table, sims, families)
+    except (TableError, manifest.ManifestError) as e:
+        print(f"gen_builds: {e}", file=sys.stderr)
+        return 1
+    if args.out:
+        os.makedirs(args.out, exist_ok=True)
+        for name, text in (("builds.mk", builds_mk(table, sims)), ("gpusim.mk", gpusim_mk(sims)),
+                           ("firmware.mk", firmware_mk(variants, families))):
+            path = os.path.join(args.out, name)
+            old = open(path).read() if os.path.exists(path) else None
+            if old != text:
+                with open(path, "w") as f:
+                    f.write(text)
+    if args.needs is not None:
+        globs = args.needs.split() or ["*"]
+        targets = []
+        for name, _, _, needs, _ in suite_list:
+            if any(fnmatch.fnmatchcase(name, g) for g in globs):
+                targets += [target_of(n, table, sims, families) for n in needs]
+        print(" ".join(dict.fromkeys(targets)))
+    if args.suites:
+        for name, cost, alone, _, run in suite_list:
+            cmd = PLACEHOLDER.sub(lambda m: f'"$BUILD/{m.group(1)}/gpusim"', run)
+            print(f"{'suite_alone' if alone else 'suite'} {name} {cost} {cmd}")
+    if args.stats:
+        progs = sum(len({p.get('elf') for p in ps if 'elf' in p}) + len({p.get('host') for p in ps if 'host' in p})
+                    for _, ps in families.values())
+        print(f"builds: {len(sims)} GPU simulators, {len(variants)} firmware object variants, "
+              f"{progs} firmware programs in {len(families)} families, {len(suite_list)} suites")
+    if args.check:
+        print(f"gen_builds: {BUILDS} and {SUITES} valid")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
