@@ -17,11 +17,7 @@
 GPUSIM_TRACE      := $(BUILD)/sim-trace-w$(SPAN_W)/gpusim
 GPUSIM_FAST_TRACE := $(BUILD)/sim-fast-trace-w$(SPAN_W)/gpusim
 
-$(BUILD)/sim-trace-w%/gpusim: $(SIM_DEPS)
-	$(call verilate,$@,-GSPAN_W=$* --trace-fst,,-DGPUSIM_TRACE=1)
-
-$(BUILD)/sim-fast-trace-w%/gpusim: $(SIM_DEPS)
-	$(call verilate,$@,-GSPAN_W=$* --trace-fst,gpu_core,-DGPUSIM_FAST_DISPLAY=1 -DGPUSIM_TRACE=1)
+# (Both are simulators of mk/builds.toml: trace = true.)
 
 # The SoC's: socsim's build (socsim.mk's socsim_cmd) with --trace-fst and -DSOCSIM_TRACE=1.
 SOCSIM_TRACE_DIR := $(BUILD)/socsim-trace-$(SOC_RAM_KIB)k$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))

@@ -30,7 +30,7 @@ SCENE_TABLE = os.path.join(ROOT, "firmware/scenes/scene_list.h")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import manifest  # noqa: E402  (mk/manifest.py: the manifests' GPU tags)
 
-GPU_KEYS = {"params", "display", "list"}
+GPU_KEYS = {"params", "display", "trace", "list"}
 FW_ROW_KEYS = {"scene", "variant", "elf", "host", "frames", "polls", "defs", "set", "list"}
 PLACEHOLDER = re.compile(r"\{([A-Za-z_][A-Za-z0-9_-]*)\}")
 
@@ -72,7 +72,7 @@ def gpusims(table):
     defaults = contract_params()
     out = {}
 
-    def add(ident, params, display, where):
+    def add(ident, params, display, where, trace=False):
         for name in params:
             if name not in defaults:
                 raise TableError(f"{where}: {name} is not a build parameter of {CONTRACT}")
@@ -81,7 +81,7 @@ def gpusims(table):
         if ident in out:
             raise TableError(f"{where}: simulator {ident} named twice")
         flags = " ".join(f"-G{k}={v}" for k, v in params.items() if v != defaults[k] or k == "SPAN_W")
-        out[ident] = (flags, display)
+        out[ident] = (flags + (" --trace-fst" if trace else ""), display, trace)
 
     for family, spec in table.get("gpusim", {}).items():
         where = f"{BUILDS}: gpusim.{family}"
@@ -90,7 +90,7 @@ def gpusims(table):
             raise TableError(f"{where}: unknown key {sorted(unknown)[0]}")
         params = spec.get("params", {})
         for ident, values in expand(family, params):
-            add(ident, values, spec.get("display", "pins"), where)
+            add(ident, values, spec.get("display", "pins"), where, spec.get("trace", False))
     spec = table.get("manifest_gpusims")
     if spec:
         tags = set()
@@ -195,12 +195,12 @@ def builds_mk(table, sims):
 
 def gpusim_mk(sims):
     lines = [HEADER, "# $(call verilate,OUTPUT,FLAGS[,TOP,CFLAGS]) and SIM_DEPS: the Makefile's.", ""]
-    for ident, (flags, display) in sims.items():
+    for ident, (flags, display, trace) in sims.items():
         lines.append(f"$(BUILD)/{ident}/gpusim: $(SIM_DEPS)")
-        if display == "fast":
-            lines.append(f"\t$(call verilate,$@,{flags},gpu_core,-DGPUSIM_FAST_DISPLAY=1)")
-        else:
-            lines.append(f"\t$(call verilate,$@,{flags})")
+        top, cflags = ("gpu_core", ["-DGPUSIM_FAST_DISPLAY=1"]) if display == "fast" else ("", [])
+        cflags += ["-DGPUSIM_TRACE=1"] if trace else []
+        args = f",{top},{' '.join(cflags)}" if top or cflags else ""
+        lines.append(f"\t$(call verilate,$@,{flags}{args})")
         lines.append("")
     return "\n".join(lines)
 
