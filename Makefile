@@ -159,16 +159,16 @@ bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM) $(FW_ELF)
 	@rm -rf $(BUILD)/bench-gpu/scene-lists && mkdir -p $(BUILD)/bench-gpu/scene-lists
 	@$(GPUSIM) cosim --fw $(FW_ELF) --frames $(BUILD)/bench-gpu/scene-frames --no-model-check \
 	  --dump-lists $(BUILD)/bench-gpu/scene-lists >/dev/null
-	@$(PYTHON) tools/bench_gpu.py $(BUILD) $(BUILD)/bench-gpu/scene-lists
+	@$(PYTHON) bench/bench_gpu.py $(BUILD) $(BUILD)/bench-gpu/scene-lists
 
-# ---- pixel error against counted cost, for every accuracy/speed knob (tools/bench_error.py) ----
+# ---- pixel error against counted cost, for every accuracy/speed knob (bench/bench_error.py) ----
 # Installs matplotlib for the plot (tools/packages-plot.txt), then runs the table and the plot with
 # the interpreter Debian's python3-matplotlib belongs to (PYTHON may be another one, e.g. pyenv's).
 PLOT_PYTHON ?= $(or $(wildcard /usr/bin/python3),$(PYTHON))
 BENCH_ERROR_CHECK = $(if $(FW_SUBPIXEL_BITS),@echo "bench-error sets FW_SUBPIXEL_BITS itself: run it without" && exit 2)
 # The co-simulation's speed per scene on both display paths, the pins and the fast one (window).
 bench-sim: $(FW_SIMBENCH_ELFS) $(GPUSIM) $(GPUSIM_FAST)
-	@bash tools/bench_sim.sh $(GPUSIM) $(GPUSIM_FAST) $(FW_SIMBENCH_DIR) $(FW_SCENES)
+	@bash bench/bench_sim.sh $(GPUSIM) $(GPUSIM_FAST) $(FW_SIMBENCH_DIR) $(FW_SCENES)
 
 bench-error:
 	$(BENCH_ERROR_CHECK)
@@ -177,11 +177,11 @@ bench-error:
 
 bench-error-run: $(FW_ERR_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(ZBITS_SIMS) $(PNG_DIFF) $(FW_PATH_HOSTS) bench-error-soc
 	$(BENCH_ERROR_CHECK)
-	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --frames $(FW_ERR_FRAMES) $(BENCH_SOC_ARGS) $(FW_SCENES)
+	@$(PLOT_PYTHON) bench/bench_error.py --build $(BUILD) --frames $(FW_ERR_FRAMES) $(BENCH_SOC_ARGS) $(FW_SCENES)
 	@$(MAKE) --no-print-directory bench-error-path-run
 	@$(MAKE) --no-print-directory bench-error-shading-run
 
-# Both halves' CPU cycles on the SoC (tools/bench_error.py --socsim): the path ELFs of the first
+# Both halves' CPU cycles on the SoC (bench/bench_error.py --socsim): the path ELFs of the first
 # FW_PATH_SOC_VIEWS views built for bsp/soc (firmware.mk FW_PATH_SOC_ELFS, $(BUILD)/fw-path-soc/),
 # on socsim with and without the depth buffer, and R's on a SPAN_W 1 GPU (the span-width check).
 # Measured once per configuration (the results are cached in $(BUILD)/bench-error/soc/). On a
@@ -200,7 +200,7 @@ bench-error-soc:
 	+@$(SOC_FW_MAKE) SOC_RAM_KIB=$(BENCH_SOC_RAM_KIB) ZBUF=1 SPAN_W=8 socsim
 	+@$(SOC_FW_MAKE) SOC_RAM_KIB=$(BENCH_SOC_RAM_KIB) ZBUF=1 SPAN_W=1 socsim
 
-# The camera paths against the exact reference (tools/bench_error.py --path): FW_PATH_VIEWS views
+# The camera paths against the exact reference (bench/bench_error.py --path): FW_PATH_VIEWS views
 # per scene of BENCH_PATH_SCENES, the costs co-simulated on the first BENCH_COST_VIEWS of them.
 # `make bench-error-path` runs only these (BENCH_PATH_SCENES="tetra cubes" for a reduced run).
 BENCH_PATH_SCENES ?= $(FW_SCENES)
@@ -212,10 +212,10 @@ bench-error-path:
 
 bench-error-path-run: $(FW_PATH_HOSTS) $(FW_PATH_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(ZBITS_SIMS) $(PNG_DIFF) $(EXACT_REF) bench-error-soc
 	$(BENCH_ERROR_CHECK)
-	@$(PLOT_PYTHON) tools/bench_error.py --build $(BUILD) --path $(FW_PATH_VIEWS) \
+	@$(PLOT_PYTHON) bench/bench_error.py --build $(BUILD) --path $(FW_PATH_VIEWS) \
 	  --cost-views $(BENCH_COST_VIEWS) $(BENCH_SOC_ARGS) $(BENCH_PATH_SCENES)
 
-# The shading knobs (tools/bench_shading.py): flat, Gouraud and Gouraud dithered on the scenes with
+# The shading knobs (bench/bench_shading.py): flat, Gouraud and Gouraud dithered on the scenes with
 # vertex normals (FW_SHADING_SCENES), against the undithered reference, on the same camera path;
 # `make bench-error-shading` runs only these.
 bench-error-shading:
@@ -225,14 +225,14 @@ bench-error-shading:
 
 bench-error-shading-run: $(FW_SHADING_HOSTS) $(FW_SHADING_ELFS) $(GOURAUD_SIM) $(PNG_DIFF)
 	$(BENCH_ERROR_CHECK)
-	@$(PLOT_PYTHON) tools/bench_shading.py --build $(BUILD) --views $(FW_PATH_VIEWS) \
+	@$(PLOT_PYTHON) bench/bench_shading.py --build $(BUILD) --views $(FW_PATH_VIEWS) \
 	  --cost-views $(BENCH_COST_VIEWS) $(FW_SHADING_SCENES)
 
 # The exact reference of bench-error's camera paths (double precision, the pipeline's definitions
-# written anew: tools/exact_ref/exact_ref.c), and its self-test on known polygons.
-$(EXACT_REF): tools/exact_ref/exact_ref.c cosim/png_write.c cosim/png_write.h
+# written anew: bench/exact_ref/exact_ref.c), and its self-test on known polygons.
+$(EXACT_REF): bench/exact_ref/exact_ref.c cosim/png_write.c cosim/png_write.h
 	@mkdir -p $(dir $@)
-	$(Q)$(call say,LD,$@)$(HOST_CC) $(HOST_CFLAGS) -Icosim $$(pkg-config --cflags libpng) tools/exact_ref/exact_ref.c \
+	$(Q)$(call say,LD,$@)$(HOST_CC) $(HOST_CFLAGS) -Icosim $$(pkg-config --cflags libpng) bench/exact_ref/exact_ref.c \
 	  cosim/png_write.c -o $@ $$(pkg-config --libs libpng) -lm
 
 $(PNG_DIFF): tools/png_diff.c
@@ -247,7 +247,7 @@ synth:
 # ---- the README's two commands on a fresh Debian 12: a debootstrap chroot in $(BUILD)/fresh (root) ----
 .PHONY: fresh-check
 fresh-check:
-	@BUILD=$(BUILD) bash tools/fresh_check.sh
+	@BUILD=$(BUILD) bash mk/fresh_check.sh
 
 # ---- host-side simulator: Verilated GPU + co-simulation bridge + golden model ----
 HOST_OBJ := $(patsubst %.c,$(BUILD)/host/%.o,$(COSIM_C_SRC))
@@ -304,8 +304,11 @@ SIM_DEPS := $(RTL_FILES) $(RTL_V) contract/gpu_regs.vh $(COSIM_CPP) $(wildcard c
 # Every simulator of mk/builds.toml: $(BUILD)/<id>/gpusim, $(call verilate,...) with its parameters.
 ifneq ($(GEN_READ),)
 include $(GEN_DIR)/gpusim.mk
+# (In a manifest build, once make has read the manifest's fragment: it makes it first.)
+ifneq ($(if $(LEAN_SCENE),$(MANIFEST_SCENE),1),)
 ifneq ($(filter-out $(GPUSIM_IDS),$(patsubst $(BUILD)/%/gpusim,%,$(GPUSIM) $(GPUSIM_FAST))),)
 $(error SPAN_W=$(SPAN_W) GOURAUD=$(GOURAUD): $(GPUSIM) is not a simulator of mk/builds.toml (SPAN_W: 1 4 8 16))
+endif
 endif
 endif
 

@@ -125,7 +125,7 @@ private:
     QemuProcess qemu_;
 };
 
-// When the first and the last frame were captured (tools/bench_sim.sh's speeds).
+// When the first and the last frame were captured (bench/bench_sim.sh's speeds).
 void CosimRun::summary_keys(FILE *f) const
 {
     const FrameClock &c = frame_clock();

@@ -453,4 +453,4 @@ $(UPLOAD_PEER_2048): $(filter-out %.h,$(UPLOAD_PEER_SRCS)) $(wildcard firmware/m
 
 .PHONY: bench-upload
 bench-upload: $(UPLOAD_PEER) $(UPLOAD_PEER_2048) $(MESHCONV)
-	@bash tools/bench_upload.sh $(BUILD) $(UPLOAD_PEER) $(UPLOAD_PEER_2048) $(MESHCONV)
+	@bash bench/bench_upload.sh $(BUILD) $(UPLOAD_PEER) $(UPLOAD_PEER_2048) $(MESHCONV)

@@ -80,6 +80,8 @@ def gpusims(table):
             raise TableError(f"{where}: display = {display!r}: pins or fast")
         if ident in out:
             raise TableError(f"{where}: simulator {ident} named twice")
+        # SPAN_W always (the harness's gpu_build.h needs it), the others where they differ.
+        params = dict({"SPAN_W": defaults["SPAN_W"]}, **params)
         flags = " ".join(f"-G{k}={v}" for k, v in params.items() if v != defaults[k] or k == "SPAN_W")
         out[ident] = (flags + (" --trace-fst" if trace else ""), display, trace)
 

@@ -24,7 +24,7 @@
 #
 #   manifest-show [SCENE=x] [FULL=1]   what such a build uses: its ELFs, simulators, RTL parameters
 #   manifest-check                      every manifest valid (mk/manifest.py --check)
-#   lean-report                         full against lean per scene (tools/lean_report.py)
+#   lean-report                         full against lean per scene (bench/lean_report.py)
 FULL       ?=
 LEAN_ROOT  ?= $(BUILD)/lean
 MANIFEST_GOALS := run run-built run-soc soc-fw fw bitstream synth-board board-fw flash load \
@@ -111,7 +111,7 @@ LEAN_SYNTH  ?= 1
 LEAN_FRAMES ?= 4
 lean-report:
 	@bash tools/setup.sh
-	$(Q)$(call say,RUN,lean_report.py $(LEAN_SCENES))$(PYTHON) tools/lean_report.py --build $(BUILD) --make $(LEAN_REPORT_MAKE) $(if $(JOBS),--jobs $(JOBS)) \
+	$(Q)$(call say,RUN,lean_report.py $(LEAN_SCENES))$(PYTHON) bench/lean_report.py --build $(BUILD) --make $(LEAN_REPORT_MAKE) $(if $(JOBS),--jobs $(JOBS)) \
 	  --frames $(LEAN_FRAMES) $(if $(filter 0,$(LEAN_SYNTH)),--no-synth) $(LEAN_SCENES)
 
 # make test's manifest build (tests/manifest/manifest.sh): cubes as its manifest says, the test

@@ -49,5 +49,5 @@ $(SOC_SMOKE_ELF): $(SOC_SMOKE_SRC) tests/soc/smoke.ld contract/soc_map.h contrac
 	$(Q)$(call say,LD,$@)$(RV_CC) $(SOC_RV_FLAGS) -Os -g -ffreestanding -nostdlib -nostartfiles -Wall -Wextra -Werror \
 	  -Icontract -T tests/soc/smoke.ld -Wl,--no-warn-rwx-segments $(SOC_SMOKE_SRC) -o $@
 
-$(SOC_SMOKE_HEX): $(SOC_SMOKE_ELF) tools/elf_to_hex.py
-	$(Q)$(call say,GEN,$@)$(PYTHON) tools/elf_to_hex.py $< $@
+$(SOC_SMOKE_HEX): $(SOC_SMOKE_ELF) bsp/soc/elf_to_hex.py
+	$(Q)$(call say,GEN,$@)$(PYTHON) bsp/soc/elf_to_hex.py $< $@

@@ -8,7 +8,7 @@
 #       BITSTREAM_STOP=inputs: the firmware, then the flow's inputs checked (sources, constraints,
 #       tools, the RAM image against RAM_BYTES) and no synthesis: the tests' form
 #   synth-board BOARD=ulx3s   the same, synthesis only: resources and the 45F/85F fit
-#   board-fit [PNR=1]         tools/board_fit.py: that table for the default build, the depth-buffer
+#   board-fit [PNR=1]         boards/ulx3s/board_fit.py: that table for the default build, the depth-buffer
 #                             build and every scene's lean build (RAM sized to the scene); PNR=1 adds
 #                             place and route, fmax per clock (about 15 minutes a build)
 #   flash BOARD=ulx3s         write $(ULX3S_BIT) to the board's SPI flash (openFPGALoader -f): kept
@@ -41,7 +41,7 @@ ULX3S_FLOW   = $(PYTHON) synth/ecp5_bitstream.py --top ulx3s_top --lpf boards/ul
 SOC_CPU_V_REL = $(patsubst $(CURDIR)/%,%,$(SOC_CPU_V))
 
 .PHONY: bitstream synth-board flash load term board-fw lint-board board-fit ulx3s-dir
-# Where a build's files go, for tools/board_fit.py (the name is made here only).
+# Where a build's files go, for boards/ulx3s/board_fit.py (the name is made here only).
 ifneq ($(SOC_RAM_KIB),auto)
 ulx3s-dir:
 	@echo $(ULX3S_DIR)
@@ -75,14 +75,14 @@ synth-board: board-fw
 flash load:
 	@test -f $(ULX3S_BIT) || { echo "$@: no $(ULX3S_BIT): make bitstream BOARD=ulx3s first (same SCENE, SYS_MHZ, SOC_RAM_KIB)"; exit 1; }
 	@bash tools/setup.sh
-	$(Q)$(call say,LOAD,$(ULX3S_BIT))bash tools/board_load.sh ulx3s $(if $(filter flash,$@),flash,sram) $(ULX3S_BIT)
+	$(Q)$(call say,LOAD,$(ULX3S_BIT))bash boards/board_load.sh ulx3s $(if $(filter flash,$@),flash,sram) $(ULX3S_BIT)
 endif
 endif
 
 board-fit:
 	@bash tools/setup.sh
-	$(Q)$(call say,RUN,board_fit.py)$(PYTHON) tools/board_fit.py --build $(BUILD) $(if $(filter 1,$(PNR)),--pnr)
+	$(Q)$(call say,RUN,board_fit.py)$(PYTHON) boards/ulx3s/board_fit.py --build $(BUILD) $(if $(filter 1,$(PNR)),--pnr)
 
 term:
 	@bash tools/setup.sh
-	$(Q)$(call say,TERM,$(TERM_PORT))bash tools/board_term.sh $(TERM_PORT)
+	$(Q)$(call say,TERM,$(TERM_PORT))bash boards/board_term.sh $(TERM_PORT)

@@ -12,7 +12,7 @@
  *   - bsp_instret() and bsp_cycles() have nothing to count and return 0.
  *   - the GPU's buffers are not memory (BSP_GPU_BUFFERS_MAPPED 0): batches are staged.
  *   - with --dump-scene DIR, every frame's scene is written as DIR/NNNN.scene for the exact
- *     reference (bsp_host_scene_dump, scene_dump.c; tools/exact_ref/exact_ref.c reads it).
+ *     reference (bsp_host_scene_dump, scene_dump.c; bench/exact_ref/exact_ref.c reads it).
  *
  * bsp/host/host_main.c parses the options (bsp_args, called by the firmware's main before the
  * frame loop).
@@ -56,7 +56,7 @@ static inline uint32_t *bsp_gpu_buffer(uint32_t offset)
 #define BSP_HAS_ARGS 1
 int bsp_args(int argc, char **argv);
 
-/* The frame's scene after its update, as tools/exact_ref reads it: app.c calls it once per frame
+/* The frame's scene after its update, as bench/exact_ref reads it: app.c calls it once per frame
  * (a no-op without --dump-scene). The scene is opaque here: scene_dump.c reads it through
  * scenes/scene_export.h. */
 #define BSP_HOST_SCENE_DUMP 1

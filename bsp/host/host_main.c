@@ -22,7 +22,7 @@
  *   --span-w N        SPAN_W the model reports (1, 4, 8, 16; default 8)
  *   --dump-scene DIR  write each frame's scene after its update as DIR/NNNN.scene: world-space
  *                     triangles with their normals and materials, light, camera, palette (the
- *                     exact reference's input, tools/exact_ref; format in bsp/host/scene_dump.c)
+ *                     exact reference's input, bench/exact_ref; format in bsp/host/scene_dump.c)
  *   --model FILE      the model scene draws this mesh file (docs/mesh-format.md) instead of the
  *                     built-in one, as if it had been uploaded before the first frame: the
  *                     reference renders of the upload test, and a quick look at a converted model

@@ -1,6 +1,6 @@
 /*
  * scene_dump.c — the host build's --dump-scene: every frame's scene, after its update, as the exact
- * reference (tools/exact_ref/exact_ref.c) reads it. Only the scene's data goes out — meshes,
+ * reference (bench/exact_ref/exact_ref.c) reads it. Only the scene's data goes out — meshes,
  * object and scene transforms applied, the camera's eye and angles, the light, the palette — none
  * of the pipeline's results (no view transform, projection, culling, clipping, lighting level or
  * order): the reference computes all of those itself, in double.

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """postlink.py — FW_POSTLINK of the soc platform (bsp/soc/bsp.mk): ELF -> ELF.hex for the RTL's
 RAM_INIT ($readmemh: one 32-bit little-endian word per line, from address 0; written by
-tools/elf_to_hex.py), after checking that the program, its bss and its stack fit the on-chip RAM,
+bsp/soc/elf_to_hex.py), after checking that the program, its bss and its stack fit the on-chip RAM,
 and ELF.ramkib: the RAM the program needs, in KiB, rounded up to the RAM's granule.
 
 The RAM a program needs is read off its link: linker/soc.ld puts the stack right above .bss, so
@@ -69,8 +69,8 @@ def main():
             f"SOC_RAM_KIB (at least {ram_kib_needed(needed)}) or smaller capacities/scenes.\n")
         return 1
 
-    # The image itself: tools/elf_to_hex.py, the SoC's one ELF -> RAM_INIT converter.
-    tool = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "elf_to_hex.py")
+    # The image itself: bsp/soc/elf_to_hex.py, the SoC's one ELF -> RAM_INIT converter.
+    tool = os.path.join(os.path.dirname(os.path.abspath(__file__)), "elf_to_hex.py")
     subprocess.run([sys.executable, tool, a.elf, a.elf + ".hex", "--ram-bytes", str(a.ram_bytes),
                     "--base", str(ram_base)], check=True, stdout=subprocess.DEVNULL)
     with open(a.elf + ".ramkib", "w") as f:

@@ -11,7 +11,7 @@
 #                  recursive make with FW_PLATFORM=soc) on socsim -> $(OUT)/frames, $(OUT)/uart.log,
 #                  or a window where the Makefile's WINDOW says so (a display, not CI)
 #   soc-fw         that firmware only; soc-fw-test: the FW_TEST_FRAMES builds of every scene
-#   bench-soc      per scene: instructions, cycles, CPI, refills, GPU cycles, fps (tools/bench_soc.py)
+#   bench-soc      per scene: instructions, cycles, CPI, refills, GPU cycles, fps (bench/bench_soc.py)
 #   soc-smoke      the bare-metal smoke program (tests/soc/smoke.c, soc_rtl/soc.mk) on socsim
 #
 # The RTL's sources and flags come from soc_rtl/soc.mk (SOC_VFLAGS: gpu_rtl/files.f, the core from
@@ -104,8 +104,8 @@ soc-smoke: $(SOCSIM) $(SOC_SMOKE_HEX)
 	@BUILD=$(BUILD) SOCSIM=$(SOCSIM) SOC_SMOKE_HEX=$(SOC_SMOKE_HEX) bash tests/soc/smoke.sh
 
 # The benchmark builds (firmware.mk's FW_BENCH_FRAMES frames) of every scene, each on socsim, one
-# table (tools/bench_soc.py).
+# table (bench/bench_soc.py).
 SOC_BENCH_ELFS := $(foreach s,$(FW_SCENES),$(s)=$(BUILD)/fw-bench-soc/$(s).elf)
 bench-soc: $(SOCSIM)
 	+@$(SOC_FW_MAKE) $(foreach s,$(FW_SCENES),$(BUILD)/fw-bench-soc/$(s).elf)
-	@$(PYTHON) tools/bench_soc.py --socsim $(SOCSIM) --out $(BUILD)/bench-soc $(SOC_BENCH_ELFS)
+	@$(PYTHON) bench/bench_soc.py --socsim $(SOCSIM) --out $(BUILD)/bench-soc $(SOC_BENCH_ELFS)

@@ -1,7 +1,7 @@
 /*
  * cam_path.h — a seeded camera path for measurements: with FW_CAMERA_PATH = N (> 0) frame k shows
  * view k mod N of the path instead of the scene's own camera, for `make bench-error`'s camera
- * paths (tools/bench_error.py --path). Off by default (FW_CAMERA_PATH = 0: this file is empty);
+ * paths (bench/bench_error.py --path). Off by default (FW_CAMERA_PATH = 0: this file is empty);
  * only app.c includes it, so only app.o differs between a path build and the default one.
  *
  * The path is a function of the view number, the seed FW_CAMERA_PATH_SEED and the scene's default

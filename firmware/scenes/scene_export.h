@@ -1,7 +1,7 @@
 /*
  * scene_export.h — a frame's scene as plain numbers, for tools outside the firmware: the host
  * build's --dump-scene (bsp/host/scene_dump.c), which writes it for the exact reference
- * (tools/exact_ref). The reader sees doubles and indices only, never the scene's, the meshes' or
+ * (bench/exact_ref). The reader sees doubles and indices only, never the scene's, the meshes' or
  * the pipeline's types: the scene stays opaque (struct scene), so the host BSP depends on this
  * interface and not on scenes/, render/ or app/.
  *

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The machinery of `make bench-error` (which is too long for `make test`), on tiny inputs:
-#  1. the metric (tools/png_diff through tools/bench_error.py): 0 for identical images, the known
+#  1. the metric (tools/png_diff through bench/bench_error.py): 0 for identical images, the known
 #     count and sum for two changed pixels, one pixel per block with --block, box means with
 #     --box (changes in two boxes add, changes in one box cancel), sizes checked;
 #  2. FW_SUBPIXEL_BITS=4 builds the same program as the default build (tetra, fixed point: the
@@ -11,7 +11,7 @@ need BUILD PYTHON
 work=$(fresh_dir bench-error-machinery)
 
 # 1.
-"$PYTHON" tools/bench_error.py --check-metric "$BUILD/tools/png_diff" "$work"
+"$PYTHON" bench/bench_error.py --check-metric "$BUILD/tools/png_diff" "$work"
 
 # 2.
 objcopy=riscv64-unknown-elf-objcopy

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The exact reference of `make bench-error`'s camera paths (tools/exact_ref):
+# The exact reference of `make bench-error`'s camera paths (bench/exact_ref):
 #  1. its self-test on known polygons: a square whose edges pass through pixel centres covers
 #     exactly 10 x 10 of them, each once (top-left rule, shared diagonal), either winding; a
 #     triangle crossing the near plane is cut there; depth order holds in either drawing order;

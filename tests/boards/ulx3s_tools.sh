@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # What of the ULX3S flow can be checked without a board: the constraints cover every pin of
 # ulx3s_top (and name no other), the oscillator is constrained; openFPGALoader knows the board;
-# `make flash`/`make load` refuse without a bitstream and say what to do; tools/board_load.sh, with no
+# `make flash`/`make load` refuse without a bitstream and say what to do; boards/board_load.sh, with no
 # board on USB, fails with openFPGALoader's "device not found" and says what to check;
-# tools/board_term.sh (make term) refuses a missing serial port clearly.
+# boards/board_term.sh (make term) refuses a missing serial port clearly.
 source "$(dirname "$0")/../lib.sh"
 need BUILD
 work=$(fresh_dir boards-ulx3s-tools)
@@ -33,14 +33,14 @@ run_to "$work/flash.out" 60 make --no-print-directory flash BOARD=ulx3s BUILD="$
 expect_line "make bitstream BOARD=ulx3s first" "$work/flash.out"
 
 head -c 4096 /dev/urandom >"$work/not-a-board.bit"
-run_to "$work/load.out" 60 bash tools/board_load.sh ulx3s sram "$work/not-a-board.bit"
+run_to "$work/load.out" 60 bash boards/board_load.sh ulx3s sram "$work/not-a-board.bit"
 if [ "$status" -eq 0 ]; then
     echo "a ULX3S is attached: loading random bytes succeeded?"; cat "$work/load.out"; fail "board_load.sh accepted garbage"
 fi
 expect_line "device not found" "$work/load.out"
 expect_line "board_load: openFPGALoader could not load" "$work/load.out"
 
-run_to "$work/term.out" 10 env TERM_PORT="$work/ttyUSB-none" bash tools/board_term.sh "$work/ttyUSB-none"
+run_to "$work/term.out" 10 env TERM_PORT="$work/ttyUSB-none" bash boards/board_term.sh "$work/ttyUSB-none"
 [ "$status" -ne 0 ] || fail "board_term.sh started on a missing port"
 expect_line "term: no serial port" "$work/term.out"
 

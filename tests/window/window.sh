@@ -80,7 +80,7 @@ xdotool key --delay 30 Left Left
 typed_at=$(frame_no)
 wait_frames $((typed_at + 10))
 xwd -id "$win" -silent >"$work/window.xwd" || fail "xwd could not dump the window"
-"$PYTHON" tools/xwd_to_png.py "$work/window.xwd" "$work/window.png"
+"$PYTHON" tests/window/xwd_to_png.py "$work/window.xwd" "$work/window.png"
 shown=$(title)
 xdotool type q
 status=0
@@ -108,7 +108,7 @@ run_pid=$!
 find_window '^socsim tetra-window\.elf' "socsim --window"
 wait_frames 1
 xwd -id "$win" -silent >"$work/soc.xwd" || fail "xwd could not dump the SoC's window"
-"$PYTHON" tools/xwd_to_png.py "$work/soc.xwd" "$work/soc.png"
+"$PYTHON" tests/window/xwd_to_png.py "$work/soc.xwd" "$work/soc.png"
 /usr/bin/python3 - "$win" <<'EOF' || fail "could not close the window"
 import sys
 from Xlib import X, display

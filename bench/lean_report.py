@@ -10,7 +10,7 @@ Per scene and build (full: `FULL=1`; lean: the manifest's):
   text data bss             riscv64-unknown-elf-size of that build's firmware (FRAMES 0, the board's)
   instr, CPU cyc, GPU cyc   per frame on socsim, the whole SoC (`make soc-fw` of FRAMES frames,
                             default 4), averaged over the frames after the first as bench-soc does
-                            (tools/bench_soc.py): the firmware's "fw instr", "cpu cycles", "gpu cycles"
+                            (bench/bench_soc.py): the firmware's "fw instr", "cpu cycles", "gpu cycles"
   frames identical          the lean build's socsim frames against the full build's, byte for byte
                             (each run is also checked against the golden model, which socsim
                             builds with its GPU's own parameters, capacities included)

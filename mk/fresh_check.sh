@@ -6,7 +6,7 @@
 # then `make test` install what they miss through tools/setup.sh and run. At the end a table: step,
 # seconds, result; the exit status is 1 if either command failed.
 #
-# Here in tools/, beside what it checks: tools/setup.sh and its package lists are what a fresh
+# Here in mk/, with the build it checks: tools/setup.sh and its package lists are what a fresh
 # machine depends on, and a list that misses a package fails here first. It is not a test suite
 # (tests/run_all.sh runs those inside a built tree; this builds the tree from nothing).
 #

@@ -38,7 +38,7 @@ Costs, counted (never timed):
 
 With --path VIEWS (`make bench-error-path`, and the second half of `make bench-error`): the same
 configurations plus the reciprocal's Newton steps (0 and 2 instead of fixed point's 1), on a seeded
-camera path of VIEWS views per scene, against the exact reference E (tools/exact_ref) instead of
+camera path of VIEWS views per scene, against the exact reference E (bench/exact_ref) instead of
 R: per configuration the mean, 95th percentile and worst view of the pixels differing from E, the
 Pareto front of error against cost and whether the default build lies on it, the plot in
 BUILD/bench-error/path/error-vs-cost.png and each configuration's worst view beside E's in
@@ -334,7 +334,7 @@ def plot(results, scenes, path):
 #
 # Every configuration above, on FW_PATH_VIEWS seeded views per scene (firmware/app/cam_path.h:
 # orbit, fly-through, close-ups at the near plane, grazing angles), against the exact reference E
-# (tools/exact_ref: double precision, exact coverage at pixel centres, per-pixel depth). Where the
+# (bench/exact_ref: double precision, exact coverage at pixel centres, per-pixel depth). Where the
 # numbers come from, the cheapest honest split:
 #   frames  the host build through the golden model (bsp/host; bit-exact with the RTL by test, and
 #           here checked again on the co-simulated views), every view of the path;
@@ -678,7 +678,7 @@ def path_table(results, scenes, views, cost_views, mismatches, soc_lines=()):
         differing_cell(r), "%.0f" % r["p95"], "%d (%d)" % (r["worst"], r["worst_view"]), "%.4f" % r["mae"],
         "%d" % round(r["instr"]), "%d" % round(r["cycles"]), soc_cell(r)])
     lines.append("")
-    lines.append("E = the exact reference (tools/exact_ref). Errors over the %d views of each scene's "
+    lines.append("E = the exact reference (bench/exact_ref). Errors over the %d views of each scene's "
                  "camera path (firmware/app/cam_path.h, seed FW_PATH_SEED), frames from the host build "
                  "through the golden model; costs means over the first %d views, co-simulated (QEMU "
                  "-icount, Verilator cycles)." % (views, cost_views))

@@ -25,7 +25,7 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "bsp", "soc"))
 from elf_to_hex import soc_map_value  # noqa: E402  (contract/soc_map.h's values, read once here)
 
 SCENES = ["tetra", "cubes", "landscape", "voxel", "knot"]
