@@ -183,22 +183,16 @@ bench-error-run: $(FW_ERR_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(ZBITS_SIMS) $(PNG_DI
 
 # Both halves' CPU cycles on the SoC (bench/bench_error.py --socsim): the path ELFs of the first
 # FW_PATH_SOC_VIEWS views built for bsp/soc (firmware.mk FW_PATH_SOC_ELFS, $(BUILD)/fw-path-soc/),
-# on socsim with and without the depth buffer, and R's on a SPAN_W 1 GPU (the span-width check).
-# Measured once per configuration (the results are cached in $(BUILD)/bench-error/soc/). On a
-# 256 KiB RAM (the RAM window's size), not the board's 192: the camera path's code (8 KiB) and the
-# landscape's vertex normals (7.8 KiB, for Gouraud) put its path builds 2.9 KiB over 192 KiB. The
-# RAM's size should change no cycle count (every size answers in the same clocks, and the stack
-# moves by a multiple of the 4 KiB caches; argued, not measured), only what fits.
-BENCH_SOC_RAM_KIB := 256
-BENCH_SOCSIM_DIR = $(BUILD)/socsim-$(BENCH_SOC_RAM_KIB)k
-BENCH_SOC_ARGS   = --socsim sim-w8=$(BENCH_SOCSIM_DIR)/socsim --socsim sim-z-w8=$(BENCH_SOCSIM_DIR)-z/socsim \
-                   --socsim sim-z-w1=$(BENCH_SOCSIM_DIR)-z-w1/socsim --soc-views $(FW_PATH_SOC_VIEWS)
+# on socsim with and without the depth buffer, and R's on a SPAN_W 1 GPU (the span-width check):
+# mk/builds.toml's socsim-256k, -z and -z-w1 (why 256 KiB: there). Measured once per configuration
+# (the results are cached in $(BUILD)/bench-error/soc/).
+BENCH_SOCSIM      := socsim-256k
+BENCH_SOC_RAM_KIB := $(SOCSIM_RAM_KIB_$(BENCH_SOCSIM))
+BENCH_SOC_ARGS    = --socsim sim-w8=$(BUILD)/$(BENCH_SOCSIM)/socsim --socsim sim-z-w8=$(BUILD)/$(BENCH_SOCSIM)-z/socsim \
+                    --socsim sim-z-w1=$(BUILD)/$(BENCH_SOCSIM)-z-w1/socsim --soc-views $(FW_PATH_SOC_VIEWS)
 .PHONY: bench-error-soc
-bench-error-soc:
-	+@$(SOC_FW_MAKE) SOC_RAM_KIB=$(BENCH_SOC_RAM_KIB) ZBUF=0 SPAN_W=8 \
-	  $(patsubst $(BUILD)/fw-path/%,$(BUILD)/fw-path-soc/%,$(FW_PATH_SOC_ELFS)) socsim
-	+@$(SOC_FW_MAKE) SOC_RAM_KIB=$(BENCH_SOC_RAM_KIB) ZBUF=1 SPAN_W=8 socsim
-	+@$(SOC_FW_MAKE) SOC_RAM_KIB=$(BENCH_SOC_RAM_KIB) ZBUF=1 SPAN_W=1 socsim
+bench-error-soc: $(foreach s,$(BENCH_SOCSIM) $(BENCH_SOCSIM)-z $(BENCH_SOCSIM)-z-w1,$(BUILD)/$(s)/socsim)
+	+@$(SOC_FW_MAKE) SOC_RAM_KIB=$(BENCH_SOC_RAM_KIB) $(patsubst $(BUILD)/fw-path/%,$(BUILD)/fw-path-soc/%,$(FW_PATH_SOC_ELFS))
 
 # The camera paths against the exact reference (bench/bench_error.py --path): FW_PATH_VIEWS views
 # per scene of BENCH_PATH_SCENES, the costs co-simulated on the first BENCH_COST_VIEWS of them.

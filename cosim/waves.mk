@@ -22,8 +22,9 @@ GPUSIM_FAST_TRACE := $(BUILD)/sim-fast-trace-w$(SPAN_W)/gpusim
 # The SoC's: socsim's build (socsim.mk's socsim_cmd) with --trace-fst and -DSOCSIM_TRACE=1.
 SOCSIM_TRACE_DIR := $(BUILD)/socsim-trace-$(SOC_RAM_KIB)k$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
 SOCSIM_TRACE     := $(SOCSIM_TRACE_DIR)/socsim
-SOCSIM_TRACE_CMD  = $(call socsim_cmd,$(SOCSIM_TRACE_DIR),soc_top $(SOC_SIM_TIED) --trace-fst,,-DSOCSIM_TRACE=1)
-$(eval $(call SOCSIM_BUILD_RULES,$(SOCSIM_TRACE_DIR),SOCSIM_TRACE_CMD,))
+SOCSIM_TRACE_CMD  = $(call socsim_cmd,$(SOCSIM_TRACE_DIR),$(SOCSIM_SYSTEM_soc) --trace-fst,$(SOC_RAM_BYTES),\
+  $(SOCSIM_GPU_FLAGS),,-DSOCSIM_TRACE=1)
+$(call socsim_rules_unless_listed,$(SOCSIM_TRACE_DIR),SOCSIM_TRACE_CMD,)
 
 # The firmware: SCENE with FRAME + 1 frames, so the run ends soon after the traced frame (frames
 # count from 0), under $(BUILD)/fw-waves[-soc]: the FRAMES builds of `make run` stay as they are.

@@ -223,17 +223,23 @@ define fw_flags_file
 endef
 
 # ---- per backend: shared objects, target and host ----------------------------------------------
+# An object folder is named by the variant and a checksum of its compiler and flags, so every build
+# with the same flags shares its objects, whichever make or folder of programs asks for them (make
+# test's, `make run`'s, a scene's manifest build with the same features); cflags.txt in it says
+# what they are. An object is written under a temporary name and renamed: two makes side by side
+# (suites that run make) never leave one half-written.
+fw_flags_sum = $(shell printf '%s' '$(subst ','\'',$(1))' | cksum | cut -d' ' -f1)
 # $(1) = backend
 define FW_BACKEND_RULES
-FW_OBJ_DIR_$(1)   := $(FW_DIR)/obj-$(1)
 FW_CFLAGS_$(1)    := $(FW_CFLAGS_BASE) $(FW_BACKEND_DEFS_$(1)) $(FW_VARIANT_DEFS_$(1))
+FW_OBJ_DIR_$(1)   := $(BUILD)/fw-obj$(FW_PSUFFIX)/$(1)-$$(call fw_flags_sum,$(FW_CC) $$(FW_CFLAGS_$(1)))
 FW_OBJS_$(1)      := $$(patsubst %.c,$$(FW_OBJ_DIR_$(1))/%.o,$(FW_PURE_SRCS) $(FW_DRIVER_SRC) \
                      $(FW_MAIN_SRC) $(FW_BSP_SRCS))
 # ... without the scenes' objects: an ELF adds those of the scenes it is built with.
 FW_CORE_OBJS_$(1) := $$(filter-out $$(patsubst %.c,$$(FW_OBJ_DIR_$(1))/%.o,$(FW_ALL_SCENE_SRCS)),\
                      $$(FW_OBJS_$(1)))
-HOST_OBJ_DIR_$(1) := $(BUILD)/fw-host/obj-$(1)
 FW_HOST_CFLAGS_$(1) = $(FW_HOST_CFLAGS_BASE) $(FW_BACKEND_DEFS_$(1)) $(FW_VARIANT_DEFS_$(1))
+HOST_OBJ_DIR_$(1) := $(BUILD)/fw-obj-host/$(1)-$$(call fw_flags_sum,$(HOST_CC) $$(FW_HOST_CFLAGS_$(1)))
 FW_HOST_OBJS_$(1) := $$(patsubst %.c,$$(HOST_OBJ_DIR_$(1))/%.o,$(FW_PURE_SRCS) $(FW_DRIVER_SRC) \
                      $(FW_HOST_SRCS))
 FW_HOST_CORE_OBJS_$(1) := $$(filter-out \
@@ -244,7 +250,8 @@ $$(FW_OBJ_DIR_$(1))/cflags.txt: fw-force
 
 $$(FW_OBJ_DIR_$(1))/%.o: %.c $$(FW_OBJ_DIR_$(1))/cflags.txt
 	@mkdir -p $$(@D)
-	$$(Q)$$(call say,CC,$$<)$$(FW_CC) $$(FW_CFLAGS_$(1)) -MMD -MP -c $$< -o $$@
+	$$(Q)$$(call say,CC,$$<)$$(FW_CC) $$(FW_CFLAGS_$(1)) -MMD -MP -MF $$(@:.o=.d) -MT $$@ -c $$< -o $$@.$$$$$$$$ \
+	  && mv -f $$@.$$$$$$$$ $$@
 
 $$(HOST_OBJ_DIR_$(1))/cflags.txt: fw-force
 	$$(call fw_flags_file,$$@,$$(HOST_CC) $$(FW_HOST_CFLAGS_$(1)))
@@ -252,7 +259,7 @@ $$(HOST_OBJ_DIR_$(1))/cflags.txt: fw-force
 $$(HOST_OBJ_DIR_$(1))/%.o: %.c $$(HOST_OBJ_DIR_$(1))/cflags.txt
 	@mkdir -p $$(@D)
 	$$(Q)$$(call say,CC,$$<)$$(HOST_CC) $$(FW_HOST_CFLAGS_$(1)) $$(if $$(filter %/frame_out_png.o,$$@),$$(FW_HOST_PNG_OBJ_CFLAGS)) \
-	  -MMD -MP -c $$< -o $$@
+	  -MMD -MP -MF $$(@:.o=.d) -MT $$@ -c $$< -o $$@.$$$$$$$$ && mv -f $$@.$$$$$$$$ $$@
 
 FW_DEP_FILES += $$(FW_OBJS_$(1):.o=.d) $$(FW_HOST_OBJS_$(1):.o=.d)
 endef

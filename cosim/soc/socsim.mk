@@ -41,23 +41,31 @@ SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_
 
 # The Verilator command of a socsim build, recorded in <dir>/cmd.txt (rewritten only when it changes)
 # so that a change of parameters or flags rebuilds, and an edit elsewhere in this file does not.
-# $(1) = the build's directory, $(2) = its top module and parameters, $(3) = further sources and
-# -CFLAGS definitions.
+# $(1) = the build's directory, $(2) = its top module and parameters, $(3) = the RAM's bytes,
+# $(4) = the GPU's -G parameters (SPAN_W first), $(5) = further sources, $(6) = -CFLAGS definitions.
 socsim_cmd = $(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign fast --x-initial fast \
-  --top-module $(2) -GRAM_BYTES=$(SOC_RAM_BYTES) -GSPAN_W=$(SPAN_W)$(SOCSIM_GPU_GFLAGS) \
-  $(SOC_VFLAGS) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) $(3) \
-  -CFLAGS "-O2 -march=native -std=c++17 -ffunction-sections $(call gpu_build_defs,-GSPAN_W=$(SPAN_W)$(SOCSIM_GPU_GFLAGS)) -DSOCSIM_RAM_BYTES=$(SOC_RAM_BYTES)u \
-           $(4) $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract) $$(pkg-config --cflags sdl2)" \
+  --top-module $(2) -GRAM_BYTES=$(3) $(4) \
+  $(SOC_VFLAGS) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) $(5) \
+  -CFLAGS "-O2 -march=native -std=c++17 -ffunction-sections $(call gpu_build_defs,$(4)) -DSOCSIM_RAM_BYTES=$(3)u \
+           $(6) $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract) $$(pkg-config --cflags sdl2)" \
   -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng sdl2)" \
   --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1" --Mdir $(1)/obj -o $(abspath $(1))/socsim
-SOCSIM_CMD = $(call socsim_cmd,$(SOCSIM_DIR),soc_top $(SOC_SIM_TIED),,)
+# The systems a socsim build Verilates: soc_top (the pixel clock tied to the system clock), and the
+# ULX3S's (boards/ulx3s/ulx3s_system on its three clocks, the monitor on the TMDS pairs).
+SOCSIM_SYSTEM_soc         = soc_top $(SOC_SIM_TIED)
+SOCSIM_SYSTEM_ulx3s       = ulx3s_system
+ULX3S_SIM_FILES          := boards/ulx3s/files.f
+SOCSIM_SOURCES_ulx3s      = -f $(ULX3S_SIM_FILES) $(abspath cosim/soc/tmds_decoder.cpp)
+SOCSIM_CFLAGS_ulx3s      := -DSOCSIM_BOARD_ULX3S
+SOCSIM_PREREQS_ulx3s     := $(ULX3S_SIM_FILES) $(shell sed -e 's://.*::' $(ULX3S_SIM_FILES)) cosim/soc/tmds_decoder.cpp
+SOCSIM_GPU_FLAGS          = -GSPAN_W=$(SPAN_W)$(SOCSIM_GPU_GFLAGS)
+SOCSIM_CMD = $(call socsim_cmd,$(SOCSIM_DIR),$(SOCSIM_SYSTEM_soc),$(SOC_RAM_BYTES),$(SOCSIM_GPU_FLAGS),,)
 
-# The board build: boards/ulx3s/ulx3s_system on its three clocks, the monitor on the TMDS pairs.
+# The board build.
 SOCSIM_ULX3S_DIR := $(BUILD)/socsim-ulx3s-$(SOC_RAM_KIB)k
 SOCSIM_ULX3S     := $(SOCSIM_ULX3S_DIR)/socsim
-ULX3S_SIM_FILES  := boards/ulx3s/files.f
-SOCSIM_ULX3S_CMD  = $(call socsim_cmd,$(SOCSIM_ULX3S_DIR),ulx3s_system,-f $(ULX3S_SIM_FILES) \
-  $(abspath cosim/soc/tmds_decoder.cpp),-DSOCSIM_BOARD_ULX3S)
+SOCSIM_ULX3S_CMD  = $(call socsim_cmd,$(SOCSIM_ULX3S_DIR),$(SOCSIM_SYSTEM_ulx3s),$(SOC_RAM_BYTES),$(SOCSIM_GPU_FLAGS),\
+  $(SOCSIM_SOURCES_ulx3s),$(SOCSIM_CFLAGS_ulx3s))
 
 # The rules of one socsim build: its recorded command (without the job count: make test builds with
 # VERILATOR_JOBS=1, then runs with the default) and the simulator. $(1) = directory, $(2) = the name
@@ -70,9 +78,14 @@ $(1)/socsim: $$(SOCSIM_DEPS) $(1)/cmd.txt $(3)
 	@mkdir -p $(1)
 	$$(Q)$$(call say,VERILATE,$(notdir $(1)))$$($(2)) >$(1)/verilator.log 2>&1 || { tail -40 $(1)/verilator.log; exit 1; }
 endef
-$(eval $(call SOCSIM_BUILD_RULES,$(SOCSIM_DIR),SOCSIM_CMD,))
-$(eval $(call SOCSIM_BUILD_RULES,$(SOCSIM_ULX3S_DIR),SOCSIM_ULX3S_CMD,$(ULX3S_SIM_FILES) \
-  $(shell sed -e 's://.*::' $(ULX3S_SIM_FILES)) cosim/soc/tmds_decoder.cpp))
+# The table's builds (mk/builds.toml [socsim]: make test's, the benchmarks'), then this make's own
+# (SOC_RAM_KIB, ZBUF, SPAN_W, a manifest's GPU) where the table has no build of that name.
+ifneq ($(GEN_READ),)
+include $(GEN_DIR)/socsim.mk
+endif
+socsim_rules_unless_listed = $(if $(filter $(notdir $(1)),$(SOCSIM_IDS)),,$(eval $(call SOCSIM_BUILD_RULES,$(1),$(2),$(3))))
+$(call socsim_rules_unless_listed,$(SOCSIM_DIR),SOCSIM_CMD,)
+$(call socsim_rules_unless_listed,$(SOCSIM_ULX3S_DIR),SOCSIM_ULX3S_CMD,$(SOCSIM_PREREQS_ulx3s))
 
 .PHONY: socsim socsim-ulx3s run-soc soc-fw soc-test-deps bench-soc soc-smoke
 soc-fw:
