@@ -233,12 +233,12 @@ bool GpuSim::wait_capture(uint64_t max_cycles)
 // With the write mask (ENABLE_WMASK) both banks are one RAM of 2 x WORDS words instead, bank b
 // at words [b * WORDS, (b + 1) * WORDS) (g_merged).
 #define GPU_FB_MAIN(bank) \
-    GPU_CORE_NAME(u_framebuffer__DOT__g_split__DOT__g_bank__BRA__##bank##__KET____DOT__u_main__DOT__g_block__DOT__mem)
+    GPU_CORE_NAME(u_framebuffer__DOT__g_split__DOT__g_bank__BRA__##bank##__KET____DOT__u_main__DOT__mem)
 #define GPU_FB_TAIL(bank) \
-    GPU_CORE_NAME(u_framebuffer__DOT__g_split__DOT__g_bank__BRA__##bank##__KET____DOT__g_tail__DOT__u_tail__DOT__g_block__DOT__mem)
-#define GPU_FB_BOTH GPU_CORE_NAME(u_framebuffer__DOT__g_merged__DOT__u_both__DOT__g_block__DOT__mem)
+    GPU_CORE_NAME(u_framebuffer__DOT__g_split__DOT__g_bank__BRA__##bank##__KET____DOT__g_tail__DOT__u_tail__DOT__mem)
+#define GPU_FB_BOTH GPU_CORE_NAME(u_framebuffer__DOT__g_merged__DOT__u_both__DOT__mem)
 #define GPU_FB_FRONT GPU_CORE_NAME(u_framebuffer__DOT__front_q)
-#define GPU_PALETTE GPU_CORE_NAME(u_palette__DOT__g_lut__DOT__mem)
+#define GPU_PALETTE GPU_CORE_NAME(u_palette__DOT__mem)
 
 namespace {
 

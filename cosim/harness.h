@@ -45,6 +45,7 @@
 #include <string>
 
 #include "keys_at.h"
+#include "no_copy.h"
 #include "sdl_window.h"
 #include "uart_pty.h"
 #include "uart_pump.h"
@@ -85,11 +86,9 @@ struct HarnessCounts {
     uint64_t gpu_cycles = 0;  // the clocks simulated
 };
 
-class Harness {
+class Harness : NoCopy {
 public:
     Harness(const char *prog, const HarnessOptions &o) : prog_(prog), hopt_(o) {}
-    Harness(const Harness &) = delete;
-    Harness &operator=(const Harness &) = delete;
     virtual ~Harness() = default;
 
     static void catch_signals();

@@ -15,11 +15,10 @@
 
 #include <sys/types.h>
 
-class QemuProcess {
+#include "no_copy.h"
+
+class QemuProcess : NoCopy {
 public:
-    QemuProcess() = default;
-    QemuProcess(const QemuProcess &) = delete;
-    QemuProcess &operator=(const QemuProcess &) = delete;
     ~QemuProcess() { kill(); }
 
     // False with errno set if a pipe or the fork failed (an exec failure shows as exit status 127).

@@ -21,6 +21,8 @@
 #include <deque>
 #include <string>
 
+#include "no_copy.h"
+
 struct SDL_Window;
 struct SDL_Renderer;
 struct SDL_Texture;
@@ -29,11 +31,8 @@ struct SDL_Texture;
 // fw instr I | gpu cycles C | ..."): "fw instr I | gpu busy C cycles"; "" for any other line.
 std::string frame_line_status(const std::string &line);
 
-class SdlWindow {
+class SdlWindow : NoCopy {
 public:
-    SdlWindow() = default;
-    SdlWindow(const SdlWindow &) = delete;
-    SdlWindow &operator=(const SdlWindow &) = delete;
     ~SdlWindow() { close(); }
 
     bool open(const std::string &name, std::string *error);

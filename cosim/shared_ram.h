@@ -12,11 +12,10 @@
 
 #include <cstdint>
 
-class SharedRam {
+#include "no_copy.h"
+
+class SharedRam : NoCopy {
 public:
-    SharedRam() = default;
-    SharedRam(const SharedRam &) = delete;
-    SharedRam &operator=(const SharedRam &) = delete;
     ~SharedRam() { close(); }
 
     bool create();

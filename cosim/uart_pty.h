@@ -21,11 +21,10 @@
 #include <cstdint>
 #include <string>
 
-class UartPty {
+#include "no_copy.h"
+
+class UartPty : NoCopy {
 public:
-    UartPty() = default;
-    UartPty(const UartPty &) = delete;
-    UartPty &operator=(const UartPty &) = delete;
     ~UartPty() { close(); }
 
     // False with *error set (the step that failed and why).

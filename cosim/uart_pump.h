@@ -19,13 +19,12 @@
 #include <functional>
 #include <string>
 
+#include "no_copy.h"
+
 class UartPty;
 
-class UartPump {
+class UartPump : NoCopy {
 public:
-    UartPump() = default;
-    UartPump(const UartPump &) = delete;
-    UartPump &operator=(const UartPump &) = delete;
     ~UartPump() { close_log(); }
 
     bool open_log(const std::string &path);  // false if the file cannot be created (errno set)

@@ -13,11 +13,10 @@
 
 #include <termios.h>
 
-class UartTerminal {
+#include "no_copy.h"
+
+class UartTerminal : NoCopy {
 public:
-    UartTerminal() = default;
-    UartTerminal(const UartTerminal &) = delete;
-    UartTerminal &operator=(const UartTerminal &) = delete;
     ~UartTerminal() { restore(); }
 
     void enter_raw();

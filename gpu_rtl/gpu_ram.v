@@ -36,36 +36,20 @@ module gpu_ram #(
         rd_data = {WIDTH{1'b0}};
     end
 
-    // Two copies of one template; only the ram_style attribute differs.
-    generate
-        if (DISTRIBUTED != 0) begin : g_lut
-            (* ram_style = "distributed" *) reg [WIDTH-1:0] mem [0:DEPTH-1];
-            initial begin
-                for (i = 0; i < DEPTH; i = i + 1) mem[i] = {WIDTH{1'b0}};
-            end
-            always @(posedge wr_clk) begin
-                for (i = 0; i < LANES; i = i + 1) begin
-                    if (wr_en && wr_mask[i]) mem[wr_addr][i*LANE_W +: LANE_W] <= wr_data[i*LANE_W +: LANE_W];
-                end
-            end
-            always @(posedge rd_clk) begin
-                if (rd_en) rd_data <= mem[rd_addr];
-            end
-        end else begin : g_block
-            (* ram_style = "block" *) reg [WIDTH-1:0] mem [0:DEPTH-1];
-            initial begin
-                for (i = 0; i < DEPTH; i = i + 1) mem[i] = {WIDTH{1'b0}};
-            end
-            always @(posedge wr_clk) begin
-                for (i = 0; i < LANES; i = i + 1) begin
-                    if (wr_en && wr_mask[i]) mem[wr_addr][i*LANE_W +: LANE_W] <= wr_data[i*LANE_W +: LANE_W];
-                end
-            end
-            always @(posedge rd_clk) begin
-                if (rd_en) rd_data <= mem[rd_addr];
-            end
+    // One template for both kinds: DISTRIBUTED chooses only the ram_style attribute (a constant
+    // expression, which yosys and Vivado evaluate per instance).
+    (* ram_style = (DISTRIBUTED != 0) ? "distributed" : "block" *) reg [WIDTH-1:0] mem [0:DEPTH-1];
+    initial begin
+        for (i = 0; i < DEPTH; i = i + 1) mem[i] = {WIDTH{1'b0}};
+    end
+    always @(posedge wr_clk) begin
+        for (i = 0; i < LANES; i = i + 1) begin
+            if (wr_en && wr_mask[i]) mem[wr_addr][i*LANE_W +: LANE_W] <= wr_data[i*LANE_W +: LANE_W];
         end
-    endgenerate
+    end
+    always @(posedge rd_clk) begin
+        if (rd_en) rd_data <= mem[rd_addr];
+    end
 endmodule
 
 `default_nettype wire

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # yosys synth_xilinx (xc7) of a Digilent Artix-7 board top (boards/<board>/<board>_top.v around
-# soc_top, digilent_system and digilent_clocks), firmware-less (RAM_INIT ""), no place and route
+# digilent_top: digilent_clocks and soc_top), firmware-less (RAM_INIT ""), no place and route
 # (Vivado's job: boards/<board>/build.tcl). Prints Markdown table rows: LUT (LUT1..LUT6 and INV), FF
 # (FDRE/FDSE/FDCE/FDPE), block RAM in RAMB36 equivalents (RAMB36E1 + RAMB18E1 / 2), DSP48E1, LUT RAM
 # (cells, and the LUTs they occupy), each against the part's capacity (Xilinx DS180), and a fits

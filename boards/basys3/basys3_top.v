@@ -1,11 +1,11 @@
 // basys3_top: the SoC on the Digilent Basys3 (XC7A35T-1CPG236C) — the board's pins
-// (boards/basys3/basys3.xdc) on digilent_top (the clocks, one MMCM, around digilent_system).
+// (boards/basys3/basys3.xdc) on digilent_top (an MMCM's clocks, the SoC, the VGA register, the LEDs).
 //
 // Contract: from the 100 MHz oscillator, digilent_clocks makes the system clock (SYS_MHZ) and the
 // 25 MHz pixel clock; the SoC is held in reset until the MMCM locks and while the centre button
 // (btnC, active high) is pressed. The FT2232's second channel carries the UART (RsRx in, RsTx out,
 // 115200 8N1). The 12-bit VGA connector shows the GPU's 640x480@60 picture. The 16 LEDs are
-// digilent_system's (0 heartbeat, 1 frames, 2 GPU error, 3 exited, 11:4 SYS LEDS, 15:12 exit code).
+// digilent_top's (0 heartbeat, 1 frames, 2 GPU error, 3 exited, 11:4 SYS LEDS, 15:12 exit code).
 // Block RAM: the XC7A35T has 50 RAMB36. The two framebuffers take 38 of them (19 a bank), the CPU's
 // caches and register file 5 (1 RAMB36 + 8 RAMB18), the GPU's vertex and index RAMs 2: 45 before
 // the SoC's RAM (8 KiB a RAMB36). So RAM_BYTES defaults to 16 KiB here, the largest that fits (49

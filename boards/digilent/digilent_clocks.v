@@ -3,7 +3,7 @@
 // pixel clock, each on a BUFG.
 //
 // Contract: locked (asynchronous) rises once both outputs run at their frequencies; the user holds
-// every domain in reset until then (digilent_system drives soc_top's ext_rst with !locked).
+// every domain in reset until then (digilent_top drives soc_top's ext_rst with !locked).
 // The MMCM (7 Series clocking guide UG472; ranges from the Artix-7 data sheet DS181, -1 speed grade):
 //   VCO = 100 MHz x CLKFBOUT_MULT_F 10.0 / DIVCLK_DIVIDE 1 = 1000 MHz, inside the -1 grade's
 //         600..1200 MHz (the PFD sees 100 MHz, inside 10..450 MHz);

@@ -1,8 +1,7 @@
 // The Digilent Artix-7 builds' own sources after gpu_rtl/files.f, the core and soc_rtl/files.f, in
-// compilation order: the vendor-free system, then the clocks (MMCME2_BASE, BUFG) and the common
-// top around both; each board adds its own top (boards/basys3/basys3_top.v,
-// boards/nexys_a7/nexys_a7_top.v), which names the pins.
+// compilation order: the clocks (MMCME2_BASE, BUFG), then the common top around them and the SoC;
+// each board adds its own top (boards/basys3/basys3_top.v, boards/nexys_a7/nexys_a7_top.v), which
+// names the pins.
 boards/common/board_status.v
-boards/digilent/digilent_system.v
 boards/digilent/digilent_clocks.v
 boards/digilent/digilent_top.v

@@ -1,11 +1,11 @@
 // nexys_a7_top: the SoC on the Digilent Nexys A7-100T (XC7A100T-1CSG324C) — the board's pins
-// (boards/nexys_a7/nexys_a7.xdc) on digilent_top (the clocks, one MMCM, around digilent_system).
+// (boards/nexys_a7/nexys_a7.xdc) on digilent_top (an MMCM's clocks, the SoC, the VGA register, the LEDs).
 //
 // Contract: from the 100 MHz oscillator, digilent_clocks makes the system clock (SYS_MHZ) and the
 // 25 MHz pixel clock; the SoC is held in reset until the MMCM locks and while the red CPU RESET
 // button (CPU_RESETN, active LOW) is pressed. The FT2232's UART channel carries the UART
 // (UART_TXD_IN in, UART_RXD_OUT out: named from the bridge's side; 115200 8N1, no flow control).
-// The 12-bit VGA connector shows the GPU's 640x480@60 picture. The 16 LEDs are digilent_system's
+// The 12-bit VGA connector shows the GPU's 640x480@60 picture. The 16 LEDs are digilent_top's
 // (0 heartbeat, 1 frames, 2 GPU error, 3 exited, 11:4 SYS LEDS, 15:12 exit code).
 // Only the pin names and the reset polarity live here; the rest is digilent_top's.
 `include "contract/gpu_build_params.vh"

@@ -92,16 +92,7 @@ void render_level_cache_fill(const struct render_object *obj, const mat3 *scene_
 
 void render_stats_clear(struct render_stats *s)
 {
-    s->faces_in = 0;
-    s->objects_in = 0;
-    s->objects_culled = 0;
-    s->faces_culled_object = 0;
-    s->faces_frustum = 0;
-    s->faces_back = 0;
-    s->faces_clipped = 0;
-    s->faces_clipped_away = 0;
-    s->faces_emitted = 0;
-    s->dropped = 0;
+    *s = (struct render_stats){0};  /* every counter, a new one included */
 }
 
 void render_frame_init(struct render_frame *f, struct proj_vertex *vert, uint32_t vert_cap,

@@ -78,10 +78,7 @@ static void cubes_update(struct scene *s, const struct input_counts *keys, struc
 }
 
 const struct scene_desc scene_cubes_desc = {
-    .name = "cubes",
-    .keys = 0,
-    .state_bytes = sizeof(struct cubes_state),
-    SCENE_DESC_NEEDS(cubes),
+    SCENE_DESC_NEEDS(cubes, struct cubes_state),
     .init = cubes_init,
     .update = cubes_update,
 };

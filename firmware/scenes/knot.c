@@ -132,21 +132,13 @@ static void knot_init(struct scene *s)
 
 static void knot_update(struct scene *s, const struct input_counts *keys, struct scene_event *ev)
 {
-    struct render_object *o = &s->object[0];
-
     (void)keys;
     (void)ev;
-    if (s->animate) {
-        o->rot = mat3_mul(&SCENE_STATE(s, struct knot_state)->spin, &o->rot);
-        mat3_renormalize(&o->rot);
-    }
+    scene_spin_first(s, &SCENE_STATE(s, struct knot_state)->spin);
 }
 
 const struct scene_desc scene_knot_desc = {
-    .name = "knot",
-    .keys = 0,
-    .state_bytes = sizeof(struct knot_state),
-    SCENE_DESC_NEEDS(knot),
+    SCENE_DESC_NEEDS(knot, struct knot_state),
     .init = knot_init,
     .update = knot_update,
 };

@@ -198,10 +198,7 @@ static void land_update(struct scene *s, const struct input_counts *keys, struct
 }
 
 const struct scene_desc scene_landscape_desc = {
-    .name = "landscape",
-    .keys = 0,
-    .state_bytes = sizeof(struct landscape_state),
-    SCENE_DESC_NEEDS(landscape),
+    SCENE_DESC_NEEDS(landscape, struct landscape_state),
     .init = land_init,
     .update = land_update,
 };

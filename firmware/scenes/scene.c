@@ -161,6 +161,16 @@ void scene_update(struct scene *s, const struct input_counts *keys, struct scene
     s->frame++;
 }
 
+void scene_spin_first(struct scene *s, const mat3 *spin)
+{
+    if (s->animate && s->object_count != 0u) {
+        struct render_object *o = &s->object[0];
+
+        o->rot = mat3_mul(spin, &o->rot);
+        mat3_renormalize(&o->rot);
+    }
+}
+
 void scene_draw(const struct scene *s, struct render_frame *f, const struct render_pass *pass)
 {
     for (uint32_t i = 0; i < s->object_count; i++) {

@@ -82,12 +82,14 @@ extern const uint32_t scene_built_count;
 #define SCENE_STATE_FITS(name, type) \
     _Static_assert(sizeof(type) <= (size_t)SCENE_STATE_BYTES_##name, \
                    #type " does not fit its state column of scenes/scene_list.h: raise it")
-/* A descriptor's capacities from the scene's scene_list.h line (its .state_bytes is the sizeof). */
-#define SCENE_DESC_NEEDS(name) \
-    .max_objects = SCENE_MAX_OBJECTS_##name, .max_verts = SCENE_MAX_VERTS_##name, \
-    .max_prims = SCENE_MAX_PRIMS_##name, .filled_verts = SCENE_FILLED_VERTS_##name, \
-    .filled_prims = SCENE_FILLED_PRIMS_##name, .wire_verts = SCENE_WIRE_VERTS_##name, \
-    .wire_prims = SCENE_WIRE_PRIMS_##name
+/* A descriptor's name and capacities from the scene's scene_list.h line, and its .state_bytes, the
+ * sizeof its state struct: SCENE_DESC_NEEDS(tetra, struct tetra_state). */
+#define SCENE_DESC_NEEDS(scene, state_type) \
+    .name = #scene, .state_bytes = sizeof(state_type), \
+    .max_objects = SCENE_MAX_OBJECTS_##scene, .max_verts = SCENE_MAX_VERTS_##scene, \
+    .max_prims = SCENE_MAX_PRIMS_##scene, .filled_verts = SCENE_FILLED_VERTS_##scene, \
+    .filled_prims = SCENE_FILLED_PRIMS_##scene, .wire_verts = SCENE_WIRE_VERTS_##scene, \
+    .wire_prims = SCENE_WIRE_PRIMS_##scene
 
 /* ---- the running scene -------------------------------------------------------------------- */
 
@@ -189,5 +191,8 @@ void scene_set_camera(struct scene *s, enum cam_mode mode, vec3 target, real_t d
 struct cam_config scene_default_cam_config(void);
 void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
                       uint8_t material);
+/* The update of a scene that turns its one object: while the scene animates, the first object's
+ * rotation becomes spin times it (renormalised); nothing without an object. */
+void scene_spin_first(struct scene *s, const mat3 *spin);
 
 #endif /* SCENE_H */

@@ -5,7 +5,8 @@
  * The order is the order of the keys 1..9 and of the key map (in a program built with every
  * scene; a program built with some of them, scene_set.h, numbers those in this order). Scene
  * `name` is the file scenes/<name>.c (or the folder scenes/<name>/), which defines `const struct
- * scene_desc scene_<name>_desc` with .name = "<name>". firmware/firmware.mk reads the names from
+ * scene_desc scene_<name>_desc` with SCENE_DESC_NEEDS(<name>, ...): .name = "<name>" and this
+ * line's columns. firmware/firmware.mk reads the names from
  * these lines (FW_SCENES: what `make SCENE=` accepts, the builds of every scene); scene.h includes
  * this file to declare the table, scene_set.h to size a program's memory. At most 9 scenes.
  *

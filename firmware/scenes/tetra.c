@@ -44,21 +44,13 @@ static void tetra_init(struct scene *s)
 
 static void tetra_update(struct scene *s, const struct input_counts *keys, struct scene_event *ev)
 {
-    struct render_object *o = &s->object[0];
-
     (void)keys;
     (void)ev;
-    if (s->animate) {
-        o->rot = mat3_mul(&SCENE_STATE(s, struct tetra_state)->spin, &o->rot);
-        mat3_renormalize(&o->rot);
-    }
+    scene_spin_first(s, &SCENE_STATE(s, struct tetra_state)->spin);
 }
 
 const struct scene_desc scene_tetra_desc = {
-    .name = "tetra",
-    .keys = 0,
-    .state_bytes = sizeof(struct tetra_state),
-    SCENE_DESC_NEEDS(tetra),
+    SCENE_DESC_NEEDS(tetra, struct tetra_state),
     .init = tetra_init,
     .update = tetra_update,
 };

@@ -95,19 +95,11 @@ static void model_update(struct scene *s, const struct input_counts *keys, struc
 {
     (void)keys;
     (void)ev;
-    if (s->animate && s->object_count != 0u) {
-        struct render_object *o = &s->object[0];
-
-        o->rot = mat3_mul(&SCENE_STATE(s, struct model_state)->spin, &o->rot);
-        mat3_renormalize(&o->rot);
-    }
+    scene_spin_first(s, &SCENE_STATE(s, struct model_state)->spin);
 }
 
 const struct scene_desc scene_model_desc = {
-    .name = "model",
-    .keys = 0,
-    .state_bytes = sizeof(struct model_state),
-    SCENE_DESC_NEEDS(model),
+    SCENE_DESC_NEEDS(model, struct model_state),
     .init = model_init,
     .update = model_update,
 };

@@ -162,10 +162,8 @@ static void voxel_scene_update(struct scene *s, const struct input_counts *keys,
 }
 
 const struct scene_desc scene_voxel_desc = {
-    .name = "voxel",
+    SCENE_DESC_NEEDS(voxel, struct voxel_scene_state),
     .keys = "P place block, B break block, N next block type (crosshair at the screen centre)",
-    .state_bytes = sizeof(struct voxel_scene_state),
-    SCENE_DESC_NEEDS(voxel),
     .init = voxel_scene_init,
     .update = voxel_scene_update,
 };
