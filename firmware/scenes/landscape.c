@@ -77,11 +77,21 @@ static vec3 land_point(int32_t gi, int32_t gj)
 }
 
 #if FW_WITH_GOURAUD
+/* The normal of face h (0 or 1) of terrain cell (ci, cj): the one mesh_add_face computed for it in
+ * its tile (land_build_tile adds a tile's cells row by row, two faces each). */
+static uvec3 land_face_normal(const struct landscape_state *l, int32_t ci, int32_t cj, uint32_t h)
+{
+    const int32_t n = LANDSCAPE_TILE_CELLS;
+    const struct landscape_tile *t = &l->tile[(cj / n) * LANDSCAPE_TILES + ci / n];
+
+    return t->normals[t->faces[2 * ((cj % n) * n + ci % n) + (int32_t)h].normal];
+}
+
 /* The normal of grid point (gi, gj): the direction of the sum of the unit normals of every face
  * of the whole terrain that has it as a corner (the cells (gi-1 .. gi, gj-1 .. gj) that exist,
- * each split along the diagonal land_build_tile chooses; 1 .. 8 faces). The face normals are the
- * ones mesh_add_face computes from the same corners and winding, so the mean is the faces' own. */
-static uvec3 land_vertex_normal(int32_t gi, int32_t gj)
+ * each split along the diagonal land_build_tile chooses; 1 .. 8 faces), read from the tiles once
+ * every tile is built: each face's normal is computed once, not once per corner. */
+static uvec3 land_vertex_normal(const struct landscape_state *l, int32_t gi, int32_t gj)
 {
     uvec3 n[8];
     uint32_t count = 0;
@@ -106,14 +116,26 @@ static uvec3 land_vertex_normal(int32_t gi, int32_t gj)
                     has = has || (ci_[fc[k]] == gi && cj_[fc[k]] == gj);
                 }
                 if (has) {
-                    n[count++] = vec3_triangle_normal(land_point(ci_[fc[0]], cj_[fc[0]]),
-                                                      land_point(ci_[fc[1]], cj_[fc[1]]),
-                                                      land_point(ci_[fc[2]], cj_[fc[2]]));
+                    n[count++] = land_face_normal(l, ci, cj, h);
                 }
             }
         }
     }
     return uvec3_mean_direction(n, count);
+}
+
+/* Tile (ti, tj)'s vertex normals, from the faces of every tile (all built). */
+static void land_tile_vertex_normals(const struct landscape_state *l, struct landscape_tile *t,
+                                     int32_t ti, int32_t tj)
+{
+    const int32_t n = LANDSCAPE_TILE_CELLS;
+
+    for (int32_t j = 0; j <= n; j++) {
+        for (int32_t i = 0; i <= n; i++) {
+            mesh_normal_to_q14(land_vertex_normal(l, ti * n + i, tj * n + j),
+                               &t->vnormal[3 * (j * (n + 1) + i)]);
+        }
+    }
 }
 #endif
 
@@ -130,9 +152,6 @@ static void land_build_tile(struct landscape_tile *t, int32_t ti, int32_t tj)
             const int32_t gj = tj * n + j;
 
             mesh_add_vertex(m, land_point(gi, gj));
-#if FW_WITH_GOURAUD
-            mesh_normal_to_q14(land_vertex_normal(gi, gj), &t->vnormal[3 * (j * (n + 1) + i)]);
-#endif
         }
     }
     for (int32_t j = 0; j < n; j++) {
@@ -177,10 +196,17 @@ static void land_init(struct scene *s)
             render_level_cache_init(&t->levels, t->level, LANDSCAPE_TILE_FACES);
             s->object[s->object_count - 1u].levels = &t->levels;
 #if FW_WITH_GOURAUD
-            s->object[s->object_count - 1u].vnormal14 = t->vnormal;
+            s->object[s->object_count - 1u].vnormal14 = t->vnormal;  /* filled below */
 #endif
         }
     }
+#if FW_WITH_GOURAUD
+    for (int32_t tj = 0; tj < LANDSCAPE_TILES; tj++) {
+        for (int32_t ti = 0; ti < LANDSCAPE_TILES; ti++) {
+            land_tile_vertex_normals(l, &l->tile[tj * LANDSCAPE_TILES + ti], ti, tj);
+        }
+    }
+#endif
     cfg.box_min = vec3_make(REAL_C(-96), REAL_C(-8), REAL_C(-96));
     cfg.box_max = vec3_make(REAL_C(96), REAL_C(60), REAL_C(96));
     cfg.move_step = REAL_C(0.5);
