@@ -22,7 +22,8 @@ include mk/manifest.mk
 SPAN_W      ?= 8
 ZBUF        ?= 0
 # The builds as data (mk/builds.toml, tests/suites.toml): mk/gen_builds.py writes $(BUILD)/gen/,
-# the lists read here and the rules read below and by firmware/firmware.mk (mk/gen.mk).
+# the lists read here and the rules read below, by cosim/soc/socsim.mk and by firmware/firmware.mk
+# (mk/gen.mk).
 include mk/gen.mk
 # GOURAUD=1: run on a GPU built with Gouraud triangles (ENABLE_GOURAUD, with the depth buffer):
 # sim-g-w<SPAN_W> and sim-fast-g-w<SPAN_W>; the scenes with vertex normals are then shaded.
@@ -107,13 +108,14 @@ run-built: $(FW_ELF) $(GPUSIM)
 endif
 
 # ---- test: every suite (or those matching SUITE, e.g. SUITE='rtl-* fw-unit'), with a summary line ----
-# `make test` builds what the selected suites need (their `needs` in tests/suites.toml, by the ids of
-# mk/builds.toml) BUILD_JOBS recipes at a time (default: the cores), then tests/run_all.sh runs the suites TEST_JOBS
-# at a time (default: the cores). `make test-quick` builds as the command line says (-j) and runs
+# `make test` builds what the selected suites need (their `needs` in tests/suites.toml, by the ids
+# of mk/builds.toml) BUILD_JOBS recipes at a time (default: the cores), then tests/run_all.sh runs
+# the suites TEST_JOBS at a time (default: the cores). `make test-quick` builds as the command line says (-j) and runs
 # the suites; TEST_BUILD_ONLY=1 only builds.
 SUITE ?= *
 BUILD_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
-TEST_ENV = GPUSIM=$(GPUSIM) GPUSIM_FAST=$(GPUSIM_FAST) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUITE='$(SUITE)' \
+TEST_ENV = GPUSIM=$(GPUSIM) GPUSIM_FAST=$(GPUSIM_FAST) GPUSIM_TRACE=$(GPUSIM_TRACE) SOCSIM=$(SOCSIM) \
+           SOCSIM_ULX3S=$(SOCSIM_ULX3S) FW_ELF=$(FW_ELF) BUILD=$(BUILD) PYTHON=$(PYTHON) SUITE='$(SUITE)' \
            $(if $(TEST_JOBS),TEST_JOBS=$(TEST_JOBS))
 test: setup
 	@$(MAKE) --no-print-directory -j$(BUILD_JOBS) VERILATOR_JOBS=1 TEST_BUILD_ONLY=1 test-quick
@@ -184,9 +186,9 @@ bench-error-run: $(FW_ERR_ELFS) $(GPUSIM_W8) $(ZBUF_SIMS) $(ZBITS_SIMS) $(PNG_DI
 # Both halves' CPU cycles on the SoC (bench/bench_error.py --socsim): the path ELFs of the first
 # FW_PATH_SOC_VIEWS views built for bsp/soc (firmware.mk FW_PATH_SOC_ELFS, $(BUILD)/fw-path-soc/),
 # on socsim with and without the depth buffer, and R's on a SPAN_W 1 GPU (the span-width check):
-# mk/builds.toml's socsim-256k, -z and -z-w1 (why 256 KiB: there). Measured once per configuration
-# (the results are cached in $(BUILD)/bench-error/soc/).
-BENCH_SOCSIM      := socsim-256k
+# mk/builds.toml's socsim-bench, -z and -z-w1 (why the whole RAM window: there). Measured once per
+# configuration (the results are cached in $(BUILD)/bench-error/soc/).
+BENCH_SOCSIM      := socsim-bench
 BENCH_SOC_RAM_KIB := $(SOCSIM_RAM_KIB_$(BENCH_SOCSIM))
 BENCH_SOC_ARGS    = --socsim sim-w8=$(BUILD)/$(BENCH_SOCSIM)/socsim --socsim sim-z-w8=$(BUILD)/$(BENCH_SOCSIM)-z/socsim \
                     --socsim sim-z-w1=$(BUILD)/$(BENCH_SOCSIM)-z-w1/socsim --soc-views $(FW_PATH_SOC_VIEWS)
@@ -278,7 +280,7 @@ $(COSIM_CXX_LIB): $(COSIM_CXX_OBJ)
 # One simulator per configuration: $(BUILD)/sim-w<SPAN_W>/gpusim, sim-z-w<SPAN_W> with the depth
 # buffer built in, and sim-fast-w<SPAN_W> on the fast display path (gpu_core with the harness as its
 # display: cosim/gpu_sim.h). $(call verilate,OUTPUT,VERILATOR PARAMETER FLAGS[,TOP MODULE,CFLAGS]):
-# the flags may be any of Verilator's besides -G (cosim/waves.mk's trace builds add --trace-fst).
+# the flags may be any of Verilator's besides -G (the table's trace builds add --trace-fst).
 # VERILATOR_JOBS: compilers each build runs at once (its own make, outside this make's -j); `make
 # test` sets 1, since it builds the simulators side by side already. The old program is removed
 # first: Verilator's make relinks only for its own objects, not for a changed library.
@@ -306,7 +308,7 @@ endif
 endif
 endif
 
-# `make waves` and its trace builds (sim-trace-w<SPAN_W>: $(2) with --trace-fst), apart from these.
+# `make waves` (its simulators are the table's trace = true rows).
 include cosim/waves.mk
 
 clean:

@@ -98,6 +98,8 @@ def gpusims(table):
             add(ident, values, spec.get("display", "pins"), where, spec.get("trace", False))
     spec = table.get("manifest_gpusims")
     if spec:
+        if set(spec) != {"SPAN_W", "gouraud"}:
+            raise TableError(f"{BUILDS}: manifest_gpusims: keys SPAN_W and gouraud, and no other")
         tags = set()
         for scene in scenes():
             data = manifest.load(manifest.manifest_path(scene), scene)
@@ -126,15 +128,16 @@ def socsims(table):
     out = {}
     for family, spec in table.get("socsim", {}).items():
         where = f"{BUILDS}: socsim.{family}"
-        unknown = set(spec) - {"system", "ram_kib", "params", "trace"}
+        unknown = set(spec) - {"system", "ram", "params", "trace"}
         if unknown:
             raise TableError(f"{where}: unknown key {sorted(unknown)[0]}")
         system = spec.get("system", "soc")
         if system not in ("soc", "ulx3s"):
             raise TableError(f"{where}: system = {system!r}: soc or ulx3s")
-        ram_kib = spec.get("ram_kib", ram["default_bytes"] // 1024)
-        if not 1 <= ram_kib <= ram["window_bytes"] // 1024:
-            raise TableError(f"{where}: ram_kib = {ram_kib}: the RAM window holds 1 to {ram['window_bytes'] // 1024} KiB")
+        size = spec.get("ram", "default")
+        if size not in ("default", "window"):
+            raise TableError(f"{where}: ram = {size!r}: default or window (sizes are the contract's)")
+        ram_kib = ram[f"{size}_bytes"] // 1024
         params = dict({"SPAN_W": defaults["SPAN_W"]}, **spec.get("params", {}))
         for name in params:
             if name not in defaults:
@@ -174,6 +177,9 @@ def fw_variants(table):
         if spec.get("backend") not in ("fixed", "float"):
             raise TableError(f"{where}: backend = {spec.get('backend')!r}: fixed or float")
         lists = {k: v for k, v in spec.items() if k not in ("backend", "defs")}
+        for k in lists:
+            if "{" + k + "}" not in spec.get("defs", ""):
+                raise TableError(f"{where}: unknown key {k} (a list-valued key is a {{{k}}} of defs)")
         for ident, values in expand(family, lists):
             out[ident] = (spec["backend"], spec.get("defs", "").format_map({k: str(v) for k, v in values.items()}))
     return out
@@ -189,6 +195,9 @@ def fw_programs(table, variants):
     out = {}
     seen = {}  # (kind, path) -> its settings: one path, one program, whichever families list it
     for family, spec in table.get("fw", {}).items():
+        unknown = set(spec) - {"build", "platform"}
+        if unknown:
+            raise TableError(f"{BUILDS}: fw.{family}: unknown key {sorted(unknown)[0]}")
         rows = []
         for n, row in enumerate(spec.get("build", [])):
             where = f"{BUILDS}: fw.{family}.build[{n}]"
@@ -260,7 +269,7 @@ def firmware_mk(variants, families):
         lines.append(f"FW_VARIANT_DEFS_{v} := {defs}")
     lines.append("$(foreach v,$(FW_VARIANTS),$(eval $(call FW_BACKEND_RULES,$(v))))")
     lists = {}
-    done = set()  # a program two families list has its rules once
+    done = set()  # a program two families of one platform list has its rules once
     for family, (platform, progs) in families.items():
         lines += ["", f"# fw.{family}"]
         if platform:
@@ -272,8 +281,8 @@ def firmware_mk(variants, families):
             for kind in ("elf", "host"):
                 if kind not in p:
                     continue
-                if (kind, p[kind]) not in done:
-                    done.add((kind, p[kind]))
+                if (platform, kind, p[kind]) not in done:
+                    done.add((platform, kind, p[kind]))
                     if kind == "elf":
                         args = [p["elf"], p["scene"], p["variant"], p["frames"], p["polls"], p["defs"], p["set"]]
                         lines.append(f"$(eval $(call FW_ELF_RULES,{','.join(args)}))")
@@ -299,7 +308,11 @@ def firmware_mk(variants, families):
 def suites(table, sims, socs, families):
     data = load(SUITES)
     out = []
-    ids = set(sims) | set(socs) | set(families) | set(table.get("target", {}))
+    kinds = (sims, socs, families, table.get("target", {}))
+    ids = set().union(*kinds)
+    for ident in ids:
+        if sum(ident in k for k in kinds) > 1:
+            raise TableError(f"{BUILDS}: {ident} names two builds (a simulator, a firmware family or a target)")
     for name, spec in data.get("suite", {}).items():
         where = f"{SUITES}: suite.{name}"
         unknown = set(spec) - {"cost", "needs", "run", "alone"}
