@@ -14,8 +14,8 @@
 //     harness_usage(own) prints the simulator's usage text, then the shared options' help lines,
 //     and returns 2 (the usage error's exit status).
 //   - Signals: Harness::catch_signals() makes SIGINT, SIGTERM and SIGHUP ask the run to stop (the
-//     loop polls caught_signal(), or stop_requested() adds Ctrl-C on a raw terminal) and ignores
-//     SIGPIPE; fail_signal() is the failure the loop then returns.
+//     loop polls stop_requested(), which adds Ctrl-C on a raw terminal) and ignores SIGPIPE;
+//     fail_signal() is the failure the loop then returns.
 //   - Harness: one run's shared parts — the UART's line output and log (uart_pump), the pty, the
 //     terminal, the window — and its ends. open_outputs() creates the frames' folder and the log,
 //     opens the pty ("<prog>: UART on LINK (PATH)") and the window, each failure a fail("setup").
@@ -92,13 +92,11 @@ public:
     virtual ~Harness() = default;
 
     static void catch_signals();
-    static int caught_signal() { return signal_; }
     const HarnessOptions &options() const { return hopt_; }
 
     bool take_frame(const uint8_t *rgb, ModelCheck &model, uint64_t cycles, const std::string &detail,
                     std::string *error, const char **kind);
     uint32_t frames() const { return frames_; }
-    uint32_t frames_model_checked() const { return frames_checked_; }
     struct FrameClock {
         double first_s = 0, last_s = 0;
         uint64_t first_cycles = 0, last_cycles = 0;

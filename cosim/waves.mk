@@ -11,7 +11,7 @@
 #                     (PLATFORM=soc) or on co-simulation's fast display path (FAST=1: no scan-out)
 #                     -> $(OUT)/waves/<scene>[-soc|-fast]-frame<N>.fst and a .gtkw beside it
 #
-# Tracing costs speed, so these builds are apart from the others; `make test` builds the pin path's
+# Tracing costs speed, so these builds have folders of their own; `make test` builds the pin path's
 # for its suite cosim-waves (tests/cosim/waves.sh).
 
 GPUSIM_TRACE      := $(BUILD)/sim-trace-w$(SPAN_W)/gpusim

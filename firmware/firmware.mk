@@ -44,26 +44,21 @@
 #                     through the golden model (bsp/host)
 #   $(FW_UNIT)      = $(BUILD)/tests/fw_unit, host unit tests of the pure code (fixed backend)
 #   $(FW_UNIT_FLOAT)= $(BUILD)/tests/fw_unit_float, the same tests on the float backend
-#   fw-test-deps    everything tests/scenes/*.sh needs (scene ELFs and host builds with
-#                   FW_TEST_FRAMES frames under $(FW_TEST_DIR) = $(BUILD)/fw-test[-<p>], the
-#                   watchdog test ELF, the
-#                   explicit FW_SUBPIXEL_BITS=4 build of tetra)
-#   $(FW_ERR_ELFS)  `make bench-error`'s firmware under $(BUILD)/fw-error: FW_ERR_FRAMES frames of
-#                   every scene, fixed and float, and with the depth test on from the start
-#                   (FW_DEPTH_TEST=1) fixed, float and float with 2 and 0 sub-pixel bits
-#   $(FW_PATH_HOSTS) $(FW_PATH_ELFS)  `make bench-error`'s camera paths under $(BUILD)/fw-path:
-#                   the same variants (and fixed-nr0/-nr2, FW_RECIP_NEWTON_STEPS) with the seeded
-#                   path of app/cam_path.h, FW_PATH_VIEWS frames, as host programs host-<name>
-#                   and ELFs <name>.elf
+#   the programs of mk/builds.toml's [fw.*] families (make test's FW_TEST_FRAMES builds under
+#                   $(BUILD)/fw-test[-<p>], bench-fw's, bench-error's fixed, float, depth-tested,
+#                   sub-pixel, Newton-step and sine-table builds and camera paths, fw-size's):
+#                   their rules are generated from that table (docs/build.md)
 #   fw-size         the memory table of every scene's one-scene build (and the all-scene one):
 #                   text, data, bss, stack against the chip targets (firmware/tools/fw_size.sh)
 # Convenience targets: fw, fw-all (every scene, both backends), fw-host, fw-unit, fw-smoke,
 # bench-fw (the instruction-count table of every scene and backend, measured in co-simulation),
 # profile-fw (one scene's instructions per function and frame).
 #
-# Objects are shared per backend; only app.c, which carries the scene name, the frame count, the
-# watchdog bound and the scene set (FW_BUILT_SCENES: which descriptors the table references, and
-# the memory sized for them), is compiled per ELF; an ELF links the objects of its scenes only.
+# Objects are shared by every program of the same variant and flags (mk/builds.toml's
+# [fw_variant]; $(BUILD)/fw-obj[-<p>|-host]/<variant>-<checksum of the flags>/); only app.c, which
+# carries the scene name, the frame count, the watchdog bound and the scene set (FW_BUILT_SCENES:
+# which descriptors the table references, and the memory sized for them), is compiled per ELF; an
+# ELF links the objects of its scenes only.
 # A change of flags rebuilds by itself (cflags.txt).
 
 BUILD       ?= build
@@ -222,14 +217,14 @@ define fw_flags_file
 	@echo '$(2)' | cmp -s - $(1) || echo '$(2)' > $(1)
 endef
 
-# ---- per backend: shared objects, target and host ----------------------------------------------
+# ---- per variant: shared objects, target and host ---------------------------------------------
 # An object folder is named by the variant and a checksum of its compiler and flags, so every build
 # with the same flags shares its objects, whichever make or folder of programs asks for them (make
 # test's, `make run`'s, a scene's manifest build with the same features); cflags.txt in it says
 # what they are. An object is written under a temporary name and renamed: two makes side by side
 # (suites that run make) never leave one half-written.
 fw_flags_sum = $(shell printf '%s' '$(subst ','\'',$(1))' | cksum | cut -d' ' -f1)
-# $(1) = backend
+# $(1) = the variant (mk/builds.toml [fw_variant]: its backend and -D settings)
 define FW_BACKEND_RULES
 FW_CFLAGS_$(1)    := $(FW_CFLAGS_BASE) $(FW_BACKEND_DEFS_$(1)) $(FW_VARIANT_DEFS_$(1))
 FW_OBJ_DIR_$(1)   := $(BUILD)/fw-obj$(FW_PSUFFIX)/$(1)-$$(call fw_flags_sum,$(FW_CC) $$(FW_CFLAGS_$(1)))
@@ -343,7 +338,6 @@ FW_SIZE_DIR    := $(BUILD)/fw-size$(FW_PSUFFIX)
 ifneq ($(GEN_READ),)
 include $(GEN_DIR)/firmware.mk
 endif
-FW_TEST_DEPS := $(FW_TEST) $(FW_UNIT) $(FW_UNIT_FLOAT) $(FW_SIZE_ELFS) $(BUILD)/tools/exact_ref
 
 # Memory per scene (`make fw-size`, tests/firmware/fit.sh: mk/builds.toml's fw.fw-size builds).
 # The targets of issue #9: the default scene's image in 64 KiB, every other scene's in 192 KiB.
@@ -396,7 +390,7 @@ FW_FAKE_GPU_REGS := \
   -device loader,addr=0x87000010,data=512,data-len=4 \
   -device loader,addr=0x87000014,data=0x00f00140,data-len=4
 
-.PHONY: fw fw-all fw-host fw-unit fw-smoke fw-test-deps bench-fw profile-fw fw-force fw-size \
+.PHONY: fw fw-all fw-host fw-unit fw-smoke bench-fw profile-fw fw-force fw-size \
         fw-size-deps
 fw: $(FW_ELF)
 
@@ -408,7 +402,6 @@ fw-unit: $(FW_UNIT) $(FW_UNIT_FLOAT)
 	$(Q)$(call say,RUN,$(FW_UNIT))$(FW_UNIT)
 	$(Q)$(call say,RUN,$(FW_UNIT_FLOAT))$(FW_UNIT_FLOAT)
 
-fw-test-deps: $(FW_TEST_DEPS)
 
 # The memory table (Markdown) of every scene; fails if a one-scene build misses its target.
 fw-size: $(FW_SIZE_ELFS)

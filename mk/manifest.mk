@@ -116,7 +116,7 @@ lean-report:
 
 # make test's manifest build (tests/manifest/manifest.sh): cubes as its manifest says, the test
 # builds' FW_TEST_FRAMES frames, under $(BUILD)/lean-test (apart from `make run SCENE=cubes`'s).
-# The cubes manifest's GPU is the default one, so it runs on make test's GPUSIM.
+# It runs on make test's GPUSIM_FAST: that GPU holds everything the manifest's (no write mask) has.
 # (Inside that make, a manifest build, firmware.mk's own rule makes the ELF.)
 MANIFEST_TEST_ELF := $(BUILD)/lean-test/cubes/firmware/cubes.elf
 ifeq ($(LEAN_SCENE),)

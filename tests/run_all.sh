@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The test suites, one line each, and the runner. `make test` calls it with GPUSIM, GPUSIM_FAST (the
+# The runner of tests/suites.toml's suites. `make test` calls it with GPUSIM, GPUSIM_FAST (the
 # fast display path's simulator), FW_ELF, BUILD, PYTHON set (and SUITE when given); it prints one
 # line per suite as each one ends (the log's tail on failure) and ends with "N passed, N failed".
 #

@@ -36,8 +36,7 @@ SOC_FW_MAKE   = $(MAKE) --no-print-directory FW_PLATFORM=soc BUILD=$(BUILD) SOC_
 
 SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_FILES) contract/gpu_regs.vh \
                contract/soc_map.vh contract/soc_map.h $(SOCSIM_SRC) $(SOCSIM_SV) $(wildcard cosim/soc/*.h) \
-               cosim/harness.h cosim/model_check.h cosim/keys_at.h cosim/uart_pump.h cosim/uart_pty.h \
-               cosim/uart_terminal.h cosim/sdl_window.h $(COSIM_C_LIB) $(GPU_MODEL_LIB)
+               $(wildcard cosim/*.h) $(COSIM_C_LIB) $(GPU_MODEL_LIB)
 
 # The Verilator command of a socsim build, recorded in <dir>/cmd.txt (rewritten only when it changes)
 # so that a change of parameters or flags rebuilds, and an edit elsewhere in this file does not.
@@ -52,7 +51,12 @@ socsim_cmd = $(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign
   --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1" --Mdir $(1)/obj -o $(abspath $(1))/socsim
 # The systems a socsim build Verilates: soc_top (the pixel clock tied to the system clock), and the
 # ULX3S's (boards/ulx3s/ulx3s_system on its three clocks, the monitor on the TMDS pairs).
+# Each system's top and parameters, further sources, -CFLAGS definitions and prerequisites (the
+# names mk/gen_builds.py's rules use for a table build of that system).
 SOCSIM_SYSTEM_soc         = soc_top $(SOC_SIM_TIED)
+SOCSIM_SOURCES_soc       :=
+SOCSIM_CFLAGS_soc        :=
+SOCSIM_PREREQS_soc       :=
 SOCSIM_SYSTEM_ulx3s       = ulx3s_system
 ULX3S_SIM_FILES          := boards/ulx3s/files.f
 SOCSIM_SOURCES_ulx3s      = -f $(ULX3S_SIM_FILES) $(abspath cosim/soc/tmds_decoder.cpp)
@@ -107,7 +111,8 @@ run-soc: $(SOCSIM) soc-fw
 	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
 endif
 
-# The soc test programs (tests/soc/tests.mk), for the suites that need soc-test (tests/suites.toml).
+# The soc test programs (tests/soc/tests.mk), for the suites that need soc-programs
+# (tests/suites.toml).
 soc-test-deps:
 	+@$(SOC_FW_MAKE) soc-test-elfs
 

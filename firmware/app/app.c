@@ -160,22 +160,15 @@ static inline uint64_t frame_stats_batch_filled(struct frame_stats *st, uint64_t
 /* The batch went out (submitting since mark t1); the wait for DONE_SEQ starts, not counted. */
 static inline struct frame_span frame_stats_wait_begin(struct frame_stats *st, uint64_t t1)
 {
-    struct frame_span s;
-
-    s.cycles = bsp_cycles();
-    s.instr = bsp_instret();
-    st->t_submit += s.instr - t1;
-    return s;
+    st->t_submit += bsp_instret() - t1;
+    return frame_span_begin();
 }
 
 /* The wait is over; returns the mark where reading the GPU's counters starts. */
 static inline uint64_t frame_stats_wait_end(struct frame_stats *st, struct frame_span s)
 {
-    const uint64_t t0 = bsp_instret();
-
-    st->wait_cycles += bsp_cycles() - s.cycles;
-    st->wait_instr += t0 - s.instr;
-    return t0;
+    frame_stats_exclude(st, s);
+    return bsp_instret();
 }
 
 /* The GPU's counters are read (since mark t0): the driver's part of the batch is done. */
@@ -761,17 +754,14 @@ static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last
 {
     struct batch_cursor cur;
     bool first = true;
-    struct gpu_batch batch;
+    const uint8_t clear_color = !app->anaglyph ? PAL_SKY
+                                : (app_eye_planes(app) ? PAL_ANAGLYPH_BACKGROUND : PAL_NIGHT);
 
-    batch.vtx_words = app->words.vtx;
-    batch.vtx_base = 0;
-    batch.prim_words = app->words.prim;
-    batch.tri_base = 0;
-    batch.clear_color = !app->anaglyph ? PAL_SKY
-                        : (app_eye_planes(app) ? PAL_ANAGLYPH_BACKGROUND : PAL_NIGHT);
     batch_begin(&cur);
     do {
+        struct gpu_batch batch;
         struct gpu_stats stats;
+        uint32_t ctrl;
         uint32_t tag;
         struct frame_span wait;
         uint64_t t0;
@@ -783,15 +773,14 @@ static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last
         batch_fill(&cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap, &app->words);
         t1 = frame_stats_batch_filled(tot, t0);
         last = last_pass && batch_done(&cur, &app->frame);
-        batch.vtx_count = app->words.vtx_count;
-        batch.prim_count = app->words.prim_count;
-        batch.ctrl = ((first && clear) ? GPU_CTRL_CLEAR_MASK : 0u) | (last ? GPU_CTRL_SWAP_MASK : 0u);
+        ctrl = ((first && clear) ? GPU_CTRL_CLEAR_MASK : 0u) | (last ? GPU_CTRL_SWAP_MASK : 0u);
         if (app->depth_test) {
-            batch.ctrl |= GPU_CTRL_ZTEST_MASK | (first ? GPU_CTRL_ZCLEAR_MASK : 0u);
+            ctrl |= GPU_CTRL_ZTEST_MASK | (first ? GPU_CTRL_ZCLEAR_MASK : 0u);
         }
         if (FW_WITH_GOURAUD && FW_GOURAUD && FW_DITHER && gpu_caps_gouraud(app->gpu.info.caps)) {
-            batch.ctrl |= GPU_CTRL_DITHER_MASK;  /* acts on Gouraud triangles only */
+            ctrl |= GPU_CTRL_DITHER_MASK;  /* acts on Gouraud triangles only */
         }
+        batch = batch_descriptor(&app->words, ctrl, clear_color);
         rc = gpu_submit_batch(&app->gpu, &batch, &tag);
         if (rc != GPU_OK) {
             printf("error: frame %u: batch not submitted: %s\n", frame_no, gpu_strerror(rc));

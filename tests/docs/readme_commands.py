@@ -19,7 +19,7 @@ The ways (tests/docs/readme_commands.sh runs the "run" ones):
          synthesis); `make bitstream …` with BITSTREAM_STOP=inputs (the firmware, its RAM sized,
          and every input of the flow checked: everything before synthesis).
   same   once shortened, the same as an earlier "run" (named): run once.
-  suite  another suite's command line in tests/run_all.sh is this command (checked there).
+  suite  another suite's command in tests/suites.toml is this command.
   none   commands no test can run here, each with its reason (make test itself; a board on USB;
          the chroot check, which runs both of the README's commands itself).
 """
@@ -28,9 +28,10 @@ import os
 import re
 import shlex
 import sys
+import tomllib
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-RUN_ALL = os.path.join(ROOT, "tests", "run_all.sh")
+SUITES = os.path.join(ROOT, "tests", "suites.toml")
 
 # Commands that no suite of make test can run, and why (matched on the target, the first word).
 NOT_RUN = {
@@ -77,20 +78,16 @@ def commands(readme):
 
 
 def suites_running(command):
-    """Suites of tests/run_all.sh whose command line is `make [--no-print-directory] ARGS` of this
+    """Suites of tests/suites.toml whose command is `make [--no-print-directory] ARGS` of this
     command's arguments."""
     args = shlex.split(command)[1:]
+    with open(SUITES, "rb") as f:
+        table = tomllib.load(f)["suite"]
     names = []
-    with open(RUN_ALL) as f:
-        for line in f:
-            words = line.split()
-            if len(words) < 3 or words[0] not in ("suite", "suite_alone"):
-                continue
-            rest = words[3:] if words[2].isdigit() else words[2:]
-            if rest[:1] == ["make"]:
-                margs = [w for w in rest[1:] if w != "--no-print-directory"]
-                if margs == args:
-                    names.append(words[1])
+    for name, spec in table.items():
+        words = shlex.split(spec["run"])
+        if words[:1] == ["make"] and [w for w in words[1:] if w != "--no-print-directory"] == args:
+            names.append(name)
     return names
 
 

@@ -65,7 +65,7 @@ while IFS=$'\t' read -r way first second; do
         ;;
     suite)
         [ "$part" = other ] || continue
-        grep -qx "$first" "$work/suites.txt" || fail "README's '$second': suite $first is not in tests/run_all.sh"
+        grep -qx "$first" "$work/suites.txt" || fail "README's '$second': suite $first is not among make test's suites"
         elsewhere=$((elsewhere + 1))
         ;;
     none)
@@ -78,4 +78,5 @@ while IFS=$'\t' read -r way first second; do
     esac
 done <"$work/plan.tsv"
 [ "$ran" -gt 0 ] || fail "README.md shows no make command of part $part"
-pass "README ($part): $n make commands: $ran run here, $elsewhere by their suites or as another run, ${#skipped[@]} not runnable here${skipped:+ ($(printf '%s; ' "${skipped[@]}"))}"
+not_here=$(IFS=';'; echo "${skipped[*]}")
+pass "README ($part): $n make commands: $ran run here, $elsewhere by their suites or as another run, ${#skipped[@]} not runnable here${not_here:+ (${not_here//;/; })}"

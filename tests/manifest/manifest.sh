@@ -4,7 +4,7 @@
 # and the key; and the cubes' manifest build ($BUILD/lean-test/cubes/firmware/cubes.elf: one scene,
 # no anaglyph, no depth test, no line emulation) co-simulated renders the same frames as make
 # test's full build of cubes, and is smaller. And a GPU with a manifest's small buffers (VTX_CAP 32,
-# TRI_CAP 16, the Makefile's SMALLCAP_SIM) stands beside a golden model of the same sizes: random
+# TRI_CAP 16, mk/builds.toml's sim-fast-cfg-w8-v32-t16) stands beside a golden model of the same sizes: random
 # batches past the capacities agree on ERR_COUNT, bad indices, dropped and drawn primitives; and the
 # full cubes build, batched to those buffers, renders the full-size GPU's frames, model-checked.
 source "$(dirname "$0")/../lib.sh"

@@ -9,7 +9,7 @@
 # Each scene runs with a key script (same --keys-at rule on both sides) that exercises camera
 # modes, wireframe, anaglyph stereo and voxel place/break. The per-frame statistics lines must
 # agree too, except the two fields only the co-simulation can measure (instructions, GPU cycles).
-# Uses the FW_TEST_FRAMES-frame builds of `make fw-test-deps` in $BUILD/fw-test.
+# Uses the FW_TEST_FRAMES-frame builds in $BUILD/fw-test (mk/builds.toml's fw.fw-test).
 source "$(dirname "$0")/../lib.sh"
 need GPUSIM GPUSIM_FAST BUILD
 dir="$BUILD/fw-test"

@@ -7,8 +7,10 @@ need BUILD
 work=$(fresh_dir soc-too-big)
 # A build tree of its own, with make test's soc objects copied in (timestamps kept: only the link
 # and app.c, whose flags name the RAM size, are redone).
-mkdir -p "$work/build/firmware-soc"
-[ ! -d "$BUILD/firmware-soc/obj-fixed" ] || cp -a "$BUILD/firmware-soc/obj-fixed" "$work/build/firmware-soc/"
+mkdir -p "$work/build/firmware-soc" "$work/build/fw-obj-soc"
+for objs in "$BUILD"/fw-obj-soc/fixed-*; do
+    [ ! -d "$objs" ] || cp -a "$objs" "$work/build/fw-obj-soc/"
+done
 
 run_to "$work/small.out" 300 make --no-print-directory -j2 FW_PLATFORM=soc BUILD="$work/build" SCENE=tetra \
     SOC_RAM_KIB=16 "$work/build/firmware-soc/tetra.elf"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The watchdog on the SoC: tetra built with a watchdog of a few DONE_SEQ reads (tests/soc/tests.mk
-# SOC_TINY_POLLS), so every batch outlasts it (the first clears the framebuffer, 9,600 clocks; a swap
+# The watchdog on the SoC: tetra built with a watchdog of a few DONE_SEQ reads (mk/builds.toml's
+# fw.soc-test, polls = 16), so every batch outlasts it (the first clears the framebuffer, 9,600 clocks; a swap
 # waits for vertical blank). The firmware must report each lost frame, reset the GPU through RESET,
 # and after FW_WATCHDOG_GIVE_UP (3) lost frames in a row give up with FW_EXIT_GPU_TIMEOUT (4), as
 # `make fw-smoke` checks under QEMU with a silent GPU. Never a hang.

@@ -5,7 +5,7 @@
  *   stress [--short] [--lists DIR] [--soak-frames=N] [--spin-frames=N]
  *     --short        the make-test form: every case, fewer frames (soak 60, look key 10^4)
  *     --lists DIR    some cases also write their frame as a primitive list and the frame the
- *                    golden model drew (tests/stress/cosim_sample.sh co-simulates them)
+ *                    golden model drew (tests/stress/run.sh co-simulates them)
  *
  * Every case starts with the fixed-point overflow counter cleared (fixed.h) and says what it
  * expects of it: 0, or a nonzero count it reports (a saturation that is counted, never silent).

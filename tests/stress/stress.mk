@@ -1,7 +1,7 @@
 # tests/stress/stress.mk — `make stress` (issue #13): the named stiff and extreme cases
 # (tests/stress/stress.c), one Markdown row each, on both arithmetic backends. Included by the
 # top-level Makefile after firmware/firmware.mk, whose host objects it links: the firmware's pure
-# core and driver as the host build compiles them (obj-<backend> of $(BUILD)/fw-host), every
+# core and driver as the host build compiles them (the fixed and float variants' objects under $(BUILD)/fw-obj-host), every
 # scene, the built-in model, and the golden model as the GPU (tests/stress/stress_bsp.c in place
 # of bsp/host's BSP and main).
 #
@@ -12,8 +12,8 @@
 #   make stress-san             the same under ASan and UBSan (any report fails; not in make test)
 #   STRESS_TIMEOUT              seconds per backend before a run counts as hung (default 900)
 #
-# Outputs: $(STRESS) = $(BUILD)/tests/stress, $(STRESS_FLOAT) = $(BUILD)/tests/stress_float; both
-# are built by fw-test-deps (so `make test` has them).
+# Outputs: $(STRESS) = $(BUILD)/tests/stress, $(STRESS_FLOAT) = $(BUILD)/tests/stress_float (the
+# suite fw-stress needs both: mk/builds.toml's [target] stress).
 
 STRESS         := $(BUILD)/tests/stress
 STRESS_FLOAT   := $(BUILD)/tests/stress_float
@@ -42,8 +42,6 @@ endef
 
 $(eval $(call STRESS_RULES,$(STRESS),fixed))
 $(eval $(call STRESS_RULES,$(STRESS_FLOAT),float))
-
-fw-test-deps: $(STRESS) $(STRESS_FLOAT)
 
 .PHONY: stress
 stress: $(STRESS) $(STRESS_FLOAT)
