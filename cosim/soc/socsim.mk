@@ -36,7 +36,7 @@ SOC_FW_MAKE   = $(MAKE) --no-print-directory FW_PLATFORM=soc BUILD=$(BUILD) SOC_
 
 SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_FILES) contract/gpu_regs.vh \
                contract/soc_map.vh contract/soc_map.h $(SOCSIM_SRC) $(SOCSIM_SV) $(wildcard cosim/soc/*.h) \
-               $(wildcard cosim/*.h) $(COSIM_C_LIB) $(GPU_MODEL_LIB)
+               $(wildcard cosim/*.h) $(COSIM_C_LIB) $(GPU_MODEL_LIB) $(VERILATOR_RT)
 
 # The Verilator command of a socsim build, recorded in <dir>/cmd.txt (rewritten only when it changes)
 # so that a change of parameters or flags rebuilds, and an edit elsewhere in this file does not.
@@ -47,8 +47,8 @@ socsim_cmd = $(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign
   $(SOC_VFLAGS) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) $(5) \
   -CFLAGS "-O2 -march=native -std=c++17 -ffunction-sections $(call gpu_build_defs,$(4)) -DSOCSIM_RAM_BYTES=$(3)u \
            $(6) $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract) $$(pkg-config --cflags sdl2)" \
-  -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng sdl2)" \
-  --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1" --Mdir $(1)/obj -o $(abspath $(1))/socsim
+  -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng sdl2) $(abspath $(VERILATOR_RT))" \
+  --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1 $(VERILATOR_RT_MAKE)" --Mdir $(1)/obj -o $(abspath $(1))/socsim
 # The systems a socsim build Verilates: soc_top (the pixel clock tied to the system clock), and the
 # ULX3S's (boards/ulx3s/ulx3s_system on its three clocks, the monitor on the TMDS pairs).
 # Each system's top and parameters, further sources, -CFLAGS definitions and prerequisites (the
