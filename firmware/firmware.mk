@@ -38,7 +38,8 @@
 # FW_LINE_EMULATION.
 #
 # Outputs:
-#   $(FW_ELF)       = $(FW_DIR)/$(SCENE)[-float].elf (+ .map, .lst): what `make run` runs;
+#   $(FW_ELF)       = $(FW_DIR)/$(SCENE)[-float].elf (+ .map; its .lst from make fw or make
+#                     <elf without .elf>.lst): what `make run` runs;
 #                     FW_DIR = $(BUILD)/firmware, or $(BUILD)/firmware-<p> for FW_PLATFORM=<p>
 #   $(FW_HOST)      = $(BUILD)/fw-host/$(SCENE)[-float]: the same firmware on the host, rendering
 #                     through the golden model (bsp/host)
@@ -286,7 +287,6 @@ $(1): $$(FW_CORE_OBJS_$(3)) $(call fw_set_objs,$(or $(7),$(FW_SCENE_SET)),$(2),$
 	$$(Q)$$(call say,LD,$$@)$$(FW_CC) $$(FW_LDFLAGS_BASE) -Wl,-Map=$(1:.elf=.map) -o $$@ $$(FW_CORE_OBJS_$(3)) \
 	  $(call fw_set_objs,$(or $(7),$(FW_SCENE_SET)),$(2),$$(FW_OBJ_DIR_$(3))) \
 	  $(call fw_model_obj,$(or $(7),$(FW_SCENE_SET)),$(2),$(FW_MODEL_OBJ)) $(1:.elf=)/app.o -lm
-	$$(Q)$$(call say,OBJDUMP,$$@)$$(FW_OBJDUMP) -d -S $$@ > $(1:.elf=.lst)
 	$(if $(FW_POSTLINK),$$(Q)$$(call say,POSTLINK,$$@)$(FW_POSTLINK) $$@)
 
 FW_DEP_FILES += $(1:.elf=)/app.d
@@ -392,7 +392,12 @@ FW_FAKE_GPU_REGS := \
 
 .PHONY: fw fw-all fw-host fw-unit fw-smoke bench-fw profile-fw fw-force fw-size \
         fw-size-deps
-fw: $(FW_ELF)
+fw: $(FW_ELF) $(FW_ELF:.elf=.lst)
+
+# An ELF's disassembly with its source lines, on demand (make fw writes make run's): not for every
+# one of the hundreds of test and benchmark ELFs.
+%.lst: %.elf
+	$(Q)$(call say,OBJDUMP,$<)$(FW_OBJDUMP) -d -S $< > $@.$$$$ && mv $@.$$$$ $@
 
 fw-all: $(FW_ALL_ELFS) $(FW_ALL_HOSTS)
 
