@@ -93,10 +93,6 @@ static void knot_init(struct scene *s)
         flip = uvec3_dot(fn, out) < 0;
     }
     /* Quad (i, j)'s normal, index i * KNOT_SIDES + j as mesh_set_grid wants: the unit cross
-     * product of its diagonals, (c - a) x (d - b), in the winding's sense (flip: the other one).
-     * The vertices are within 3.2 units of the origin, so the differences and their sums fit
-     * vec3_triangle_normal's range with room to spare. */
-    /* Quad (i, j)'s normal, index i * KNOT_SIDES + j as mesh_set_grid wants: the unit cross
      * product of its diagonals, (c - a) x (d - b), in the winding's sense (flip: the other one),
      * kept in Q1.14. The vertices are within 3.2 units of the origin, so the differences and
      * their sums are well inside vec3_triangle_normal's range. */
