@@ -287,8 +287,11 @@ $(COSIM_CXX_LIB): $(COSIM_CXX_OBJ)
 	$(Q)$(call say,AR,$@)ar rcs $@ $^
 
 # (Verilator's runtime: VERILATOR_RT, near the top.)
-$(VERILATOR_RT):
-	@mkdir -p $(VERILATOR_RT_DIR) && touch $(VERILATOR_RT_DIR)/rt.mk
+# (Rebuilt when Verilator's version changes: version.txt is rewritten only then.)
+$(VERILATOR_RT_DIR)/version.txt: fw-force
+	@mkdir -p $(@D) && v=$$($(VERILATOR) --version) && { echo "$$v" | cmp -s - $@ || echo "$$v" > $@; }
+$(VERILATOR_RT): $(VERILATOR_RT_DIR)/version.txt
+	@touch $(VERILATOR_RT_DIR)/rt.mk
 	$(Q)$(call say,CXX,verilator-rt)root=$$($(VERILATOR) --getenv VERILATOR_ROOT) && \
 	  $(MAKE) -s --no-print-directory -C $(VERILATOR_RT_DIR) -f $$root/include/verilated.mk VERILATOR_ROOT=$$root \
 	    VM_PREFIX=rt VM_GLOBAL_FAST="$(VERILATOR_RT_NAMES)" VM_GLOBAL_SLOW= VM_COVERAGE=0 VM_SC=0 VM_TRACE=1 \
