@@ -62,6 +62,8 @@ endif
 include tests/stress/stress.mk
 # libFuzzer targets (FUZZ_BINS, fuzz-build) and `make fuzz`.
 include tests/fuzz/fuzz.mk
+# Formal checks of the RTL: make formal, make formal-broken.
+include tests/formal/formal.mk
 
 # The RTL, in compilation order: gpu_rtl/files.f is the one list (lint, simulators, synth/synth.sh).
 RTL_FILES  := gpu_rtl/files.f

