@@ -119,8 +119,8 @@ endif
 # ---- test: every suite (or those matching SUITE, e.g. SUITE='rtl-* fw-unit'), with a summary line ----
 # `make test` builds what the selected suites need (their `needs` in tests/suites.toml, by the ids
 # of mk/builds.toml) BUILD_JOBS recipes at a time (default: the cores), then tests/run_all.sh runs
-# the suites TEST_JOBS at a time (default: the cores). `make test-quick` builds as the command line says (-j) and runs
-# the suites; TEST_BUILD_ONLY=1 only builds.
+# the suites TEST_JOBS at a time (default: the cores). `make test-quick` builds as the command line
+# says (-j) and runs the suites; TEST_BUILD_ONLY=1 only builds.
 SUITE ?= *
 BUILD_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
 TEST_ENV = GPUSIM=$(GPUSIM) GPUSIM_FAST=$(GPUSIM_FAST) GPUSIM_TRACE=$(GPUSIM_TRACE) SOCSIM=$(SOCSIM) \
@@ -288,8 +288,8 @@ $(COSIM_CXX_LIB): $(COSIM_CXX_OBJ)
 	@rm -f $@
 	$(Q)$(call say,AR,$@)ar rcs $@ $^
 
-# (Verilator's runtime: VERILATOR_RT, near the top.)
-# (Rebuilt when Verilator's version changes: version.txt is rewritten only then.)
+# Verilator's runtime (VERILATOR_RT, near the top), rebuilt when Verilator's version changes
+# (version.txt is rewritten only then).
 $(VERILATOR_RT_DIR)/version.txt: fw-force
 	@mkdir -p $(@D) && v=$$($(VERILATOR) --version) && { echo "$$v" | cmp -s - $@ || echo "$$v" > $@; }
 $(VERILATOR_RT): $(VERILATOR_RT_DIR)/version.txt
