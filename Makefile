@@ -268,7 +268,7 @@ $(COSIM_C_LIB): $(HOST_OBJ)
 
 # SIM_CXX compiles the simulators' C++ (gpusim's and socsim's): clang's code of the Verilated model
 # runs faster than GCC 12's (rtl-vs-model-seed1: 10.0 s of CPU against 10.9 s; socsim, knot's two
-# frames: 22.2 s against 28.4 s) and builds as fast or faster (socsim 13.4 s of CPU against 20).
+# frames: 22.2 s against 28.4 s); socsim's clang build took 13.4 s of CPU (with the shared runtime).
 SIM_CXX        ?= clang++-14
 
 # The co-simulator's C++ apart from the Verilated model's two neighbours (gpu_sim.cpp includes the
