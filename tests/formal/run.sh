@@ -25,14 +25,17 @@ failed=0
 case "$mode" in
 prove)
     printf '| check | task | result | seconds |\n|---|---|---|---:|\n'
+    tasks=0
     for f in tests/formal/*.sby; do
         name=$(basename "$f" .sby)
         for task in $(sed -n '/^\[tasks\]/,/^\[/{/^\[/d;/^#/d;/^$/d;p}' "$f"); do
             run_task "$f" "$task" "$out/${name}_$task"
+            tasks=$((tasks + 1))
             printf '| %s | %s | %s | %s |\n' "$name" "$task" "$result" "$seconds"
             [ "$result" = PASS ] || { failed=1; tail -n 20 "$out/${name}_$task.log" | grep -E 'failed|Assert|rror' >&2; }
         done
     done
+    [ "$tasks" -gt 0 ] || { echo "formal: no task in tests/formal/*.sby"; failed=1; }
     ;;
 broken)
     n=0
@@ -53,6 +56,7 @@ broken)
             failed=1
         fi
     done < <(grep -v '^#' tests/formal/mutations.txt | grep -v '^$')
+    [ "$n" -gt 0 ] || { echo "formal-broken: tests/formal/mutations.txt names no broken copy"; failed=1; }
     ;;
 *)
     echo "run.sh: mode '$mode': prove or broken"; exit 2 ;;
