@@ -5,7 +5,7 @@ fmax per clock against its constraint and of the resources used, then the .bit.
 
     ecp5_bitstream.py --top T --files F.f [--files ...] --lpf BOARD.lpf --device 85k
                       --package CABGA381 --speed 6 --out DIR [--param NAME=VALUE]... [--seed N]
-                      [--synth-only | --inputs-only]
+                      [--synth-only | --inputs-only] [--crossings CROSSINGS.toml]
 
 It fails (status 1, no .bit) when a clock misses its constraint, and says which. --inputs-only
 checks what the flow would read and stops: every source, the constraints, the tools, and each
@@ -15,6 +15,9 @@ one line as it starts and one when it ends, with its time; the tools' output goe
 Paths are passed relative to the working directory (the repository root): YoWASP's tools run in a
 WebAssembly sandbox that sees the working directory, not /tmp or absolute paths elsewhere.
 The source lists are files.f files (one path a line, `//` comments), read in the order given.
+--crossings: right after synthesis, synth/crossings.py checks the netlist's clock-domain crossings
+against that file (the table to DIR/crossings.md) and the flow stops (status 1) on one it does not
+declare, or on an entry that matches none.
 """
 import argparse
 import json
@@ -23,6 +26,8 @@ import re
 import subprocess
 import sys
 import time
+
+import crossings  # synth/crossings.py, beside this file
 
 # Resources of the parts (Lattice's ECP5 family data sheet: LUT4s, EBR blocks of 18 Kbit, 18x18
 # multipliers) for the fit columns.
@@ -106,6 +111,26 @@ def clock_name(net):
     return net.replace("$glbnet$", "").replace("$TRELLIS_IO_IN", "")
 
 
+def check_crossings(a, json_path):
+    """synth/crossings.py on the new netlist: its table here and in DIR/crossings.md; exits naming
+    each undeclared crossing (and each declared one that matched nothing)."""
+    start = time.monotonic()
+    try:
+        res = crossings.check(json_path, a.crossings, a.top)
+    except crossings.NetlistError as e:
+        sys.exit(f"ecp5_bitstream: crossings: {e}")
+    path = os.path.join(a.out, "crossings.md")
+    with open(path, "w") as f:
+        f.write(res.report)
+    sys.stdout.write(res.table)
+    if res.errors:
+        sys.stdout.write("".join(f"crossings: {e}\n" for e in res.errors))
+        sys.exit(f"ecp5_bitstream: {len(res.errors)} clock-domain crossing error(s) against {a.crossings} "
+                 f"(above; the report: {path})")
+    print(f"crossings: {res.groups} clock-domain crossings, every one declared in {a.crossings} ({path}, "
+          f"{time.monotonic() - start:.0f} s)", flush=True)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--top", required=True)
@@ -122,6 +147,7 @@ def main():
     ap.add_argument("--synth-only", action="store_true", help="stop after synthesis: resources only")
     ap.add_argument("--inputs-only", action="store_true",
                     help="check the sources, constraints, tools and RAM image, then stop")
+    ap.add_argument("--crossings", help="declared clock-domain crossings (TOML): checked after synthesis")
     a = ap.parse_args()
 
     os.makedirs(a.out, exist_ok=True)
@@ -138,6 +164,11 @@ def main():
     chparams = f"chparam {' '.join(sets)} {a.top}; " if sets else ""
 
     if a.inputs_only:
+        if a.crossings:
+            try:
+                crossings.load_declared(a.crossings)
+            except crossings.NetlistError as e:
+                sys.exit(f"ecp5_bitstream: crossings: {e}")
         print(check_inputs(a, sources), flush=True)
         return 0
 
@@ -160,6 +191,8 @@ def main():
     print("fits: " + ", ".join(f"LFE5U-{d.upper()}: {'yes' if ok else 'no'}" for d, ok in fits.items()), flush=True)
     with open(os.path.join(a.out, "resources.json"), "w") as f:
         json.dump({"cells": used, "fits": fits, "synthesis_s": round(times["synthesis"])}, f, indent=1)
+    if a.crossings:
+        check_crossings(a, json_path)
     if not fits[a.device]:
         sys.exit(f"ecp5_bitstream: the design does not fit the LFE5U-{a.device.upper()} (see the table)")
     if a.synth_only:

@@ -1,0 +1,2 @@
+// tests/boards/crossings.sh's fixture (synth/ecp5_bitstream.py --files)
+tests/boards/crossings/xdemo.v
