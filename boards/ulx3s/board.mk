@@ -11,6 +11,16 @@
 #   board-fit [PNR=1]         boards/ulx3s/board_fit.py: that table for the default build, the depth-buffer
 #                             build and every scene's lean build (RAM sized to the scene); PNR=1 adds
 #                             place and route, fmax per clock (about 15 minutes a build)
+#   netlist-sim BOARD=ulx3s [STAGE=synth|route] [SCENE=… FRAMES=2]
+#                             the bitstream's netlist after synthesis (yosys' JSON; made by the flow
+#                             with --synth-only when missing or older than its sources) or after
+#                             place and route (nextpnr's --write; the whole flow), simulated at its
+#                             pins from its oscillator (cosim/netlist): FRAMES frames decoded from its
+#                             DVI pins must equal socsim-ulx3s's of the same firmware, byte for byte
+#   crossings BOARD=ulx3s     synth/crossings.py on the existing netlist ($(ULX3S_DIR)/ulx3s_top.json;
+#                             no synthesis): every clock-domain crossing against boards/ulx3s/crossings.toml,
+#                             the table to crossings.md beside it; fails on an undeclared crossing or a stale
+#                             entry. bitstream and synth-board run the same check right after synthesis
 #   flash BOARD=ulx3s         write $(ULX3S_BIT) to the board's SPI flash (openFPGALoader -f): kept
 #                             through power cycles; load BOARD=ulx3s: into the FPGA only (lost at power-off)
 #   lint-board                verilator --lint-only -Wall on ulx3s_top, the primitives from yosys'
@@ -37,10 +47,14 @@ ULX3S_FLOW   = $(PYTHON) synth/ecp5_bitstream.py --top ulx3s_top --lpf boards/ul
   --files boards/ulx3s/files_top.f --param SYS_MHZ=$(SYS_MHZ) --param RAM_BYTES=$(SOC_RAM_BYTES) \
   --param RAM_INIT=$(ULX3S_FW_ELF).hex --param SPAN_W=$(SPAN_W) --param ENABLE_ZBUF=$(ZBUF) \
   $(ULX3S_WMASK) $(ULX3S_GPU_PARAMS)
+# Every clock-domain crossing declared, with its reason: checked after synthesis (synth/crossings.py).
+ULX3S_CROSSINGS = boards/ulx3s/crossings.toml
+ULX3S_FLOW  += --crossings $(ULX3S_CROSSINGS)
 # YoWASP's tools see the working directory only: the core's path relative to it (in .venv/).
 SOC_CPU_V_REL = $(patsubst $(CURDIR)/%,%,$(SOC_CPU_V))
 
-.PHONY: bitstream synth-board flash load term board-fw lint-board board-fit ulx3s-dir
+.PHONY: bitstream synth-board flash load term board-fw lint-board board-fit ulx3s-dir netlist-sim
+.PHONY: crossings
 # Where a build's files go, for boards/ulx3s/board_fit.py (the name is made here only).
 ifneq ($(SOC_RAM_KIB),auto)
 ulx3s-dir:
@@ -61,7 +75,9 @@ ifeq ($(BOARD),ulx3s)
 ifeq ($(SOC_RAM_KIB),auto)
 # The RAM is the firmware's (bsp/soc/soc_ram.mk): the board's firmware first, then these goals again
 # on a RAM of the size it needs.
-bitstream synth-board ulx3s-dir flash load: board-fw
+bitstream synth-board ulx3s-dir flash load netlist-sim: board-fw
+	$(call soc_ram_again,$(ULX3S_FW_ELF))
+crossings: board-fw
 	$(call soc_ram_again,$(ULX3S_FW_ELF))
 else
 bitstream: board-fw
@@ -71,6 +87,37 @@ bitstream: board-fw
 synth-board: board-fw
 	@bash tools/setup.sh
 	$(Q)$(call say,SYNTH,$(ULX3S_DIR))$(ULX3S_FLOW) --synth-only
+
+# The flow's netlists as files, remade when a source, the constraints or the firmware changed: after
+# synthesis (the flow stopped there) and after place and route (the whole flow, the .bit too).
+ULX3S_SOURCES = $(RTL_V) $(SOC_RTL_V) $(SOC_CPU_V) $(foreach f,boards/ulx3s/files.f boards/ulx3s/files_top.f,$(f) \
+  $(shell sed -e 's://.*::' $(f))) contract/gpu_build_params.vh contract/gpu_regs.vh contract/soc_map.vh \
+  boards/ulx3s/ulx3s.lpf synth/ecp5_bitstream.py $(ULX3S_FW_ELF).hex
+$(ULX3S_DIR)/ulx3s_top.json: $(ULX3S_SOURCES)
+	@bash tools/setup.sh
+	$(Q)$(call say,SYNTH,$(ULX3S_DIR))$(ULX3S_FLOW) --synth-only
+$(ULX3S_DIR)/ulx3s_top_routed.json: $(ULX3S_SOURCES)
+	@bash tools/setup.sh
+	$(Q)$(call say,FLOW,$(ULX3S_DIR))$(ULX3S_FLOW)
+
+STAGE ?= synth
+NETLIST_JSON = $(ULX3S_DIR)/ulx3s_top$(if $(filter route,$(STAGE)),_routed).json
+# FRAMES is make run's (24 by default); here 2 unless given on the command line.
+NETLIST_FRAMES = $(if $(filter command line,$(origin FRAMES)),$(FRAMES),2)
+netlist-sim: board-fw $(SOCSIM_ULX3S)
+	@case "$(STAGE)" in synth|route) ;; *) echo "netlist-sim: STAGE=$(STAGE): synth or route"; exit 2;; esac
+	@test -z "$(ULX3S_GPU_PARAMS)$(filter 1,$(ZBUF))$(filter-out 8,$(SPAN_W))" || { echo "netlist-sim: the RTL reference \
+	  (socsim-ulx3s) has the default GPU: no scene manifest's GPU parameters, ZBUF=1 or SPAN_W"; exit 2; }
+	+@$(MAKE) --no-print-directory $(NETLIST_JSON)
+	@VENV_BIN=$(abspath .venv/bin) bash cosim/netlist/netlist_sim.sh $(NETLIST_JSON) ulx3s_top \
+	  $(ULX3S_DIR)/netlist-$(STAGE) $(ULX3S_FW_ELF) $(NETLIST_FRAMES) $(SOCSIM_ULX3S)
+
+# The netlist's crossings against $(ULX3S_CROSSINGS), without synthesising it again (make
+# synth-board makes it; the flow runs this check itself after every synthesis).
+crossings:
+	@test -f $(ULX3S_DIR)/ulx3s_top.json || { echo "crossings: no $(ULX3S_DIR)/ulx3s_top.json: make synth-board BOARD=ulx3s first (same SCENE, SYS_MHZ, SOC_RAM_KIB)"; exit 1; }
+	$(Q)$(call say,CHECK,crossings of $(ULX3S_DIR)/ulx3s_top.json)$(PYTHON) synth/crossings.py $(ULX3S_DIR)/ulx3s_top.json \
+	  --declared $(ULX3S_CROSSINGS) --report $(ULX3S_DIR)/crossings.md
 
 flash load:
 	@test -f $(ULX3S_BIT) || { echo "$@: no $(ULX3S_BIT): make bitstream BOARD=ulx3s first (same SCENE, SYS_MHZ, SOC_RAM_KIB)"; exit 1; }

@@ -14,8 +14,8 @@
 // the VGA build, byte for byte, when the board's video path is right.
 //
 //   socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]
-//          [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--no-model-check]
-//          [--uart-pty LINK] [--window] [--window-fps N] [--trace FILE.fst [--trace-frame N]]
+//          [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--stop-frames N]
+//          [--no-model-check] [--uart-pty LINK] [--window] [--window-fps N] [--trace FILE.fst [--trace-frame N]]
 //
 // The program: RAM_INIT's format (one 32-bit hex word per line from address 0; --fw FILE.elf reads
 // FILE.elf.hex, the soc platform's post-link output), loaded at time 0 through soc_ram's
@@ -52,7 +52,8 @@
 // the smoke program (tests/soc/smoke.c) asks for its receiver's tests.
 //
 // The run ends when the firmware writes SYS EXIT (soc_top's exit_valid): the process exits with its
-// status (0..255). A harness failure — a frame that differs from the model or cannot be captured,
+// status (0..255); or, with --stop-frames N, with status 0 once N frames were captured and compared
+// (a board's firmware runs until Q: make netlist-sim's reference frames). A harness failure — a frame that differs from the model or cannot be captured,
 // the cycle limit, SIGINT/SIGTERM — prints "socsim: error: ..." and exits 1; usage errors exit 2.
 // --summary FILE holds the outcome as key=value lines, with the keys of `gpusim cosim --summary`
 // and the SoC's own counts and pins: exit_valid, the LEDs (the VGA build), the vertical syncs the
@@ -116,6 +117,7 @@ struct Options {
     std::string hex;
     uint64_t max_cycles = 3000000000ull;  // 60 s of SoC time at 50 MHz
     uint64_t progress_cycles = 50000000;  // a progress line after this many cycles without a frame
+    uint32_t stop_frames = 0;             // --stop-frames N: end after N frames (0: at SYS EXIT only)
     uint32_t uart_divider = (SOCSIM_CLK_HZ + SOC_UART_BAUD / 2) / SOC_UART_BAUD;  // as soc_uart rounds
     UartReplies replies;
 };
@@ -124,14 +126,15 @@ int usage()
 {
     return harness_usage(
         "usage: socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]\n"
-        "              [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--no-model-check]\n"
-        "              [--uart-divider N] [--uart-pty LINK] [--window] [--window-fps N]\n"
+        "              [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--stop-frames N]\n"
+        "              [--no-model-check] [--uart-divider N] [--uart-pty LINK] [--window] [--window-fps N]\n"
         "              [--trace FILE.fst [--trace-frame N]]\n"
         "  --fw FILE.elf      run FILE.elf.hex (the soc build's RAM image); -kernel FILE.elf is the same\n"
         "  --hex FILE         run FILE, a RAM image (one 32-bit hex word per line from address 0)\n"
         "  --reply PROMPT=TEXT  send TEXT on uart_rx each time the text from uart_tx ends with PROMPT\n"
         "                     (\\n a newline, \\f a frame with a low stop bit)\n"
         "  --max-cycles N     give up after N clocks (default 3e9: 60 s at 50 MHz)\n"
+        "  --stop-frames N    end with status 0 once N frames were captured (a firmware that runs until Q)\n"
         "  Exit status: the firmware's (SYS EXIT); 1 on a harness error; 2 on a usage error.\n");
 }
 
@@ -144,6 +147,8 @@ bool parse(int argc, char **argv, Options &o)
             o.hex = argv[++*i];
         } else if (a == "--max-cycles" && has_value) {
             o.max_cycles = static_cast<uint64_t>(std::strtod(argv[++*i], nullptr));
+        } else if (a == "--stop-frames" && has_value) {
+            o.stop_frames = static_cast<uint32_t>(std::strtoul(argv[++*i], nullptr, 0));
         } else if (a == "--uart-divider" && has_value) {
             o.uart_divider = static_cast<uint32_t>(std::strtoul(argv[++*i], nullptr, 0));
         } else if (a == "--reply" && has_value) {
@@ -669,8 +674,16 @@ int SocRun::run()
                 return fail("trace", "%s", error.c_str());
             }
         }
-        if (capture_pending_ && monitor_.frame_ready && !finish_frame(&error, &kind)) {
-            return fail(kind, "%s", error.c_str());
+        if (capture_pending_ && monitor_.frame_ready) {
+            if (!finish_frame(&error, &kind)) {
+                return fail(kind, "%s", error.c_str());
+            }
+            if (opt_.stop_frames != 0 && frames() >= opt_.stop_frames) {
+                uart_.finish();
+                std::printf("socsim: stopped after %u frames (--stop-frames): %u doorbells, %llu cycles\n", frames(),
+                            doorbells_, static_cast<unsigned long long>(cycles_));
+                return end(0, "none");
+            }
         }
         if (monitor_.error[0] != '\0') {
             return fail("capture", "VGA timing: %s", monitor_.error);

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The ECP5 cell models of make netlist-sim (cosim/netlist/ecp5) against behavioural references
-# (tests/boards/netlist_cells_tb.sv): MULT18X18D in every sign mode, ODDRX1F's bit order, EHXPLLL
+# (tests/boards/netlist_cells_tb.sv): MULT18X18D in every sign mode, ODDRX1F's bit order, DP16KD at
+# the widths and write modes the board uses, EHXPLLL
 # through the board's ulx3s_pll at SYS_MHZ 50 and 25 (periods, alignment, LOCK); and the models
 # refuse what they do not model with a clear error: a registered MULT18X18D, a PLL phase shift.
 source "$(dirname "$0")/../lib.sh"
 need BUILD
 work=$(fresh_dir boards-netlist-cells)
-models=(cosim/netlist/ecp5/MULT18X18D.v cosim/netlist/ecp5/ODDRX1F.v cosim/netlist/ecp5/EHXPLLL.v)
+models=(cosim/netlist/ecp5/MULT18X18D.v cosim/netlist/ecp5/ODDRX1F.v cosim/netlist/ecp5/EHXPLLL.v cosim/netlist/ecp5/DP16KD.v)
 
 # build NAME TOP ARG...: Verilator --binary --timing of TOP with the models, into $work/NAME; sets $status
 build() {
@@ -43,4 +44,4 @@ expect_line 'MULT18X18D: a registered mode' "$work/bad_mult.build.log"
 build bad_pll bad_pll "${models[2]}" "$work/bad_pll.v"
 [ "$status" -ne 0 ] || fail "a PLL output with a phase shift was accepted"
 expect_line 'EHXPLLL: only 0-degree phases' "$work/bad_pll.build.log"
-pass "boards-netlist-cells: MULT18X18D, ODDRX1F and EHXPLLL (SYS_MHZ 50, 25) equal their references; unmodelled modes refused"
+pass "boards-netlist-cells: MULT18X18D, ODDRX1F, DP16KD and EHXPLLL (SYS_MHZ 50, 25) equal their references; unmodelled modes refused"

@@ -6,6 +6,9 @@
 //               ones: P against a 64-bit product of the operands read as the sign pins say
 //   ODDRX1F     seeded random bit pairs: Q sampled in each half period is D0 then D1 of the pair
 //               registered at that period's rising edge; RST clears it
+//   DP16KD      seeded random writes on port A (18 bits with byte enables; 36 as a pair) and reads
+//               on port B (9, 4, 36 bits), against a flat array of the block's 18,432 bits indexed
+//               as the contract says; INITVAL's layout; the write modes; the asynchronous reset
 //   EHXPLLL     boards/ulx3s/ulx3s_pll as the board builds it (SYS_MHZ from the script): from a
 //               25 MHz input, the TMDS, pixel and system clocks at the periods the script expects,
 //               rising together at an input edge, LOCK after they start
@@ -80,6 +83,56 @@ module netlist_cells_tb;
     reg  sclk = 0, rst = 0, d0 = 0, d1 = 0;
     wire q;
     ODDRX1F u_ddr (.SCLK(sclk), .RST(rst), .D0(d0), .D1(d1), .Q(q));
+
+    // ---- DP16KD -----------------------------------------------------------------------------------
+    reg         bclk = 0, bwe = 0, brst = 0;
+    int         phase = 0;  // the block being written: 0 x18/x9, 1 x4, 2 x36
+    reg  [13:0] bad_a = 0, bad_b = 0;
+    reg  [17:0] bdi_a = 0, bdi_b = 0;
+    wire [17:0] bdo_a18_9, bdo_b18_9, bdo_a4, bdo_b4, bdo_a36, bdo_b36;
+    `define DP16KD_PINS(WE, DOA, DOB) \
+        .DIA17(bdi_a[17]), .DIA16(bdi_a[16]), .DIA15(bdi_a[15]), .DIA14(bdi_a[14]), .DIA13(bdi_a[13]), \
+        .DIA12(bdi_a[12]), .DIA11(bdi_a[11]), .DIA10(bdi_a[10]), .DIA9(bdi_a[9]), .DIA8(bdi_a[8]), \
+        .DIA7(bdi_a[7]), .DIA6(bdi_a[6]), .DIA5(bdi_a[5]), .DIA4(bdi_a[4]), .DIA3(bdi_a[3]), \
+        .DIA2(bdi_a[2]), .DIA1(bdi_a[1]), .DIA0(bdi_a[0]), \
+        .ADA13(bad_a[13]), .ADA12(bad_a[12]), .ADA11(bad_a[11]), .ADA10(bad_a[10]), .ADA9(bad_a[9]), \
+        .ADA8(bad_a[8]), .ADA7(bad_a[7]), .ADA6(bad_a[6]), .ADA5(bad_a[5]), .ADA4(bad_a[4]), \
+        .ADA3(bad_a[3]), .ADA2(bad_a[2]), .ADA1(bad_a[1]), .ADA0(bad_a[0]), \
+        .CEA(1'b1), .OCEA(1'b1), .CLKA(bclk), .WEA(WE), .RSTA(1'b0), .CSA2(1'b0), .CSA1(1'b0), .CSA0(1'b0), \
+        .DOA17(DOA[17]), .DOA16(DOA[16]), .DOA15(DOA[15]), .DOA14(DOA[14]), .DOA13(DOA[13]), \
+        .DOA12(DOA[12]), .DOA11(DOA[11]), .DOA10(DOA[10]), .DOA9(DOA[9]), .DOA8(DOA[8]), .DOA7(DOA[7]), \
+        .DOA6(DOA[6]), .DOA5(DOA[5]), .DOA4(DOA[4]), .DOA3(DOA[3]), .DOA2(DOA[2]), .DOA1(DOA[1]), \
+        .DOA0(DOA[0]), \
+        .DIB17(bdi_b[17]), .DIB16(bdi_b[16]), .DIB15(bdi_b[15]), .DIB14(bdi_b[14]), .DIB13(bdi_b[13]), \
+        .DIB12(bdi_b[12]), .DIB11(bdi_b[11]), .DIB10(bdi_b[10]), .DIB9(bdi_b[9]), .DIB8(bdi_b[8]), \
+        .DIB7(bdi_b[7]), .DIB6(bdi_b[6]), .DIB5(bdi_b[5]), .DIB4(bdi_b[4]), .DIB3(bdi_b[3]), \
+        .DIB2(bdi_b[2]), .DIB1(bdi_b[1]), .DIB0(bdi_b[0]), \
+        .ADB13(bad_b[13]), .ADB12(bad_b[12]), .ADB11(bad_b[11]), .ADB10(bad_b[10]), .ADB9(bad_b[9]), \
+        .ADB8(bad_b[8]), .ADB7(bad_b[7]), .ADB6(bad_b[6]), .ADB5(bad_b[5]), .ADB4(bad_b[4]), \
+        .ADB3(bad_b[3]), .ADB2(bad_b[2]), .ADB1(bad_b[1]), .ADB0(bad_b[0]), \
+        .CEB(1'b1), .OCEB(1'b1), .CLKB(bclk), .WEB(1'b0), .RSTB(brst), .CSB2(1'b0), .CSB1(1'b0), .CSB0(1'b0), \
+        .DOB17(DOB[17]), .DOB16(DOB[16]), .DOB15(DOB[15]), .DOB14(DOB[14]), .DOB13(DOB[13]), \
+        .DOB12(DOB[12]), .DOB11(DOB[11]), .DOB10(DOB[10]), .DOB9(DOB[9]), .DOB8(DOB[8]), .DOB7(DOB[7]), \
+        .DOB6(DOB[6]), .DOB5(DOB[5]), .DOB4(DOB[4]), .DOB3(DOB[3]), .DOB2(DOB[2]), .DOB1(DOB[1]), \
+        .DOB0(DOB[0])
+    // Word 17 of the initial contents: INITVAL_01, slot 1 (bits 20..37) holds 18'h2_5a3c.
+    localparam [319:0] INIT_ROW1 = 320'h2_5a3c << 20;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(9), .WRITEMODE_A("READBEFOREWRITE"), .RESETMODE("ASYNC"),
+             .INITVAL_01(INIT_ROW1))
+        u_ram18_9 (`DP16KD_PINS(bwe & phase == 0, bdo_a18_9, bdo_b18_9));
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .WRITEMODE_A("WRITETHROUGH"))
+        u_ram4 (`DP16KD_PINS(bwe & phase == 1, bdo_a4, bdo_b4));
+    DP16KD #(.DATA_WIDTH_A(36), .DATA_WIDTH_B(36))
+        u_ram36 (`DP16KD_PINS(bwe & phase == 2, bdo_a36, bdo_b36));
+
+    // The references: each block's 18,432 bits, word w's bit b at w * 18 + b.
+    bit ref18 [0:18431];
+    bit ref4 [0:18431];
+    bit ref36 [0:18431];
+    function automatic int phys(input int data_bit16);  // 16 data bits of a word: 8 and 17 skipped
+        return data_bit16 + (data_bit16 >= 8);
+    endfunction
+    int ram_checks = 0;
 
     // ---- EHXPLLL through the board's ulx3s_pll ----------------------------------------------------
     reg  clk_25mhz = 0;
@@ -160,6 +213,83 @@ module netlist_cells_tb;
         rst = 1;
         #10 if (q !== 1'b0) $fatal(1, "ODDRX1F: Q %b under RST", q);
         rst = 0;
+        // DP16KD: the initial word, then random writes on A and reads on B.
+        foreach (ref18[i]) begin ref18[i] = 0; ref4[i] = 0; ref36[i] = 0; end
+        for (int b = 0; b < 18; b++) ref18[17 * 18 + b] = (18'h2_5a3c >> b) & 1;
+        for (int k = 0; k < 6000; k++) begin
+            int word, sub, a_item, b_item;
+            bit [3:0] be;
+            reg [35:0] data;
+            reg [17:0] want_a18, want_b9, want_a4, want_b4, want_a36, want_b36;
+            word = k < 20 ? 17 : $urandom(seed) % 1024; seed++;
+            data = {$urandom(seed), $urandom(seed + 1)}; seed += 2;
+            be = 4'($urandom(seed)); seed++;
+            bwe = k >= 20 && ($urandom(seed) % 3 != 0); seed++;
+            b_item = word * 2 + ($urandom(seed) % 2); seed++;   // a 9-bit item of the same word
+            a_item = word * 4 + ($urandom(seed) % 4); seed++;   // a 4-bit item of it
+            // what each port must show after this edge (READBEFOREWRITE, WRITETHROUGH, NORMAL)
+            for (int b = 0; b < 18; b++) want_a18[b] = ref18[word * 18 + b];
+            // x18 / x9 block: A writes word at AD[13:4] with byte enables AD[1:0]; B reads AD[13:3]
+            bad_a = {4'(word >> 6), 6'(word), 2'b00, be[1:0]};
+            bad_a[13:4] = 10'(word);
+            bdi_a = data[17:0];
+            bdi_b = data[35:18];
+            bad_b = {10'(b_item >> 1), b_item[0], 3'b000};
+            phase = 0;
+            #500 bclk = 1;
+            #500;
+            if (bwe) begin
+                for (int b = 0; b < 9; b++) if (be[0]) ref18[word * 18 + b] = data[b];
+                for (int b = 9; b < 18; b++) if (be[1]) ref18[word * 18 + b] = data[b];
+            end
+            // B's read and A's write at the same edge: B reads the word before the write
+            want_b9 = 0;
+            if (k < 20 || !bwe) for (int b = 0; b < 9; b++) want_b9[b] = ref18[(b_item >> 1) * 18 + (b_item & 1) * 9 + b];
+            if (bdo_a18_9 !== want_a18) $fatal(1, "DP16KD x18: word %0d: DOA %h, want the old word %h", word, bdo_a18_9, want_a18);
+            if ((k < 20 || !bwe) && bdo_b18_9 !== want_b9) $fatal(1, "DP16KD x9: item %0d: DOB %h, want %h", b_item, bdo_b18_9, want_b9);
+            bclk = 0;
+            // x4 block: A writes 4-bit item a_item (WRITETHROUGH), B reads it back the next edge
+            bad_a = {12'(a_item), 2'b00};
+            bad_b = {12'(a_item), 2'b00};
+            phase = 1;
+            #500 bclk = 1;
+            #500;
+            if (bwe) for (int b = 0; b < 4; b++) ref4[(a_item >> 2) * 18 + phys((a_item & 3) * 4 + b)] = data[b];
+            want_a4 = 0;
+            for (int b = 0; b < 4; b++) want_a4[b] = ref4[(a_item >> 2) * 18 + phys((a_item & 3) * 4 + b)];
+            if (bdo_a4 !== want_a4) $fatal(1, "DP16KD x4: item %0d: DOA %h, want %h (written through)", a_item, bdo_a4, want_a4);
+            bclk = 0;
+            bwe = 0;
+            #500 bclk = 1;
+            #500;
+            if (bdo_b4 !== want_a4) $fatal(1, "DP16KD x4: item %0d: DOB %h, want %h", a_item, bdo_b4, want_a4);
+            bclk = 0;
+            // x36 pair: A writes pair word / 2 with four byte enables, B reads it the next edge
+            bwe = 1;
+            bad_a = {9'(word >> 1), 1'b0, be};
+            bad_b = {9'(word >> 1), 5'b0};
+            phase = 2;
+            bdi_a = data[17:0];
+            bdi_b = data[35:18];
+            #500 bclk = 1;
+            #500 bclk = 0;
+            for (int q = 0; q < 4; q++) if (be[q]) for (int b = 0; b < 9; b++)
+                ref36[((word >> 1) * 2 + q / 2) * 18 + (q % 2) * 9 + b] = data[q * 9 + b];
+            bwe = 0;
+            #500 bclk = 1;
+            #500 bclk = 0;
+            for (int b = 0; b < 18; b++) begin
+                want_a36[b] = ref36[((word >> 1) * 2) * 18 + b];
+                want_b36[b] = ref36[((word >> 1) * 2 + 1) * 18 + b];
+            end
+            if (bdo_a36 !== want_a36 || bdo_b36 !== want_b36) begin
+                $fatal(1, "DP16KD x36: pair %0d: %h %h, want %h %h", word >> 1, bdo_b36, bdo_a36, want_b36, want_a36);
+            end
+            ram_checks++;
+        end
+        brst = 1;
+        #10 if (bdo_b18_9 !== 18'h0) $fatal(1, "DP16KD: DOB %h under the asynchronous RST", bdo_b18_9);
+        brst = 0;
         // EHXPLLL: let it lock and run.
         #5000000;
         if (lock_time < 0) $fatal(1, "EHXPLLL: LOCK never rose");
@@ -173,8 +303,8 @@ module netlist_cells_tb;
         if (start_tmds % 40000 != 20000 || lock_time <= start_tmds) begin
             $fatal(1, "EHXPLLL: outputs start at %0d ps (not an input rising edge) or LOCK at %0d before", start_tmds, lock_time);
         end
-        $display("netlist_cells: ok: MULT18X18D %0d products in 4 sign modes, ODDRX1F %0d bit pairs, EHXPLLL (SYS_MHZ %0d) tmds %0d, pix %0d, sys %0d ps from a 40000 ps input, LOCK at %0d ps",
-                 mul_checks, ddr_checks, `PLL_SYS_MHZ, per_tmds, per_pix, per_sys, lock_time);
+        $display("netlist_cells: ok: MULT18X18D %0d products in 4 sign modes, ODDRX1F %0d bit pairs, DP16KD %0d rounds of x18/x9, x4, x36, EHXPLLL (SYS_MHZ %0d) tmds %0d, pix %0d, sys %0d ps from a 40000 ps input, LOCK at %0d ps",
+                 mul_checks, ddr_checks, ram_checks, `PLL_SYS_MHZ, per_tmds, per_pix, per_sys, lock_time);
         $finish;
     end
 endmodule
