@@ -148,6 +148,58 @@ module gpu_axil_slave (
     end
 
     wire unused = &{1'b0, s_axi_awaddr[1:0], s_axi_araddr[1:0], s_axi_awprot, s_axi_arprot};
+
+`ifdef FORMAL
+    // ---- formal properties (tests/formal/gpu_axil_slave.sby: proved by induction) ----
+    // The bus rules, assumed and asserted, are in tests/formal/gpu_axil_slave_check.sv (ZipCPU's
+    // faxil_slave way), with a model of the accepted requests; here, the invariants that tie the
+    // holding registers and the read answer to that model.
+    wire        f_past_valid;
+    wire [1:0]  f_aw_n, f_w_n, f_ar_n, f_rd_state;
+    wire [16:2] f_aw_addr0, f_aw_addr1, f_ar_addr0, f_ar_addr1;
+    wire [31:0] f_w_data0, f_w_data1, f_rdata;
+    wire [3:0]  f_w_strb0, f_w_strb1;
+    gpu_axil_slave_check f_check (
+        .clk(clk), .rst(rst),
+        .s_axi_awvalid(s_axi_awvalid), .s_axi_awready(s_axi_awready), .s_axi_awaddr(s_axi_awaddr),
+        .s_axi_awprot(s_axi_awprot),
+        .s_axi_wvalid(s_axi_wvalid), .s_axi_wready(s_axi_wready), .s_axi_wdata(s_axi_wdata),
+        .s_axi_wstrb(s_axi_wstrb),
+        .s_axi_bvalid(s_axi_bvalid), .s_axi_bready(s_axi_bready), .s_axi_bresp(s_axi_bresp),
+        .s_axi_arvalid(s_axi_arvalid), .s_axi_arready(s_axi_arready), .s_axi_araddr(s_axi_araddr),
+        .s_axi_arprot(s_axi_arprot),
+        .s_axi_rvalid(s_axi_rvalid), .s_axi_rready(s_axi_rready), .s_axi_rdata(s_axi_rdata),
+        .s_axi_rresp(s_axi_rresp),
+        .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr), .bus_wdata(bus_wdata),
+        .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid),
+        .f_past_valid(f_past_valid),
+        .f_aw_n(f_aw_n), .f_aw_addr0(f_aw_addr0), .f_aw_addr1(f_aw_addr1),
+        .f_w_n(f_w_n), .f_w_data0(f_w_data0), .f_w_data1(f_w_data1), .f_w_strb0(f_w_strb0),
+        .f_w_strb1(f_w_strb1),
+        .f_ar_n(f_ar_n), .f_ar_addr0(f_ar_addr0), .f_ar_addr1(f_ar_addr1),
+        .f_rd_state(f_rd_state), .f_rdata(f_rdata)
+    );
+    // A write is held (aw_full_q, w_full_q) until it is made, then answered (s_axi_bvalid): the
+    // queued writes are the answered one, if any, then the held one. Likewise a read is held
+    // (ar_full_q), then out (rd_wait_q: gpu_regs answers now) or answered and waiting (rvalid_q).
+    wire f_rd_out = rd_wait_q || rvalid_q;
+    always @(*) begin
+        if (f_past_valid) begin
+            assert(f_aw_n == {1'b0, aw_full_q} + {1'b0, s_axi_bvalid});
+            assert(f_w_n == {1'b0, w_full_q} + {1'b0, s_axi_bvalid});
+            if (aw_full_q) assert(aw_addr_q == (s_axi_bvalid ? f_aw_addr1 : f_aw_addr0));
+            if (w_full_q) begin
+                assert(w_data_q == (s_axi_bvalid ? f_w_data1 : f_w_data0));
+                assert(w_strb_q == (s_axi_bvalid ? f_w_strb1 : f_w_strb0));
+            end
+            assert(f_ar_n == {1'b0, ar_full_q} + {1'b0, f_rd_out});
+            if (ar_full_q) assert(ar_addr_q == (f_rd_out ? f_ar_addr1 : f_ar_addr0));
+            assert(rd_wait_q == (f_rd_state == 2'd1));
+            assert(rvalid_q == (f_rd_state == 2'd2));
+            if (rvalid_q) assert(rdata_q == f_rdata);
+        end
+    end
+`endif
 endmodule
 
 `default_nettype wire

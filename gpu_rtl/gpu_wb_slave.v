@@ -68,6 +68,31 @@ module gpu_wb_slave (
     assign wb_ack   = request && ((wr_done_q && !wr_err_q) || (rd_wait_q && bus_rvalid));
     assign wb_err   = request && wr_done_q && wr_err_q;
     assign wb_dat_r = bus_rdata;  // gpu_regs returns 0 outside a read's answer
+
+`ifdef FORMAL
+    // ---- formal properties (tests/formal/gpu_wb_slave.sby: proved by induction) ----
+    // The bus rules, assumed and asserted, are in tests/formal/gpu_wb_slave_check.sv (ZipCPU's
+    // fwb_slave way); here, the invariants that tie the flops to its model of the bus.
+    wire f_past_valid, f_wr_due, f_refused_due, f_rd_due;
+    gpu_wb_slave_check f_check (
+        .clk(clk), .rst(rst),
+        .wb_cyc(wb_cyc), .wb_stb(wb_stb), .wb_we(wb_we), .wb_adr(wb_adr), .wb_dat_w(wb_dat_w),
+        .wb_sel(wb_sel), .wb_dat_r(wb_dat_r), .wb_ack(wb_ack), .wb_err(wb_err),
+        .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr), .bus_wdata(bus_wdata),
+        .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid),
+        .f_past_valid(f_past_valid), .f_wr_due(f_wr_due), .f_refused_due(f_refused_due),
+        .f_rd_due(f_rd_due)
+    );
+    // Each flop says what the last clock began: a write (refused or not) or a read, answered now
+    // if the master still asks. So a request's first clock is exactly an issue.
+    always @(*) begin
+        if (f_past_valid) begin
+            assert(wr_done_q == f_wr_due);
+            assert(wr_err_q == f_refused_due);
+            assert(rd_wait_q == f_rd_due);
+        end
+    end
+`endif
 endmodule
 
 `default_nettype wire
