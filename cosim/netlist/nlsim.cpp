@@ -214,6 +214,7 @@ public:
     explicit NetlistRun(const Options &o) : opt_(o), top_(new Vnetlist(context_.get())), rx_(kUartCpb)
     {
         vga_monitor_reset(&monitor_);
+        vga_monitor_arm(&monitor_);  // the first whole frame, then each one after it
     }
     ~NetlistRun() { top_->final(); }
     int run();
