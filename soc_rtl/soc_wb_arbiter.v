@@ -82,6 +82,47 @@ module soc_wb_arbiter (
     assign m1_ack   = grant && s_ack;
     assign m1_err   = grant && s_err;
     assign m1_dat_r = grant ? s_dat_r : 32'd0;
+
+`ifdef FORMAL
+    // ---- formal properties of the grant (tests/formal/soc_wb_arbiter.sby, proved by induction) ----
+    // They name grant, which the checker (tests/formal/soc_wb_arbiter_check.sv: the Wishbone rules
+    // of every port, routing, bounded waits, all from the ports) cannot: yosys reads no hierarchical
+    // names. They hold whatever the inputs do, so they are asserted, never assumed.
+    reg f_past_valid = 1'b0;
+    reg f_cycle_q;      // last clock, out of reset, had a cycle on the bus
+    reg f_grant_q;      // grant last clock
+    reg f_last_q;       // the master granted in the last clock with a cycle on the bus ("had it last")
+    always @(posedge clk) begin
+        f_past_valid <= 1'b1;
+        f_cycle_q    <= !rst && s_cyc;
+        f_grant_q    <= grant;
+        if (rst)        f_last_q <= 1'b0;
+        else if (s_cyc) f_last_q <= grant;
+    end
+    // The master that owned last clock's cycle still holds its cyc: that cycle goes on.
+    wire f_owner_holds = f_past_valid && f_cycle_q && (f_grant_q ? m1_cyc : m0_cyc);
+
+    always @(*) begin
+        // Work-conserving: a master with cyc never waits on an idle bus, so a waiting master gets
+        // the bus in the first clock the other's cyc is low: it waits for one cycle of it at most.
+        if (m0_cyc || m1_cyc) assert(s_cyc);
+        // Held: the owner keeps the bus for its whole cycle, every beat of it.
+        if (f_owner_holds) assert(grant == f_grant_q);
+        // Round robin: both asking for a free bus, the one that did not have it last wins (m1
+        // after reset).
+        if (f_past_valid && !f_owner_holds && m0_cyc && m1_cyc) assert(grant == !f_last_q);
+        // Answers reach the owner only; the other sees dat_r 0.
+        if (grant)  assert(!m0_ack && !m0_err && m0_dat_r == 32'd0);
+        if (!grant) assert(!m1_ack && !m1_err && m1_dat_r == 32'd0);
+        // Invariants for the induction: the two flops are what the header says they are.
+        if (f_past_valid) assert(busy_q == f_cycle_q && owner_q == f_last_q);
+        // Covers: a handover in the same clock, either way; a tie on a free bus won by each master.
+        cover(f_past_valid && f_cycle_q && !f_grant_q && !f_owner_holds && s_cyc && grant);
+        cover(f_past_valid && f_cycle_q && f_grant_q && !f_owner_holds && s_cyc && !grant);
+        cover(f_past_valid && !f_owner_holds && m0_cyc && m1_cyc && !grant);
+        cover(f_past_valid && !f_owner_holds && m0_cyc && m1_cyc && grant);
+    end
+`endif
 endmodule
 
 `default_nettype wire
