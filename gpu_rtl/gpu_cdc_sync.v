@@ -16,6 +16,12 @@ module gpu_cdc_sync #(
     input  wire             clk,            // destination clock
     input  wire [WIDTH-1:0] in,             // source domain (or asynchronous)
     output wire [WIDTH-1:0] out             // clk domain
+`ifdef FORMAL
+    ,
+    // Formal only: the flops, stage k in bits k*WIDTH +: WIDTH, for a caller's invariants (yosys
+    // reads no hierarchical names such as u_sync.sync_q; gpu_cdc_pulse's proof names its flops).
+    output wire [STAGES*WIDTH-1:0] f_sync
+`endif
 );
     (* ASYNC_REG = "TRUE" *) reg [WIDTH-1:0] sync_q [0:STAGES-1];
     integer i;
@@ -27,6 +33,13 @@ module gpu_cdc_sync #(
         for (i = 1; i < STAGES; i = i + 1) sync_q[i] <= sync_q[i - 1];
     end
     assign out = sync_q[STAGES - 1];
+
+`ifdef FORMAL
+    genvar f_k;
+    generate for (f_k = 0; f_k < STAGES; f_k = f_k + 1) begin : g_f_sync
+        assign f_sync[f_k*WIDTH +: WIDTH] = sync_q[f_k];
+    end endgenerate
+`endif
 endmodule
 
 `default_nettype wire

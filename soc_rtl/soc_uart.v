@@ -257,6 +257,178 @@ module soc_uart #(
             end
         end
     end
+`ifdef FORMAL
+    // ---- formal properties (tests/formal/soc_uart.sby, with the bus rules of soc_uart_check.sv) ----
+    // Invariants and FIFO properties over the module's own state (yosys reads no hierarchical
+    // names, so they live here). Every register is reset in the first clock (the checker's
+    // assumption); rst may come again at any clock.
+    reg f_past_valid = 1'b0;
+    always @(posedge clk) f_past_valid <= 1'b1;
+
+    // The bus answer: ack or err one clock after the request's first clock, never both.
+    always @(*) if (f_past_valid) assert(!(ack_q && err_q));
+    always @(posedge clk) begin
+        if (f_past_valid) begin
+            assert(ack_q == $past(!rst && accept && known));
+            assert(err_q == $past(!rst && accept && !known));
+        end
+    end
+
+    // ---- TX FIFO: level, full, empty; a write when full dropped, not written ----
+    wire [TXW:0] f_tx_level = tx_wr_q - tx_rd_q;
+    always @(*) begin
+        if (f_past_valid) begin
+            assert(f_tx_level <= TX_DEPTH[TXW:0]);
+            assert(tx_empty == (f_tx_level == 0));
+            assert(tx_full == (f_tx_level == TX_DEPTH[TXW:0]));
+        end
+    end
+    always @(posedge clk) begin
+        if (f_past_valid && !$past(rst)) begin
+            assert(tx_wr_q == $past(tx_wr_q + {{TXW{1'b0}}, tx_push}));
+            assert(tx_rd_q == $past(tx_rd_q + {{TXW{1'b0}}, tx_load}));
+            if ($past(accept && wb_we && is_data && tx_full)) assert(tx_wr_q == $past(tx_wr_q));
+        end
+    end
+
+    // TX: two tracked bytes. Any two successive writes (anyconst: the pointer value of the first,
+    // and both bytes) leave the FIFO in order with their values: after the first is read, the next
+    // read is the second.
+    (* anyconst *) reg [TXW:0] f_tx_first;
+    (* anyconst *) reg [7:0]   f_tx_d1, f_tx_d2;
+    wire [TXW:0] f_tx_second = f_tx_first + 1'b1;
+    wire f_tx_push1 = tx_push && tx_wr_q == f_tx_first && wb_dat_w == f_tx_d1;
+    wire f_tx_push2 = tx_push && tx_wr_q == f_tx_second && wb_dat_w == f_tx_d2;
+    wire f_tx_pop1 = tx_load && tx_rd_q == f_tx_first;
+    wire f_tx_pop2 = tx_load && tx_rd_q == f_tx_second;
+    localparam [1:0] F_NONE = 2'd0, F_FIRST = 2'd1, F_BOTH = 2'd2, F_SECOND = 2'd3;  // what is held
+    reg [1:0] f_tx_st = F_NONE;
+    always @(posedge clk) begin
+        if (rst) f_tx_st <= F_NONE;
+        else case (f_tx_st)
+            F_NONE:   if (f_tx_push1) f_tx_st <= F_FIRST;
+            F_FIRST:  if (f_tx_pop1) f_tx_st <= f_tx_push2 ? F_SECOND : F_NONE;
+                      else if (f_tx_push2) f_tx_st <= F_BOTH;
+            F_BOTH:   if (f_tx_pop1) f_tx_st <= F_SECOND;
+            default:  if (f_tx_pop2) f_tx_st <= F_NONE;
+        endcase
+    end
+    wire [TXW:0] f_tx_first_at = f_tx_first - tx_rd_q;    // its place from the oldest, 0 first
+    wire [TXW:0] f_tx_second_at = f_tx_second - tx_rd_q;
+    wire [7:0] f_tx_mem1 = tx_fifo[f_tx_first[TXW-1:0]];
+    wire [7:0] f_tx_mem2 = tx_fifo[f_tx_second[TXW-1:0]];
+    always @(*) begin
+        if (f_past_valid) begin
+            case (f_tx_st)
+                F_FIRST:  assert(f_tx_first_at < f_tx_level && f_tx_mem1 == f_tx_d1);
+                F_BOTH:   assert(f_tx_second_at < f_tx_level && f_tx_first_at < f_tx_second_at
+                                 && f_tx_mem1 == f_tx_d1 && f_tx_mem2 == f_tx_d2);
+                F_SECOND: assert(tx_rd_q == f_tx_second && !tx_empty && f_tx_mem2 == f_tx_d2);
+                default: ;
+            endcase
+            // the reads: the shifter is loaded with the tracked bytes, in order
+            if (f_tx_pop1 && f_tx_st != F_NONE && f_tx_st != F_SECOND)
+                assert(tx_fifo[tx_rd_q[TXW-1:0]] == f_tx_d1);
+            if (f_tx_pop2 && f_tx_st == F_SECOND) assert(tx_fifo[tx_rd_q[TXW-1:0]] == f_tx_d2);
+        end
+    end
+
+    // TX line: the byte the shifter was loaded with goes out as start, 8 bits LSB first, stop.
+    reg [7:0] f_tx_byte = 8'd0;      // the byte of the current (or last) frame
+    always @(posedge clk) if (!rst && tx_load) f_tx_byte <= tx_fifo[tx_rd_q[TXW-1:0]];
+    wire [9:0]  f_tx_frame = {1'b1, f_tx_byte, 1'b0};                   // bit 0 first
+    wire [3:0]  f_tx_sent = 4'd9 - tx_bits_q;                           // the frame bit on the line
+    wire [17:0] f_tx_left = {9'h1FF, 1'b1, f_tx_byte} >> f_tx_sent;     // what tx_shift_q holds
+    always @(*) begin
+        if (f_past_valid) begin
+            assert(tx_bits_q <= 4'd9 && tx_timer_q <= BIT_CLKS);
+            if (!tx_busy_q) assert(uart_tx && tx_bits_q == 4'd0);
+            else assert(uart_tx == f_tx_frame[f_tx_sent] && tx_shift_q == f_tx_left[8:0]);
+        end
+    end
+
+    // ---- RX FIFO: the head register and the RAM behind it ----
+    wire [RXW:0] f_rx_mem_level = rx_wr_q - rx_rd_q;
+    wire [RXW:0] f_rx_head_ptr = rx_rd_q - 1'b1;   // the RAM entry the head was read from
+    always @(*) begin
+        if (f_past_valid) begin
+            assert(rx_level_q <= RX_DEPTH[RXW:0] && f_rx_mem_level <= RX_DEPTH[RXW:0]);
+            assert(rx_level_q == f_rx_mem_level + {{RXW{1'b0}}, rx_head_valid_q});
+            assert(rx_full == (rx_level_q == RX_DEPTH[RXW:0]));
+        end
+    end
+    always @(posedge clk) begin
+        if (f_past_valid && !$past(rst)) begin
+            // a byte is written when there is room, else counted as an overrun (saturating)
+            assert(rx_level_q == $past(rx_level_q + {{RXW{1'b0}}, rx_push && !rx_full}
+                                       - {{RXW{1'b0}}, rx_pop}));
+            if ($past(rx_push && rx_full))
+                assert(overrun_q == $past(overrun_q) + {15'd0, $past(overrun_q) != 16'hFFFF});
+            else
+                assert(overrun_q == $past(overrun_q));
+            // a DATA read returns the head with bit 8 set if it holds a byte, else 0
+            if ($past(accept && !wb_we && is_data))
+                assert(wb_dat_r == ($past(rx_head_valid_q) ? $past(rx_word) : 32'd0));
+        end
+    end
+
+    // RX: two tracked bytes, from the receiver (a good byte with room) to a DATA read's answer.
+    (* anyconst *) reg [RXW:0] f_rx_first;
+    (* anyconst *) reg [7:0]   f_rx_d1, f_rx_d2;
+    wire [RXW:0] f_rx_second = f_rx_first + 1'b1;
+    wire f_rx_push1 = rx_push && !rx_full && rx_wr_q == f_rx_first && rx_shift_q == f_rx_d1;
+    wire f_rx_push2 = rx_push && !rx_full && rx_wr_q == f_rx_second && rx_shift_q == f_rx_d2;
+    wire f_rx_pop1 = rx_pop && f_rx_head_ptr == f_rx_first;
+    wire f_rx_pop2 = rx_pop && f_rx_head_ptr == f_rx_second;
+    reg [1:0] f_rx_st = F_NONE;
+    always @(posedge clk) begin
+        if (rst) f_rx_st <= F_NONE;
+        else case (f_rx_st)
+            F_NONE:   if (f_rx_push1) f_rx_st <= F_FIRST;
+            F_FIRST:  if (f_rx_pop1) f_rx_st <= f_rx_push2 ? F_SECOND : F_NONE;
+                      else if (f_rx_push2) f_rx_st <= F_BOTH;
+            F_BOTH:   if (f_rx_pop1) f_rx_st <= F_SECOND;
+            default:  if (f_rx_pop2) f_rx_st <= F_NONE;
+        endcase
+    end
+    wire [RXW:0] f_rx_first_at = f_rx_first - rx_rd_q;   // place in the RAM from its oldest
+    wire [RXW:0] f_rx_second_at = f_rx_second - rx_rd_q;
+    wire f_rx_mem1 = f_rx_first_at < f_rx_mem_level && rx_mem[f_rx_first[RXW-1:0]] == f_rx_d1;
+    wire f_rx_mem2 = f_rx_second_at < f_rx_mem_level && rx_mem[f_rx_second[RXW-1:0]] == f_rx_d2;
+    wire f_rx_head1 = rx_head_valid_q && f_rx_head_ptr == f_rx_first && rx_head_q == f_rx_d1;
+    wire f_rx_head2 = rx_head_valid_q && f_rx_head_ptr == f_rx_second && rx_head_q == f_rx_d2;
+    always @(*) begin
+        if (f_past_valid) begin
+            case (f_rx_st)
+                F_FIRST:  assert(f_rx_head1 || f_rx_mem1);
+                F_BOTH:   assert((f_rx_head1 || f_rx_mem1) && f_rx_mem2);
+                F_SECOND: assert(f_rx_head2 || (!rx_head_valid_q && rx_rd_q == f_rx_second
+                                                && f_rx_mem2));
+                default: ;
+            endcase
+        end
+    end
+    // ... and the DATA reads that pop them answer with them, in order
+    always @(posedge clk) begin
+        if (f_past_valid && !$past(rst)) begin
+            if ($past(f_rx_pop1 && (f_rx_st == F_FIRST || f_rx_st == F_BOTH)))
+                assert(wb_dat_r == (({24'd0, f_rx_d1} << soc_pkg::SOC_UART_DATA_BYTE_LSB)
+                                    | (32'd1 << soc_pkg::SOC_UART_DATA_VALID_LSB)));
+            if ($past(f_rx_pop2 && f_rx_st == F_SECOND))
+                assert(wb_dat_r == (({24'd0, f_rx_d2} << soc_pkg::SOC_UART_DATA_BYTE_LSB)
+                                    | (32'd1 << soc_pkg::SOC_UART_DATA_VALID_LSB)));
+        end
+    end
+
+    // Covers: both tracked TX bytes held behind a frame on the line; both tracked RX bytes
+    // read; the TX FIFO full; an RX overrun counted.
+    always @(posedge clk) begin
+        cover(f_past_valid && f_tx_st == F_BOTH && tx_busy_q);
+        cover(f_past_valid && !$past(rst) && $past(f_rx_st == F_SECOND && f_rx_pop2));
+        cover(f_past_valid && tx_full);
+        cover(f_past_valid && overrun_q == 16'd1);
+    end
+`endif
 endmodule
 
 `default_nettype wire

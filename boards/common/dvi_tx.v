@@ -112,6 +112,129 @@ module dvi_tx (
             end
         end
     end
+`ifdef FORMAL
+    // ---- formal properties of the crossing (tests/formal/dvi_tx.sby; the clocks at 5:1 from one
+    // PLL, any phase, from dvi_tx_check.sv) ----
+    // Each domain's properties hold once a reset has been seen in it (the registers have no initial
+    // values).
+    reg f_rst_pix_seen = 1'b0;   // clk_pix
+    reg f_rst_tmds_seen = 1'b0;  // clk_tmds
+    always @(posedge clk_pix) if (rst_pix) f_rst_pix_seen <= 1'b1;
+    always @(posedge clk_tmds) if (rst_tmds) f_rst_tmds_seen <= 1'b1;
+    wire f_valid = f_rst_pix_seen && f_rst_tmds_seen;
+    // The contract's resets (dvi_tx_check.sv assumes them as ulx3s_system makes them): each held
+    // from configuration until at least one edge of its clock, rst_tmds released only once the
+    // pixel domain has been reset, and no later than rst_pix.
+    always @(*) begin
+        assert((f_rst_pix_seen || rst_pix) && (f_rst_tmds_seen || rst_tmds));
+        if (!rst_pix) assert(!rst_tmds);
+        if (!rst_tmds) assert(f_rst_pix_seen);
+    end
+
+    // The words presented, numbered in the pixel domain: word n is in sym_*_pix from the n-th
+    // clk_pix edge after rst_pix (mod 8) until the next.
+    reg [2:0] f_seq_pix = 3'd0;  // clk_pix
+    always @(posedge clk_pix) f_seq_pix <= rst_pix ? 3'd0 : f_seq_pix + 3'd1;
+
+    // TMDS domain: when the words last changed, as its edges see it (tog_pix at each edge), and
+    // what each load took: the word, its number, the number of the load before.
+    reg       f_tog_tmds = 1'b0;    // tog_pix as the last clk_tmds edge saw it (0 in rst_tmds)
+    reg [1:0] f_since = 2'd3;       // clk_tmds edges since that changed, up to 3
+    reg [1:0] f_loads = 2'd0;       // loads since rst_tmds, up to 2
+    reg [2:0] f_pos = 3'd0;         // clk_tmds edges since the last load, up to 7
+    reg [39:0] f_word = 40'd0;      // the words of the last load
+    reg [2:0] f_seq = 3'd0;         // ... their number
+    reg [2:0] f_seq_before = 3'd0;  // the number of the load before
+    always @(posedge clk_tmds) begin
+        if (rst_tmds) begin            // as tog_sync_tmds (rst_pix holds tog_pix at 0 meanwhile)
+            f_tog_tmds <= 1'b0;
+            f_since <= 2'd3;
+            f_loads <= 2'd0;
+            f_pos <= 3'd0;
+        end else begin
+            f_tog_tmds <= tog_pix;
+            if (tog_pix != f_tog_tmds) f_since <= 2'd1;
+            else if (f_since != 2'd3) f_since <= f_since + 2'd1;
+            if (load_tmds) begin
+                f_word <= words_pix;
+                f_seq <= f_seq_pix;
+                f_seq_before <= f_seq;
+                f_pos <= 3'd0;
+                if (f_loads != 2'd2) f_loads <= f_loads + 2'd1;
+            end else if (f_pos != 3'd7) begin
+                f_pos <= f_pos + 3'd1;
+            end
+        end
+    end
+
+    always @(*) begin
+        if (f_valid && !rst_tmds) begin
+            // The sample's margins: a load samples the words at the third clk_tmds edge after they
+            // changed (the edge that coincides with the change sees the old toggle), so they have
+            // been stable for at least two clk_tmds periods, and (5:1) stay so for two more.
+            if (load_tmds) assert(tog_pix == f_tog_tmds && f_since == 2'd2);
+            // Every word once, in order, from the first encoded after rst_pix.
+            if (f_loads == 2'd1) assert(f_seq == 3'd1);
+            if (f_loads == 2'd2) assert(f_seq == f_seq_before + 3'd1);
+            // The load took the word still presented: the same word, the same number.
+            if (f_loads != 2'd0 && f_pos <= 3'd1) assert(f_seq == f_seq_pix && f_word == words_pix);
+            // Back to back: the next load comes at the fifth clk_tmds edge, no sooner, no later.
+            if (f_loads != 2'd0) assert(f_pos <= 3'd4 && (!load_tmds || f_pos == 3'd4));
+        end
+    end
+
+    // The serialisers: f_pos edges after a load, channel k has sent (or is sending) bit pairs
+    // 0..f_pos of the word the load took, and holds the rest; before the first load, zeros.
+    always @(*) begin : f_serial
+        integer k;
+        if (f_valid && !rst_tmds) begin
+            for (k = 0; k < 4; k = k + 1) begin
+                if (f_loads == 2'd0) begin
+                    assert(ddr_d0[k] == 1'b0 && ddr_d1[k] == 1'b0 && shift_tmds[8*k +: 8] == 8'd0);
+                end else begin
+                    assert(ddr_d0[k] == f_word[10*k + 2*f_pos]);
+                    assert(ddr_d1[k] == f_word[10*k + 2*f_pos + 1]);
+                    assert(shift_tmds[8*k +: 8] == (f_word[10*k+2 +: 8] >> (2*f_pos)));
+                    if (k == 3) assert(f_word[10*k +: 10] == CLK_WORD);
+                end
+            end
+        end
+    end
+
+    // Invariants of the toggle's way (the induction's): it is the word number's parity; the first
+    // sync flop is what the last edge saw, and the change is at the place f_since says.
+    always @(*) begin
+        if (f_valid) begin
+            assert(tog_pix == f_seq_pix[0]);
+            if (rst_pix) assert(f_seq_pix == 3'd0 && f_loads == 2'd0);
+            // the word presented is the last one loaded, or the one after it still on its way
+            if (!rst_tmds)
+                assert(f_seq_pix == (f_loads == 2'd0 ? 3'd0 : f_seq)
+                                    + {2'd0, tog_pix != tog_seen_tmds});
+            // the cadence (5:1): the words change between the second and third edges after a load
+            if (!rst_tmds && f_loads != 2'd0) begin
+                case (f_pos)
+                    3'd0, 3'd1: assert(f_since == 2'd3 && tog_pix == f_tog_tmds);
+                    3'd2: assert(f_since == 2'd3);
+                    3'd3: assert(f_since == 2'd1 && tog_pix == f_tog_tmds);
+                    default: assert(f_since == 2'd2 && tog_pix == f_tog_tmds);
+                endcase
+            end
+            if (!rst_tmds) begin
+                assert(tog_sync_tmds[0] == f_tog_tmds);
+                case (f_since)
+                    2'd1: assert(tog_sync_tmds[1] != tog_sync_tmds[0]
+                                 && tog_seen_tmds == tog_sync_tmds[1]);
+                    2'd2: assert(tog_sync_tmds[1] == tog_sync_tmds[0]
+                                 && tog_seen_tmds != tog_sync_tmds[1]);
+                    2'd3: assert(tog_sync_tmds[1] == tog_sync_tmds[0]
+                                 && tog_seen_tmds == tog_sync_tmds[1]);
+                    default: ;
+                endcase
+            end
+        end
+    end
+`endif
 endmodule
 
 `default_nettype wire

@@ -108,6 +108,12 @@ module tmds_encoder (
             symbol <= de ? sym_d : token;
         end
     end
+`ifdef FORMAL
+    // ---- formal (tests/formal/dvi_tx.sby): the range argument above, once a reset has been seen ----
+    reg f_reset_seen = 1'b0;
+    always @(posedge clk_pix) if (rst_pix) f_reset_seen <= 1'b1;
+    always @(*) if (f_reset_seen) assert(!cnt[0] && cnt >= -5'sd8 && cnt <= 5'sd8);
+`endif
 endmodule
 
 `default_nettype wire
