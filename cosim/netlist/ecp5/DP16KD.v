@@ -19,7 +19,8 @@
 // the pin inverted, or a constant "0"/"1" (nextpnr's packed cells write these).
 // Anything else — REGMODE "OUTREG", a width outside 1, 2, 4, 9, 18, 36, 36 on one port only — is a
 // clear error at elaboration, never a silently wrong model.
-// Unit test: tests/boards/netlist_cells.sh (each width and write mode against a behavioural RAM).
+// Unit test: tests/boards/netlist_cells.sh (the widths the board uses, 18/9, 4 and 36, and the three
+// write modes, against a flat array of the block's bits; widths 1 and 2 are not exercised).
 `default_nettype none
 `timescale 1ps / 1ps
 
@@ -447,35 +448,21 @@ module DP16KD (
         end
     endtask
 
-    generate
-        if (RESETMODE == "ASYNC") begin : g_async_reset
-            always @(posedge clk_a or posedge rst_a) begin
-                if (rst_a) do_a <= 18'h0;
-                else port_a_edge();
-            end
-            always @(posedge clk_b or posedge rst_b) begin
-                if (rst_b) begin
-                    do_b <= 18'h0;
-                    do_a36 <= 18'h0;
-                end else begin
-                    port_b_edge();
-                end
-            end
-        end else begin : g_sync_reset
-            always @(posedge clk_a) begin
-                if (rst_a) do_a <= 18'h0;
-                else port_a_edge();
-            end
-            always @(posedge clk_b) begin
-                if (rst_b) begin
-                    do_b <= 18'h0;
-                    do_a36 <= 18'h0;
-                end else begin
-                    port_b_edge();
-                end
-            end
+    // RST clears the output register at the clock edge (SYNC), or at once (ASYNC: the reset is
+    // also an edge the block waits for).
+    wire arst_a = RESETMODE == "ASYNC" && rst_a, arst_b = RESETMODE == "ASYNC" && rst_b;
+    always @(posedge clk_a or posedge arst_a) begin
+        if (rst_a) do_a <= 18'h0;
+        else port_a_edge();
+    end
+    always @(posedge clk_b or posedge arst_b) begin
+        if (rst_b) begin
+            do_b <= 18'h0;
+            do_a36 <= 18'h0;
+        end else begin
+            port_b_edge();
         end
-    endgenerate
+    end
     wire [17:0] out_a = DATA_WIDTH_A == 36 ? do_a36 : do_a;
     assign {DOA17, DOA16, DOA15, DOA14, DOA13, DOA12, DOA11, DOA10, DOA9, DOA8, DOA7, DOA6, DOA5,
             DOA4, DOA3, DOA2, DOA1, DOA0} = out_a;
