@@ -54,6 +54,8 @@ module litedram_tb_top (
     assign sdram_dq_pins = dq;
     assign ctrl_dq_oe = !dut.TRELLIS_IO.T;
 
+    // user_clk and user_rst are the core's own clock and reset handed back: unused here.
+    // verilator lint_off PINCONNECTEMPTY
     litedram_core dut (
         .clk(clk), .rst(rst), .init_done(init_done), .init_error(init_error),
         .sdram_a(sdram_a), .sdram_ba(sdram_ba), .sdram_cas_n(sdram_cas_n), .sdram_cke(sdram_cke),
@@ -67,6 +69,7 @@ module litedram_tb_top (
         .user_port_wb_sel(wb_sel), .user_port_wb_cyc(wb_cyc), .user_port_wb_stb(wb_stb),
         .user_port_wb_we(wb_we), .user_port_wb_ack(wb_ack), .user_port_wb_err(wb_err)
     );
+    // verilator lint_on PINCONNECTEMPTY
 endmodule
 
 `default_nettype wire
