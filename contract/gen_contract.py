@@ -314,7 +314,7 @@ def soc_gen_c(m):
         define(f"SOC_{r['name']}_BASE", f"0x{r['base']:08X}u", ("cached: " if r["cached"] else "uncached: ") + r["doc"])
         define(f"SOC_{r['name']}_WINDOW_BYTES", f"0x{r['window_bytes']:08X}u")
         if "default_bytes" in r:
-            define(f"SOC_{r['name']}_DEFAULT_BYTES", f"0x{r['default_bytes']:08X}u", "default build (SYS RAM_BYTES reads a build's own)")
+            define(f"SOC_{r['name']}_DEFAULT_BYTES", f"0x{r['default_bytes']:08X}u", f"default build (SYS {r['name']}_BYTES reads a build's own)")
     for region in m["region"]:
         regs = [r for r in m["reg"] if r["region"] == region["name"]]
         if not regs:

@@ -22,12 +22,17 @@
 #define SOC_RAM_BASE                     0x00000000u  /* cached: On-chip RAM: code, data, stack. Addresses from the RAM's size to the window's end answer ERR. */
 #define SOC_RAM_WINDOW_BYTES             0x00040000u
 #define SOC_RAM_DEFAULT_BYTES            0x00030000u  /* default build (SYS RAM_BYTES reads a build's own) */
+#define SOC_SDRAM_BASE                   0x40000000u  /* cached: The board's SDRAM through LiteDRAM (soc_rtl/litedram), a build option (soc_top SDRAM_BYTES, 0 = none). Addresses from the SDRAM's size to the window's end, and the whole window in a build without SDRAM, answer ERR. */
+#define SOC_SDRAM_WINDOW_BYTES           0x04000000u
+#define SOC_SDRAM_DEFAULT_BYTES          0x02000000u  /* default build (SYS SDRAM_BYTES reads a build's own) */
 #define SOC_GPU_BASE                     0x80000000u  /* uncached: The GPU's 128 KiB window: registers, palette, vertex and index buffers (contract/gpu-contract.md). */
 #define SOC_GPU_WINDOW_BYTES             0x00020000u
 #define SOC_UART_BASE                    0x81000000u  /* uncached: Serial port, 8N1 at uart_baud, with RX and TX FIFOs. */
 #define SOC_UART_WINDOW_BYTES            0x00000100u
 #define SOC_SYS_BASE                     0x82000000u  /* uncached: System: identification, clock, exit, LEDs, the machine timer. */
 #define SOC_SYS_WINDOW_BYTES             0x00000100u
+#define SOC_SDRAM_CTRL_BASE              0x83000000u  /* uncached: LiteDRAM's control registers, at the offsets of its generated csr.h: the DFI software interface of the power-up sequence (bsp/soc/sdram/sdram_init.c), init_done. ERR in a build without SDRAM. */
+#define SOC_SDRAM_CTRL_WINDOW_BYTES      0x00010000u
 
 /* UART registers: byte offsets from SOC_UART_BASE. */
 #define SOC_UART_REG_DATA                0x00u  /* rw: Write: push the TX byte [7:0] (dropped if the TX FIFO is full: check TX_FULL first). Read: [7:0] the oldest RX byte and bit 8 = valid; a read with valid set pops it. */
@@ -39,6 +44,7 @@
 #define SOC_SYS_REG_ID                   0x00u  /* ro: Reads soc.sys_id (SOC_SYS_ID_VALUE, 'SOC0'). */
 #define SOC_SYS_REG_CLK_HZ               0x04u  /* ro: The system clock in Hz, the build's value. */
 #define SOC_SYS_REG_RAM_BYTES            0x08u  /* ro: The RAM's size in bytes, the build's value. */
+#define SOC_SYS_REG_SDRAM_BYTES          0x30u  /* ro: The SDRAM's size in bytes, the build's value; 0 in a build without SDRAM. */
 #define SOC_SYS_REG_EXIT                 0x0Cu  /* wo: The firmware is done, with status [7:0]: drives soc_top's exit_valid and exit_code (a simulator ends, a board shows it). */
 #define SOC_SYS_REG_LEDS                 0x10u  /* rw: The board's LEDs [7:0]. */
 #define SOC_SYS_REG_MTIME_LO             0x18u  /* ro: Cycle counter since reset, low word. Reading it latches the high word into MTIME_HI: read LO then HI for a consistent pair. */

@@ -132,8 +132,8 @@ def socsims(table):
         if unknown:
             raise TableError(f"{where}: unknown key {sorted(unknown)[0]}")
         system = spec.get("system", "soc")
-        if system not in ("soc", "ulx3s"):
-            raise TableError(f"{where}: system = {system!r}: soc or ulx3s")
+        if system not in ("soc", "ulx3s", "sdram"):
+            raise TableError(f"{where}: system = {system!r}: soc, ulx3s or sdram")
         size = spec.get("ram", "default")
         if size not in ("default", "window"):
             raise TableError(f"{where}: ram = {size!r}: default or window (sizes are the contract's)")
@@ -322,7 +322,7 @@ def suites(table, sims, socs, families):
             raise TableError(f"{where}: run missing")
         needs = list(spec.get("needs", []))
         for used in PLACEHOLDER.findall(spec["run"]):
-            if used not in sims:
+            if used not in sims and used not in socs:
                 raise TableError(f"{where}: {{{used}}} is not a simulator of {BUILDS}")
             if used not in needs:
                 needs.append(used)
@@ -386,7 +386,8 @@ def main():
         print(" ".join(dict.fromkeys(targets)))
     if args.suites:
         for name, cost, alone, _, run in suite_list:
-            cmd = PLACEHOLDER.sub(lambda m: f'"$BUILD/{m.group(1)}/gpusim"', run)
+            cmd = PLACEHOLDER.sub(lambda m: f'"$BUILD/{m.group(1)}/'
+                                  f'{"socsim" if m.group(1) in socs else "gpusim"}"', run)
             print(f"{'suite_alone' if alone else 'suite'} {name} {cost} {cmd}")
     if args.stats:
         progs = sum(len({p.get('elf') for p in ps if 'elf' in p}) + len({p.get('host') for p in ps if 'host' in p})

@@ -1,5 +1,5 @@
 // soc_sys: the SoC's system registers (SYS in contract/soc-memory-map.md): identification, the build's
-// clock and RAM size, the exit port, the LEDs, the machine timer and the bus-error record.
+// clock, RAM and SDRAM sizes, the exit port, the LEDs, the machine timer and the bus-error record.
 //
 // Contract (bus): every request is answered in the next clock, once: wb_ack for the registers of the
 // map, wb_err for any other offset of the window. Writes honour wb_sel (byte lanes) on the rw
@@ -16,7 +16,8 @@
 
 module soc_sys #(
     parameter integer CLK_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,       // reported in CLK_HZ
-    parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES  // reported in RAM_BYTES
+    parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // reported in RAM_BYTES
+    parameter integer SDRAM_BYTES = 0                              // reported in SDRAM_BYTES
 ) (
     input  wire        clk,
     input  wire        rst,           // synchronous, active high
@@ -45,6 +46,7 @@ module soc_sys #(
     localparam [7:0] OFF_ID          = soc_pkg::SOC_SYS_REG_ID;
     localparam [7:0] OFF_CLK_HZ      = soc_pkg::SOC_SYS_REG_CLK_HZ;
     localparam [7:0] OFF_RAM_BYTES   = soc_pkg::SOC_SYS_REG_RAM_BYTES;
+    localparam [7:0] OFF_SDRAM_BYTES = soc_pkg::SOC_SYS_REG_SDRAM_BYTES;
     localparam [7:0] OFF_EXIT        = soc_pkg::SOC_SYS_REG_EXIT;
     localparam [7:0] OFF_LEDS        = soc_pkg::SOC_SYS_REG_LEDS;
     localparam [7:0] OFF_MTIME_LO    = soc_pkg::SOC_SYS_REG_MTIME_LO;
@@ -55,12 +57,13 @@ module soc_sys #(
     localparam [7:0] OFF_BUS_ERR     = soc_pkg::SOC_SYS_REG_BUS_ERR;
     localparam [31:0] CLK_HZ_VALUE    = CLK_HZ;
     localparam [31:0] RAM_BYTES_VALUE = RAM_BYTES;
+    localparam [31:0] SDRAM_BYTES_VALUE = SDRAM_BYTES;
 
     reg  ack_q, err_q;
     wire req = wb_cyc && wb_stb;
     wire accept = req && !ack_q && !err_q;
     wire [7:0] off = {wb_adr, 2'b00};
-    wire known = off == OFF_ID || off == OFF_CLK_HZ || off == OFF_RAM_BYTES || off == OFF_EXIT
+    wire known = off == OFF_ID || off == OFF_CLK_HZ || off == OFF_RAM_BYTES || off == OFF_SDRAM_BYTES || off == OFF_EXIT
               || off == OFF_LEDS || off == OFF_MTIME_LO || off == OFF_MTIME_HI
               || off == OFF_MTIMECMP_LO || off == OFF_MTIMECMP_HI || off == OFF_BUS_ERR_ADDR
               || off == OFF_BUS_ERR;
@@ -124,6 +127,7 @@ module soc_sys #(
                     OFF_ID:           wb_dat_r <= soc_pkg::SOC_SYS_ID_VALUE;
                     OFF_CLK_HZ:       wb_dat_r <= CLK_HZ_VALUE;
                     OFF_RAM_BYTES:    wb_dat_r <= RAM_BYTES_VALUE;
+                    OFF_SDRAM_BYTES:  wb_dat_r <= SDRAM_BYTES_VALUE;
                     OFF_LEDS:         wb_dat_r <= {24'd0, leds};
                     OFF_MTIME_LO:     wb_dat_r <= mtime_q[31:0];
                     OFF_MTIME_HI:     wb_dat_r <= mtime_hi_q;

@@ -1,5 +1,9 @@
 // soc_top: the whole SoC on its system clock — VexRiscv (RV32IM, 4 KiB I$ and D$), on-chip RAM, the GPU,
 // a UART and the system registers, on one Wishbone bus. Memory map: contract/soc-memory-map.md.
+// With SDRAM_BYTES > 0 the SDRAM region and its controller's registers leave soc_top as two Wishbone
+// master ports (sdram_*, sdram_ctrl_*): the controller (LiteDRAM, generated at build time, and the
+// chip's pins) belongs to the system around soc_top (soc_rtl/litedram, docs/sdram.md). Without
+// SDRAM both regions answer ERR and the ports stay idle (tie their inputs to 0).
 //
 //   VexRiscv iBus ─┐                      ┌─ soc_ram (RAM_BYTES, RAM_INIT)
 //                  ├─ soc_wb_arbiter ─ soc_wb_decoder ─┼─ gpu_wb_slave ─ gpu_top ─ VGA pins
@@ -24,6 +28,7 @@
 
 module soc_top #(
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // on-chip RAM; 192 KiB = 96 ECP5 EBR
+    parameter integer SDRAM_BYTES = 0,          // the SDRAM behind the sdram_* port; 0: none
     parameter RAM_INIT = "",                   // $readmemh image of the RAM (one 32-bit word a line)
     parameter integer CLK_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,  // clk's frequency: UART divider, SYS CLK_HZ
     parameter integer PIX_CLK_HZ = 25000000,   // clk_pix's frequency: 25 MHz, or CLK_HZ when tied to clk
@@ -32,6 +37,8 @@ module soc_top #(
     localparam integer PIX_HZ = 25000000,      // VGA 640x480@60 pixel rate
     localparam integer PIX_DIV = PIX_CLK_HZ / PIX_HZ,
     localparam integer RAM_AW = $clog2(RAM_BYTES / 4),
+    localparam integer SDRAM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),        // word address bits
+    localparam integer SDRAM_CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4),
     localparam integer POR_CLKS = 16           // reset length after power-on or ext_rst
 ) (
     input  wire       clk,            // the system clock, CLK_HZ
@@ -48,6 +55,26 @@ module soc_top #(
     output wire [3:0] vga_r,
     output wire [3:0] vga_g,
     output wire [3:0] vga_b,
+    // SDRAM (SDRAM_BYTES > 0): Wishbone B4 classic masters; cyc is the bus's, stb this region's
+    output wire                      sdram_cyc,
+    output wire                      sdram_stb,
+    output wire                      sdram_we,
+    output wire [SDRAM_AW-1:0]       sdram_adr,       // word address from SOC_SDRAM_BASE
+    output wire [31:0]               sdram_dat_w,
+    output wire [3:0]                sdram_sel,
+    output wire [2:0]                sdram_cti,
+    input  wire [31:0]               sdram_dat_r,
+    input  wire                      sdram_ack,
+    input  wire                      sdram_err,
+    output wire                      sdram_ctrl_cyc,
+    output wire                      sdram_ctrl_stb,
+    output wire                      sdram_ctrl_we,
+    output wire [SDRAM_CTRL_AW-1:0]  sdram_ctrl_adr,  // word address from SOC_SDRAM_CTRL_BASE
+    output wire [31:0]               sdram_ctrl_dat_w,
+    output wire [3:0]                sdram_ctrl_sel,
+    input  wire [31:0]               sdram_ctrl_dat_r,
+    input  wire                      sdram_ctrl_ack,
+    input  wire                      sdram_ctrl_err,
     // board
     output wire [7:0] leds,           // SYS LEDS
     output wire       gpu_frame_swapped,  // one clk cycle at each GPU buffer swap
@@ -173,7 +200,8 @@ module soc_top #(
     wire [31:0] sys_dat_r;
 
     soc_wb_decoder #(
-        .RAM_BYTES (RAM_BYTES)
+        .RAM_BYTES   (RAM_BYTES),
+        .SDRAM_BYTES (SDRAM_BYTES)
     ) u_decoder (
         .clk        (clk),
         .rst        (rst),
@@ -186,6 +214,14 @@ module soc_top #(
         .ram_stb    (ram_stb),
         .ram_dat_r  (ram_dat_r),
         .ram_ack    (ram_ack),
+        .sdram_stb  (sdram_stb),
+        .sdram_dat_r(sdram_dat_r),
+        .sdram_ack  (sdram_ack),
+        .sdram_err  (sdram_err),
+        .sdram_ctrl_stb  (sdram_ctrl_stb),
+        .sdram_ctrl_dat_r(sdram_ctrl_dat_r),
+        .sdram_ctrl_ack  (sdram_ctrl_ack),
+        .sdram_ctrl_err  (sdram_ctrl_err),
         .gpu_stb    (gpu_stb),
         .gpu_dat_r  (gpu_dat_r),
         .gpu_ack    (gpu_ack),
@@ -201,6 +237,19 @@ module soc_top #(
     );
 
     // ---- slaves ----
+    // The SDRAM's two ports: the bus's request, this region's stb (from the decoder).
+    assign sdram_cyc        = bus_cyc;
+    assign sdram_we         = bus_we;
+    assign sdram_adr        = bus_adr[SDRAM_AW-1:0];
+    assign sdram_dat_w      = bus_dat_w;
+    assign sdram_sel        = bus_sel;
+    assign sdram_cti        = bus_cti;
+    assign sdram_ctrl_cyc   = bus_cyc;
+    assign sdram_ctrl_we    = bus_we;
+    assign sdram_ctrl_adr   = bus_adr[SDRAM_CTRL_AW-1:0];
+    assign sdram_ctrl_dat_w = bus_dat_w;
+    assign sdram_ctrl_sel   = bus_sel;
+
     soc_ram #(
         .RAM_BYTES (RAM_BYTES),
         .RAM_INIT  (RAM_INIT)
@@ -290,8 +339,9 @@ module soc_top #(
     wire        buserr_write = dbus_err && dbus_we;
 
     soc_sys #(
-        .CLK_HZ    (CLK_HZ),
-        .RAM_BYTES (RAM_BYTES)
+        .CLK_HZ      (CLK_HZ),
+        .RAM_BYTES   (RAM_BYTES),
+        .SDRAM_BYTES (SDRAM_BYTES)
     ) u_sys (
         .clk          (clk),
         .rst          (rst),

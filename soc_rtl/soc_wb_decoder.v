@@ -1,18 +1,21 @@
 // soc_wb_decoder: the SoC's address decoder (contract/soc-memory-map.md), one Wishbone bus onto the
-// RAM, the GPU, the UART and SYS, with the error responder for every other address.
+// RAM, the SDRAM and its controller's registers (when the build has them), the GPU, the UART and
+// SYS, with the error responder for every other address.
 //
 // Contract: combinational select, no added latency. A slave's *_stb is cyc && stb && (the address is
 // in its region); the shared request signals (we, adr, dat_w, sel, cti) go to every slave unchanged
 // (wired in soc_top). ack/err/dat_r come from the selected slave; the slaves answer only while
 // selected, so ack and err are ORed and dat_r is multiplexed by the region. The RAM region answers
-// only below RAM_BYTES; the rest of its window, and every address outside the four regions, is
+// only below RAM_BYTES, the SDRAM region only below SDRAM_BYTES, the SDRAM_CTRL region only when
+// SDRAM_BYTES is not 0; the rest of those windows, and every address outside the regions, is
 // answered by the error responder: err one clock after the request, once per request (so a burst
 // there gets one err per beat, two clocks each), dat_r = 0. Offsets inside UART and SYS that name
 // no register are refused by those slaves themselves (they answer err).
 `default_nettype none
 
 module soc_wb_decoder #(
-    parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES  // the RAM's size: above it, err
+    parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // the RAM's size: above it, err
+    parameter integer SDRAM_BYTES = 0       // the SDRAM's size: above it, err; 0: no SDRAM, no SDRAM_CTRL
 ) (
     input  wire        clk,
     input  wire        rst,         // synchronous, active high
@@ -27,6 +30,15 @@ module soc_wb_decoder #(
     output wire        ram_stb,
     input  wire [31:0] ram_dat_r,
     input  wire        ram_ack,
+    // SDRAM (its controller's user port) and its controller's registers
+    output wire        sdram_stb,
+    input  wire [31:0] sdram_dat_r,
+    input  wire        sdram_ack,
+    input  wire        sdram_err,
+    output wire        sdram_ctrl_stb,
+    input  wire [31:0] sdram_ctrl_dat_r,
+    input  wire        sdram_ctrl_ack,
+    input  wire        sdram_ctrl_err,
     // GPU (gpu_wb_slave; it refuses partial writes with err)
     output wire        gpu_stb,
     input  wire [31:0] gpu_dat_r,
@@ -46,29 +58,49 @@ module soc_wb_decoder #(
     // Each region is a power-of-two window aligned to its size (checked by contract/gen_contract.py):
     // it is selected by the byte address bits above the window.
     localparam integer RAM_WB  = $clog2(soc_pkg::SOC_RAM_WINDOW_BYTES);
+    localparam integer SDRAM_WB = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES);
+    localparam integer SDRAM_CTRL_WB = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES);
     localparam integer GPU_WB  = $clog2(soc_pkg::SOC_GPU_WINDOW_BYTES);
     localparam integer UART_WB = $clog2(soc_pkg::SOC_UART_WINDOW_BYTES);
     localparam integer SYS_WB  = $clog2(soc_pkg::SOC_SYS_WINDOW_BYTES);
     localparam [31:0] RAM_BASE  = soc_pkg::SOC_RAM_BASE;
+    localparam [31:0] SDRAM_BASE = soc_pkg::SOC_SDRAM_BASE;
+    localparam [31:0] SDRAM_CTRL_BASE = soc_pkg::SOC_SDRAM_CTRL_BASE;
     localparam [31:0] GPU_BASE  = soc_pkg::SOC_GPU_BASE;
     localparam [31:0] UART_BASE = soc_pkg::SOC_UART_BASE;
     localparam [31:0] SYS_BASE  = soc_pkg::SOC_SYS_BASE;
     localparam [31:0] RAM_LIMIT = RAM_BYTES;   // bytes of the RAM window that hold RAM
+    localparam [31:0] SDRAM_LIMIT = SDRAM_BYTES;  // bytes of the SDRAM window that hold SDRAM
 
     generate if (RAM_BYTES < 4 || RAM_BYTES % 4 != 0 || RAM_BYTES > soc_pkg::SOC_RAM_WINDOW_BYTES) begin : g_bad_ram
         $error("soc_wb_decoder: RAM_BYTES must be a multiple of 4 within SOC_RAM_WINDOW_BYTES");
+    end endgenerate
+    generate if (SDRAM_BYTES < 0 || SDRAM_BYTES % 4 != 0 || SDRAM_BYTES > soc_pkg::SOC_SDRAM_WINDOW_BYTES) begin : g_bad_sdram
+        $error("soc_wb_decoder: SDRAM_BYTES must be 0 or a multiple of 4 within SOC_SDRAM_WINDOW_BYTES");
     end endgenerate
 
     wire [31:0] byte_adr = {adr, 2'b00};
     wire [31:0] ram_off  = byte_adr - RAM_BASE;
     wire hit_ram  = (byte_adr >> RAM_WB) == (RAM_BASE >> RAM_WB) && ram_off < RAM_LIMIT;
+    wire [31:0] sdram_off = byte_adr - SDRAM_BASE;
+    wire sdram_in_size;   // below SDRAM_BYTES (a build without SDRAM has no such address)
+    generate if (SDRAM_BYTES == 0) begin : g_no_sdram
+        assign sdram_in_size = 1'b0;
+        wire unused_sdram_off = &{1'b0, sdram_off};
+    end else begin : g_sdram
+        assign sdram_in_size = sdram_off < SDRAM_LIMIT;
+    end endgenerate
+    wire hit_sdram = (byte_adr >> SDRAM_WB) == (SDRAM_BASE >> SDRAM_WB) && sdram_in_size;
+    wire hit_sdram_ctrl = SDRAM_BYTES != 0 && (byte_adr >> SDRAM_CTRL_WB) == (SDRAM_CTRL_BASE >> SDRAM_CTRL_WB);
     wire hit_gpu  = (byte_adr >> GPU_WB) == (GPU_BASE >> GPU_WB);
     wire hit_uart = (byte_adr >> UART_WB) == (UART_BASE >> UART_WB);
     wire hit_sys  = (byte_adr >> SYS_WB) == (SYS_BASE >> SYS_WB);
-    wire hit_none = !(hit_ram || hit_gpu || hit_uart || hit_sys);
+    wire hit_none = !(hit_ram || hit_sdram || hit_sdram_ctrl || hit_gpu || hit_uart || hit_sys);
 
     wire req = cyc && stb;
     assign ram_stb  = req && hit_ram;
+    assign sdram_stb = req && hit_sdram;
+    assign sdram_ctrl_stb = req && hit_sdram_ctrl;
     assign gpu_stb  = req && hit_gpu;
     assign uart_stb = req && hit_uart;
     assign sys_stb  = req && hit_sys;
@@ -82,9 +114,11 @@ module soc_wb_decoder #(
     end
     wire none_err = none_err_q && req && hit_none;
 
-    assign ack   = ram_ack || gpu_ack || uart_ack || sys_ack;
-    assign err   = none_err || gpu_err || uart_err || sys_err;
+    assign ack   = ram_ack || sdram_ack || sdram_ctrl_ack || gpu_ack || uart_ack || sys_ack;
+    assign err   = none_err || sdram_err || sdram_ctrl_err || gpu_err || uart_err || sys_err;
     assign dat_r = hit_ram  ? ram_dat_r  :
+                   hit_sdram ? sdram_dat_r :
+                   hit_sdram_ctrl ? sdram_ctrl_dat_r :
                    hit_gpu  ? gpu_dat_r  :
                    hit_uart ? uart_dat_r :
                    hit_sys  ? sys_dat_r  : 32'd0;

@@ -190,7 +190,11 @@ std::string SdramChip::describe(SdramCommand c, const SdramPins &p) const {
     }
 }
 
-SdramDrive SdramChip::clock(const SdramPins &p) {
+SdramDrive SdramChip::clock(const SdramPins &pins) {
+    SdramPins p = pins;
+    if (cfg_.stuck_low_address_pin >= 0) {
+        p.a &= static_cast<uint16_t>(~(1u << cfg_.stuck_low_address_pin));
+    }
     const int64_t e = edge_;
     if (p.dq_driven && last_drive_.oe) {
         violation(e, "bus contention",

@@ -133,6 +133,10 @@ struct SdramConfig {
     uint16_t uninitialised_value = 0xDEAD;    // what such a read returns otherwise
     bool check_refresh = true;                // the tREFI / tREF budget (off for benches of a few us)
     bool fail_fast = false;                   // the first violation goes to stderr and failed() is true
+    // A fault of the board, not of the chip: address pin A<n> stuck low (-1: none) — every command
+    // sees the pin at 0, so rows (or columns) that differ only in it alias. For the tests that show
+    // the firmware's memory test catches a broken address line (socsim --sdram-fault-a).
+    int stuck_low_address_pin = -1;
     uint32_t max_messages = 10000;            // violations kept as text (all are counted)
 
     // The data sheet's values for speed grade -5, -6 or -7 (throws std::invalid_argument otherwise),

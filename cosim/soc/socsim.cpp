@@ -76,6 +76,10 @@
 #include "Vulx3s_system.h"
 #include "tmds_decoder.h"
 using SocModel = Vulx3s_system;
+#elif defined(SOCSIM_SDRAM)
+#include "Vsoc_sdram_sim.h"
+#include "sdram_chip.h"
+using SocModel = Vsoc_sdram_sim;
 #else
 #include "Vsoc_top.h"
 using SocModel = Vsoc_top;
@@ -118,6 +122,7 @@ struct Options {
     uint64_t max_cycles = 3000000000ull;  // 60 s of SoC time at 50 MHz
     uint64_t progress_cycles = 50000000;  // a progress line after this many cycles without a frame
     uint32_t stop_frames = 0;             // --stop-frames N: end after N frames (0: at SYS EXIT only)
+    int sdram_fault_a = -1;               // --sdram-fault-a N: the SDRAM's address pin N stuck low
     uint32_t uart_divider = (SOCSIM_CLK_HZ + SOC_UART_BAUD / 2) / SOC_UART_BAUD;  // as soc_uart rounds
     UartReplies replies;
 };
@@ -135,6 +140,9 @@ int usage()
         "                     (\\n a newline, \\f a frame with a low stop bit)\n"
         "  --max-cycles N     give up after N clocks (default 3e9: 60 s at 50 MHz)\n"
         "  --stop-frames N    end with status 0 once N frames were captured (a firmware that runs until Q)\n"
+#ifdef SOCSIM_SDRAM
+        "  --sdram-fault-a N  the SDRAM chip's address pin A<N> stuck low (0..12): a broken board\n"
+#endif
         "  Exit status: the firmware's (SYS EXIT); 1 on a harness error; 2 on a usage error.\n");
 }
 
@@ -149,6 +157,14 @@ bool parse(int argc, char **argv, Options &o)
             o.max_cycles = static_cast<uint64_t>(std::strtod(argv[++*i], nullptr));
         } else if (a == "--stop-frames" && has_value) {
             o.stop_frames = static_cast<uint32_t>(std::strtoul(argv[++*i], nullptr, 0));
+#ifdef SOCSIM_SDRAM
+        } else if (a == "--sdram-fault-a" && has_value) {
+            o.sdram_fault_a = std::atoi(argv[++*i]);
+            if (o.sdram_fault_a < 0 || o.sdram_fault_a > 12) {
+                std::fprintf(stderr, "socsim: --sdram-fault-a wants an address pin 0..12, got '%s'\n", argv[*i]);
+                return HarnessArg::Bad;
+            }
+#endif
         } else if (a == "--uart-divider" && has_value) {
             o.uart_divider = static_cast<uint32_t>(std::strtoul(argv[++*i], nullptr, 0));
         } else if (a == "--reply" && has_value) {
@@ -256,6 +272,12 @@ private:
     uint64_t next_sys_ps_ = kSysHalfPs, next_pix_ps_ = kPixHalfPs, next_tmds_ps_ = kTmdsHalfPs;
     TmdsDecoder tmds_;
     void tmds_clock();
+#endif
+#ifdef SOCSIM_SDRAM
+    // The SDRAM chip on soc_sdram_sim's pins (cosim/sdram/sdram_chip.h), clocked on the system
+    // clock's falling edge: the phase docs/sdram.md argues. Its first violation ends the run.
+    std::unique_ptr<SdramChip> sdram_;
+    void sdram_clock();
 #endif
     std::string video_error_;   // the board's: the first TMDS error, or a colour it cannot have sent
     ModelCheck model_;
@@ -468,6 +490,9 @@ void SocRun::clock_once()
     static constexpr uint64_t kHalfPs = 500000000000ull / SOCSIM_CLK_HZ;
     top_->clk = top_->clk_pix = 0;
     top_->eval();
+#ifdef SOCSIM_SDRAM
+    sdram_clock();
+#endif
     trace_dump(2 * kHalfPs * cycles_);
     const bool pixel_edge = top_->vga_pix_stb;  // outputs change on the edge where it is high
     top_->clk = top_->clk_pix = 1;
@@ -476,6 +501,29 @@ void SocRun::clock_once()
     if (pixel_edge) {
         vga_sample(top_->vga_hsync_n, top_->vga_vsync_n, top_->vga_r, top_->vga_g, top_->vga_b);
     }
+}
+#endif
+
+#ifdef SOCSIM_SDRAM
+// The chip's rising edge: it samples what the controller's output registers set at the system
+// clock's last rising edge, and drives DQ until its next edge.
+void SocRun::sdram_clock()
+{
+    SdramPins p{};
+    p.cke = top_->sdram_cke;
+    p.cs_n = top_->sdram_cs_n;
+    p.ras_n = top_->sdram_ras_n;
+    p.cas_n = top_->sdram_cas_n;
+    p.we_n = top_->sdram_we_n;
+    p.ba = top_->sdram_ba;
+    p.a = top_->sdram_a;
+    p.dqm = top_->sdram_dqm;
+    p.dq_in = top_->sdram_dq_pins;
+    p.dq_driven = top_->ctrl_dq_oe;
+    const SdramDrive d = sdram_->clock(p);
+    top_->chip_dq = d.dq;
+    top_->chip_dq_oe = d.oe;
+    top_->eval();
 }
 #endif
 
@@ -616,6 +664,13 @@ void SocRun::summary_keys(FILE *f) const
 #else
     std::fprintf(f, "leds=0x%02x\n", static_cast<unsigned>(top_->leds));  // SYS LEDS, soc_top's port
 #endif
+#ifdef SOCSIM_SDRAM
+    const SdramCounters &k = sdram_->counters();
+    std::fprintf(f, "sdram_violations=%llu\nsdram_refreshes=%llu\nsdram_words_read=%llu\nsdram_words_written=%llu\n",
+                 static_cast<unsigned long long>(sdram_->error_count()), static_cast<unsigned long long>(k.refreshes),
+                 static_cast<unsigned long long>(k.words_read), static_cast<unsigned long long>(k.words_written));
+    std::fprintf(f, "sdram_init_done=%d\n", top_->sdram_init_done ? 1 : 0);
+#endif
 }
 
 // The firmware's unfinished last line, the terminal back, and the simulation's speed.
@@ -651,6 +706,16 @@ int SocRun::run()
 #else
     top_->clk = top_->clk_pix = 0;
     top_->ext_rst = 0;
+#endif
+#ifdef SOCSIM_SDRAM
+    {
+        SdramConfig cfg;  // the -7 grade, as ULX3S boards carry (sdram_chip.h)
+        cfg.clock_period_ps = 1000000000000ull / SOCSIM_CLK_HZ;
+        cfg.strict_uninitialised_reads = false;  // a cache line refill may read words never written
+        cfg.stuck_low_address_pin = opt_.sdram_fault_a;
+        sdram_.reset(new SdramChip(cfg));
+        top_->chip_dq_oe = 0;
+    }
 #endif
     top_->uart_rx = 1;
     top_->eval();  // initial blocks: soc_ram reads the image
@@ -694,6 +759,11 @@ int SocRun::run()
         if (!reg_error_.empty()) {
             return fail("model-mismatch", "RTL and golden model disagree: %s", reg_error_.c_str());
         }
+#ifdef SOCSIM_SDRAM
+        if (sdram_->error_count() != 0) {
+            return fail("sdram", "%s", sdram_->errors().front().c_str());
+        }
+#endif
         if (top_->exit_valid) {
             firmware_status_ = top_->exit_code;
             // The last swap's frame may still be on its way to the pins (the firmware printed its

@@ -62,6 +62,38 @@ ULX3S_SIM_FILES          := boards/ulx3s/files.f
 SOCSIM_SOURCES_ulx3s      = -f $(ULX3S_SIM_FILES) $(abspath cosim/soc/tmds_decoder.cpp)
 SOCSIM_CFLAGS_ulx3s      := -DSOCSIM_BOARD_ULX3S
 SOCSIM_PREREQS_ulx3s     := $(ULX3S_SIM_FILES) $(shell sed -e 's://.*::' $(ULX3S_SIM_FILES)) cosim/soc/tmds_decoder.cpp
+# With SDRAM (cosim/soc/soc_sdram_sim.sv): soc_top and LiteDRAM's controller generated at the
+# simulated clock for the contract's SDRAM size (soc_rtl/litedram), the chip played by socsim
+# (cosim/sdram/sdram_chip.h), -DSOCSIM_SDRAM.
+SOC_SDRAM_BYTES          := $(shell printf '%d' $$(sed -n 's/^\#define SOC_SDRAM_DEFAULT_BYTES *\(0x[0-9A-Fa-f]*\)u.*/\1/p' contract/soc_map.h))
+LITEDRAM_SIM_DIR         := $(BUILD)/litedram/sim-$(SOC_SIM_CLK_HZ)
+LITEDRAM_SIM_V           := $(LITEDRAM_SIM_DIR)/litedram_core.v
+SOCSIM_SYSTEM_sdram       = soc_sdram_sim -GPIX_CLK_HZ=$(SOC_SIM_CLK_HZ) -GSDRAM_BYTES=$(SOC_SDRAM_BYTES) --timescale 1ns/1ps
+SOCSIM_SOURCES_sdram      = soc_rtl/litedram/lint.vlt soc_rtl/litedram/soc_sdram.v cosim/soc/soc_sdram_sim.sv \
+                            $(LITEDRAM_SIM_V) $(wildcard cosim/sdram/ecp5/*.v) $(abspath cosim/sdram/sdram_chip.cpp)
+SOCSIM_CFLAGS_sdram      := -DSOCSIM_SDRAM -I$(CURDIR)/cosim/sdram
+SOCSIM_PREREQS_sdram     := $(LITEDRAM_SIM_V) soc_rtl/litedram/lint.vlt soc_rtl/litedram/soc_sdram.v \
+                            cosim/soc/soc_sdram_sim.sv $(wildcard cosim/sdram/ecp5/*.v) cosim/sdram/sdram_chip.cpp \
+                            cosim/sdram/sdram_chip.h
+$(LITEDRAM_SIM_V): soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram.yml contract/soc_map.h $(SOC_VENV)
+	@mkdir -p $(LITEDRAM_SIM_DIR)
+	$(Q)$(call say,GEN,$@).venv/bin/python soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram.yml \
+	  $(LITEDRAM_SIM_DIR) --sys-clk-hz $(SOC_SIM_CLK_HZ) --expect-bytes $(SOC_SDRAM_BYTES) >$(LITEDRAM_SIM_DIR)/gen.log 2>&1 \
+	  || { tail -20 $(LITEDRAM_SIM_DIR)/gen.log; exit 1; }
+# The SDRAM's test program (tests/soc/sdram_test.c, suite soc-sdram) for the system with SDRAM:
+# the power-up sequence and the memory test of bsp/soc/sdram, LiteDRAM's generated register headers.
+SOC_SDRAM_TEST_ELF := $(BUILD)/soc/sdram_test.elf
+SOC_SDRAM_TEST_HEX := $(BUILD)/soc/sdram_test.hex
+SOC_SDRAM_TEST_SRC := tests/soc/smoke_crt0.S tests/soc/sdram_test.c bsp/soc/sdram/sdram_init.c bsp/soc/sdram/memtest.c
+$(SOC_SDRAM_TEST_ELF): $(SOC_SDRAM_TEST_SRC) $(wildcard bsp/soc/sdram/*.h bsp/soc/sdram/include/*.h bsp/soc/sdram/include/hw/*.h) \
+                       tests/soc/smoke.ld contract/soc_map.h $(LITEDRAM_SIM_V)
+	@mkdir -p $(dir $@)
+	$(Q)$(call say,LD,$@)$(RV_CC) $(SOC_RV_FLAGS) -O2 -g -std=c11 -ffreestanding -nostdlib -nostartfiles -Wall -Wextra -Werror \
+	  -Icontract -Ibsp/soc/sdram -Ibsp/soc/sdram/include -I$(LITEDRAM_SIM_DIR)/include -T tests/soc/smoke.ld \
+	  -Wl,--no-warn-rwx-segments $(SOC_SDRAM_TEST_SRC) -lgcc -o $@
+$(SOC_SDRAM_TEST_HEX): $(SOC_SDRAM_TEST_ELF) bsp/soc/elf_to_hex.py
+	$(Q)$(call say,GEN,$@)$(PYTHON) bsp/soc/elf_to_hex.py $< $@
+
 SOCSIM_GPU_FLAGS          = -GSPAN_W=$(SPAN_W)$(SOCSIM_GPU_GFLAGS)
 SOCSIM_CMD = $(call socsim_cmd,$(SOCSIM_DIR),$(SOCSIM_SYSTEM_soc),$(SOC_RAM_BYTES),$(SOCSIM_GPU_FLAGS),,)
 

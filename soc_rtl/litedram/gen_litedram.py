@@ -10,7 +10,10 @@ this repository. This script builds LiteDRAM's standalone core (litedram.gen.Lit
     OUT/include/generated/{csr,mem,soc}.h   the same for C (the firmware's SDRAM init)
     OUT/settings.txt                        the module's timings in clocks, as the controller uses them
 
-usage: gen_litedram.py CONFIG.yml OUT [--sys-clk-hz HZ] [--set tRCD=10 ...]
+usage: gen_litedram.py CONFIG.yml OUT [--sys-clk-hz HZ] [--expect-bytes N] [--set tRCD=10 ...]
+
+--expect-bytes N: stop unless the configured chip holds N bytes (the build's SDRAM_BYTES, which
+soc_top's decoder answers up to; the contract's SDRAM default_bytes).
 
 The board's chip is described here (IS42S16160G, from its data sheet), not by LiteDRAM's module
 of that name; see the class for why. --set NAME=NS overrides one timing of the SDRAM module in nanoseconds (tRP, tRCD, tWR, tRAS,
@@ -109,6 +112,7 @@ def main():
     ap.add_argument("config")
     ap.add_argument("out")
     ap.add_argument("--sys-clk-hz", type=float, help="system clock (default: the configuration's)")
+    ap.add_argument("--expect-bytes", type=int, help="the size the SoC's build expects")
     ap.add_argument("--set", action="append", default=[], metavar="NAME=NS",
                     help="override one module timing in ns (tests only)")
     args = ap.parse_args()
@@ -132,6 +136,12 @@ def main():
     if config["sdram_phy"] is not litedram_phys.GENSDRPHY:
         sys.exit("gen_litedram: only GENSDRPHY (the ULX3S's SDR SDRAM) is set up here")
 
+    module = config["sdram_module"]
+    sdram_bytes = module.nbanks * module.nrows * module.ncols * config["sdram_module_nb"]
+    if args.expect_bytes is not None and args.expect_bytes != sdram_bytes:
+        sys.exit(f"gen_litedram: {module.__name__} x{config['sdram_module_nb'] * 8} holds {sdram_bytes} bytes, "
+                 f"the build expects {args.expect_bytes}")
+
     platform = LatticePlatform(config["device"], io=[], toolchain="trellis")
     core = LiteDRAMCore(platform, config)
     with tempfile.TemporaryDirectory() as tmp:
@@ -150,12 +160,13 @@ def main():
     fix_dq_direction(verilog)
 
     # What the controller will enforce, in clocks: the figures the chip model checks against.
-    module = core.sdram.controller.settings.timing
+    timing = core.sdram.controller.settings.timing
     with open(os.path.join(args.out, "settings.txt"), "w") as f:
         f.write(f"sys_clk_hz {config['sys_clk_freq']:.0f}\n")
+        f.write(f"sdram_bytes {sdram_bytes}\n")
         f.write(f"module {config['sdram_module'].__name__}\n")
-        for key in sorted(k for k in vars(module) if k.startswith("t")):
-            f.write(f"{key} {getattr(module, key)}\n")
+        for key in sorted(k for k in vars(timing) if k.startswith("t")):
+            f.write(f"{key} {getattr(timing, key)}\n")
         f.write(f"cl {core.sdrphy.settings.cl}\n")
 
 

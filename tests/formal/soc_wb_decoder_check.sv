@@ -8,7 +8,8 @@
 // no err), after any number of clocks (RAM_BYTES tasks) or at most SLAVE_WAIT clocks after the
 // request's first (task bounded).
 // Properties (asserted): the region of an address is computed here independently (base <= address
-// < base + size, the RAM's size RAM_BYTES, not its window), and each slave's stb is cyc && stb &&
+// < base + size, the RAM's size RAM_BYTES and the SDRAM's SDRAM_BYTES, not their windows; the
+// SDRAM's registers only in a build with SDRAM), and each slave's stb is cyc && stb &&
 // (the address in its region), nothing else: exactly one slave per request, or none for an address
 // outside every region; such a request is answered by err and nothing else in its second clock
 // (one clock late, once), with dat_r 0; ack, err and dat_r are the selected slave's, so a slave's
@@ -19,6 +20,7 @@
 
 module soc_wb_decoder_check #(
     parameter integer RAM_BYTES  = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // as soc_top passes it
+    parameter integer SDRAM_BYTES = 0, // 0: a build without SDRAM
     parameter integer SLAVE_WAIT = 0   // > 0: every slave answers at most this many clocks late
 ) (
     input wire        clk,
@@ -28,6 +30,12 @@ module soc_wb_decoder_check #(
     input wire [29:0] adr,
     input wire [31:0] ram_dat_r,
     input wire        ram_ack,
+    input wire [31:0] sdram_dat_r,
+    input wire        sdram_ack,
+    input wire        sdram_err,
+    input wire [31:0] sdram_ctrl_dat_r,
+    input wire        sdram_ctrl_ack,
+    input wire        sdram_ctrl_err,
     input wire [31:0] gpu_dat_r,
     input wire        gpu_ack,
     input wire        gpu_err,
@@ -39,11 +47,14 @@ module soc_wb_decoder_check #(
     input wire        sys_err
 );
     wire [31:0] dat_r;
-    wire        ack, err, ram_stb, gpu_stb, uart_stb, sys_stb;
-    soc_wb_decoder #(.RAM_BYTES(RAM_BYTES)) dut (
+    wire        ack, err, ram_stb, sdram_stb, sdram_ctrl_stb, gpu_stb, uart_stb, sys_stb;
+    soc_wb_decoder #(.RAM_BYTES(RAM_BYTES), .SDRAM_BYTES(SDRAM_BYTES)) dut (
         .clk(clk), .rst(rst), .cyc(cyc), .stb(stb), .adr(adr),
         .dat_r(dat_r), .ack(ack), .err(err),
         .ram_stb(ram_stb), .ram_dat_r(ram_dat_r), .ram_ack(ram_ack),
+        .sdram_stb(sdram_stb), .sdram_dat_r(sdram_dat_r), .sdram_ack(sdram_ack), .sdram_err(sdram_err),
+        .sdram_ctrl_stb(sdram_ctrl_stb), .sdram_ctrl_dat_r(sdram_ctrl_dat_r),
+        .sdram_ctrl_ack(sdram_ctrl_ack), .sdram_ctrl_err(sdram_ctrl_err),
         .gpu_stb(gpu_stb), .gpu_dat_r(gpu_dat_r), .gpu_ack(gpu_ack), .gpu_err(gpu_err),
         .uart_stb(uart_stb), .uart_dat_r(uart_dat_r), .uart_ack(uart_ack), .uart_err(uart_err),
         .sys_stb(sys_stb), .sys_dat_r(sys_dat_r), .sys_ack(sys_ack), .sys_err(sys_err)
@@ -59,10 +70,13 @@ module soc_wb_decoder_check #(
         in_region = addr >= base && addr < base + size;
     endfunction
     wire in_ram  = in_region(a, {1'b0, soc_pkg::SOC_RAM_BASE}, RAM_BYTES);
+    wire in_sdram = in_region(a, {1'b0, soc_pkg::SOC_SDRAM_BASE}, SDRAM_BYTES);
+    wire in_sdram_ctrl = in_region(a, {1'b0, soc_pkg::SOC_SDRAM_CTRL_BASE},
+                                   SDRAM_BYTES != 0 ? soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES : 0);
     wire in_gpu  = in_region(a, {1'b0, soc_pkg::SOC_GPU_BASE}, soc_pkg::SOC_GPU_WINDOW_BYTES);
     wire in_uart = in_region(a, {1'b0, soc_pkg::SOC_UART_BASE}, soc_pkg::SOC_UART_WINDOW_BYTES);
     wire in_sys  = in_region(a, {1'b0, soc_pkg::SOC_SYS_BASE}, soc_pkg::SOC_SYS_WINDOW_BYTES);
-    wire in_none = !(in_ram || in_gpu || in_uart || in_sys);
+    wire in_none = !(in_ram || in_sdram || in_sdram_ctrl || in_gpu || in_uart || in_sys);
     wire req     = cyc && stb;
 
     // The Wishbone rules: upstream the master's requests assumed and the decoder's answers asserted;
@@ -75,6 +89,14 @@ module soc_wb_decoder_check #(
     soc_wb_decoder_port #(.DUT_ANSWERS(0), .MAX_WAIT(SLAVE_WAIT)) p_ram (
         .clk(clk), .rst(rst), .cyc(cyc), .stb(ram_stb), .adr(adr), .ack(ram_ack), .err(1'b0),
         .f_wait()
+    );
+    soc_wb_decoder_port #(.DUT_ANSWERS(0), .MAX_WAIT(SLAVE_WAIT)) p_sdram (
+        .clk(clk), .rst(rst), .cyc(cyc), .stb(sdram_stb), .adr(adr), .ack(sdram_ack), .err(sdram_err),
+        .f_wait()
+    );
+    soc_wb_decoder_port #(.DUT_ANSWERS(0), .MAX_WAIT(SLAVE_WAIT)) p_sdram_ctrl (
+        .clk(clk), .rst(rst), .cyc(cyc), .stb(sdram_ctrl_stb), .adr(adr), .ack(sdram_ctrl_ack),
+        .err(sdram_ctrl_err), .f_wait()
     );
     soc_wb_decoder_port #(.DUT_ANSWERS(0), .MAX_WAIT(SLAVE_WAIT)) p_gpu (
         .clk(clk), .rst(rst), .cyc(cyc), .stb(gpu_stb), .adr(adr), .ack(gpu_ack), .err(gpu_err),
@@ -90,6 +112,8 @@ module soc_wb_decoder_check #(
     );
 
     wire ram_answer  = ram_stb && ram_ack;
+    wire sdram_answer = sdram_stb && (sdram_ack || sdram_err);
+    wire sdram_ctrl_answer = sdram_ctrl_stb && (sdram_ctrl_ack || sdram_ctrl_err);
     wire gpu_answer  = gpu_stb && (gpu_ack || gpu_err);
     wire uart_answer = uart_stb && (uart_ack || uart_err);
     wire sys_answer  = sys_stb && (sys_ack || sys_err);
@@ -98,10 +122,12 @@ module soc_wb_decoder_check #(
     always @(*) begin
         // Exactly one slave per request, the one whose region holds the address; none outside.
         assert(ram_stb == (req && in_ram));
+        assert(sdram_stb == (req && in_sdram));
+        assert(sdram_ctrl_stb == (req && in_sdram_ctrl));
         assert(gpu_stb == (req && in_gpu));
         assert(uart_stb == (req && in_uart));
         assert(sys_stb == (req && in_sys));
-        if (req) assert($onehot({ram_stb, gpu_stb, uart_stb, sys_stb, in_none}));
+        if (req) assert($onehot({ram_stb, sdram_stb, sdram_ctrl_stb, gpu_stb, uart_stb, sys_stb, in_none}));
         // An address outside every region: err in the request's second clock, nothing before it
         // (the request has then been answered: it never waits longer), dat_r 0.
         // (From the second clock on: the error responder's flop starts at any value.)
@@ -109,10 +135,14 @@ module soc_wb_decoder_check #(
             assert(!ack && err == (up_wait != 4'd0) && up_wait <= 4'd1 && dat_r == 32'd0);
         // The answer is the selected slave's, or the error responder's: nothing else reaches the
         // master, so a slave's answer only during a request to it.
-        assert(ack == (ram_answer || (gpu_stb && gpu_ack) || (uart_stb && uart_ack) || (sys_stb && sys_ack)));
+        assert(ack == (ram_answer || (sdram_stb && sdram_ack) || (sdram_ctrl_stb && sdram_ctrl_ack)
+                       || (gpu_stb && gpu_ack) || (uart_stb && uart_ack) || (sys_stb && sys_ack)));
         if (f_past_valid)
-            assert(err == (none_err || (gpu_stb && gpu_err) || (uart_stb && uart_err) || (sys_stb && sys_err)));
+            assert(err == (none_err || (sdram_stb && sdram_err) || (sdram_ctrl_stb && sdram_ctrl_err)
+                           || (gpu_stb && gpu_err) || (uart_stb && uart_err) || (sys_stb && sys_err)));
         if (ram_answer)  assert(dat_r == ram_dat_r);
+        if (sdram_answer) assert(dat_r == sdram_dat_r);
+        if (sdram_ctrl_answer) assert(dat_r == sdram_ctrl_dat_r);
         if (gpu_answer)  assert(dat_r == gpu_dat_r);
         if (uart_answer) assert(dat_r == uart_dat_r);
         if (sys_answer)  assert(dat_r == sys_dat_r);
@@ -126,6 +156,21 @@ module soc_wb_decoder_check #(
     always @(posedge clk) f_errs <= {f_errs[0], err};
     always @(*) begin
         cover(f_run && ram_stb && ack);
+        if (SDRAM_BYTES != 0) begin
+            cover(f_run && sdram_stb && ack);
+            cover(f_run && sdram_stb && err);
+            cover(f_run && sdram_ctrl_stb && ack);
+            cover(f_run && sdram_ctrl_stb && err);
+        end else begin
+            // without SDRAM, both its regions answer err
+            cover(f_run && req && in_none && err && a >= soc_pkg::SOC_SDRAM_BASE
+                  && a < soc_pkg::SOC_SDRAM_BASE + soc_pkg::SOC_SDRAM_WINDOW_BYTES);
+            cover(f_run && req && in_none && err && a >= soc_pkg::SOC_SDRAM_CTRL_BASE
+                  && a < soc_pkg::SOC_SDRAM_CTRL_BASE + soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES);
+        end
+        if (SDRAM_BYTES != 0 && SDRAM_BYTES < soc_pkg::SOC_SDRAM_WINDOW_BYTES)
+            cover(f_run && req && in_none && err && a >= soc_pkg::SOC_SDRAM_BASE + SDRAM_BYTES
+                  && a < soc_pkg::SOC_SDRAM_BASE + soc_pkg::SOC_SDRAM_WINDOW_BYTES);
         cover(f_run && gpu_stb && ack);
         cover(f_run && gpu_stb && err);
         cover(f_run && uart_stb && ack);

@@ -34,12 +34,17 @@ static void sdram_command(uint32_t command, uint32_t address, uint32_t wait_ns)
     sdram_delay_ns(wait_ns);
 }
 
+void sdram_take_pins(void)
+{
+    /* Software control of the pins (SEL clear), CKE high: NOPs until the next command. */
+    sdram_dfii_control_write(DFII_CONTROL_CKE | DFII_CONTROL_ODT | DFII_CONTROL_RESET_N);
+}
+
 uint32_t sdram_init(void)
 {
     const uint32_t mode = sdram_mode_register(SDRAM_PHY_CL);
 
-    /* Software control of the pins (SEL clear), CKE high: the controller sends NOPs meanwhile. */
-    sdram_dfii_control_write(DFII_CONTROL_CKE | DFII_CONTROL_ODT | DFII_CONTROL_RESET_N);
+    sdram_take_pins();
     sdram_delay_ns(SDRAM_POWER_UP_WAIT_NS);
 
     sdram_command(DFII_COMMAND_RAS | DFII_COMMAND_WE, SDRAM_A10_ALL_BANKS, SDRAM_T_RP_NS);

@@ -22,6 +22,12 @@
  * programmed burst length for writes (A9 = 0), A12..A10 reserved 0. */
 uint32_t sdram_mode_register(uint32_t cas_latency);
 
+/* The pins to software control at once (NOPs, CKE high): LiteDRAM leaves reset under hardware
+ * control, its refresher sending PRECHARGE ALL and AUTO REFRESH every tREFI (7.8 us) to a chip
+ * that has not finished its power-up wait. The boot code calls this within tREFI of reset (socsim's
+ * chip model stops the run otherwise); sdram_init() calls it again. */
+void sdram_take_pins(void);
+
 /* Power-up: CKE high with NOPs for the power-up wait, PRECHARGE ALL, two AUTO REFRESH, LOAD MODE
  * REGISTER, then the controller takes the pins and init_done is set. Returns the mode register
  * value it programmed. */

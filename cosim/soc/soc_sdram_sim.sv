@@ -1,0 +1,107 @@
+// soc_sdram_sim: socsim's system with SDRAM — soc_top (the pixel clock tied to the system clock, as
+// socsim's plain build) with its SDRAM ports on soc_sdram (LiteDRAM's generated controller), the
+// chip's pins out to socsim, which plays the chip (cosim/sdram/sdram_chip.h) on them.
+//
+// The ports are soc_top's but the SDRAM's, so socsim drives either system with the same code; DQ is
+// split as tests/sdram/litedram_tb_top.sv splits it: the controller's drive through its TRELLIS_IO
+// buffers (cosim/sdram/ecp5/TRELLIS_IO.v), the chip's through chip_dq/chip_dq_oe, the resolved bus
+// and which side the controller is on (ctrl_dq_oe: the tristate of DQ bit 0, all 16 share one
+// registered enable in LiteDRAM's GENSDRPHY) for the chip model.
+`include "contract/gpu_build_params.vh"
+`default_nettype none
+
+module soc_sdram_sim #(
+    parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,
+    parameter integer SDRAM_BYTES = soc_pkg::SOC_SDRAM_DEFAULT_BYTES,
+    parameter integer PIX_CLK_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,   // tied to clk, as socsim's soc_top
+    `GPU_BUILD_PARAMS
+) (
+    input  wire        clk,
+    input  wire        clk_pix,
+    // verilator lint_off SYNCASYNCNET
+    input  wire        ext_rst,         // soc_top synchronises it; LiteDRAM's reset flops take it asynchronously
+    // verilator lint_on SYNCASYNCNET
+    input  wire        uart_rx,
+    output wire        uart_tx,
+    output wire        vga_pix_stb,
+    output wire        vga_de,
+    output wire        vga_hsync_n,
+    output wire        vga_vsync_n,
+    output wire [3:0]  vga_r,
+    output wire [3:0]  vga_g,
+    output wire [3:0]  vga_b,
+    output wire [7:0]  leds,
+    output wire        gpu_frame_swapped,
+    output wire        gpu_error,
+    output wire        exit_valid,
+    output wire [7:0]  exit_code,
+    // ---- the SDRAM chip's pins, for socsim's chip model
+    output wire [12:0] sdram_a,
+    output wire [1:0]  sdram_ba,
+    output wire        sdram_cs_n,
+    output wire        sdram_ras_n,
+    output wire        sdram_cas_n,
+    output wire        sdram_we_n,
+    output wire        sdram_cke,
+    output wire [1:0]  sdram_dqm,
+    output wire [15:0] sdram_dq_pins,   // the DQ bus as resolved
+    output wire        ctrl_dq_oe,      // the controller drives DQ
+    input  wire [15:0] chip_dq,         // the chip's drive ...
+    input  wire        chip_dq_oe,      // ... while this is high
+    output wire        sdram_init_done
+);
+    localparam integer AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4);
+    localparam integer CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4);
+
+    wire               s_cyc, s_stb, s_we, s_ack, s_err;
+    wire [AW-1:0]      s_adr;
+    wire [31:0]        s_dat_w, s_dat_r;
+    wire [3:0]         s_sel;
+    wire [2:0]         s_cti;
+    wire               c_cyc, c_stb, c_we, c_ack, c_err;
+    wire [CTRL_AW-1:0] c_adr;
+    wire [31:0]        c_dat_w, c_dat_r;
+    wire [3:0]         c_sel;
+    wire unused_cti = &{1'b0, s_cti};   // LiteDRAM's Wishbone port takes one word a request
+
+    soc_top #(
+        .RAM_BYTES   (RAM_BYTES),
+        .SDRAM_BYTES (SDRAM_BYTES),
+        .PIX_CLK_HZ  (PIX_CLK_HZ),
+        `GPU_BUILD_PARAMS_PASS
+    ) u_soc (
+        .clk (clk), .clk_pix (clk_pix), .ext_rst (ext_rst), .uart_rx (uart_rx), .uart_tx (uart_tx),
+        .vga_pix_stb (vga_pix_stb), .vga_de (vga_de), .vga_hsync_n (vga_hsync_n),
+        .vga_vsync_n (vga_vsync_n), .vga_r (vga_r), .vga_g (vga_g), .vga_b (vga_b),
+        .sdram_cyc (s_cyc), .sdram_stb (s_stb), .sdram_we (s_we), .sdram_adr (s_adr),
+        .sdram_dat_w (s_dat_w), .sdram_sel (s_sel), .sdram_cti (s_cti), .sdram_dat_r (s_dat_r),
+        .sdram_ack (s_ack), .sdram_err (s_err),
+        .sdram_ctrl_cyc (c_cyc), .sdram_ctrl_stb (c_stb), .sdram_ctrl_we (c_we), .sdram_ctrl_adr (c_adr),
+        .sdram_ctrl_dat_w (c_dat_w), .sdram_ctrl_sel (c_sel), .sdram_ctrl_dat_r (c_dat_r),
+        .sdram_ctrl_ack (c_ack), .sdram_ctrl_err (c_err),
+        .leds (leds), .gpu_frame_swapped (gpu_frame_swapped), .gpu_error (gpu_error),
+        .exit_valid (exit_valid), .exit_code (exit_code)
+    );
+
+    wire [15:0] dq;
+    assign dq = chip_dq_oe ? chip_dq : 16'bz;
+    assign sdram_dq_pins = dq;
+    assign ctrl_dq_oe = !u_sdram.u_core.TRELLIS_IO.T;
+
+    soc_sdram #(
+        .SDRAM_BYTES (SDRAM_BYTES)
+    ) u_sdram (
+        .clk (clk), .rst (ext_rst), .init_done (sdram_init_done),
+        .sdram_cyc (s_cyc), .sdram_stb (s_stb), .sdram_we (s_we), .sdram_adr (s_adr),
+        .sdram_dat_w (s_dat_w), .sdram_sel (s_sel), .sdram_dat_r (s_dat_r), .sdram_ack (s_ack),
+        .sdram_err (s_err),
+        .sdram_ctrl_cyc (c_cyc), .sdram_ctrl_stb (c_stb), .sdram_ctrl_we (c_we), .sdram_ctrl_adr (c_adr),
+        .sdram_ctrl_dat_w (c_dat_w), .sdram_ctrl_sel (c_sel), .sdram_ctrl_dat_r (c_dat_r),
+        .sdram_ctrl_ack (c_ack), .sdram_ctrl_err (c_err),
+        .pin_a (sdram_a), .pin_ba (sdram_ba), .pin_cs_n (sdram_cs_n), .pin_ras_n (sdram_ras_n),
+        .pin_cas_n (sdram_cas_n), .pin_we_n (sdram_we_n), .pin_cke (sdram_cke), .pin_dqm (sdram_dqm),
+        .pin_dq (dq)
+    );
+endmodule
+
+`default_nettype wire

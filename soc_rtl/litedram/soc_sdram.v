@@ -1,0 +1,119 @@
+// soc_sdram: the SoC's SDRAM — LiteDRAM's controller, generated at build time into the build tree
+// (litedram_core, soc_rtl/litedram/gen_litedram.py), behind soc_top's two SDRAM ports, the chip's
+// pins out. A system with SDRAM (socsim's, a board's) instantiates it beside soc_top.
+//
+// Contract:
+//   sdram_*       soc_top's SDRAM port (Wishbone B4 classic): word addresses from SOC_SDRAM_BASE;
+//                 the decoder sends only addresses below SDRAM_BYTES. LiteDRAM's Wishbone user port
+//                 answers once the power-up sequence has set init_done; before that a request is
+//                 refused with err in its second clock (a bus error the CPU's SYS record shows),
+//                 never left hanging.
+//   sdram_ctrl_*  soc_top's SDRAM_CTRL port: LiteDRAM's control registers (word addresses of its
+//                 csr.csv), always answered.
+//   pins          the chip's, as LiteDRAM's GENSDRPHY drives them (commands and data registered in
+//                 the I/O cells, DQ through TRELLIS_IO buffers); the chip's clock is the system's
+//                 shifted (docs/sdram.md): not made here.
+// SDRAM_BYTES must be the generated core's size (gen_litedram.py --expect-bytes checks it).
+`default_nettype none
+
+module soc_sdram #(
+    parameter integer SDRAM_BYTES = soc_pkg::SOC_SDRAM_DEFAULT_BYTES,  // the chip's size
+    localparam integer AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),       // soc_top's word address
+    localparam integer CORE_AW = $clog2(SDRAM_BYTES / 4),                     // the core's
+    localparam integer CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4)
+) (
+    input  wire               clk,
+    input  wire               rst,              // the system's reset (button, PLL unlock): LiteDRAM
+                                                // synchronises it; it also clears the early-err flop
+    output wire               init_done,        // the controller owns the pins: the SDRAM answers
+    // ---- soc_top's SDRAM port
+    input  wire               sdram_cyc,
+    input  wire               sdram_stb,
+    input  wire               sdram_we,
+    input  wire [AW-1:0]      sdram_adr,
+    input  wire [31:0]        sdram_dat_w,
+    input  wire [3:0]         sdram_sel,
+    output wire [31:0]        sdram_dat_r,
+    output wire               sdram_ack,
+    output wire               sdram_err,
+    // ---- soc_top's SDRAM_CTRL port
+    input  wire               sdram_ctrl_cyc,
+    input  wire               sdram_ctrl_stb,
+    input  wire               sdram_ctrl_we,
+    input  wire [CTRL_AW-1:0] sdram_ctrl_adr,
+    input  wire [31:0]        sdram_ctrl_dat_w,
+    input  wire [3:0]         sdram_ctrl_sel,
+    output wire [31:0]        sdram_ctrl_dat_r,
+    output wire               sdram_ctrl_ack,
+    output wire               sdram_ctrl_err,
+    // ---- the chip's pins
+    output wire [12:0]        pin_a,
+    output wire [1:0]         pin_ba,
+    output wire               pin_cs_n,
+    output wire               pin_ras_n,
+    output wire               pin_cas_n,
+    output wire               pin_we_n,
+    output wire               pin_cke,
+    output wire [1:0]         pin_dqm,
+    inout  wire [15:0]        pin_dq
+);
+    generate if (SDRAM_BYTES <= 0 || (1 << CORE_AW) * 4 != SDRAM_BYTES || CORE_AW > AW) begin : g_bad_size
+        $error("soc_sdram: SDRAM_BYTES must be a power of two within SOC_SDRAM_WINDOW_BYTES");
+    end endgenerate
+
+    // Before init_done LiteDRAM ignores its user port: refuse instead (err in the second clock).
+    wire req = sdram_cyc && sdram_stb;
+    reg  early_err_q = 1'b0;
+    always @(posedge clk) begin
+        if (rst) early_err_q <= 1'b0;
+        else     early_err_q <= req && !init_done && !early_err_q;
+    end
+    wire core_ack, core_err;
+    assign sdram_ack = init_done && core_ack;
+    assign sdram_err = (early_err_q && req && !init_done) || (init_done && core_err);
+
+    wire unused_adr = &{1'b0, sdram_adr[AW-1:CORE_AW]};   // above SDRAM_BYTES: the decoder refuses it
+    wire unused_clk, unused_rst, unused_init_error;
+
+    // user_clk, user_rst: the core's clock and reset handed back; init_error: LiteDRAM's, set only by
+    // a calibrating BIOS (an SDR chip has nothing to calibrate).
+    litedram_core u_core (
+        .clk                  (clk),
+        .rst                  (rst),
+        .init_done            (init_done),
+        .init_error           (unused_init_error),
+        .user_clk             (unused_clk),
+        .user_rst             (unused_rst),
+        .sdram_a              (pin_a),
+        .sdram_ba             (pin_ba),
+        .sdram_cs_n           (pin_cs_n),
+        .sdram_ras_n          (pin_ras_n),
+        .sdram_cas_n          (pin_cas_n),
+        .sdram_we_n           (pin_we_n),
+        .sdram_cke            (pin_cke),
+        .sdram_dm             (pin_dqm),
+        .sdram_dq             (pin_dq),
+        .user_port_wb_cyc     (sdram_cyc && init_done),
+        .user_port_wb_stb     (sdram_stb && init_done),
+        .user_port_wb_we      (sdram_we),
+        .user_port_wb_adr     (sdram_adr[CORE_AW-1:0]),
+        .user_port_wb_dat_w   (sdram_dat_w),
+        .user_port_wb_sel     (sdram_sel),
+        .user_port_wb_dat_r   (sdram_dat_r),
+        .user_port_wb_ack     (core_ack),
+        .user_port_wb_err     (core_err),
+        .wb_ctrl_cyc          (sdram_ctrl_cyc),
+        .wb_ctrl_stb          (sdram_ctrl_stb),
+        .wb_ctrl_we           (sdram_ctrl_we),
+        .wb_ctrl_adr          ({{(30 - CTRL_AW){1'b0}}, sdram_ctrl_adr}),
+        .wb_ctrl_dat_w        (sdram_ctrl_dat_w),
+        .wb_ctrl_sel          (sdram_ctrl_sel),
+        .wb_ctrl_cti          (3'b000),
+        .wb_ctrl_bte          (2'b00),
+        .wb_ctrl_dat_r        (sdram_ctrl_dat_r),
+        .wb_ctrl_ack          (sdram_ctrl_ack),
+        .wb_ctrl_err          (sdram_ctrl_err)
+    );
+endmodule
+
+`default_nettype wire

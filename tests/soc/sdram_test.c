@@ -1,0 +1,201 @@
+/* The SoC's SDRAM on socsim (socsim-sdram: soc_top with LiteDRAM's controller, the chip model on its
+ * pins): bare metal from the on-chip RAM, as the boot code will run. Prints over the UART (the test
+ * checks the text) and returns 0 to SYS EXIT when all passed, 1 at the first failure:
+ *   1. SYS SDRAM_BYTES is the contract's size;
+ *   2. a load from the SDRAM before its power-up sequence is refused (a bus error in SYS's record,
+ *      the load reads 0) instead of hanging the CPU;
+ *   3. the power-up sequence (bsp/soc/sdram/sdram_init.c) through LiteDRAM's control registers,
+ *      the pins taken from the controller first of all (its refresher runs from reset);
+ *   4. the quick memory test (bsp/soc/sdram/memtest.c) over the whole chip; on a failure its line
+ *      and LEDS = 0xE1 (the board shows it), exit 1;
+ *   5. what the CPU gets from it: cycles per word for consecutive stores and loads through the data
+ *      cache, and a short program copied into the SDRAM and run from there (instruction cache
+ *      refills from the SDRAM). */
+#include <stdint.h>
+
+#include "memtest.h"
+#include "sdram_init.h"
+#include "soc_map.h"
+
+#define SOC_REG(base, off) (*(volatile uint32_t *)(uintptr_t)((base) + (off)))
+#define UART(r) SOC_REG(SOC_UART_BASE, SOC_UART_REG_##r)
+#define SYS(r) SOC_REG(SOC_SYS_BASE, SOC_SYS_REG_##r)
+
+#define LEDS_SDRAM_FAILED 0xE1u
+#define BANDWIDTH_WORDS 4096u   /* 16 KiB: four times the data cache */
+
+static void uart_putc(char c)
+{
+    while (UART(STATUS) & SOC_UART_STATUS_TX_FULL_MASK) {
+    }
+    UART(DATA) = (uint8_t)c;
+}
+
+static void puts_(const char *s)
+{
+    while (*s != '\0') {
+        uart_putc(*s++);
+    }
+}
+
+static void put_dec(uint32_t v)
+{
+    char buf[10];
+    unsigned n = 0;
+    do {
+        buf[n++] = (char)('0' + v % 10u);
+        v /= 10u;
+    } while (v != 0u);
+    while (n != 0u) {
+        uart_putc(buf[--n]);
+    }
+}
+
+static void put_hex(uint32_t v)
+{
+    puts_("0x");
+    for (int i = 28; i >= 0; i -= 4) {
+        uart_putc("0123456789abcdef"[(v >> i) & 15u]);
+    }
+}
+
+static uint32_t now(void)
+{
+    return SYS(MTIME_LO);
+}
+
+/* sdram_init's wait: the SYS cycle counter against the build's clock. */
+void sdram_delay_ns(uint32_t ns)
+{
+    const uint32_t clocks = (uint32_t)(((uint64_t)ns * SYS(CLK_HZ) + 999999999u) / 1000000000u);
+    const uint32_t start = now();
+    while (now() - start < clocks) {
+    }
+}
+
+/* tests/soc/smoke_crt0.S calls it with main's return value: the UART drained, then SYS EXIT. */
+void smoke_exit(uint32_t code);
+void smoke_exit(uint32_t code)
+{
+    while ((UART(STATUS) & SOC_UART_STATUS_TX_IDLE_MASK) == 0u) {
+    }
+    SYS(EXIT) = code;
+    for (;;) {
+    }
+}
+
+static int fail(const char *what)
+{
+    puts_("sdram_test: FAILED: ");
+    puts_(what);
+    uart_putc('\n');
+    SYS(LEDS) = LEDS_SDRAM_FAILED;
+    return 1;
+}
+
+/* Cycles per word, to two decimals, as "N.NN". */
+static void put_per_word(uint32_t cycles, uint32_t words)
+{
+    const uint32_t hundredths = (uint32_t)(((uint64_t)cycles * 100u + words / 2u) / words);
+    put_dec(hundredths / 100u);
+    uart_putc('.');
+    uart_putc((char)('0' + hundredths / 10u % 10u));
+    uart_putc((char)('0' + hundredths % 10u));
+}
+
+int main(void);
+int main(void)
+{
+    sdram_take_pins();  /* first: LiteDRAM's refresher must not reach a chip still powering up */
+    volatile uint32_t *const sdram = (volatile uint32_t *)(uintptr_t)SOC_SDRAM_BASE;
+    const uint32_t bytes = SYS(SDRAM_BYTES);
+    puts_("sdram_test: SDRAM_BYTES ");
+    put_dec(bytes);
+    uart_putc('\n');
+    if (bytes != SOC_SDRAM_DEFAULT_BYTES) {
+        return fail("SYS SDRAM_BYTES is not the contract's size");
+    }
+
+    /* Before the power-up sequence: refused, not hung. */
+    SYS(BUS_ERR) = 0u;
+    const uint32_t early = sdram[0];
+    const uint32_t be = SYS(BUS_ERR);
+    puts_("sdram_test: before init: read ");
+    put_hex(early);
+    puts_(", bus error ");
+    put_hex(be);
+    puts_(" at ");
+    put_hex(SYS(BUS_ERR_ADDR));
+    uart_putc('\n');
+    if ((be & SOC_SYS_BUS_ERR_VALID_MASK) == 0u || early != 0u || SYS(BUS_ERR_ADDR) != SOC_SDRAM_BASE) {
+        return fail("a load before the power-up sequence was not refused");
+    }
+    SYS(BUS_ERR) = 0u;
+
+    const uint32_t t0 = now();
+    const uint32_t mode = sdram_init();
+    puts_("sdram_test: init: mode register ");
+    put_hex(mode);
+    puts_(" in ");
+    put_dec(now() - t0);
+    puts_(" cycles\n");
+
+    const uint32_t t1 = now();
+    const struct memtest_result r = memtest_quick(SOC_SDRAM_BASE, bytes, 0x5EEDu);
+    const uint32_t test_cycles = now() - t1;
+    char line[MEMTEST_FORMAT_SIZE];
+    memtest_format(&r, line, sizeof line);
+    puts_(line);
+    puts_(" in ");
+    put_dec(test_cycles);
+    puts_(" cycles\n");
+    if (!r.ok) {
+        return fail("the quick memory test");
+    }
+
+    /* Consecutive words through the data cache: stores (write-through), then loads of lines not
+     * in the cache (BANDWIDTH_WORDS is four times its size). */
+    volatile uint32_t *const block = sdram + (bytes / 8u) / 4u;  /* the middle of the chip */
+    const uint32_t t2 = now();
+    for (uint32_t i = 0; i < BANDWIDTH_WORDS; ++i) {
+        block[i] = i * 0x9E3779B9u;
+    }
+    const uint32_t store_cycles = now() - t2;
+    uint32_t sum = 0;
+    const uint32_t t3 = now();
+    for (uint32_t i = 0; i < BANDWIDTH_WORDS; ++i) {
+        sum += block[i];
+    }
+    const uint32_t load_cycles = now() - t3;
+    uint32_t want = 0;
+    for (uint32_t i = 0; i < BANDWIDTH_WORDS; ++i) {
+        want += i * 0x9E3779B9u;
+    }
+    puts_("sdram_test: CPU: ");
+    put_dec(BANDWIDTH_WORDS);
+    puts_(" consecutive words: store ");
+    put_per_word(store_cycles, BANDWIDTH_WORDS);
+    puts_(", load ");
+    put_per_word(load_cycles, BANDWIDTH_WORDS);
+    puts_(" cycles a word\n");
+    if (sum != want) {
+        return fail("the consecutive words read back wrong");
+    }
+
+    /* Code from the SDRAM: `addi a0, a0, 1; ret`, copied in and called (fence.i: the instruction
+     * cache refills from the SDRAM). */
+    volatile uint32_t *const code = sdram + 64u;
+    code[0] = 0x00150513u;  /* addi a0, a0, 1 */
+    code[1] = 0x00008067u;  /* jalr x0, 0(ra) */
+    __asm__ volatile("fence.i" ::: "memory");
+    uint32_t (*const from_sdram)(uint32_t) = (uint32_t (*)(uint32_t))(uintptr_t)code;
+    const uint32_t got = from_sdram(41u);
+    puts_("sdram_test: code in the SDRAM returned ");
+    put_dec(got);
+    uart_putc('\n');
+    if (got != 42u) {
+        return fail("code run from the SDRAM");
+    }
+    puts_("sdram_test: ok\n");
+    return 0;
+}
