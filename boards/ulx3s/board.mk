@@ -91,7 +91,7 @@ synth-board: board-fw
 # The flow's netlists as files, remade when a source, the constraints or the firmware changed: after
 # synthesis (the flow stopped there) and after place and route (the whole flow, the .bit too).
 ULX3S_SOURCES = $(RTL_V) $(SOC_RTL_V) $(SOC_CPU_V) $(foreach f,boards/ulx3s/files.f boards/ulx3s/files_top.f,$(f) \
-  $(shell sed -e 's://.*::' $(f))) contract/gpu_build_params.vh contract/gpu_regs.vh contract/soc_map.vh \
+  $(shell sed -e 's://.*::' $(f))) contract/gpu_build_params.vh contract/gpu_regs.vh contract/soc_map.vh soc_rtl/soc_top_no_sdram.vh \
   boards/ulx3s/ulx3s.lpf synth/ecp5_bitstream.py $(ULX3S_FW_ELF).hex
 $(ULX3S_DIR)/ulx3s_top.json: $(ULX3S_SOURCES)
 	@bash tools/setup.sh

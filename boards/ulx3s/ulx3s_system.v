@@ -14,6 +14,7 @@
 // to pixel clock) and dvi_tx's (pixel to TMDS clock).
 // The GPU's build parameters (contract/gpu_build_params.vh) are passed through to soc_top.
 `include "contract/gpu_build_params.vh"
+`include "soc_rtl/soc_top_no_sdram.vh"
 `default_nettype none
 
 module ulx3s_system #(
@@ -47,15 +48,7 @@ module ulx3s_system #(
     wire [7:0] soc_leds;
     wire       gpu_frame_swapped, gpu_error;
 
-    // The SDRAM ports' outputs, unused without SDRAM (soc_top's widths, from the memory map).
-    wire [5:0]  sdram_idle;
-    wire [$clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4)-1:0]      sdram_idle_adr;
-    wire [$clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4)-1:0] sdram_idle_ctrl_adr;
-    wire [31:0] sdram_idle_dat, sdram_idle_ctrl_dat;
-    wire [3:0]  sdram_idle_sel, sdram_idle_ctrl_sel;
-    wire [2:0]  sdram_idle_cti;
-    wire unused_sdram = &{1'b0, sdram_idle, sdram_idle_adr, sdram_idle_ctrl_adr, sdram_idle_dat,
-                          sdram_idle_ctrl_dat, sdram_idle_sel, sdram_idle_ctrl_sel, sdram_idle_cti};
+    `SOC_TOP_NO_SDRAM_WIRES   // no SDRAM in this build (soc_rtl/soc_top_no_sdram.vh)
 
     soc_top #(
         .RAM_BYTES    (RAM_BYTES),
@@ -76,26 +69,7 @@ module ulx3s_system #(
         .vga_r             (vga_r),
         .vga_g             (vga_g),
         .vga_b             (vga_b),
-        // No SDRAM in this build (SDRAM_BYTES 0): both ports idle, their answers tied off.
-        .sdram_cyc         (sdram_idle[0]),
-        .sdram_stb         (sdram_idle[1]),
-        .sdram_we          (sdram_idle[2]),
-        .sdram_adr         (sdram_idle_adr),
-        .sdram_dat_w       (sdram_idle_dat),
-        .sdram_sel         (sdram_idle_sel),
-        .sdram_cti         (sdram_idle_cti),
-        .sdram_dat_r       (32'd0),
-        .sdram_ack         (1'b0),
-        .sdram_err         (1'b0),
-        .sdram_ctrl_cyc    (sdram_idle[3]),
-        .sdram_ctrl_stb    (sdram_idle[4]),
-        .sdram_ctrl_we     (sdram_idle[5]),
-        .sdram_ctrl_adr    (sdram_idle_ctrl_adr),
-        .sdram_ctrl_dat_w  (sdram_idle_ctrl_dat),
-        .sdram_ctrl_sel    (sdram_idle_ctrl_sel),
-        .sdram_ctrl_dat_r  (32'd0),
-        .sdram_ctrl_ack    (1'b0),
-        .sdram_ctrl_err    (1'b0),
+        `SOC_TOP_NO_SDRAM_PORTS,   // no SDRAM in this build (soc_rtl/soc_top_no_sdram.vh)
         .leds              (soc_leds),
         .gpu_frame_swapped (gpu_frame_swapped),
         .gpu_error         (gpu_error),

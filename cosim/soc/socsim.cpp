@@ -78,7 +78,7 @@
 using SocModel = Vulx3s_system;
 #elif defined(SOCSIM_SDRAM)
 #include "Vsoc_sdram_sim.h"
-#include "sdram_chip.h"
+#include "sdram_pins.h"
 using SocModel = Vsoc_sdram_sim;
 #else
 #include "Vsoc_top.h"
@@ -509,20 +509,7 @@ void SocRun::clock_once()
 // clock's last rising edge, and drives DQ until its next edge.
 void SocRun::sdram_clock()
 {
-    SdramPins p{};
-    p.cke = top_->sdram_cke;
-    p.cs_n = top_->sdram_cs_n;
-    p.ras_n = top_->sdram_ras_n;
-    p.cas_n = top_->sdram_cas_n;
-    p.we_n = top_->sdram_we_n;
-    p.ba = top_->sdram_ba;
-    p.a = top_->sdram_a;
-    p.dqm = top_->sdram_dqm;
-    p.dq_in = top_->sdram_dq_pins;
-    p.dq_driven = top_->ctrl_dq_oe;
-    const SdramDrive d = sdram_->clock(p);
-    top_->chip_dq = d.dq;
-    top_->chip_dq_oe = d.oe;
+    sdram_drive(*top_, sdram_->clock(sdram_pins_of(*top_)));
     top_->eval();
 }
 #endif

@@ -61,7 +61,7 @@ SOCSIM_SYSTEM_ulx3s       = ulx3s_system
 ULX3S_SIM_FILES          := boards/ulx3s/files.f
 SOCSIM_SOURCES_ulx3s      = -f $(ULX3S_SIM_FILES) $(abspath cosim/soc/tmds_decoder.cpp)
 SOCSIM_CFLAGS_ulx3s      := -DSOCSIM_BOARD_ULX3S
-SOCSIM_PREREQS_ulx3s     := $(ULX3S_SIM_FILES) $(shell sed -e 's://.*::' $(ULX3S_SIM_FILES)) cosim/soc/tmds_decoder.cpp
+SOCSIM_PREREQS_ulx3s     := $(ULX3S_SIM_FILES) $(shell sed -e 's://.*::' $(ULX3S_SIM_FILES)) cosim/soc/tmds_decoder.cpp soc_rtl/soc_top_no_sdram.vh
 # With SDRAM (cosim/soc/soc_sdram_sim.sv): soc_top and LiteDRAM's controller generated at the
 # simulated clock for the contract's SDRAM size (soc_rtl/litedram), the chip played by socsim
 # (cosim/sdram/sdram_chip.h), -DSOCSIM_SDRAM.
@@ -74,7 +74,7 @@ SOCSIM_SOURCES_sdram      = soc_rtl/litedram/lint.vlt soc_rtl/litedram/soc_sdram
 SOCSIM_CFLAGS_sdram      := -DSOCSIM_SDRAM -I$(CURDIR)/cosim/sdram
 SOCSIM_PREREQS_sdram     := $(LITEDRAM_SIM_V) soc_rtl/litedram/lint.vlt soc_rtl/litedram/soc_sdram.v \
                             cosim/soc/soc_sdram_sim.sv $(wildcard cosim/sdram/ecp5/*.v) cosim/sdram/sdram_chip.cpp \
-                            cosim/sdram/sdram_chip.h
+                            cosim/sdram/sdram_chip.h cosim/sdram/sdram_pins.h
 $(LITEDRAM_SIM_V): soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram.yml contract/soc_map.h $(SOC_VENV)
 	@mkdir -p $(LITEDRAM_SIM_DIR)
 	$(Q)$(call say,GEN,$@).venv/bin/python soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram.yml \

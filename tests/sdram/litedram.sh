@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# LiteDRAM's generated controller (soc_rtl/litedram) against the SDRAM chip model (cosim/sdram) at
-# the chip's pins (tests/sdram/litedram_tb.cpp):
+# LiteDRAM's generated controller (soc_rtl/litedram, inside the SoC's SDRAM block soc_sdram.v)
+# against the SDRAM chip model (cosim/sdram) at the chip's pins (tests/sdram/litedram_tb.cpp):
 #   1. the board's configuration, our power-up sequence (bsp/soc/sdram/sdram_init.c): random words over
 #      the whole chip and a block of consecutive ones read back equal, then more than 64 ms with the
 #      controller's refresh alone — no violation of any command, timing or the refresh budget;
@@ -34,7 +34,8 @@ build() {
     done
     run_to "$work/$name/verilator.log" 600 verilator --cc --exe --build -j 2 -O2 -Wno-fatal -Wno-lint -Wno-style \
         --top-module litedram_tb_top --Mdir "$work/$name/obj" -o litedram_tb \
-        tests/sdram/litedram_tb_top.sv "$work/$name/gen/litedram_core.v" cosim/sdram/ecp5/*.v \
+        --timescale 1ns/1ps soc_rtl/soc_pkg.sv soc_rtl/litedram/soc_sdram.v tests/sdram/litedram_tb_top.sv \
+        "$work/$name/gen/litedram_core.v" cosim/sdram/ecp5/*.v \
         "$PWD/tests/sdram/litedram_tb.cpp" "$PWD/cosim/sdram/sdram_chip.cpp" \
         "$work/$name/sdram_init.o" "$work/$name/litedram_init.o" \
         -CFLAGS "-std=c++17 -I$PWD/cosim/sdram $inc -DLITEDRAM_TB_SYS_CLK_HZ=$sys_hz"

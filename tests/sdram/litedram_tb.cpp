@@ -1,6 +1,6 @@
 // litedram_tb — LiteDRAM's generated controller (soc_rtl/litedram) against the SDRAM chip model
-// (cosim/sdram/sdram_chip.h) at the chip's pins: the controller Verilated (litedram_tb_top.sv),
-// the chip in C++, this file the CPU on the controller's two Wishbone buses.
+// (cosim/sdram/sdram_chip.h) at the chip's pins: the SoC's SDRAM block (soc_sdram.v, the controller
+// inside) Verilated (litedram_tb_top.sv), the chip in C++, this file the CPU on its two buses.
 //
 //   litedram_tb [--init ours|litedram] [--words N] [--seed S] [--idle-us US] [--phase 180|0]
 //               [--grade 6|7] [--expect-error TEXT]
@@ -37,6 +37,7 @@
 #include "verilated.h"
 
 #include "sdram_chip.h"
+#include "sdram_pins.h"
 
 extern "C" {
 #include "sdram_init.h"
@@ -61,33 +62,13 @@ struct Bench {
     uint64_t clocks = 0;
     bool failed = false;
 
-    SdramPins pins() const {
-        SdramPins p{};
-        p.cke = top->sdram_cke;
-        p.cs_n = top->sdram_cs_n;
-        p.ras_n = top->sdram_ras_n;
-        p.cas_n = top->sdram_cas_n;
-        p.we_n = top->sdram_we_n;
-        p.ba = top->sdram_ba;
-        p.a = top->sdram_a;
-        p.dqm = top->sdram_dm;
-        p.dq_in = top->sdram_dq_pins;
-        p.dq_driven = top->ctrl_dq_oe;
-        return p;
-    }
-
-    void drive(const SdramDrive& d) {
-        top->chip_dq = d.dq;
-        top->chip_dq_oe = d.oe;
-    }
-
     // One system clock. The chip's edge falls at the phase the run asked for (see the header).
     void tick() {
         if (phase == 0) {
-            const SdramPins before = pins();     // what the chip samples at the shared edge
+            const SdramPins before = sdram_pins_of(*top);  // what the chip samples at the shared edge
             top->clk = 1;
             top->eval();                         // the controller samples the chip's old drive
-            drive(chip->clock(before));
+            sdram_drive(*top, chip->clock(before));
             top->eval();
             top->clk = 0;
             top->eval();
@@ -96,7 +77,7 @@ struct Bench {
             top->eval();
             top->clk = 0;
             top->eval();
-            drive(chip->clock(pins()));          // the falling edge: the chip's rising edge
+            sdram_drive(*top, chip->clock(sdram_pins_of(*top)));  // the falling edge: the chip's rising edge
             top->eval();
         }
         ++clocks;
