@@ -258,8 +258,14 @@ def soc_load(gpu):
             sys.exit(f"soc map: region {r['name']} window is not a power of two, aligned, inside 32 bits")
         if r["cached"] != (r["base"] < 0x80000000):
             sys.exit(f"soc map: region {r['name']}: the CPU caches exactly the addresses with bit 31 clear")
-        if r.get("default_bytes", 0) > w:
+        if max(r.get("default_bytes", 0), r.get("boot_bytes", 0)) > w:
             sys.exit(f"soc map: region {r['name']} default size exceeds its window")
+    b = m["boot"]
+    flash = regions["FLASH"]["window_bytes"]
+    if b["flash_image_offset"] % 4 or b["flash_image_offset"] + b["image_header_bytes"] > flash:
+        sys.exit("soc map: boot flash_image_offset is unaligned or leaves no room in the FLASH window")
+    if b["image_header_bytes"] != 32:
+        sys.exit("soc map: boot image_header_bytes: the header's layout (eight words) is 32 bytes")
     if regions["GPU"]["window_bytes"] != gpu["device"]["aperture_bytes"]:
         sys.exit("soc map: the GPU window differs from gpu_contract.toml's aperture_bytes")
     seen = set()
@@ -309,12 +315,18 @@ def soc_gen_c(m):
     define("SOC_IRQ_BUS_ERROR", f"{s['irq_bus_error']}u", "bit of VexRiscv's external interrupt lines and of its mask CSR 0xBC0")
     define("SOC_CSR_IRQ_MASK", "0xBC0u", "VexRiscv's machine external interrupt mask CSR (0xFC0: pending)")
     define("SOC_CSR_IRQ_PENDING", "0xFC0u")
+    b = m["boot"]
+    define("SOC_BOOT_FLASH_IMAGE_OFFSET", f"0x{b['flash_image_offset']:08X}u", "the firmware image's byte offset in FLASH (docs/boot.md)")
+    define("SOC_BOOT_IMAGE_MAGIC", f"0x{b['image_magic']:08X}u", "the image header's first word")
+    define("SOC_BOOT_IMAGE_HEADER_BYTES", f"{b['image_header_bytes']}u")
     out += ["", "/* Regions: base address and decode window. */"]
     for r in m["region"]:
         define(f"SOC_{r['name']}_BASE", f"0x{r['base']:08X}u", ("cached: " if r["cached"] else "uncached: ") + r["doc"])
         define(f"SOC_{r['name']}_WINDOW_BYTES", f"0x{r['window_bytes']:08X}u")
         if "default_bytes" in r:
             define(f"SOC_{r['name']}_DEFAULT_BYTES", f"0x{r['default_bytes']:08X}u", f"default build (SYS {r['name']}_BYTES reads a build's own)")
+        if "boot_bytes" in r:
+            define(f"SOC_{r['name']}_BOOT_BYTES", f"0x{r['boot_bytes']:08X}u", "a build whose firmware runs from the SDRAM: the boot program's")
     for region in m["region"]:
         regs = [r for r in m["reg"] if r["region"] == region["name"]]
         if not regs:
@@ -349,11 +361,14 @@ def soc_gen_v(m):
     lpi("SOC_UART_RX_FIFO_DEPTH", s["uart_rx_fifo_depth"])
     lpi("SOC_UART_TX_FIFO_DEPTH", s["uart_tx_fifo_depth"])
     lpi("SOC_IRQ_BUS_ERROR", s["irq_bus_error"], "bit of the core's externalInterruptArray")
+    lp("SOC_BOOT_FLASH_IMAGE_OFFSET", 32, m["boot"]["flash_image_offset"], "the firmware image in FLASH")
     for r in m["region"]:
         lp(f"SOC_{r['name']}_BASE", 32, r["base"], "cached" if r["cached"] else "uncached")
         lpi(f"SOC_{r['name']}_WINDOW_BYTES", r["window_bytes"])
         if "default_bytes" in r:
             lpi(f"SOC_{r['name']}_DEFAULT_BYTES", r["default_bytes"])
+        if "boot_bytes" in r:
+            lpi(f"SOC_{r['name']}_BOOT_BYTES", r["boot_bytes"])
     for r in m["reg"]:
         lp(f"SOC_{r['region']}_REG_{r['name']}", 8, r["offset"], r["access"])
     for f in m["field"]:
@@ -380,7 +395,9 @@ def soc_gen_md(m):
     for r in m["region"]:
         size = f"0x{r['window_bytes']:08X}"
         if "default_bytes" in r:
-            size += f" (default RAM 0x{r['default_bytes']:08X})"
+            size += f" (default 0x{r['default_bytes']:08X})"
+        if "boot_bytes" in r:
+            size += f" (booting from the SDRAM 0x{r['boot_bytes']:08X})"
         out.append(f"| {r['name']} | 0x{r['base']:08X} | {size} | {'yes' if r['cached'] else 'no'} | {r['doc']} |")
     for region in m["region"]:
         regs = [r for r in m["reg"] if r["region"] == region["name"]]
@@ -398,7 +415,10 @@ def soc_gen_md(m):
             f"| SOC_CLK_HZ_DEFAULT | {s['clk_hz_default']} |", f"| SOC_UART_BAUD | {s['uart_baud']} (8N1) |",
             f"| SOC_SYS_ID_VALUE | 0x{s['sys_id']:08X} |", f"| SOC_UART_RX_FIFO_DEPTH | {s['uart_rx_fifo_depth']} |",
             f"| SOC_UART_TX_FIFO_DEPTH | {s['uart_tx_fifo_depth']} |",
-            f"| SOC_IRQ_BUS_ERROR | {s['irq_bus_error']} (VexRiscv external interrupt line; mask CSR 0xBC0, pending 0xFC0) |", ""]
+            f"| SOC_IRQ_BUS_ERROR | {s['irq_bus_error']} (VexRiscv external interrupt line; mask CSR 0xBC0, pending 0xFC0) |",
+            f"| SOC_BOOT_FLASH_IMAGE_OFFSET | 0x{m['boot']['flash_image_offset']:08X} (the firmware image in FLASH, [boot.md](../docs/boot.md)) |",
+            f"| SOC_BOOT_IMAGE_MAGIC | 0x{m['boot']['image_magic']:08X} |",
+            f"| SOC_BOOT_IMAGE_HEADER_BYTES | {m['boot']['image_header_bytes']} |", ""]
     return "\n".join(out)
 
 

@@ -17,11 +17,15 @@
 #define SOC_IRQ_BUS_ERROR                0u  /* bit of VexRiscv's external interrupt lines and of its mask CSR 0xBC0 */
 #define SOC_CSR_IRQ_MASK                 0xBC0u  /* VexRiscv's machine external interrupt mask CSR (0xFC0: pending) */
 #define SOC_CSR_IRQ_PENDING              0xFC0u
+#define SOC_BOOT_FLASH_IMAGE_OFFSET      0x00400000u  /* the firmware image's byte offset in FLASH (docs/boot.md) */
+#define SOC_BOOT_IMAGE_MAGIC             0x46434F53u  /* the image header's first word */
+#define SOC_BOOT_IMAGE_HEADER_BYTES      32u
 
 /* Regions: base address and decode window. */
-#define SOC_RAM_BASE                     0x00000000u  /* cached: On-chip RAM: code, data, stack. Addresses from the RAM's size to the window's end answer ERR. */
+#define SOC_RAM_BASE                     0x00000000u  /* cached: On-chip RAM: code, data, stack; in a build whose firmware runs from the SDRAM, the boot program (docs/boot.md). Addresses from the RAM's size to the window's end answer ERR. */
 #define SOC_RAM_WINDOW_BYTES             0x00040000u
 #define SOC_RAM_DEFAULT_BYTES            0x00030000u  /* default build (SYS RAM_BYTES reads a build's own) */
+#define SOC_RAM_BOOT_BYTES               0x00004000u  /* a build whose firmware runs from the SDRAM: the boot program's */
 #define SOC_SDRAM_BASE                   0x40000000u  /* cached: The board's SDRAM through LiteDRAM (soc_rtl/litedram), a build option (soc_top SDRAM_BYTES, 0 = none). Addresses from the SDRAM's size to the window's end, and the whole window in a build without SDRAM, answer ERR. */
 #define SOC_SDRAM_WINDOW_BYTES           0x04000000u
 #define SOC_SDRAM_DEFAULT_BYTES          0x02000000u  /* default build (SYS SDRAM_BYTES reads a build's own) */
@@ -33,6 +37,8 @@
 #define SOC_SYS_WINDOW_BYTES             0x00000100u
 #define SOC_SDRAM_CTRL_BASE              0x83000000u  /* uncached: LiteDRAM's control registers, at the offsets of its generated csr.h: the DFI software interface of the power-up sequence (bsp/soc/sdram/sdram_init.c), init_done. ERR in a build without SDRAM. */
 #define SOC_SDRAM_CTRL_WINDOW_BYTES      0x00010000u
+#define SOC_FLASH_BASE                   0x84000000u  /* uncached: The board's SPI configuration flash, read only (soc_rtl/soc_spiflash.v: READ 0x03, one word a request, consecutive words streamed); writes answer ERR. The boot program reads the firmware's image here. */
+#define SOC_FLASH_WINDOW_BYTES           0x01000000u
 
 /* UART registers: byte offsets from SOC_UART_BASE. */
 #define SOC_UART_REG_DATA                0x00u  /* rw: Write: push the TX byte [7:0] (dropped if the TX FIFO is full: check TX_FULL first). Read: [7:0] the oldest RX byte and bit 8 = valid; a read with valid set pops it. */

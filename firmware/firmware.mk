@@ -93,7 +93,7 @@ endif
 # Where this platform's firmware goes: qemu_virt (the co-simulated default) keeps the historical
 # folders; any other platform gets its own, so both platforms' builds coexist in one tree.
 FW_PSUFFIX   := $(if $(filter qemu_virt,$(FW_PLATFORM)),,-$(FW_PLATFORM))
-FW_DIR       := $(BUILD)/firmware$(FW_PSUFFIX)
+FW_DIR       := $(BUILD)/firmware$(FW_PSUFFIX)$(SOC_MEM_SUFFIX)
 
 # The scenes: the names of the scene table's SCENE(name) lines, in its order (keys 1..9 follow
 # it). A scene's sources are firmware/scenes/<name>.c, or every .c file of firmware/scenes/<name>/.

@@ -135,8 +135,8 @@ def socsims(table):
         if system not in ("soc", "ulx3s", "sdram"):
             raise TableError(f"{where}: system = {system!r}: soc, ulx3s or sdram")
         size = spec.get("ram", "default")
-        if size not in ("default", "window"):
-            raise TableError(f"{where}: ram = {size!r}: default or window (sizes are the contract's)")
+        if size not in ("default", "window", "boot"):
+            raise TableError(f"{where}: ram = {size!r}: default, window or boot (sizes are the contract's)")
         ram_kib = ram[f"{size}_bytes"] // 1024
         params = dict({"SPAN_W": defaults["SPAN_W"]}, **spec.get("params", {}))
         for name in params:

@@ -55,14 +55,14 @@ MANIFEST_GPU_GFLAGS := $(strip $(MANIFEST_GPU_GFLAGS) -GENABLE_GOURAUD=1)
 endif
 MANIFEST_SIM_NAME := $(if $(MANIFEST_GPU_TAG),cfg-w$(SPAN_W)-$(MANIFEST_GPU_TAG),w$(SPAN_W))
 # Firmware: firmware.mk's FW_DIR (QEMU and soc platforms), socsim.mk's run-soc ELF, board.mk's.
-override FW_DIR        = $(LEAN_DIR)/firmware$(FW_PSUFFIX)
-override SOC_FW_DIR   := $(LEAN_DIR)/firmware-soc
+override FW_DIR        = $(LEAN_DIR)/firmware$(FW_PSUFFIX)$(SOC_MEM_SUFFIX)
+override SOC_FW_DIR    = $(LEAN_DIR)/firmware-soc$(SOC_MEM_SUFFIX)
 override ULX3S_FW_ELF  = $(LEAN_DIR)/board-fw/$(SCENE).elf
 override ULX3S_DIR     = $(LEAN_DIR)/board-ulx3s/$(ULX3S_NAME)$(if $(MANIFEST_GPU_TAG),-$(MANIFEST_GPU_TAG))
 # The GPU: the co-simulators, socsim (its -G flags after -GSPAN_W) and the board's --param list.
 override GPUSIM       := $(BUILD)/sim-$(MANIFEST_SIM_NAME)/gpusim
 override GPUSIM_FAST  := $(BUILD)/sim-fast-$(MANIFEST_SIM_NAME)/gpusim
-override SOCSIM_DIR   := $(BUILD)/socsim-$(SOC_RAM_KIB)k$(if $(MANIFEST_GPU_TAG),-w$(SPAN_W)-$(MANIFEST_GPU_TAG),$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W)))
+override SOCSIM_DIR    = $(BUILD)/socsim$(SOC_MEM_SUFFIX)-$(SOC_RAM_KIB)k$(if $(MANIFEST_GPU_TAG),-w$(SPAN_W)-$(MANIFEST_GPU_TAG),$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W)))
 SOCSIM_GPU_GFLAGS     := $(if $(MANIFEST_GPU_GFLAGS), $(MANIFEST_GPU_GFLAGS))$(if $(filter 1,$(ZBUF)), -GENABLE_ZBUF=1)
 ULX3S_GPU_PARAMS      := $(patsubst -G%,--param %,$(MANIFEST_GPU_GFLAGS))
 # Every manifest GPU, capacities included, runs with the model check: the golden model takes the

@@ -32,5 +32,14 @@ ifeq ($(strip $(FW_MAX_POLLS)),)
 FW_MAX_POLLS := 5000000
 endif
 
-# How to run an ELF: append `-kernel ELF` (the soc simulator, built for SOC_RAM_KIB).
-FW_RUN        = $(BUILD)/socsim-$(SOC_RAM_KIB)k/socsim
+# SOC_MEM=sdram (bsp/soc/soc_ram.mk): linked at the SDRAM's base, checked against its size, and
+# written as the boot image <elf>.img (bsp/soc/mkimage.py) for the flash instead of a RAM image.
+ifeq ($(SOC_MEM),sdram)
+FW_BSP_LDFLAGS += -Wl,--defsym=__ram=$(SOC_SDRAM_BASE)
+FW_POSTLINK   = $(or $(PYTHON),python3) bsp/soc/postlink.py --image --ram-bytes $(SOC_SDRAM_BYTES) \
+                --size $(patsubst %gcc,%size,$(RV_CC)) --nm $(patsubst %gcc,%nm,$(RV_CC))
+endif
+
+# How to run an ELF: append `-kernel ELF` (the soc simulator, built for SOC_RAM_KIB; with SOC_MEM=sdram
+# the system with SDRAM, its on-chip RAM holding the boot program, the ELF's image in the flash).
+FW_RUN        = $(if $(filter sdram,$(SOC_MEM)),$(BUILD)/socsim-sdram-$(SOC_RAM_KIB)k/socsim --boot $(SOC_BOOT_HEX),$(BUILD)/socsim-$(SOC_RAM_KIB)k/socsim)

@@ -13,7 +13,11 @@ image too large is refused, with the numbers: text (code and read-only data), da
 and the RAM. On refusal the ELF is deleted, so that make does not take it as built, and the status
 is 1.
 
-usage: postlink.py --ram-bytes N [--size S] [--nm N] FILE.elf
+With --image (a build whose firmware runs from the SDRAM, bsp/soc/bsp.mk SOC_MEM=sdram) the program
+is linked at the SDRAM's base, --ram-bytes is the SDRAM's size, and the output is ELF.img, the boot
+image the boot program copies from the flash (bsp/soc/mkimage.py), instead of the RAM's hex.
+
+usage: postlink.py --ram-bytes N [--image] [--size S] [--nm N] FILE.elf
 """
 import argparse
 import os
@@ -52,6 +56,7 @@ def main():
     p.add_argument("--ram-bytes", type=int, required=True)
     p.add_argument("--size", default="riscv64-unknown-elf-size")
     p.add_argument("--nm", default="riscv64-unknown-elf-nm")
+    p.add_argument("--image", action="store_true", help="write ELF.img, the SDRAM boot image")
     p.add_argument("elf")
     a = p.parse_args()
 
@@ -62,15 +67,24 @@ def main():
     needed = sym["__stack"] - ram_base  # the stack's top: image, bss, the stack's alignment, the stack
     if needed > a.ram_bytes:
         os.remove(a.elf)
+        memory = "SDRAM" if a.image else "RAM"
+        remedy = ("smaller capacities or models" if a.image else
+                  f"a larger SOC_RAM_KIB (at least {ram_kib_needed(needed)}) or smaller capacities/scenes")
         sys.stderr.write(
-            f"error: {os.path.basename(a.elf)} does not fit the SoC's RAM: text {text} + data {data} + bss {bss} "
-            f"+ stack {stack} = {needed} bytes (with alignment), RAM {a.ram_bytes} bytes "
-            f"({a.ram_bytes // 1024} KiB): {needed - a.ram_bytes} bytes over. Build with a larger "
-            f"SOC_RAM_KIB (at least {ram_kib_needed(needed)}) or smaller capacities/scenes.\n")
+            f"error: {os.path.basename(a.elf)} does not fit the SoC's {memory}: text {text} + data {data} + bss {bss} "
+            f"+ stack {stack} = {needed} bytes (with alignment), {memory} {a.ram_bytes} bytes "
+            f"({a.ram_bytes // 1024} KiB): {needed - a.ram_bytes} bytes over. Build with {remedy}.\n")
         return 1
 
+    here = os.path.dirname(os.path.abspath(__file__))
+    if a.image:
+        subprocess.run([sys.executable, os.path.join(here, "mkimage.py"), a.elf, a.elf + ".img", "--mem-base",
+                        str(ram_base), "--mem-bytes", str(a.ram_bytes)], check=True, stdout=subprocess.DEVNULL)
+        print(f"postlink: {a.elf}.img: SDRAM use {needed} of {a.ram_bytes} bytes "
+              f"(text {text}, data {data}, bss {bss}, stack {stack})")
+        return 0
     # The image itself: bsp/soc/elf_to_hex.py, the SoC's one ELF -> RAM_INIT converter.
-    tool = os.path.join(os.path.dirname(os.path.abspath(__file__)), "elf_to_hex.py")
+    tool = os.path.join(here, "elf_to_hex.py")
     subprocess.run([sys.executable, tool, a.elf, a.elf + ".hex", "--ram-bytes", str(a.ram_bytes),
                     "--base", str(ram_base)], check=True, stdout=subprocess.DEVNULL)
     with open(a.elf + ".ramkib", "w") as f:

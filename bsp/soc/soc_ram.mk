@@ -11,6 +11,22 @@ ifndef SOC_RAM_MK_INCLUDED
 SOC_RAM_MK_INCLUDED := 1
 SOC_MAP_H           := contract/soc_map.h
 soc_map_kib          = $(shell printf '%d' $$(( $$(sed -n 's/^\#define $(1) *\(0x[0-9A-Fa-f]*\).*/\1/p' $(SOC_MAP_H)) / 1024 )))
+soc_map_value        = $(shell printf '%d' $$(sed -n 's/^\#define $(1) *\(0x[0-9A-Fa-f]*\).*/\1/p' $(SOC_MAP_H)))
+# SOC_MEM: where the firmware runs. ram: the on-chip RAM (loaded with the bitstream, or by socsim);
+# sdram: the SDRAM, linked at its base and copied there from the flash by the boot program
+# (docs/boot.md), the on-chip RAM then the boot program's (SOC_RAM_BOOT_BYTES).
+SOC_MEM             ?= ram
+ifeq ($(filter $(SOC_MEM),ram sdram),)
+$(error SOC_MEM=$(SOC_MEM): ram (the on-chip RAM) or sdram (the SDRAM, booted from the flash))
+endif
+SOC_SDRAM_BASE      := $(call soc_map_value,SOC_SDRAM_BASE)
+SOC_SDRAM_BYTES     := $(call soc_map_value,SOC_SDRAM_DEFAULT_BYTES)
+SOC_RAM_BOOT_KIB    := $(call soc_map_kib,SOC_RAM_BOOT_BYTES)
+ifeq ($(SOC_MEM),sdram)
+SOC_RAM_KIB         := $(SOC_RAM_BOOT_KIB)
+endif
+# The folders of an SDRAM build's firmware and simulator carry it in their names.
+SOC_MEM_SUFFIX      := $(if $(filter sdram,$(SOC_MEM)),-sdram)
 SOC_RAM_DEFAULT_KIB := $(call soc_map_kib,SOC_RAM_DEFAULT_BYTES)
 SOC_RAM_WINDOW_KIB  := $(call soc_map_kib,SOC_RAM_WINDOW_BYTES)
 SOC_RAM_KIB         ?= $(SOC_RAM_DEFAULT_KIB)

@@ -22,17 +22,17 @@ include bsp/soc/soc_ram.mk
 # ZBUF=1 (outside a manifest build, whose mk/manifest.mk sets both itself): the GPU with its depth
 # buffer, in a folder of its own (-z), as bench-error's depth-tested configurations run it.
 SOCSIM_GPU_GFLAGS ?= $(if $(filter 1,$(ZBUF)), -GENABLE_ZBUF=1)
-SOCSIM_DIR   := $(BUILD)/socsim-$(SOC_RAM_KIB)k$(if $(filter 1,$(ZBUF)),-z)$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
+SOCSIM_DIR   := $(BUILD)/socsim$(SOC_MEM_SUFFIX)-$(SOC_RAM_KIB)k$(if $(filter 1,$(ZBUF)),-z)$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
 SOCSIM       := $(SOCSIM_DIR)/socsim
 SOCSIM_SRC   := $(filter-out cosim/soc/tmds_decoder.cpp,$(wildcard cosim/soc/*.cpp)) cosim/harness.cpp \
                 cosim/model_check.cpp cosim/uart_pump.cpp cosim/uart_terminal.cpp cosim/uart_pty.cpp \
                 cosim/sdl_window.cpp
 SOCSIM_SV    := cosim/soc/socsim_taps.sv
 # soc firmware: the same sources as `make run`, built by a recursive make for FW_PLATFORM=soc.
-SOC_FW_DIR   := $(BUILD)/firmware-soc
+SOC_FW_DIR   := $(BUILD)/firmware-soc$(SOC_MEM_SUFFIX)
 SOC_FW_ELF   := $(SOC_FW_DIR)/$(SCENE)$(if $(filter float,$(FW_BACKEND)),-float).elf
 SOC_FW_MAKE   = $(MAKE) --no-print-directory FW_PLATFORM=soc BUILD=$(BUILD) SOC_RAM_KIB=$(SOC_RAM_KIB) \
-                FW_DIR=$(SOC_FW_DIR)
+                SOC_MEM=$(SOC_MEM) FW_DIR=$(SOC_FW_DIR)
 
 SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_FILES) contract/gpu_regs.vh \
                contract/soc_map.vh contract/soc_map.h $(SOCSIM_SRC) $(SOCSIM_SV) $(wildcard cosim/soc/*.h) \
@@ -65,7 +65,6 @@ SOCSIM_PREREQS_ulx3s     := $(ULX3S_SIM_FILES) $(shell sed -e 's://.*::' $(ULX3S
 # With SDRAM (cosim/soc/soc_sdram_sim.sv): soc_top and LiteDRAM's controller generated at the
 # simulated clock for the contract's SDRAM size (soc_rtl/litedram), the chip played by socsim
 # (cosim/sdram/sdram_chip.h), -DSOCSIM_SDRAM.
-SOC_SDRAM_BYTES          := $(shell printf '%d' $$(sed -n 's/^\#define SOC_SDRAM_DEFAULT_BYTES *\(0x[0-9A-Fa-f]*\)u.*/\1/p' contract/soc_map.h))
 LITEDRAM_SIM_DIR         := $(BUILD)/litedram/sim-$(SOC_SIM_CLK_HZ)
 LITEDRAM_SIM_V           := $(LITEDRAM_SIM_DIR)/litedram_core.v
 SOCSIM_SYSTEM_sdram       = soc_sdram_sim -GPIX_CLK_HZ=$(SOC_SIM_CLK_HZ) -GSDRAM_BYTES=$(SOC_SDRAM_BYTES) --timescale 1ns/1ps
@@ -80,22 +79,39 @@ $(LITEDRAM_SIM_V): soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram
 	$(Q)$(call say,GEN,$@).venv/bin/python soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram.yml \
 	  $(LITEDRAM_SIM_DIR) --sys-clk-hz $(SOC_SIM_CLK_HZ) --expect-bytes $(SOC_SDRAM_BYTES) >$(LITEDRAM_SIM_DIR)/gen.log 2>&1 \
 	  || { tail -20 $(LITEDRAM_SIM_DIR)/gen.log; exit 1; }
-# The SDRAM's test program (tests/soc/sdram_test.c, suite soc-sdram) for the system with SDRAM:
-# the power-up sequence and the memory test of bsp/soc/sdram, LiteDRAM's generated register headers.
+# Bare-metal programs of the system with SDRAM, built against the LiteDRAM headers of its controller
+# ($(LITEDRAM_SIM_DIR)/include: the register offsets of the power-up sequence) and laid out in the
+# on-chip RAM by linker/soc.ld (the stack above .bss): $(call SOC_SDRAM_PROGRAM,ELF,SOURCES).
+# postlink checks each against the boot build's RAM (SOC_RAM_BOOT_BYTES) and writes ELF.hex.
+SOC_SDRAM_PROGRAM_SRC := bsp/soc/boot/say.c bsp/soc/sdram/sdram_init.c bsp/soc/sdram/memtest.c
+SOC_SDRAM_PROGRAM_HDRS = $(wildcard bsp/soc/boot/*.h bsp/soc/sdram/*.h bsp/soc/sdram/include/*.h bsp/soc/sdram/include/hw/*.h)
+define SOC_SDRAM_PROGRAM
+$(1): $(2) $(SOC_SDRAM_PROGRAM_SRC) $$(SOC_SDRAM_PROGRAM_HDRS) linker/soc.ld contract/soc_map.h $(LITEDRAM_SIM_V) bsp/soc/postlink.py
+	@mkdir -p $$(dir $$@)
+	$$(Q)$$(call say,LD,$$@)$(RV_CC) $(SOC_RV_FLAGS) --specs=picolibc.specs -Os -g -std=c11 -ffreestanding -nostartfiles \
+	  -Wall -Wextra -Werror -Icontract -Ifirmware -Ibsp/soc/boot -Ibsp/soc/sdram -Ibsp/soc/sdram/include \
+	  -I$(LITEDRAM_SIM_DIR)/include -T linker/soc.ld -Wl,--defsym=__stack_size=2048 -Wl,--gc-sections \
+	  -Wl,--no-warn-rwx-segments $(2) $(SOC_SDRAM_PROGRAM_SRC) -lgcc -o $$@
+	$$(Q)$$(PYTHON) bsp/soc/postlink.py --ram-bytes $$$$(( $(SOC_RAM_BOOT_KIB) * 1024 )) \
+	  --size $(patsubst %gcc,%size,$(RV_CC)) --nm $(patsubst %gcc,%nm,$(RV_CC)) $$@ >/dev/null
+endef
+# The boot program (bsp/soc/boot, docs/boot.md): the on-chip RAM's image of a build whose firmware
+# runs from the SDRAM.
+SOC_BOOT_ELF := $(BUILD)/soc/boot.elf
+SOC_BOOT_HEX := $(SOC_BOOT_ELF).hex
+$(SOC_BOOT_HEX): $(SOC_BOOT_ELF)
+$(eval $(call SOC_SDRAM_PROGRAM,$(SOC_BOOT_ELF),bsp/soc/boot/boot_crt0.S bsp/soc/boot/boot.c bsp/soc/boot/boot_image.c firmware/model/crc32.c))
+# The SDRAM's test program (tests/soc/sdram_test.c, suite soc-sdram).
 SOC_SDRAM_TEST_ELF := $(BUILD)/soc/sdram_test.elf
-SOC_SDRAM_TEST_HEX := $(BUILD)/soc/sdram_test.hex
-SOC_SDRAM_TEST_SRC := tests/soc/smoke_crt0.S tests/soc/sdram_test.c bsp/soc/sdram/sdram_init.c bsp/soc/sdram/memtest.c
-$(SOC_SDRAM_TEST_ELF): $(SOC_SDRAM_TEST_SRC) $(wildcard bsp/soc/sdram/*.h bsp/soc/sdram/include/*.h bsp/soc/sdram/include/hw/*.h) \
-                       tests/soc/smoke.ld contract/soc_map.h $(LITEDRAM_SIM_V)
-	@mkdir -p $(dir $@)
-	$(Q)$(call say,LD,$@)$(RV_CC) $(SOC_RV_FLAGS) -O2 -g -std=c11 -ffreestanding -nostdlib -nostartfiles -Wall -Wextra -Werror \
-	  -Icontract -Ibsp/soc/sdram -Ibsp/soc/sdram/include -I$(LITEDRAM_SIM_DIR)/include -T tests/soc/smoke.ld \
-	  -Wl,--no-warn-rwx-segments $(SOC_SDRAM_TEST_SRC) -lgcc -o $@
-$(SOC_SDRAM_TEST_HEX): $(SOC_SDRAM_TEST_ELF) bsp/soc/elf_to_hex.py
-	$(Q)$(call say,GEN,$@)$(PYTHON) bsp/soc/elf_to_hex.py $< $@
+SOC_SDRAM_TEST_HEX := $(SOC_SDRAM_TEST_ELF).hex
+$(SOC_SDRAM_TEST_HEX): $(SOC_SDRAM_TEST_ELF)
+$(eval $(call SOC_SDRAM_PROGRAM,$(SOC_SDRAM_TEST_ELF),tests/soc/smoke_crt0.S tests/soc/sdram_test.c))
 
 SOCSIM_GPU_FLAGS          = -GSPAN_W=$(SPAN_W)$(SOCSIM_GPU_GFLAGS)
-SOCSIM_CMD = $(call socsim_cmd,$(SOCSIM_DIR),$(SOCSIM_SYSTEM_soc),$(SOC_RAM_BYTES),$(SOCSIM_GPU_FLAGS),,)
+# make's own socsim: soc_top, or with SOC_MEM=sdram the system with SDRAM (its RAM the boot program's).
+SOCSIM_SYSTEM := $(if $(SOC_MEM_SUFFIX),sdram,soc)
+SOCSIM_CMD = $(call socsim_cmd,$(SOCSIM_DIR),$(SOCSIM_SYSTEM_$(SOCSIM_SYSTEM)),$(SOC_RAM_BYTES),$(SOCSIM_GPU_FLAGS),\
+  $(SOCSIM_SOURCES_$(SOCSIM_SYSTEM)),$(SOCSIM_CFLAGS_$(SOCSIM_SYSTEM)))
 
 # The board build.
 SOCSIM_ULX3S_DIR := $(BUILD)/socsim-ulx3s-$(SOC_RAM_KIB)k
@@ -120,7 +136,7 @@ ifneq ($(GEN_READ),)
 include $(GEN_DIR)/socsim.mk
 endif
 socsim_rules_unless_listed = $(if $(filter $(notdir $(1)),$(SOCSIM_IDS)),,$(eval $(call SOCSIM_BUILD_RULES,$(1),$(2),$(3))))
-$(call socsim_rules_unless_listed,$(SOCSIM_DIR),SOCSIM_CMD,)
+$(call socsim_rules_unless_listed,$(SOCSIM_DIR),SOCSIM_CMD,$(SOCSIM_PREREQS_$(SOCSIM_SYSTEM)))
 $(call socsim_rules_unless_listed,$(SOCSIM_ULX3S_DIR),SOCSIM_ULX3S_CMD,$(SOCSIM_PREREQS_ulx3s))
 
 .PHONY: socsim socsim-ulx3s run-soc soc-fw soc-test-deps bench-soc soc-smoke
@@ -137,9 +153,11 @@ socsim: $(SOCSIM)
 socsim-ulx3s: $(SOCSIM_ULX3S)
 
 # With a display (the Makefile's WINDOW), the frames go to a window instead of $(OUT)/frames.
-run-soc: $(SOCSIM) soc-fw
+# SOC_MEM=sdram: the boot program in the RAM, the firmware's image in the flash.
+SOCSIM_BOOT := $(if $(SOC_MEM_SUFFIX),$(SOC_BOOT_HEX))
+run-soc: $(SOCSIM) soc-fw $(SOCSIM_BOOT)
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
-	$(Q)$(call say,RUN,socsim $(SOC_FW_ELF))$(SOCSIM) --fw $(SOC_FW_ELF) $(if $(WINDOW),--window,--frames $(OUT)/frames) --uart-log $(OUT)/uart.log \
+	$(Q)$(call say,RUN,socsim $(SOC_FW_ELF))$(SOCSIM) $(if $(SOCSIM_BOOT),--boot $(SOCSIM_BOOT)) --fw $(SOC_FW_ELF) $(if $(WINDOW),--window,--frames $(OUT)/frames) --uart-log $(OUT)/uart.log \
 	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
 endif
 

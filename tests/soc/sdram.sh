@@ -9,7 +9,7 @@
 source "$(dirname "$0")/../lib.sh"
 need BUILD
 socsim=${1:?usage: sdram.sh SOCSIM_SDRAM}
-hex="$BUILD/soc/sdram_test.hex"
+hex="$BUILD/soc/sdram_test.elf.hex"
 need_file "$socsim" "$hex"
 work=$(fresh_dir soc-sdram)
 

@@ -14,50 +14,15 @@
 #include <stdint.h>
 
 #include "memtest.h"
+#include "say.h"
 #include "sdram_init.h"
 #include "soc_map.h"
 
 #define SOC_REG(base, off) (*(volatile uint32_t *)(uintptr_t)((base) + (off)))
-#define UART(r) SOC_REG(SOC_UART_BASE, SOC_UART_REG_##r)
 #define SYS(r) SOC_REG(SOC_SYS_BASE, SOC_SYS_REG_##r)
 
 #define LEDS_SDRAM_FAILED 0xE1u
 #define BANDWIDTH_WORDS 4096u   /* 16 KiB: four times the data cache */
-
-static void uart_putc(char c)
-{
-    while (UART(STATUS) & SOC_UART_STATUS_TX_FULL_MASK) {
-    }
-    UART(DATA) = (uint8_t)c;
-}
-
-static void puts_(const char *s)
-{
-    while (*s != '\0') {
-        uart_putc(*s++);
-    }
-}
-
-static void put_dec(uint32_t v)
-{
-    char buf[10];
-    unsigned n = 0;
-    do {
-        buf[n++] = (char)('0' + v % 10u);
-        v /= 10u;
-    } while (v != 0u);
-    while (n != 0u) {
-        uart_putc(buf[--n]);
-    }
-}
-
-static void put_hex(uint32_t v)
-{
-    puts_("0x");
-    for (int i = 28; i >= 0; i -= 4) {
-        uart_putc("0123456789abcdef"[(v >> i) & 15u]);
-    }
-}
 
 static uint32_t now(void)
 {
@@ -77,8 +42,7 @@ void sdram_delay_ns(uint32_t ns)
 void smoke_exit(uint32_t code);
 void smoke_exit(uint32_t code)
 {
-    while ((UART(STATUS) & SOC_UART_STATUS_TX_IDLE_MASK) == 0u) {
-    }
+    say_drain();
     SYS(EXIT) = code;
     for (;;) {
     }
@@ -86,9 +50,9 @@ void smoke_exit(uint32_t code)
 
 static int fail(const char *what)
 {
-    puts_("sdram_test: FAILED: ");
-    puts_(what);
-    uart_putc('\n');
+    say("sdram_test: FAILED: ");
+    say(what);
+    say_char('\n');
     SYS(LEDS) = LEDS_SDRAM_FAILED;
     return 1;
 }
@@ -97,10 +61,10 @@ static int fail(const char *what)
 static void put_per_word(uint32_t cycles, uint32_t words)
 {
     const uint32_t hundredths = (uint32_t)(((uint64_t)cycles * 100u + words / 2u) / words);
-    put_dec(hundredths / 100u);
-    uart_putc('.');
-    uart_putc((char)('0' + hundredths / 10u % 10u));
-    uart_putc((char)('0' + hundredths % 10u));
+    say_dec(hundredths / 100u);
+    say_char('.');
+    say_char((char)('0' + hundredths / 10u % 10u));
+    say_char((char)('0' + hundredths % 10u));
 }
 
 int main(void);
@@ -109,9 +73,9 @@ int main(void)
     sdram_take_pins();  /* first: LiteDRAM's refresher must not reach a chip still powering up */
     volatile uint32_t *const sdram = (volatile uint32_t *)(uintptr_t)SOC_SDRAM_BASE;
     const uint32_t bytes = SYS(SDRAM_BYTES);
-    puts_("sdram_test: SDRAM_BYTES ");
-    put_dec(bytes);
-    uart_putc('\n');
+    say("sdram_test: SDRAM_BYTES ");
+    say_dec(bytes);
+    say_char('\n');
     if (bytes != SOC_SDRAM_DEFAULT_BYTES) {
         return fail("SYS SDRAM_BYTES is not the contract's size");
     }
@@ -120,13 +84,13 @@ int main(void)
     SYS(BUS_ERR) = 0u;
     const uint32_t early = sdram[0];
     const uint32_t be = SYS(BUS_ERR);
-    puts_("sdram_test: before init: read ");
-    put_hex(early);
-    puts_(", bus error ");
-    put_hex(be);
-    puts_(" at ");
-    put_hex(SYS(BUS_ERR_ADDR));
-    uart_putc('\n');
+    say("sdram_test: before init: read ");
+    say_hex(early);
+    say(", bus error ");
+    say_hex(be);
+    say(" at ");
+    say_hex(SYS(BUS_ERR_ADDR));
+    say_char('\n');
     if ((be & SOC_SYS_BUS_ERR_VALID_MASK) == 0u || early != 0u || SYS(BUS_ERR_ADDR) != SOC_SDRAM_BASE) {
         return fail("a load before the power-up sequence was not refused");
     }
@@ -134,21 +98,21 @@ int main(void)
 
     const uint32_t t0 = now();
     const uint32_t mode = sdram_init();
-    puts_("sdram_test: init: mode register ");
-    put_hex(mode);
-    puts_(" in ");
-    put_dec(now() - t0);
-    puts_(" cycles\n");
+    say("sdram_test: init: mode register ");
+    say_hex(mode);
+    say(" in ");
+    say_dec(now() - t0);
+    say(" cycles\n");
 
     const uint32_t t1 = now();
     const struct memtest_result r = memtest_quick(SOC_SDRAM_BASE, bytes, 0x5EEDu);
     const uint32_t test_cycles = now() - t1;
     char line[MEMTEST_FORMAT_SIZE];
     memtest_format(&r, line, sizeof line);
-    puts_(line);
-    puts_(" in ");
-    put_dec(test_cycles);
-    puts_(" cycles\n");
+    say(line);
+    say(" in ");
+    say_dec(test_cycles);
+    say(" cycles\n");
     if (!r.ok) {
         return fail("the quick memory test");
     }
@@ -171,13 +135,13 @@ int main(void)
     for (uint32_t i = 0; i < BANDWIDTH_WORDS; ++i) {
         want += i * 0x9E3779B9u;
     }
-    puts_("sdram_test: CPU: ");
-    put_dec(BANDWIDTH_WORDS);
-    puts_(" consecutive words: store ");
+    say("sdram_test: CPU: ");
+    say_dec(BANDWIDTH_WORDS);
+    say(" consecutive words: store ");
     put_per_word(store_cycles, BANDWIDTH_WORDS);
-    puts_(", load ");
+    say(", load ");
     put_per_word(load_cycles, BANDWIDTH_WORDS);
-    puts_(" cycles a word\n");
+    say(" cycles a word\n");
     if (sum != want) {
         return fail("the consecutive words read back wrong");
     }
@@ -190,12 +154,12 @@ int main(void)
     __asm__ volatile("fence.i" ::: "memory");
     uint32_t (*const from_sdram)(uint32_t) = (uint32_t (*)(uint32_t))(uintptr_t)code;
     const uint32_t got = from_sdram(41u);
-    puts_("sdram_test: code in the SDRAM returned ");
-    put_dec(got);
-    uart_putc('\n');
+    say("sdram_test: code in the SDRAM returned ");
+    say_dec(got);
+    say_char('\n');
     if (got != 42u) {
         return fail("code run from the SDRAM");
     }
-    puts_("sdram_test: ok\n");
+    say("sdram_test: ok\n");
     return 0;
 }
