@@ -321,7 +321,7 @@ endef
 # path of app/cam_path.h, one a frame, and on the SoC only the first FW_PATH_SOC_VIEWS, since socsim
 # simulates about 0.6 M CPU cycles a second), fw-size's.
 FW_TEST_FRAMES := 4
-FW_TEST_DIR    := $(BUILD)/fw-test$(FW_PSUFFIX)
+FW_TEST_DIR    := $(BUILD)/fw-test$(FW_PSUFFIX)$(SOC_MEM_SUFFIX)
 FW_UPLOAD_TEST_FRAMES := 16
 SOC_UPLOAD_FRAMES := 10
 FW_BENCH_FRAMES := 8

@@ -7,4 +7,5 @@ soc_rtl/soc_wb_decoder.v
 soc_rtl/soc_ram.v
 soc_rtl/soc_uart.v
 soc_rtl/soc_sys.v
+soc_rtl/soc_spiflash.v
 soc_rtl/soc_top.v

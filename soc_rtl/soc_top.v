@@ -2,8 +2,11 @@
 // a UART and the system registers, on one Wishbone bus. Memory map: contract/soc-memory-map.md.
 // With SDRAM_BYTES > 0 the SDRAM region and its controller's registers leave soc_top as two Wishbone
 // master ports (sdram_*, sdram_ctrl_*): the controller (LiteDRAM, generated at build time, and the
-// chip's pins) belongs to the system around soc_top (soc_rtl/litedram, docs/sdram.md). Without
-// SDRAM both regions answer ERR and the ports stay idle (tie their inputs to 0).
+// chip's pins) belongs to the system around soc_top (soc_rtl/litedram, docs/sdram.md). Such a build
+// also reads the board's SPI flash (soc_spiflash, region FLASH: the boot program copies the
+// firmware from it into the SDRAM, docs/boot.md); its pins leave soc_top as flash_* (on ECP5 the
+// board's top sends flash_sck through USRMCLK). Without SDRAM the three regions answer ERR and the
+// ports stay idle (tie their inputs to 0: soc_rtl/soc_top_no_sdram.vh).
 //
 //   VexRiscv iBus ─┐                      ┌─ soc_ram (RAM_BYTES, RAM_INIT)
 //                  ├─ soc_wb_arbiter ─ soc_wb_decoder ─┼─ gpu_wb_slave ─ gpu_top ─ VGA pins
@@ -75,6 +78,11 @@ module soc_top #(
     input  wire [31:0]               sdram_ctrl_dat_r,
     input  wire                      sdram_ctrl_ack,
     input  wire                      sdram_ctrl_err,
+    // SPI flash (SDRAM_BYTES > 0), SPI mode 0; idle: cs_n high, sck low
+    output wire       flash_cs_n,
+    output wire       flash_sck,
+    output wire       flash_mosi,
+    input  wire       flash_miso,     // registered inside (soc_spiflash)
     // board
     output wire [7:0] leds,           // SYS LEDS
     output wire       gpu_frame_swapped,  // one clk cycle at each GPU buffer swap
@@ -198,6 +206,8 @@ module soc_top #(
     wire [31:0] uart_dat_r;
     wire        sys_stb, sys_ack, sys_err;
     wire [31:0] sys_dat_r;
+    wire        flash_stb, flash_ack, flash_err;
+    wire [31:0] flash_dat_r;
 
     soc_wb_decoder #(
         .RAM_BYTES   (RAM_BYTES),
@@ -222,6 +232,10 @@ module soc_top #(
         .sdram_ctrl_dat_r(sdram_ctrl_dat_r),
         .sdram_ctrl_ack  (sdram_ctrl_ack),
         .sdram_ctrl_err  (sdram_ctrl_err),
+        .flash_stb  (flash_stb),
+        .flash_dat_r(flash_dat_r),
+        .flash_ack  (flash_ack),
+        .flash_err  (flash_err),
         .gpu_stb    (gpu_stb),
         .gpu_dat_r  (gpu_dat_r),
         .gpu_ack    (gpu_ack),
@@ -249,6 +263,39 @@ module soc_top #(
     assign sdram_ctrl_adr   = bus_adr[SDRAM_CTRL_AW-1:0];
     assign sdram_ctrl_dat_w = bus_dat_w;
     assign sdram_ctrl_sel   = bus_sel;
+
+    localparam integer FLASH_AW = $clog2(soc_pkg::SOC_FLASH_WINDOW_BYTES / 4);
+    generate if (SDRAM_BYTES != 0) begin : g_flash
+        soc_spiflash #(
+            .CLK_HZ    (CLK_HZ),
+            .ADDR_BITS (FLASH_AW + 2)
+        ) u_flash (
+            .clk        (clk),
+            .rst        (rst),
+            .wb_cyc     (bus_cyc),
+            .wb_stb     (flash_stb),
+            .wb_we      (bus_we),
+            .wb_adr     (bus_adr[FLASH_AW-1:0]),
+            .wb_sel     (bus_sel),
+            .wb_dat_w   (bus_dat_w),
+            .wb_dat_r   (flash_dat_r),
+            .wb_ack     (flash_ack),
+            .wb_err     (flash_err),
+            .flash_cs_n (flash_cs_n),
+            .flash_sck  (flash_sck),
+            .flash_mosi (flash_mosi),
+            .flash_miso (flash_miso)
+        );
+    end else begin : g_no_flash
+        // the decoder never selects the FLASH region without SDRAM
+        assign flash_dat_r = 32'd0;
+        assign flash_ack   = 1'b0;
+        assign flash_err   = 1'b0;
+        assign flash_cs_n  = 1'b1;
+        assign flash_sck   = 1'b0;
+        assign flash_mosi  = 1'b0;
+        wire unused_flash = &{1'b0, flash_stb, flash_miso};
+    end endgenerate
 
     soc_ram #(
         .RAM_BYTES (RAM_BYTES),

@@ -1,12 +1,12 @@
-// soc_top_no_sdram.vh — soc_top in a system without SDRAM (SDRAM_BYTES 0, both SDRAM regions
-// answer ERR): SOC_TOP_NO_SDRAM_WIRES declares what its SDRAM ports' outputs drive (unused), and
-// SOC_TOP_NO_SDRAM_PORTS connects them and ties the answers off, in soc_top's port list — so each
-// board says "no SDRAM" in two lines. Included from the repository root, as contract/ headers are.
+// soc_top_no_sdram.vh — soc_top in a system without SDRAM (SDRAM_BYTES 0, both SDRAM regions and
+// the flash answer ERR): SOC_TOP_NO_SDRAM_WIRES declares what its SDRAM and flash ports' outputs
+// drive (unused), and SOC_TOP_NO_SDRAM_PORTS connects them and ties the answers off, in soc_top's
+// port list — so each board says "no SDRAM" in two lines. Included from the repository root, as contract/ headers are.
 `ifndef SOC_TOP_NO_SDRAM_VH
 `define SOC_TOP_NO_SDRAM_VH
 
 `define SOC_TOP_NO_SDRAM_WIRES \
-    wire [5:0]  sdram_idle; \
+    wire [8:0]  sdram_idle; \
     wire [$clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4)-1:0]      sdram_idle_adr; \
     wire [$clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4)-1:0] sdram_idle_ctrl_adr; \
     wire [31:0] sdram_idle_dat, sdram_idle_ctrl_dat; \
@@ -34,6 +34,10 @@
     .sdram_ctrl_sel   (sdram_idle_ctrl_sel), \
     .sdram_ctrl_dat_r (32'd0), \
     .sdram_ctrl_ack   (1'b0), \
-    .sdram_ctrl_err   (1'b0)
+    .sdram_ctrl_err   (1'b0), \
+    .flash_cs_n       (sdram_idle[6]), \
+    .flash_sck        (sdram_idle[7]), \
+    .flash_mosi       (sdram_idle[8]), \
+    .flash_miso       (1'b0)
 
 `endif

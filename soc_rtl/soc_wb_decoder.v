@@ -1,13 +1,14 @@
 // soc_wb_decoder: the SoC's address decoder (contract/soc-memory-map.md), one Wishbone bus onto the
-// RAM, the SDRAM and its controller's registers (when the build has them), the GPU, the UART and
-// SYS, with the error responder for every other address.
+// RAM, the SDRAM, its controller's registers and the flash (when the build has SDRAM, whose
+// firmware the boot program copies from the flash), the GPU, the UART and SYS, with the error
+// responder for every other address.
 //
 // Contract: combinational select, no added latency. A slave's *_stb is cyc && stb && (the address is
 // in its region); the shared request signals (we, adr, dat_w, sel, cti) go to every slave unchanged
 // (wired in soc_top). ack/err/dat_r come from the selected slave; the slaves answer only while
 // selected, so ack and err are ORed and dat_r is multiplexed by the region. The RAM region answers
-// only below RAM_BYTES, the SDRAM region only below SDRAM_BYTES, the SDRAM_CTRL region only when
-// SDRAM_BYTES is not 0; the rest of those windows, and every address outside the regions, is
+// only below RAM_BYTES, the SDRAM region only below SDRAM_BYTES, the SDRAM_CTRL and FLASH regions
+// only when SDRAM_BYTES is not 0; the rest of those windows, and every address outside the regions, is
 // answered by the error responder: err one clock after the request, once per request (so a burst
 // there gets one err per beat, two clocks each), dat_r = 0. Offsets inside UART and SYS that name
 // no register are refused by those slaves themselves (they answer err).
@@ -39,6 +40,11 @@ module soc_wb_decoder #(
     input  wire [31:0] sdram_ctrl_dat_r,
     input  wire        sdram_ctrl_ack,
     input  wire        sdram_ctrl_err,
+    // the flash (soc_spiflash; it refuses writes with err)
+    output wire        flash_stb,
+    input  wire [31:0] flash_dat_r,
+    input  wire        flash_ack,
+    input  wire        flash_err,
     // GPU (gpu_wb_slave; it refuses partial writes with err)
     output wire        gpu_stb,
     input  wire [31:0] gpu_dat_r,
@@ -60,12 +66,14 @@ module soc_wb_decoder #(
     localparam integer RAM_WB  = $clog2(soc_pkg::SOC_RAM_WINDOW_BYTES);
     localparam integer SDRAM_WB = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES);
     localparam integer SDRAM_CTRL_WB = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES);
+    localparam integer FLASH_WB = $clog2(soc_pkg::SOC_FLASH_WINDOW_BYTES);
     localparam integer GPU_WB  = $clog2(soc_pkg::SOC_GPU_WINDOW_BYTES);
     localparam integer UART_WB = $clog2(soc_pkg::SOC_UART_WINDOW_BYTES);
     localparam integer SYS_WB  = $clog2(soc_pkg::SOC_SYS_WINDOW_BYTES);
     localparam [31:0] RAM_BASE  = soc_pkg::SOC_RAM_BASE;
     localparam [31:0] SDRAM_BASE = soc_pkg::SOC_SDRAM_BASE;
     localparam [31:0] SDRAM_CTRL_BASE = soc_pkg::SOC_SDRAM_CTRL_BASE;
+    localparam [31:0] FLASH_BASE = soc_pkg::SOC_FLASH_BASE;
     localparam [31:0] GPU_BASE  = soc_pkg::SOC_GPU_BASE;
     localparam [31:0] UART_BASE = soc_pkg::SOC_UART_BASE;
     localparam [31:0] SYS_BASE  = soc_pkg::SOC_SYS_BASE;
@@ -92,15 +100,17 @@ module soc_wb_decoder #(
     end endgenerate
     wire hit_sdram = (byte_adr >> SDRAM_WB) == (SDRAM_BASE >> SDRAM_WB) && sdram_in_size;
     wire hit_sdram_ctrl = SDRAM_BYTES != 0 && (byte_adr >> SDRAM_CTRL_WB) == (SDRAM_CTRL_BASE >> SDRAM_CTRL_WB);
+    wire hit_flash = SDRAM_BYTES != 0 && (byte_adr >> FLASH_WB) == (FLASH_BASE >> FLASH_WB);
     wire hit_gpu  = (byte_adr >> GPU_WB) == (GPU_BASE >> GPU_WB);
     wire hit_uart = (byte_adr >> UART_WB) == (UART_BASE >> UART_WB);
     wire hit_sys  = (byte_adr >> SYS_WB) == (SYS_BASE >> SYS_WB);
-    wire hit_none = !(hit_ram || hit_sdram || hit_sdram_ctrl || hit_gpu || hit_uart || hit_sys);
+    wire hit_none = !(hit_ram || hit_sdram || hit_sdram_ctrl || hit_flash || hit_gpu || hit_uart || hit_sys);
 
     wire req = cyc && stb;
     assign ram_stb  = req && hit_ram;
     assign sdram_stb = req && hit_sdram;
     assign sdram_ctrl_stb = req && hit_sdram_ctrl;
+    assign flash_stb = req && hit_flash;
     assign gpu_stb  = req && hit_gpu;
     assign uart_stb = req && hit_uart;
     assign sys_stb  = req && hit_sys;
@@ -114,11 +124,12 @@ module soc_wb_decoder #(
     end
     wire none_err = none_err_q && req && hit_none;
 
-    assign ack   = ram_ack || sdram_ack || sdram_ctrl_ack || gpu_ack || uart_ack || sys_ack;
-    assign err   = none_err || sdram_err || sdram_ctrl_err || gpu_err || uart_err || sys_err;
+    assign ack   = ram_ack || sdram_ack || sdram_ctrl_ack || flash_ack || gpu_ack || uart_ack || sys_ack;
+    assign err   = none_err || sdram_err || sdram_ctrl_err || flash_err || gpu_err || uart_err || sys_err;
     assign dat_r = hit_ram  ? ram_dat_r  :
                    hit_sdram ? sdram_dat_r :
                    hit_sdram_ctrl ? sdram_ctrl_dat_r :
+                   hit_flash ? flash_dat_r :
                    hit_gpu  ? gpu_dat_r  :
                    hit_uart ? uart_dat_r :
                    hit_sys  ? sys_dat_r  : 32'd0;

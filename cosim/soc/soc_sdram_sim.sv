@@ -1,6 +1,7 @@
 // soc_sdram_sim: socsim's system with SDRAM — soc_top (the pixel clock tied to the system clock, as
 // socsim's plain build) with its SDRAM ports on soc_sdram (LiteDRAM's generated controller), the
-// chip's pins out to socsim, which plays the chip (cosim/sdram/sdram_chip.h) on them.
+// chip's pins out to socsim, which plays the chip (cosim/sdram/sdram_chip.h) on them, and soc_top's
+// flash pins likewise (cosim/flash/spi_flash.h).
 //
 // The ports are soc_top's but the SDRAM's, so socsim drives either system with the same code; DQ is
 // split as tests/sdram/litedram_tb_top.sv splits it: the controller's drive through its TRELLIS_IO
@@ -48,7 +49,12 @@ module soc_sdram_sim #(
     output wire        ctrl_dq_oe,      // the controller drives DQ
     input  wire [15:0] chip_dq,         // the chip's drive ...
     input  wire        chip_dq_oe,      // ... while this is high
-    output wire        sdram_init_done
+    output wire        sdram_init_done,
+    // ---- the SPI flash's pins, for socsim's flash model
+    output wire        flash_cs_n,
+    output wire        flash_sck,
+    output wire        flash_mosi,
+    input  wire        flash_miso
 );
     localparam integer AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4);
     localparam integer CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4);
@@ -79,6 +85,7 @@ module soc_sdram_sim #(
         .sdram_ctrl_cyc (c_cyc), .sdram_ctrl_stb (c_stb), .sdram_ctrl_we (c_we), .sdram_ctrl_adr (c_adr),
         .sdram_ctrl_dat_w (c_dat_w), .sdram_ctrl_sel (c_sel), .sdram_ctrl_dat_r (c_dat_r),
         .sdram_ctrl_ack (c_ack), .sdram_ctrl_err (c_err),
+        .flash_cs_n (flash_cs_n), .flash_sck (flash_sck), .flash_mosi (flash_mosi), .flash_miso (flash_miso),
         .leds (leds), .gpu_frame_swapped (gpu_frame_swapped), .gpu_error (gpu_error),
         .exit_valid (exit_valid), .exit_code (exit_code)
     );

@@ -79,6 +79,7 @@ using SocModel = Vulx3s_system;
 #elif defined(SOCSIM_SDRAM)
 #include "Vsoc_sdram_sim.h"
 #include "sdram_pins.h"
+#include "spi_flash.h"
 using SocModel = Vsoc_sdram_sim;
 #else
 #include "Vsoc_top.h"
@@ -123,6 +124,8 @@ struct Options {
     uint64_t progress_cycles = 50000000;  // a progress line after this many cycles without a frame
     uint32_t stop_frames = 0;             // --stop-frames N: end after N frames (0: at SYS EXIT only)
     int sdram_fault_a = -1;               // --sdram-fault-a N: the SDRAM's address pin N stuck low
+    std::string boot;                     // --boot FILE.hex: the RAM's image, the firmware in the flash
+    std::string flash_image;              // --flash FILE: the flash's image at the boot offset
     uint32_t uart_divider = (SOCSIM_CLK_HZ + SOC_UART_BAUD / 2) / SOC_UART_BAUD;  // as soc_uart rounds
     UartReplies replies;
 };
@@ -142,6 +145,10 @@ int usage()
         "  --stop-frames N    end with status 0 once N frames were captured (a firmware that runs until Q)\n"
 #ifdef SOCSIM_SDRAM
         "  --sdram-fault-a N  the SDRAM chip's address pin A<N> stuck low (0..12): a broken board\n"
+        "  --boot FILE.hex    the RAM's image is the boot program FILE.hex (bsp/soc/boot), and the\n"
+        "                     firmware (--fw FILE.elf) goes into the flash as FILE.elf.img\n"
+        "  --flash FILE       the flash holds FILE at the boot image's offset (default with --boot:\n"
+        "                     the firmware's image; without either the flash is erased)\n"
 #endif
         "  Exit status: the firmware's (SYS EXIT); 1 on a harness error; 2 on a usage error.\n");
 }
@@ -164,6 +171,10 @@ bool parse(int argc, char **argv, Options &o)
                 std::fprintf(stderr, "socsim: --sdram-fault-a wants an address pin 0..12, got '%s'\n", argv[*i]);
                 return HarnessArg::Bad;
             }
+        } else if (a == "--boot" && has_value) {
+            o.boot = argv[++*i];
+        } else if (a == "--flash" && has_value) {
+            o.flash_image = argv[++*i];
 #endif
         } else if (a == "--uart-divider" && has_value) {
             o.uart_divider = static_cast<uint32_t>(std::strtoul(argv[++*i], nullptr, 0));
@@ -180,7 +191,12 @@ bool parse(int argc, char **argv, Options &o)
     if (!harness_parse("socsim", argc, argv, 1, SOCSIM_TRACE != 0, &o.harness, own)) {
         return false;
     }
-    if (!o.harness.firmware.empty()) {
+    if (!o.boot.empty()) {
+        o.hex = o.boot;  // the boot program in the RAM, the firmware's image in the flash
+        if (o.flash_image.empty() && !o.harness.firmware.empty()) {
+            o.flash_image = o.harness.firmware + ".img";
+        }
+    } else if (!o.harness.firmware.empty()) {
         o.hex = o.harness.firmware + ".hex";  // --fw FILE.elf: its RAM image
     }
     return !o.hex.empty() && o.uart_divider >= 4;
@@ -278,6 +294,11 @@ private:
     // clock's falling edge: the phase docs/sdram.md argues. Its first violation ends the run.
     std::unique_ptr<SdramChip> sdram_;
     void sdram_clock();
+    // The SPI flash on soc_top's flash pins (cosim/flash/spi_flash.h), stepped after each rising
+    // edge of the system clock, where soc_spiflash's registered pins change; its MISO is what the
+    // reader samples at the next one. Its first violation ends the run.
+    std::unique_ptr<SpiFlash> flash_;
+    void flash_step(uint64_t t_ps);
 #endif
     std::string video_error_;   // the board's: the first TMDS error, or a colour it cannot have sent
     ModelCheck model_;
@@ -497,6 +518,9 @@ void SocRun::clock_once()
     const bool pixel_edge = top_->vga_pix_stb;  // outputs change on the edge where it is high
     top_->clk = top_->clk_pix = 1;
     top_->eval();
+#ifdef SOCSIM_SDRAM
+    flash_step(2 * kHalfPs * cycles_ + kHalfPs);
+#endif
     trace_dump(2 * kHalfPs * cycles_ + kHalfPs);
     if (pixel_edge) {
         vga_sample(top_->vga_hsync_n, top_->vga_vsync_n, top_->vga_r, top_->vga_g, top_->vga_b);
@@ -511,6 +535,12 @@ void SocRun::sdram_clock()
 {
     sdram_drive(*top_, sdram_->clock(sdram_pins_of(*top_)));
     top_->eval();
+}
+
+void SocRun::flash_step(uint64_t t_ps)
+{
+    const SpiFlashOut out = flash_->step(t_ps, top_->flash_cs_n, top_->flash_sck, top_->flash_mosi);
+    top_->flash_miso = out.oe && out.miso;  // undriven: the board's pull-up is not modelled, read 0
 }
 #endif
 
@@ -657,6 +687,9 @@ void SocRun::summary_keys(FILE *f) const
                  static_cast<unsigned long long>(sdram_->error_count()), static_cast<unsigned long long>(k.refreshes),
                  static_cast<unsigned long long>(k.words_read), static_cast<unsigned long long>(k.words_written));
     std::fprintf(f, "sdram_init_done=%d\n", top_->sdram_init_done ? 1 : 0);
+    std::fprintf(f, "flash_violations=%llu\nflash_bytes_read=%llu\n",
+                 static_cast<unsigned long long>(flash_->error_count()),
+                 static_cast<unsigned long long>(flash_->counters().bytes_read));
 #endif
 }
 
@@ -702,6 +735,14 @@ int SocRun::run()
         cfg.stuck_low_address_pin = opt_.sdram_fault_a;
         sdram_.reset(new SdramChip(cfg));
         top_->chip_dq_oe = 0;
+        flash_.reset(new SpiFlash(SpiFlashConfig()));  // erased but for the image
+        if (!opt_.flash_image.empty()) {
+            if (!flash_->load_file(SOC_BOOT_FLASH_IMAGE_OFFSET, opt_.flash_image, &error)) {
+                return fail("setup", "%s", error.c_str());
+            }
+            std::printf("socsim: %s in the flash at 0x%08x\n", opt_.flash_image.c_str(), SOC_BOOT_FLASH_IMAGE_OFFSET);
+        }
+        top_->flash_miso = 0;
     }
 #endif
     top_->uart_rx = 1;
@@ -749,6 +790,9 @@ int SocRun::run()
 #ifdef SOCSIM_SDRAM
         if (sdram_->error_count() != 0) {
             return fail("sdram", "%s", sdram_->errors().front().c_str());
+        }
+        if (flash_->error_count() != 0) {
+            return fail("flash", "%s", flash_->errors().front().c_str());
         }
 #endif
         if (top_->exit_valid) {

@@ -69,11 +69,12 @@ LITEDRAM_SIM_DIR         := $(BUILD)/litedram/sim-$(SOC_SIM_CLK_HZ)
 LITEDRAM_SIM_V           := $(LITEDRAM_SIM_DIR)/litedram_core.v
 SOCSIM_SYSTEM_sdram       = soc_sdram_sim -GPIX_CLK_HZ=$(SOC_SIM_CLK_HZ) -GSDRAM_BYTES=$(SOC_SDRAM_BYTES) --timescale 1ns/1ps
 SOCSIM_SOURCES_sdram      = soc_rtl/litedram/lint.vlt soc_rtl/litedram/soc_sdram.v cosim/soc/soc_sdram_sim.sv \
-                            $(LITEDRAM_SIM_V) $(wildcard cosim/sdram/ecp5/*.v) $(abspath cosim/sdram/sdram_chip.cpp)
-SOCSIM_CFLAGS_sdram      := -DSOCSIM_SDRAM -I$(CURDIR)/cosim/sdram
+                            $(LITEDRAM_SIM_V) $(wildcard cosim/sdram/ecp5/*.v) $(abspath cosim/sdram/sdram_chip.cpp) \
+                            $(abspath cosim/flash/spi_flash.cpp)
+SOCSIM_CFLAGS_sdram      := -DSOCSIM_SDRAM -I$(CURDIR)/cosim/sdram -I$(CURDIR)/cosim/flash
 SOCSIM_PREREQS_sdram     := $(LITEDRAM_SIM_V) soc_rtl/litedram/lint.vlt soc_rtl/litedram/soc_sdram.v \
                             cosim/soc/soc_sdram_sim.sv $(wildcard cosim/sdram/ecp5/*.v) cosim/sdram/sdram_chip.cpp \
-                            cosim/sdram/sdram_chip.h cosim/sdram/sdram_pins.h
+                            cosim/sdram/sdram_chip.h cosim/sdram/sdram_pins.h cosim/flash/spi_flash.cpp cosim/flash/spi_flash.h
 $(LITEDRAM_SIM_V): soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram.yml contract/soc_map.h $(SOC_VENV)
 	@mkdir -p $(LITEDRAM_SIM_DIR)
 	$(Q)$(call say,GEN,$@).venv/bin/python soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram.yml \
@@ -81,7 +82,7 @@ $(LITEDRAM_SIM_V): soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram
 	  || { tail -20 $(LITEDRAM_SIM_DIR)/gen.log; exit 1; }
 # Bare-metal programs of the system with SDRAM, built against the LiteDRAM headers of its controller
 # ($(LITEDRAM_SIM_DIR)/include: the register offsets of the power-up sequence) and laid out in the
-# on-chip RAM by linker/soc.ld (the stack above .bss): $(call SOC_SDRAM_PROGRAM,ELF,SOURCES).
+# on-chip RAM by linker/soc.ld (the stack above .bss): $(call SOC_SDRAM_PROGRAM,ELF,SOURCES[,FLAGS]).
 # postlink checks each against the boot build's RAM (SOC_RAM_BOOT_BYTES) and writes ELF.hex.
 SOC_SDRAM_PROGRAM_SRC := bsp/soc/boot/say.c bsp/soc/sdram/sdram_init.c bsp/soc/sdram/memtest.c
 SOC_SDRAM_PROGRAM_HDRS = $(wildcard bsp/soc/boot/*.h bsp/soc/sdram/*.h bsp/soc/sdram/include/*.h bsp/soc/sdram/include/hw/*.h)
@@ -91,7 +92,7 @@ $(1): $(2) $(SOC_SDRAM_PROGRAM_SRC) $$(SOC_SDRAM_PROGRAM_HDRS) linker/soc.ld con
 	$$(Q)$$(call say,LD,$$@)$(RV_CC) $(SOC_RV_FLAGS) --specs=picolibc.specs -Os -g -std=c11 -ffreestanding -nostartfiles \
 	  -Wall -Wextra -Werror -Icontract -Ifirmware -Ibsp/soc/boot -Ibsp/soc/sdram -Ibsp/soc/sdram/include \
 	  -I$(LITEDRAM_SIM_DIR)/include -T linker/soc.ld -Wl,--defsym=__stack_size=2048 -Wl,--gc-sections \
-	  -Wl,--no-warn-rwx-segments $(2) $(SOC_SDRAM_PROGRAM_SRC) -lgcc -o $$@
+	  -Wl,--no-warn-rwx-segments $(3) $(2) $(SOC_SDRAM_PROGRAM_SRC) -lgcc -o $$@
 	$$(Q)$$(PYTHON) bsp/soc/postlink.py --ram-bytes $$$$(( $(SOC_RAM_BOOT_KIB) * 1024 )) \
 	  --size $(patsubst %gcc,%size,$(RV_CC)) --nm $(patsubst %gcc,%nm,$(RV_CC)) $$@ >/dev/null
 endef
@@ -100,7 +101,7 @@ endef
 SOC_BOOT_ELF := $(BUILD)/soc/boot.elf
 SOC_BOOT_HEX := $(SOC_BOOT_ELF).hex
 $(SOC_BOOT_HEX): $(SOC_BOOT_ELF)
-$(eval $(call SOC_SDRAM_PROGRAM,$(SOC_BOOT_ELF),bsp/soc/boot/boot_crt0.S bsp/soc/boot/boot.c bsp/soc/boot/boot_image.c firmware/model/crc32.c))
+$(eval $(call SOC_SDRAM_PROGRAM,$(SOC_BOOT_ELF),bsp/soc/boot/boot_crt0.S bsp/soc/boot/boot.c bsp/soc/boot/boot_image.c firmware/model/crc32.c,-DCRC32_BYTE_TABLE=1))
 # The SDRAM's test program (tests/soc/sdram_test.c, suite soc-sdram).
 SOC_SDRAM_TEST_ELF := $(BUILD)/soc/sdram_test.elf
 SOC_SDRAM_TEST_HEX := $(SOC_SDRAM_TEST_ELF).hex
@@ -139,7 +140,7 @@ socsim_rules_unless_listed = $(if $(filter $(notdir $(1)),$(SOCSIM_IDS)),,$(eval
 $(call socsim_rules_unless_listed,$(SOCSIM_DIR),SOCSIM_CMD,$(SOCSIM_PREREQS_$(SOCSIM_SYSTEM)))
 $(call socsim_rules_unless_listed,$(SOCSIM_ULX3S_DIR),SOCSIM_ULX3S_CMD,$(SOCSIM_PREREQS_ulx3s))
 
-.PHONY: socsim socsim-ulx3s run-soc soc-fw soc-test-deps bench-soc soc-smoke
+.PHONY: socsim socsim-ulx3s run-soc soc-fw soc-test-deps soc-sdram-test-deps bench-soc soc-smoke
 soc-fw:
 	+@$(SOC_FW_MAKE) SCENE=$(SCENE) FRAMES=$(FRAMES) FW_BACKEND=$(FW_BACKEND) $(SOC_FW_ELF)
 
@@ -165,6 +166,9 @@ endif
 # (tests/suites.toml).
 soc-test-deps:
 	+@$(SOC_FW_MAKE) soc-test-elfs
+# The same programs run from the SDRAM (SOC_MEM=sdram: $(BUILD)/fw-test-soc-sdram/*.elf.img).
+soc-sdram-test-deps:
+	+@$(MAKE) --no-print-directory FW_PLATFORM=soc BUILD=$(BUILD) SOC_MEM=sdram FW_DIR=$(BUILD)/firmware-soc-sdram soc-test-elfs
 
 # The smoke program's RAM image on socsim, answering its UART prompts (tests/soc/smoke.sh; suite
 # rtl-soc-smoke).

@@ -11,13 +11,38 @@ static const uint32_t crc32_nibble[16] = {
     0x9B64C2B0u, 0x86D3D2D4u, 0xA00AE278u, 0xBDBDF21Cu,
 };
 
+#if CRC32_BYTE_TABLE
+/* -DCRC32_BYTE_TABLE=1 (the boot program, bsp/soc/boot, which checks a whole firmware image and has
+ * the on-chip RAM to itself): a byte at a time from a 1 KiB table made from the nibble table at the
+ * first call — a third of the cycles. */
+static uint32_t crc32_byte[256];
+
+static void crc32_make_byte_table(void)
+{
+    for (uint32_t b = 0; b < 256u; b++) {
+        uint32_t c = b;
+        c = (c >> 4) ^ crc32_nibble[c & 0xFu];
+        crc32_byte[b] = (c >> 4) ^ crc32_nibble[c & 0xFu];
+    }
+}
+#endif
+
 uint32_t crc32_update(uint32_t crc, const uint8_t *p, size_t n)
 {
     crc = ~crc;
+#if CRC32_BYTE_TABLE
+    if (crc32_byte[1] == 0u) {  /* entry 1 is never 0 once made */
+        crc32_make_byte_table();
+    }
+    for (size_t i = 0; i < n; i++) {
+        crc = (crc >> 8) ^ crc32_byte[(crc ^ p[i]) & 0xFFu];
+    }
+#else
     for (size_t i = 0; i < n; i++) {
         crc ^= p[i];
         crc = (crc >> 4) ^ crc32_nibble[crc & 0xFu];
         crc = (crc >> 4) ^ crc32_nibble[crc & 0xFu];
     }
+#endif
     return ~crc;
 }

@@ -9,7 +9,7 @@
 // request's first (task bounded).
 // Properties (asserted): the region of an address is computed here independently (base <= address
 // < base + size, the RAM's size RAM_BYTES and the SDRAM's SDRAM_BYTES, not their windows; the
-// SDRAM's registers only in a build with SDRAM), and each slave's stb is cyc && stb &&
+// SDRAM's registers and the flash only in a build with SDRAM), and each slave's stb is cyc && stb &&
 // (the address in its region), nothing else: exactly one slave per request, or none for an address
 // outside every region; such a request is answered by err and nothing else in its second clock
 // (one clock late, once), with dat_r 0; ack, err and dat_r are the selected slave's, so a slave's
@@ -36,6 +36,9 @@ module soc_wb_decoder_check #(
     input wire [31:0] sdram_ctrl_dat_r,
     input wire        sdram_ctrl_ack,
     input wire        sdram_ctrl_err,
+    input wire [31:0] flash_dat_r,
+    input wire        flash_ack,
+    input wire        flash_err,
     input wire [31:0] gpu_dat_r,
     input wire        gpu_ack,
     input wire        gpu_err,
@@ -47,7 +50,7 @@ module soc_wb_decoder_check #(
     input wire        sys_err
 );
     wire [31:0] dat_r;
-    wire        ack, err, ram_stb, sdram_stb, sdram_ctrl_stb, gpu_stb, uart_stb, sys_stb;
+    wire        ack, err, ram_stb, sdram_stb, sdram_ctrl_stb, flash_stb, gpu_stb, uart_stb, sys_stb;
     soc_wb_decoder #(.RAM_BYTES(RAM_BYTES), .SDRAM_BYTES(SDRAM_BYTES)) dut (
         .clk(clk), .rst(rst), .cyc(cyc), .stb(stb), .adr(adr),
         .dat_r(dat_r), .ack(ack), .err(err),
@@ -55,6 +58,7 @@ module soc_wb_decoder_check #(
         .sdram_stb(sdram_stb), .sdram_dat_r(sdram_dat_r), .sdram_ack(sdram_ack), .sdram_err(sdram_err),
         .sdram_ctrl_stb(sdram_ctrl_stb), .sdram_ctrl_dat_r(sdram_ctrl_dat_r),
         .sdram_ctrl_ack(sdram_ctrl_ack), .sdram_ctrl_err(sdram_ctrl_err),
+        .flash_stb(flash_stb), .flash_dat_r(flash_dat_r), .flash_ack(flash_ack), .flash_err(flash_err),
         .gpu_stb(gpu_stb), .gpu_dat_r(gpu_dat_r), .gpu_ack(gpu_ack), .gpu_err(gpu_err),
         .uart_stb(uart_stb), .uart_dat_r(uart_dat_r), .uart_ack(uart_ack), .uart_err(uart_err),
         .sys_stb(sys_stb), .sys_dat_r(sys_dat_r), .sys_ack(sys_ack), .sys_err(sys_err)
@@ -76,7 +80,9 @@ module soc_wb_decoder_check #(
     wire in_gpu  = in_region(a, {1'b0, soc_pkg::SOC_GPU_BASE}, soc_pkg::SOC_GPU_WINDOW_BYTES);
     wire in_uart = in_region(a, {1'b0, soc_pkg::SOC_UART_BASE}, soc_pkg::SOC_UART_WINDOW_BYTES);
     wire in_sys  = in_region(a, {1'b0, soc_pkg::SOC_SYS_BASE}, soc_pkg::SOC_SYS_WINDOW_BYTES);
-    wire in_none = !(in_ram || in_sdram || in_sdram_ctrl || in_gpu || in_uart || in_sys);
+    wire in_flash = in_region(a, {1'b0, soc_pkg::SOC_FLASH_BASE},
+                              SDRAM_BYTES != 0 ? soc_pkg::SOC_FLASH_WINDOW_BYTES : 0);
+    wire in_none = !(in_ram || in_sdram || in_sdram_ctrl || in_flash || in_gpu || in_uart || in_sys);
     wire req     = cyc && stb;
 
     // The Wishbone rules: upstream the master's requests assumed and the decoder's answers asserted;
@@ -98,6 +104,10 @@ module soc_wb_decoder_check #(
         .clk(clk), .rst(rst), .cyc(cyc), .stb(sdram_ctrl_stb), .adr(adr), .ack(sdram_ctrl_ack),
         .err(sdram_ctrl_err), .f_wait()
     );
+    soc_wb_decoder_port #(.DUT_ANSWERS(0), .MAX_WAIT(SLAVE_WAIT)) p_flash (
+        .clk(clk), .rst(rst), .cyc(cyc), .stb(flash_stb), .adr(adr), .ack(flash_ack), .err(flash_err),
+        .f_wait()
+    );
     soc_wb_decoder_port #(.DUT_ANSWERS(0), .MAX_WAIT(SLAVE_WAIT)) p_gpu (
         .clk(clk), .rst(rst), .cyc(cyc), .stb(gpu_stb), .adr(adr), .ack(gpu_ack), .err(gpu_err),
         .f_wait()
@@ -114,6 +124,7 @@ module soc_wb_decoder_check #(
     wire ram_answer  = ram_stb && ram_ack;
     wire sdram_answer = sdram_stb && (sdram_ack || sdram_err);
     wire sdram_ctrl_answer = sdram_ctrl_stb && (sdram_ctrl_ack || sdram_ctrl_err);
+    wire flash_answer = flash_stb && (flash_ack || flash_err);
     wire gpu_answer  = gpu_stb && (gpu_ack || gpu_err);
     wire uart_answer = uart_stb && (uart_ack || uart_err);
     wire sys_answer  = sys_stb && (sys_ack || sys_err);
@@ -124,10 +135,11 @@ module soc_wb_decoder_check #(
         assert(ram_stb == (req && in_ram));
         assert(sdram_stb == (req && in_sdram));
         assert(sdram_ctrl_stb == (req && in_sdram_ctrl));
+        assert(flash_stb == (req && in_flash));
         assert(gpu_stb == (req && in_gpu));
         assert(uart_stb == (req && in_uart));
         assert(sys_stb == (req && in_sys));
-        if (req) assert($onehot({ram_stb, sdram_stb, sdram_ctrl_stb, gpu_stb, uart_stb, sys_stb, in_none}));
+        if (req) assert($onehot({ram_stb, sdram_stb, sdram_ctrl_stb, flash_stb, gpu_stb, uart_stb, sys_stb, in_none}));
         // An address outside every region: err in the request's second clock, nothing before it
         // (the request has then been answered: it never waits longer), dat_r 0.
         // (From the second clock on: the error responder's flop starts at any value.)
@@ -136,13 +148,14 @@ module soc_wb_decoder_check #(
         // The answer is the selected slave's, or the error responder's: nothing else reaches the
         // master, so a slave's answer only during a request to it.
         assert(ack == (ram_answer || (sdram_stb && sdram_ack) || (sdram_ctrl_stb && sdram_ctrl_ack)
-                       || (gpu_stb && gpu_ack) || (uart_stb && uart_ack) || (sys_stb && sys_ack)));
+                       || (flash_stb && flash_ack) || (gpu_stb && gpu_ack) || (uart_stb && uart_ack) || (sys_stb && sys_ack)));
         if (f_past_valid)
             assert(err == (none_err || (sdram_stb && sdram_err) || (sdram_ctrl_stb && sdram_ctrl_err)
-                           || (gpu_stb && gpu_err) || (uart_stb && uart_err) || (sys_stb && sys_err)));
+                           || (flash_stb && flash_err) || (gpu_stb && gpu_err) || (uart_stb && uart_err) || (sys_stb && sys_err)));
         if (ram_answer)  assert(dat_r == ram_dat_r);
         if (sdram_answer) assert(dat_r == sdram_dat_r);
         if (sdram_ctrl_answer) assert(dat_r == sdram_ctrl_dat_r);
+        if (flash_answer) assert(dat_r == flash_dat_r);
         if (gpu_answer)  assert(dat_r == gpu_dat_r);
         if (uart_answer) assert(dat_r == uart_dat_r);
         if (sys_answer)  assert(dat_r == sys_dat_r);
@@ -161,12 +174,16 @@ module soc_wb_decoder_check #(
             cover(f_run && sdram_stb && err);
             cover(f_run && sdram_ctrl_stb && ack);
             cover(f_run && sdram_ctrl_stb && err);
+            cover(f_run && flash_stb && ack);
+            cover(f_run && flash_stb && err);
         end else begin
-            // without SDRAM, both its regions answer err
+            // without SDRAM, its regions and the flash answer err
             cover(f_run && req && in_none && err && a >= soc_pkg::SOC_SDRAM_BASE
                   && a < soc_pkg::SOC_SDRAM_BASE + soc_pkg::SOC_SDRAM_WINDOW_BYTES);
             cover(f_run && req && in_none && err && a >= soc_pkg::SOC_SDRAM_CTRL_BASE
                   && a < soc_pkg::SOC_SDRAM_CTRL_BASE + soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES);
+            cover(f_run && req && in_none && err && a >= soc_pkg::SOC_FLASH_BASE
+                  && a < soc_pkg::SOC_FLASH_BASE + soc_pkg::SOC_FLASH_WINDOW_BYTES);
         end
         if (SDRAM_BYTES != 0 && SDRAM_BYTES < soc_pkg::SOC_SDRAM_WINDOW_BYTES)
             cover(f_run && req && in_none && err && a >= soc_pkg::SOC_SDRAM_BASE + SDRAM_BYTES

@@ -15,24 +15,42 @@
 # start-up of landscape, voxel and knot alone is millions of cycles: terrain, chunk meshes, the
 # knot's grid), and frames 0-1 already cover the keys (read at frame 1). Two scenes run at a time.
 # SOC_SCENES='tetra cubes' limits the scenes.
+#
+#   vs_cosim.sh sdram SOCSIM_SDRAM   (suite soc-sdram-scenes) the same with the firmware in the
+#   SDRAM: the system with LiteDRAM and the chip and flash models (socsim-sdram-<boot RAM>k), its
+#   RAM holding the boot program, which powers the SDRAM up, runs the quick memory test and copies
+#   each scene's image (the SOC_MEM=sdram builds) from the flash (docs/boot.md). The frames must be
+#   the same bytes, with no SDRAM or flash violation, the image loaded and started.
 source "$(dirname "$0")/../lib.sh"
 source "$(dirname "$0")/soc_lib.sh"
 need BUILD
+memory=on-chip
+boot=()
+image=hex
+if [ "${1:-}" = sdram ]; then
+    memory=SDRAM
+    socsim=${2:?usage: vs_cosim.sh sdram SOCSIM_SDRAM}
+    soc_test_dir=$BUILD/fw-test-soc-sdram
+    boot=(--boot "$BUILD/soc/boot.elf.hex")
+    need_file "${boot[1]}"
+    image=img
+fi
 need_file "$socsim"
 # J J J W at doorbell 1 (frame 0's first batch): look or swing left three times and move forward or
 # zoom in, in every camera mode; the firmware reads them at frame 1 in both worlds. No scene key.
 keys='1:jjjw'
-work=$(fresh_dir soc-vs-cosim)
+work=$(fresh_dir "soc-vs-cosim${1:+-$1}")
 # The slowest first, so that it overlaps the others.
-scenes=${SOC_SCENES:-knot voxel landscape cubes tetra}
+# From the SDRAM the model scene too: its capacities are the SDRAM build's.
+scenes=${SOC_SCENES:-knot voxel landscape cubes tetra${1:+ model}}
 
 one_scene() {
     local s="$1" host="$BUILD/fw-test/host-$1" soc_elf frames f
     soc_elf="$soc_test_dir/$s-2f.elf"
-    need_file "$host" "$soc_elf.hex"
+    need_file "$host" "$soc_elf.$image"
     run_to "$work/$s.host.uart" 300 "$host" --frames "$work/$s-host" --keys-at "$keys"
     expect_status 0 "host build of $s"
-    run_to "$work/$s.soc.out" 300 "$socsim" --fw "$soc_elf" --frames "$work/$s-soc" \
+    run_to "$work/$s.soc.out" 600 "$socsim" "${boot[@]}" --fw "$soc_elf" --frames "$work/$s-soc" \
         --uart-log "$work/$s.soc.uart" --keys-at "$keys" --summary "$work/$s.soc.summary"
     expect_status 0 "socsim of $s (log: $work/$s.soc.out)"
     frames=$(summary frames "$work/$s.soc.summary")
@@ -49,9 +67,15 @@ one_scene() {
     # Both worlds read the keys at the same frame: the same triangles submitted and drawn per frame.
     diff <(frame_lines "$work/$s.soc.uart") <(frame_lines "$work/$s.host.uart" | head -n "$frames") >/dev/null ||
         fail "$s: the firmware's triangle counts differ between socsim and the host build"
-    echo "$s: $frames frames identical to the host build's, $(summary cycles "$work/$s.soc.summary") SoC cycles"
+    if [ "$memory" = SDRAM ]; then
+        expect_eq "$(summary sdram_violations "$work/$s.soc.summary")" 0 "$s: SDRAM chip model violations"
+        expect_eq "$(summary flash_violations "$work/$s.soc.summary")" 0 "$s: flash model violations"
+        grep -q "^boot: image of [0-9]* bytes from flash .* starting at 0x40000000" "$work/$s.soc.uart" ||
+            fail "$s: the boot program did not load and start the image (log: $work/$s.soc.uart)"
+    fi
+    echo "$s: $frames frames identical to the host build's, $(summary cycles "$work/$s.soc.summary") SoC cycles ($memory)"
 }
 
 each_scene 2 one_scene $scenes
 total=$(total_frames "$work/%.soc.summary" $scenes)
-pass "soc-vs-cosim: $(echo $scenes | wc -w) scenes, $total socsim frames byte-identical to the host build's (= co-simulation's), all equal to the model"
+pass "soc-vs-cosim${1:+ ($1)}: $(echo $scenes | wc -w) scenes from the $memory, $total socsim frames byte-identical to the host build's (= co-simulation's), all equal to the model"

@@ -79,7 +79,7 @@ static void __attribute__((noreturn)) image_failure(enum boot_failure code, enum
 
 void boot_main(void)
 {
-    sdram_take_pins();  /* first of all: within tREFI of reset */
+    sdram_take_pins();  /* again (boot_crt0.S did it first of all, within tREFI of reset) */
     const uint32_t sdram_bytes = SYS_REG(SDRAM_BYTES);
     say("boot: ");
     say_dec(SYS_REG(CLK_HZ));
