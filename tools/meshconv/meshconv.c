@@ -359,8 +359,8 @@ int main(int argc, char **argv)
             }
             opt.may_simplify = true;
         } else if (strcmp(a, "--max-verts") == 0) {
-            if (!has_value || !parse_u32(argv[++i], 3u, 65535u, &opt.max_verts)) {
-                return usage("--max-verts needs a number of vertices, 3 .. 65535 (uint16 indices)");
+            if (!has_value || !parse_u32(argv[++i], 3u, 65536u, &opt.max_verts)) {
+                return usage("--max-verts needs a number of vertices, 3 .. 65536 (uint16 indices 0 .. 65535)");
             }
         } else if (strcmp(a, "--extent") == 0) {
             char *end;

@@ -561,7 +561,7 @@ int meshconv_convert(const struct meshconv_mesh *mesh, const struct meshconv_opt
     out->len = 0;
     rep->faces_in = mesh->face_count;
     rep->verts_in = mesh->vert_count;
-    if (opt->max_verts < 3u || opt->max_verts > 65535u || opt->max_faces < 1u ||
+    if (opt->max_verts < 3u || opt->max_verts > 65536u || opt->max_faces < 1u ||
         opt->max_faces > MESHCONV_FACES_LIMIT || !(opt->extent > 0.0) ||
         !(opt->extent <= MESHCONV_EXTENT_MAX) || opt->default_material < MESHFILE_MAT_MIN ||
         opt->default_material > MESHFILE_MAT_MAX) {

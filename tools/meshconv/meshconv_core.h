@@ -40,7 +40,7 @@ struct meshconv_mesh {
 };
 
 struct meshconv_options {
-    uint32_t max_verts;       /* 3 .. 65535 (uint16 indices) */
+    uint32_t max_verts;       /* 3 .. 65536 (uint16 indices 0 .. 65535) */
     uint32_t max_faces;       /* 1 .. MESHCONV_FACES_LIMIT */
     bool may_simplify;        /* the user gave --max-faces: simplify instead of refusing */
     double extent;            /* largest half-extent in world units, (0, MESHCONV_EXTENT_MAX] */

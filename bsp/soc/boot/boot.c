@@ -3,10 +3,10 @@
  * SDRAM (docs/boot.md). From reset it
  *   1. takes the SDRAM's pins from LiteDRAM (whose refresher runs from reset, before the chip has
  *      finished powering up: bsp/soc/sdram/sdram_init.h) and runs the chip's power-up sequence;
- *   2. runs the quick memory test over the whole SDRAM (bsp/soc/sdram/memtest.h) — nothing is
- *      rendered on memory that fails it;
- *   3. reads the firmware image's header from the flash (SOC_BOOT_FLASH_IMAGE_OFFSET), checks it
- *      against the SDRAM (boot_image.h), copies the payload word by word (the flash streams
+ *   2. reads the firmware image's header from the flash (SOC_BOOT_FLASH_IMAGE_OFFSET) and checks it
+ *      against the SDRAM (boot_image.h);
+ *   3. runs the quick memory test over the whole SDRAM (bsp/soc/sdram/memtest.h) — nothing is
+ *      rendered on memory that fails it — then copies the payload word by word (the flash streams
  *      consecutive words: soc_rtl/soc_spiflash.v) and checks the copy's CRC in the SDRAM;
  *   4. jumps to the image's entry (its crt0 sets up its own stack, data and .bss).
  * Each step prints a line on the UART; a failure prints why with its numbers, shows its code on the
@@ -101,6 +101,18 @@ void boot_main(void)
     say_dec(now() - t);
     say(" cycles\n");
 
+    /* The image's header first: it needs no SDRAM, so a missing or corrupt image is told at once. */
+    const volatile uint32_t *const flash =
+        (const volatile uint32_t *)(uintptr_t)(SOC_FLASH_BASE + SOC_BOOT_FLASH_IMAGE_OFFSET);
+    uint32_t header[BOOT_IMAGE_HEADER_WORDS];
+    for (uint32_t i = 0; i < BOOT_IMAGE_HEADER_WORDS; ++i) {
+        header[i] = flash[i];
+    }
+    enum boot_image_status status = boot_image_check_header(header, SOC_SDRAM_BASE, sdram_bytes);
+    if (status != BOOT_IMAGE_OK) {
+        image_failure(status == BOOT_IMAGE_NO_MAGIC ? BOOT_FAIL_NO_IMAGE : BOOT_FAIL_BAD_HEADER, status, header);
+    }
+
     t = now();
     const struct memtest_result test = memtest_quick(SOC_SDRAM_BASE, sdram_bytes, now());
     char line[MEMTEST_FORMAT_SIZE];
@@ -113,17 +125,6 @@ void boot_main(void)
     if (!test.ok) {
         say("boot: FAILED: the SDRAM does not work; not starting the firmware\n");
         stop(BOOT_FAIL_MEMTEST);
-    }
-
-    const volatile uint32_t *const flash =
-        (const volatile uint32_t *)(uintptr_t)(SOC_FLASH_BASE + SOC_BOOT_FLASH_IMAGE_OFFSET);
-    uint32_t header[BOOT_IMAGE_HEADER_WORDS];
-    for (uint32_t i = 0; i < BOOT_IMAGE_HEADER_WORDS; ++i) {
-        header[i] = flash[i];
-    }
-    enum boot_image_status status = boot_image_check_header(header, SOC_SDRAM_BASE, sdram_bytes);
-    if (status != BOOT_IMAGE_OK) {
-        image_failure(status == BOOT_IMAGE_NO_MAGIC ? BOOT_FAIL_NO_IMAGE : BOOT_FAIL_BAD_HEADER, status, header);
     }
 
     t = now();
