@@ -2,7 +2,11 @@
 """bench_soc.py — `make bench-soc`: benchmark builds (firmware.mk's FW_BENCH_FRAMES frames,
 FW_PLATFORM=soc) on socsim, the whole SoC at 50 MHz, as one Markdown table.
 
-usage: bench_soc.py --socsim SOCSIM --out DIR SCENE=ELF...
+usage: bench_soc.py --socsim SOCSIM [--boot BOOT.hex] --out DIR SCENE=ELF...
+
+With --boot (SOC_MEM=sdram, docs/boot.md) socsim is the system with SDRAM: the boot program copies
+each ELF's image from the flash into the SDRAM first; its cycles come before frame 0 and are no
+frame's.
 
 Per scene, averaged over the frames after the first (frame 0 carries the boot: banner, scene set-up):
   instr/frame     the firmware's "fw instr" (minstret over the frame's work, DONE_SEQ polls excluded)
@@ -38,11 +42,11 @@ def mean(xs):
     return sum(xs) / len(xs) if xs else float("nan")
 
 
-def run_scene(socsim, elf, out_dir):
+def run_scene(socsim, boot, elf, out_dir):
     frames_dir = os.path.join(out_dir, "frames")
     os.makedirs(frames_dir, exist_ok=True)
     t0 = time.monotonic()
-    p = subprocess.run([socsim, "--fw", elf, "--frames", frames_dir,
+    p = subprocess.run([socsim, *(["--boot", boot] if boot else []), "--fw", elf, "--frames", frames_dir,
                         "--uart-log", os.path.join(out_dir, "uart.log"),
                         "--summary", os.path.join(out_dir, "summary")],
                        capture_output=True, text=True)
@@ -66,6 +70,7 @@ def run_scene(socsim, elf, out_dir):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--socsim", required=True)
+    ap.add_argument("--boot", help="the boot program's RAM image: the ELFs run from the SDRAM")
     ap.add_argument("--out", required=True)
     ap.add_argument("runs", nargs="+", metavar="SCENE=ELF")
     a = ap.parse_args()
@@ -73,7 +78,7 @@ def main():
     rows, total_cycles, total_wall = [], 0, 0.0
     for run in a.runs:
         scene, elf = run.split("=", 1)
-        fw, sim, speed, wall = run_scene(a.socsim, elf, os.path.join(a.out, scene))
+        fw, sim, speed, wall = run_scene(a.socsim, a.boot, elf, os.path.join(a.out, scene))
         # firmware frame numbers count the frames drawn; socsim's the frames captured: the same
         # sequence when no frame is lost (benchmark builds lose none).
         keys = sorted(k for k in fw if k >= 1 and k in sim)

@@ -65,7 +65,11 @@ SOCSIM_PREREQS_ulx3s     := $(ULX3S_SIM_FILES) $(shell sed -e 's://.*::' $(ULX3S
 # With SDRAM (cosim/soc/soc_sdram_sim.sv): soc_top and LiteDRAM's controller generated at the
 # simulated clock for the contract's SDRAM size (soc_rtl/litedram), the chip played by socsim
 # (cosim/sdram/sdram_chip.h), -DSOCSIM_SDRAM.
-LITEDRAM_SIM_DIR         := $(BUILD)/litedram/sim-$(SOC_SIM_CLK_HZ)
+# The controller is generated once per system clock: $(call litedram_dir,HZ) holds it for HZ, shared
+# by every build at that clock (socsim's at SOC_SIM_CLK_HZ; the ULX3S build's at SYS_MHZ,
+# boards/ulx3s/board.mk). The "sim-" of the name is from when socsim was its only user.
+litedram_dir              = $(BUILD)/litedram/sim-$(1)
+LITEDRAM_SIM_DIR         := $(call litedram_dir,$(SOC_SIM_CLK_HZ))
 LITEDRAM_SIM_V           := $(LITEDRAM_SIM_DIR)/litedram_core.v
 SOCSIM_SYSTEM_sdram       = soc_sdram_sim -GPIX_CLK_HZ=$(SOC_SIM_CLK_HZ) -GSDRAM_BYTES=$(SOC_SDRAM_BYTES) --timescale 1ns/1ps
 SOCSIM_SOURCES_sdram      = soc_rtl/litedram/lint.vlt soc_rtl/litedram/soc_sdram.v cosim/soc/soc_sdram_sim.sv \
@@ -75,33 +79,45 @@ SOCSIM_CFLAGS_sdram      := -DSOCSIM_SDRAM -I$(CURDIR)/cosim/sdram -I$(CURDIR)/c
 SOCSIM_PREREQS_sdram     := $(LITEDRAM_SIM_V) soc_rtl/litedram/lint.vlt soc_rtl/litedram/soc_sdram.v \
                             cosim/soc/soc_sdram_sim.sv $(wildcard cosim/sdram/ecp5/*.v) cosim/sdram/sdram_chip.cpp \
                             cosim/sdram/sdram_chip.h cosim/sdram/sdram_pins.h cosim/flash/spi_flash.cpp cosim/flash/spi_flash.h
-$(LITEDRAM_SIM_V): soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram.yml contract/soc_map.h $(SOC_VENV)
-	@mkdir -p $(LITEDRAM_SIM_DIR)
+$(call litedram_dir,%)/litedram_core.v: soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram.yml contract/soc_map.h $(SOC_VENV)
+	@mkdir -p $(@D)
 	$(Q)$(call say,GEN,$@).venv/bin/python soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram.yml \
-	  $(LITEDRAM_SIM_DIR) --sys-clk-hz $(SOC_SIM_CLK_HZ) --expect-bytes $(SOC_SDRAM_BYTES) >$(LITEDRAM_SIM_DIR)/gen.log 2>&1 \
-	  || { tail -20 $(LITEDRAM_SIM_DIR)/gen.log; exit 1; }
+	  $(@D) --sys-clk-hz $* --expect-bytes $(SOC_SDRAM_BYTES) >$(@D)/gen.log 2>&1 \
+	  || { tail -20 $(@D)/gen.log; exit 1; }
 # Bare-metal programs of the system with SDRAM, built against the LiteDRAM headers of its controller
-# ($(LITEDRAM_SIM_DIR)/include: the register offsets of the power-up sequence) and laid out in the
-# on-chip RAM by linker/soc.ld (the stack above .bss): $(call SOC_SDRAM_PROGRAM,ELF,SOURCES[,FLAGS]).
+# ($(LITEDRAM_SIM_DIR)/include: the register offsets of the power-up sequence; HZ given: the
+# controller generated for that system clock) and laid out in the on-chip RAM by linker/soc.ld (the
+# stack above .bss): $(call SOC_SDRAM_PROGRAM,ELF,SOURCES[,FLAGS[,HZ]]).
 # postlink checks each against the boot build's RAM (SOC_RAM_BOOT_BYTES) and writes ELF.hex.
 SOC_SDRAM_PROGRAM_SRC := bsp/soc/boot/say.c bsp/soc/sdram/sdram_init.c bsp/soc/sdram/memtest.c
 SOC_SDRAM_PROGRAM_HDRS = $(wildcard bsp/soc/boot/*.h bsp/soc/sdram/*.h bsp/soc/sdram/include/*.h bsp/soc/sdram/include/hw/*.h)
 define SOC_SDRAM_PROGRAM
-$(1): $(2) $(SOC_SDRAM_PROGRAM_SRC) $$(SOC_SDRAM_PROGRAM_HDRS) linker/soc.ld contract/soc_map.h $(LITEDRAM_SIM_V) bsp/soc/postlink.py
+$(1): $(2) $(SOC_SDRAM_PROGRAM_SRC) $$(SOC_SDRAM_PROGRAM_HDRS) linker/soc.ld contract/soc_map.h $(call litedram_dir,$(or $(4),$(SOC_SIM_CLK_HZ)))/litedram_core.v bsp/soc/postlink.py
 	@mkdir -p $$(dir $$@)
 	$$(Q)$$(call say,LD,$$@)$(RV_CC) $(SOC_RV_FLAGS) --specs=picolibc.specs -Os -g -std=c11 -ffreestanding -nostartfiles \
 	  -Wall -Wextra -Werror -Icontract -Ifirmware -Ibsp/soc/boot -Ibsp/soc/sdram -Ibsp/soc/sdram/include \
-	  -I$(LITEDRAM_SIM_DIR)/include -T linker/soc.ld -Wl,--defsym=__stack_size=2048 -Wl,--gc-sections \
+	  -I$(call litedram_dir,$(or $(4),$(SOC_SIM_CLK_HZ)))/include -T linker/soc.ld -Wl,--defsym=__stack_size=2048 -Wl,--gc-sections \
 	  -Wl,--no-warn-rwx-segments $(3) $(2) $(SOC_SDRAM_PROGRAM_SRC) -lgcc -o $$@
 	$$(Q)$$(PYTHON) bsp/soc/postlink.py --ram-bytes $$$$(( $(SOC_RAM_BOOT_KIB) * 1024 )) \
 	  --size $(patsubst %gcc,%size,$(RV_CC)) --nm $(patsubst %gcc,%nm,$(RV_CC)) $$@ >/dev/null
 endef
 # The boot program (bsp/soc/boot, docs/boot.md): the on-chip RAM's image of a build whose firmware
-# runs from the SDRAM.
+# runs from the SDRAM. $(call soc_boot_elf,HZ): the one for a system clock of HZ (a board's), the
+# same as socsim's at socsim's clock; soc_boot_rules makes the rules of another clock's.
 SOC_BOOT_ELF := $(BUILD)/soc/boot.elf
 SOC_BOOT_HEX := $(SOC_BOOT_ELF).hex
+SOC_BOOT_SRC := bsp/soc/boot/boot_crt0.S bsp/soc/boot/boot.c bsp/soc/boot/boot_image.c firmware/model/crc32.c
 $(SOC_BOOT_HEX): $(SOC_BOOT_ELF)
-$(eval $(call SOC_SDRAM_PROGRAM,$(SOC_BOOT_ELF),bsp/soc/boot/boot_crt0.S bsp/soc/boot/boot.c bsp/soc/boot/boot_image.c firmware/model/crc32.c,-DCRC32_BYTE_TABLE=1))
+$(eval $(call SOC_SDRAM_PROGRAM,$(SOC_BOOT_ELF),$(SOC_BOOT_SRC),-DCRC32_BYTE_TABLE=1))
+soc_boot_elf = $(if $(filter $(SOC_SIM_CLK_HZ),$(1)),$(SOC_BOOT_ELF),$(BUILD)/soc/boot-$(1).elf)
+soc_boot_rules = $(if $(filter $(SOC_SIM_CLK_HZ),$(1)),,$(eval $(call soc_boot_elf,$(1)).hex: $(call soc_boot_elf,$(1))) \
+  $(eval $(call SOC_SDRAM_PROGRAM,$(call soc_boot_elf,$(1)),$(SOC_BOOT_SRC),-DCRC32_BYTE_TABLE=1,$(1))))
+# The full memory test as a program (bsp/soc/boot/memtest_main.c): socsim's over the first 16 KiB,
+# one pass (a pass over the whole chip is 570 M accesses); a board's tests the whole SDRAM for ever.
+SOC_MEMTEST_ELF := $(BUILD)/soc/memtest.elf
+SOC_MEMTEST_HEX := $(SOC_MEMTEST_ELF).hex
+$(SOC_MEMTEST_HEX): $(SOC_MEMTEST_ELF)
+$(eval $(call SOC_SDRAM_PROGRAM,$(SOC_MEMTEST_ELF),tests/soc/smoke_crt0.S bsp/soc/boot/memtest_main.c,-DMEMTEST_PROGRAM_BYTES=16384u -DMEMTEST_PROGRAM_PASSES=1u))
 # The SDRAM's test program (tests/soc/sdram_test.c, suite soc-sdram).
 SOC_SDRAM_TEST_ELF := $(BUILD)/soc/sdram_test.elf
 SOC_SDRAM_TEST_HEX := $(SOC_SDRAM_TEST_ELF).hex
@@ -144,6 +160,9 @@ $(call socsim_rules_unless_listed,$(SOCSIM_ULX3S_DIR),SOCSIM_ULX3S_CMD,$(SOCSIM_
 soc-fw:
 	+@$(SOC_FW_MAKE) SCENE=$(SCENE) FRAMES=$(FRAMES) FW_BACKEND=$(FW_BACKEND) $(SOC_FW_ELF)
 
+# SOC_MEM=sdram: the boot program in the RAM, the firmware's image in the flash.
+SOCSIM_BOOT := $(if $(SOC_MEM_SUFFIX),$(SOC_BOOT_HEX))
+
 ifeq ($(SOC_RAM_KIB),auto)
 # The RAM is the firmware's (bsp/soc/soc_ram.mk): the firmware first, then these goals again on a
 # RAM of the size it needs.
@@ -154,8 +173,6 @@ socsim: $(SOCSIM)
 socsim-ulx3s: $(SOCSIM_ULX3S)
 
 # With a display (the Makefile's WINDOW), the frames go to a window instead of $(OUT)/frames.
-# SOC_MEM=sdram: the boot program in the RAM, the firmware's image in the flash.
-SOCSIM_BOOT := $(if $(SOC_MEM_SUFFIX),$(SOC_BOOT_HEX))
 run-soc: $(SOCSIM) soc-fw $(SOCSIM_BOOT)
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
 	$(Q)$(call say,RUN,socsim $(SOC_FW_ELF))$(SOCSIM) $(if $(SOCSIM_BOOT),--boot $(SOCSIM_BOOT)) --fw $(SOC_FW_ELF) $(if $(WINDOW),--window,--frames $(OUT)/frames) --uart-log $(OUT)/uart.log \
@@ -177,7 +194,10 @@ soc-smoke: $(SOCSIM) $(SOC_SMOKE_HEX)
 
 # The benchmark builds (firmware.mk's FW_BENCH_FRAMES frames) of every scene, each on socsim, one
 # table (bench/bench_soc.py).
-SOC_BENCH_ELFS := $(foreach s,$(FW_SCENES),$(s)=$(BUILD)/fw-bench-soc/$(s).elf)
-bench-soc: $(SOCSIM)
-	+@$(SOC_FW_MAKE) $(foreach s,$(FW_SCENES),$(BUILD)/fw-bench-soc/$(s).elf)
-	@$(PYTHON) bench/bench_soc.py --socsim $(SOCSIM) --out $(BUILD)/bench-soc $(SOC_BENCH_ELFS)
+# SOC_MEM=sdram: the same from the SDRAM (the boot program first; its cycles are not the frames').
+SOC_BENCH_DIR  := $(BUILD)/fw-bench-soc$(SOC_MEM_SUFFIX)
+SOC_BENCH_ELFS := $(foreach s,$(FW_SCENES),$(s)=$(SOC_BENCH_DIR)/$(s).elf)
+bench-soc: $(SOCSIM) $(SOCSIM_BOOT)
+	+@$(SOC_FW_MAKE) $(foreach s,$(FW_SCENES),$(SOC_BENCH_DIR)/$(s).elf)
+	@$(PYTHON) bench/bench_soc.py --socsim $(SOCSIM) $(if $(SOCSIM_BOOT),--boot $(SOCSIM_BOOT)) \
+	  --out $(BUILD)/bench-soc$(SOC_MEM_SUFFIX) $(SOC_BENCH_ELFS)

@@ -8,9 +8,9 @@
  *      the pins taken from the controller first of all (its refresher runs from reset);
  *   4. the quick memory test (bsp/soc/sdram/memtest.c) over the whole chip; on a failure its line
  *      and LEDS = 0xE1 (the board shows it), exit 1;
- *   5. what the CPU gets from it: cycles per word for consecutive stores and loads through the data
- *      cache, and a short program copied into the SDRAM and run from there (instruction cache
- *      refills from the SDRAM). */
+ *   5. a short program copied into the SDRAM and run from there (instruction cache refills from
+ *      the SDRAM).
+ * The CPU's bandwidth and the full test: the memory test program (bsp/soc/boot/memtest_main.c). */
 #include <stdint.h>
 
 #include "memtest.h"
@@ -22,7 +22,6 @@
 #define SYS(r) SOC_REG(SOC_SYS_BASE, SOC_SYS_REG_##r)
 
 #define LEDS_SDRAM_FAILED 0xE1u
-#define BANDWIDTH_WORDS 4096u   /* 16 KiB: four times the data cache */
 
 static uint32_t now(void)
 {
@@ -55,16 +54,6 @@ static int fail(const char *what)
     say_char('\n');
     SYS(LEDS) = LEDS_SDRAM_FAILED;
     return 1;
-}
-
-/* Cycles per word, to two decimals, as "N.NN". */
-static void put_per_word(uint32_t cycles, uint32_t words)
-{
-    const uint32_t hundredths = (uint32_t)(((uint64_t)cycles * 100u + words / 2u) / words);
-    say_dec(hundredths / 100u);
-    say_char('.');
-    say_char((char)('0' + hundredths / 10u % 10u));
-    say_char((char)('0' + hundredths % 10u));
 }
 
 int main(void);
@@ -115,35 +104,6 @@ int main(void)
     say(" cycles\n");
     if (!r.ok) {
         return fail("the quick memory test");
-    }
-
-    /* Consecutive words through the data cache: stores (write-through), then loads of lines not
-     * in the cache (BANDWIDTH_WORDS is four times its size). */
-    volatile uint32_t *const block = sdram + (bytes / 8u) / 4u;  /* the middle of the chip */
-    const uint32_t t2 = now();
-    for (uint32_t i = 0; i < BANDWIDTH_WORDS; ++i) {
-        block[i] = i * 0x9E3779B9u;
-    }
-    const uint32_t store_cycles = now() - t2;
-    uint32_t sum = 0;
-    const uint32_t t3 = now();
-    for (uint32_t i = 0; i < BANDWIDTH_WORDS; ++i) {
-        sum += block[i];
-    }
-    const uint32_t load_cycles = now() - t3;
-    uint32_t want = 0;
-    for (uint32_t i = 0; i < BANDWIDTH_WORDS; ++i) {
-        want += i * 0x9E3779B9u;
-    }
-    say("sdram_test: CPU: ");
-    say_dec(BANDWIDTH_WORDS);
-    say(" consecutive words: store ");
-    put_per_word(store_cycles, BANDWIDTH_WORDS);
-    say(", load ");
-    put_per_word(load_cycles, BANDWIDTH_WORDS);
-    say(" cycles a word\n");
-    if (sum != want) {
-        return fail("the consecutive words read back wrong");
     }
 
     /* Code from the SDRAM: `addi a0, a0, 1; ret`, copied in and called (fence.i: the instruction
