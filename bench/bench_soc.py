@@ -19,6 +19,7 @@ Per scene, averaged over the frames after the first (frame 0 carries the boot: b
   frame cycles    cycles from swap to swap (the GPU swaps at vertical blank: a multiple of the
                   VGA frame, 840,000 clocks at 50 MHz, is the floor)
   fps 50 MHz      50e6 / frame cycles, measured
+  SDRAM busy      (--boot) the share of those cycles with a request on the SDRAM's port
   fps 100 MHz     estimated: the CPU's and GPU's cycles take half the time, the UART's bytes
                   (115,200 baud) and the 60 Hz scan-out do not, and the swap waits for the next
                   vertical blank: 60 / ceil(60 * t), t = (ready - cpu - gpu) / 50e6 + (cpu + gpu) / 100e6
@@ -33,7 +34,7 @@ import time
 
 FW_LINE = re.compile(r"^frame (\d+): .*\| fw instr (\d+) \| gpu cycles (\d+) .*\| cpu cycles (\d+)")
 SIM_LINE = re.compile(r"^socsim: frame (\d+) -> .* \| swap at cycle (\d+), \+(\d+) \| ready \+(\d+) \| "
-                      r"instructions (\d+) \| refills I\$ (\d+) D\$ (\d+)")
+                      r"instructions (\d+) \| refills I\$ (\d+) D\$ (\d+)(?: \| SDRAM busy (\d+))?")
 SPEED_LINE = re.compile(r"^socsim: (\d+) cycles .* in ([\d.]+) s: ([\d.]+) M cycles/s")
 CLK = 50e6
 
@@ -60,7 +61,7 @@ def run_scene(socsim, boot, elf, out_dir):
             fw[int(m[1])] = [int(v) for v in m.groups()[1:]]
         m = SIM_LINE.match(line)
         if m:
-            sim[int(m[1])] = [int(v) for v in m.groups()[1:]]
+            sim[int(m[1])] = [int(v) if v is not None else None for v in m.groups()[1:]]
         m = SPEED_LINE.match(line)
         if m:
             speed = (int(m[1]), float(m[2]), float(m[3]))
@@ -91,20 +92,26 @@ def main():
         ready = mean([sim[k][2] for k in keys])
         irefill = mean([sim[k][4] for k in keys])
         drefill = mean([sim[k][5] for k in keys])
+        # SDRAM builds: the share of the cycles between captured frames with a request on the SDRAM
+        # port (waiting or answered), against the same span's cycles (swap to swap).
+        busy = mean([sim[k][6] / sim[k][1] for k in keys]) if sim[keys[0]][6] is not None else None
         t100 = (ready - cpu - gpu) / CLK + (cpu + gpu) / (2 * CLK)
         fps100 = 60.0 / max(1, math.ceil(60.0 * t100 - 1e-9))
         rows.append((scene, len(keys), instr, cpu, cpu / instr, irefill, drefill, gpu, ready, frame,
-                     CLK / frame, fps100))
+                     CLK / frame, fps100, busy))
         if speed:
             total_cycles += speed[0]
             total_wall += speed[1]
 
+    sdram = a.boot is not None
     print("| scene | frames | instr/frame | CPU cycles/frame | CPI | I$ refills | D$ refills | GPU busy cycles "
-          "| ready (cycles) | frame cycles (swap to swap) | fps 50 MHz | fps 100 MHz (est.) |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+          "| ready (cycles) | frame cycles (swap to swap) | fps 50 MHz | fps 100 MHz (est.) |"
+          + (" SDRAM busy |" if sdram else ""))
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|" + ("---:|" if sdram else ""))
     for r in rows:
         print(f"| {r[0]} | {r[1]} | {r[2]:,.0f} | {r[3]:,.0f} | {r[4]:.2f} | {r[5]:,.0f} | {r[6]:,.0f} | "
-              f"{r[7]:,.0f} | {r[8]:,.0f} | {r[9]:,.0f} | {r[10]:.1f} | {r[11]:.1f} |")
+              f"{r[7]:,.0f} | {r[8]:,.0f} | {r[9]:,.0f} | {r[10]:.1f} | {r[11]:.1f} |"
+              + (f" {100 * r[12]:.1f} % |" if sdram and r[12] is not None else ""))
     if total_wall > 0:
         print(f"\nsocsim: {total_cycles:,} cycles simulated in {total_wall:.1f} s: "
               f"{total_cycles / total_wall / 1e6:.2f} M cycles/s")

@@ -50,6 +50,7 @@ module soc_sdram_sim #(
     input  wire [15:0] chip_dq,         // the chip's drive ...
     input  wire        chip_dq_oe,      // ... while this is high
     output wire        sdram_init_done,
+    output wire        sdram_busy,      // a request to the SDRAM is on soc_top's port (waiting or answered)
     // ---- the SPI flash's pins, for socsim's flash model
     output wire        flash_cs_n,
     output wire        flash_sck,
@@ -68,7 +69,6 @@ module soc_sdram_sim #(
     wire [CTRL_AW-1:0] c_adr;
     wire [31:0]        c_dat_w, c_dat_r;
     wire [3:0]         c_sel;
-    wire unused_cti = &{1'b0, s_cti};   // LiteDRAM's Wishbone port takes one word a request
 
     soc_top #(
         .RAM_BYTES   (RAM_BYTES),
@@ -90,6 +90,8 @@ module soc_sdram_sim #(
         .exit_valid (exit_valid), .exit_code (exit_code)
     );
 
+    assign sdram_busy = s_cyc && s_stb;
+
     wire [15:0] dq;
     assign dq = chip_dq_oe ? chip_dq : 16'bz;
     assign sdram_dq_pins = dq;
@@ -100,8 +102,8 @@ module soc_sdram_sim #(
     ) u_sdram (
         .clk (clk), .rst (ext_rst), .init_done (sdram_init_done),
         .sdram_cyc (s_cyc), .sdram_stb (s_stb), .sdram_we (s_we), .sdram_adr (s_adr),
-        .sdram_dat_w (s_dat_w), .sdram_sel (s_sel), .sdram_dat_r (s_dat_r), .sdram_ack (s_ack),
-        .sdram_err (s_err),
+        .sdram_dat_w (s_dat_w), .sdram_sel (s_sel), .sdram_cti (s_cti), .sdram_dat_r (s_dat_r),
+        .sdram_ack (s_ack), .sdram_err (s_err),
         .sdram_ctrl_cyc (c_cyc), .sdram_ctrl_stb (c_stb), .sdram_ctrl_we (c_we), .sdram_ctrl_adr (c_adr),
         .sdram_ctrl_dat_w (c_dat_w), .sdram_ctrl_sel (c_sel), .sdram_ctrl_dat_r (c_dat_r),
         .sdram_ctrl_ack (c_ack), .sdram_ctrl_err (c_err),

@@ -318,6 +318,7 @@ private:
     uint64_t swap_doorbell_cycle_ = 0; // the DOORBELL of the last batch with CTRL.SWAP
     uint64_t frame_doorbell_cycle_ = 0;  // that of the frame being captured
     uint64_t icache_at_frame_ = 0, dcache_at_frame_ = 0;
+    uint64_t sdram_busy_ = 0, sdram_busy_at_frame_ = 0;  // cycles with a request on the SDRAM port
     bool arm_pending_ = false;     // a swap happened in this cycle's eval: arm the monitor after it
     bool capture_pending_ = false; // armed, waiting for the frame
     std::vector<KeyWatch> watches_;
@@ -535,6 +536,7 @@ void SocRun::sdram_clock()
 {
     sdram_drive(*top_, sdram_->clock(sdram_pins_of(*top_)));
     top_->eval();
+    sdram_busy_ += top_->sdram_busy;
 }
 
 void SocRun::flash_step(uint64_t t_ps)
@@ -611,6 +613,13 @@ bool SocRun::finish_frame(std::string *error, const char **kind)
                   static_cast<unsigned long long>(instret()),
                   static_cast<unsigned long long>(icache_refills_ - icache_at_frame_),
                   static_cast<unsigned long long>(dcache_refills_ - dcache_at_frame_));
+#ifdef SOCSIM_SDRAM
+    // The SDRAM's share of the frame's cycles: a request on its port, waiting or being answered.
+    const size_t used = std::strlen(detail);
+    std::snprintf(detail + used, sizeof detail - used, " | SDRAM busy %llu",
+                  static_cast<unsigned long long>(sdram_busy_ - sdram_busy_at_frame_));
+    sdram_busy_at_frame_ = sdram_busy_;
+#endif
     if (!take_frame(monitor_.rgb, model_, cycles_, detail, error, kind)) {
         return false;
     }
@@ -686,7 +695,8 @@ void SocRun::summary_keys(FILE *f) const
     std::fprintf(f, "sdram_violations=%llu\nsdram_refreshes=%llu\nsdram_words_read=%llu\nsdram_words_written=%llu\n",
                  static_cast<unsigned long long>(sdram_->error_count()), static_cast<unsigned long long>(k.refreshes),
                  static_cast<unsigned long long>(k.words_read), static_cast<unsigned long long>(k.words_written));
-    std::fprintf(f, "sdram_init_done=%d\n", top_->sdram_init_done ? 1 : 0);
+    std::fprintf(f, "sdram_init_done=%d\nsdram_busy_cycles=%llu\n", top_->sdram_init_done ? 1 : 0,
+                 static_cast<unsigned long long>(sdram_busy_));
     std::fprintf(f, "flash_violations=%llu\nflash_bytes_read=%llu\n",
                  static_cast<unsigned long long>(flash_->error_count()),
                  static_cast<unsigned long long>(flash_->counters().bytes_read));

@@ -72,11 +72,11 @@ litedram_dir              = $(BUILD)/litedram/sim-$(1)
 LITEDRAM_SIM_DIR         := $(call litedram_dir,$(SOC_SIM_CLK_HZ))
 LITEDRAM_SIM_V           := $(LITEDRAM_SIM_DIR)/litedram_core.v
 SOCSIM_SYSTEM_sdram       = soc_sdram_sim -GPIX_CLK_HZ=$(SOC_SIM_CLK_HZ) -GSDRAM_BYTES=$(SOC_SDRAM_BYTES) --timescale 1ns/1ps
-SOCSIM_SOURCES_sdram      = soc_rtl/litedram/lint.vlt soc_rtl/litedram/soc_sdram.v cosim/soc/soc_sdram_sim.sv \
+SOCSIM_SOURCES_sdram      = soc_rtl/litedram/lint.vlt soc_rtl/litedram/sdram_wb_burst.v soc_rtl/litedram/soc_sdram.v cosim/soc/soc_sdram_sim.sv \
                             $(LITEDRAM_SIM_V) $(wildcard cosim/sdram/ecp5/*.v) $(abspath cosim/sdram/sdram_chip.cpp) \
                             $(abspath cosim/flash/spi_flash.cpp)
 SOCSIM_CFLAGS_sdram      := -DSOCSIM_SDRAM -I$(CURDIR)/cosim/sdram -I$(CURDIR)/cosim/flash
-SOCSIM_PREREQS_sdram     := $(LITEDRAM_SIM_V) soc_rtl/litedram/lint.vlt soc_rtl/litedram/soc_sdram.v \
+SOCSIM_PREREQS_sdram     := $(LITEDRAM_SIM_V) soc_rtl/litedram/lint.vlt soc_rtl/litedram/sdram_wb_burst.v soc_rtl/litedram/soc_sdram.v \
                             cosim/soc/soc_sdram_sim.sv $(wildcard cosim/sdram/ecp5/*.v) cosim/sdram/sdram_chip.cpp \
                             cosim/sdram/sdram_chip.h cosim/sdram/sdram_pins.h cosim/flash/spi_flash.cpp cosim/flash/spi_flash.h
 $(call litedram_dir,%)/litedram_core.v: soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram.yml contract/soc_map.h $(SOC_VENV)

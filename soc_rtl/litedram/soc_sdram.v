@@ -3,11 +3,14 @@
 // pins out. A system with SDRAM (socsim's, a board's) instantiates it beside soc_top.
 //
 // Contract:
-//   sdram_*       soc_top's SDRAM port (Wishbone B4 classic): word addresses from SOC_SDRAM_BASE;
-//                 the decoder sends only addresses below SDRAM_BYTES. LiteDRAM's Wishbone user port
-//                 answers once the power-up sequence has set init_done; before that a request is
-//                 refused with err in its second clock (a bus error the CPU's SYS record shows),
-//                 never left hanging.
+//   sdram_*       soc_top's SDRAM port (Wishbone B4 classic with CTI): word addresses from
+//                 SOC_SDRAM_BASE; the decoder sends only addresses below SDRAM_BYTES. Served by
+//                 sdram_wb_burst on LiteDRAM's 16-bit native user port: an incrementing burst
+//                 (sdram_cti 3'b010, the caches' line refills) has the rest of its 32-byte line read
+//                 ahead and streamed, one word a clock at best; writes are posted (acked in their
+//                 first clock while its queue has room). Once the power-up sequence has set
+//                 init_done; before that a request is refused with err in its second clock (a bus
+//                 error the CPU's SYS record shows), never left hanging.
 //   sdram_ctrl_*  soc_top's SDRAM_CTRL port: LiteDRAM's control registers (word addresses of its
 //                 csr.csv), always answered.
 //   pins          the chip's, as LiteDRAM's GENSDRPHY drives them (commands and data registered in
@@ -33,6 +36,7 @@ module soc_sdram #(
     input  wire [AW-1:0]      sdram_adr,
     input  wire [31:0]        sdram_dat_w,
     input  wire [3:0]         sdram_sel,
+    input  wire [2:0]         sdram_cti,        // 3'b010: another beat follows (a line refill)
     output wire [31:0]        sdram_dat_r,
     output wire               sdram_ack,
     output wire               sdram_err,
@@ -61,16 +65,46 @@ module soc_sdram #(
         $error("soc_sdram: SDRAM_BYTES must be a power of two within SOC_SDRAM_WINDOW_BYTES");
     end endgenerate
 
-    // Before init_done LiteDRAM ignores its user port: refuse instead (err in the second clock).
-    wire req = sdram_cyc && sdram_stb;
-    reg  early_err_q = 1'b0;
-    always @(posedge clk) begin
-        if (rst) early_err_q <= 1'b0;
-        else     early_err_q <= req && !init_done && !early_err_q;
-    end
-    wire core_ack, core_err;
-    assign sdram_ack = init_done && core_ack;
-    assign sdram_err = (early_err_q && req && !init_done) || (init_done && core_err);
+    // The CPU's port: Wishbone onto LiteDRAM's native port (user port "cpu" of ulx3s_sdram.yml).
+    localparam integer NATIVE_DW = 16;                 // the PHY's width: no converter (docs/sdram.md)
+    localparam integer NAW = CORE_AW + $clog2(32 / NATIVE_DW);
+    wire                 cmd_valid, cmd_ready, cmd_we;
+    wire [NAW-1:0]       cmd_addr;
+    wire                 wdata_valid, wdata_ready;
+    wire [NATIVE_DW-1:0] wdata_data;
+    wire [NATIVE_DW/8-1:0] wdata_we;
+    wire                 rdata_valid, rdata_ready;
+    wire [NATIVE_DW-1:0] rdata_data;
+
+    sdram_wb_burst #(
+        .AW        (CORE_AW),
+        .NATIVE_DW (NATIVE_DW)
+    ) u_port (
+        .clk                (clk),
+        .rst                (rst),
+        .init_done          (init_done),
+        .wb_cyc             (sdram_cyc),
+        .wb_stb             (sdram_stb),
+        .wb_we              (sdram_we),
+        .wb_adr             (sdram_adr[CORE_AW-1:0]),
+        .wb_dat_w           (sdram_dat_w),
+        .wb_sel             (sdram_sel),
+        .wb_cti             (sdram_cti),
+        .wb_dat_r           (sdram_dat_r),
+        .wb_ack             (sdram_ack),
+        .wb_err             (sdram_err),
+        .native_cmd_valid   (cmd_valid),
+        .native_cmd_ready   (cmd_ready),
+        .native_cmd_we      (cmd_we),
+        .native_cmd_addr    (cmd_addr),
+        .native_wdata_valid (wdata_valid),
+        .native_wdata_ready (wdata_ready),
+        .native_wdata_data  (wdata_data),
+        .native_wdata_we    (wdata_we),
+        .native_rdata_valid (rdata_valid),
+        .native_rdata_ready (rdata_ready),
+        .native_rdata_data  (rdata_data)
+    );
 
     wire unused_adr = &{1'b0, sdram_adr[AW-1:CORE_AW]};   // above SDRAM_BYTES: the decoder refuses it
     wire unused_clk, unused_rst, unused_init_error;
@@ -93,15 +127,17 @@ module soc_sdram #(
         .sdram_cke            (pin_cke),
         .sdram_dm             (pin_dqm),
         .sdram_dq             (pin_dq),
-        .user_port_wb_cyc     (sdram_cyc && init_done),
-        .user_port_wb_stb     (sdram_stb && init_done),
-        .user_port_wb_we      (sdram_we),
-        .user_port_wb_adr     (sdram_adr[CORE_AW-1:0]),
-        .user_port_wb_dat_w   (sdram_dat_w),
-        .user_port_wb_sel     (sdram_sel),
-        .user_port_wb_dat_r   (sdram_dat_r),
-        .user_port_wb_ack     (core_ack),
-        .user_port_wb_err     (core_err),
+        .user_port_cpu_cmd_valid   (cmd_valid),
+        .user_port_cpu_cmd_ready   (cmd_ready),
+        .user_port_cpu_cmd_we      (cmd_we),
+        .user_port_cpu_cmd_addr    (cmd_addr),
+        .user_port_cpu_wdata_valid (wdata_valid),
+        .user_port_cpu_wdata_ready (wdata_ready),
+        .user_port_cpu_wdata_data  (wdata_data),
+        .user_port_cpu_wdata_we    (wdata_we),
+        .user_port_cpu_rdata_valid (rdata_valid),
+        .user_port_cpu_rdata_ready (rdata_ready),
+        .user_port_cpu_rdata_data  (rdata_data),
         .wb_ctrl_cyc          (sdram_ctrl_cyc),
         .wb_ctrl_stb          (sdram_ctrl_stb),
         .wb_ctrl_we           (sdram_ctrl_we),

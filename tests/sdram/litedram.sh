@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
-# LiteDRAM's generated controller (soc_rtl/litedram, inside the SoC's SDRAM block soc_sdram.v)
-# against the SDRAM chip model (cosim/sdram) at the chip's pins (tests/sdram/litedram_tb.cpp):
+# LiteDRAM's generated controller (soc_rtl/litedram, inside the SoC's SDRAM block soc_sdram.v, behind
+# our Wishbone port sdram_wb_burst.v) against the SDRAM chip model (cosim/sdram) at the chip's pins
+# (tests/sdram/litedram_tb.cpp):
 #   1. the board's configuration, our power-up sequence (bsp/soc/sdram/sdram_init.c): random words over
-#      the whole chip and a block of consecutive ones read back equal, then more than 64 ms with the
+#      the whole chip and a block of consecutive ones read back equal; 8-word read and write bursts
+#      (clocks a word, a line's first-beat latency) and 2,000 burst cases mixed at random against a
+#      reference memory (line reads and writes, single words, bursts abandoned early, unaligned,
+#      wrap-8, across the chip's top) all read back right; then more than 64 ms with the
 #      controller's refresh alone — no violation of any command, timing or the refresh budget;
 #   2. the same core with the chip clocked on the system clock's rising edge instead of its falling
 #      edge: the reads come back a clock late, so the board's SDRAM clock must be shifted (PLL);
@@ -34,7 +38,8 @@ build() {
     done
     run_to "$work/$name/verilator.log" 600 verilator --cc --exe --build -j 2 -O2 -Wno-fatal -Wno-lint -Wno-style \
         --top-module litedram_tb_top --Mdir "$work/$name/obj" -o litedram_tb \
-        --timescale 1ns/1ps soc_rtl/soc_pkg.sv soc_rtl/litedram/soc_sdram.v tests/sdram/litedram_tb_top.sv \
+        --timescale 1ns/1ps soc_rtl/soc_pkg.sv soc_rtl/litedram/sdram_wb_burst.v soc_rtl/litedram/soc_sdram.v \
+        tests/sdram/litedram_tb_top.sv \
         "$work/$name/gen/litedram_core.v" cosim/sdram/ecp5/*.v \
         "$PWD/tests/sdram/litedram_tb.cpp" "$PWD/cosim/sdram/sdram_chip.cpp" \
         "$work/$name/sdram_init.o" "$work/$name/litedram_init.o" \
@@ -53,12 +58,14 @@ run() {
 build board
 grep -E '^(tRCD|tRP|tRAS|tRFC|tRRD|tWR|tREFI|cl) ' "$work/board/gen/settings.txt" | tr '\n' ' '; echo
 
-run board ok.log --init ours --words 3000 --seed 7 --grade 6 --idle-us "${LITEDRAM_TB_IDLE_US:-70000}"
+run board ok.log --init ours --words 3000 --bursts 2000 --seed 7 --grade 6 --idle-us "${LITEDRAM_TB_IDLE_US:-70000}"
 expect_status 0 "the board's controller against the chip model, grade -6 (log: $work/ok.log)"
 expect_line '^litedram_tb: ok ' "$work/ok.log"
-run board ok7.log --init ours --words 3000 --seed 8 --grade 7 --idle-us 1000
+expect_line '^litedram_tb: burst cases: [0-9]+ read beats checked .*, 0 wrong$' "$work/ok.log"
+run board ok7.log --init ours --words 3000 --bursts 2000 --seed 8 --grade 7 --idle-us 1000
 expect_status 0 "the board's controller against the chip model, grade -7 (log: $work/ok7.log)"
 expect_line '^litedram_tb: ok ' "$work/ok7.log"
+expect_line '^litedram_tb: burst cases: [0-9]+ read beats checked .*, 0 wrong$' "$work/ok7.log"
 
 run board phase0.log --init ours --words 200 --phase 0
 [ "$status" -ne 0 ] || fail "the chip clocked on the rising edge read back right: the phase argument of docs/sdram.md is wrong"
@@ -71,4 +78,5 @@ build refresh10x --set tREFI=78125
 run refresh10x refresh.log --init ours --words 100 --idle-us 2000 --expect-error 'refresh'
 expect_status 0 "a controller refreshing ten times too seldom (log: $work/refresh.log)"
 
-pass "sdram-litedram: LiteDRAM's controller and the chip model agree on $(sed -n 's/^litedram_tb: ok \([0-9]*\) random.*/\1/p' "$work/ok.log") random words and 70 ms of refresh; a late chip clock, LiteDRAM's init and a 10x refresh interval each caught"
+line_clocks=$(sed -n 's/^litedram_tb: 8-word read bursts: first beat [0-9.]* clocks, \([0-9.]*\) a line.*/\1/p' "$work/ok.log")
+pass "sdram-litedram: LiteDRAM's controller and the chip model agree on $(sed -n 's/^litedram_tb: ok \([0-9]*\) random.*/\1/p' "$work/ok.log") random words, $(sed -n 's/^litedram_tb: ok .* \([0-9]*\) burst beats.*/\1/p' "$work/ok.log") burst beats (a line in $line_clocks clocks) and 70 ms of refresh; a late chip clock, LiteDRAM's init and a 10x refresh interval each caught"

@@ -1,16 +1,22 @@
 // litedram_tb — LiteDRAM's generated controller (soc_rtl/litedram) against the SDRAM chip model
 // (cosim/sdram/sdram_chip.h) at the chip's pins: the SoC's SDRAM block (soc_sdram.v, the controller
-// inside) Verilated (litedram_tb_top.sv), the chip in C++, this file the CPU on its two buses.
+// inside behind our Wishbone port sdram_wb_burst.v) Verilated (litedram_tb_top.sv), the chip in C++,
+// this file the CPU on its two buses.
 //
-//   litedram_tb [--init ours|litedram] [--words N] [--seed S] [--idle-us US] [--phase 180|0]
-//               [--grade 6|7] [--expect-error TEXT]
+//   litedram_tb [--init ours|litedram] [--words N] [--bursts N] [--seed S] [--idle-us US]
+//               [--phase 180|0] [--grade 6|7] [--expect-error TEXT]
 //
 // The run: reset; the power-up sequence through the controller's DFI software interface — ours
 // (bsp/soc/sdram/sdram_init.c, the firmware's) or LiteDRAM's generated init_sequence(); N words written
 // at seeded random addresses over the whole chip with random byte enables, read back in another
-// order and compared; a block of consecutive words written and read (cycles per word, both ways);
-// then US microseconds with one access every ~100 µs, so that the chip sees the controller's
-// refresh alone for most of it. The chip model checks every command and timing throughout.
+// order and compared; a block of consecutive words written and read as single requests (clocks per
+// word, both ways); 8-word read bursts (CTI 010 ... 111, as VexRiscv's caches refill a line) over
+// that block and at random lines (first-beat latency, clocks a line) and 8-word write bursts; then
+// --bursts N cases mixed at random against a reference memory (burst_cases: line reads and writes,
+// single words, bursts abandoned early three ways, unaligned, wrap-8, across the chip's top); then US
+// microseconds with one access every ~100 µs, so that the chip sees the controller's refresh alone
+// for most of it. The chip model checks every command and timing throughout. A Wishbone beat
+// follows the previous one's ack in the next clock, as VexRiscv's bridges present them.
 //
 // --grade: the chip's speed grade (cosim/sdram/sdram_chip.h: -6 and -7 differ in tRCD, tRP, tRAS,
 // tRRD and tWR, each the stricter in some); the controller is set up for both.
@@ -53,6 +59,8 @@ constexpr uint32_t kSysClkHz = LITEDRAM_TB_SYS_CLK_HZ;
 constexpr uint64_t kPsPerClock = 1000000000000ull / kSysClkHz;
 constexpr uint32_t kWordAddressBits = 23;        // the user port: 8 M words of 32 bits = 32 MB
 constexpr uint64_t kBusTimeoutClocks = 10000;    // a Wishbone request must be answered by then
+constexpr uint32_t kCtiClassic = 0, kCtiIncrementing = 2, kCtiEnd = 7;   // Wishbone B4 CTI
+constexpr uint32_t kLineWords = 8;               // the caches' line, 32 bytes
 
 struct Bench {
     std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
@@ -86,45 +94,94 @@ struct Bench {
         }
     }
 
-    // A classic Wishbone cycle on one of the two buses; returns the read data.
+    // A classic Wishbone cycle on one of the two buses; returns the read data. On the SDRAM's bus
+    // it is one beat with CTI 000 (beat()). The master ends the cycle after the ack; a next call
+    // begins the next cycle without a clock between them.
     uint32_t cycle(bool ctrl_bus, uint32_t adr, bool we, uint32_t dat, uint32_t sel) {
-        auto set = [&](uint32_t cyc) {
-            if (ctrl_bus) {
-                top->ctrl_adr = adr; top->ctrl_we = we; top->ctrl_dat_w = dat; top->ctrl_sel = sel;
-                top->ctrl_cyc = cyc; top->ctrl_stb = cyc;
-            } else {
-                top->wb_adr = adr; top->wb_we = we; top->wb_dat_w = dat; top->wb_sel = sel;
-                top->wb_cyc = cyc; top->wb_stb = cyc;
-            }
-        };
-        set(1);
+        if (!ctrl_bus) {
+            const uint32_t data = beat(adr, we, dat, sel, kCtiClassic);
+            top->wb_cyc = 0;
+            top->eval();
+            return data;
+        }
+        top->ctrl_adr = adr; top->ctrl_we = we; top->ctrl_dat_w = dat; top->ctrl_sel = sel;
+        top->ctrl_cyc = 1; top->ctrl_stb = 1;
         top->eval();
         for (uint64_t n = 0;; ++n) {
-            const bool ack = ctrl_bus ? top->ctrl_ack : top->wb_ack;
-            const bool err = ctrl_bus ? top->ctrl_err : top->wb_err;
-            const uint32_t data = ctrl_bus ? top->ctrl_dat_r : top->wb_dat_r;
+            const bool ack = top->ctrl_ack, err = top->ctrl_err;
+            const uint32_t data = top->ctrl_dat_r;
             tick();   // the master sees ack at this edge and ends the cycle after it
             if (ack || err) {
-                set(0);
+                top->ctrl_cyc = 0; top->ctrl_stb = 0;
                 top->eval();
                 if (err) {
-                    std::fprintf(stderr, "litedram_tb: bus error at %s word 0x%06x\n",
-                                 ctrl_bus ? "ctrl" : "user", adr);
+                    std::fprintf(stderr, "litedram_tb: bus error at ctrl word 0x%06x\n", adr);
                     std::exit(1);
                 }
                 return data;
             }
-            if (n == kBusTimeoutClocks || failed) {
-                std::fprintf(stderr, "litedram_tb: %s bus: no answer to %s of word 0x%06x in %" PRIu64
-                             " clocks%s\n", ctrl_bus ? "ctrl" : "user", we ? "a write" : "a read", adr, n,
-                             failed ? " (the chip model stopped the run)" : "");
-                finish_and_exit(1);
+            check_timeout(n, "ctrl", we, adr);
+        }
+    }
+
+    // One beat on the SDRAM's bus (cyc and stb high, held until its ack; the next beat, if any,
+    // follows in the next clock, as VexRiscv's bridges present it). beat_clocks: the clocks it took
+    // (1: acked in its first clock).
+    uint32_t beat(uint32_t adr, bool we, uint32_t dat, uint32_t sel, uint32_t cti) {
+        top->wb_adr = adr; top->wb_we = we; top->wb_dat_w = dat; top->wb_sel = sel; top->wb_cti = cti;
+        top->wb_cyc = 1; top->wb_stb = 1;
+        top->eval();
+        for (uint64_t n = 0;; ++n) {
+            const bool ack = top->wb_ack, err = top->wb_err;
+            const uint32_t data = top->wb_dat_r;
+            tick();
+            if (ack || err) {
+                beat_clocks = static_cast<uint32_t>(n + 1);
+                top->wb_stb = 0;   // cyc stays: the next beat or request follows at once
+                top->eval();
+                if (err) {
+                    std::fprintf(stderr, "litedram_tb: bus error at user word 0x%06x\n", adr);
+                    std::exit(1);
+                }
+                return data;
             }
+            check_timeout(n, "user", we, adr);
+        }
+    }
+
+    // A read beat offered for one clock only, then withdrawn (stb low, cyc high) whether acked or
+    // not (a master may drop a request before its answer); returns whether it was acked.
+    bool offer(uint32_t adr, uint32_t cti, uint32_t* data) {
+        top->wb_adr = adr; top->wb_we = 0; top->wb_sel = 0xF; top->wb_cti = cti;
+        top->wb_cyc = 1; top->wb_stb = 1;
+        top->eval();
+        const bool ack = top->wb_ack;
+        *data = top->wb_dat_r;
+        tick();
+        top->wb_stb = 0;
+        top->eval();
+        return ack;
+    }
+
+    // The master leaves the SDRAM's bus (cyc low) for n clocks.
+    void idle(uint32_t n) {
+        top->wb_cyc = 0; top->wb_stb = 0;
+        top->eval();
+        for (uint32_t i = 0; i < n; ++i) tick();
+    }
+
+    void check_timeout(uint64_t n, const char* bus, bool we, uint32_t adr) {
+        if (n == kBusTimeoutClocks || failed) {
+            std::fprintf(stderr, "litedram_tb: %s bus: no answer to %s of word 0x%06x in %" PRIu64
+                         " clocks%s\n", bus, we ? "a write" : "a read", adr, n,
+                         failed ? " (the chip model stopped the run)" : "");
+            finish_and_exit(1);
         }
     }
 
     uint32_t read(uint32_t word) { return cycle(false, word, false, 0, 0xF); }
     void write(uint32_t word, uint32_t data, uint32_t sel) { cycle(false, word, true, data, sel); }
+    uint32_t beat_clocks = 0;
 
     [[noreturn]] void finish_and_exit(int status);
 };
@@ -162,6 +219,126 @@ uint32_t apply_sel(uint32_t old_value, uint32_t value, uint32_t sel) {
     return (old_value & ~mask) | (value & mask);
 }
 
+
+// ---- bursts (sdram_wb_burst): a reference memory of the words written, and the master's beats ----
+struct Reference {
+    std::unordered_map<uint32_t, uint32_t> words;
+    uint32_t mismatches = 0;
+    uint32_t beats = 0;     // read beats checked
+
+    void check(uint32_t word, uint32_t got, const char* what) {
+        ++beats;
+        const auto it = words.find(word);
+        const uint32_t want = it == words.end() ? 0xDEADBEEFu : it->second;
+        if (it == words.end() || got != want) {
+            if (mismatches++ < 8) {
+                std::fprintf(stderr, "litedram_tb: %s: word 0x%06x read 0x%08x, expected 0x%08x%s\n", what,
+                             word, got, want, it == words.end() ? " (never written)" : "");
+            }
+        }
+    }
+};
+
+constexpr uint32_t kWordMask = (1u << kWordAddressBits) - 1;
+
+// A burst of n beats from word `first` (incrementing, the core's addresses wrapping at its top; or
+// with wrap_line, BTE wrap-8: the line's words from `first` round to the one before it): CTI 010 on
+// every beat but the last, 111 on the last (end_cti, or 010 to leave a burst unfinished).
+// Writes: data from rng, lanes sel (0: random lanes per beat). Returns the clocks of its beats.
+uint64_t burst(Bench& b, Reference& ref, std::mt19937& rng, uint32_t first, uint32_t n, bool we,
+               uint32_t sel, bool wrap_line = false, uint32_t end_cti = kCtiEnd,
+               uint64_t* first_beat_clocks = nullptr) {
+    uint64_t clocks = 0;
+    for (uint32_t i = 0; i < n; ++i) {
+        const uint32_t word = wrap_line ? (first & ~(kLineWords - 1)) | ((first + i) & (kLineWords - 1))
+                                        : (first + i) & kWordMask;
+        const uint32_t cti = i + 1 == n ? end_cti : kCtiIncrementing;
+        if (we) {
+            const uint32_t value = rng();
+            const uint32_t lanes = sel != 0 ? sel : (rng() & 0xFu);
+            b.beat(word, true, value, lanes, cti);
+            auto it = ref.words.find(word);
+            if (it == ref.words.end()) {
+                ref.words[word] = value;   // a first write is full (callers' rule: the chip is strict)
+            } else {
+                it->second = apply_sel(it->second, value, lanes);
+            }
+        } else {
+            ref.check(word, b.beat(word, false, 0, 0xF, cti), wrap_line ? "wrap-8 burst" : "burst");
+        }
+        clocks += b.beat_clocks;
+        if (i == 0 && first_beat_clocks != nullptr) *first_beat_clocks = b.beat_clocks;
+    }
+    return clocks;
+}
+
+// The burst cases against a reference memory, on words the bench writes first (the chip model is
+// strict about reads of never-written bytes, and a burst reads its line ahead): REGION words from
+// kRegion, mixed at random (seeded) — 8-word bursts at line boundaries read and written, single
+// reads and writes (random lanes), bursts abandoned early (CTI 111 before the line's end, cyc
+// dropped, another request at once, or a beat offered as the last for one clock, withdrawn, and
+// the burst then going on), bursts from the middle of a line running into the next,
+// wrap-8 bursts (critical word first), and a burst across the top of the chip into word 0.
+constexpr uint32_t kRegion = 0x300000, kRegionWords = 4096;
+
+void burst_cases(Bench& b, Reference& ref, std::mt19937& rng, uint32_t ops, uint32_t counts[8]) {
+    for (uint32_t w = 0; w < kRegionWords; w += kLineWords) {
+        burst(b, ref, rng, kRegion + w, kLineWords, true, 0xF);
+    }
+    const uint32_t top = kWordMask + 1 - 2 * kLineWords;   // the chip's last two lines and first two
+    burst(b, ref, rng, top, 4 * kLineWords, true, 0xF);
+    b.idle(1);
+    for (uint32_t n = 0; n < ops; ++n) {
+        const uint32_t kind = rng() % 8;
+        // a line with two more after it in the region (a burst from its middle may run 16 words)
+        const uint32_t line = kRegion + (rng() % (kRegionWords / kLineWords - 2)) * kLineWords;
+        const uint32_t offset = rng() % kLineWords;
+        ++counts[kind];
+        switch (kind) {
+        case 0: case 1:   // an aligned 8-word read burst, a line refill
+            burst(b, ref, rng, line, kLineWords, false, 0xF);
+            break;
+        case 2:           // an aligned 8-word write burst, random lanes
+            burst(b, ref, rng, line, kLineWords, true, 0);
+            break;
+        case 3:           // a single read and a single write (random lanes) of one word
+            ref.check(line + offset, b.beat(line + offset, false, 0, 0xF, kCtiClassic), "single read");
+            burst(b, ref, rng, line + (rng() % kLineWords), 1, true, 0, false, kCtiClassic);
+            break;
+        case 4: {         // a read burst abandoned after k beats, in one of four ways
+            const uint32_t k = 1 + rng() % (kLineWords - 1);
+            const uint32_t how = rng() % 4;
+            if (how == 3) {   // beat k offered as the last for a clock, withdrawn, then the burst goes on
+                burst(b, ref, rng, line, k, false, 0xF, false, kCtiIncrementing);
+                uint32_t data = 0;
+                if (b.offer(line + k, kCtiEnd, &data)) {
+                    ref.check(line + k, data, "beat offered once");
+                    break;
+                }
+                b.tick();
+                burst(b, ref, rng, line + k, kLineWords - k, false, 0xF);
+                break;
+            }
+            burst(b, ref, rng, line + (how == 0 ? 0 : offset % (kLineWords - k + 1)), k, false, 0xF, false,
+                  how == 0 ? kCtiEnd : kCtiIncrementing);
+            if (how == 1) b.idle(rng() % 4);   // cyc dropped (0: the next request at once, cyc high)
+            break;
+        }
+        case 5:           // from the middle of a line, on into the next (up to 2 lines)
+            burst(b, ref, rng, line + offset, 1 + rng() % (2 * kLineWords), false, 0xF);
+            break;
+        case 6:           // wrap-8: the critical word first, then round the line
+            burst(b, ref, rng, line + offset, kLineWords, false, 0xF, true);
+            break;
+        default:          // across the chip's top into word 0
+            burst(b, ref, rng, top + kLineWords + offset, kLineWords, false, 0xF);
+            break;
+        }
+        if (rng() % 4 == 0) b.idle(1 + rng() % 3);   // sometimes a gap, sometimes the next at once
+    }
+    b.idle(1);
+}
+
 }  // namespace
 
 // The accessors LiteDRAM's generated csr.h calls (tests/sdram/stub/hw/common.h): byte addresses of
@@ -187,7 +364,7 @@ extern "C" void cdelay(int i) {
 
 int main(int argc, char** argv) {
     std::string init = "ours";
-    uint32_t words = 2000, seed = 1, idle_us = 0;
+    uint32_t words = 2000, seed = 1, idle_us = 0, bursts = 2000;
     int phase = 180, grade = 7;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -201,6 +378,7 @@ int main(int argc, char** argv) {
         if (a == "--init") init = value();
         else if (a == "--words") words = std::strtoul(value(), nullptr, 0);
         else if (a == "--seed") seed = std::strtoul(value(), nullptr, 0);
+        else if (a == "--bursts") bursts = std::strtoul(value(), nullptr, 0);
         else if (a == "--idle-us") idle_us = std::strtoul(value(), nullptr, 0);
         else if (a == "--phase") phase = std::atoi(value());
         else if (a == "--grade") grade = std::atoi(value());
@@ -284,6 +462,37 @@ int main(int argc, char** argv) {
     }
     const uint64_t rd_clocks = b.clocks - rd_start;
 
+
+    // Bursts: 8-word line refills over the consecutive block (rows open: first-beat latency and
+    // clocks a line), the same at random lines of a 16 KiB region (a row to open first, mostly),
+    // 8-word write bursts; then the mixed cases against the reference memory.
+    Reference ref;
+    for (uint32_t i = 0; i < kBlock; ++i) ref.words[kBlockBase + i] = 0x9E3779B9u * (i + 1);
+    constexpr uint32_t kLines = kBlock / kLineWords;
+    uint64_t seq_first = 0, seq_clocks = 0, rnd_first = 0, rnd_clocks = 0;
+    for (uint32_t l = 0; l < kLines; ++l) {
+        uint64_t first = 0;
+        seq_clocks += burst(b, ref, rng, kBlockBase + l * kLineWords, kLineWords, false, 0xF, false, kCtiEnd, &first);
+        seq_first += first;
+    }
+    b.idle(1);
+    uint32_t counts[8] = {};
+    burst_cases(b, ref, rng, bursts, counts);
+    for (uint32_t l = 0; l < kLines; ++l) {
+        const uint32_t line = kRegion + (rng() % (kRegionWords / kLineWords)) * kLineWords;
+        uint64_t first = 0;
+        rnd_clocks += burst(b, ref, rng, line, kLineWords, false, 0xF, false, kCtiEnd, &first);
+        rnd_first += first;
+        b.idle(1);
+    }
+    const uint64_t wburst_start = b.clocks;
+    for (uint32_t l = 0; l < kLines; ++l) burst(b, ref, rng, kBlockBase + l * kLineWords, kLineWords, true, 0xF);
+    b.idle(1);
+    const uint64_t wburst_clocks = b.clocks - wburst_start - 1;
+    for (uint32_t i = 0; i < kBlock; ++i) ref.check(kBlockBase + i, b.read(kBlockBase + i), "block after write bursts");
+    for (uint32_t i = 0; i < kBlock; ++i) b.write(kBlockBase + i, 0x9E3779B9u * (i + 1), 0xF);   // for the idle check
+    mismatches += ref.mismatches;
+
     // Idle: the controller's refresh alone keeps the chip (one read every ~100 µs).
     const uint64_t idle_clocks = static_cast<uint64_t>(idle_us) * 1000000 / kPsPerClock;
     const uint64_t idle_end = b.clocks + idle_clocks;
@@ -302,6 +511,15 @@ int main(int argc, char** argv) {
                 " clocks a word\n", init.c_str(), mode, init_clocks, order.size(), random_clocks,
                 static_cast<double>(random_clocks) / (2.0 * words), kBlock,
                 static_cast<double>(wr_clocks) / kBlock, static_cast<double>(rd_clocks) / kBlock);
+    std::printf("litedram_tb: 8-word read bursts: first beat %.2f clocks, %.2f a line, %.2f a word (rows open);"
+                " random lines: first beat %.2f, %.2f a line; 8-word write bursts %.2f clocks a word\n",
+                static_cast<double>(seq_first) / kLines, static_cast<double>(seq_clocks) / kLines,
+                static_cast<double>(seq_clocks) / kBlock, static_cast<double>(rnd_first) / kLines,
+                static_cast<double>(rnd_clocks) / kLines, static_cast<double>(wburst_clocks) / kBlock);
+    std::printf("litedram_tb: burst cases: %u read beats checked (%u line reads, %u line writes, %u single pairs,"
+                " %u abandoned, %u unaligned, %u wrap-8, %u across the top), %u wrong\n", ref.beats,
+                counts[0] + counts[1], counts[2], counts[3], counts[4], counts[5], counts[6], counts[7],
+                ref.mismatches);
     std::printf("litedram_tb: %" PRIu64 " clocks (%.3f ms) at %.1f MHz, phase %d; chip (-%d): %s\n", b.clocks,
                 b.clocks * kPsPerClock / 1e9, kSysClkHz / 1e6, phase, grade, st.c_str());
     if (mismatches != 0) {
@@ -311,6 +529,7 @@ int main(int argc, char** argv) {
     if (b.chip->error_count() != 0 || !expect_error.empty()) {
         b.finish_and_exit(b.chip->error_count() != 0 ? 1 : 0);
     }
-    std::printf("litedram_tb: ok %zu random and %u consecutive words, no chip violation\n", order.size(), kBlock);
+    std::printf("litedram_tb: ok %zu random and %u consecutive words, %u burst beats, no chip violation\n",
+                order.size(), kBlock, ref.beats);
     return 0;
 }

@@ -1,6 +1,7 @@
 // litedram_tb_top: the SoC's SDRAM block (soc_rtl/litedram/soc_sdram.v: LiteDRAM's generated
-// controller behind soc_top's two SDRAM ports) alone, for tests/sdram/litedram_tb.cpp, which plays
-// a Wishbone master on those ports and the chip (cosim/sdram/sdram_chip.h) on the pins.
+// controller, behind sdram_wb_burst on soc_top's SDRAM port and its control registers on the other)
+// alone, for tests/sdram/litedram_tb.cpp, which plays a Wishbone master on those ports and the chip
+// (cosim/sdram/sdram_chip.h) on the pins.
 //
 // The pins' names are those of socsim's system (cosim/soc/soc_sdram_sim.sv), so both harnesses read
 // them with cosim/sdram/sdram_pins.h. DQ is split the same way: the controller drives it through
@@ -44,6 +45,7 @@ module litedram_tb_top #(
     input  wire [31:0]        wb_dat_w,
     output wire [31:0]        wb_dat_r,
     input  wire [3:0]         wb_sel,
+    input  wire [2:0]         wb_cti,          // 3'b010: another beat follows at wb_adr + 1
     input  wire               wb_cyc,
     input  wire               wb_stb,
     input  wire               wb_we,
@@ -58,7 +60,8 @@ module litedram_tb_top #(
     soc_sdram dut (
         .clk (clk), .rst (rst), .init_done (init_done),
         .sdram_cyc (wb_cyc), .sdram_stb (wb_stb), .sdram_we (wb_we), .sdram_adr (wb_adr),
-        .sdram_dat_w (wb_dat_w), .sdram_sel (wb_sel), .sdram_dat_r (wb_dat_r), .sdram_ack (wb_ack),
+        .sdram_dat_w (wb_dat_w), .sdram_sel (wb_sel), .sdram_cti (wb_cti), .sdram_dat_r (wb_dat_r),
+        .sdram_ack (wb_ack),
         .sdram_err (wb_err),
         .sdram_ctrl_cyc (ctrl_cyc), .sdram_ctrl_stb (ctrl_stb), .sdram_ctrl_we (ctrl_we),
         .sdram_ctrl_adr (ctrl_adr), .sdram_ctrl_dat_w (ctrl_dat_w), .sdram_ctrl_sel (ctrl_sel),
