@@ -18,9 +18,11 @@
 #
 #   vs_cosim.sh sdram SOCSIM_SDRAM   (suite soc-sdram-scenes) the same with the firmware in the
 #   SDRAM: the system with LiteDRAM and the chip and flash models (socsim-sdram-<boot RAM>k), its
-#   RAM holding the boot program, which powers the SDRAM up, runs the quick memory test and copies
-#   each scene's image (the SOC_MEM=sdram builds) from the flash (docs/boot.md). The frames must be
-#   the same bytes, with no SDRAM or flash violation, the image loaded and started.
+#   RAM holding the boot program, which powers the SDRAM up, runs the quick memory test (its random
+#   fill cut to 16 KiB: boot-fast; the boards' boot runs in soc-boot-faults) and copies each scene's
+#   image (the SOC_MEM=sdram builds; the model scene at the host build's capacities) from the flash
+#   (docs/boot.md). The frames must be the same bytes, with no SDRAM or flash violation, the image
+#   loaded and started.
 source "$(dirname "$0")/../lib.sh"
 source "$(dirname "$0")/soc_lib.sh"
 need BUILD
@@ -31,7 +33,7 @@ if [ "${1:-}" = sdram ]; then
     memory=SDRAM
     socsim=${2:?usage: vs_cosim.sh sdram SOCSIM_SDRAM}
     soc_test_dir=$BUILD/fw-test-soc-sdram
-    boot=(--boot "$BUILD/soc/boot.elf.hex")
+    boot=(--boot "$BUILD/soc/boot-fast.elf.hex")  # its random fill 16 KiB: the scenes are the subject here
     need_file "${boot[1]}"
     image=img
 fi

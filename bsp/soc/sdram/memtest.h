@@ -43,7 +43,9 @@
  * test on 32 MiB is 262,967 accesses. Each word is read back 65,535 accesses (some 13 ms) after its
  * write, far less than the 64 ms refresh period, so the quick test cannot see a cell that loses
  * its charge: memtest_full() can. */
+#ifndef MEMTEST_QUICK_RANDOM_BYTES  /* a build may test less: make test's scene runs (socsim.mk SOC_BOOT_FAST_HEX) */
 #define MEMTEST_QUICK_RANDOM_BYTES (256u * 1024u)
+#endif
 
 /* A buffer this large always holds memtest_format()'s whole line and its terminating NUL. */
 #define MEMTEST_FORMAT_SIZE 160u
