@@ -44,6 +44,16 @@ def load_segments(path):
     return segs
 
 
+def flat_image(segs, base):
+    """The loadable segments' file contents as one byte image from base to the end of the last one's
+    contents, the gaps 0, padded to a whole word."""
+    file_end = max(addr + len(body) for addr, body, _ in segs)
+    image = bytearray((file_end - base + 3) // 4 * 4)
+    for addr, body, _ in segs:
+        image[addr - base:addr - base + len(body)] = body
+    return image
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("elf")
@@ -63,9 +73,7 @@ def main():
                  f"{file_end - lo} initialised), outside the RAM 0x{base:08X}..0x{base + ram_bytes:08X} "
                  f"({ram_bytes} bytes)")
 
-    image = bytearray(((file_end - base) + 3) // 4 * 4)
-    for addr, body, _ in segs:
-        image[addr - base:addr - base + len(body)] = body
+    image = flat_image(segs, base)
     words = struct.unpack(f"<{len(image) // 4}I", image)
     pathlib.Path(a.hex).write_text("".join(f"{w:08x}\n" for w in words))
     print(f"elf_to_hex: {a.hex}: {len(words)} words ({len(image)} bytes initialised, {mem_end - base} of "

@@ -18,7 +18,7 @@ import sys
 import zlib
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from elf_to_hex import load_segments, soc_map_value  # noqa: E402  (the one ELF reader of bsp/soc)
+from elf_to_hex import flat_image, load_segments, soc_map_value  # noqa: E402  (the one ELF reader of bsp/soc)
 
 
 def entry_of(path):
@@ -28,10 +28,7 @@ def entry_of(path):
 def build_image(segs, entry):
     """(header + payload bytes, load address, payload bytes) of the loadable segments segs."""
     load = min(addr for addr, _, _ in segs)
-    file_end = max(addr + len(body) for addr, body, _ in segs)
-    payload = bytearray((file_end - load + 3) // 4 * 4)
-    for addr, body, _ in segs:
-        payload[addr - load:addr - load + len(body)] = body
+    payload = flat_image(segs, load)
     if not load <= entry < load + len(payload) or entry % 4:
         sys.exit(f"mkimage: the entry 0x{entry:08X} is not a word of the payload 0x{load:08X}..0x{load + len(payload):08X}")
     words = [soc_map_value("SOC_BOOT_IMAGE_MAGIC"), soc_map_value("SOC_BOOT_IMAGE_HEADER_BYTES"), load,
