@@ -1,16 +1,20 @@
 #!/usr/bin/env bash
-# make test's formal suite: every proof of make formal (tests/formal/*.sby), and the first broken
-# copy of each check (make formal-broken's short form), which must fail — so a proof that stopped
-# checking anything (a property compiled out, a solver that no longer runs) fails the suite too.
+# make test's formal suite: every proof of make formal (tests/formal/*.sby) but the variants below,
+# and the first broken copy of each check (make formal-broken's short form), which must fail — so a
+# proof that stopped checking anything (a property compiled out, a solver that no longer runs) fails
+# the suite too. Left to make formal (each a variant of a proof that runs here, together 100 s of
+# CPU): sdram_wb_burst's 32-bit native port (not built) and its invariant-free BMC, soc_spiflash's
+# SCK at clk/4 (not built) and its induction step as a BMC.
 source "$(dirname "$0")/../lib.sh"
 need BUILD
 work=$(fresh_dir formal)
 export VENV_BIN="$PWD/.venv/bin" BUILD="$work"
-run_to "$work/prove.log" 600 bash tests/formal/run.sh prove
+SKIP_TASKS="sdram_wb_burst:n32 sdram_wb_burst:bmc soc_spiflash:div2 soc_spiflash:step" \
+    run_to "$work/prove.log" 900 bash tests/formal/run.sh prove
 cat "$work/prove.log"
 expect_status 0 "make formal's proofs (log: $work/prove.log)"
 proved=$(count '\| PASS \|' "$work/prove.log")
-BROKEN_LIMIT=1 run_to "$work/broken.log" 600 bash tests/formal/run.sh broken
+BROKEN_LIMIT=1 run_to "$work/broken.log" 900 bash tests/formal/run.sh broken
 cat "$work/broken.log"
 expect_status 0 "a broken copy the proofs did not catch (log: $work/broken.log)"
 caught=$(count 'FAIL, as it must' "$work/broken.log")
