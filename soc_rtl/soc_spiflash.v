@@ -26,8 +26,10 @@
 // a streamed word is acked in clock 64*D + 2 (32 SCK cycles); a new command with CS# already high
 // long enough in clock 128*D + 2 (64 SCK cycles); one that first closes a stream in H + 128*D + 2; a
 // write's err in clock 2. The wake-up takes H + 16*D + 1 + max(WAKE_CLKS, H) clocks after reset.
-// With the defaults (50 MHz, SCK 25 MHz): 66 clocks (1.32 us) a streamed word, 3 MB/s; 130 (2.6 us)
-// a first word; the wake-up 169 clocks (3.4 us).
+// Whatever came before (a READ under way for an abandoned request, the wake-up), a read is acked
+// by clock max(256*D + H + 2, 144*D + H + max(WAKE_CLKS, H) + 2) (proved). With the defaults
+// (50 MHz, SCK 25 MHz): 66 clocks (1.32 us) a streamed word, 3 MB/s; 130 (2.6 us) a first word;
+// the wake-up 169 clocks (3.4 us); at most 298 clocks (6 us) for any read.
 //
 // SPI timing (D = 1: SCK = clk / 2; every SCK half-period is D clocks, the first one after CS# falls
 // included): MOSI (the shift register's top bit) and SCK are flops; MOSI changes only at the clock
@@ -120,7 +122,9 @@ module soc_spiflash #(
     wire start_stream = state_q == ST_OPEN && woke_q && rd && seq;
     wire close        = state_q == ST_OPEN && (!woke_q || (rd && !seq));
     wire tick         = div_q == 0;                          // this SCK half-period ends
-    wire last         = state_q == ST_XFER && tick && flash_sck && bits_q == 7'd1;   // last falling edge
+    wire rise         = state_q == ST_XFER && tick && !flash_sck;   // SCK rises at this clock's end
+    wire fall         = state_q == ST_XFER && tick && flash_sck;    // ... falls
+    wire last         = fall && bits_q == 7'd1;              // the transfer's last falling edge
 
     always @(posedge clk) begin
         if (rst) begin
@@ -142,23 +146,15 @@ module soc_spiflash #(
             case (state_q)
                 ST_HIGH: begin
                     if (cnt_q != 0) cnt_q <= cnt_q - 1'b1;
-                    if (start_wake) begin
-                        sr_q <= {CMD_RDP, 24'd0};
-                        bits_q <= 7'd8;
-                    end
-                    if (start_cmd) begin
-                        sr_q <= rd_cmd;
-                        bits_q <= 7'd64;
-                    end
+                    if (start_wake) bits_q <= 7'd8;
+                    if (start_cmd) bits_q <= 7'd64;
                 end
                 ST_XFER: begin
                     if (!tick) div_q <= div_q - 1'b1;
                     else begin
                         div_q <= DIV_LAST;
                         flash_sck <= !flash_sck;
-                        if (!flash_sck) miso_q <= flash_miso;   // rising edge: sample MISO
-                        else begin                                // falling edge: shift, next MOSI bit
-                            sr_q <= {sr_q[30:0], miso_q};
+                        if (flash_sck) begin
                             bits_q <= bits_q - 1'b1;
                             if (bits_q == 7'd1) state_q <= ST_OPEN;
                         end
@@ -181,10 +177,20 @@ module soc_spiflash #(
             end
             if (start_cmd || start_stream) begin
                 pending_q <= 1'b1;
-                next_q <= adr_inc[AW-1:0];
                 stream_ok_q <= !adr_inc[AW];
             end
         end
+    end
+
+    // The data path, without reset (what it holds matters only once a transfer has set it): the
+    // shift register, loaded with a command, shifted at each falling SCK edge; MISO's input flop,
+    // at each rising edge; the word after the one a transfer reads.
+    always @(posedge clk) begin
+        if (start_wake) sr_q <= {CMD_RDP, 24'd0};
+        else if (start_cmd) sr_q <= rd_cmd;
+        else if (fall) sr_q <= {sr_q[30:0], miso_q};
+        if (rise) miso_q <= flash_miso;
+        if (start_cmd || start_stream) next_q <= adr_inc[AW-1:0];
     end
 
 `ifdef FORMAL
@@ -202,6 +208,7 @@ module soc_spiflash #(
     wire [AW-1:0] f_cmd_adr;
     wire [23:0]   f_taddr;
     wire [7:0]    f_tval;
+    wire [15:0]   f_rdw, f_wait;
     soc_spiflash_check #(
         .ADDR_BITS(ADDR_BITS), .SCK_DIV(SCK_DIV), .CS_HIGH_CLKS(CS_HIGH_CLKS), .WAKE_CLKS(WAKE_CLKS)
     ) f_check (
@@ -213,7 +220,8 @@ module soc_spiflash #(
         .f_past_valid(f_past_valid), .f_busy(f_busy), .f_wr_due(f_wr_due), .f_rx_n(f_rx_n),
         .f_rx(f_rx), .f_first(f_first), .f_pos(f_pos), .f_valid(f_valid), .f_high(f_high),
         .f_same(f_same), .f_woke(f_woke), .f_pend(f_pend), .f_token(f_token),
-        .f_cmd_adr(f_cmd_adr), .f_cmd_rd(f_cmd_rd), .f_taddr(f_taddr), .f_tval(f_tval)
+        .f_cmd_adr(f_cmd_adr), .f_cmd_rd(f_cmd_rd), .f_taddr(f_taddr), .f_tval(f_tval),
+        .f_rdw(f_rdw), .f_wait(f_wait)
     );
 
     // What the transfer under way (or the last one) is, and last clock's request.
@@ -239,12 +247,25 @@ module soc_spiflash #(
     wire f_cmd_phase = state_q != ST_HIGH && (f_kind_q == F_WAKE || (f_kind_q == F_CMD && f_falls < 7'd32));
     // ... and the data phase: the flash drives the word's bits, which shift into sr_q
     wire f_data = state_q != ST_HIGH && woke_q && (f_kind_q == F_STREAM || f_falls >= 7'd32);
-    wire [6:0]    f_have = f_kind_q == F_STREAM ? 7'd32 : f_falls - 7'd32;   // data bits in sr_q
-    wire [26:0]   f_dpos = f_wpos + {20'd0, f_kind_q == F_STREAM ? f_falls : f_falls - 7'd32};
+    wire [6:0]    f_have = f_kind_q == F_STREAM ? f_falls : f_falls - 7'd32;   // data bits of the word
+    wire [26:0]   f_dpos = f_wpos + {20'd0, f_have};             // the flash's bit now
+    // The clocks from this one to the answer of a read held from now on (0: answered now): the
+    // edges to the last falling edge of the transfer under way, then what follows it.
+    localparam integer F_CMD_CLKS = 128 * SCK_DIV;   // a READ's 64 SCK cycles
+    wire [15:0]   f_xfer = div_q + (2 * bits_q - flash_sck - 1) * SCK_DIV;
+    wire [15:0]   f_left = ack_q ? 0
+                         : state_q == ST_XFER ? (pending_q ? f_xfer + 1
+                                                 : f_xfer + 1 + (woke_q ? CS_HIGH_CLKS : WAIT_CLKS) + F_CMD_CLKS + 1)
+                         : state_q == ST_OPEN ? (!woke_q ? WAIT_CLKS + F_CMD_CLKS + 1
+                                                 : seq ? 64 * SCK_DIV + 1 : CS_HIGH_CLKS + F_CMD_CLKS + 1)
+                         : woke_q ? cnt_q + F_CMD_CLKS + 1 : cnt_q + 144 * SCK_DIV + WAIT_CLKS + 2;
 
     always @(*) begin
         if (f_past_valid) begin
-            assert(state_q != 2'd3 && div_q <= DIV_LAST);
+            assert(state_q != 2'd3 && f_kind_q != 2'd3 && div_q <= DIV_LAST);
+            // a read's wait: at most f_wait clocks after its first
+            assert(f_left <= f_wait && f_rdw <= f_wait);
+            if (req && !wb_we) assert({1'b0, f_rdw} + {1'b0, f_left} <= {1'b0, f_wait});
             // the bus: each answer owed to the request of the last clock, still held
             assert(!(ack_q && err_q));
             assert(err_q == f_wr_due);
@@ -258,6 +279,7 @@ module soc_spiflash #(
             if (!woke_q) assert(!f_woke);
             if (state_q != ST_HIGH) assert(!flash_cs_n && (woke_q ? f_woke && f_kind_q != F_WAKE
                                                                   : f_kind_q == F_WAKE && !f_pend));
+            if (state_q != ST_HIGH && woke_q) assert(stream_ok_q == (next_q != '0));
             // CS# high
             if (state_q == ST_HIGH) begin
                 assert(flash_cs_n && !flash_sck && bits_q == 7'd0);
@@ -286,17 +308,23 @@ module soc_spiflash #(
                 assert(f_rx_n == 6'd32 && f_rx[31:24] == CMD_READ && !f_first);
                 if (f_kind_q == F_CMD) assert(f_rx == f_cmd);
                 assert(f_pos == f_dpos && f_valid == !flash_sck);
-                assert(stream_ok_q == (next_q != '0));
-                if (flash_sck && f_pos[26:3] == f_taddr) assert(miso_q == f_tval[~f_pos[2:0]]);
             end
         end
     end
-    genvar f_i;
-    generate for (f_i = 0; f_i < 32; f_i = f_i + 1) begin : g_f_sr
-        wire [26:0] f_bpos = f_pos - 27'd1 - f_i;   // the flash's bit in sr_q[f_i]
+    // The tracked byte, if it is in this word: its bits are data bits 8 * lane .. 8 * lane + 7, MSB
+    // first; data bit j (of f_have received) is in sr_q[f_have - 1 - j], the one sampled last
+    // (SCK high: f_have) in miso_q.
+    wire       f_tw = f_taddr[23:2] == f_wpos[26:5];
+    wire [5:0] f_tj = {1'b0, f_taddr[1:0], 3'd0};
+    genvar f_b;
+    generate for (f_b = 0; f_b < 8; f_b = f_b + 1) begin : g_f_byte
+        wire [5:0] f_j = f_tj + f_b;
+        wire [5:0] f_at = f_have[5:0] - 6'd1 - f_j;
         always @(*) begin
-            if (f_past_valid && f_data && f_i < f_have && f_bpos[26:3] == f_taddr)
-                assert(sr_q[f_i] == f_tval[~f_bpos[2:0]]);
+            if (f_past_valid && f_data && f_tw) begin
+                if (f_j < f_have[5:0]) assert(sr_q[f_at[4:0]] == f_tval[7 - f_b]);
+                if (flash_sck && f_j == f_have[5:0]) assert(miso_q == f_tval[7 - f_b]);
+            end
         end
     end endgenerate
 `endif
