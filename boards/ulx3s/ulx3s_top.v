@@ -9,7 +9,10 @@
 // not reset the FPGA. Only the primitives live here; the logic is in ulx3s_system. The GPU's build
 // parameters (contract/gpu_build_params.vh) are passed through: a scene's manifest may size the
 // buffers (VTX_CAP, TRI_CAP); ENABLE_WMASK costs 4 EBR, board.mk turns it off beside a depth buffer.
+// This is the build without SDRAM (SOC_MEM=ram): the firmware in on-chip RAM, the SDRAM and flash
+// ports of ulx3s_system idle, the PLL's fourth output off; ulx3s_sdram_top is the build with them.
 `include "contract/gpu_build_params.vh"
+`include "soc_rtl/soc_top_no_sdram.vh"
 `default_nettype none
 
 module ulx3s_top #(
@@ -30,18 +33,23 @@ module ulx3s_top #(
     // ESP32
     output wire       wifi_gpio0      // held high
 );
-    wire clk_tmds, clk_pix, clk_sys, pll_locked;
-    ulx3s_pll #(.SYS_MHZ(SYS_MHZ)) u_pll (
+    wire clk_tmds, clk_pix, clk_sys, clk_sdram_off, pll_locked;
+    ulx3s_pll #(.SYS_MHZ(SYS_MHZ), .SDRAM_CLK(0)) u_pll (
         .clk_25mhz (clk_25mhz),
         .clk_tmds  (clk_tmds),
         .clk_pix   (clk_pix),
         .clk_sys   (clk_sys),
+        .clk_sdram (clk_sdram_off),   // CLKOS3 disabled: no SDRAM here
         .locked    (pll_locked)
     );
+    wire unused_clk_sdram = clk_sdram_off;
 
     wire [3:0] tmds_d0, tmds_d1;
     wire       exit_valid;
     wire [7:0] exit_code;
+    `SOC_TOP_NO_SDRAM_WIRES   // no SDRAM: ulx3s_system's SDRAM and flash ports (soc_rtl/soc_top_no_sdram.vh)
+    wire       sdram_rst_idle;
+    wire unused_sdram_rst = sdram_rst_idle;
     ulx3s_system #(
         .SYS_HZ       (SYS_MHZ * 1000000),
         .RAM_BYTES    (RAM_BYTES),
@@ -58,6 +66,8 @@ module ulx3s_top #(
         .led        (led),
         .tmds_d0    (tmds_d0),
         .tmds_d1    (tmds_d1),
+        .sdram_rst  (sdram_rst_idle),
+        `SOC_TOP_NO_SDRAM_PORTS,
         .exit_valid (exit_valid),
         .exit_code  (exit_code)
     );

@@ -1,0 +1,203 @@
+// ulx3s_sdram_top: the SoC on the Radiona ULX3S with its firmware in the SDRAM (SOC_MEM=sdram) —
+// ulx3s_top's pins, PLL and DVI outputs, and the board's SDRAM and SPI flash.
+//
+// Contract: as ulx3s_top (clocks, DVI, UART, FIRE1, LEDs, wifi_gpio0), with soc_top's SDRAM_BYTES
+// = SDRAM_BYTES and its on-chip RAM the boot program's (RAM_INIT, RAM_BYTES: docs/boot.md): the
+// boot program powers the SDRAM up, tests it, copies the firmware's image from the flash into it
+// and jumps there.
+//   SDRAM   soc_sdram (LiteDRAM's controller, generated for SYS_MHZ: soc_rtl/litedram) on clk_sys,
+//           its commands and data registered in the I/O cells; sdram_clk is the PLL's CLKOS3
+//           (SYS_MHZ, SDRAM_PHASE_DEG after clk_sys: the argument is in ulx3s_pll.v) leaving through
+//           an ODDRX1F (D0 1, D1 0), the same kind of I/O register as the commands. Its reset is
+//           ulx3s_system's sdram_rst (PLL unlock or FIRE1, synchronised to clk_sys).
+//   flash   soc_top's SPI pins (mode 0, SCK = clk_sys / 2): CS#, MOSI, MISO on their balls; SCK
+//           reaches the flash's clock ball (CCLK, a configuration pin) only through USRMCLK
+//           (USRMCLKI = SCK, USRMCLKTS = 0: always driven, after configuration; the LPF's
+//           MASTER_SPI_PORT=DISABLE leaves the pins to the design); WP# and HOLD# held high.
+// Only the primitives live here; the logic is in ulx3s_system and soc_sdram. The GPU's build
+// parameters (contract/gpu_build_params.vh) are passed through, as in ulx3s_top.
+`include "contract/gpu_build_params.vh"
+`default_nettype none
+
+module ulx3s_sdram_top #(
+    parameter integer SYS_MHZ = 50,                                   // a divisor of 750 (ulx3s_pll)
+    parameter integer RAM_BYTES = soc_pkg::SOC_RAM_BOOT_BYTES,        // the boot program's on-chip RAM
+    parameter integer SDRAM_BYTES = soc_pkg::SOC_SDRAM_DEFAULT_BYTES, // the generated controller's chip
+    parameter RAM_INIT = "",                                          // the boot program's RAM image
+    `GPU_BUILD_PARAMS,                                                // the GPU's (ulx3s_system)
+    localparam integer SDRAM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),
+    localparam integer SDRAM_CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4)
+) (
+    input  wire        clk_25mhz,      // G2
+    // FT231X USB serial
+    input  wire        ftdi_txd,       // the FPGA receives (M1)
+    output wire        ftdi_rxd,       // the FPGA transmits (L4)
+    // buttons and LEDs
+    input  wire        btn_fire1,      // R1, active high: reset
+    output wire [7:0]  led,
+    // GPDI: blue, green, red, clock
+    output wire [3:0]  gpdi_dp,
+    // ESP32
+    output wire        wifi_gpio0,     // held high
+    // SDRAM (32 MB x16 SDR)
+    output wire        sdram_clk,
+    output wire        sdram_cke,
+    output wire        sdram_csn,
+    output wire        sdram_wen,
+    output wire        sdram_rasn,
+    output wire        sdram_casn,
+    output wire [12:0] sdram_a,
+    output wire [1:0]  sdram_ba,
+    output wire [1:0]  sdram_dqm,
+    inout  wire [15:0] sdram_d,
+    // SPI configuration flash (its clock through USRMCLK)
+    output wire        flash_csn,
+    output wire        flash_mosi,
+    input  wire        flash_miso,
+    output wire        flash_wpn,      // held high
+    output wire        flash_holdn     // held high
+);
+    wire clk_tmds, clk_pix, clk_sys, clk_sdram, pll_locked;
+    ulx3s_pll #(.SYS_MHZ(SYS_MHZ), .SDRAM_CLK(1)) u_pll (
+        .clk_25mhz (clk_25mhz),
+        .clk_tmds  (clk_tmds),
+        .clk_pix   (clk_pix),
+        .clk_sys   (clk_sys),
+        .clk_sdram (clk_sdram),
+        .locked    (pll_locked)
+    );
+
+    wire [3:0] tmds_d0, tmds_d1;
+    wire       exit_valid;
+    wire [7:0] exit_code;
+    // soc_top's SDRAM ports, between ulx3s_system and soc_sdram (clk_sys)
+    wire                     sdram_rst;
+    wire                     s_cyc, s_stb, s_we, s_ack, s_err;
+    wire [SDRAM_AW-1:0]      s_adr;
+    wire [31:0]              s_dat_w, s_dat_r;
+    wire [3:0]               s_sel;
+    wire [2:0]               s_cti;
+    wire                     c_cyc, c_stb, c_we, c_ack, c_err;
+    wire [SDRAM_CTRL_AW-1:0] c_adr;
+    wire [31:0]              c_dat_w, c_dat_r;
+    wire [3:0]               c_sel;
+    wire                     flash_sck;
+    ulx3s_system #(
+        .SYS_HZ       (SYS_MHZ * 1000000),
+        .RAM_BYTES    (RAM_BYTES),
+        .SDRAM_BYTES  (SDRAM_BYTES),
+        .RAM_INIT     (RAM_INIT),
+        `GPU_BUILD_PARAMS_PASS
+    ) u_system (
+        .clk_sys          (clk_sys),
+        .clk_pix          (clk_pix),
+        .clk_tmds         (clk_tmds),
+        .pll_locked       (pll_locked),
+        .btn_reset        (btn_fire1),
+        .uart_rx          (ftdi_txd),
+        .uart_tx          (ftdi_rxd),
+        .led              (led),
+        .tmds_d0          (tmds_d0),
+        .tmds_d1          (tmds_d1),
+        .sdram_rst        (sdram_rst),
+        .sdram_cyc        (s_cyc),
+        .sdram_stb        (s_stb),
+        .sdram_we         (s_we),
+        .sdram_adr        (s_adr),
+        .sdram_dat_w      (s_dat_w),
+        .sdram_sel        (s_sel),
+        .sdram_cti        (s_cti),
+        .sdram_dat_r      (s_dat_r),
+        .sdram_ack        (s_ack),
+        .sdram_err        (s_err),
+        .sdram_ctrl_cyc   (c_cyc),
+        .sdram_ctrl_stb   (c_stb),
+        .sdram_ctrl_we    (c_we),
+        .sdram_ctrl_adr   (c_adr),
+        .sdram_ctrl_dat_w (c_dat_w),
+        .sdram_ctrl_sel   (c_sel),
+        .sdram_ctrl_dat_r (c_dat_r),
+        .sdram_ctrl_ack   (c_ack),
+        .sdram_ctrl_err   (c_err),
+        .flash_cs_n       (flash_csn),
+        .flash_sck        (flash_sck),
+        .flash_mosi       (flash_mosi),
+        .flash_miso       (flash_miso),
+        .exit_valid       (exit_valid),
+        .exit_code        (exit_code)
+    );
+    wire unused_exit = exit_valid | (|exit_code);  // the board runs the firmware for ever
+
+    // ---- the SDRAM: LiteDRAM on soc_top's ports, the chip's clock from CLKOS3 ----
+    wire sdram_init_done;
+    soc_sdram #(
+        .SDRAM_BYTES (SDRAM_BYTES)
+    ) u_sdram (
+        .clk              (clk_sys),
+        .rst              (sdram_rst),
+        .init_done        (sdram_init_done),
+        .sdram_cyc        (s_cyc),
+        .sdram_stb        (s_stb),
+        .sdram_we         (s_we),
+        .sdram_adr        (s_adr),
+        .sdram_dat_w      (s_dat_w),
+        .sdram_sel        (s_sel),
+        .sdram_cti        (s_cti),
+        .sdram_dat_r      (s_dat_r),
+        .sdram_ack        (s_ack),
+        .sdram_err        (s_err),
+        .sdram_ctrl_cyc   (c_cyc),
+        .sdram_ctrl_stb   (c_stb),
+        .sdram_ctrl_we    (c_we),
+        .sdram_ctrl_adr   (c_adr),
+        .sdram_ctrl_dat_w (c_dat_w),
+        .sdram_ctrl_sel   (c_sel),
+        .sdram_ctrl_dat_r (c_dat_r),
+        .sdram_ctrl_ack   (c_ack),
+        .sdram_ctrl_err   (c_err),
+        .pin_a            (sdram_a),
+        .pin_ba           (sdram_ba),
+        .pin_cs_n         (sdram_csn),
+        .pin_ras_n        (sdram_rasn),
+        .pin_cas_n        (sdram_casn),
+        .pin_we_n         (sdram_wen),
+        .pin_cke          (sdram_cke),
+        .pin_dqm          (sdram_dqm),
+        .pin_dq           (sdram_d)
+    );
+    wire unused_init_done = sdram_init_done;   // the boot program reads it through the registers
+
+    ODDRX1F u_sdram_clk (
+        .SCLK (clk_sdram),
+        .RST  (1'b0),
+        .D0   (1'b1),       // high after clk_sdram's rising edge ...
+        .D1   (1'b0),       // ... low after its falling one: clk_sdram at the pin
+        .Q    (sdram_clk)
+    );
+
+    // ---- the flash's clock: the configuration clock pin, through USRMCLK ----
+    USRMCLK u_flash_clk (
+        .USRMCLKI  (flash_sck),
+        .USRMCLKTS (1'b0)
+    );
+    assign flash_wpn   = 1'b1;
+    assign flash_holdn = 1'b1;
+
+    // ---- DVI, as ulx3s_top ----
+    genvar ch;
+    generate
+        for (ch = 0; ch < 4; ch = ch + 1) begin : g_tmds_out
+            ODDRX1F u_ddr (
+                .SCLK (clk_tmds),
+                .RST  (1'b0),
+                .D0   (tmds_d0[ch]),
+                .D1   (tmds_d1[ch]),
+                .Q    (gpdi_dp[ch])
+            );
+        end
+    endgenerate
+
+    assign wifi_gpio0 = 1'b1;
+endmodule
+
+`default_nettype wire
