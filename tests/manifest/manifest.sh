@@ -44,11 +44,14 @@ sed 's/^scene = "tetra"/scene = "teapot"/' <<<"$good" | refused "scene 'teapot' 
 model=$(cat firmware/scenes/model.manifest.toml)
 "$PYTHON" mk/manifest.py --file firmware/scenes/model.manifest.toml >/dev/null || fail "model's manifest refused"
 printf '%s\n[model]\nupload = true\nmax_verts = 64\nmax_faces = 64\n' "$good" | refused "unknown key 'model'"
-sed '/^\[model\]/,/^max_faces/d' <<<"$model" | refused "missing key 'model'"
+sed '/^\[model\]/,$d' <<<"$model" | refused "missing key 'model'"
 sed 's/^tri_cap = 512 /tri_cap = 256 /' <<<"$model" | refused "gpu.tri_cap = 256 is smaller than scene model's prims column \\(1282"
 sed 's/^max_faces = 1024 /max_faces = 64 /; s/^tri_cap = 512 /tri_cap = 64 /' <<<"$model" |
     refused "gpu.tri_cap = 64 is smaller than scene model's prims column \\(82"
 sed 's/^max_faces = 1024 /max_faces = 70000 /' <<<"$model" | refused "model.max_faces = 70000: from 4 to 65536"
+# From the SDRAM: a render frame indexes 65,536 vertices and primitives (render.h).
+sed 's/^sdram_max_faces = 49152 /sdram_max_faces = 60000 /' <<<"$model" |
+    refused "model.sdram_max_verts/sdram_max_faces give a frame of 70956 verts"
 
 # The manifest build against the full one: the same frames, co-simulated on the fast display path
 # (the RTL's front bank after each swap, each frame checked against the golden model as well).
