@@ -74,8 +74,9 @@ module soc_spiflash #(
     output wire          flash_mosi,    // to the flash's DI (IO0)
     input  wire          flash_miso     // from the flash's DO (IO1)
 );
-    generate if (ADDR_BITS < 3 || ADDR_BITS > 24 || SCK_DIV < 1 || CS_HIGH_CLKS < 1 || WAKE_CLKS < 1) begin : g_bad
-        $error("soc_spiflash: ADDR_BITS 3..24, SCK_DIV, CS_HIGH_CLKS and WAKE_CLKS at least 1");
+    generate if (ADDR_BITS < 3 || ADDR_BITS > 24 || SCK_DIV < 1 || CS_HIGH_CLKS < 1 || WAKE_CLKS < 1
+                 || CLK_HZ < 1) begin : g_bad
+        $error("soc_spiflash: ADDR_BITS 3..24; SCK_DIV, CS_HIGH_CLKS, WAKE_CLKS and CLK_HZ at least 1");
     end endgenerate
 
     localparam [7:0] CMD_READ = 8'h03;   // READ: 24-bit address, no dummy cycles
