@@ -49,13 +49,13 @@
 // note's window, 45..155 degrees, is the first four with the corners mixed): LiteDRAM registers
 // DQ's output enable in the fabric, not the I/O cells, and yosys merges its 16 flops into one,
 // whose inverted output (one LUT4) reaches the 16 DQ pads, 18 columns of I/O apart, across the
-// chip. In four SDRAM builds of these files (85F and 45F, two placements each; nextpnr's routed
+// chip. In six SDRAM builds of these files (85F and 45F, three placements each; nextpnr's routed
 // delays, --sdf): flop 0.48 + 0.71 + LUT 0.22 + 2.6..4.1 of routing to the farthest pad + PADDT
 // 2.61 = OE 6.6..8.1 ns typical, 7.5..9.2 at the slow corner. A write that follows a read or an
 // idle clock then needs d >= 4.8..6.3 ns typical, 5.4..7.1 slow: 90 degrees (5.0 ns) fails it in
-// three of the four even at typical delays. So d is placed between that bound and the read bound:
-// 7.0 ns leaves 0.7..2.2 ns to the write bound at typical delays (-0.1..1.6 at the slow corner; 1.1
-// and 1.9 typical in the builds README.md reports), and 1.4 ns to the read bound (1.0 at the slow
+// four of the six even at typical delays. So d is placed between that bound and the read bound: 7.0
+// ns leaves 0.7..2.2 ns to the write bound at typical delays (-0.1..1.6 at the slow corner; 1.6 and
+// 2.2 typical in the builds README.md reports), and 1.4 ns to the read bound (1.0 at the slow
 // corner). The output-enable path changes with placement; with the enables registered in the I/O
 // cells (one flop per pad, marked syn_useioff for nextpnr to pack) the window would be 1.7..8.0 ns
 // and about 90 degrees its centre again. nextpnr does not time these pin paths (the constraints
