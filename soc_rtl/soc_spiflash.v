@@ -34,13 +34,20 @@
 // SPI timing (D = 1: SCK = clk / 2; every SCK half-period is D clocks, the first one after CS# falls
 // included): MOSI (the shift register's top bit) and SCK are flops; MOSI changes only at the clock
 // edge that drops SCK (or with SCK low), so the flash's setup and hold around the rising edge are a
-// half-period each. MISO is registered in one input flop (miso_q) at the clock edge that raises SCK,
-// a whole half-period after the falling edge that made the flash change it: at D = 1 and 50 MHz
-// that is 20 ns for the SCK output delay (through USRMCLK), the flash's output valid time (tV, about
-// 8 ns) and the MISO pad and routing, and the flash holds the bit until after the next falling edge,
-// another half-period later. CS# falls with SCK low a half-period before the first rising edge
-// (tSLCH), and rises with SCK low at least a clock after the last falling edge (tCHSH). CS_HIGH_CLKS
-// (2: 40 ns) covers the CS# high time between reads (tSHSL / tCEH, 7-10 ns in the data sheets).
+// half-period each. MISO is sampled late: one input flop (miso_q) takes it at the clock edge that
+// next drops SCK, a whole SCK period (2 * D clocks: 40 ns at D = 1 and 50 MHz) after the falling edge
+// that made the flash change it. That path is SCK's route to USRMCLK and the CCLK pad (4-7.5 ns),
+// the flash's output valid time (tV, 6-8 ns) and the MISO pad and its route to the flop (4-7 ns):
+// 23-27 ns in routed ULX3S builds, past the half-period (20 ns) a sample at the rising edge would
+// have, well inside the 40 ns. Hold: the edge that samples is the one that drops SCK again, and the
+// flash changes its output only after it sees that fall (tHO >= 0) through the same SCK route, then
+// the MISO path: the bit stays at the flop at least ~8 ns past the sampling edge, far above the
+// flop's hold time. A word's last bit is taken at its last falling edge, which ends the transfer,
+// and goes to wb_dat_r from miso_q, so late sampling costs no clock (the counts above include it);
+// a streamed word's first bit is the one the flash put out at that edge and holds while SCK stays
+// low, however long. CS# falls with SCK low a half-period before the first rising edge (tSLCH),
+// and rises with SCK low at least a clock after the last falling edge (tCHSH). CS_HIGH_CLKS (2:
+// 40 ns) covers the CS# high time between reads (tSHSL / tCEH, 7-10 ns in the data sheets).
 // The board top instantiates USRMCLK for SCK on ECP5, and ties the flash's WP# and HOLD# high.
 `default_nettype none
 
@@ -95,8 +102,8 @@ module soc_spiflash #(
     reg          woke_q;       // the wake-up command has been sent since reset
     reg [DW-1:0] div_q;        // ST_XFER: clocks left in this SCK half-period
     reg [6:0]    bits_q;       // ST_XFER: SCK cycles left (8, 64 or 32 at the start)
-    reg [31:0]   sr_q;         // out: command and address from bit 31 (MOSI); in: MISO into bit 0
-    reg          miso_q;       // MISO sampled at the last rising SCK edge
+    reg [31:0]   sr_q;         // out: command and address from bit 31 (MOSI); in: miso_q into bit 0
+    reg          miso_q;       // MISO sampled at the last falling SCK edge: the word's newest bit
     reg [AW-1:0] next_q;       // the word after the last one read: where the flash's counter is
     reg          stream_ok_q;  // ... and next_q did not wrap past the top of the window
     reg          pending_q;    // the transfer under way answers a request held since it started
@@ -113,8 +120,9 @@ module soc_spiflash #(
     wire [31:0] rd_cmd = {CMD_READ, 24'd0} | {{(32 - ADDR_BITS){1'b0}}, wb_adr, 2'b00};
     assign wb_ack = ack_q && req;
     assign wb_err = err_q && req;
-    // flash byte A (the first in) is sr_q[31:24]
-    assign wb_dat_r = wb_ack ? {sr_q[7:0], sr_q[15:8], sr_q[23:16], sr_q[31:24]} : 32'd0;
+    // the last 32 bits in, the newest (in miso_q) in bit 0: flash byte A (the first in) is rx[31:24]
+    wire [31:0] rx = {sr_q[30:0], miso_q};
+    assign wb_dat_r = wb_ack ? {rx[7:0], rx[15:8], rx[23:16], rx[31:24]} : 32'd0;
 
     // ---- sequencer ----
     wire high_done    = state_q == ST_HIGH && cnt_q == 0;   // CS# has been high long enough
@@ -123,8 +131,7 @@ module soc_spiflash #(
     wire start_stream = state_q == ST_OPEN && woke_q && rd && seq;
     wire close        = state_q == ST_OPEN && (!woke_q || (rd && !seq));
     wire tick         = div_q == 0;                          // this SCK half-period ends
-    wire rise         = state_q == ST_XFER && tick && !flash_sck;   // SCK rises at this clock's end
-    wire fall         = state_q == ST_XFER && tick && flash_sck;    // ... falls
+    wire fall         = state_q == ST_XFER && tick && flash_sck;    // SCK falls at this clock's end
     wire last         = fall && bits_q == 7'd1;              // the transfer's last falling edge
 
     always @(posedge clk) begin
@@ -185,12 +192,13 @@ module soc_spiflash #(
 
     // The data path, without reset (what it holds matters only once a transfer has set it): the
     // shift register, loaded with a command, shifted at each falling SCK edge; MISO's input flop,
-    // at each rising edge; the word after the one a transfer reads.
+    // at each falling edge too (the bit the flash drove in the SCK period before: late sampling,
+    // see SPI timing), shifted on into sr_q at the next one; the word after the one a transfer reads.
     always @(posedge clk) begin
         if (start_wake) sr_q <= {CMD_RDP, 24'd0};
         else if (start_cmd) sr_q <= rd_cmd;
         else if (fall) sr_q <= {sr_q[30:0], miso_q};
-        if (rise) miso_q <= flash_miso;
+        if (fall) miso_q <= flash_miso;
         if (start_cmd || start_stream) next_q <= adr_inc[AW-1:0];
     end
 
@@ -304,17 +312,20 @@ module soc_spiflash #(
                 if (f_rises == 7'd32) assert(f_first && f_pos == f_wpos && !f_valid);
                 else assert(!f_valid);
             end
-            // the data phase: where the flash is, and the tracked bits received
+            // the data phase: where the flash is (the bit it has driven since the last falling
+            // edge), and the tracked bits received
             if (f_data) begin
                 assert(f_rx_n == 6'd32 && f_rx[31:24] == CMD_READ && !f_first);
                 if (f_kind_q == F_CMD) assert(f_rx == f_cmd);
-                assert(f_pos == f_dpos && f_valid == !flash_sck);
+                assert(f_pos == f_dpos && f_valid);
             end
         end
     end
     // The tracked byte, if it is in this word: its bits are data bits 8 * lane .. 8 * lane + 7, MSB
-    // first; data bit j (of f_have received) is in sr_q[f_have - 1 - j], the one sampled last
-    // (SCK high: f_have) in miso_q.
+    // first; data bit j (of f_have received) is in rx[f_have - 1 - j]. The one sampled last, at
+    // the falling edge that began the flash's present bit (f_pos), is rx[0] = miso_q: data bit
+    // f_have - 1, the bit the flash drove in the SCK period before that edge, never the one it
+    // drives after it (late sampling, at the edge that drops SCK, not at the one that raised it).
     wire       f_tw = f_taddr[23:2] == f_wpos[26:5];
     wire [5:0] f_tj = {1'b0, f_taddr[1:0], 3'd0};
     genvar f_b;
@@ -323,8 +334,7 @@ module soc_spiflash #(
         wire [5:0] f_at = f_have[5:0] - 6'd1 - f_j;
         always @(*) begin
             if (f_past_valid && f_data && f_tw) begin
-                if (f_j < f_have[5:0]) assert(sr_q[f_at[4:0]] == f_tval[7 - f_b]);
-                if (flash_sck && f_j == f_have[5:0]) assert(miso_q == f_tval[7 - f_b]);
+                if (f_j < f_have[5:0]) assert(rx[f_at[4:0]] == f_tval[7 - f_b]);
             end
         end
     end endgenerate

@@ -12,10 +12,10 @@
 // SCK and MOSI (flops of the slave: a change seen in a clock happened at the clock edge that began
 // it), counts the rising edges since CS# fell, takes the command byte and the 24-bit address MSB
 // first, and after the address drives one data bit per falling edge, MSB first, the address
-// counting up (wrapping at 16 MiB). One byte is tracked: an anyconst address and value; while the
-// flash drives a bit of that byte, MISO is that bit from the falling edge until the next rising
-// edge (only while SCK is low: a sample taken with SCK high, a half-period early or late, gets
-// any value). Every other bit is any value, at any clock.
+// counting up (wrapping at 16 MiB). One byte is tracked: an anyconst address and value; every other
+// bit is any value, at any clock. A bit of the tracked byte is on MISO from the rising edge after
+// the falling edge that began it until the next falling edge; while SCK is low after that edge
+// MISO is any value (changing): see "MISO", below, for the clock edges and why.
 // Master (assumed): reset in the first clock, then at any clock; Wishbone classic: wb_we, wb_adr,
 //   wb_sel and wb_dat_w held while a request goes on; it may drop wb_cyc or wb_stb before the answer
 //   (the request is abandoned), hold wb_stb into the next request, or raise wb_stb without wb_cyc.
@@ -86,7 +86,7 @@ module soc_spiflash_check #(
     output reg  [31:0]   f_rx,          // ... those bits, the last in bit 0: command, address
     output reg           f_first,       // ... the address is in, no data bit driven yet
     output reg  [26:0]   f_pos,         // ... the data bit driven (byte address, bit 0 = MSB first)
-    output reg           f_valid,       // ... MISO holds that bit (SCK low since its falling edge)
+    output reg           f_valid,       // ... the flash drives that bit (since its falling edge)
     output reg  [HW-1:0] f_high,        // clocks CS# had been high before this one (saturating)
     output reg  [SW-1:0] f_same,        // clocks SCK has had its level, this one included (saturating)
     output reg           f_woke,        // since reset: 0xAB sent and WAKE_CLKS of CS# high after it
@@ -187,7 +187,6 @@ module soc_spiflash_check #(
             f_first = 1'b0;
             f_valid = 1'b0;
         end else if (sck_rose) begin
-            f_valid = 1'b0;
             if (m_rx_n != 6'd32) begin
                 f_rx = {m_rx[30:0], p_mosi};   // MOSI as it was before the edge (and after: held)
                 f_rx_n = m_rx_n + 1'b1;
@@ -237,9 +236,30 @@ module soc_spiflash_check #(
         m_cmd_rd <= f_cmd_rd;
     end
 
-    // MISO: the tracked byte's bits, MSB first, while the flash drives them with SCK low.
+    // MISO: the tracked byte's bits, MSB first, each from the rising SCK edge after the falling
+    // edge that began it to the next falling edge; any value while SCK is low.
+    // The clock edges. The slave's flop that samples MISO takes, at a clock edge, flash_miso as it
+    // is in the clock that edge ends. SCK is a flop of the slave: the edge that drops it begins the
+    // first clock with flash_sck low, where this model sees sck_fell and moves to the next bit
+    // (f_pos), so the bit the flash drove in the SCK period before is still flash_miso in the clock
+    // that edge ends (SCK high): a flop sampling at the edge that drops SCK takes it, and the new
+    // bit is seen at the earliest at the edge after (the flash cannot answer a fall before the edge
+    // that makes it; a model whose MISO changed in the clock ending at that edge would have the
+    // flash see the fall a clock early, and refuse the late sampling that is right on the board).
+    // Why free while SCK is low: on the board the new bit reaches the flop 23-27 ns after the edge
+    // that dropped SCK (SCK's route, the flash's tV, the MISO path: soc_spiflash.v's SPI timing),
+    // past the half-period of 20 ns at SCK = clk / 2, so a sample at the edge that raises SCK (the
+    // end of the last clock with SCK low) may catch MISO changing. A zero-delay flash holding the
+    // bit the whole period could not tell that sample from a right one (early sampling is a matter
+    // of the board's delays, not of the logic: with such a model the rising-edge copy of
+    // soc_spiflash.broken passes even the proof, only the late one fails); this model leaves every
+    // clock with SCK low free (the output still changing, at any SCK_DIV) and asks only that the
+    // bit be there with SCK high, up to and including the clock the next falling edge ends (the
+    // hold past that edge, tHO and the route delays, is the board's, not visible here). So a slave
+    // that samples at the rising edge, or a clock after the falling edge, reads any value and fails
+    // the tracked byte's property; one that samples at the edge that drops SCK reads the bit.
     always @(*) begin
-        if (!flash_cs_n && !flash_sck && f_valid && is_read && f_pos[26:3] == f_track_addr)
+        if (!flash_cs_n && flash_sck && f_valid && is_read && f_pos[26:3] == f_track_addr)
             `SOC_SPIFLASH_ASSUME(flash_miso == f_track_val[~f_pos[2:0]]);
     end
 
