@@ -124,10 +124,21 @@ void Harness::catch_signals()
     std::signal(SIGPIPE, SIG_IGN);
 }
 
+// mkdir -p: the default out/frames must work in a fresh checkout, where out/ does not exist yet.
+static bool make_dirs(const std::string &path)
+{
+    for (size_t slash = path.find('/', 1); slash != std::string::npos; slash = path.find('/', slash + 1)) {
+        if (mkdir(path.substr(0, slash).c_str(), 0755) != 0 && errno != EEXIST) {
+            return false;
+        }
+    }
+    return mkdir(path.c_str(), 0755) == 0 || errno == EEXIST;
+}
+
 int Harness::open_outputs(const std::string &window_title)
 {
     const std::string &frames_dir = hopt_.frames_dir;
-    if (!frames_dir.empty() && mkdir(frames_dir.c_str(), 0755) != 0 && errno != EEXIST) {
+    if (!frames_dir.empty() && !make_dirs(frames_dir)) {
         return fail("setup", "cannot create %s: %s", frames_dir.c_str(), std::strerror(errno));
     }
     if (!hopt_.uart_log.empty() && !uart_.open_log(hopt_.uart_log)) {

@@ -691,6 +691,9 @@ void SocRun::summary_keys(FILE *f) const
     std::fprintf(f, "leds=0x%02x\n", static_cast<unsigned>(top_->leds));  // SYS LEDS, soc_top's port
 #endif
 #ifdef SOCSIM_SDRAM
+    if (!sdram_ || !flash_) {
+        return;  // a run that failed in its setup, before the chips were made
+    }
     const SdramCounters &k = sdram_->counters();
     std::fprintf(f, "sdram_violations=%llu\nsdram_refreshes=%llu\nsdram_words_read=%llu\nsdram_words_written=%llu\n",
                  static_cast<unsigned long long>(sdram_->error_count()), static_cast<unsigned long long>(k.refreshes),

@@ -56,4 +56,14 @@ check_case too-big 0xE3 '^boot: FAILED: image does not fit the SDRAM .* bytes 33
 check_case a11-stuck 0xE1 '^boot: FAILED: the SDRAM does not work' --fw "$elf" --sdram-fault-a 11
 expect_line '^boot: memtest: address bus FAILED .*address bit 23' "$work/a11-stuck.uart"
 check_case payload-bit 0xE4 '^boot: FAILED: image payload corrupt \(CRC mismatch after the copy\)' --fw "$elf" --flash "$work/payload-bit.img"
-pass "soc-boot-faults: an erased flash, a corrupt header, an image too big for the SDRAM, A11 stuck low (address bit 23) and a corrupt payload each stop the boot with its message, LEDs and exit code, no frame drawn"
+
+# socsim's own setup failures end with its message and status 1 and a summary naming them (a run
+# that failed before the chips were made once crashed writing the summary): a flash file that does
+# not exist, and a frames directory that cannot be made.
+for bad in "--flash $work/missing.img" "--frames /dev/null/frames"; do
+    # shellcheck disable=SC2086  # $bad: an option and its value
+    run_to "$work/setup.out" 60 "$socsim" --boot "$boot" --summary "$work/setup.summary" $bad
+    expect_status 1 "socsim $bad (log: $work/setup.out)"
+    [ "$(summary error "$work/setup.summary")" = setup ] || fail "socsim $bad: the summary's error is not setup"
+done
+pass "soc-boot-faults: an erased flash, a corrupt header, an image too big for the SDRAM, A11 stuck low (address bit 23) and a corrupt payload each stop the boot with its message, LEDs and exit code, no frame drawn; socsim's setup errors (no flash file, no frames directory) end with status 1"

@@ -29,7 +29,8 @@ refreshes=$(summary sdram_refreshes "$work/summary.txt")
 # byte-address bit 3, inside the 16 KiB) it must name that bit, show 0xE1 and exit with it.
 memtest="$BUILD/soc/memtest.elf.hex"
 need_file "$memtest"
-run_to "$work/memtest.txt" 300 "$socsim" --hex "$memtest" --uart-log "$work/uart-memtest.txt" --summary "$work/summary-memtest.txt"
+run_to "$work/memtest.txt" 300 "$socsim" --hex "$memtest" --frames "$work/frames-memtest" --uart-log "$work/uart-memtest.txt" \
+    --summary "$work/summary-memtest.txt"
 cat "$work/uart-memtest.txt"
 expect_status 0 "the memory test program (log: $work/memtest.txt)"
 expect_line '^memtest: CPU stores, one word each: [0-9.]+ cycles a word \([0-9.]+ MB/s\)$' "$work/uart-memtest.txt"
@@ -37,7 +38,7 @@ expect_line '^memtest: CPU loads, 8-word line refills: [0-9.]+ cycles a word \([
 expect_line '^pass 1: memtest: full ok \(16 KiB at 0x40000000, 5 tests' "$work/uart-memtest.txt"
 expect_eq "$(summary sdram_violations "$work/summary-memtest.txt")" 0 "chip model violations (memory test program)"
 
-run_to "$work/fault.txt" 300 "$socsim" --hex "$memtest" --uart-log "$work/uart-fault.txt" \
+run_to "$work/fault.txt" 300 "$socsim" --hex "$memtest" --frames "$work/frames-fault" --uart-log "$work/uart-fault.txt" \
     --summary "$work/summary-fault.txt" --sdram-fault-a 2
 cat "$work/uart-fault.txt"
 [ "$status" -eq 225 ] || fail "with A2 stuck low socsim ended with status $status, not the program's 0xE1 (log: $work/fault.txt)"
