@@ -22,18 +22,21 @@
 #   fill cut to 16 KiB: boot-fast; the boards' boot runs in soc-boot-faults) and copies each scene's
 #   image (the SOC_MEM=sdram builds; the model scene at the host build's capacities) from the flash
 #   (docs/boot.md). The frames must be the same bytes, with no SDRAM or flash violation, the image
-#   loaded and started.
+#   loaded and started. A short run a scene: the first frame (--stop-frames 1; the keys, read at
+#   frame 1, are the on-chip runs' subject).
 source "$(dirname "$0")/../lib.sh"
 source "$(dirname "$0")/soc_lib.sh"
 need BUILD
 memory=on-chip
 boot=()
+short=()
 image=hex
 if [ "${1:-}" = sdram ]; then
     memory=SDRAM
     socsim=${2:?usage: vs_cosim.sh sdram SOCSIM_SDRAM}
     soc_test_dir=$BUILD/fw-test-soc-sdram
     boot=(--boot "$BUILD/soc/boot-fast.elf.hex")  # its random fill 16 KiB: the scenes are the subject here
+    short=(--stop-frames 1)
     need_file "${boot[1]}"
     image=img
 fi
@@ -47,16 +50,16 @@ work=$(fresh_dir "soc-vs-cosim${1:+-$1}")
 scenes=${SOC_SCENES:-knot voxel landscape cubes tetra${1:+ model}}
 
 one_scene() {
-    local s="$1" host="$BUILD/fw-test/host-$1" soc_elf frames f
+    local s="$1" host="$BUILD/fw-test/host-$1" soc_elf frames printed f
     soc_elf="$soc_test_dir/$s-2f.elf"
     need_file "$host" "$soc_elf.$image"
     run_to "$work/$s.host.uart" 300 "$host" --frames "$work/$s-host" --keys-at "$keys"
     expect_status 0 "host build of $s"
-    run_to "$work/$s.soc.out" 600 "$socsim" "${boot[@]}" --fw "$soc_elf" --frames "$work/$s-soc" \
+    run_to "$work/$s.soc.out" 600 "$socsim" "${boot[@]}" "${short[@]}" --fw "$soc_elf" --frames "$work/$s-soc" \
         --uart-log "$work/$s.soc.uart" --keys-at "$keys" --summary "$work/$s.soc.summary"
     expect_status 0 "socsim of $s (log: $work/$s.soc.out)"
     frames=$(summary frames "$work/$s.soc.summary")
-    [ "$frames" -ge 2 ] || fail "$s: only $frames frames on socsim"
+    [ "$frames" -ge $((${#short[@]} ? 1 : 2)) ] || fail "$s: only $frames frames on socsim"
     expect_eq "$(png_count "$work/$s-soc")" "$frames" "$s: PNG files written by socsim"
     expect_eq "$(summary frames_model_checked "$work/$s.soc.summary")" "$frames" "$s: socsim frames equal to the model"
     expect_eq "$(summary keys_late "$work/$s.soc.summary")" 0 "$s: keys still on the line when read"
@@ -66,8 +69,11 @@ one_scene() {
         [ -f "$work/$s-host/$(basename "$f")" ] || fail "$s: the host build has no $(basename "$f")"
         cmp -s "$f" "$work/$s-host/$(basename "$f")" || fail "$s: $(basename "$f") differs from the host build's"
     done
-    # Both worlds read the keys at the same frame: the same triangles submitted and drawn per frame.
-    diff <(frame_lines "$work/$s.soc.uart") <(frame_lines "$work/$s.host.uart" | head -n "$frames") >/dev/null ||
+    # Both worlds read the keys at the same frame: the same triangles submitted and drawn per frame
+    # (a short run may stop before its frame's line is out on the UART: the lines it has).
+    printed=$(frame_lines "$work/$s.soc.uart" | wc -l)
+    [ "$printed" -le "$frames" ] || fail "$s: $printed frame lines for $frames frames"
+    diff <(frame_lines "$work/$s.soc.uart") <(frame_lines "$work/$s.host.uart" | head -n "$printed") >/dev/null ||
         fail "$s: the firmware's triangle counts differ between socsim and the host build"
     if [ "$memory" = SDRAM ]; then
         expect_eq "$(summary sdram_violations "$work/$s.soc.summary")" 0 "$s: SDRAM chip model violations"
