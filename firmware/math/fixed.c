@@ -333,10 +333,12 @@ const uint16_t fx_recip_seed[FX_RECIP_SEED_ENTRIES] = {
     32824, 32808, 32792, 32776,
 };
 
-uint32_t fx_isqrt64(uint64_t v)
+/* floor(sqrt(v)) of a 32-bit value, bit by bit (16 iterations of 32-bit operations). Not inlined
+ * into its two calls: the firmware's one-scene builds are sized to the byte (fw-fit). */
+static __attribute__((noinline)) uint32_t fx_isqrt32(uint32_t v)
 {
-    uint64_t root = 0;
-    uint64_t bit = (uint64_t)1 << 62;
+    uint32_t root = 0;
+    uint32_t bit = 1u << 30;
 
     while (bit > v) {
         bit >>= 2;
@@ -350,5 +352,55 @@ uint32_t fx_isqrt64(uint64_t v)
         }
         bit >>= 2;
     }
-    return (uint32_t)root;
+    return root;
+}
+
+/* floor(a / d) for a < 2^48 and d in [2^15, 2^16), in 16-bit digits with rv32's 32-bit divu: a
+ * 64-bit division would link libgcc's __udivdi3 (1 KB: the one-scene builds are sized to the
+ * byte) and cost more. Each partial remainder is below d, so remainder * 2^16 + digit < 2^32. */
+static uint64_t fx_div48_16(uint64_t a, uint32_t d)
+{
+    const uint32_t top = (uint32_t)(a >> 32);
+    const uint32_t q2 = top / d;
+    const uint32_t t1 = (top % d) << 16 | ((uint32_t)(a >> 16) & 0xFFFFu);
+    const uint32_t q1 = t1 / d;
+    const uint32_t t0 = (t1 % d) << 16 | ((uint32_t)a & 0xFFFFu);
+
+    return ((uint64_t)q2 << 32) + ((uint64_t)q1 << 16) + t0 / d;
+}
+
+/* floor(sqrt(v)), exactly. The bit-by-bit method on 64 bits costs about 1,200 instructions on rv32
+ * (32 iterations of 64-bit compares, subtractions and shifts); it was a third of the knot's
+ * start-up. Here: v shifted up by an even 2k so that n = v * 4^k has one of its top two bits set;
+ * the root of n's top 32 bits, t (>= 2^30), gives x0 = isqrt32(t) * 2^16 <= sqrt(n) < x0 + 2^16 + 2
+ * (sqrt(t + 1) - sqrt(t) < 2^-15.5 for t >= 2^30, times 2^16). One Newton step from below,
+ * x1 = (x0 + n / x0) / 2 (the division in 16-bit digits: fx_div48_16), lands at sqrt(n) +
+ * e^2 / (2 x0) for the error e < 2^16 + 2 and x0 >= 2^31: at most about 1 above sqrt(n), and with
+ * the two truncations at most 1 below it; the loops below step (once or twice) to floor(sqrt(n))
+ * exactly, and floor(sqrt(v)) = floor(sqrt(n)) >> k. No product overflows: x1 is clamped to
+ * 2^32 - 1 first. The unit test holds it to the floor property over edge cases, squares and their
+ * neighbours at every magnitude, and random values. */
+uint32_t fx_isqrt64(uint64_t v)
+{
+    if ((v >> 32) == 0u) {
+        return fx_isqrt32((uint32_t)v);
+    }
+    int32_t shift;
+    (void)fx_normalize32((uint32_t)(v >> 32), &shift);
+    const int32_t k = shift / 2;                   /* n = v << 2k: n >= 2^62 */
+    const uint64_t n = v << (2 * k);
+    const uint32_t r0 = fx_isqrt32((uint32_t)(n >> 32));  /* in [2^15, 2^16) */
+    const uint64_t x0 = (uint64_t)r0 << 16;
+    uint64_t x = (x0 + fx_div48_16(n >> 16, r0)) >> 1;    /* n / x0 = (n >> 16) / r0, floored */
+
+    if (x > 0xFFFFFFFFull) {
+        x = 0xFFFFFFFFull;
+    }
+    while (x * x > n) {
+        x--;
+    }
+    while (x < 0xFFFFFFFFull && (x + 1u) * (x + 1u) <= n) {
+        x++;
+    }
+    return (uint32_t)(x >> k);
 }

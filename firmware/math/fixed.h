@@ -230,7 +230,7 @@ static inline uint32_t fx_recip_mantissa(uint32_t m)
 #endif
 }
 
-/* floor(sqrt(v)), bit by bit (32 iterations). Build-time and per-frame use only. */
+/* floor(sqrt(v)), exactly: a 32-bit root and one Newton step (fixed.c). Build-time and per-frame use. */
 uint32_t fx_isqrt64(uint64_t v);
 
 /* Sine and cosine of a turn fraction, from a table of N = FX_SIN_ENTRIES entries per turn with

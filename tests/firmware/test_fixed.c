@@ -296,6 +296,22 @@ void test_fx_isqrt64(void)
 
         CHECK((unsigned __int128)r * r <= v && (unsigned __int128)(r + 1u) * (r + 1u) > v);
     }
+    /* Squares and their neighbours at every magnitude, where the last steps decide. */
+    for (int i = 0; i < 20000; i++) {
+        const uint64_t root = (uint64_t)unit_rand() >> (unit_rand() % 32u);
+        const uint64_t sq = root * root;
+
+        for (int d = -2; d <= 2; d++) {
+            const uint64_t v = sq + (uint64_t)(int64_t)d;
+
+            if ((d < 0 && v > sq) || (d > 0 && v < sq)) {
+                continue;  /* wrapped around 0 or 2^64 */
+            }
+            const uint64_t r = fx_isqrt64(v);
+
+            CHECK((unsigned __int128)r * r <= v && (unsigned __int128)(r + 1u) * (r + 1u) > v);
+        }
+    }
 }
 
 /* q2_30 helpers: exact where they must be, rounded where they round, saturating at +-2. */

@@ -208,6 +208,75 @@ void test_vec_triangle_normal(void)
     CHECK_EQ(fx_overflow_count(), 0);
 }
 
+/* The fixed-point direction (vec.c's vec_direction64, reached through vec3_triangle_normal) is the
+ * same bit for bit as the plain method it replaced: halve until every component is below 2^30 in
+ * magnitude, a bit-by-bit square root, three divisions. Cross products of every magnitude. */
+#if REAL_IS_FIXED
+static uint32_t ref_isqrt64(uint64_t v)
+{
+    uint64_t root = 0;
+    uint64_t bit = (uint64_t)1 << 62;
+
+    while (bit > v) {
+        bit >>= 2;
+    }
+    while (bit != 0u) {
+        if (v >= root + bit) {
+            v -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    return (uint32_t)root;
+}
+
+static uvec3 ref_direction64(int64_t x, int64_t y, int64_t z)
+{
+    uvec3 u = {0, 0, 0};
+    const int64_t lim = (int64_t)1 << 30;
+
+    while (x >= lim || x <= -lim || y >= lim || y <= -lim || z >= lim || z <= -lim) {
+        x /= 2;
+        y /= 2;
+        z /= 2;
+    }
+    const uint64_t len = ref_isqrt64((uint64_t)(x * x) + (uint64_t)(y * y) + (uint64_t)(z * z));
+    if (len != 0u) {
+        u.x = (unit_t)((x * Q30_ONE) / (int64_t)len);
+        u.y = (unit_t)((y * Q30_ONE) / (int64_t)len);
+        u.z = (unit_t)((z * Q30_ONE) / (int64_t)len);
+    }
+    return u;
+}
+#endif
+
+void test_vec_direction_exact(void)
+{
+#if REAL_IS_FIXED
+    for (int i = 0; i < 20000; i++) {
+        int32_t c[6];
+
+        for (int k = 0; k < 6; k++) {
+            const int32_t magnitude = (int32_t)((unit_rand() >> (unit_rand() % 32u)) / 2u);
+
+            c[k] = (unit_rand() & 1u) ? -magnitude : magnitude;
+        }
+        const vec3 b = {c[0], c[1], c[2]};
+        const vec3 d = {c[3], c[4], c[5]};
+        const uvec3 got = vec3_triangle_normal(vec3_make(0, 0, 0), b, d);
+        const uvec3 want = ref_direction64((int64_t)b.y * d.z - (int64_t)b.z * d.y,
+                                           (int64_t)b.z * d.x - (int64_t)b.x * d.z,
+                                           (int64_t)b.x * d.y - (int64_t)b.y * d.x);
+
+        CHECK_EQ(got.x, want.x);
+        CHECK_EQ(got.y, want.y);
+        CHECK_EQ(got.z, want.z);
+    }
+#endif
+}
+
 /*
  * 10^6 small rotations accumulated into one matrix, re-orthonormalised after each (as the scenes
  * and the object-mode camera do). Compared with the same recurrence in double precision from the

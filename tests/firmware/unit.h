@@ -53,6 +53,7 @@ void unit_srand(uint32_t seed);
     X(test_fx_angle_wrap)             \
     X(test_fx_recip_mantissa)         \
     X(test_fx_isqrt64)                \
+    X(test_rv32_memset)               \
     X(test_q30_ops)                   \
     X(test_vec_rotation_conventions)  \
     X(test_vec_yaw_pitch_exact)       \
@@ -61,6 +62,7 @@ void unit_srand(uint32_t seed);
     X(test_vec_xf_apply_error)        \
     X(test_vec_xf_apply_box_exact)    \
     X(test_vec_triangle_normal)       \
+    X(test_vec_direction_exact)       \
     X(test_vec_million_rotations)     \
     X(test_cam_pitch_limits)          \
     X(test_cam_fly_moves_and_clamps)  \
