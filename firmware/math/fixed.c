@@ -391,16 +391,14 @@ uint32_t fx_isqrt64(uint64_t v)
     const uint64_t n = v << (2 * k);
     const uint32_t r0 = fx_isqrt32((uint32_t)(n >> 32));  /* in [2^15, 2^16) */
     const uint64_t x0 = (uint64_t)r0 << 16;
-    uint64_t x = (x0 + fx_div48_16(n >> 16, r0)) >> 1;    /* n / x0 = (n >> 16) / r0, floored */
+    const uint64_t x1 = (x0 + fx_div48_16(n >> 16, r0)) >> 1;  /* n / x0 = (n >> 16) / r0, floored */
+    uint32_t x = x1 > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)x1;
 
-    if (x > 0xFFFFFFFFull) {
-        x = 0xFFFFFFFFull;
-    }
-    while (x * x > n) {
+    while ((uint64_t)x * x > n) {
         x--;
     }
-    while (x < 0xFFFFFFFFull && (x + 1u) * (x + 1u) <= n) {
+    while (x != 0xFFFFFFFFu && (uint64_t)(x + 1u) * (x + 1u) <= n) {
         x++;
     }
-    return (uint32_t)(x >> k);
+    return x >> k;
 }

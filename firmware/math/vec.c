@@ -61,12 +61,13 @@ static inline uint64_t vec_mag64(int64_t v)
     return v < 0 ? 0u - (uint64_t)v : (uint64_t)v;
 }
 
-/* v / 2^k rounded toward zero: what k halvings (v /= 2) give, in one shift. k >= 1. */
-static __attribute__((noinline)) int64_t vec_div_pow2(int64_t v, int32_t k)
+/* v / 2^k rounded toward zero: what k halvings (v /= 2) give, in one shift; k >= 1, and the caller
+ * makes |v| / 2^k < 2^30, so the result is a 32-bit value. */
+static __attribute__((noinline)) int32_t vec_div_pow2(int64_t v, int32_t k)
 {
-    const uint64_t m = vec_mag64(v) >> k;
+    const int32_t m = (int32_t)(vec_mag64(v) >> k);
 
-    return v < 0 ? -(int64_t)m : (int64_t)m;
+    return v < 0 ? -m : m;
 }
 
 /* Bits in m (1 for 0: callers only compare it with 30), 64 for m >= 2^63. One normalisation of
