@@ -55,7 +55,7 @@
 // idle clock then needs d >= 4.8..6.3 ns typical, 5.4..7.1 slow: 90 degrees (5.0 ns) fails it in
 // four of the six even at typical delays. So d is placed between that bound and the read bound: 7.0
 // ns leaves 0.7..2.2 ns to the write bound at typical delays (-0.1..1.6 at the slow corner; 1.6 and
-// 2.2 typical in the builds README.md reports), and 1.4 ns to the read bound (1.0 at the slow
+// 2.2 typical in the builds of 323a186), and 1.4 ns to the read bound (1.0 at the slow
 // corner). The output-enable path changes with placement; with the enables registered in the I/O
 // cells (one flop per pad, marked syn_useioff for nextpnr to pack) the window would be 1.7..8.0 ns
 // and about 90 degrees its centre again. nextpnr does not time these pin paths (the constraints
