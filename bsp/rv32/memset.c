@@ -5,8 +5,8 @@
  * 3.25 M instructions (36 % of its start-up) there; an SDRAM build with the model scene's SDRAM
  * capacities clears megabytes. This one stores words from a word-aligned start: 3 instructions for
  * 4 bytes (a store, an add, a branch), and bytes otherwise (small: the one-scene builds are sized
- * to the byte). The same C semantics; the unit test (tests/firmware/test_memset.c) compares it with the
- * host's memset over every alignment and length up to 80 bytes and some longer ones.
+ * to the byte). The same C semantics; the unit test (tests/firmware/test_memset.c) compares it
+ * with the host's memset over every alignment and length up to 80 bytes and some longer ones.
  */
 #include <stddef.h>
 #include <stdint.h>
