@@ -84,8 +84,9 @@ static int32_t vec_bit_length64(uint64_t m)
 /* Direction of an int64 vector (any common scale): shift it down until every component is below
  * 2^30 in magnitude (each halving rounds toward zero), then divide each by the length. The shift
  * loses at most 2^-30 relative precision. The halvings are counted, not looped: with M the largest
- * magnitude they run while floor(M / 2^j) >= 2^30, i.e. k = bit length of M - 30 times (a loop of
- * them cost 30 iterations of three 64-bit divisions on rv32: 9 % of the landscape's start-up). */
+ * magnitude they run while floor(M / 2^j) >= 2^30, i.e. k = bit length of M - 30 times (looped,
+ * up to 30 iterations of three 64-bit divisions on rv32: this function took 0.88 M of the
+ * landscape's start-up instructions, 0.47 M now). */
 static uvec3 vec_direction64(int64_t x, int64_t y, int64_t z)
 {
     uvec3 u = {0, 0, 0};
