@@ -45,6 +45,8 @@
 #                     through the golden model (bsp/host)
 #   $(FW_UNIT)      = $(BUILD)/tests/fw_unit, host unit tests of the pure code (fixed backend)
 #   $(FW_UNIT_FLOAT)= $(BUILD)/tests/fw_unit_float, the same tests on the float backend
+#   $(FW_UNIT_WIDE) = $(BUILD)/tests/fw_unit_wide, the same tests (fixed) at the SDRAM builds'
+#                     model capacities: the render frame's 32-bit indices
 #   the programs of mk/builds.toml's [fw.*] families (make test's FW_TEST_FRAMES builds under
 #                   $(BUILD)/fw-test[-<p>], bench-fw's, bench-error's fixed, float, depth-tested,
 #                   sub-pixel, Newton-step and sine-table builds and camera paths, fw-size's):
@@ -122,6 +124,7 @@ FW_ELF        := $(FW_DIR)/$(call fw_name,$(SCENE),$(FW_BACKEND)).elf
 FW_HOST       := $(BUILD)/fw-host/$(call fw_name,$(SCENE),$(FW_BACKEND))
 FW_UNIT       := $(BUILD)/tests/fw_unit
 FW_UNIT_FLOAT := $(BUILD)/tests/fw_unit_float
+FW_UNIT_WIDE  := $(BUILD)/tests/fw_unit_wide
 
 # Pure sources (no hardware access: built for the target, the host build and the unit tests),
 # the driver edge, the frame loop (per ELF), the target's main.
@@ -354,19 +357,24 @@ FW_SIZE_ENV = SIZE=$(patsubst %gcc,%size,$(FW_CC)) NM=$(patsubst %gcc,%nm,$(FW_C
 
 FW_UNIT_TEST_SRCS := $(wildcard tests/firmware/*.c)
 FW_UNIT_CFLAGS     = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Itests/firmware/fake_bsp -Ibsp \
-                     -Itests/firmware -Itests -Icontract -Ifirmware -DSORT_COUNT_WORK $(FW_MODEL_DEFS)
+                     -Itests/firmware -Itests -Icontract -Ifirmware -DSORT_COUNT_WORK
+# The wide build's model capacities: the SDRAM builds' (firmware/scenes/model.manifest.toml's
+# sdram_max_*), whose frames need 32-bit indices (config/build_options.h FW_RENDER_WIDE_INDEX).
+fw_unit_sdram_cap = $(shell sed -n 's/^sdram_max_$(1) *= *\([0-9]*\).*/\1/p' firmware/scenes/model.manifest.toml)
+FW_UNIT_WIDE_DEFS := -DFW_MODEL_MAX_VERTS=$(call fw_unit_sdram_cap,verts)u \
+                     -DFW_MODEL_MAX_FACES=$(call fw_unit_sdram_cap,faces)u
 
-# $(1) = binary, $(2) = backend
+# $(1) = binary, $(2) = backend, $(3) = the model scene's capacities (-D flags)
 define FW_UNIT_RULES
 $(1)_OBJ  := $(1).obj
 $(1)_OBJS := $$(patsubst %.c,$$($(1)_OBJ)/%.o,$(FW_UNIT_TEST_SRCS) $(FW_PURE_SRCS) $(FW_DRIVER_SRC))
 
 $$($(1)_OBJ)/cflags.txt: fw-force
-	$$(call fw_flags_file,$$@,$$(HOST_CC) $$(FW_UNIT_CFLAGS) $$(FW_BACKEND_DEFS_$(2)))
+	$$(call fw_flags_file,$$@,$$(HOST_CC) $$(FW_UNIT_CFLAGS) $(3) $$(FW_BACKEND_DEFS_$(2)))
 
 $$($(1)_OBJ)/%.o: %.c $$($(1)_OBJ)/cflags.txt
 	@mkdir -p $$(@D)
-	$$(Q)$$(call say,CC,$$<)$$(HOST_CC) $$(FW_UNIT_CFLAGS) $$(FW_BACKEND_DEFS_$(2)) -MMD -MP -c $$< -o $$@
+	$$(Q)$$(call say,CC,$$<)$$(HOST_CC) $$(FW_UNIT_CFLAGS) $(3) $$(FW_BACKEND_DEFS_$(2)) -MMD -MP -c $$< -o $$@
 
 $(1): $$($(1)_OBJS) $(FW_MODEL_HOST_OBJ)
 	$$(Q)$$(call say,LD,$$@)$$(HOST_CC) -o $$@ $$($(1)_OBJS) $(FW_MODEL_HOST_OBJ) -lm
@@ -374,8 +382,9 @@ $(1): $$($(1)_OBJS) $(FW_MODEL_HOST_OBJ)
 FW_DEP_FILES += $$($(1)_OBJS:.o=.d)
 endef
 
-$(eval $(call FW_UNIT_RULES,$(FW_UNIT),fixed))
-$(eval $(call FW_UNIT_RULES,$(FW_UNIT_FLOAT),float))
+$(eval $(call FW_UNIT_RULES,$(FW_UNIT),fixed,$(FW_MODEL_DEFS)))
+$(eval $(call FW_UNIT_RULES,$(FW_UNIT_FLOAT),float,$(FW_MODEL_DEFS)))
+$(eval $(call FW_UNIT_RULES,$(FW_UNIT_WIDE),fixed,$(FW_UNIT_WIDE_DEFS)))
 
 -include $(FW_DEP_FILES)
 
@@ -403,9 +412,10 @@ fw-all: $(FW_ALL_ELFS) $(FW_ALL_HOSTS)
 
 fw-host: $(FW_HOST)
 
-fw-unit: $(FW_UNIT) $(FW_UNIT_FLOAT)
+fw-unit: $(FW_UNIT) $(FW_UNIT_FLOAT) $(FW_UNIT_WIDE)
 	$(Q)$(call say,RUN,$(FW_UNIT))$(FW_UNIT)
 	$(Q)$(call say,RUN,$(FW_UNIT_FLOAT))$(FW_UNIT_FLOAT)
+	$(Q)$(call say,RUN,$(FW_UNIT_WIDE))$(FW_UNIT_WIDE)
 
 
 # The memory table (Markdown) of every scene; fails if a one-scene build misses its target.

@@ -53,6 +53,7 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 SCENE_TABLE = os.path.join(ROOT, "firmware/scenes/scene_list.h")
 CONTRACT = os.path.join(ROOT, "contract/gpu_contract.toml")
 MODEL_H = os.path.join(ROOT, "firmware/scenes/model/model.h")
+BUILD_OPTIONS_H = os.path.join(ROOT, "firmware/config/build_options.h")
 
 SCHEMA = {
     "scene": str,
@@ -90,31 +91,36 @@ def scene_table():
 
 
 def render_index_limit():
-    """render.h's RENDER_INDEX_LIMIT: the most vertices and primitives one render frame indexes."""
+    """render.h's RENDER_INDEX_LIMIT of a wide frame: the most vertices and primitives one render
+    frame indexes (a build whose model capacities need more than a narrow frame's 65,536 gets wide
+    indices by itself: config/build_options.h FW_RENDER_WIDE_INDEX)."""
     path = os.path.join(ROOT, "firmware/render/render.h")
     with open(path) as f:
-        m = re.search(r"^#define RENDER_INDEX_LIMIT (\d+)u", f.read(), re.M)
-    if not m:
+        found = [int(v) for v in re.findall(r"^#define RENDER_INDEX_LIMIT (\d+)u", f.read(), re.M)]
+    if not found:
         raise ManifestError(f"{os.path.relpath(path, ROOT)}: no #define RENDER_INDEX_LIMIT")
-    return int(m.group(1))
+    return max(found)
 
 
 def model_columns(max_verts, max_faces):
-    """The model line's verts/prims/wverts/wprims at these capacities: model.h's MODEL_FRAME_* and
-    MODEL_WIRE_* definitions evaluated (C's unsigned integer arithmetic on small values: the same
-    numbers with // for /)."""
-    with open(MODEL_H) as f:
+    """The model line's verts/prims/wverts/wprims at these capacities: config/build_options.h's
+    FW_MODEL_FRAME_* and FW_MODEL_WIRE_* definitions (which model.h's MODEL_FRAME_* and MODEL_WIRE_*
+    name) evaluated (C's unsigned integer arithmetic on small values: the same numbers with //
+    for /)."""
+    with open(BUILD_OPTIONS_H) as f:
         text = f.read()
     cols = {}
-    for col, macro in (("verts", "MODEL_FRAME_VERTS"), ("prims", "MODEL_FRAME_PRIMS"),
-                       ("wverts", "MODEL_WIRE_VERTS"), ("wprims", "MODEL_WIRE_PRIMS")):
-        m = re.search(r"^#define %s (.+)$" % macro, text, re.M)
+    for col, macro in (("verts", "FW_MODEL_FRAME_VERTS"), ("prims", "FW_MODEL_FRAME_PRIMS"),
+                       ("wverts", "FW_MODEL_WIRE_VERTS"), ("wprims", "FW_MODEL_WIRE_PRIMS")):
+        m = re.search(r"^#define %s\(([a-z, ]+)\) (.+)$" % macro, text, re.M)
         if not m:
-            raise ManifestError(f"{os.path.relpath(MODEL_H, ROOT)}: no #define {macro}")
-        expr = re.sub(r"\b(\d+)u\b", r"\1", m.group(1)).replace("/", "//")
-        expr = expr.replace("FW_MODEL_MAX_VERTS", str(max_verts)).replace("FW_MODEL_MAX_FACES", str(max_faces))
+            raise ManifestError(f"{os.path.relpath(BUILD_OPTIONS_H, ROOT)}: no #define {macro}(...)")
+        expr = re.sub(r"\b(\d+)u\b", r"\1", m.group(2)).replace("/", "//")
+        values = {"v": max_verts, "f": max_faces}
+        for param in (p.strip() for p in m.group(1).split(",")):
+            expr = re.sub(r"\b%s\b" % param, str(values[param]), expr)
         if not re.fullmatch(r"[\d\s+*/()-]+", expr):
-            raise ManifestError(f"{os.path.relpath(MODEL_H, ROOT)}: {macro} is not arithmetic on the capacities: {m.group(1)}")
+            raise ManifestError(f"{os.path.relpath(BUILD_OPTIONS_H, ROOT)}: {macro} is not arithmetic on the capacities: {m.group(2)}")
         cols[col] = eval(expr)  # digits and operators only, checked above
     return cols
 
@@ -177,8 +183,8 @@ def load(path, scene=None):
             for col in ("wverts", "wprims") if emulated else ("verts", "prims"):
                 if cols[col] > limit:
                     raise ManifestError(f"{path}: model.{prefix}max_verts/{prefix}max_faces give a frame of {cols[col]} "
-                                        f"{col} (model.h), over the render frame's {limit} (render.h "
-                                        "RENDER_INDEX_LIMIT: 16-bit indices)")
+                                        f"{col} (model.h), over a wide render frame's {limit} (render.h "
+                                        "RENDER_INDEX_LIMIT)")
         table = dict(table, **{name: model_columns(data["model"]["max_verts"], data["model"]["max_faces"])})
     feat, gpu = data["features"], data["gpu"]
     vtx_max, tri_max = limits()

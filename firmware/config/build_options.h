@@ -55,4 +55,31 @@
 #define FW_WITH_GOURAUD 1
 #endif
 
+/* The model scene's frame columns (scenes/model/model.h explains each) for its capacities of v
+ * vertices and f faces: the one scene whose frame is sized by switches (FW_MODEL_MAX_VERTS and
+ * FW_MODEL_MAX_FACES, which firmware.mk passes to every object). Constant expressions the
+ * preprocessor can evaluate, so the index width below follows from them. */
+#define FW_MODEL_FRAME_VERTS(v, f) ((v) + (f) / 2u + 4u)
+#define FW_MODEL_FRAME_PRIMS(f) ((f) + (f) / 4u + 2u)
+#define FW_MODEL_WIRE_VERTS(f) (12u * ((f) + (f) / 4u) + 4u)
+#define FW_MODEL_WIRE_PRIMS(f) (6u * ((f) + (f) / 4u) + 2u)
+
+/* The render frame's vertex and primitive numbers (render/render.h): 16 bits, which bound a frame
+ * to 65,536 of each and keep a primitive 8 bytes (the GPU's two words) and a sort item 32 bits, or
+ * (FW_RENDER_WIDE_INDEX 1) 32 bits, with 16-byte primitives and 64-bit sort items, where the model
+ * scene's frame needs more: the SDRAM's builds, whose model holds 65,536 faces. Derived, never set:
+ * every object of a program sees the same capacities and so agrees on it. (Without the capacities,
+ * as in a test that builds no model scene, both are 0 here and the frame is narrow.) */
+#define FW_MODEL_FRAME_WIDEST_ \
+    (((FW_WITH_WIREFRAME && FW_WITH_LINE_EMULATION) ? FW_MODEL_WIRE_VERTS(FW_MODEL_MAX_FACES) \
+                                                    : FW_MODEL_FRAME_VERTS(FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES)) > 65536u || \
+     ((FW_WITH_WIREFRAME && FW_WITH_LINE_EMULATION) ? FW_MODEL_WIRE_PRIMS(FW_MODEL_MAX_FACES) \
+                                                    : FW_MODEL_FRAME_PRIMS(FW_MODEL_MAX_FACES)) > 65536u)
+#if FW_MODEL_FRAME_WIDEST_
+#define FW_RENDER_WIDE_INDEX 1
+#else
+#define FW_RENDER_WIDE_INDEX 0
+#endif
+#undef FW_MODEL_FRAME_WIDEST_
+
 #endif /* CONFIG_BUILD_OPTIONS_H */

@@ -24,6 +24,36 @@ void batch_begin(struct batch_cursor *cur)
 #error "batch.c copies proj_vertex and render_prim words as the GPU's: this CPU or contract differs"
 #endif
 
+/* A frame primitive's three vertex numbers and its GPU word 1 without the third (the colour and
+ * the kind in their places: the contract's word 1 above VTX_I2). A narrow frame's primitive is
+ * those words already (two loads); a wide one's (render.h) is packed here. */
+struct batch_prim_fields {
+    uint32_t v0, v1, v2;
+    uint32_t hi;
+};
+
+static inline struct batch_prim_fields batch_prim_read(const struct render_prim *p)
+{
+    struct batch_prim_fields r;
+#if FW_RENDER_WIDE_INDEX
+    r.v0 = p->v[0];
+    r.v1 = p->v[1];
+    r.v2 = p->v[2];
+    r.hi = ((uint32_t)p->color << GPU_PRIM_COLOR_LSB) | ((uint32_t)p->kind << GPU_PRIM_KIND_LSB);
+#else
+    /* Both words in locals first: the vertex stamps batch_fill writes are uint16_t like the
+     * indices, so the compiler would otherwise reload the primitive after every store. */
+    const uint32_t w0 = p->w[0];
+    const uint32_t w1 = p->w[1];
+
+    r.v0 = w0 & 0xFFFFu;
+    r.v1 = w0 >> 16;
+    r.v2 = w1 & 0xFFFFu;
+    r.hi = w1 & 0xFFFF0000u;
+#endif
+    return r;
+}
+
 /* Word 1: VTX_Z and, with Gouraud built in, VTX_I from the depth half-word, which holds a shaded
  * object's vertex intensity by now (render.h); a flat object's sort depth there is never read,
  * since only Gouraud triangles read VTX_I. */
@@ -67,19 +97,28 @@ static void batch_fill_whole(struct render_frame *f, struct batch_words *out)
     for (uint32_t i = 0; i < np; i++) {
         const struct render_prim *p = &prim[render_draw_index(f, i)];
 
+#if FW_RENDER_WIDE_INDEX
+        /* nv <= vtx_cap <= GPU_VTX_CAP: every vertex number fits its 16-bit field. */
+        const struct batch_prim_fields r = batch_prim_read(p);
+
+        prim_words[i * GPU_PRIM_WORDS] = r.v0 | (r.v1 << 16);
+        prim_words[i * GPU_PRIM_WORDS + 1u] = r.v2 | r.hi;
+#else
         prim_words[i * GPU_PRIM_WORDS] = p->w[0];
         prim_words[i * GPU_PRIM_WORDS + 1u] = p->w[1];
+#endif
     }
     out->vtx_count = nv;
     out->prim_count = np;
 }
 
 /* An outline primitive's edges as GPU LINE primitives at pw (render.h, RENDER_PRIM_OUTLINE): edge
- * k from slot s[k] to s[(k + 1) % 3], in the order 0, 1, 2. Returns how many it wrote (1 .. 3). */
-static inline uint32_t batch_put_outline(uint32_t *pw, const uint32_t s[3], uint32_t w1)
+ * k from slot s[k] to s[(k + 1) % 3], in the order 0, 1, 2; w1_hi its colour and kind
+ * (batch_prim_read). Returns how many it wrote (1 .. 3). */
+static inline uint32_t batch_put_outline(uint32_t *pw, const uint32_t s[3], uint32_t w1_hi)
 {
-    const uint32_t edges = (w1 >> GPU_PRIM_KIND_LSB) & RENDER_PRIM_OUTLINE_EDGES;
-    const uint32_t hi = (w1 & 0x00FF0000u) | ((uint32_t)GPU_PRIM_KIND_LINE << GPU_PRIM_KIND_LSB);
+    const uint32_t edges = (w1_hi >> GPU_PRIM_KIND_LSB) & RENDER_PRIM_OUTLINE_EDGES;
+    const uint32_t hi = (w1_hi & 0x00FF0000u) | ((uint32_t)GPU_PRIM_KIND_LINE << GPU_PRIM_KIND_LSB);
     uint32_t n = 0;
 
     for (uint32_t k = 0; k < 3u; k++) {
@@ -141,29 +180,25 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
     end = (total - first > tri_cap) ? first + tri_cap : total;
     vtx_room = vtx_cap - 3u;
     while (i < end && nv <= vtx_room) {
-        const struct render_prim *p = &prim[render_draw_index(f, i)];
-        /* Both words in locals first: the vertex stamps written below are uint16_t like the
-         * indices, so the compiler would otherwise reload the primitive after every store. */
-        const uint32_t w0 = p->w[0];
-        const uint32_t w1 = p->w[1];
-        const bool outline = ((w1 >> GPU_PRIM_KIND_LSB) & RENDER_PRIM_OUTLINE) != 0u;
+        const struct batch_prim_fields r = batch_prim_read(&prim[render_draw_index(f, i)]);
+        const bool outline = ((r.hi >> GPU_PRIM_KIND_LSB) & RENDER_PRIM_OUTLINE) != 0u;
         uint32_t *pw = &prim_words[np * GPU_PRIM_WORDS];
 
         if (outline && np + 3u > tri_cap) {
             break;
         }
         {
-            const uint32_t s0 = batch_vertex(&vert[w0 & 0xFFFFu], stamp, vtx, &nv);
-            const uint32_t s1 = batch_vertex(&vert[w0 >> 16], stamp, vtx, &nv);
-            const uint32_t s2 = batch_vertex(&vert[w1 & 0xFFFFu], stamp, vtx, &nv);
+            const uint32_t s0 = batch_vertex(&vert[r.v0], stamp, vtx, &nv);
+            const uint32_t s1 = batch_vertex(&vert[r.v1], stamp, vtx, &nv);
+            const uint32_t s2 = batch_vertex(&vert[r.v2], stamp, vtx, &nv);
 
             if (outline) {
                 const uint32_t s[3] = {s0, s1, s2};
 
-                np += batch_put_outline(pw, s, w1);
+                np += batch_put_outline(pw, s, r.hi);
             } else {
                 pw[0] = s0 | (s1 << 16);
-                pw[1] = s2 | (w1 & 0xFFFF0000u);
+                pw[1] = s2 | r.hi;
                 np++;
             }
         }

@@ -96,7 +96,7 @@ void render_stats_clear(struct render_stats *s)
 }
 
 void render_frame_init(struct render_frame *f, struct proj_vertex *vert, uint32_t vert_cap,
-                       struct render_prim *prim, uint32_t *sort_item, uint32_t *sort_tmp,
+                       struct render_prim *prim, sort_item_t *sort_item, sort_item_t *sort_tmp,
                        uint32_t prim_cap, struct sort_scratch *scratch)
 {
     f->vert = vert;
@@ -165,11 +165,11 @@ enum render_sphere_class render_sphere_classify(const struct proj_setup *ps, vec
 /* ---- emission ----------------------------------------------------------------------------- */
 
 /* The sort item of primitive `index` with depth key `key` (larger = farther): draw key
- * 65535 - key in the upper half, so ascending items run far to near. index < prim_cap <=
- * RENDER_INDEX_LIMIT = 2^16. */
-static inline uint32_t render_sort_item(uint32_t key, uint32_t index)
+ * 65535 - key above the index (sort.h), so ascending items run far to near. key < 2^16, index <
+ * prim_cap <= RENDER_INDEX_LIMIT = 2^SORT_KEY_SHIFT or less. */
+static inline sort_item_t render_sort_item(uint32_t key, uint32_t index)
 {
-    return (~key << 16) | index;  /* ~key << 16 = (65535 - key) << 16 for key < 2^16 */
+    return ((sort_item_t)(key ^ 0xFFFFu) << SORT_KEY_SHIFT) | index;  /* key ^ 0xFFFF = 65535 - key */
 }
 
 static void render_emit_prim(struct render_frame *f, uint32_t i0, uint32_t i1, uint32_t i2,
@@ -183,9 +183,9 @@ static void render_emit_prim(struct render_frame *f, uint32_t i0, uint32_t i1, u
         return;
     }
     p = &f->prim[n];
-    p->v[0] = (uint16_t)i0;
-    p->v[1] = (uint16_t)i1;
-    p->v[2] = (uint16_t)i2;
+    p->v[0] = (render_index)i0;
+    p->v[1] = (render_index)i1;
+    p->v[2] = (render_index)i2;
     p->color = color;
     p->kind = kind;
     f->sort_item[n] = render_sort_item(key, n);
@@ -279,7 +279,9 @@ static void render_edge_set_clear(struct render_frame *f)
  */
 static bool render_edge_first(struct render_frame *f, uint32_t a, uint32_t b)
 {
-    const uint32_t key = (a < b) ? ((a << 16) | b) : ((b << 16) | a);  /* a != b: never 0 */
+    const uint32_t lo = (a < b) ? a : b;
+    const uint32_t hi = (a < b) ? b : a;
+    const sort_item_t key = ((sort_item_t)lo << SORT_KEY_SHIFT) | hi;  /* a != b: never 0 */
     const uint32_t mask = f->edge_cap - 1u;
     uint32_t i;
 
@@ -292,8 +294,9 @@ static bool render_edge_first(struct render_frame *f, uint32_t a, uint32_t b)
     if (f->edge_used >= f->edge_cap - f->edge_cap / 4u) {
         return true;
     }
-    /* Fibonacci hashing: the top bits of key * 2^32 / phi spread neighbouring vertex numbers. */
-    for (i = (key * 2654435769u) & mask; f->edge_set[i] != 0u; i = (i + 1u) & mask) {
+    /* Fibonacci hashing: key * 2^32 / phi spreads neighbouring vertex numbers (the key itself in
+     * a narrow build; a wide one's folded to 32 bits, lo * 2^16 + hi, a probe's start only). */
+    for (i = ((lo * 65536u + hi) * 2654435769u) & mask; f->edge_set[i] != 0u; i = (i + 1u) & mask) {
         if (f->edge_set[i] == key) {
             return false;
         }
@@ -583,7 +586,7 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     const bool general = FW_WITH_WIREFRAME && job->pass->wireframe;
     const bool shaded = FW_WITH_GOURAUD && job->vnormal14 != 0;  /* 0 in wireframe (render_object) */
     struct render_prim *prim = f->prim;
-    uint32_t *sort_item = f->sort_item;
+    sort_item_t *sort_item = f->sort_item;
     const uint32_t prim_cap = f->prim_cap;
     const uint32_t np_start = f->prim_count;
     uint32_t np = np_start;
@@ -636,9 +639,9 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
             continue;
         }
         p = &prim[np];
-        p->v[0] = (uint16_t)(base + face->v[0]);
-        p->v[1] = (uint16_t)(base + face->v[1]);
-        p->v[2] = (uint16_t)(base + face->v[2]);
+        p->v[0] = (render_index)(base + face->v[0]);
+        p->v[1] = (render_index)(base + face->v[1]);
+        p->v[2] = (render_index)(base + face->v[2]);
         mat = (material_override != 0u) ? material_override : face->material;
         if (shaded) {
             p->color = PAL_INDEX(mat, 0u);

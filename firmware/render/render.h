@@ -40,6 +40,7 @@
 #include <stdint.h>
 
 #include "camera/camera.h"
+#include "config/build_options.h"
 #include "render/mesh.h"
 #include "render/proj.h"
 #include "render/sort.h"
@@ -47,22 +48,38 @@
 
 /* A frame's capacities are the program's (render_frame_init): each scene states what it needs in
  * scenes/scene_list.h and the program sizes its frame for the largest of the scenes it is built
- * with (scenes/scene_set.h). The index formats bound them: vertex numbers are uint16 (render_prim),
- * primitive numbers the low 16 bits of a sort item. Anything beyond a capacity is not drawn and is
- * counted in stats.dropped, which the frame loop reports. */
+ * with (scenes/scene_set.h). The index formats bound them: vertex numbers are render_index values
+ * (render_prim), primitive numbers the payload of a sort item (sort.h) — 16 bits, or 32 in a build
+ * with wide frame indices (config/build_options.h: FW_RENDER_WIDE_INDEX, where the model scene's
+ * capacities need more than 65,536), whose limit 2^24 keeps every count and sum of them far from
+ * overflowing 32 bits. Anything beyond a capacity is not drawn and is counted in stats.dropped,
+ * which the frame loop reports. */
+#if FW_RENDER_WIDE_INDEX
+typedef uint32_t render_index;
+#define RENDER_INDEX_LIMIT 16777216u
+#else
+typedef uint16_t render_index;
 #define RENDER_INDEX_LIMIT 65536u
+#endif
 
 struct render_prim {
+#if FW_RENDER_WIDE_INDEX
+    /* Wide: the fields alone (16 bytes); batch.c packs the GPU's words from them. */
+    render_index v[3];
+    uint8_t color;
+    uint8_t kind;
+#else
     union {
         struct {
-            uint16_t v[3];   /* indices into render_frame.vert; v[2] repeats v[1] for a line */
-            uint8_t color;   /* palette index */
-            uint8_t kind;    /* GPU_PRIM_KIND_TRI, GPU_PRIM_KIND_LINE, or RENDER_PRIM_OUTLINE | edges */
+            render_index v[3];  /* indices into render_frame.vert; v[2] repeats v[1] for a line */
+            uint8_t color;      /* palette index */
+            uint8_t kind;       /* GPU_PRIM_KIND_TRI, GPU_PRIM_KIND_LINE, or RENDER_PRIM_OUTLINE | edges */
         };
         /* The same 8 bytes as two words: on a little-endian CPU they are the contract's primitive
          * words with frame vertex numbers in place of batch ones (batch.c uses that). */
         uint32_t w[2];
     };
+#endif
 };
 
 /* A frame primitive that is not a GPU one: the outline of triangle v[0] v[1] v[2], edge k (from
@@ -88,12 +105,12 @@ struct render_stats {
 struct render_frame {
     struct proj_vertex *vert;  /* vert_cap entries */
     struct render_prim *prim;  /* prim_cap entries */
-    /* (draw key << 16) | primitive index, one per primitive, in emission order; after
+    /* (draw key << SORT_KEY_SHIFT) | primitive index, one per primitive, in emission order; after
      * render_sort, the first sorted_count in draw order. Primitives emitted after the sort (the
      * overlay) keep items naming themselves, so sort_item[i]'s index is the i-th primitive to
      * draw for every i. The draw key is 65535 minus the depth key: ascending = far to near. */
-    uint32_t *sort_item;       /* prim_cap entries */
-    uint32_t *sort_tmp;        /* prim_cap entries */
+    sort_item_t *sort_item;    /* prim_cap entries */
+    sort_item_t *sort_tmp;     /* prim_cap entries */
     struct sort_scratch *sort; /* NULL when prim_cap < SORT_SMALL_N (the sort never needs it) */
     uint32_t vert_cap;
     uint32_t prim_cap;
@@ -103,10 +120,10 @@ struct render_frame {
     uint32_t outline_count; /* RENDER_PRIM_OUTLINE primitives among them (batch.c expands them) */
     uint8_t batch_stamp;    /* batch.c: stamp of the last batch filled from these vertices */
     /* A wireframe pass draws an edge two front faces share once (render.c): the edges drawn so
-     * far, as (lower vertex << 16 | higher vertex) keys (0 = empty slot), open addressing in
-     * edge_cap words (a power of two; 0: no such set, every edge drawn). The storage is sort_tmp,
-     * which nothing uses before render_sort. */
-    uint32_t *edge_set;
+     * far, as (lower vertex << SORT_KEY_SHIFT | higher vertex) keys (0 = empty slot), open
+     * addressing in edge_cap items (a power of two; 0: no such set, every edge drawn). The storage
+     * is sort_tmp, which nothing uses before render_sort. */
+    sort_item_t *edge_set;
     uint32_t edge_cap;
     uint32_t edge_used;     /* keys in the set; edge_cap + 1: not cleared since render_frame_begin */
     struct render_stats stats;
@@ -174,11 +191,11 @@ void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,
                       uvec3 light, uint32_t ambient);
 
 /* Attach storage to a frame and empty it: vert_cap vertices, prim_cap primitives (each at most
- * RENDER_INDEX_LIMIT; larger capacities are cut to it), sort_item and sort_tmp prim_cap words each,
+ * RENDER_INDEX_LIMIT; larger capacities are cut to it), sort_item and sort_tmp prim_cap items each,
  * scratch the sort's (may be NULL only when prim_cap < SORT_SMALL_N). RENDER_FRAME_STORAGE defines
  * such storage statically and RENDER_FRAME_ATTACH attaches it. */
 void render_frame_init(struct render_frame *f, struct proj_vertex *vert, uint32_t vert_cap,
-                       struct render_prim *prim, uint32_t *sort_item, uint32_t *sort_tmp,
+                       struct render_prim *prim, sort_item_t *sort_item, sort_item_t *sort_tmp,
                        uint32_t prim_cap, struct sort_scratch *scratch);
 
 #define RENDER_FRAME_STORAGE(id, nv, np) \
@@ -187,8 +204,8 @@ void render_frame_init(struct render_frame *f, struct proj_vertex *vert, uint32_
                    "frame capacities must be 1 .. RENDER_INDEX_LIMIT"); \
     static struct proj_vertex id##_vert[nv]; \
     static struct render_prim id##_prim[np]; \
-    static uint32_t id##_sort_item[np]; \
-    static uint32_t id##_sort_tmp[np]; \
+    static sort_item_t id##_sort_item[np]; \
+    static sort_item_t id##_sort_tmp[np]; \
     static struct sort_scratch id##_sort_scratch[((np) >= SORT_SMALL_N) ? 1 : 0]
 #define RENDER_FRAME_ATTACH(f, id) \
     render_frame_init((f), id##_vert, (uint32_t)(sizeof id##_vert / sizeof id##_vert[0]), \
@@ -231,13 +248,13 @@ void render_overlay_crosshair(struct render_frame *f, const struct render_pass *
 /* Index of the i-th primitive to draw (sorted ones, then the overlay; see sort_item). */
 static inline uint32_t render_draw_index(const struct render_frame *f, uint32_t i)
 {
-    return f->sort_item[i] & 0xFFFFu;
+    return (uint32_t)f->sort_item[i] & (uint32_t)((1ull << SORT_KEY_SHIFT) - 1u);
 }
 
 /* The depth key of primitive i (larger = farther), as emitted. Before render_sort only. */
 static inline uint16_t render_depth_key(const struct render_frame *f, uint32_t i)
 {
-    return (uint16_t)(0xFFFFu - (f->sort_item[i] >> 16));
+    return (uint16_t)(0xFFFFu - (uint32_t)(f->sort_item[i] >> SORT_KEY_SHIFT));
 }
 
 #endif /* RENDER_H */

@@ -14,14 +14,14 @@ uint64_t sort_work;
 #endif
 
 /* Stable insertion sort by the key half, for short lists. */
-static void sort_insertion(uint32_t *item, uint32_t n)
+static void sort_insertion(sort_item_t *item, uint32_t n)
 {
     for (uint32_t i = 1; i < n; i++) {
-        const uint32_t x = item[i];
-        const uint32_t k = x >> 16;
+        const sort_item_t x = item[i];
+        const uint32_t k = (uint32_t)(x >> SORT_KEY_SHIFT);
         uint32_t j = i;
 
-        while (j > 0u && (item[j - 1u] >> 16) > k) {
+        while (j > 0u && (uint32_t)(item[j - 1u] >> SORT_KEY_SHIFT) > k) {
             item[j] = item[j - 1u];
             j--;
             SORT_WORK(1);
@@ -43,16 +43,18 @@ static int sort_pass_needed(const uint32_t hist[256], uint32_t n)
     return 0;
 }
 
-/* One stable counting pass on the item byte at `shift` (16: key low byte, 24: key high byte).
+/* One stable counting pass on the item byte at `shift` (SORT_KEY_SHIFT: the key's low byte, + 8:
+ * its high byte).
  * hist holds the digit counts; next receives each digit's write position (a pointer, so placing an
  * item is one load, two stores and an increment). Always inlined with a constant shift, so the
  * digit costs two instructions (shift, mask) and the loop nine per item. */
-static inline __attribute__((always_inline)) void sort_pass(const uint32_t *in, uint32_t *out,
-                                                            uint32_t n, const uint32_t hist[256],
-                                                            uint32_t *next[256], uint32_t shift)
+static inline __attribute__((always_inline)) void sort_pass(const sort_item_t *in,
+                                                            sort_item_t *out, uint32_t n,
+                                                            const uint32_t hist[256],
+                                                            sort_item_t *next[256], uint32_t shift)
 {
-    uint32_t *start = out;
-    const uint32_t *const in_end = in + n;
+    sort_item_t *start = out;
+    const sort_item_t *const in_end = in + n;
 
     for (uint32_t d = 0; d < 256u; d += 4u) {  /* by four: a fixed cost of every sort */
         next[d] = start;
@@ -65,19 +67,19 @@ static inline __attribute__((always_inline)) void sort_pass(const uint32_t *in, 
         start += hist[d + 3u];
         SORT_WORK(4);
     }
-    for (const uint32_t *p = in; p != in_end; p++) {
-        const uint32_t x = *p;
+    for (const sort_item_t *p = in; p != in_end; p++) {
+        const sort_item_t x = *p;
 
-        *next[(x >> shift) & 0xFFu]++ = x;
+        *next[(uint32_t)(x >> shift) & 0xFFu]++ = x;
         SORT_WORK(1);
     }
 }
 
-void sort_items(uint32_t *item, uint32_t *tmp, uint32_t n, struct sort_scratch *scratch)
+void sort_items(sort_item_t *item, sort_item_t *tmp, uint32_t n, struct sort_scratch *scratch)
 {
     uint32_t(*hist)[256];
-    uint32_t *src = item;
-    uint32_t *dst = tmp;
+    sort_item_t *src = item;
+    sort_item_t *dst = tmp;
 
     if (n < SORT_SMALL_N) {
         sort_insertion(item, n);
@@ -94,20 +96,20 @@ void sort_items(uint32_t *item, uint32_t *tmp, uint32_t n, struct sort_scratch *
         SORT_WORK(4);
     }
     for (uint32_t i = 0; i < n; i++) {
-        const uint32_t x = item[i];
+        const uint32_t key = (uint32_t)(item[i] >> SORT_KEY_SHIFT);
 
-        hist[0][(x >> 16) & 0xFFu]++;
-        hist[1][x >> 24]++;
+        hist[0][key & 0xFFu]++;
+        hist[1][key >> 8]++;
         SORT_WORK(1);
     }
     /* Low digit, then high digit; a skipped pass leaves the items where they are. */
     if (sort_pass_needed(hist[0], n)) {
-        sort_pass(src, dst, n, hist[0], scratch->next, 16u);
+        sort_pass(src, dst, n, hist[0], scratch->next, SORT_KEY_SHIFT);
         src = tmp;
         dst = item;
     }
     if (sort_pass_needed(hist[1], n)) {
-        sort_pass(src, dst, n, hist[1], scratch->next, 24u);
+        sort_pass(src, dst, n, hist[1], scratch->next, SORT_KEY_SHIFT + 8u);
         src = dst;
     }
     if (src != item) {

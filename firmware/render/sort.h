@@ -2,7 +2,9 @@
  * sort.h — the painter's sort: a stable O(n) radix sort of 16-bit depth keys. Pure code.
  *
  * Items are 32-bit words, key << 16 | payload (render.c: the draw key and the primitive's
- * index), sorted ascending by the key with two least-significant-digit counting passes of 8 bits.
+ * index), sorted ascending by the key with two least-significant-digit counting passes of 8 bits;
+ * in a build with wide frame indices (config/build_options.h: FW_RENDER_WIDE_INDEX) 64-bit words,
+ * key << 32 | payload, sorted the same way.
  * Carrying the payload inside the item means each pass reads and writes one sequential word,
  * with no indirection. Counting sort is stable, so items with equal keys keep their order —
  * for the painter, submission order (object order, then face order): frames are reproducible and
@@ -18,16 +20,28 @@
 
 #include <stdint.h>
 
+#include "config/build_options.h"
+
+/* A sort item and where its 16-bit key starts. */
+#if FW_RENDER_WIDE_INDEX
+typedef uint64_t sort_item_t;
+#define SORT_KEY_SHIFT 32u
+#else
+typedef uint32_t sort_item_t;
+#define SORT_KEY_SHIFT 16u
+#endif
+
 /* Below this many items a stable insertion sort is cheaper than the two bucket passes. */
 #define SORT_SMALL_N 32u
 
 struct sort_scratch {
     uint32_t hist[2][256];
-    uint32_t *next[256];  /* during a pass: where the next item of each digit goes */
+    sort_item_t *next[256];  /* during a pass: where the next item of each digit goes */
 };
 
-/* Sort item[0 .. n-1] ascending by item >> 16, stable; tmp must hold n words. scratch may be NULL
- * when n < SORT_SMALL_N (a frame too small ever to need it has none: render_frame_init). */
-void sort_items(uint32_t *item, uint32_t *tmp, uint32_t n, struct sort_scratch *scratch);
+/* Sort item[0 .. n-1] ascending by item >> SORT_KEY_SHIFT, stable; tmp must hold n items. scratch
+ * may be NULL when n < SORT_SMALL_N (a frame too small ever to need it has none:
+ * render_frame_init). */
+void sort_items(sort_item_t *item, sort_item_t *tmp, uint32_t n, struct sort_scratch *scratch);
 
 #endif /* SORT_H */

@@ -42,11 +42,15 @@ static void build_grid(struct mesh *m, vec3 *v, struct mesh_face *f, uvec3 *nrm,
     mesh_finish(m);
 }
 
-static void render_grid_pass(int n, bool wireframe)
+/* The largest grid a test draws: 190 x 190 quads, 72,200 triangles on 36,481 vertices (a frame
+ * past the 65,536 primitives a narrow index reaches, test_batch_wide_frame). */
+#define GRID_MAX_N 190
+
+static void render_grid_into(struct render_frame *frame, int n, bool wireframe)
 {
     static struct mesh m;
-    static vec3 v[41 * 41];
-    static struct mesh_face f[2 * 40 * 40];
+    static vec3 v[(GRID_MAX_N + 1) * (GRID_MAX_N + 1)];
+    static struct mesh_face f[2 * GRID_MAX_N * GRID_MAX_N];
     static uvec3 nrm[1];
     struct render_pass pass;
     struct proj_setup ps;
@@ -65,11 +69,16 @@ static void render_grid_pass(int n, bool wireframe)
     o.pos = v3(0, 0, 0);
     o.material = 0;
     o.levels = 0;
-    render_frame_begin(&test_frame);
-    render_stats_clear(&test_frame.stats);
-    render_object(&test_frame, &pass, &o);
-    render_sort(&test_frame);
-    render_overlay_crosshair(&test_frame, &pass, 4, PAL_WHITE);
+    render_frame_begin(frame);
+    render_stats_clear(&frame->stats);
+    render_object(frame, &pass, &o);
+    render_sort(frame);
+    render_overlay_crosshair(frame, &pass, 4, PAL_WHITE);
+}
+
+static void render_grid_pass(int n, bool wireframe)
+{
+    render_grid_into(&test_frame, n, wireframe);
 }
 
 static void render_grid(int n)
@@ -77,8 +86,9 @@ static void render_grid(int n)
     render_grid_pass(n, false);
 }
 
-/* Run all batches with the given capacities and check everything about them. */
-static void check_batches(uint32_t vtx_cap, uint32_t tri_cap, uint32_t *batches_out)
+/* Run all of a frame's batches with the given capacities and check everything about them. */
+static void check_frame_batches(struct render_frame *frame, uint32_t vtx_cap, uint32_t tri_cap,
+                                uint32_t *batches_out)
 {
     struct batch_cursor cur;
     uint32_t next = 0;  /* draw position expected next */
@@ -86,14 +96,14 @@ static void check_batches(uint32_t vtx_cap, uint32_t tri_cap, uint32_t *batches_
 
     batch_begin(&cur);
     do {
-        batch_fill(&cur, &test_frame, vtx_cap, tri_cap, &words);
+        batch_fill(&cur, frame, vtx_cap, tri_cap, &words);
         batches++;
         CHECK(words.prim_count >= 1u);
         CHECK(words.prim_count <= tri_cap);
         CHECK(words.vtx_count <= vtx_cap);
         for (uint32_t i = 0; i < words.prim_count; i++) {
             const uint32_t *pw = &words.prim[i * GPU_PRIM_WORDS];
-            const struct render_prim *p = &test_frame.prim[render_draw_index(&test_frame, next)];
+            const struct render_prim *p = &frame->prim[render_draw_index(frame, next)];
             const uint32_t idx[3] = {(pw[GPU_PRIM_I0_WORD] >> GPU_PRIM_I0_LSB) & GPU_PRIM_I0_MASK,
                                      (pw[GPU_PRIM_I1_WORD] >> GPU_PRIM_I1_LSB) & GPU_PRIM_I1_MASK,
                                      (pw[GPU_PRIM_I2_WORD] >> GPU_PRIM_I2_LSB) & GPU_PRIM_I2_MASK};
@@ -102,7 +112,7 @@ static void check_batches(uint32_t vtx_cap, uint32_t tri_cap, uint32_t *batches_
             CHECK_EQ((pw[GPU_PRIM_KIND_WORD] >> GPU_PRIM_KIND_LSB) & GPU_PRIM_KIND_MASK, p->kind);
             for (int k = 0; k < 3; k++) {
                 const uint32_t *vw = &words.vtx[idx[k] * GPU_VTX_WORDS];
-                const struct proj_vertex *want = &test_frame.vert[p->v[k]];
+                const struct proj_vertex *want = &frame->vert[p->v[k]];
 
                 CHECK(idx[k] < words.vtx_count);
                 CHECK_EQ((int16_t)((vw[GPU_VTX_X_WORD] >> GPU_VTX_X_LSB) & GPU_VTX_X_MASK), want->sx);
@@ -118,9 +128,14 @@ static void check_batches(uint32_t vtx_cap, uint32_t tri_cap, uint32_t *batches_
                       words.vtx[a * GPU_VTX_WORDS + 1u] != words.vtx[b * GPU_VTX_WORDS + 1u]);
             }
         }
-    } while (!batch_done(&cur, &test_frame));
-    CHECK_EQ(next, test_frame.prim_count);  /* every primitive, once, in draw order */
+    } while (!batch_done(&cur, frame));
+    CHECK_EQ(next, frame->prim_count);  /* every primitive, once, in draw order */
     *batches_out = batches;
+}
+
+static void check_batches(uint32_t vtx_cap, uint32_t tri_cap, uint32_t *batches_out)
+{
+    check_frame_batches(&test_frame, vtx_cap, tri_cap, batches_out);
 }
 
 void test_batch_split_and_renumber(void)
@@ -217,4 +232,47 @@ void test_batch_outlines(void)
         } while (!batch_done(&cur, &test_frame));
         CHECK_EQ(lines, 2u * 10u * 11u + 2u);
     }
+}
+
+/* A frame past 16-bit indices: 72,200 triangles of one grid (and the crosshair's 2 lines) into a
+ * frame of 80,000 primitives. With wide indices (config/build_options.h, the SDRAM builds' model
+ * capacities: make fw-unit's fw_unit_wide) every primitive is kept, sorted far to near (each
+ * primitive once) and sent, primitive numbers past 65,535 included; with narrow ones the frame's
+ * capacity is cut to RENDER_INDEX_LIMIT and the rest is counted as dropped, never wrapped. */
+void test_batch_wide_frame(void)
+{
+    enum { VERTS = 40000, PRIMS = 80000, TRIS = 2 * GRID_MAX_N * GRID_MAX_N };
+    static struct proj_vertex vert[VERTS];
+    static struct render_prim prim[PRIMS];
+    static sort_item_t item[PRIMS], tmp[PRIMS];
+    static struct sort_scratch scratch;
+    static uint8_t seen[PRIMS];
+    static struct render_frame frame;
+    uint32_t batches;
+
+    render_frame_init(&frame, vert, VERTS, prim, item, tmp, PRIMS, &scratch);
+    render_grid_into(&frame, GRID_MAX_N, false);
+    if (RENDER_INDEX_LIMIT < (uint32_t)PRIMS) {
+        CHECK_EQ(frame.prim_cap, RENDER_INDEX_LIMIT);
+        CHECK_EQ(frame.prim_count, RENDER_INDEX_LIMIT);
+        CHECK(frame.stats.dropped > 0u);
+        return;
+    }
+    CHECK_EQ(frame.prim_count, (uint32_t)TRIS + 2u);
+    CHECK_EQ(frame.stats.dropped, 0);
+    CHECK_EQ(frame.sorted_count, (uint32_t)TRIS);
+    memset(seen, 0, sizeof seen);
+    for (uint32_t i = 0; i < frame.sorted_count; i++) {
+        const uint32_t p = render_draw_index(&frame, i);
+
+        CHECK(p < (uint32_t)TRIS);
+        CHECK_EQ(seen[p], 0);
+        seen[p] = 1;
+        if (i > 0u) {  /* far to near: draw keys ascending */
+            CHECK(frame.sort_item[i] >> SORT_KEY_SHIFT >= frame.sort_item[i - 1u] >> SORT_KEY_SHIFT);
+        }
+    }
+    CHECK_EQ(render_draw_index(&frame, frame.prim_count - 1u), frame.prim_count - 1u);  /* the overlay */
+    check_frame_batches(&frame, GPU_VTX_CAP, GPU_TRI_CAP, &batches);
+    CHECK(batches >= ((uint32_t)TRIS + 2u) / GPU_TRI_CAP);
 }

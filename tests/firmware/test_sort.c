@@ -1,7 +1,8 @@
 /*
  * test_sort.c — the painter's radix sort: ascending by key, stable (equal keys keep their order),
  * for short lists (insertion sort) and long ones (two bucket passes, either skippable), against
- * a reference stable sort.
+ * a reference stable sort. Items are sort.h's: 32-bit, or 64-bit where the build's frame indices
+ * are wide (FW_RENDER_WIDE_INDEX), whose payloads then start beyond 16 bits.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -12,18 +13,35 @@
 
 #define SORT_TEST_MAX 20000u
 
-static uint32_t items[SORT_TEST_MAX];
-static uint32_t tmp[SORT_TEST_MAX];
-static uint32_t expect[SORT_TEST_MAX];
+static sort_item_t items[SORT_TEST_MAX];
+static sort_item_t tmp[SORT_TEST_MAX];
+static sort_item_t expect[SORT_TEST_MAX];
+
+/* An item's parts, and an item of them. */
+#define PAYLOAD_BASE (FW_RENDER_WIDE_INDEX ? 100000u : 0u)  /* beyond 16 bits where items allow */
+static uint32_t key_of(sort_item_t x)
+{
+    return (uint32_t)(x >> SORT_KEY_SHIFT);
+}
+
+static uint32_t payload_of(sort_item_t x)
+{
+    return (uint32_t)x & (uint32_t)((1ull << SORT_KEY_SHIFT) - 1u);
+}
+
+static sort_item_t item(uint32_t key, uint32_t payload)
+{
+    return ((sort_item_t)key << SORT_KEY_SHIFT) | payload;
+}
 
 /* Reference: stable insertion sort by key (slow, obviously right). */
-static void ref_sort(uint32_t *a, uint32_t n)
+static void ref_sort(sort_item_t *a, uint32_t n)
 {
     for (uint32_t i = 1; i < n; i++) {
-        const uint32_t x = a[i];
+        const sort_item_t x = a[i];
         uint32_t j = i;
 
-        while (j > 0u && (a[j - 1u] >> 16) > (x >> 16)) {
+        while (j > 0u && key_of(a[j - 1u]) > key_of(x)) {
             a[j] = a[j - 1u];
             j--;
         }
@@ -36,22 +54,23 @@ static void check_sort(uint32_t n, uint32_t key_mask, uint32_t key_or)
     struct sort_scratch s;
 
     for (uint32_t i = 0; i < n; i++) {
-        items[i] = (((unit_rand() & key_mask) | key_or) << 16) | i;  /* payload: submission order */
+        items[i] = item((unit_rand() & key_mask) | key_or, PAYLOAD_BASE + i);  /* submission order */
     }
     memcpy(expect, items, n * sizeof items[0]);
     ref_sort(expect, n);
     sort_items(items, tmp, n, &s);
     for (uint32_t i = 0; i < n; i++) {
         if (items[i] != expect[i]) {
-            unit_fail(__FILE__, __LINE__, "n=%u mask=0x%x: item %u is 0x%08x, expected 0x%08x", n,
-                      key_mask, i, items[i], expect[i]);
+            unit_fail(__FILE__, __LINE__, "n=%u mask=0x%x: item %u is key %u payload %u, expected "
+                      "key %u payload %u", n, key_mask, i, key_of(items[i]), payload_of(items[i]),
+                      key_of(expect[i]), payload_of(expect[i]));
             return;
         }
     }
     /* Stability spelled out: among equal keys, payloads (submission order) increase. */
     for (uint32_t i = 1; i < n; i++) {
-        CHECK((items[i - 1u] >> 16) < (items[i] >> 16) ||
-              (items[i - 1u] & 0xFFFFu) < (items[i] & 0xFFFFu));
+        CHECK(key_of(items[i - 1u]) < key_of(items[i]) ||
+              payload_of(items[i - 1u]) < payload_of(items[i]));
     }
 }
 
@@ -76,12 +95,12 @@ static uint64_t sort_reverse_work(uint32_t n)
     struct sort_scratch s;
 
     for (uint32_t i = 0; i < n; i++) {
-        items[i] = ((0xFFFFu - (i % 65536u)) << 16) | (i & 0xFFFFu);
+        items[i] = item(0xFFFFu - (i % 65536u), PAYLOAD_BASE + i);
     }
     sort_work = 0;
     sort_items(items, tmp, n, &s);
     for (uint32_t i = 1; i < n; i++) {
-        CHECK((items[i - 1u] >> 16) <= (items[i] >> 16));
+        CHECK(key_of(items[i - 1u]) <= key_of(items[i]));
     }
     return sort_work;
 }
@@ -106,15 +125,15 @@ void test_sort_reverse_input(void)
  * that in `make stress`'s 8-primitive frame). */
 void test_sort_small_without_scratch(void)
 {
-    uint32_t few[SORT_SMALL_N - 1u];
-    uint32_t few_tmp[SORT_SMALL_N - 1u];
+    sort_item_t few[SORT_SMALL_N - 1u];
+    sort_item_t few_tmp[SORT_SMALL_N - 1u];
     const uint32_t n = SORT_SMALL_N - 1u;
 
     for (uint32_t i = 0; i < n; i++) {
-        few[i] = ((n - i) << 16) | i;
+        few[i] = item(n - i, PAYLOAD_BASE + i);
     }
     sort_items(few, few_tmp, n, NULL);
     for (uint32_t i = 0; i < n; i++) {
-        CHECK_EQ(few[i], ((i + 1u) << 16) | (n - 1u - i));
+        CHECK(few[i] == item(i + 1u, PAYLOAD_BASE + n - 1u - i));
     }
 }

@@ -106,6 +106,7 @@ void unit_srand(uint32_t seed);
     X(test_batch_split_and_renumber)  \
     X(test_batch_shares_vertices)     \
     X(test_batch_outlines)            \
+    X(test_batch_wide_frame)          \
     X(test_voxel_hidden_faces)        \
     X(test_voxel_chunk_border)        \
     X(test_voxel_worst_case)          \

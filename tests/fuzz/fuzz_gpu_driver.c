@@ -160,7 +160,7 @@ static uint32_t prim_words[WIN_IDX_MAX * GPU_PRIM_WORDS];
  * without render.c, so the storage is attached by hand (as render_frame_init would). */
 static struct proj_vertex frame_vert[3000];
 static struct render_prim frame_prim[3000];
-static uint32_t frame_sort_item[3000];
+static sort_item_t frame_sort_item[3000];
 static struct render_frame frame = {
     .vert = frame_vert, .prim = frame_prim, .sort_item = frame_sort_item, .sort_tmp = NULL,
     .sort = NULL, .vert_cap = 3000u, .prim_cap = 3000u,
@@ -259,9 +259,9 @@ static void make_frame(struct reader *r)
         const uint32_t sel = take8(r);
         const uint32_t base = (sel & 0x80u) ? take16(r) % nv : (i * 2u) % nv;
         struct render_prim *p = &frame.prim[i];
-        p->v[0] = (uint16_t)base;
-        p->v[1] = (uint16_t)((base + 1u + (sel & 3u)) % nv);
-        p->v[2] = (uint16_t)((base + 2u + ((sel >> 2) & 3u)) % nv);
+        p->v[0] = (render_index)base;
+        p->v[1] = (render_index)((base + 1u + (sel & 3u)) % nv);
+        p->v[2] = (render_index)((base + 2u + ((sel >> 2) & 3u)) % nv);
         p->kind = (sel & 0x40u) ? GPU_PRIM_KIND_LINE : GPU_PRIM_KIND_TRI;
         p->color = (uint8_t)i;
     }
@@ -272,15 +272,15 @@ static void make_frame(struct reader *r)
     }
     for (uint32_t i = frame.sorted_count; i > 1u; i--) {  /* a shuffled draw order */
         const uint32_t j = take16(r) % i;
-        const uint32_t t = frame.sort_item[i - 1u];
+        const sort_item_t t = frame.sort_item[i - 1u];
         frame.sort_item[i - 1u] = frame.sort_item[j];
         frame.sort_item[j] = t;
     }
     for (uint32_t i = 0; i < frame.sorted_count; i++) {
-        frame.sort_item[i] |= (uint32_t)take8(r) << 16;  /* a draw key above the index */
+        frame.sort_item[i] |= (sort_item_t)take8(r) << SORT_KEY_SHIFT;  /* a draw key above the index */
     }
     for (uint32_t i = frame.sorted_count; i < np; i++) {
-        frame.sort_item[i] = 0xFFFF0000u | i;  /* the overlay's items name themselves */
+        frame.sort_item[i] = ((sort_item_t)0xFFFFu << SORT_KEY_SHIFT) | i;  /* the overlay's items name themselves */
     }
 }
 

@@ -6,7 +6,8 @@
  * Its capacities are build switches, FW_MODEL_MAX_VERTS and FW_MODEL_MAX_FACES (default
  * MESHFILE_DEFAULT_MAX_*: 1024 each, which the SoC's 192 KiB hold with the upload's staging
  * buffer, make fw-size); scene_list.h's model line takes its columns from here, so they follow
- * the switches:
+ * the switches (the formulas are config/build_options.h's, where the frame's index width follows
+ * from them: beyond 65,536 vertices or primitives the frame is a wide one, render.h):
  *   state   the mesh: 12 bytes a vertex, 10 a face and 12 its normal (the unit normal, read from
  *           the file); 35 KiB at the defaults
  *   verts   the mesh's vertices, two new ones per face the near plane clips for up to a quarter
@@ -25,6 +26,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "config/build_options.h"  /* the frame columns' formulas (FW_MODEL_FRAME_*) */
 #include "model/meshfile.h"
 #include "render/mesh.h"
 
@@ -48,10 +50,10 @@ struct model_state {
 
 /* scene_list.h's columns for the model line. */
 #define MODEL_STATE_COLUMN ((sizeof(struct model_state) + 63u) / 64u * 64u)
-#define MODEL_FRAME_VERTS (FW_MODEL_MAX_VERTS + FW_MODEL_MAX_FACES / 2u + 4u)
-#define MODEL_FRAME_PRIMS (FW_MODEL_MAX_FACES + FW_MODEL_MAX_FACES / 4u + 2u)
-#define MODEL_WIRE_VERTS (12u * (FW_MODEL_MAX_FACES + FW_MODEL_MAX_FACES / 4u) + 4u)
-#define MODEL_WIRE_PRIMS (6u * (FW_MODEL_MAX_FACES + FW_MODEL_MAX_FACES / 4u) + 2u)
+#define MODEL_FRAME_VERTS FW_MODEL_FRAME_VERTS(FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES)
+#define MODEL_FRAME_PRIMS FW_MODEL_FRAME_PRIMS(FW_MODEL_MAX_FACES)
+#define MODEL_WIRE_VERTS FW_MODEL_WIRE_VERTS(FW_MODEL_MAX_FACES)
+#define MODEL_WIRE_PRIMS FW_MODEL_WIRE_PRIMS(FW_MODEL_MAX_FACES)
 
 /* The file the scene's init loads: a checked upload (file, len), or NULL for the built-in model.
  * The file must stay as it is while the scene may be started from it (scene_start). */
