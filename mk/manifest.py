@@ -90,18 +90,6 @@ def scene_table():
     return rows
 
 
-def render_index_limit():
-    """render.h's RENDER_INDEX_LIMIT of a wide frame: the most vertices and primitives one render
-    frame indexes (a build whose model capacities need more than a narrow frame's 65,536 gets wide
-    indices by itself: config/build_options.h FW_RENDER_WIDE_INDEX)."""
-    path = os.path.join(ROOT, "firmware/render/render.h")
-    with open(path) as f:
-        found = [int(v) for v in re.findall(r"^#define RENDER_INDEX_LIMIT (\d+)u", f.read(), re.M)]
-    if not found:
-        raise ManifestError(f"{os.path.relpath(path, ROOT)}: no #define RENDER_INDEX_LIMIT")
-    return max(found)
-
-
 def model_columns(max_verts, max_faces):
     """The model line's verts/prims/wverts/wprims at these capacities: config/build_options.h's
     FW_MODEL_FRAME_* and FW_MODEL_WIRE_* definitions (which model.h's MODEL_FRAME_* and MODEL_WIRE_*
@@ -176,15 +164,10 @@ def load(path, scene=None):
             if not 4 <= data["model"][key] <= MODEL_CAP_MAX:
                 raise ManifestError(f"{path}: model.{key} = {data['model'][key]}: from 4 to {MODEL_CAP_MAX} "
                                     "(16-bit indices, render/mesh.h)")
-        limit = render_index_limit()
-        for prefix in ("", "sdram_"):
-            cols = model_columns(data["model"][prefix + "max_verts"], data["model"][prefix + "max_faces"])
-            emulated = data["features"]["wireframe"] and not data["features"]["lines"]
-            for col in ("wverts", "wprims") if emulated else ("verts", "prims"):
-                if cols[col] > limit:
-                    raise ManifestError(f"{path}: model.{prefix}max_verts/{prefix}max_faces give a frame of {cols[col]} "
-                                        f"{col} (model.h), over a wide render frame's {limit} (render.h "
-                                        "RENDER_INDEX_LIMIT)")
+        # No frame check: a frame past 65,536 vertices or primitives takes wide indices by itself
+        # (config/build_options.h FW_RENDER_WIDE_INDEX), and at MODEL_CAP_MAX faces the widest
+        # column, the emulated outline's 983,044 vertices, is far inside a wide frame's 2^24
+        # (render.h RENDER_INDEX_LIMIT, which RENDER_FRAME_STORAGE asserts at compile time).
         table = dict(table, **{name: model_columns(data["model"]["max_verts"], data["model"]["max_faces"])})
     feat, gpu = data["features"], data["gpu"]
     vtx_max, tri_max = limits()
