@@ -4,7 +4,8 @@
 // Contract: takes a descriptor from gpu_prim_setup when in_ready is high (while idle). Triangles:
 // every pixel whose centre passes all three edge tests (E > 0, or E = 0 on a top-left edge) is written
 // with the colour, exactly once, nothing else is. Lines: the contract's Bresenham steps, on-screen
-// plots only. Writes leave on fb_wr_* one clock after the span is evaluated.
+// plots only. Writes leave on fb_wr_* one clock after the span is evaluated, two with ENABLE_ZBUF
+// (the depth test's two stages, below).
 //
 // Traversal (why it is fast and still exact): a row of a triangle is one interval of pixels. Edges
 // whose value grows to the right (step > 0) bound it on the left, those that shrink bound it on the
@@ -257,10 +258,9 @@ module gpu_span_walker #(
     reg cand_shade_q;                    // a Gouraud triangle's span: colours from cand_lvl_q
     reg [SPAN_W*ILVL_W-1:0] cand_lvl_q;
     reg [1:0] cand_x_q, cand_y_q;        // the span's first pixel x & 3 and its row y & 3
-    reg [SPAN_W-1:0] final_mask;
 
     assign in_ready = state_q == S_IDLE;
-    assign idle = state_q == S_IDLE && !in_valid && !cand_valid_q;
+    assign idle = state_q == S_IDLE && !in_valid && !cand_valid_q && !late_busy;
 
     always @(posedge clk) begin
         if (rst) begin
@@ -403,36 +403,92 @@ module gpu_span_walker #(
         end
     end
 
-    // ---- stage 2: depth test against what the buffer holds (and what stage 2 wrote a clock ago,
-    // which the RAM cannot return yet), then one masked write of colour and depth ----
+    // ---- the depth test (ENABLE_ZBUF), over two clocks so that no clock holds the depth RAM's
+    // output, the forwarding multiplexer, a 16-bit compare and the write enables together (in one
+    // clock that path closed at 30.6 MHz on the ECP5):
+    //   stage 2 (the candidate's clock, the RAM's data arriving) compares each lane's depth against
+    //     the RAM's and against the last write's, which landed with the read's own edge and so is
+    //     not in the data (the RAM returns what it held before that edge);
+    //   stage 3 takes the last write's comparison where that write covered the lane at this
+    //     address, the RAM's elsewhere, and writes colour and depth where the lane is covered and
+    //     nearer: one multiplexer of registered bits before the enables.
+    // That one write is all a read can miss: the spans of one triangle have distinct addresses, and
+    // two triangles' spans are at least 2 clocks apart (the walker takes a descriptor in S_IDLE), so
+    // when a span is read, an earlier span of the same address has left stage 2 (checked below).
+    // Without the depth buffer, stage 2 writes (the candidate's coverage) and there is no stage 3.
+    reg [SPAN_W-1:0] final_mask;
+    wire wr_valid;                       // the write stage holds a span to write
+    wire [WAW-1:0] wr_addr;
+    wire [SPAN_W*8-1:0] wr_colors;       // its colours (the write stage's, below)
+    wire late_busy;                      // stage 3 holds a span (the walker is not idle)
+    wire [SPAN_W*8-1:0] wr_data;         // stage 2's colours: flat, or shaded (further below)
     generate
         if (ENABLE_ZBUF != 0) begin : g_z
+            // The last depth write (one edge ago).
             reg last_wr_q;
             reg [WAW-1:0] last_addr_q;
             reg [SPAN_W-1:0] last_mask_q;
             reg [SPAN_W*16-1:0] last_z_q;
-            reg [SPAN_W*16-1:0] old_z;
+            // Stage 3: the span, its colours, and stage 2's comparisons.
+            reg s3_valid_q, s3_depth_q;
+            reg [WAW-1:0] s3_addr_q;
+            reg [SPAN_W-1:0] s3_cov_q;
+            reg [SPAN_W*16-1:0] s3_z_q;
+            reg [SPAN_W*8-1:0] s3_data_q;
+            reg [SPAN_W-1:0] s3_near_ram_q;   // nearer than the RAM's depth
+            reg [SPAN_W-1:0] s3_near_last_q;  // nearer than the last write's
+            reg [SPAN_W-1:0] s3_last_hit_q;   // lanes the last write covered, at this address
+            reg [SPAN_W-1:0] near_ram, near_last, last_hit;
             always @(*) begin
                 for (l = 0; l < SPAN_W; l = l + 1) begin
-                    old_z[l*16 +: 16] = (last_wr_q && last_addr_q == cand_addr_q && last_mask_q[l])
-                                      ? last_z_q[l*16 +: 16] : z_rd_data[l*16 +: 16];
-                    final_mask[l] = cand_mask_q[l]
-                                 && (!cand_depth_q || cand_z_q[l*16 +: 16] < old_z[l*16 +: 16]);
+                    near_ram[l] = cand_z_q[l*16 +: 16] < z_rd_data[l*16 +: 16];
+                    near_last[l] = cand_z_q[l*16 +: 16] < last_z_q[l*16 +: 16];
+                    last_hit[l] = last_wr_q && last_addr_q == cand_addr_q && last_mask_q[l];
+                    final_mask[l] = s3_cov_q[l]
+                                 && (!s3_depth_q || (s3_last_hit_q[l] ? s3_near_last_q[l] : s3_near_ram_q[l]));
                 end
             end
             always @(posedge clk) begin
-                last_wr_q <= !rst && z_wr_en;
-                last_addr_q <= cand_addr_q;
+                if (rst) begin
+                    s3_valid_q <= 1'b0;
+                    last_wr_q <= 1'b0;
+                end else begin
+                    s3_valid_q <= cand_valid_q;
+                    last_wr_q <= z_wr_en;
+                end
+                s3_depth_q <= cand_depth_q;
+                s3_addr_q <= cand_addr_q;
+                s3_cov_q <= cand_mask_q;
+                s3_z_q <= cand_z_q;
+                s3_data_q <= wr_data;
+                s3_near_ram_q <= near_ram;
+                s3_near_last_q <= near_last;
+                s3_last_hit_q <= last_hit;
+                last_addr_q <= s3_addr_q;
                 last_mask_q <= final_mask;
-                last_z_q <= cand_z_q;
+                last_z_q <= s3_z_q;
             end
             // The read is issued with the span it belongs to, so its data meets the candidate.
             assign z_rd_en = (seek || scan) && draw_span;
             assign z_rd_addr = row_addr_q + WAW'(col_q);
-            assign z_wr_en = cand_valid_q && cand_depth_q && final_mask != {SPAN_W{1'b0}};
-            assign z_wr_addr = cand_addr_q;
-            assign z_wr_data = cand_z_q;
+            assign z_wr_en = s3_valid_q && s3_depth_q && final_mask != {SPAN_W{1'b0}};
+            assign z_wr_addr = s3_addr_q;
+            assign z_wr_data = s3_z_q;
             assign z_wr_mask = final_mask;
+            assign wr_valid = s3_valid_q;
+            assign wr_addr = s3_addr_q;
+            assign wr_colors = s3_data_q;
+            assign late_busy = s3_valid_q;
+`ifndef SYNTHESIS
+            // The argument above, checked: a depth-tested read never meets a depth-tested span of
+            // its address in stage 2 (whose write, an edge after the read's, nothing would forward).
+            always @(posedge clk) begin
+                if (!rst && z_rd_en && ztest_q) begin
+                    assert (!(cand_valid_q && cand_depth_q && cand_addr_q == z_rd_addr))
+                        else $error("gpu_span_walker: depth read of a span whose write is two edges away");
+                end
+            end
+`endif
         end else begin : g_no_z
             always @(*) final_mask = cand_mask_q;
             assign z_rd_en = 1'b0;
@@ -441,6 +497,10 @@ module gpu_span_walker #(
             assign z_wr_addr = {WAW{1'b0}};
             assign z_wr_data = {(SPAN_W * 16){1'b0}};
             assign z_wr_mask = {SPAN_W{1'b0}};
+            assign wr_valid = cand_valid_q;
+            assign wr_addr = cand_addr_q;
+            assign wr_colors = wr_data;
+            assign late_busy = 1'b0;
             wire unused_z = cand_depth_q | (|cand_z_q) | (|z_rd_data);
         end
     endgenerate
@@ -460,10 +520,9 @@ module gpu_span_walker #(
     end
 `endif
 
-    assign fb_wr_en = cand_valid_q && final_mask != {SPAN_W{1'b0}};
-    assign fb_wr_addr = cand_addr_q;
-    // ---- the write stage's colours: flat, or each lane's ramp level (dithered) over the base ----
-    wire [SPAN_W*8-1:0] wr_data;
+    assign fb_wr_en = wr_valid && final_mask != {SPAN_W{1'b0}};
+    assign fb_wr_addr = wr_addr;
+    // ---- stage 2's colours: flat, or each lane's ramp level (dithered) over the base ----
     generate
         if (ENABLE_GOURAUD != 0) begin : g_i
             // The 4x4 Bayer matrix, row-major by (y & 3, x & 3): thresholds 0 .. 15, each once.
@@ -507,9 +566,9 @@ module gpu_span_walker #(
     end
 `endif
 
-    assign fb_wr_data = wr_data;
+    assign fb_wr_data = wr_colors;
     assign fb_wr_mask = final_mask;
-    assign ev_pixels = cand_valid_q ? CNT_W'($countones(final_mask)) : {CNT_W{1'b0}};
+    assign ev_pixels = wr_valid ? CNT_W'($countones(final_mask)) : {CNT_W{1'b0}};
 endmodule
 
 `default_nettype wire
