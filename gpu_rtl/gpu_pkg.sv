@@ -62,6 +62,8 @@ package gpu_pkg;
     // uses the low $clog2(GPU_FB_WIDTH / SPAN_W) bits (the others are 0).
     localparam integer X_W = $clog2(GPU_FB_WIDTH);
     localparam integer ROW_W = $clog2(GPU_FB_HEIGHT);
+    // A primitive's sample count (PERF_SAMPLES' increment): at most a whole frame's pixels.
+    localparam integer SAMPLES_W = $clog2(GPU_FB_WIDTH * GPU_FB_HEIGHT + 1);
     localparam integer DESC_COL_W = X_W;
     localparam integer COLOR_W = GPU_PRIM_COLOR_WIDTH;
 

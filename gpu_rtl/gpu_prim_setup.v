@@ -47,6 +47,9 @@ module gpu_prim_setup #(
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer PRIM_W = $clog2(TRI_CAP + 1),
     localparam integer COL_W = $clog2(gpu_pkg::GPU_FB_WIDTH / SPAN_W),  // span column
+    localparam integer X_W = gpu_pkg::X_W,         // a pixel x on screen
+    localparam integer ROW_W = gpu_pkg::ROW_W,     // a pixel row
+    localparam integer SAMPLES_W = gpu_pkg::SAMPLES_W,
     localparam integer EDGE_W = gpu_pkg::EDGE_W,
     localparam integer STEP_W = gpu_pkg::STEP_W,   // edge steps
     localparam integer Z_W = gpu_pkg::Z_W,
@@ -82,7 +85,7 @@ module gpu_prim_setup #(
     output reg                      ev_prim_in,
     output reg  [1:0]               ev_rejected,   // the fetch and stage B may both reject in one clock
     output reg                      ev_drawn,
-    output reg  [17:0]              ev_samples,
+    output reg  [SAMPLES_W-1:0]      ev_samples,
     output reg                      ev_err_kind,
     output reg                      ev_err_index
 );
@@ -291,18 +294,18 @@ module gpu_prim_setup #(
     localparam signed [12:0] X_LAST = 13'(gpu_pkg::GPU_FB_WIDTH - 1);   // last pixel column
     localparam signed [12:0] Y_LAST = 13'(gpu_pkg::GPU_FB_HEIGHT - 1);  // last pixel row
     // Centre, Q12.4, of lane 0 of the span holding on-screen pixel column px, and of pixel row py.
-    function automatic signed [17:0] span_centre_x(input [8:0] px);
-        span_centre_x = 18'(32'(COL_W'(px / 9'(SPAN_W))) * SPAN_W * 16 + 8);
+    function automatic signed [17:0] span_centre_x(input [X_W-1:0] px);
+        span_centre_x = 18'(32'(COL_W'(px / X_W'(SPAN_W))) * SPAN_W * 16 + 8);
     endfunction
-    function automatic signed [17:0] row_centre_y(input [7:0] py);
+    function automatic signed [17:0] row_centre_y(input [ROW_W-1:0] py);
         row_centre_y = 18'({py, 4'd8});
     endfunction
 
     // The box's first pixel centres from stage A's corners (unclamped).
     wire signed [12:0] a_rpx0 = centre_pixel(min3(ax0_q, ax1_q, ax2_q), FIRST_CENTRE);
     wire signed [12:0] a_rpy0 = centre_pixel(min3(ay0_q, ay1_q, ay2_q), FIRST_CENTRE);
-    wire [8:0] a_px0 = 9'(clamp(a_rpx0, X_LAST));  // clamped as stage C clamps b_rpx0_q
-    wire [7:0] a_py0 = 8'(clamp(a_rpy0, Y_LAST));
+    wire [X_W-1:0] a_px0 = X_W'(clamp(a_rpx0, X_LAST));  // clamped as stage C clamps b_rpx0_q
+    wire [ROW_W-1:0] a_py0 = ROW_W'(clamp(a_rpy0, Y_LAST));
     wire signed [16:0] d01x = 17'(ax1_q) - 17'(ax0_q);
     wire signed [16:0] d01y = 17'(ay1_q) - 17'(ay0_q);
     wire signed [16:0] d02x = 17'(ax2_q) - 17'(ax0_q);
@@ -371,11 +374,11 @@ module gpu_prim_setup #(
     wire signed [15:0] tx1 = flip ? bx2_q : bx1_q, ty1 = flip ? by2_q : by1_q;
     wire signed [15:0] tx2 = flip ? bx1_q : bx2_q, ty2 = flip ? by1_q : by2_q;
 
-    wire [COL_W-1:0] col_lo = COL_W'(b_px0[8:0] / 9'(SPAN_W));
-    wire [COL_W-1:0] col_hi = COL_W'(b_px1[8:0] / 9'(SPAN_W));
+    wire [COL_W-1:0] col_lo = COL_W'(b_px0[X_W-1:0] / X_W'(SPAN_W));
+    wire [COL_W-1:0] col_hi = COL_W'(b_px1[X_W-1:0] / X_W'(SPAN_W));
     // Centre of lane 0 of the first span, Q12.4: 16 * (col_lo * SPAN_W) + 8.
-    wire signed [17:0] pcx = span_centre_x(b_px0[8:0]);
-    wire signed [17:0] pcy = row_centre_y(b_py0[7:0]);
+    wire signed [17:0] pcx = span_centre_x(b_px0[X_W-1:0]);
+    wire signed [17:0] pcy = row_centre_y(b_py0[ROW_W-1:0]);
 
     function automatic signed [EDGE_W-1:0] edge_at(input signed [15:0] ax, input signed [15:0] ay,
                                                    input signed [15:0] bx, input signed [15:0] by,
@@ -467,8 +470,8 @@ module gpu_prim_setup #(
         end
     endgenerate
 
-    wire [8:0] box_w = 9'(b_px1 - b_px0 + 13'sd1);
-    wire [7:0] box_h = 8'(b_py1 - b_py0 + 13'sd1);
+    wire [X_W:0] box_w = (X_W + 1)'(b_px1 - b_px0 + 13'sd1);   // 1 .. GPU_FB_WIDTH
+    wire [ROW_W:0] box_h = (ROW_W + 1)'(b_py1 - b_py0 + 13'sd1);  // 1 .. GPU_FB_HEIGHT
 
     always @(posedge clk) begin
         if (rst) begin
@@ -522,7 +525,7 @@ module gpu_prim_setup #(
                      + (!rst && b_leaves && !b_drawable ? 2'd1 : 2'd0);
         ev_drawn <= !rst && c_free && c_load_valid;
         ev_samples <= (!rst && c_free && c_load_valid)
-                    ? (b_is_line_q ? 18'(lmaj) : 18'(box_w) * 18'(box_h)) : 18'd0;
+                    ? (b_is_line_q ? SAMPLES_W'(lmaj) : SAMPLES_W'(box_w) * SAMPLES_W'(box_h)) : {SAMPLES_W{1'b0}};
     end
 
     assign idle = (fstate_q == F_IDLE) && !a_valid_q && !b_valid_q && !out_valid;

@@ -92,7 +92,7 @@ module gpu_raster #(
     wire zclear = ENABLE_ZBUF != 0 && ctrl_zclear;
     wire ev_prim_in, ev_drawn, ev_err_kind, ev_err_index, ev_span_visit, ev_span_written;
     wire [1:0] ev_rejected;
-    wire [17:0] ev_samples;
+    wire [gpu_pkg::SAMPLES_W-1:0] ev_samples;
     wire [CNT_W-1:0] ev_pixels;
     wire walker_wr_en;
     wire [WAW-1:0] walker_wr_addr;
