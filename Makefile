@@ -83,7 +83,7 @@ include boards/ulx3s/board.mk
 include boards/digilent/board.mk
 
 .PHONY: all setup run run-built test test-quick test-list lint check-contract contract random-long raster \
-        bench-gpu bench-sim bench-error bench-error-run bench-error-path bench-error-path-run \
+        bench-gpu bench-sim bench-strips bench-error bench-error-run bench-error-path bench-error-path-run \
         bench-error-shading bench-error-shading-run synth clean
 
 all: $(FW_ELF) $(GPUSIM)
@@ -172,6 +172,16 @@ bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM) $(FW_ELF)
 	@$(GPUSIM) cosim --fw $(FW_ELF) --frames $(BUILD)/bench-gpu/scene-frames --no-model-check \
 	  --dump-lists $(BUILD)/bench-gpu/scene-lists >/dev/null
 	@$(PYTHON) bench/bench_gpu.py $(BUILD) $(BUILD)/bench-gpu/scene-lists
+
+# ---- the strip renderer's binning workload per scene and strip height (bench/strip_bins.py):
+# each scene's benchmark frames as primitive lists, counted at 640x480 ----
+STRIP_HEIGHTS ?= 1 8 16 32 60
+bench-strips: $(FW_BENCH_ELFS) $(GPUSIM_FAST)
+	@rm -rf $(BUILD)/bench-strips && mkdir -p $(BUILD)/bench-strips
+	@for s in $(FW_SCENES); do mkdir -p $(BUILD)/bench-strips/$$s; \
+	  $(GPUSIM_FAST) cosim --fw $(FW_BENCH_DIR)/$$s.elf --frames $(BUILD)/bench-strips/frames-$$s \
+	    --no-model-check --dump-lists $(BUILD)/bench-strips/$$s >/dev/null || exit 1; done
+	@$(PYTHON) bench/strip_bins.py 2 $(STRIP_HEIGHTS) -- $(foreach s,$(FW_SCENES),$(s)=$(BUILD)/bench-strips/$(s))
 
 # ---- pixel error against counted cost, for every accuracy/speed knob (bench/bench_error.py) ----
 # Installs matplotlib for the plot (tools/packages-plot.txt), then runs the table and the plot with
