@@ -10,6 +10,8 @@
 #define GPU_TRI_CAP                  512u
 #define GPU_FB_WIDTH                 320u
 #define GPU_FB_HEIGHT                240u
+#define GPU_FB_MAX_WIDTH             640u
+#define GPU_FB_MAX_HEIGHT            480u
 #define GPU_PALETTE_ENTRIES          256u
 #define GPU_SUBPIXEL_BITS            4u
 #define GPU_FB_PIXELS                76800u  /* GPU_FB_WIDTH * GPU_FB_HEIGHT: the frame size */

@@ -142,10 +142,16 @@ static void put_pixel(const gpu_model *m, uint8_t *fb, size_t i, uint8_t color)
     }
 }
 
-static bool on_screen(int64_t px, int64_t py)
+static bool on_screen(const gpu_model *m, int64_t px, int64_t py)
 {
-    return px >= 0 && px < (int64_t)GPU_FB_WIDTH && py >= 0 &&
-           py < (int64_t)GPU_FB_HEIGHT;
+    return px >= 0 && px < (int64_t)m->cfg.fb_width && py >= 0 &&
+           py < (int64_t)m->cfg.fb_height;
+}
+
+/* Pixels in a framebuffer of m's frame. */
+static size_t fb_pixels(const gpu_model *m)
+{
+    return (size_t)m->cfg.fb_width * m->cfg.fb_height;
 }
 
 /* ------------------------------------------------------------- rasterizer */
@@ -314,11 +320,11 @@ static prim_result draw_triangle(gpu_model *m, gpu_model_pt v0,
     if (py0 < 0) {
         py0 = 0;
     }
-    if (px1 > (int64_t)GPU_FB_WIDTH - 1) {
-        px1 = (int64_t)GPU_FB_WIDTH - 1;
+    if (px1 > (int64_t)m->cfg.fb_width - 1) {
+        px1 = (int64_t)m->cfg.fb_width - 1;
     }
-    if (py1 > (int64_t)GPU_FB_HEIGHT - 1) {
-        py1 = (int64_t)GPU_FB_HEIGHT - 1;
+    if (py1 > (int64_t)m->cfg.fb_height - 1) {
+        py1 = (int64_t)m->cfg.fb_height - 1;
     }
     if (px0 > px1 || py0 > py1) {
         return PRIM_REJECTED; /* off screen, or too thin for any centre */
@@ -359,7 +365,7 @@ static prim_result draw_triangle(gpu_model *m, gpu_model_pt v0,
                 last_span = px / span_w;
                 m->perf.spans_written++;
             }
-            size_t i = (size_t)py * GPU_FB_WIDTH + (size_t)px;
+            size_t i = (size_t)py * m->cfg.fb_width + (size_t)px;
             if (ztest) {
                 /* Written only if strictly nearer; the depth then replaces
                  * the stored one. */
@@ -416,8 +422,8 @@ static prim_result draw_line(gpu_model *m, gpu_model_pt a, gpu_model_pt b,
     if (ax >= ay) {
         int64_t e = 2 * ay - ax;
         for (int64_t k = 0; k < n; k++) {
-            if (on_screen(x, y)) {
-                put_pixel(m, fb, (size_t)y * GPU_FB_WIDTH + (size_t)x, color);
+            if (on_screen(m, x, y)) {
+                put_pixel(m, fb, (size_t)y * m->cfg.fb_width + (size_t)x, color);
                 m->perf.pixels++;
             }
             if (e > 0) {
@@ -430,8 +436,8 @@ static prim_result draw_line(gpu_model *m, gpu_model_pt a, gpu_model_pt b,
     } else {
         int64_t e = 2 * ax - ay;
         for (int64_t k = 0; k < n; k++) {
-            if (on_screen(x, y)) {
-                put_pixel(m, fb, (size_t)y * GPU_FB_WIDTH + (size_t)x, color);
+            if (on_screen(m, x, y)) {
+                put_pixel(m, fb, (size_t)y * m->cfg.fb_width + (size_t)x, color);
                 m->perf.pixels++;
             }
             if (e > 0) {
@@ -532,19 +538,19 @@ static void run_batch(gpu_model *m, uint32_t tag)
             uint8_t *fb = back_buffer(m);
             const uint8_t color = (uint8_t)(m->regs.clear_color & 0xFFu);
             if (written_bits(m) == 0xFFu) {
-                memset(fb, color, GPU_MODEL_FB_PIXELS); /* the usual, unmasked clear: fast */
+                memset(fb, color, fb_pixels(m)); /* the usual, unmasked clear: fast */
                 if (m->shade_probe != NULL) {
-                    memset(probe_word(m, fb, 0), 0, GPU_MODEL_FB_PIXELS * sizeof(uint32_t));
+                    memset(probe_word(m, fb, 0), 0, fb_pixels(m) * sizeof(uint32_t));
                 }
             } else {
-                for (size_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
+                for (size_t i = 0; i < fb_pixels(m); i++) {
                     put_pixel(m, fb, i, color);
                 }
             }
         }
         if (zclear) {
             const uint16_t far = (uint16_t)((1u << m->cfg.zbuf_bits) - 1u);
-            for (size_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
+            for (size_t i = 0; i < fb_pixels(m); i++) {
                 m->zbuf[i] = far;
             }
         }
@@ -578,6 +584,14 @@ static bool span_w_supported(unsigned w)
     return w == 1u || w == 4u || w == 8u || w == 16u;
 }
 
+/* A frame the model draws: the contract's or the largest (0 x 0 is "the
+ * default", handled by the callers). */
+static bool fb_supported(uint32_t w, uint32_t h)
+{
+    return (w == GPU_FB_WIDTH && h == GPU_FB_HEIGHT) ||
+           (w == GPU_FB_MAX_WIDTH && h == GPU_FB_MAX_HEIGHT);
+}
+
 /* A capacity the model can hold: 1 ... max (0 is "the default", handled by
  * the callers). */
 static bool cap_supported(uint32_t cap, uint32_t max)
@@ -602,6 +616,9 @@ const char *gpu_model_config_error(const gpu_model_config *cfg)
     if (cfg->tri_cap != 0u && !cap_supported(cfg->tri_cap, GPU_MODEL_MAX_TRI_CAP)) {
         return "tri_cap is above the contract's TRI_CAP, the most the model holds";
     }
+    if ((cfg->fb_width != 0u || cfg->fb_height != 0u) && !fb_supported(cfg->fb_width, cfg->fb_height)) {
+        return "fb_width x fb_height is neither the contract's frame nor its largest";
+    }
     return NULL;
 }
 
@@ -610,7 +627,8 @@ void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
     gpu_model_config c = { GPU_MODEL_DEFAULT_SPAN_W, GPU_MODEL_DEFAULT_LINES,
                            GPU_MODEL_DEFAULT_ZBUF, GPU_MODEL_MAX_VTX_CAP,
                            GPU_MODEL_MAX_TRI_CAP, GPU_MODEL_DEFAULT_ZBUF_BITS,
-                           GPU_MODEL_DEFAULT_WMASK, GPU_MODEL_DEFAULT_GOURAUD };
+                           GPU_MODEL_DEFAULT_WMASK, GPU_MODEL_DEFAULT_GOURAUD,
+                           GPU_FB_WIDTH, GPU_FB_HEIGHT };
     if (cfg != NULL) {
         c = *cfg;
         if (!span_w_supported(c.span_w)) {
@@ -624,6 +642,10 @@ void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
         }
         if (!cap_supported(c.tri_cap, GPU_MODEL_MAX_TRI_CAP)) {
             c.tri_cap = GPU_MODEL_MAX_TRI_CAP;
+        }
+        if (!fb_supported(c.fb_width, c.fb_height)) {
+            c.fb_width = GPU_FB_WIDTH; /* 0 x 0: the default; else refused */
+            c.fb_height = GPU_FB_HEIGHT;
         }
     }
     /* Everything is zero at power-on: registers (RESET included), counters,
@@ -759,7 +781,7 @@ uint32_t gpu_model_read(const gpu_model *m, uint32_t offset)
     case GPU_REG_TRI_CAP:
         return m->cfg.tri_cap;
     case GPU_REG_FB_SIZE:
-        return GPU_FB_WIDTH | (GPU_FB_HEIGHT << 16);
+        return m->cfg.fb_width | (m->cfg.fb_height << 16);
     case GPU_REG_CTRL:
         return m->regs.ctrl;
     case GPU_REG_VTX_BASE:
@@ -823,10 +845,11 @@ const uint8_t *gpu_model_back(const gpu_model *m)
 void gpu_model_scanout(const gpu_model *m, uint8_t *rgb)
 {
     const uint8_t *fb = gpu_model_front(m);
+    const uint32_t scale = GPU_MODEL_SCREEN_W / m->cfg.fb_width;
     for (uint32_t y = 0; y < GPU_MODEL_SCREEN_H; y++) {
         for (uint32_t x = 0; x < GPU_MODEL_SCREEN_W; x++) {
-            /* Each framebuffer pixel covers a 2 x 2 block of the screen. */
-            uint16_t c = m->palette[fb[(y / 2u) * GPU_FB_WIDTH + x / 2u]];
+            /* Each framebuffer pixel covers a scale x scale block of the screen. */
+            uint16_t c = m->palette[fb[(y / scale) * m->cfg.fb_width + x / scale]];
             uint8_t *out = &rgb[((size_t)y * GPU_MODEL_SCREEN_W + x) * 3u];
             /* n * 17 maps a 4-bit channel onto 0..255 exactly (0xF -> 0xFF). */
             out[0] = (uint8_t)(((c >> 8) & 0xFu) * 17u);
@@ -848,10 +871,11 @@ static uint8_t mix_channel(uint16_t a, uint16_t b, unsigned lsb, uint32_t frac)
 void gpu_model_scanout_unquantised(const gpu_model *m, uint8_t *rgb)
 {
     const uint32_t *probe = m->shade_probe->px[m->front & 1u];
+    const uint32_t scale = GPU_MODEL_SCREEN_W / m->cfg.fb_width;
     gpu_model_scanout(m, rgb);
     for (uint32_t y = 0; y < GPU_MODEL_SCREEN_H; y++) {
         for (uint32_t x = 0; x < GPU_MODEL_SCREEN_W; x++) {
-            uint32_t word = probe[(y / 2u) * GPU_FB_WIDTH + x / 2u];
+            uint32_t word = probe[(y / scale) * m->cfg.fb_width + x / scale];
             if ((word & GPU_MODEL_PROBE_SHADED) == 0) {
                 continue;
             }

@@ -17,7 +17,7 @@
  * at most the contract's limits.
  *
  * Host C11 (and includable from C++), no dependencies beyond the C library.
- * The state is one plain struct (~310 KiB because of the two framebuffers and
+ * The state is one plain struct (~1.2 MiB because of the two framebuffers and
  * the depth buffer): allocate it statically or with malloc, then call
  * gpu_model_reset() or gpu_model_reset_config() before use.
  */
@@ -29,12 +29,18 @@
 
 #include "gpu_regs.h"
 
-/* The VGA picture: each framebuffer pixel is shown as a 2 x 2 block. */
+/* The VGA picture: each framebuffer pixel is shown as a 2 x 2 block (a
+ * 640 x 480 frame 1:1). */
 #define GPU_MODEL_SCREEN_W 640
 #define GPU_MODEL_SCREEN_H 480
 
-/* Pixels in one framebuffer (320 x 240), also in the depth buffer. */
+/* Pixels in one framebuffer of the contract's frame (320 x 240), also in the
+ * depth buffer. */
 #define GPU_MODEL_FB_PIXELS (GPU_FB_WIDTH * GPU_FB_HEIGHT)
+
+/* The largest frame the model draws (the contract's FB_MAX_*: the screen
+ * 1:1), what its buffers hold. */
+#define GPU_MODEL_MAX_FB_PIXELS (GPU_FB_MAX_WIDTH * GPU_FB_MAX_HEIGHT)
 
 /* Build-option defaults, the same as the RTL's parameter defaults: both come
  * from the contract's [build] table (contract/gpu_contract.toml). */
@@ -84,8 +90,15 @@
  *           without.
  *   gouraud: ENABLE_GOURAUD; without it a PRIM_KIND_TRI_GOURAUD primitive
  *           sets ERR_KIND and CTRL_DITHER has no effect (it is still stored).
- *           Last, so that an initializer naming only the fields before it
- *           leaves it false, the RTL's default.
+ *           An initializer naming only the fields before it leaves it false,
+ *           the RTL's default.
+ *   fb_width, fb_height: the frame, GPU_FB_WIDTH x GPU_FB_HEIGHT (320 x 240,
+ *           shown 2 x 2) or GPU_FB_MAX_WIDTH x GPU_FB_MAX_HEIGHT (640 x 480,
+ *           shown 1:1); 0 x 0 means the contract's, any other pair is
+ *           replaced by it. FB_SIZE reports it; the framebuffers and the
+ *           depth buffer hold fb_width * fb_height pixels, rows fb_width apart.
+ *           Last, so that an initializer naming only the fields before them
+ *           leaves the contract's frame.
  */
 typedef struct gpu_model_config {
     unsigned span_w;
@@ -95,7 +108,9 @@ typedef struct gpu_model_config {
     uint32_t tri_cap;
     unsigned zbuf_bits;  /* configs written before it get 0 = 16 */
     bool wmask;          /* configs written before it get false (no mask) */
-    bool gouraud;        /* last: configs written before it get false (flat only) */
+    bool gouraud;        /* configs written before it get false (flat only) */
+    uint32_t fb_width;   /* last two: configs written before them get 0 x 0, */
+    uint32_t fb_height;  /* the contract's 320 x 240 */
 } gpu_model_config;
 
 /*
@@ -133,9 +148,9 @@ typedef struct gpu_model {
 
     /* PERF_* counters of the last batch (PERF_BUSY_CYCLES and
      * PERF_SPANS_VISITED are not modelled and read 0).  None can overflow 32
-     * bits: at most GPU_MODEL_MAX_TRI_CAP = 512 primitives, each adding at most 320*240
-     * samples, pixels or spans (a line at most 4095 samples), 512 * 76800
-     * < 2^26. */
+     * bits: at most GPU_MODEL_MAX_TRI_CAP = 512 primitives, each adding at most 640*480
+     * samples, pixels or spans (a line at most 4095 samples), 512 * 307200
+     * < 2^28. */
     struct {
         uint32_t tris_in;
         uint32_t tris_drawn;
@@ -157,16 +172,17 @@ typedef struct gpu_model {
      * the first cfg.tri_cap primitives exist. */
     uint32_t idx[GPU_MODEL_MAX_TRI_CAP * GPU_PRIM_WORDS];
 
-    /* The two framebuffers, palette indices, row-major, top row first.
-     * fb[front] is scanned out, fb[front ^ 1] is drawn. */
-    uint8_t fb[2][GPU_MODEL_FB_PIXELS];
+    /* The two framebuffers, palette indices, row-major, top row first: the
+     * first cfg.fb_width * cfg.fb_height bytes of each, rows cfg.fb_width
+     * apart. fb[front] is scanned out, fb[front ^ 1] is drawn. */
+    uint8_t fb[2][GPU_MODEL_MAX_FB_PIXELS];
 
     /* The depth buffer (contract "Depth"), row-major like fb, one buffer, not
      * swapped: the kept depths zb = z >> (16 - cfg.zbuf_bits), 0 ..
      * 2^zbuf_bits - 1.  0 at power-on (block RAM initial value, like the
      * framebuffers), 2^zbuf_bits - 1 (0xFFFF at 16 bits) after a CTRL_ZCLEAR.
      * Only used with cfg.zbuf; without it, it stays 0. */
-    uint16_t zbuf[GPU_MODEL_FB_PIXELS];
+    uint16_t zbuf[GPU_MODEL_MAX_FB_PIXELS];
 
     /* A measurement aid, not GPU state: NULL unless attached
      * (gpu_model_attach_shade_probe) after the last reset. */
@@ -183,7 +199,7 @@ typedef struct gpu_model {
  * masked write) 0, "as its palette index". */
 #define GPU_MODEL_PROBE_SHADED (1u << 24)
 typedef struct gpu_model_shade_probe {
-    uint32_t px[2][GPU_MODEL_FB_PIXELS];
+    uint32_t px[2][GPU_MODEL_MAX_FB_PIXELS];
 } gpu_model_shade_probe;
 
 /* Attach (or, with NULL, detach) a probe; its words start at 0. A reset
@@ -222,14 +238,15 @@ void gpu_model_write(gpu_model *m, uint32_t offset, uint32_t value);
  * PERF_SPANS_VISITED (not modelled). */
 uint32_t gpu_model_read(const gpu_model *m, uint32_t offset);
 
-/* The scanned-out framebuffer (320*240 palette indices). */
+/* The scanned-out framebuffer (cfg.fb_width * cfg.fb_height palette indices). */
 const uint8_t *gpu_model_front(const gpu_model *m);
 
-/* The framebuffer batches draw into (320*240 palette indices). */
+/* The framebuffer batches draw into (likewise). */
 const uint8_t *gpu_model_back(const gpu_model *m);
 
 /* What the VGA monitor shows: GPU_MODEL_SCREEN_W * GPU_MODEL_SCREEN_H * 3
- * bytes of RGB888, row-major, each front-buffer pixel as a 2 x 2 block, each
+ * bytes of RGB888, row-major, each front-buffer pixel as a block of
+ * GPU_MODEL_SCREEN_W / cfg.fb_width pixels square (2 x 2 for 320 x 240), each
  * RGB444 channel n expanded to n * 17 (0x0 -> 0x00, 0xF -> 0xFF). */
 void gpu_model_scanout(const gpu_model *m, uint8_t *rgb);
 

@@ -33,7 +33,7 @@ bool test_check_eq(long long got, long long want, const char *file, int line,
 
 /* ---- helpers driving the model through its bus, like the firmware would */
 
-/* A freshly reset model (heap-allocated, ~310 KiB) with the default build
+/* A freshly reset model (heap-allocated, ~1.2 MiB) with the default build
  * options (SPAN_W 8, lines, no depth buffer). Never returns NULL. */
 gpu_model *test_new_model(void);
 

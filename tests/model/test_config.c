@@ -53,7 +53,7 @@ static void test_caps(void)
      * again. */
     gpu_model_reset_config(m, NULL);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0805u);
-    gpu_model_config cfg = { 1, false, true, 0, 0, 12, false, false };
+    gpu_model_config cfg = { 1, false, true, 0, 0, 12, false, false, 0, 0 };
     gpu_model_reset_config(m, &cfg);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0C0102u);
     gpu_model_reset(m);
@@ -400,7 +400,7 @@ static void test_capacities(void)
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), GPU_TRI_CAP);
 
-    gpu_model_config cfg = { 8, true, false, 32, 16, 0, false, false };
+    gpu_model_config cfg = { 8, true, false, 32, 16, 0, false, false, 0, 0 };
     CHECK(gpu_model_config_error(&cfg) == NULL);
     gpu_model_reset_config(m, &cfg);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), 32);
@@ -442,12 +442,12 @@ static void test_capacities(void)
 
     /* 0: the contract's; above the contract's limit: refused by
      * gpu_model_config_error, replaced by the limit by reset_config. */
-    gpu_model_config zero = { 8, true, false, 0, 0, 0, false, false };
+    gpu_model_config zero = { 8, true, false, 0, 0, 0, false, false, 0, 0 };
     CHECK(gpu_model_config_error(&zero) == NULL);
     gpu_model_reset_config(m, &zero);
     CHECK_EQ(m->cfg.vtx_cap, GPU_VTX_CAP);
     CHECK_EQ(m->cfg.tri_cap, GPU_TRI_CAP);
-    gpu_model_config big = { 8, true, false, GPU_VTX_CAP + 1u, 16, 0, false, false };
+    gpu_model_config big = { 8, true, false, GPU_VTX_CAP + 1u, 16, 0, false, false, 0, 0 };
     CHECK(gpu_model_config_error(&big) != NULL);
     gpu_model_reset_config(m, &big);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);
@@ -455,6 +455,76 @@ static void test_capacities(void)
     big.vtx_cap = 32;
     big.tri_cap = GPU_TRI_CAP * 2u;
     CHECK(gpu_model_config_error(&big) != NULL);
+    free(m);
+}
+
+/* ------------------------------------------------------------- frame size */
+
+/* The largest frame (contract: FB_MAX_WIDTH x FB_MAX_HEIGHT, 640 x 480, shown
+ * 1:1) follows the same rules with its own bounds: FB_SIZE, the clear, the
+ * clamp of the box to the last column and row, the line's clip, and a
+ * scan-out without the 2 x 2 blocks. Any other size is refused. */
+static void test_frame_sizes(void)
+{
+    gpu_model *m = test_new_model();
+    gpu_model_config cfg = m->cfg;
+    cfg.fb_width = GPU_FB_MAX_WIDTH;
+    cfg.fb_height = GPU_FB_MAX_HEIGHT;
+    CHECK(gpu_model_config_error(&cfg) == NULL);
+    gpu_model_reset_config(m, &cfg);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_FB_SIZE), 640u | (480u << 16));
+
+    /* A clear reaches every one of the 307,200 pixels, and nothing past them. */
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 0, 0, 0, 7, 1);
+    size_t sevens = 0;
+    for (size_t i = 0; i < GPU_MODEL_MAX_FB_PIXELS; i++) {
+        sevens += gpu_model_back(m)[i] == 7u;
+    }
+    CHECK_EQ(sevens, 640u * 480u);
+
+    /* A triangle around the centre of pixel (639, 479), Q12.4 (10232, 7672),
+     * reaching past the frame but not back to the centres of column 638
+     * (x 10216) or row 478 (y 7656): the box clamps to the last column and
+     * row, so that pixel alone is drawn (the hypotenuse passes x = 10393
+     * there). */
+    const int32_t corner[6] = {10225, 7665, 10400, 7665, 10225, 7840};
+    CHECK_EQ(test_draw_one(m, corner, 9), 1);
+    CHECK_EQ(test_back_px(m, 639, 479), 9);
+    CHECK_EQ(test_back_px(m, 638, 479), 0);
+
+    /* A line from pixel (600, 470) rightwards for 100 steps: the 40 plots
+     * at x = 600 .. 639 are on screen. */
+    test_set_vtx(m, 0, 600 * 16, 470 * 16);
+    test_set_vtx(m, 1, 700 * 16, 470 * 16);
+    test_set_prim(m, 0, 0, 1, 1, 5, GPU_PRIM_KIND_LINE);
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 2, 0, 1, 0, 2);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_PIXELS), 40);
+    CHECK_EQ(test_back_px(m, 639, 470), 5);
+
+    /* Scan-out 1:1: the screen's pixel (639, 479) is the frame's, its
+     * neighbour (638, 479) another. */
+    gpu_model_write(m, GPU_WIN_PALETTE + 4u * 9u, 0xF00u);
+    test_draw_one(m, corner, 9);
+    test_batch(m, GPU_CTRL_SWAP_MASK, 0, 0, 0, 0, 0, 3);
+    uint8_t *rgb = malloc(GPU_MODEL_SCREEN_W * GPU_MODEL_SCREEN_H * 3u);
+    CHECK(rgb != NULL);
+    gpu_model_scanout(m, rgb);
+    const size_t last = ((size_t)479 * GPU_MODEL_SCREEN_W + 639) * 3u;
+    CHECK_EQ(rgb[last], 0xFF);
+    CHECK_EQ(rgb[last - 3u], 0x00);
+    free(rgb);
+
+    /* The contract's frame draws none of it: the corner is off its screen. */
+    gpu_model_reset(m);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_FB_SIZE), 320u | (240u << 16));
+    CHECK_EQ(test_draw_one(m, corner, 9), 0);
+
+    /* Any other frame is refused, and replaced by the contract's. */
+    cfg.fb_width = GPU_FB_MAX_WIDTH;
+    cfg.fb_height = GPU_FB_HEIGHT;
+    CHECK(gpu_model_config_error(&cfg) != NULL);
+    gpu_model_reset_config(m, &cfg);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_FB_SIZE), 320u | (240u << 16));
     free(m);
 }
 
@@ -466,4 +536,5 @@ void test_config(void)
     test_ctrl();
     test_reset_reg();
     test_spans();
+    test_frame_sizes();
 }

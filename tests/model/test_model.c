@@ -62,7 +62,7 @@ gpu_model *test_new_model(void)
 gpu_model *test_new_model_cfg(unsigned span_w, bool lines, bool zbuf)
 {
     gpu_model *m = alloc_model();
-    gpu_model_config cfg = { span_w, lines, zbuf, 0, 0, GPU_MODEL_DEFAULT_ZBUF_BITS, false, false }; /* capacities: the contract's; no write mask, flat only */
+    gpu_model_config cfg = { span_w, lines, zbuf, 0, 0, GPU_MODEL_DEFAULT_ZBUF_BITS, false, false, 0, 0 }; /* capacities: the contract's; no write mask, flat only */
     gpu_model_reset_config(m, &cfg);
     return m;
 }
@@ -125,12 +125,12 @@ uint32_t test_draw_one(gpu_model *m, const int32_t xy[6], uint32_t color)
 
 uint8_t test_back_px(const gpu_model *m, int px, int py)
 {
-    return gpu_model_back(m)[py * (int)GPU_FB_WIDTH + px];
+    return gpu_model_back(m)[py * (int)m->cfg.fb_width + px];
 }
 
 uint16_t test_z(const gpu_model *m, int px, int py)
 {
-    return m->zbuf[py * (int)GPU_FB_WIDTH + px];
+    return m->zbuf[py * (int)m->cfg.fb_width + px];
 }
 
 bool test_check_pixels(const gpu_model *m, const int (*pix)[2], int n,
