@@ -149,6 +149,8 @@ RTL_UNLISTED = $(filter-out $(RTL_V),$(wildcard gpu_rtl/*.v gpu_rtl/*.sv))
 lint:
 	@test -z "$(RTL_UNLISTED)" || { echo "lint: not in $(RTL_FILES): $(RTL_UNLISTED)"; exit 1; }
 	$(Q)$(call say,LINT,gpu_top)$(VERILATOR) --lint-only -Wall --top-module gpu_top $(RTL_LINT) -f $(RTL_FILES)
+	$(Q)$(call say,LINT,gpu_top 640x480 depth)$(VERILATOR) --lint-only -Wall --top-module gpu_top $(RTL_LINT) \
+	  -GFB_WIDTH=640 -GFB_HEIGHT=480 -GENABLE_ZBUF=1 -f $(RTL_FILES)
 	@# The bus slaves are not under gpu_top (a SoC puts one in front of it): each is its own top.
 	$(Q)$(call say,LINT,$(RTL_BUS_SLAVES))$(foreach m,$(RTL_BUS_SLAVES),$(VERILATOR) --lint-only -Wall --top-module $(m) $(RTL_LINT) gpu_rtl/$(m).v &&) true
 	@echo "lint: $(words $(RTL_V)) files of $(RTL_FILES) clean under -Wall"

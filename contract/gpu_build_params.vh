@@ -6,6 +6,8 @@
 // Defaults from the contract; a build reports its own values in CAPS, VTX_CAP and TRI_CAP:
 //   VTX_CAP         vertex buffer capacity, vertices
 //   TRI_CAP         index buffer capacity, primitives
+//   FB_WIDTH        the frame's width in pixels: fb_width, shown 2x2, or fb_max_width, 1:1
+//   FB_HEIGHT       the frame's height, fb_height or fb_max_height with FB_WIDTH
 //   SPAN_W          Pixels rasterized per clock: 1, 4, 8 or 16 (CAPS_SPAN_W).
 //   ENABLE_LINES    Line primitives (CAPS_LINES); without them a line sets ERR_KIND.
 //   ENABLE_ZBUF     16-bit depth buffer (CAPS_ZBUF); without it CTRL_ZTEST and CTRL_ZCLEAR have no
@@ -22,6 +24,8 @@
 `define GPU_BUILD_PARAMS \
     parameter integer VTX_CAP        = gpu_pkg::GPU_VTX_CAP, \
     parameter integer TRI_CAP        = gpu_pkg::GPU_TRI_CAP, \
+    parameter integer FB_WIDTH       = gpu_pkg::GPU_FB_WIDTH, \
+    parameter integer FB_HEIGHT      = gpu_pkg::GPU_FB_HEIGHT, \
     parameter integer SPAN_W         = gpu_pkg::GPU_DEFAULT_SPAN_W, \
     parameter integer ENABLE_LINES   = gpu_pkg::GPU_DEFAULT_ENABLE_LINES, \
     parameter integer ENABLE_ZBUF    = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF, \
@@ -31,6 +35,8 @@
 `define GPU_BUILD_PARAMS_PASS \
     .VTX_CAP        (VTX_CAP), \
     .TRI_CAP        (TRI_CAP), \
+    .FB_WIDTH       (FB_WIDTH), \
+    .FB_HEIGHT      (FB_HEIGHT), \
     .SPAN_W         (SPAN_W), \
     .ENABLE_LINES   (ENABLE_LINES), \
     .ENABLE_ZBUF    (ENABLE_ZBUF), \

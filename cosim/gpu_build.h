@@ -40,6 +40,12 @@ extern "C" {
 #ifndef GPU_BUILD_TRI_CAP
 #define GPU_BUILD_TRI_CAP GPU_TRI_CAP
 #endif
+#ifndef GPU_BUILD_FB_WIDTH
+#define GPU_BUILD_FB_WIDTH GPU_FB_WIDTH
+#endif
+#ifndef GPU_BUILD_FB_HEIGHT
+#define GPU_BUILD_FB_HEIGHT GPU_FB_HEIGHT
+#endif
 
 // The model's configuration for this build.
 inline gpu_model_config gpu_build_config()
@@ -53,6 +59,8 @@ inline gpu_model_config gpu_build_config()
     cfg.vtx_cap = GPU_BUILD_VTX_CAP;
     cfg.tri_cap = GPU_BUILD_TRI_CAP;
     cfg.zbuf_bits = GPU_BUILD_ZBUF_BITS;
+    cfg.fb_width = GPU_BUILD_FB_WIDTH;
+    cfg.fb_height = GPU_BUILD_FB_HEIGHT;
     return cfg;
 }
 

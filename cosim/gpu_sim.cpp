@@ -287,8 +287,8 @@ template <class Main, class Tail>
 void copy_bank(const Main &main, const Tail *tail, uint8_t *pixels)
 {
     const std::size_t words = depth(main) + (tail ? depth(*tail) : 0);
-    const unsigned span_w = static_cast<unsigned>(GPU_FB_WIDTH * GPU_FB_HEIGHT / words);
-    if (span_w * words != GPU_FB_WIDTH * GPU_FB_HEIGHT) {
+    const unsigned span_w = static_cast<unsigned>(GPU_BUILD_FB_WIDTH * GPU_BUILD_FB_HEIGHT / words);
+    if (span_w * words != GPU_BUILD_FB_WIDTH * GPU_BUILD_FB_HEIGHT) {
         std::fprintf(stderr, "gpusim: a framebuffer bank of %zu words\n", words);
         std::abort();
     }
@@ -303,8 +303,8 @@ template <class T, std::size_t D>
 void copy_merged_bank(const VlUnpacked<T, D> &mem, unsigned bank, uint8_t *pixels)
 {
     const std::size_t words = D / 2;
-    const unsigned span_w = static_cast<unsigned>(GPU_FB_WIDTH * GPU_FB_HEIGHT / words);
-    if (span_w * words * 2 != 2u * GPU_FB_WIDTH * GPU_FB_HEIGHT || sizeof(T) < span_w) {
+    const unsigned span_w = static_cast<unsigned>(GPU_BUILD_FB_WIDTH * GPU_BUILD_FB_HEIGHT / words);
+    if (span_w * words * 2 != 2u * GPU_BUILD_FB_WIDTH * GPU_BUILD_FB_HEIGHT || sizeof(T) < span_w) {
         std::fprintf(stderr, "gpusim: a two-bank framebuffer RAM of %zu words\n", D);
         std::abort();
     }
@@ -344,16 +344,18 @@ void GpuSim::back_buffer(uint8_t *pixels) const
 }
 
 // The front bank through the palette (RGB444, each channel times 17 as the monitor model takes the
-// pins), each pixel 2x2: what gpu_vga would scan out of it.
+// pins), each pixel scale x scale: what gpu_vga would scan out of it.
 void GpuSim::show_front_bank()
 {
-    static uint8_t front[GPU_FB_WIDTH * GPU_FB_HEIGHT];
+    static uint8_t front[GPU_BUILD_FB_WIDTH * GPU_BUILD_FB_HEIGHT];
+    constexpr int scale = VGA_W / GPU_BUILD_FB_WIDTH;
     const auto &root = *v_->top.rootp;
     read_bank(root, root.GPU_FB_FRONT != 0, front);
-    static_assert(VGA_W == 2 * GPU_FB_WIDTH && VGA_H == 2 * GPU_FB_HEIGHT, "gpu_vga shows each pixel 2x2");
+    static_assert(VGA_W == scale * GPU_BUILD_FB_WIDTH && VGA_H == scale * GPU_BUILD_FB_HEIGHT,
+                  "gpu_vga shows each pixel scale x scale");
     for (int y = 0; y < VGA_H; y++) {
         for (int x = 0; x < VGA_W; x++) {
-            const uint32_t rgb444 = root.GPU_PALETTE[front[(y / 2) * GPU_FB_WIDTH + x / 2]];
+            const uint32_t rgb444 = root.GPU_PALETTE[front[(y / scale) * GPU_BUILD_FB_WIDTH + x / scale]];
             uint8_t *out = &monitor_.rgb[(y * VGA_W + x) * 3];
             out[0] = static_cast<uint8_t>(((rgb444 >> 8) & 15) * 17);
             out[1] = static_cast<uint8_t>(((rgb444 >> 4) & 15) * 17);

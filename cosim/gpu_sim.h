@@ -53,7 +53,8 @@ public:
     static gpu_model_config build_config();
     static constexpr unsigned kFastVblankEvery = 64;  // the fast path's vblank_start period, clocks
 
-    // The framebuffer being drawn (the back bank, !STATUS.FRONT), as GPU_FB_WIDTH x GPU_FB_HEIGHT palette indices,
+    // The framebuffer being drawn (the back bank, !STATUS.FRONT), as the build's frame (build_config's
+    // fb_width x fb_height) of palette indices,
     // row-major: read from the framebuffer's block-RAM arrays in the Verilated model (their
     // Verilator names, gpu_top.u_framebuffer.g_split.g_bank[b].u_main / g_tail.u_tail .mem, or
     // g_merged.u_both.mem with the write mask, are checked at

@@ -1,6 +1,7 @@
 // raster_run: `gpusim raster --in LIST --out DIR` — renders a primitive list (prim_list.h) through
 // the RTL and through the golden model, for users who want the GPU without firmware and for tests.
-// Writes DIR/rtl.raw and DIR/model.raw (320x240 palette indices, row-major, top row first), the RTL's
+// Writes DIR/rtl.raw and DIR/model.raw (the GPU's frame, 320x240 by default, of palette indices,
+// row-major, top row first), the RTL's
 // frame as DIR/rtl.png (captured from the VGA pins) and DIR/stats.json (counters and cycles). The RTL's
 // indices are read back from the VGA colours through a palette that gives every index its own colour.
 // Exit status: 0 equal, 1 RTL and model differ, 2 bad input.
@@ -133,37 +134,45 @@ int raster_main(int argc, char **argv)
         return 1;
     }
 
-    // VGA colours back to palette indices; every 2x2 block must be one pixel.
-    std::vector<uint8_t> rtl_raw(GPU_FB_PIXELS);
+    // VGA colours back to palette indices; every scale x scale block (2x2 for 320x240) must be one
+    // pixel.
+    const int fb_w = static_cast<int>(model.model()->cfg.fb_width);
+    const int fb_h = static_cast<int>(model.model()->cfg.fb_height);
+    const int scale = 640 / fb_w;
+    const std::size_t fb_pixels = static_cast<std::size_t>(fb_w) * static_cast<std::size_t>(fb_h);
+    std::vector<uint8_t> rtl_raw(fb_pixels);
     std::vector<int> index_of(4096, -1);
     for (uint32_t p = 0; p < 256; p++) {
         index_of[raster_palette(p)] = static_cast<int>(p);
     }
     const uint8_t *rgb = sim.frame_rgb();
-    for (int y = 0; y < static_cast<int>(GPU_FB_HEIGHT); y++) {
-        for (int x = 0; x < static_cast<int>(GPU_FB_WIDTH); x++) {
+    for (int y = 0; y < fb_h; y++) {
+        for (int x = 0; x < fb_w; x++) {
             uint32_t colours[4];
-            for (int q = 0; q < 4; q++) {
-                const uint8_t *c = &rgb[((2 * y + q / 2) * 640 + 2 * x + q % 2) * 3];
+            for (int q = 0; q < scale * scale; q++) {
+                const uint8_t *c = &rgb[((scale * y + q / scale) * 640 + scale * x + q % scale) * 3];
                 colours[q] = (c[0] / 17u) << 8 | (c[1] / 17u) << 4 | (c[2] / 17u);
             }
-            if (colours[1] != colours[0] || colours[2] != colours[0] || colours[3] != colours[0] ||
-                index_of[colours[0]] < 0) {
-                std::fprintf(stderr, "raster: VGA pixel (%d,%d) is not a clean 2x2 palette colour\n", x, y);
+            bool clean = index_of[colours[0]] >= 0;
+            for (int q = 1; q < scale * scale; q++) {
+                clean = clean && colours[q] == colours[0];
+            }
+            if (!clean) {
+                std::fprintf(stderr, "raster: VGA pixel (%d,%d) is not a clean %dx%d palette colour\n", x, y, scale, scale);
                 return 1;
             }
-            rtl_raw[y * GPU_FB_WIDTH + x] = static_cast<uint8_t>(index_of[colours[0]]);
+            rtl_raw[y * fb_w + x] = static_cast<uint8_t>(index_of[colours[0]]);
         }
     }
     const uint8_t *model_raw = gpu_model_front(model.model());
     long differ = 0;
-    for (uint32_t i = 0; i < GPU_FB_PIXELS; i++) {
+    for (std::size_t i = 0; i < fb_pixels; i++) {
         differ += rtl_raw[i] != model_raw[i];
     }
 
     const std::string dir = out_dir + "/";
     bool ok = write_file(dir + "rtl.raw", rtl_raw.data(), rtl_raw.size()) &&
-              write_file(dir + "model.raw", model_raw, GPU_FB_PIXELS) &&
+              write_file(dir + "model.raw", model_raw, fb_pixels) &&
               png_write_rgb((dir + "rtl.png").c_str(), rgb, 640, 480) == 0;
     FILE *json = std::fopen((dir + "stats.json").c_str(), "w");
     if (json != nullptr) {

@@ -20,7 +20,9 @@ extern "C" {
 
 namespace {
 
-constexpr int32_t kFbW = GPU_FB_WIDTH, kFbH = GPU_FB_HEIGHT;  // the frame, in pixels
+struct Frame {  // the GPU's frame, in pixels (its build's, GpuSim::build_config)
+    int32_t w, h;
+};
 
 struct Vertex {
     int32_t x, y;  // Q12.4, kept within int16
@@ -29,8 +31,9 @@ struct Vertex {
 int16_t clamp16(int32_t v) { return static_cast<int16_t>(v < -32768 ? -32768 : (v > 32767 ? 32767 : v)); }
 
 // A vertex from one of several families that stress different parts of the rule.
-Vertex random_vertex(Rng &r, int family, Vertex anchor)
+Vertex random_vertex(Rng &r, int family, Vertex anchor, Frame fb)
 {
+    const int32_t kFbW = fb.w, kFbH = fb.h;
     switch (family) {
     case 0:  // anywhere on screen and a little beyond
         return {r.range(-32 * 16, (kFbW + 32) * 16), r.range(-32 * 16, (kFbH + 32) * 16)};
@@ -75,7 +78,8 @@ std::string compare_back_buffer(const GpuSim &sim, const ModelCheck &model, std:
     }
     char text[160];
     std::snprintf(text, sizeof text, "back buffer: %ld pixels differ; first at fb (%ld,%ld): RTL %u, model %u",
-                  mismatches, first % GPU_FB_WIDTH, first / GPU_FB_WIDTH, rtl[first], expected[first]);
+                  mismatches, first % static_cast<long>(model.model()->cfg.fb_width),
+                  first / static_cast<long>(model.model()->cfg.fb_width), rtl[first], expected[first]);
     return text;
 }
 
@@ -134,7 +138,9 @@ int rtl_check_main(int argc, char **argv)
     const bool wmask = (sim.read(GPU_REG_CAPS) & GPU_CAPS_WMASK_MASK) != 0;
     uint64_t tris = 0, pixels = 0, frames = 0, resets = 0, back_checks = 0, overflows = 0, index_errors = 0;
     uint64_t masked = 0;
-    std::vector<uint8_t> back(GPU_FB_WIDTH * GPU_FB_HEIGHT);
+    const Frame fb{static_cast<int32_t>(cfg.fb_width), static_cast<int32_t>(cfg.fb_height)};
+    const int32_t kFbW = fb.w, kFbH = fb.h;
+    std::vector<uint8_t> back(static_cast<std::size_t>(fb.w) * static_cast<std::size_t>(fb.h));
     bool must_clear = false;
 
     // The power-on registers first (ID, CAPS, VTX_CAP, TRI_CAP ...): a model of another build says
@@ -178,7 +184,7 @@ int rtl_check_main(int argc, char **argv)
             if (family == 1 && r.chance(20)) {
                 anchor = {r.range(0, kFbW * 16), r.range(0, kFbH * 16)};
             }
-            Vertex vx = random_vertex(r, r.chance(80) ? family : static_cast<int>(r.below(5)), anchor);
+            Vertex vx = random_vertex(r, r.chance(80) ? family : static_cast<int>(r.below(5)), anchor, fb);
             const uint32_t word = static_cast<uint16_t>(clamp16(vx.x)) | static_cast<uint32_t>(static_cast<uint16_t>(clamp16(vx.y))) << 16;
             write(GPU_WIN_VTX + 8 * (vbase + v), word);
             uint32_t inten = ifamily == 0 ? r.below(65536) : ifamily == 1 ? (r.chance(50) ? 0u : 65535u)
@@ -309,10 +315,11 @@ int rtl_check_main(int argc, char **argv)
                     static_cast<unsigned long long>(tris), static_cast<unsigned long long>(min_prims));
         return 1;
     }
-    std::printf("random: seed %llu: VTX_CAP %u TRI_CAP %u, %d batches (%llu over the capacities, %llu with bad "
+    const uint32_t fb_size = sim.read(GPU_REG_FB_SIZE);  // the RTL's, which the model's has equalled
+    std::printf("random: seed %llu: VTX_CAP %u TRI_CAP %u FB %ux%u, %d batches (%llu over the capacities, %llu with bad "
                 "indices, %llu plane-masked), %llu primitives (%llu of kind Gouraud), %llu pixels, %llu back buffers, %llu frames, %llu resets: "
                 "RTL equals model\n",
-                static_cast<unsigned long long>(seed), vcap, tcap, batches, static_cast<unsigned long long>(overflows),
+                static_cast<unsigned long long>(seed), vcap, tcap, fb_size & 0xFFFFu, fb_size >> 16, batches, static_cast<unsigned long long>(overflows),
                 static_cast<unsigned long long>(index_errors), static_cast<unsigned long long>(masked), static_cast<unsigned long long>(tris),
                 static_cast<unsigned long long>(shaded),
                 static_cast<unsigned long long>(pixels), static_cast<unsigned long long>(back_checks),

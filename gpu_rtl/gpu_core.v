@@ -9,7 +9,7 @@
 // the next vblank_start to swap (frame_swapped pulses), then reports DONE_SEQ. vblank_start is a
 // one-cycle pulse in the clk domain, at most one per swap taken; a display pulses it when the front
 // bank may change without a visible tear. The read ports have one cycle of latency: fb_rd_addr is a
-// pixel of the front bank (row-major, GPU_FB_WIDTH a row), pal_rd_addr a palette entry, RGB444. The
+// pixel of the front bank (row-major, FB_WIDTH a row), pal_rd_addr a palette entry, RGB444. The
 // palette is written on clk and read on clk_pix without a handshake (gpu_top says why that is
 // enough). Build options leave out what a scene does not need and are reported in CAPS. The build
 // parameters (capacities and options; defaults, like the frame size, from the contract) are
@@ -26,9 +26,9 @@ module gpu_core #(
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer VTX_AW = $clog2(VTX_CAP * 2),
     localparam integer IDX_AW = $clog2(TRI_CAP * 2),
-    localparam integer FB_WORDS = gpu_pkg::GPU_FB_PIXELS / SPAN_W,  // spans in a frame
+    localparam integer FB_WORDS = FB_WIDTH * FB_HEIGHT / SPAN_W,  // spans in a frame
     localparam integer FB_WAW = $clog2(FB_WORDS),
-    localparam integer FB_PAW = $clog2(gpu_pkg::GPU_FB_PIXELS)
+    localparam integer FB_PAW = $clog2(FB_WIDTH * FB_HEIGHT)
 ) (
     input  wire        clk,           // system clock: bus, rasterizer, framebuffer writes
     input  wire        rst,           // synchronous to clk, active high
@@ -82,7 +82,8 @@ module gpu_core #(
     wire [SPAN_W-1:0] fb_wr_mask;
     wire [1:0] fb_wmask;  // FB_WRITE_MASK's planes, stable while busy like the other batch registers
 
-    gpu_regs #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .CAPS(CAPS), .ENABLE_WMASK(ENABLE_WMASK)) u_regs (
+    gpu_regs #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT), .CAPS(CAPS),
+               .ENABLE_WMASK(ENABLE_WMASK)) u_regs (
         .clk(clk), .rst(rst),
         .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr), .bus_wdata(bus_wdata),
         .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid),
@@ -175,7 +176,7 @@ module gpu_core #(
         .rd_en(pal_rd_en), .rd_addr(pal_rd_addr), .rd_data(pal_rd_data)
     );
 
-    gpu_raster #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .SPAN_W(SPAN_W),
+    gpu_raster #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT), .SPAN_W(SPAN_W),
                  .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS),
                  .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_raster (
         .clk(clk), .rst(rst), .soft_reset(soft_reset),
@@ -193,7 +194,7 @@ module gpu_core #(
         .fb_wr_mask(fb_wr_mask), .vblank_start(vblank_start), .swap(swap)
     );
 
-    gpu_framebuffer #(.SPAN_W(SPAN_W), .ENABLE_WMASK(ENABLE_WMASK)) u_framebuffer (
+    gpu_framebuffer #(.FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT), .SPAN_W(SPAN_W), .ENABLE_WMASK(ENABLE_WMASK)) u_framebuffer (
         .clk(clk), .rst(rst), .clk_pix(clk_pix),
         .swap(swap), .front(front),
         .wr_en(fb_wr_en), .wr_addr(fb_wr_addr), .wr_data(fb_wr_data), .wr_mask(fb_wr_mask),

@@ -1,10 +1,10 @@
-// gpu_framebuffer: two banks of GPU_FB_WIDTH x GPU_FB_HEIGHT 8-bit palette indices (the contract's
-// frame), one drawn (back), one shown (front).
+// gpu_framebuffer: two banks of FB_WIDTH x FB_HEIGHT 8-bit palette indices (the build's frame),
+// one drawn (back), one shown (front).
 //
 // Contract: each bank is stored as words of SPAN_W pixels (a span: SPAN_W neighbours in one row, the
 // first at a multiple of SPAN_W), so the rasterizer writes a whole span per clock with a per-pixel
 // mask and never reads. The write port always targets the back bank, the read port always the front
-// bank; the read port takes a pixel index (y * GPU_FB_WIDTH + x) and returns that pixel one clk_pix
+// bank; the read port takes a pixel index (y * FB_WIDTH + x) and returns that pixel one clk_pix
 // cycle later. swap (one-cycle pulse) exchanges the banks on the clk edge; front is the bank being
 // shown (STATUS.FRONT).
 //
@@ -25,16 +25,18 @@
 // block RAM modes give per 9 bits only, so yosys maps the lanes to narrower modes; README.md ("The
 // anaglyph on the write mask") has the measured EBR and LUT counts.
 //
-// Block RAM economy: a bank of GPU_FB_PIXELS / SPAN_W words is not a multiple of the 1024-word depth
+// Block RAM economy: a bank of FB_WIDTH * FB_HEIGHT / SPAN_W words is not a multiple of the 1024-word depth
 // 36 Kb block RAMs come in, and a tool that rounds it up wastes a whole column of them (20 instead of
 // 19 per bank at SPAN_W = 8). So each bank is a main part of whole 1024-word blocks plus a small tail
 // RAM.
 `default_nettype none
 
 module gpu_framebuffer #(
-    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,  // pixels per word; divides GPU_FB_WIDTH
+    parameter integer FB_WIDTH = gpu_pkg::GPU_FB_WIDTH,      // the frame
+    parameter integer FB_HEIGHT = gpu_pkg::GPU_FB_HEIGHT,
+    parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,  // pixels per word; divides FB_WIDTH
     parameter integer ENABLE_WMASK = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK,  // two 4-bit planes (above)
-    localparam integer PIXELS = gpu_pkg::GPU_FB_PIXELS,
+    localparam integer PIXELS = FB_WIDTH * FB_HEIGHT,
     localparam integer WORDS = PIXELS / SPAN_W,
     localparam integer MAIN_WORDS = (WORDS / 1024) * 1024,
     localparam integer TAIL_WORDS = WORDS - MAIN_WORDS,
@@ -51,13 +53,13 @@ module gpu_framebuffer #(
     output wire                front,      // bank currently shown
     // write port (rasterizer, back bank): one span
     input  wire                wr_en,
-    input  wire [WAW-1:0]      wr_addr,    // span index: y * GPU_FB_WIDTH / SPAN_W + x / SPAN_W
+    input  wire [WAW-1:0]      wr_addr,    // span index: y * FB_WIDTH / SPAN_W + x / SPAN_W
     input  wire [SPAN_W*8-1:0] wr_data,    // pixel i of the span in bits [8i +: 8]
     input  wire [SPAN_W-1:0]   wr_mask,    // pixels to write
     input  wire [1:0]          wr_planes,  // planes to write, {bits [7:4], bits [3:0]} (ENABLE_WMASK)
     // read port (scan-out, front bank): one pixel, clk_pix domain
     input  wire                rd_en,
-    input  wire [PAW-1:0]      rd_addr,    // pixel index y * GPU_FB_WIDTH + x
+    input  wire [PAW-1:0]      rd_addr,    // pixel index y * FB_WIDTH + x
     output wire [7:0]          rd_data
 );
     reg front_q;

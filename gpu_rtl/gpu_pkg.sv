@@ -3,7 +3,7 @@
 //
 // Contract constants: contract/gpu_regs.vh, generated from contract/gpu_contract.toml, is included
 // here and nowhere else; modules name them gpu_pkg::GPU_* (register offsets, fields, the frame size
-// GPU_FB_WIDTH x GPU_FB_HEIGHT, the build-option defaults GPU_DEFAULT_*). Qualified names everywhere:
+// default GPU_FB_WIDTH x GPU_FB_HEIGHT, the build-option defaults GPU_DEFAULT_*). Qualified names everywhere:
 // yosys 0.23 accepts neither `import` in a module header nor in a module body, nor one package
 // naming another's constants (see gpu_rtl/README.md, "Shared types").
 //
@@ -17,9 +17,9 @@ package gpu_pkg;
 
     // Edge functions (gpu_prim_setup computes them, gpu_span_walker steps them): vertex coordinates
     // are signed Q12.4 in 16 bits, so a difference needs 17 bits; the pixel centres the walker
-    // evaluates lie within one pixel of the screen (x in -1 .. GPU_FB_WIDTH, y in 0 .. GPU_FB_HEIGHT
-    // - 1), so their offset from a vertex is in -32775 .. 37896 for the contract's frame, also 17
-    // bits. Each product is below 2^32 in magnitude, an edge value below 2^33: EDGE_NEED_W = 34 bits
+    // evaluates lie within one pixel of the screen (x in -1 .. FB_WIDTH, y in 0 .. FB_HEIGHT - 1),
+    // so their offset from a vertex is in -32775 .. 37896 for the contract's frame and -32775 ..
+    // 43016 for its largest (640 x 480), also 17 bits. Each product is below 2^32 in magnitude, an edge value below 2^33: EDGE_NEED_W = 34 bits
     // signed. EDGE_W = 36 leaves two bits of margin; gpu_raster asserts the 34-bit bound on every
     // descriptor in simulation.
     localparam integer EDGE_NEED_W = 34;
@@ -56,14 +56,15 @@ package gpu_pkg;
     localparam integer PIX_W = GPU_VTX_X_WIDTH - GPU_SUBPIXEL_BITS;
     localparam integer LERR_W = PIX_W + 3;
 
-    // Pixels on screen: x in 0 .. GPU_FB_WIDTH - 1 (X_W bits), y in 0 .. GPU_FB_HEIGHT - 1 (ROW_W).
+    // Pixels on screen: x in 0 .. FB_WIDTH - 1, y in 0 .. FB_HEIGHT - 1 (the build's frame, at most
+    // the contract's largest, GPU_FB_MAX_WIDTH x GPU_FB_MAX_HEIGHT): X_W and ROW_W bits for any.
     // The box of a triangle is carried in span columns and rows. A column is a pixel x divided by
     // SPAN_W; the descriptor carries it at the width SPAN_W = 1 needs, and a build with wider spans
-    // uses the low $clog2(GPU_FB_WIDTH / SPAN_W) bits (the others are 0).
-    localparam integer X_W = $clog2(GPU_FB_WIDTH);
-    localparam integer ROW_W = $clog2(GPU_FB_HEIGHT);
+    // uses the low $clog2(FB_WIDTH / SPAN_W) bits (the others are 0).
+    localparam integer X_W = $clog2(GPU_FB_MAX_WIDTH);
+    localparam integer ROW_W = $clog2(GPU_FB_MAX_HEIGHT);
     // A primitive's sample count (PERF_SAMPLES' increment): at most a whole frame's pixels.
-    localparam integer SAMPLES_W = $clog2(GPU_FB_WIDTH * GPU_FB_HEIGHT + 1);
+    localparam integer SAMPLES_W = $clog2(GPU_FB_MAX_WIDTH * GPU_FB_MAX_HEIGHT + 1);
     localparam integer DESC_COL_W = X_W;
     localparam integer COLOR_W = GPU_PRIM_COLOR_WIDTH;
 

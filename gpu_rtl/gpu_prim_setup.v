@@ -33,6 +33,8 @@
 module gpu_prim_setup #(
     parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,              // build options: see gpu_top
     parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,
+    parameter integer FB_WIDTH = gpu_pkg::GPU_FB_WIDTH,   // the frame the box is clamped to
+    parameter integer FB_HEIGHT = gpu_pkg::GPU_FB_HEIGHT,
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,  // depth-plane set-up (a division
@@ -46,7 +48,7 @@ module gpu_prim_setup #(
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer PRIM_W = $clog2(TRI_CAP + 1),
-    localparam integer COL_W = $clog2(gpu_pkg::GPU_FB_WIDTH / SPAN_W),  // span column
+    localparam integer COL_W = $clog2(FB_WIDTH / SPAN_W),  // span column
     localparam integer X_W = gpu_pkg::X_W,         // a pixel x on screen
     localparam integer ROW_W = gpu_pkg::ROW_W,     // a pixel row
     localparam integer SAMPLES_W = gpu_pkg::SAMPLES_W,
@@ -291,8 +293,8 @@ module gpu_prim_setup #(
         clamp = (v < 13'sd0) ? 13'sd0 : ((v > hi) ? hi : v);
     endfunction
 
-    localparam signed [12:0] X_LAST = 13'(gpu_pkg::GPU_FB_WIDTH - 1);   // last pixel column
-    localparam signed [12:0] Y_LAST = 13'(gpu_pkg::GPU_FB_HEIGHT - 1);  // last pixel row
+    localparam signed [12:0] X_LAST = 13'(FB_WIDTH - 1);   // last pixel column
+    localparam signed [12:0] Y_LAST = 13'(FB_HEIGHT - 1);  // last pixel row
     // Centre, Q12.4, of lane 0 of the span holding on-screen pixel column px, and of pixel row py.
     function automatic signed [17:0] span_centre_x(input [X_W-1:0] px);
         span_centre_x = 18'(32'(COL_W'(px / X_W'(SPAN_W))) * SPAN_W * 16 + 8);
@@ -470,8 +472,8 @@ module gpu_prim_setup #(
         end
     endgenerate
 
-    wire [X_W:0] box_w = (X_W + 1)'(b_px1 - b_px0 + 13'sd1);   // 1 .. GPU_FB_WIDTH
-    wire [ROW_W:0] box_h = (ROW_W + 1)'(b_py1 - b_py0 + 13'sd1);  // 1 .. GPU_FB_HEIGHT
+    wire [X_W:0] box_w = (X_W + 1)'(b_px1 - b_px0 + 13'sd1);   // 1 .. FB_WIDTH
+    wire [ROW_W:0] box_h = (ROW_W + 1)'(b_py1 - b_py0 + 13'sd1);  // 1 .. FB_HEIGHT
 
     always @(posedge clk) begin
         if (rst) begin

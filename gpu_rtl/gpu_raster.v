@@ -14,6 +14,8 @@
 module gpu_raster #(
     parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,              // build options: see gpu_top
     parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,
+    parameter integer FB_WIDTH = gpu_pkg::GPU_FB_WIDTH,
+    parameter integer FB_HEIGHT = gpu_pkg::GPU_FB_HEIGHT,
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
@@ -21,7 +23,7 @@ module gpu_raster #(
     parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
-    localparam integer WORDS = gpu_pkg::GPU_FB_PIXELS / SPAN_W,   // spans in a frame
+    localparam integer WORDS = FB_WIDTH * FB_HEIGHT / SPAN_W,   // spans in a frame
     localparam integer WAW = $clog2(WORDS),
     localparam integer CNT_W = $clog2(SPAN_W + 1)
 ) (
@@ -99,7 +101,7 @@ module gpu_raster #(
     wire [SPAN_W*8-1:0] walker_wr_data;
     wire [SPAN_W-1:0] walker_wr_mask;
 
-    gpu_prim_setup #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .SPAN_W(SPAN_W),
+    gpu_prim_setup #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT), .SPAN_W(SPAN_W),
                      .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF),
                      .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_setup (
         .clk(clk), .rst(pipe_rst),
@@ -115,7 +117,7 @@ module gpu_raster #(
     // The walker does not start on a descriptor until the clear is over (the setup may run ahead).
     wire walk_enable = state_q == S_DRAW || state_q == S_DRAIN;
 
-    gpu_span_walker #(.SPAN_W(SPAN_W), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS),
+    gpu_span_walker #(.FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT), .SPAN_W(SPAN_W), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS),
                       .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_walker (
         .clk(clk), .rst(pipe_rst),
         .in_valid(desc_valid && walk_enable), .in_ready(walker_ready), .in_desc(desc), .ztest(ztest),

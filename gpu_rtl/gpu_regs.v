@@ -12,6 +12,8 @@
 module gpu_regs #(
     parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,  // vertices; the vertex RAM holds 2 words each
     parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,  // primitives; the index RAM holds 2 words each
+    parameter integer FB_WIDTH = gpu_pkg::GPU_FB_WIDTH,    // the frame (FB_SIZE)
+    parameter integer FB_HEIGHT = gpu_pkg::GPU_FB_HEIGHT,
     parameter [31:0]  CAPS = 32'h0,    // value of the CAPS register, set by gpu_top from its parameters
     parameter integer ENABLE_WMASK = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK,  // FB_WRITE_MASK is writable
     localparam integer VTX_AW = $clog2(VTX_CAP * 2),
@@ -167,8 +169,8 @@ module gpu_regs #(
             gpu_pkg::GPU_REG_CAPS:               reg_value = CAPS;
             gpu_pkg::GPU_REG_VTX_CAP:            reg_value = 32'(VTX_CAP);
             gpu_pkg::GPU_REG_TRI_CAP:            reg_value = 32'(TRI_CAP);
-            gpu_pkg::GPU_REG_FB_SIZE:            reg_value = {16'(gpu_pkg::GPU_FB_HEIGHT),
-                                                              16'(gpu_pkg::GPU_FB_WIDTH)};
+            gpu_pkg::GPU_REG_FB_SIZE:            reg_value = {16'(FB_HEIGHT),
+                                                              16'(FB_WIDTH)};
             gpu_pkg::GPU_REG_CTRL:               reg_value = ctrl_value;
             gpu_pkg::GPU_REG_VTX_BASE:           reg_value = vtx_base;
             gpu_pkg::GPU_REG_VTX_COUNT:          reg_value = vtx_count;

@@ -31,6 +31,8 @@
 `default_nettype none
 
 module gpu_span_walker #(
+    parameter integer FB_WIDTH = gpu_pkg::GPU_FB_WIDTH,               // the frame
+    parameter integer FB_HEIGHT = gpu_pkg::GPU_FB_HEIGHT,
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,           // build options: see gpu_top
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF, // depth test stage and depth-
                                                                       // buffer port
@@ -38,9 +40,9 @@ module gpu_span_walker #(
                                                                       // "Depth"): the rest read 0
     parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,  // intensity stepping and
                                                                       // the ramp/dither write stage
-    localparam integer WORDS_PER_ROW = gpu_pkg::GPU_FB_WIDTH / SPAN_W,
+    localparam integer WORDS_PER_ROW = FB_WIDTH / SPAN_W,
     localparam integer COL_W = $clog2(WORDS_PER_ROW),                 // span column
-    localparam integer WAW = $clog2(gpu_pkg::GPU_FB_PIXELS / SPAN_W),
+    localparam integer WAW = $clog2(FB_WIDTH * FB_HEIGHT / SPAN_W),
     localparam integer LANE_AW = (SPAN_W > 1) ? $clog2(SPAN_W) : 1,
     localparam integer CNT_W = $clog2(SPAN_W + 1),
     localparam integer EDGE_W = gpu_pkg::EDGE_W,
@@ -184,8 +186,8 @@ module gpu_span_walker #(
     reg lxmajor_q, lxneg_q, lyneg_q;
     reg [PIX_W:0] l2maj_q, l2min_q;
     reg signed [LERR_W-1:0] lerr_q;
-    localparam signed [PIX_W-1:0] LINE_X_END = PIX_W'(gpu_pkg::GPU_FB_WIDTH);   // first column off screen
-    localparam signed [PIX_W-1:0] LINE_Y_END = PIX_W'(gpu_pkg::GPU_FB_HEIGHT);  // first row off screen
+    localparam signed [PIX_W-1:0] LINE_X_END = PIX_W'(FB_WIDTH);   // first column off screen
+    localparam signed [PIX_W-1:0] LINE_Y_END = PIX_W'(FB_HEIGHT);  // first row off screen
     localparam signed [PIX_W-1:0] PIX_ONE = 1;
     wire line_on_screen = lx_q >= 0 && lx_q < LINE_X_END && ly_q >= 0 && ly_q < LINE_Y_END;
     wire [X_W-1:0] line_px = lx_q[X_W-1:0];

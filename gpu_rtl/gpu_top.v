@@ -20,7 +20,7 @@
 module gpu_top #(
     `GPU_BUILD_PARAMS,                   // capacities and build options, passed to gpu_core
     parameter integer PIX_DIV = 4,       // clk_pix clocks per VGA pixel (1 for a 25 MHz clk_pix)
-    localparam integer FB_PAW = $clog2(gpu_pkg::GPU_FB_PIXELS)
+    localparam integer FB_PAW = $clog2(FB_WIDTH * FB_HEIGHT)
 ) (
     input  wire        clk,           // system clock: bus, rasterizer, framebuffer writes
     input  wire        rst,           // synchronous to clk, active high
@@ -69,7 +69,7 @@ module gpu_top #(
         .clk_dst(clk), .dst_pulse(vblank_start_sys)
     );
 
-    gpu_vga #(.PIX_DIV(PIX_DIV)) u_vga (
+    gpu_vga #(.PIX_DIV(PIX_DIV), .FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT)) u_vga (
         .clk(clk_pix), .rst(rst_pix),
         .fb_rd_en(fb_rd_en), .fb_rd_addr(fb_rd_addr), .fb_rd_data(fb_rd_data),
         .pal_rd_en(pal_rd_en), .pal_rd_addr(pal_rd_addr), .pal_rd_data(pal_rd_data),

@@ -5,7 +5,7 @@
 // gpu_top gives it, 25 MHz on a board, or a faster clock in simulation; vga_pix_stb is high in the
 // cycle whose clock edge updates the outputs, so a DAC clocked by clk with vga_pix_stb as enable (or a
 // monitor model sampling when vga_pix_stb is high) sees each pixel exactly once. Each framebuffer
-// pixel covers 2x2 screen pixels. RGB is 0 outside the visible area, where vga_de (data enable, for a
+// pixel covers SCALE x SCALE screen pixels: 2x2 for the contract's 320x240, 1:1 for 640x480. RGB is 0 outside the visible area, where vga_de (data enable, for a
 // DVI transmitter) is low. vblank_start pulses for one cycle when the last visible pixel has been
 // read, the moment a buffer swap becomes invisible.
 // Latency: the read pipeline (framebuffer, palette, output register) advances only on pixel strobes,
@@ -14,8 +14,11 @@
 
 module gpu_vga #(
     parameter integer PIX_DIV = 4,  // clocks per pixel: 1 with a 25 MHz pixel clock, 4 at 100 MHz
-    localparam integer FB_W = gpu_pkg::GPU_FB_WIDTH,   // the contract's frame, shown 2x2
-    localparam integer FB_AW = $clog2(gpu_pkg::GPU_FB_PIXELS)
+    parameter integer FB_WIDTH = gpu_pkg::GPU_FB_WIDTH,    // the frame: 640 / SCALE x 480 / SCALE
+    parameter integer FB_HEIGHT = gpu_pkg::GPU_FB_HEIGHT,
+    localparam integer FB_W = FB_WIDTH,
+    localparam integer FB_AW = $clog2(FB_WIDTH * FB_HEIGHT),
+    localparam integer SCALE_SHIFT = $clog2(gpu_pkg::GPU_FB_MAX_WIDTH / FB_WIDTH)  // 1: 2x2; 0: 1:1
 ) (
     input  wire             clk,        // the pixel clock (gpu_top's clk_pix)
     input  wire             rst,        // synchronous to clk
@@ -69,7 +72,7 @@ module gpu_vga #(
 
     // Stage 0: position -> framebuffer address y * FB_W + x, by shifts and adds of the set bits of
     // the constant FB_W (two for the contract's width): no multiplier for a constant.
-    function automatic [FB_AW-1:0] times_fb_w(input [7:0] y);
+    function automatic [FB_AW-1:0] times_fb_w(input [gpu_pkg::ROW_W-1:0] y);
         integer b;
         begin
             times_fb_w = {FB_AW{1'b0}};
@@ -83,8 +86,8 @@ module gpu_vga #(
     wire visible = (h_q < 10'(H_VISIBLE)) && (v_q < 10'(V_VISIBLE));
     wire hsync = (h_q >= 10'(H_VISIBLE + H_FRONT)) && (h_q < 10'(H_VISIBLE + H_FRONT + H_SYNC));
     wire vsync = (v_q >= 10'(V_VISIBLE + V_FRONT)) && (v_q < 10'(V_VISIBLE + V_FRONT + V_SYNC));
-    wire [8:0] fb_x = h_q[9:1];
-    wire [7:0] fb_y = v_q[8:1];
+    wire [gpu_pkg::X_W-1:0] fb_x = gpu_pkg::X_W'(h_q >> SCALE_SHIFT);
+    wire [gpu_pkg::ROW_W-1:0] fb_y = gpu_pkg::ROW_W'(v_q >> SCALE_SHIFT);
     assign fb_rd_en   = stb;
     assign fb_rd_addr = times_fb_w(fb_y) + FB_AW'(fb_x);
 

@@ -53,10 +53,13 @@ def scenes():
 
 
 def contract_params():
-    """The GPU's build parameters and their defaults: the capacities (the contract's limits), then
-    the [build] table, as contract/gen_contract.py declares them."""
+    """The GPU's build parameters and their defaults: the limits that are parameters (the
+    capacities and the frame), then the [build] table, as contract/gen_contract.py declares them
+    (its LIMIT_PARAMS, read from it)."""
+    sys.path.insert(0, os.path.join(ROOT, "contract"))
+    from gen_contract import LIMIT_PARAMS
     c = load(CONTRACT)
-    params = {"VTX_CAP": c["limits"]["vtx_cap"], "TRI_CAP": c["limits"]["tri_cap"]}
+    params = {name: c["limits"][key] for name, (key, _) in LIMIT_PARAMS.items()}
     params.update({k: v["default"] for k, v in c["build"].items()})
     return params
 
