@@ -79,6 +79,9 @@ FW_DEFS     ?=
 GPUSIM      ?= $(BUILD)/sim/gpusim
 FW_STACK_BYTES ?= 4096
 
+# The model scene's capacities with the firmware in an SDRAM ($(1): verts or faces): its manifest's
+# sdram_max_* (the SDRAM builds' default, bsp/soc/bsp.mk, and the wide unit tests', below).
+fw_sdram_model_cap = $(shell sed -n 's/^sdram_max_$(1) *= *\([0-9]*\).*/\1/p' firmware/scenes/model.manifest.toml)
 include bsp/$(FW_PLATFORM)/bsp.mk
 
 # After bsp.mk, which may choose another default for its platform.
@@ -358,11 +361,10 @@ FW_SIZE_ENV = SIZE=$(patsubst %gcc,%size,$(FW_CC)) NM=$(patsubst %gcc,%nm,$(FW_C
 FW_UNIT_TEST_SRCS := $(wildcard tests/firmware/*.c)
 FW_UNIT_CFLAGS     = $(HOST_CFLAGS) $(FW_WARN) -ffp-contract=off -Itests/firmware/fake_bsp -Ibsp \
                      -Itests/firmware -Itests -Icontract -Ifirmware -DSORT_COUNT_WORK
-# The wide build's model capacities: the SDRAM builds' (firmware/scenes/model.manifest.toml's
-# sdram_max_*), whose frames need 32-bit indices (config/build_options.h FW_RENDER_WIDE_INDEX).
-fw_unit_sdram_cap = $(shell sed -n 's/^sdram_max_$(1) *= *\([0-9]*\).*/\1/p' firmware/scenes/model.manifest.toml)
-FW_UNIT_WIDE_DEFS := -DFW_MODEL_MAX_VERTS=$(call fw_unit_sdram_cap,verts)u \
-                     -DFW_MODEL_MAX_FACES=$(call fw_unit_sdram_cap,faces)u
+# The wide build's model capacities: the SDRAM builds', whose frames need 32-bit indices
+# (config/build_options.h FW_RENDER_WIDE_INDEX).
+FW_UNIT_WIDE_DEFS := -DFW_MODEL_MAX_VERTS=$(call fw_sdram_model_cap,verts)u \
+                     -DFW_MODEL_MAX_FACES=$(call fw_sdram_model_cap,faces)u
 
 # $(1) = binary, $(2) = backend, $(3) = the model scene's capacities (-D flags)
 define FW_UNIT_RULES

@@ -35,10 +35,9 @@ endif
 # SOC_MEM=sdram (bsp/soc/soc_ram.mk): linked at the SDRAM's base, checked against its size, and
 # written as the boot image <elf>.img (bsp/soc/mkimage.py) for the flash instead of a RAM image.
 ifeq ($(SOC_MEM),sdram)
-# The model scene's capacities from the SDRAM: firmware/scenes/model.manifest.toml's sdram_max_*.
-sdram_model_cap = $(shell sed -n 's/^sdram_max_$(1) *= *\([0-9]*\).*/\1/p' firmware/scenes/model.manifest.toml)
-FW_MODEL_MAX_VERTS ?= $(call sdram_model_cap,verts)
-FW_MODEL_MAX_FACES ?= $(call sdram_model_cap,faces)
+# The model scene's capacities from the SDRAM (firmware.mk's fw_sdram_model_cap).
+FW_MODEL_MAX_VERTS ?= $(call fw_sdram_model_cap,verts)
+FW_MODEL_MAX_FACES ?= $(call fw_sdram_model_cap,faces)
 FW_BSP_LDFLAGS += -Wl,--defsym=__ram=$(SOC_SDRAM_BASE)
 FW_POSTLINK   = $(or $(PYTHON),python3) bsp/soc/postlink.py --image --ram-bytes $(SOC_SDRAM_BYTES) \
                 --size $(patsubst %gcc,%size,$(RV_CC)) --nm $(patsubst %gcc,%nm,$(RV_CC))
