@@ -138,7 +138,7 @@ int raster_main(int argc, char **argv)
     // pixel.
     const int fb_w = static_cast<int>(model.model()->cfg.fb_width);
     const int fb_h = static_cast<int>(model.model()->cfg.fb_height);
-    const int scale = 640 / fb_w;
+    const int scale = GPU_MODEL_SCREEN_W / fb_w;
     const std::size_t fb_pixels = static_cast<std::size_t>(fb_w) * static_cast<std::size_t>(fb_h);
     std::vector<uint8_t> rtl_raw(fb_pixels);
     std::vector<int> index_of(4096, -1);
@@ -148,20 +148,20 @@ int raster_main(int argc, char **argv)
     const uint8_t *rgb = sim.frame_rgb();
     for (int y = 0; y < fb_h; y++) {
         for (int x = 0; x < fb_w; x++) {
-            uint32_t colours[4];
-            for (int q = 0; q < scale * scale; q++) {
-                const uint8_t *c = &rgb[((scale * y + q / scale) * 640 + scale * x + q % scale) * 3];
-                colours[q] = (c[0] / 17u) << 8 | (c[1] / 17u) << 4 | (c[2] / 17u);
-            }
-            bool clean = index_of[colours[0]] >= 0;
+            const auto colour = [&](int q) {  // screen pixel q of the block, as RGB444
+                const uint8_t *c = &rgb[((scale * y + q / scale) * GPU_MODEL_SCREEN_W + scale * x + q % scale) * 3];
+                return (c[0] / 17u) << 8 | (c[1] / 17u) << 4 | (c[2] / 17u);
+            };
+            const uint32_t first = colour(0);
+            bool clean = index_of[first] >= 0;
             for (int q = 1; q < scale * scale; q++) {
-                clean = clean && colours[q] == colours[0];
+                clean = clean && colour(q) == first;
             }
             if (!clean) {
                 std::fprintf(stderr, "raster: VGA pixel (%d,%d) is not a clean %dx%d palette colour\n", x, y, scale, scale);
                 return 1;
             }
-            rtl_raw[y * fb_w + x] = static_cast<uint8_t>(index_of[colours[0]]);
+            rtl_raw[y * fb_w + x] = static_cast<uint8_t>(index_of[first]);
         }
     }
     const uint8_t *model_raw = gpu_model_front(model.model());

@@ -33,16 +33,15 @@ int16_t clamp16(int32_t v) { return static_cast<int16_t>(v < -32768 ? -32768 : (
 // A vertex from one of several families that stress different parts of the rule.
 Vertex random_vertex(Rng &r, int family, Vertex anchor, Frame fb)
 {
-    const int32_t kFbW = fb.w, kFbH = fb.h;
     switch (family) {
     case 0:  // anywhere on screen and a little beyond
-        return {r.range(-32 * 16, (kFbW + 32) * 16), r.range(-32 * 16, (kFbH + 32) * 16)};
+        return {r.range(-32 * 16, (fb.w + 32) * 16), r.range(-32 * 16, (fb.h + 32) * 16)};
     case 1:  // near the anchor: small and sub-pixel triangles
         return {anchor.x + r.range(-40, 40), anchor.y + r.range(-40, 40)};
     case 2:  // exactly on pixel centres, to land edges on sample points
-        return {r.range(-2, kFbW + 2) * 16 + 8, r.range(-2, kFbH + 2) * 16 + 8};
+        return {r.range(-2, fb.w + 2) * 16 + 8, r.range(-2, fb.h + 2) * 16 + 8};
     case 3:  // centres shifted by +-1/16 px
-        return {r.range(0, kFbW - 1) * 16 + 8 + r.range(-1, 1), r.range(0, kFbH - 1) * 16 + 8 + r.range(-1, 1)};
+        return {r.range(0, fb.w - 1) * 16 + 8 + r.range(-1, 1), r.range(0, fb.h - 1) * 16 + 8 + r.range(-1, 1)};
     default:  // the whole Q12.4 range, guard-band corners included
         if (r.chance(30)) {
             return {r.chance(50) ? -32768 : 32767, r.chance(50) ? -32768 : 32767};
@@ -139,7 +138,6 @@ int rtl_check_main(int argc, char **argv)
     uint64_t tris = 0, pixels = 0, frames = 0, resets = 0, back_checks = 0, overflows = 0, index_errors = 0;
     uint64_t masked = 0;
     const Frame fb{static_cast<int32_t>(cfg.fb_width), static_cast<int32_t>(cfg.fb_height)};
-    const int32_t kFbW = fb.w, kFbH = fb.h;
     std::vector<uint8_t> back(static_cast<std::size_t>(fb.w) * static_cast<std::size_t>(fb.h));
     bool must_clear = false;
 
@@ -179,10 +177,10 @@ int rtl_check_main(int argc, char **argv)
         const uint32_t ifamily = r.below(3);
         const uint32_t ibase = r.below(65536);
         uint64_t batch_shaded = 0;  // counted once the batch is checked
-        Vertex anchor = {r.range(0, kFbW * 16), r.range(0, kFbH * 16)};
+        Vertex anchor = {r.range(0, fb.w * 16), r.range(0, fb.h * 16)};
         for (uint32_t v = 0; v < nv; v++) {
             if (family == 1 && r.chance(20)) {
-                anchor = {r.range(0, kFbW * 16), r.range(0, kFbH * 16)};
+                anchor = {r.range(0, fb.w * 16), r.range(0, fb.h * 16)};
             }
             Vertex vx = random_vertex(r, r.chance(80) ? family : static_cast<int>(r.below(5)), anchor, fb);
             const uint32_t word = static_cast<uint16_t>(clamp16(vx.x)) | static_cast<uint32_t>(static_cast<uint16_t>(clamp16(vx.y))) << 16;

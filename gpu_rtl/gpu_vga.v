@@ -16,7 +16,6 @@ module gpu_vga #(
     parameter integer PIX_DIV = 4,  // clocks per pixel: 1 with a 25 MHz pixel clock, 4 at 100 MHz
     parameter integer FB_WIDTH = gpu_pkg::GPU_FB_WIDTH,    // the frame: 640 / SCALE x 480 / SCALE
     parameter integer FB_HEIGHT = gpu_pkg::GPU_FB_HEIGHT,
-    localparam integer FB_W = FB_WIDTH,
     localparam integer FB_AW = $clog2(FB_WIDTH * FB_HEIGHT),
     localparam integer SCALE_SHIFT = $clog2(gpu_pkg::GPU_FB_MAX_WIDTH / FB_WIDTH)  // 1: 2x2; 0: 1:1
 ) (
@@ -70,14 +69,14 @@ module gpu_vga #(
         end
     end
 
-    // Stage 0: position -> framebuffer address y * FB_W + x, by shifts and adds of the set bits of
-    // the constant FB_W (two for the contract's width): no multiplier for a constant.
+    // Stage 0: position -> framebuffer address y * FB_WIDTH + x, by shifts and adds of the set bits of
+    // the constant FB_WIDTH (two for the contract's width): no multiplier for a constant.
     function automatic [FB_AW-1:0] times_fb_w(input [gpu_pkg::ROW_W-1:0] y);
         integer b;
         begin
             times_fb_w = {FB_AW{1'b0}};
             for (b = 0; b < FB_AW; b = b + 1) begin
-                if (((FB_W >> b) & 1) != 0) begin
+                if (((FB_WIDTH >> b) & 1) != 0) begin
                     times_fb_w = times_fb_w + (FB_AW'(y) << b);
                 end
             end

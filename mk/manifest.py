@@ -52,7 +52,6 @@ import tomllib
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 SCENE_TABLE = os.path.join(ROOT, "firmware/scenes/scene_list.h")
 CONTRACT = os.path.join(ROOT, "contract/gpu_contract.toml")
-MODEL_H = os.path.join(ROOT, "firmware/scenes/model/model.h")
 BUILD_OPTIONS_H = os.path.join(ROOT, "firmware/config/build_options.h")
 
 SCHEMA = {

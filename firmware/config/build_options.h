@@ -55,6 +55,10 @@
 #define FW_WITH_GOURAUD 1
 #endif
 
+/* Whether a frame is sized by the scenes' wireframe columns (an outline emulated with triangles
+ * needs more vertices and primitives than the filled faces) or their filled ones (scene_list.h). */
+#define FW_FRAME_WIRE_COLUMNS (FW_WITH_WIREFRAME && FW_WITH_LINE_EMULATION)
+
 /* The model scene's frame columns (scenes/model/model.h explains each) for its capacities of v
  * vertices and f faces: the one scene whose frame is sized by switches (FW_MODEL_MAX_VERTS and
  * FW_MODEL_MAX_FACES, which firmware.mk passes to every object). Constant expressions the
@@ -71,10 +75,10 @@
  * every object of a program sees the same capacities and so agrees on it. (Without the capacities,
  * as in a test that builds no model scene, both are 0 here and the frame is narrow.) */
 #define FW_MODEL_FRAME_WIDEST_ \
-    (((FW_WITH_WIREFRAME && FW_WITH_LINE_EMULATION) ? FW_MODEL_WIRE_VERTS(FW_MODEL_MAX_FACES) \
-                                                    : FW_MODEL_FRAME_VERTS(FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES)) > 65536u || \
-     ((FW_WITH_WIREFRAME && FW_WITH_LINE_EMULATION) ? FW_MODEL_WIRE_PRIMS(FW_MODEL_MAX_FACES) \
-                                                    : FW_MODEL_FRAME_PRIMS(FW_MODEL_MAX_FACES)) > 65536u)
+    ((FW_FRAME_WIRE_COLUMNS ? FW_MODEL_WIRE_VERTS(FW_MODEL_MAX_FACES) \
+                            : FW_MODEL_FRAME_VERTS(FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES)) > 65536u || \
+     (FW_FRAME_WIRE_COLUMNS ? FW_MODEL_WIRE_PRIMS(FW_MODEL_MAX_FACES) \
+                            : FW_MODEL_FRAME_PRIMS(FW_MODEL_MAX_FACES)) > 65536u)
 #if FW_MODEL_FRAME_WIDEST_
 #define FW_RENDER_WIDE_INDEX 1
 #else

@@ -97,16 +97,12 @@ static void batch_fill_whole(struct render_frame *f, struct batch_words *out)
     for (uint32_t i = 0; i < np; i++) {
         const struct render_prim *p = &prim[render_draw_index(f, i)];
 
-#if FW_RENDER_WIDE_INDEX
-        /* nv <= vtx_cap <= GPU_VTX_CAP: every vertex number fits its 16-bit field. */
+        /* nv <= vtx_cap <= GPU_VTX_CAP: every vertex number fits its 16-bit field (a narrow
+         * primitive's words come back as they were: the compiler folds the unpacking away). */
         const struct batch_prim_fields r = batch_prim_read(p);
 
         prim_words[i * GPU_PRIM_WORDS] = r.v0 | (r.v1 << 16);
         prim_words[i * GPU_PRIM_WORDS + 1u] = r.v2 | r.hi;
-#else
-        prim_words[i * GPU_PRIM_WORDS] = p->w[0];
-        prim_words[i * GPU_PRIM_WORDS + 1u] = p->w[1];
-#endif
     }
     out->vtx_count = nv;
     out->prim_count = np;

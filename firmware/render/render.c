@@ -169,7 +169,7 @@ enum render_sphere_class render_sphere_classify(const struct proj_setup *ps, vec
  * prim_cap <= RENDER_INDEX_LIMIT = 2^SORT_KEY_SHIFT or less. */
 static inline sort_item_t render_sort_item(uint32_t key, uint32_t index)
 {
-    return ((sort_item_t)(key ^ 0xFFFFu) << SORT_KEY_SHIFT) | index;  /* key ^ 0xFFFF = 65535 - key */
+    return sort_item_make(key ^ 0xFFFFu, index);  /* key ^ 0xFFFF = 65535 - key */
 }
 
 static void render_emit_prim(struct render_frame *f, uint32_t i0, uint32_t i1, uint32_t i2,
@@ -281,7 +281,7 @@ static bool render_edge_first(struct render_frame *f, uint32_t a, uint32_t b)
 {
     const uint32_t lo = (a < b) ? a : b;
     const uint32_t hi = (a < b) ? b : a;
-    const sort_item_t key = ((sort_item_t)lo << SORT_KEY_SHIFT) | hi;  /* a != b: never 0 */
+    const sort_item_t key = sort_item_make(lo, hi);  /* a != b: never 0 */
     const uint32_t mask = f->edge_cap - 1u;
     uint32_t i;
 

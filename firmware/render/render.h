@@ -248,13 +248,13 @@ void render_overlay_crosshair(struct render_frame *f, const struct render_pass *
 /* Index of the i-th primitive to draw (sorted ones, then the overlay; see sort_item). */
 static inline uint32_t render_draw_index(const struct render_frame *f, uint32_t i)
 {
-    return (uint32_t)f->sort_item[i] & (uint32_t)((1ull << SORT_KEY_SHIFT) - 1u);
+    return sort_item_payload(f->sort_item[i]);
 }
 
 /* The depth key of primitive i (larger = farther), as emitted. Before render_sort only. */
 static inline uint16_t render_depth_key(const struct render_frame *f, uint32_t i)
 {
-    return (uint16_t)(0xFFFFu - (uint32_t)(f->sort_item[i] >> SORT_KEY_SHIFT));
+    return (uint16_t)(0xFFFFu - sort_item_key(f->sort_item[i]));
 }
 
 #endif /* RENDER_H */

@@ -18,10 +18,10 @@ static void sort_insertion(sort_item_t *item, uint32_t n)
 {
     for (uint32_t i = 1; i < n; i++) {
         const sort_item_t x = item[i];
-        const uint32_t k = (uint32_t)(x >> SORT_KEY_SHIFT);
+        const uint32_t k = sort_item_key(x);
         uint32_t j = i;
 
-        while (j > 0u && (uint32_t)(item[j - 1u] >> SORT_KEY_SHIFT) > k) {
+        while (j > 0u && sort_item_key(item[j - 1u]) > k) {
             item[j] = item[j - 1u];
             j--;
             SORT_WORK(1);
@@ -96,7 +96,7 @@ void sort_items(sort_item_t *item, sort_item_t *tmp, uint32_t n, struct sort_scr
         SORT_WORK(4);
     }
     for (uint32_t i = 0; i < n; i++) {
-        const uint32_t key = (uint32_t)(item[i] >> SORT_KEY_SHIFT);
+        const uint32_t key = sort_item_key(item[i]);
 
         hist[0][key & 0xFFu]++;
         hist[1][key >> 8]++;

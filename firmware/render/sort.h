@@ -22,14 +22,32 @@
 
 #include "config/build_options.h"
 
-/* A sort item and where its 16-bit key starts. */
+/* A sort item, where its 16-bit key starts, and the payload's bits below it. */
 #if FW_RENDER_WIDE_INDEX
 typedef uint64_t sort_item_t;
 #define SORT_KEY_SHIFT 32u
+#define SORT_PAYLOAD_MASK 0xFFFFFFFFu
 #else
 typedef uint32_t sort_item_t;
 #define SORT_KEY_SHIFT 16u
+#define SORT_PAYLOAD_MASK 0xFFFFu
 #endif
+
+/* The item of a key (< 2^16) and a payload (within SORT_PAYLOAD_MASK), and its two parts. */
+static inline sort_item_t sort_item_make(uint32_t key, uint32_t payload)
+{
+    return ((sort_item_t)key << SORT_KEY_SHIFT) | payload;
+}
+
+static inline uint32_t sort_item_key(sort_item_t x)
+{
+    return (uint32_t)(x >> SORT_KEY_SHIFT);
+}
+
+static inline uint32_t sort_item_payload(sort_item_t x)
+{
+    return (uint32_t)x & SORT_PAYLOAD_MASK;
+}
 
 /* Below this many items a stable insertion sort is cheaper than the two bucket passes. */
 #define SORT_SMALL_N 32u

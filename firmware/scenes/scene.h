@@ -51,8 +51,8 @@ enum scene_needs {
     SCENE_STATE_BYTES_##name = (state), SCENE_MAX_OBJECTS_##name = (objects), \
     SCENE_FILLED_VERTS_##name = (verts), SCENE_FILLED_PRIMS_##name = (prims), \
     SCENE_WIRE_VERTS_##name = (wverts), SCENE_WIRE_PRIMS_##name = (wprims), \
-    SCENE_MAX_VERTS_##name = (FW_WITH_WIREFRAME && FW_WITH_LINE_EMULATION) ? (wverts) : (verts), \
-    SCENE_MAX_PRIMS_##name = (FW_WITH_WIREFRAME && FW_WITH_LINE_EMULATION) ? (wprims) : (prims),
+    SCENE_MAX_VERTS_##name = FW_FRAME_WIRE_COLUMNS ? (wverts) : (verts), \
+    SCENE_MAX_PRIMS_##name = FW_FRAME_WIRE_COLUMNS ? (wprims) : (prims),
 #include "scenes/scene_list.h"
 #undef SCENE
     SCENE_NEEDS_END

@@ -40,13 +40,13 @@ union scene_set_objects_max {
 };
 union scene_set_verts_max {
 #define SCENE(name, state, objects, verts, prims, wverts, wprims) \
-    unsigned char name[(FW_WITH_WIREFRAME && FW_WITH_LINE_EMULATION) ? (wverts) : (verts)];
+    unsigned char name[FW_FRAME_WIRE_COLUMNS ? (wverts) : (verts)];
 #include "scenes/scene_list.h"
 #undef SCENE
 };
 union scene_set_prims_max {
 #define SCENE(name, state, objects, verts, prims, wverts, wprims) \
-    unsigned char name[(FW_WITH_WIREFRAME && FW_WITH_LINE_EMULATION) ? (wprims) : (prims)];
+    unsigned char name[FW_FRAME_WIRE_COLUMNS ? (wprims) : (prims)];
 #include "scenes/scene_list.h"
 #undef SCENE
 };

@@ -269,7 +269,7 @@ void test_batch_wide_frame(void)
         CHECK_EQ(seen[p], 0);
         seen[p] = 1;
         if (i > 0u) {  /* far to near: draw keys ascending */
-            CHECK(frame.sort_item[i] >> SORT_KEY_SHIFT >= frame.sort_item[i - 1u] >> SORT_KEY_SHIFT);
+            CHECK(sort_item_key(frame.sort_item[i]) >= sort_item_key(frame.sort_item[i - 1u]));
         }
     }
     CHECK_EQ(render_draw_index(&frame, frame.prim_count - 1u), frame.prim_count - 1u);  /* the overlay */

@@ -17,22 +17,8 @@ static sort_item_t items[SORT_TEST_MAX];
 static sort_item_t tmp[SORT_TEST_MAX];
 static sort_item_t expect[SORT_TEST_MAX];
 
-/* An item's parts, and an item of them. */
-#define PAYLOAD_BASE (FW_RENDER_WIDE_INDEX ? 100000u : 0u)  /* beyond 16 bits where items allow */
-static uint32_t key_of(sort_item_t x)
-{
-    return (uint32_t)(x >> SORT_KEY_SHIFT);
-}
-
-static uint32_t payload_of(sort_item_t x)
-{
-    return (uint32_t)x & (uint32_t)((1ull << SORT_KEY_SHIFT) - 1u);
-}
-
-static sort_item_t item(uint32_t key, uint32_t payload)
-{
-    return ((sort_item_t)key << SORT_KEY_SHIFT) | payload;
-}
+/* Payloads start beyond 16 bits where items allow. */
+#define PAYLOAD_BASE (FW_RENDER_WIDE_INDEX ? 100000u : 0u)
 
 /* Reference: stable insertion sort by key (slow, obviously right). */
 static void ref_sort(sort_item_t *a, uint32_t n)
@@ -41,7 +27,7 @@ static void ref_sort(sort_item_t *a, uint32_t n)
         const sort_item_t x = a[i];
         uint32_t j = i;
 
-        while (j > 0u && key_of(a[j - 1u]) > key_of(x)) {
+        while (j > 0u && sort_item_key(a[j - 1u]) > sort_item_key(x)) {
             a[j] = a[j - 1u];
             j--;
         }
@@ -54,7 +40,7 @@ static void check_sort(uint32_t n, uint32_t key_mask, uint32_t key_or)
     struct sort_scratch s;
 
     for (uint32_t i = 0; i < n; i++) {
-        items[i] = item((unit_rand() & key_mask) | key_or, PAYLOAD_BASE + i);  /* submission order */
+        items[i] = sort_item_make((unit_rand() & key_mask) | key_or, PAYLOAD_BASE + i);  /* submission order */
     }
     memcpy(expect, items, n * sizeof items[0]);
     ref_sort(expect, n);
@@ -62,15 +48,15 @@ static void check_sort(uint32_t n, uint32_t key_mask, uint32_t key_or)
     for (uint32_t i = 0; i < n; i++) {
         if (items[i] != expect[i]) {
             unit_fail(__FILE__, __LINE__, "n=%u mask=0x%x: item %u is key %u payload %u, expected "
-                      "key %u payload %u", n, key_mask, i, key_of(items[i]), payload_of(items[i]),
-                      key_of(expect[i]), payload_of(expect[i]));
+                      "key %u payload %u", n, key_mask, i, sort_item_key(items[i]), sort_item_payload(items[i]),
+                      sort_item_key(expect[i]), sort_item_payload(expect[i]));
             return;
         }
     }
     /* Stability spelled out: among equal keys, payloads (submission order) increase. */
     for (uint32_t i = 1; i < n; i++) {
-        CHECK(key_of(items[i - 1u]) < key_of(items[i]) ||
-              payload_of(items[i - 1u]) < payload_of(items[i]));
+        CHECK(sort_item_key(items[i - 1u]) < sort_item_key(items[i]) ||
+              sort_item_payload(items[i - 1u]) < sort_item_payload(items[i]));
     }
 }
 
@@ -95,12 +81,12 @@ static uint64_t sort_reverse_work(uint32_t n)
     struct sort_scratch s;
 
     for (uint32_t i = 0; i < n; i++) {
-        items[i] = item(0xFFFFu - (i % 65536u), PAYLOAD_BASE + i);
+        items[i] = sort_item_make(0xFFFFu - (i % 65536u), PAYLOAD_BASE + i);
     }
     sort_work = 0;
     sort_items(items, tmp, n, &s);
     for (uint32_t i = 1; i < n; i++) {
-        CHECK(key_of(items[i - 1u]) <= key_of(items[i]));
+        CHECK(sort_item_key(items[i - 1u]) <= sort_item_key(items[i]));
     }
     return sort_work;
 }
@@ -130,10 +116,10 @@ void test_sort_small_without_scratch(void)
     const uint32_t n = SORT_SMALL_N - 1u;
 
     for (uint32_t i = 0; i < n; i++) {
-        few[i] = item(n - i, PAYLOAD_BASE + i);
+        few[i] = sort_item_make(n - i, PAYLOAD_BASE + i);
     }
     sort_items(few, few_tmp, n, NULL);
     for (uint32_t i = 0; i < n; i++) {
-        CHECK(few[i] == item(i + 1u, PAYLOAD_BASE + n - 1u - i));
+        CHECK(few[i] == sort_item_make(i + 1u, PAYLOAD_BASE + n - 1u - i));
     }
 }

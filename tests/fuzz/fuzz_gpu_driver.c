@@ -277,10 +277,10 @@ static void make_frame(struct reader *r)
         frame.sort_item[j] = t;
     }
     for (uint32_t i = 0; i < frame.sorted_count; i++) {
-        frame.sort_item[i] |= (sort_item_t)take8(r) << SORT_KEY_SHIFT;  /* a draw key above the index */
+        frame.sort_item[i] |= sort_item_make(take8(r), 0u);  /* a draw key above the index */
     }
     for (uint32_t i = frame.sorted_count; i < np; i++) {
-        frame.sort_item[i] = ((sort_item_t)0xFFFFu << SORT_KEY_SHIFT) | i;  /* the overlay's items name themselves */
+        frame.sort_item[i] = sort_item_make(0xFFFFu, i);  /* the overlay's items name themselves */
     }
 }
 
