@@ -23,25 +23,41 @@ VERILATOR_RT_DIR   := $(BUILD)/verilator-rt
 VERILATOR_RT       := $(VERILATOR_RT_DIR)/libverilated-rt.a
 VERILATOR_RT_NAMES := verilated verilated_threads verilated_dpi verilated_fst_c
 VERILATOR_RT_MAKE  := VM_GLOBAL_FAST= VM_GLOBAL_SLOW=
+# The builds as data (mk/builds.toml, tests/suites.toml): mk/gen_builds.py writes $(BUILD)/gen/,
+# the lists read here and the rules read below, by cosim/soc/socsim.mk and by firmware/firmware.mk
+# (mk/gen.mk); the contract's frames (CONTRACT_FB, CONTRACT_FB_MAX) with them.
+include mk/gen.mk
+# FB=WxH: the frame of the GPU that run, run-soc and the window simulate: the contract's default
+# ($(CONTRACT_FB), shown 2x2) or its largest ($(CONTRACT_FB_MAX), shown 1:1; the simulators'
+# names then carry f<width>, a manifest build's tag too). The firmware reads the frame from the
+# GPU (FB_SIZE): one program draws either.
+FB          ?= $(CONTRACT_FB)
+FB_MAX_GFLAGS := -GFB_WIDTH=$(word 1,$(subst x, ,$(CONTRACT_FB_MAX))) -GFB_HEIGHT=$(word 2,$(subst x, ,$(CONTRACT_FB_MAX)))
+ifeq ($(FB),$(CONTRACT_FB))
+FB_TAG      :=
+FB_GFLAGS   :=
+else ifeq ($(FB),$(CONTRACT_FB_MAX))
+FB_TAG      := f$(word 1,$(subst x, ,$(FB)))
+FB_GFLAGS   := $(FB_MAX_GFLAGS)
+else ifneq ($(GEN_READ),)
+$(error FB=$(FB): $(CONTRACT_FB) or $(CONTRACT_FB_MAX))
+endif
 # SCENE=x on the command line of run, bitstream ...: the scene's manifest build; FULL=1: the full one.
 include mk/manifest.mk
 
 SPAN_W      ?= 8
 ZBUF        ?= 0
-# The builds as data (mk/builds.toml, tests/suites.toml): mk/gen_builds.py writes $(BUILD)/gen/,
-# the lists read here and the rules read below, by cosim/soc/socsim.mk and by firmware/firmware.mk
-# (mk/gen.mk).
-include mk/gen.mk
 # GOURAUD=1: run on a GPU built with Gouraud triangles (ENABLE_GOURAUD, with the depth buffer):
 # sim-g-w<SPAN_W> and sim-fast-g-w<SPAN_W>; the scenes with vertex normals are then shaded.
 GOURAUD     ?= 0
 GPUSIM_G    := $(if $(filter 1,$(GOURAUD)),g-)
-GPUSIM      := $(BUILD)/sim-$(GPUSIM_G)w$(SPAN_W)/gpusim
+GPUSIM_F    := $(if $(FB_TAG),$(FB_TAG)-)
+GPUSIM      := $(BUILD)/sim-$(GPUSIM_F)$(GPUSIM_G)w$(SPAN_W)/gpusim
 ZBUF_SIM    := $(BUILD)/sim-z-w8/gpusim
 GOURAUD_SIM := $(BUILD)/sim-g-w8/gpusim
 GOURAUD_SIM_FAST := $(BUILD)/sim-fast-g-w8/gpusim
 GPUSIM_W8   := $(BUILD)/sim-w8/gpusim
-GPUSIM_FAST := $(BUILD)/sim-fast-$(GPUSIM_G)w$(SPAN_W)/gpusim
+GPUSIM_FAST := $(BUILD)/sim-fast-$(GPUSIM_F)$(GPUSIM_G)w$(SPAN_W)/gpusim
 PNG_DIFF    := $(BUILD)/tools/png_diff
 # Defined up here: bench-error-path-run's prerequisites are expanded where that rule is read.
 EXACT_REF   := $(BUILD)/tools/exact_ref
@@ -150,7 +166,7 @@ lint:
 	@test -z "$(RTL_UNLISTED)" || { echo "lint: not in $(RTL_FILES): $(RTL_UNLISTED)"; exit 1; }
 	$(Q)$(call say,LINT,gpu_top)$(VERILATOR) --lint-only -Wall --top-module gpu_top $(RTL_LINT) -f $(RTL_FILES)
 	$(Q)$(call say,LINT,gpu_top 640x480 depth)$(VERILATOR) --lint-only -Wall --top-module gpu_top $(RTL_LINT) \
-	  -GFB_WIDTH=640 -GFB_HEIGHT=480 -GENABLE_ZBUF=1 -f $(RTL_FILES)
+	  $(FB_MAX_GFLAGS) -GENABLE_ZBUF=1 -f $(RTL_FILES)
 	@# The bus slaves are not under gpu_top (a SoC puts one in front of it): each is its own top.
 	$(Q)$(call say,LINT,$(RTL_BUS_SLAVES))$(foreach m,$(RTL_BUS_SLAVES),$(VERILATOR) --lint-only -Wall --top-module $(m) $(RTL_LINT) gpu_rtl/$(m).v &&) true
 	@echo "lint: $(words $(RTL_V)) files of $(RTL_FILES) clean under -Wall"

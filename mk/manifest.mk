@@ -19,7 +19,7 @@
 # simulators per parameter set: the default ones where the manifest's GPU is the
 # default (SPAN_W aside), else $(BUILD)/sim-cfg-w<N>-<tag>/, sim-fast-cfg-w<N>-<tag>/ and
 # socsim-<RAM>k-w<N>-<tag>/ (tag: z1 depth buffer, l0 no lines, m0 no framebuffer write mask: a scene
-# without the anaglyph, v<N> t<N> capacities, g1 Gouraud), shared by
+# without the anaglyph, v<N> t<N> capacities, g1 Gouraud, f<width> the largest frame), shared by
 # every scene with that set.
 #
 #   manifest-show [SCENE=x] [FULL=1]   what such a build uses: its ELFs, simulators, RTL parameters
@@ -52,6 +52,12 @@ SOC_RAM_KIB ?= auto
 ifeq ($(GOURAUD),1)
 MANIFEST_GPU_TAG    := $(if $(MANIFEST_GPU_TAG),$(MANIFEST_GPU_TAG)-g1,g1)
 MANIFEST_GPU_GFLAGS := $(strip $(MANIFEST_GPU_GFLAGS) -GENABLE_GOURAUD=1)
+endif
+# FB=<the contract's largest frame> (the Makefile's FB_TAG): the manifest's GPU built for it (tag
+# f<width>).
+ifneq ($(FB_TAG),)
+MANIFEST_GPU_TAG    := $(if $(MANIFEST_GPU_TAG),$(MANIFEST_GPU_TAG)-$(FB_TAG),$(FB_TAG))
+MANIFEST_GPU_GFLAGS := $(strip $(MANIFEST_GPU_GFLAGS) $(FB_GFLAGS))
 endif
 MANIFEST_SIM_NAME := $(if $(MANIFEST_GPU_TAG),cfg-w$(SPAN_W)-$(MANIFEST_GPU_TAG),w$(SPAN_W))
 # Firmware: firmware.mk's FW_DIR (QEMU and soc platforms), socsim.mk's run-soc ELF, board.mk's.

@@ -53,6 +53,8 @@ void bsp_init(void)
     mc.wmask = !host_cfg.no_wmask;
     mc.gouraud = host_cfg.gouraud;
     mc.zbuf_bits = host_cfg.zbuf_bits;
+    mc.fb_width = host_cfg.fb_width;
+    mc.fb_height = host_cfg.fb_height;
     gpu_model_reset_config(host_gpu, &mc);
     if (host_cfg.unquantised_dir != NULL) {
         static gpu_model_shade_probe probe;

@@ -25,6 +25,8 @@ struct bsp_host_config {
     bool no_wmask;           /* a GPU built without the write mask (CAPS_WMASK = 0) */
     bool gouraud;            /* a GPU built with Gouraud triangles (CAPS_GOURAUD) */
     unsigned zbuf_bits;      /* ZBUF_BITS, 1 .. 16 */
+    uint32_t fb_width;       /* the frame (FB_SIZE): the contract's default or its largest */
+    uint32_t fb_height;
     const char *dump_dir;    /* the scene of every frame for bench/exact_ref, NULL: none */
     const char *unquantised_dir;  /* PNG per swapped frame in unquantised Gouraud colours, NULL: none */
     const uint8_t *model_file;    /* --model's mesh file, NULL: none (bsp_host_boot_model) */

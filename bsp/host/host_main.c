@@ -5,7 +5,8 @@
  * become a bsp_host_config, which bsp_init() applies and the loop's hooks read (bsp_platform.h).
  *
  *   fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] [--zbuf-bits N] [--no-wmask]
- *           [--gouraud] [--span-w N] [--model FILE] [--dump-scene DIR] [--unquantised-frames DIR]
+ *           [--gouraud] [--span-w N] [--frame WxH] [--model FILE] [--dump-scene DIR]
+ *           [--unquantised-frames DIR]
  *
  *   --frames DIR      write each swapped frame as DIR/NNNN.png (as gpusim cosim does)
  *   --unquantised-frames DIR  also write each swapped frame as DIR/NNNN.png with its Gouraud pixels
@@ -20,6 +21,8 @@
  *   --zbuf-bits N     the depth bits its buffer keeps (ZBUF_BITS, CAPS_ZBUF_BITS: 1 .. 16; default 16)
  *   --gouraud         model a GPU built with Gouraud triangles (CAPS_GOURAUD = 1)
  *   --span-w N        SPAN_W the model reports (1, 4, 8, 16; default 8)
+ *   --frame WxH       the frame the model draws (FB_SIZE): the contract's 320x240 (the default) or
+ *                     its largest, 640x480, as a GPU built with FB_WIDTH x FB_HEIGHT
  *   --dump-scene DIR  write each frame's scene after its update as DIR/NNNN.scene: world-space
  *                     triangles with their normals and materials, light, camera, palette (the
  *                     exact reference's input, bench/exact_ref; format in bsp/host/scene_dump.c)
@@ -37,6 +40,7 @@
 
 #include "bsp.h"
 #include "bsp_host.h"
+#include "gpu_regs.h"
 
 /* A mesh file for --model: read whole (the validator, at the scene's start, says what is wrong). */
 static int host_load_model(const char *path, struct bsp_host_config *cfg)
@@ -71,7 +75,8 @@ static int host_make_dir(const char *dir)
 static int host_usage(void)
 {
     fprintf(stderr, "usage: fw-host [--frames DIR] [--keys-at N:TEXT]... [--no-lines] [--zbuf] "
-                    "[--zbuf-bits N] [--no-wmask] [--gouraud] [--span-w N] [--model FILE] [--dump-scene DIR] "
+                    "[--zbuf-bits N] [--no-wmask] [--gouraud] [--span-w N] [--frame WxH] [--model FILE] "
+                    "[--dump-scene DIR] "
                     "[--unquantised-frames DIR]\n");
     return 2;
 }
@@ -136,6 +141,21 @@ int bsp_args(int argc, char **argv)
             if (host_load_model(argv[++i], &cfg) != 0) {
                 return 2;
             }
+        } else if (strcmp(a, "--frame") == 0 && has_value) {
+            unsigned w = 0;
+            unsigned h = 0;
+            char tail = 0;
+
+            if (sscanf(argv[++i], "%ux%u%c", &w, &h, &tail) != 2 ||
+                !((w == GPU_FB_WIDTH && h == GPU_FB_HEIGHT) ||
+                  (w == GPU_FB_MAX_WIDTH && h == GPU_FB_MAX_HEIGHT))) {
+                fprintf(stderr, "fw-host: --frame wants %ux%u or %ux%u, got '%s'\n",
+                        (unsigned)GPU_FB_WIDTH, (unsigned)GPU_FB_HEIGHT,
+                        (unsigned)GPU_FB_MAX_WIDTH, (unsigned)GPU_FB_MAX_HEIGHT, argv[i]);
+                return 2;
+            }
+            cfg.fb_width = w;
+            cfg.fb_height = h;
         } else if (strcmp(a, "--span-w") == 0 && has_value) {
             cfg.span_w = (unsigned)strtoul(argv[++i], NULL, 10);
         } else {

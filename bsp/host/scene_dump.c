@@ -32,7 +32,6 @@
 
 #include "bsp.h"
 #include "bsp_host.h"
-#include "gpu_regs.h"
 #include "scenes/scene_export.h"
 
 static void dump_tri(void *ctx, const struct scene_export_tri *t)
@@ -64,7 +63,7 @@ void bsp_host_scene_dump(const struct scene *s, const uint16_t *palette, unsigne
     }
     scene_export_view(s, &v);
     fprintf(f, "exactref-scene 1\n");
-    fprintf(f, "screen %u %u %a %a %a %a %a\n", (unsigned)GPU_FB_WIDTH, (unsigned)GPU_FB_HEIGHT,
+    fprintf(f, "screen %u %u %a %a %a %a %a\n", (unsigned)v.width, (unsigned)v.height,
             v.cx, v.cy, v.focal, v.near, v.far);
     fprintf(f, "camera %a %a %a %u %ld\n", v.eye[0], v.eye[1], v.eye[2], (unsigned)v.yaw,
             (long)v.pitch);

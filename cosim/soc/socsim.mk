@@ -21,8 +21,9 @@ include bsp/soc/soc_ram.mk
 
 # ZBUF=1 (outside a manifest build, whose mk/manifest.mk sets both itself): the GPU with its depth
 # buffer, in a folder of its own (-z), as bench-error's depth-tested configurations run it.
-SOCSIM_GPU_GFLAGS ?= $(if $(filter 1,$(ZBUF)), -GENABLE_ZBUF=1)
-SOCSIM_DIR   := $(BUILD)/socsim$(SOC_MEM_SUFFIX)-$(SOC_RAM_KIB)k$(if $(filter 1,$(ZBUF)),-z)$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
+# FB=<the largest frame>: its GPU (the Makefile's FB_TAG), in a folder of its own (-f<width>).
+SOCSIM_GPU_GFLAGS ?= $(if $(filter 1,$(ZBUF)), -GENABLE_ZBUF=1)$(if $(FB_GFLAGS), $(FB_GFLAGS))
+SOCSIM_DIR   := $(BUILD)/socsim$(SOC_MEM_SUFFIX)-$(SOC_RAM_KIB)k$(if $(filter 1,$(ZBUF)),-z)$(if $(FB_TAG),-$(FB_TAG))$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
 SOCSIM       := $(SOCSIM_DIR)/socsim
 SOCSIM_SRC   := $(filter-out cosim/soc/tmds_decoder.cpp,$(wildcard cosim/soc/*.cpp)) cosim/harness.cpp \
                 cosim/model_check.cpp cosim/uart_pump.cpp cosim/uart_terminal.cpp cosim/uart_pty.cpp \

@@ -302,9 +302,10 @@ static void app_report_init_error(int rc, const struct gpu_info *info)
                (unsigned long)info->version, (unsigned long)GPU_VERSION_VALUE);
         break;
     case GPU_E_GEOMETRY:
-        printf("error: unexpected framebuffer size (FB_SIZE=0x%08lx, expected %lux%lu)\n",
-               (unsigned long)info->fb_size, (unsigned long)GPU_FB_WIDTH,
-               (unsigned long)GPU_FB_HEIGHT);
+        printf("error: unexpected framebuffer size (FB_SIZE=0x%08lx, expected at least 1x1 and at "
+               "most %lux%lu)\n",
+               (unsigned long)info->fb_size, (unsigned long)GPU_FB_MAX_WIDTH,
+               (unsigned long)GPU_FB_MAX_HEIGHT);
         break;
     case GPU_E_BUFFERS:
         printf("error: GPU buffer capacities out of range (VTX_CAP=%lu, TRI_CAP=%lu; expected "
@@ -914,12 +915,13 @@ static void app_boot(struct app *app)
            FW_SCENE, BSP_NAME, REAL_BACKEND_NAME, (unsigned long)app->gpu.info.id,
            (unsigned long)app->gpu.info.version, (unsigned long)app->gpu.info.caps,
            (unsigned long)app->gpu.info.vtx_cap, (unsigned long)app->gpu.info.tri_cap,
-           (unsigned long)(app->gpu.info.fb_size & 0xFFFFu),
-           (unsigned long)(app->gpu.info.fb_size >> 16), (unsigned)FW_FRAMES);
+           (unsigned long)gpu_fb_width(&app->gpu.info),
+           (unsigned long)gpu_fb_height(&app->gpu.info), (unsigned)FW_FRAMES);
     if (rc != GPU_OK) {
         app_report_init_error(rc, &app->gpu.info);
         app_fail(FW_EXIT_GPU_INIT);
     }
+    scene_set_frame(&app->scene, gpu_fb_width(&app->gpu.info), gpu_fb_height(&app->gpu.info));
     app_check_words(app);
     desc = scene_find(FW_SCENE);
     if (desc == 0) {

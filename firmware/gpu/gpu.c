@@ -52,7 +52,10 @@ int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n)
     if ((info->version >> 16) != (GPU_VERSION_VALUE >> 16) || info->version < GPU_VERSION_VALUE) {
         return GPU_E_VERSION;
     }
-    if (info->fb_size != ((GPU_FB_HEIGHT << 16) | GPU_FB_WIDTH)) {
+    /* Any frame up to the contract's largest: the projection's ranges are argued for those
+     * (render/proj.h). */
+    if (gpu_fb_width(info) == 0u || gpu_fb_width(info) > GPU_FB_MAX_WIDTH ||
+        gpu_fb_height(info) == 0u || gpu_fb_height(info) > GPU_FB_MAX_HEIGHT) {
         return GPU_E_GEOMETRY;
     }
     /* gpu_submit_batch trusts the capacities: they must fit the windows (else buffer words would

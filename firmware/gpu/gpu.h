@@ -34,7 +34,7 @@ enum gpu_result {
     GPU_OK = 0,
     GPU_E_NOT_FOUND = -1,  /* ID register is not GPU_ID_VALUE */
     GPU_E_VERSION = -2,    /* contract major version differs, or minor is older than ours */
-    GPU_E_GEOMETRY = -3,   /* FB_SIZE is not GPU_FB_WIDTH x GPU_FB_HEIGHT */
+    GPU_E_GEOMETRY = -3,   /* FB_SIZE is empty or beyond GPU_FB_MAX_WIDTH x GPU_FB_MAX_HEIGHT */
     GPU_E_CAPACITY = -4,   /* the batch does not fit VTX_CAP / TRI_CAP */
     GPU_E_PENDING = -5,    /* a batch was submitted and not yet waited for */
     GPU_E_TIMEOUT = -6,    /* DONE_SEQ did not reach the tag within max_polls reads */
@@ -81,8 +81,19 @@ struct gpu_info {
     uint32_t caps;
     uint32_t vtx_cap;
     uint32_t tri_cap;
-    uint32_t fb_size;
+    uint32_t fb_size;   /* FB_SIZE: the frame, height << 16 | width */
 };
+
+/* The frame the device draws, from FB_SIZE. */
+static inline uint32_t gpu_fb_width(const struct gpu_info *info)
+{
+    return info->fb_size & 0xFFFFu;
+}
+
+static inline uint32_t gpu_fb_height(const struct gpu_info *info)
+{
+    return info->fb_size >> 16;
+}
 
 struct gpu_dev {
     struct gpu_info info;

@@ -4,32 +4,47 @@
  *
  * Screen mapping: sx = cx + f x / z, sy = cy - f y / z (Q12.4: 1/16 px; y down), f = focal length.
  *
- * Guard band: the GPU takes any Q12.4 coordinate (+-2048 px) and clips to the 320 x 240 screen
- * itself, so the firmware only clips where a vertex would leave the band |f x / z| <= 1536 px,
- * |f y / z| <= 1536 px (sx in -1376 .. 1696 px, sy in -1416 .. 1656 px: 350 px of margin inside
- * the Q12.4 range for the rounding of clipped vertices). Such a vertex gets PROJ_OUT_GUARD and its
- * triangles go through clip.c against the band's four planes |x| = g z, |y| = g z, g = 1536 / f.
- * Keeping |sx|, |sy| <= 27136 also keeps the edge-function differences under 2^16.
+ * Frame: the GPU's own (FB_SIZE, read by gpu_init), any size up to the contract's largest,
+ * GPU_FB_MAX_WIDTH x GPU_FB_MAX_HEIGHT (640 x 480); proj_setup_init takes it. Focal lengths are
+ * given for a frame of the contract's default height (GPU_FB_HEIGHT, 240 lines) and scaled to the
+ * frame's, so that a scene shows the same field of view at every size: 200 px at 240 lines is
+ * 400 px at 480.
+ *
+ * Guard band: the GPU takes any Q12.4 coordinate (+-2048 px) and clips to its frame itself, so
+ * the firmware only clips where a vertex would leave the band |f x / z| <= 1536 px,
+ * |f y / z| <= 1536 px around the frame's centre. Such a vertex gets PROJ_OUT_GUARD and its
+ * triangles go through clip.c against the band's four planes |x| = g z, |y| = g z,
+ * g = 1536 / f; a stored offset is never beyond the band (a GUARD vertex's is clamped to it).
+ * So sx lies within cx +- 1536 px: for the largest frame (cx = 320 px) -1216 .. 1856 px, 192 px
+ * inside the Q12.4 range (PROJ_GUARD_FITS checks it for the contract's largest frame; at
+ * 320 x 240, -1376 .. 1696 px, 352 px inside), and two vertices' coordinates differ by at most
+ * 2 * 1536 * 16 = 49152 < 2^16, which keeps the GPU's edge-function differences in range at
+ * every frame size.
  *
  * Near plane: z >= PROJ_NEAR (0.25 view units). A nearer vertex is not projected at all
  * (PROJ_OUT_NEAR); its triangles are cut by clip.c (Sutherland-Hodgman), so nothing behind the eye
  * is drawn and nothing crossing the plane vanishes. A vertex exactly on the plane is in front.
  *
- * Outcodes: LEFT/RIGHT/TOP/BOTTOM mean the vertex lies beyond the screen's outermost pixel centres
- * (sx < 8, sx > 16*319 + 8, ...), exactly the GPU's bounding-box rejection; FAR means z > far.
+ * Outcodes: LEFT/RIGHT/TOP/BOTTOM mean the vertex lies beyond the frame's outermost pixel centres
+ * (sx < 8, sx > 16 (W - 1) + 8, ...), exactly the GPU's bounding-box rejection; FAR means z > far.
  * A triangle whose three vertices share one of those bits (or all have NEAR) covers no pixel
  * centre: frustum-culled per triangle.
  *
  * Fixed-point projection (the per-vertex cost that matters): no division.
  *   z (q16_16, >= 2^14 raw) is normalised, m = z << s with s in [1, 17];
  *   Y = fx_recip_mantissa(m) ~ 2^63 / m, so 1/z = Y 2^(s - 47);
- *   Q = mulhu(Y, f_q4 << 19) = Y f_q4 / 2^13 < 2^31 (f_q4 < 4096), so f_q4 / z = Q 2^(s - 34);
- *   offset = x f_q4 / z = (x << 3) Q 2^(s - 53) = mulh(x << 3, Q) >> (21 - s), rounded.
- *   Needs |x|, |y| < 4096 view units (x << 3 fits int32; real.h's range rule). The shift is 4..20;
- *   the floor in mulh costs at most 2^-4 of a Q12.4 unit, Y and Q carry 2^-20.9 relative error
- *   (one Newton step, fixed.h), at most 24576 * 2^-20.9 = 0.013 units of the largest offset:
- *   the offset is within 0.5 + 2^-4 + 0.013 < 0.58 Q12.4 units (1/16 px) of f x / z, i.e. of the
- *   exact projection of the given view point (tests/firmware checks it against double arithmetic).
+ *   Q = mulhu(Y, f_q4 << k) = Y f_q4 / 2^(32 - k) < 2^31, with k = 19 for f_q4 < 4096 (every
+ *   focal length at 240 lines) and k = 18 for f_q4 < 8192 (up to 255 px scaled to 480 lines:
+ *   8160), so f_q4 / z = Q 2^(s - 15 - k); f_q4 >= 1024 (proj_setup_init clamps it), so Q >= 2^28.
+ *   offset = x f_q4 / z = (x << 3) Q 2^(s - 34 - k) = mulh(x << 3, Q) >> (k + 2 - s), rounded.
+ *   Needs |x|, |y| < 4096 view units (x << 3 fits int32; real.h's range rule). The shift is
+ *   (k - 15) .. (k + 1); the floor in mulh costs at most 2^-(k - 15) of a Q12.4 unit (2^-4 at
+ *   k = 19, 2^-3 at 18), Y and Q carry 2^-20.9 relative error (one Newton step, fixed.h; Q's own
+ *   floor adds 2^-28), at most 24576 * 2^-20.9 = 0.013 units of the largest offset: the offset is
+ *   within 0.5 + 2^-4 + 0.013 < 0.58 Q12.4 units (1/16 px) of f x / z at k = 19, within
+ *   0.5 + 2^-3 + 0.013 < 0.64 at k = 18, i.e. of the exact projection of the given view point
+ *   (tests/firmware checks it against double arithmetic at both frame sizes and both ends of the
+ *   focal range).
  * Float: one division and four multiplies, rounded to nearest.
  *
  * Depths produced per vertex:
@@ -66,11 +81,28 @@
 #define PROJ_SUBPIXEL_DROP (4 - FW_SUBPIXEL_BITS)
 #define PROJ_SUBPIXEL_STEP ((int32_t)1 << PROJ_SUBPIXEL_DROP)
 
-/* Pixel-centre limits of the screen in Q12.4 (contract: centres at 16 px + 8). */
+/* Pixel-centre limits of the frame in Q12.4 (contract: centres at 16 px + 8); the last ones are the
+ * frame's, struct proj_setup's x_last and y_last. */
 #define PROJ_X_FIRST 8
-#define PROJ_X_LAST  ((int32_t)(16u * (GPU_FB_WIDTH - 1u) + 8u))
 #define PROJ_Y_FIRST 8
-#define PROJ_Y_LAST  ((int32_t)(16u * (GPU_FB_HEIGHT - 1u) + 8u))
+
+/* Focal lengths are given for a frame of this many lines (the contract's default frame); 64 .. 255
+ * px there. */
+#define PROJ_FOCAL_REF_LINES ((int32_t)GPU_FB_HEIGHT)
+#define PROJ_FOCAL_MIN_PX    64
+#define PROJ_FOCAL_MAX_PX    255
+
+/* The guard band and the largest frame's centre stay inside the Q12.4 range, +-2048 px, with room
+ * for the rounding of clipped vertices (100 px is far more than it needs). */
+#define PROJ_GUARD_FITS(w, h) \
+    (PROJ_GUARD_Q4 / 16 + (int32_t)(w) / 2 + 100 <= 2048 && \
+     PROJ_GUARD_Q4 / 16 + (int32_t)(h) / 2 + 100 <= 2048)
+_Static_assert(PROJ_GUARD_FITS(GPU_FB_MAX_WIDTH, GPU_FB_MAX_HEIGHT),
+               "the guard band leaves the Q12.4 range at the contract's largest frame");
+/* The largest focal length in Q12.4, scaled to the largest frame, is below 8192: Q's multiplier
+ * focal_q4 << 18 fits 31 bits (the fixed projection's argument above). */
+_Static_assert(16 * PROJ_FOCAL_MAX_PX * (int32_t)GPU_FB_MAX_HEIGHT / PROJ_FOCAL_REF_LINES < 8192,
+               "the focal length at the largest frame needs another multiplier shift");
 
 enum proj_outcode {
     PROJ_OUT_LEFT = 0x01,
@@ -86,13 +118,18 @@ enum proj_outcode {
 #define PROJ_CLIP_BITS (PROJ_OUT_NEAR | PROJ_OUT_GUARD)
 
 struct proj_setup {
-    int32_t focal_q4;   /* focal length, 1/16 px: 1024 .. 4095 */
-    int32_t cx_q4;      /* screen centre, Q12.4 */
+    int32_t focal_q4;   /* focal length, 1/16 px, scaled to the frame: 1024 .. 8160 */
+    int32_t cx_q4;      /* the frame's centre, Q12.4 */
     int32_t cy_q4;
+    int32_t x_last;     /* the frame's last pixel centres, Q12.4: 16 (W - 1) + 8, 16 (H - 1) + 8 */
+    int32_t y_last;
+    int32_t width;      /* the frame, pixels */
+    int32_t height;
     real_t near;        /* PROJ_NEAR */
     real_t far;         /* beyond it: PROJ_OUT_FAR; 1 .. 160 view units */
     real_t guard_slope; /* g = PROJ_GUARD_Q4 / focal_q4: the band is |x|, |y| <= g z */
-    uint32_t focal_hi;  /* fixed: focal_q4 << 19, the multiplier forming Q */
+    uint32_t focal_hi;  /* fixed: focal_q4 << k, the multiplier forming Q (k = 19 or 18) */
+    int32_t off_shift;  /* fixed: k + 2, the offset's shift is off_shift - s */
     bool zbuf;          /* compute VTX_Z (only the GPU's depth test reads it; 0 otherwise) */
     uvec3 edge_plane[4];  /* inward unit normals (view space) of the planes through the eye and
                            * the screen's left, right, top and bottom edges */
@@ -141,8 +178,11 @@ static inline void proj_vertex_store(struct proj_vertex *out, int32_t sx, int32_
 #endif
 }
 
-/* A 320 x 240 screen centred on (160, 120) px with the given focal length (64 .. 255 px). */
-void proj_setup_init(struct proj_setup *ps, int32_t focal_px, real_t far);
+/* A width x height frame (1 .. GPU_FB_MAX_WIDTH x 1 .. GPU_FB_MAX_HEIGHT) centred on
+ * (width / 2, height / 2) px, with the given focal length (64 .. 255 px at PROJ_FOCAL_REF_LINES
+ * lines, clamped, scaled to the frame's height). */
+void proj_setup_init(struct proj_setup *ps, int32_t focal_px, real_t far, uint32_t width,
+                     uint32_t height);
 
 /* The projection proper; `inside` (a constant at every call, folded away) skips the near test,
  * the guard band and the outcodes for points known to be inside the screen frustum, between near
@@ -173,8 +213,8 @@ static inline __attribute__((always_inline)) void proj_point_impl(const struct p
         int32_t s;
         const uint32_t m = fx_normalize32((uint32_t)v.z, &s);  /* z >= 2^14: s in [1, 17] */
         const uint32_t y = fx_recip_mantissa(m);
-        const int32_t q = (int32_t)fx_mulhu(y, ps->focal_hi);  /* < 2^31 */
-        const int32_t sh = 21 - s + PROJ_SUBPIXEL_DROP;        /* 4 .. 24 */
+        const int32_t q = (int32_t)fx_mulhu(y, ps->focal_hi);     /* < 2^31 */
+        const int32_t sh = ps->off_shift - s + PROJ_SUBPIXEL_DROP;  /* 3 .. 24 */
         const int32_t half = (int32_t)1 << (sh - 1);
         const int32_t zsh = 33 - s;                            /* 16 .. 32 */
 
@@ -191,8 +231,9 @@ static inline __attribute__((always_inline)) void proj_point_impl(const struct p
 #else
     {
         const float inv_z = 1.0f / v.z;
-        /* In units of PROJ_SUBPIXEL_STEP: focal_q4 = 16 focal_px, so the shift is exact, and a
-         * power-of-two scale of k scales fx and fy exactly. */
+        /* In units of PROJ_SUBPIXEL_STEP: focal_q4 is a multiple of 16 at the reference height
+         * (else the shift floors it by less than a sixteenth of a pixel), and a power-of-two
+         * scale of k scales fx and fy exactly. */
         const float k = (float)(ps->focal_q4 >> PROJ_SUBPIXEL_DROP) * inv_z;
         /* keeps the conversions below in range */
         const float limit = 8.0f * PROJ_GUARD_Q4 / PROJ_SUBPIXEL_STEP;
@@ -227,10 +268,10 @@ static inline __attribute__((always_inline)) void proj_point_impl(const struct p
     sx = ps->cx_q4 + off_x;
     sy = ps->cy_q4 - off_y;
     /* Most vertices are on the screen: one unsigned range check per axis decides that. */
-    if ((uint32_t)(sx - PROJ_X_FIRST) > (uint32_t)(PROJ_X_LAST - PROJ_X_FIRST)) {
+    if ((uint32_t)(sx - PROJ_X_FIRST) > (uint32_t)(ps->x_last - PROJ_X_FIRST)) {
         code |= (sx < PROJ_X_FIRST) ? PROJ_OUT_LEFT : PROJ_OUT_RIGHT;
     }
-    if ((uint32_t)(sy - PROJ_Y_FIRST) > (uint32_t)(PROJ_Y_LAST - PROJ_Y_FIRST)) {
+    if ((uint32_t)(sy - PROJ_Y_FIRST) > (uint32_t)(ps->y_last - PROJ_Y_FIRST)) {
         code |= (sy < PROJ_Y_FIRST) ? PROJ_OUT_TOP : PROJ_OUT_BOTTOM;
     }
     if (v.z > ps->far) {
@@ -271,10 +312,11 @@ static inline int64_t proj_signed_area(const struct proj_vertex *a, const struct
 
 /*
  * The same edge function in 32 bits, for vertices of an object inside the screen frustum
- * (proj_point_inside): they project onto the screen, sx in 0 .. 5120 and sy in 0 .. 3840 Q12.4 up
- * to rounding, so each difference is below 2^13 in magnitude, each product below 2^26 and their
- * difference below 2^27: exact in int32, the same value as proj_signed_area. Two `mul` instead of
- * two 64-bit products and a 64-bit compare.
+ * (proj_point_inside): they project onto the frame, sx in 0 .. 16 W and sy in 0 .. 16 H Q12.4 up
+ * to rounding; at the contract's largest frame (640 x 480: 10240 and 7680) each difference is
+ * below 2^14 in magnitude, each product below 2^28 and their difference below 2^29: exact in
+ * int32, the same value as proj_signed_area. Two `mul` instead of two 64-bit products and a 64-bit
+ * compare.
  */
 static inline int32_t proj_signed_area_inside(const struct proj_vertex *a,
                                               const struct proj_vertex *b,

@@ -49,6 +49,13 @@ void scene_attach(struct scene *s, struct render_object *objects, uint32_t objec
     s->state = state;
     s->state_cap = state_cap;
     s->desc = 0;
+    scene_set_frame(s, GPU_FB_WIDTH, GPU_FB_HEIGHT);
+}
+
+void scene_set_frame(struct scene *s, uint32_t width, uint32_t height)
+{
+    s->frame_width = width;
+    s->frame_height = height;
 }
 
 void scene_camera_keys(struct camera *cam, const struct input_counts *keys)
@@ -128,14 +135,14 @@ bool scene_start(struct scene *s, const struct scene_desc *desc)
     s->frame = 0;
     s->animate = true;
     s->crosshair = false;
-    s->focal_px = 200;  /* vertical field of view 2 atan(120 / 200) = 62 degrees */
+    s->focal_px = 200;  /* vertical field of view 2 atan(120 / 200) = 62 degrees at any frame */
     s->far = REAL_C(160.0);
     /* Towards the light: up, a little left and towards the viewer. */
     s->light = vec3_direction(vec3_make(REAL_C(-0.45), REAL_C(0.8), REAL_C(-0.4)));
     s->ambient = 4;
     s->eye_separation = REAL_C(0.15);
     desc->init(s);
-    proj_setup_init(&s->proj, s->focal_px, s->far);
+    proj_setup_init(&s->proj, s->focal_px, s->far, s->frame_width, s->frame_height);
     for (uint32_t i = 0; i < s->object_count; i++) {
         render_level_cache_fill(&s->object[i], &s->cam.scene_rot, s->light, s->ambient);
     }

@@ -121,7 +121,7 @@ struct scene {
     real_t distance_default;
     fx_angle yaw_default;
     int32_t pitch_default;
-    int32_t focal_px;     /* projection: focal length in pixels */
+    int32_t focal_px;     /* projection: focal length in pixels of a 240-line frame (proj.h) */
     real_t far;           /* projection: far distance */
     uvec3 light;          /* unit vector towards the light, world space */
     uint8_t ambient;      /* 0 .. 15 */
@@ -136,6 +136,8 @@ struct scene {
     uint32_t objects_refused;      /* scene_add_object calls beyond object_cap */
     unsigned char *state;          /* state_cap bytes, 8-aligned: the scene's own, SCENE_STATE */
     size_t state_cap;
+    uint32_t frame_width;          /* the GPU's frame (scene_set_frame; the contract's default */
+    uint32_t frame_height;         /* frame until then) */
     struct proj_setup proj;  /* the projection of focal_px and far, set by scene_start */
 };
 
@@ -165,6 +167,10 @@ uint32_t scene_count(void);
 /* Give a scene its storage (kept across scene_start): objects and state bytes (8-aligned). */
 void scene_attach(struct scene *s, struct render_object *objects, uint32_t object_cap,
                   unsigned char *state, size_t state_cap);
+
+/* The frame the scene is drawn into (the GPU's FB_SIZE, within the contract's largest frame), kept
+ * across scene_start like the storage; it takes effect at the next scene_start. */
+void scene_set_frame(struct scene *s, uint32_t width, uint32_t height);
 
 /* Build the scene's meshes and set its camera; every field of *s but its storage is
  * (re)initialised. Returns false when the scene needs more state or objects than s's storage

@@ -27,6 +27,8 @@ static void export_apply(const double m[3][3], const double v[3], double out[3])
 
 void scene_export_view(const struct scene *s, struct scene_export_view *out)
 {
+    out->width = (uint32_t)s->proj.width;
+    out->height = (uint32_t)s->proj.height;
     out->cx = s->proj.cx_q4 / 16.0;
     out->cy = s->proj.cy_q4 / 16.0;
     out->focal = s->proj.focal_q4 / 16.0;

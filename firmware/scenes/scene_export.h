@@ -22,6 +22,7 @@
 struct scene;
 
 struct scene_export_view {
+    uint32_t width, height;   /* the frame, pixels */
     double cx, cy, focal;     /* screen centre and focal length, pixels (sx = cx + focal x/z) */
     double near, far;         /* view units */
     double eye[3];            /* world */

@@ -59,7 +59,7 @@ static void render_grid_into(struct render_frame *frame, int n, bool wireframe)
     const mat3 id = mat3_identity();
 
     build_grid(&m, v, f, nrm, n);
-    proj_setup_init(&ps, 200, to_real(160.0));
+    proj_setup_init(&ps, 200, to_real(160.0), GPU_FB_WIDTH, GPU_FB_HEIGHT);
     view.rot = mat3_identity();
     view.eye = v3(0, 0, 0);
     render_pass_init(&pass, &ps, &view, &id, v3(0, 0, 0), u3(0, 0, -1), 4);

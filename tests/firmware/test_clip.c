@@ -14,7 +14,7 @@ static struct proj_setup clip_setup(void)
 {
     struct proj_setup ps;
 
-    proj_setup_init(&ps, 200, to_real(160.0));
+    proj_setup_init(&ps, 200, to_real(160.0), GPU_FB_WIDTH, GPU_FB_HEIGHT);
     return ps;
 }
 

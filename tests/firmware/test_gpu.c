@@ -118,9 +118,29 @@ void test_gpu_init_checks(void)
     REG(GPU_REG_VERSION) = GPU_VERSION_VALUE + 1u;  /* newer minor: fine */
     CHECK_EQ(gpu_init(&dev, test_palette, 3), GPU_OK);
 
+    /* Any frame up to the contract's largest is drawn at its own size; an empty or larger one is
+     * refused. */
     fake_reset();
-    REG(GPU_REG_FB_SIZE) = (480u << 16) | 640u;
-    CHECK_EQ(gpu_init(&dev, test_palette, 3), GPU_E_GEOMETRY);
+    REG(GPU_REG_FB_SIZE) = (GPU_FB_MAX_HEIGHT << 16) | GPU_FB_MAX_WIDTH;
+    CHECK_EQ(gpu_init(&dev, test_palette, 3), GPU_OK);
+    CHECK_EQ(gpu_fb_width(&dev.info), GPU_FB_MAX_WIDTH);
+    CHECK_EQ(gpu_fb_height(&dev.info), GPU_FB_MAX_HEIGHT);
+    {
+        static const uint32_t bad[] = {
+            ((GPU_FB_MAX_HEIGHT + 1u) << 16) | GPU_FB_WIDTH,
+            (GPU_FB_HEIGHT << 16) | (GPU_FB_MAX_WIDTH + 1u),
+            GPU_FB_WIDTH,                 /* no lines */
+            GPU_FB_HEIGHT << 16,          /* no columns */
+            0xFFFFFFFFu,
+        };
+
+        for (unsigned i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+            fake_reset();
+            REG(GPU_REG_FB_SIZE) = bad[i];
+            CHECK_EQ(gpu_init(&dev, test_palette, 3), GPU_E_GEOMETRY);
+            CHECK_EQ(REG(GPU_WIN_PALETTE + 4u), 0);  /* nothing written */
+        }
+    }
 
     fake_reset();
     CHECK_EQ(gpu_init(&dev, test_palette, GPU_PALETTE_ENTRIES + 1u), GPU_E_ARG);

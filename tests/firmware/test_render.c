@@ -22,7 +22,7 @@ static void setup_pass(struct render_pass *pass)
     struct cam_view view;
     const mat3 id = mat3_identity();
 
-    proj_setup_init(&ps, 200, to_real(160.0));
+    proj_setup_init(&ps, 200, to_real(160.0), GPU_FB_WIDTH, GPU_FB_HEIGHT);
     view.rot = mat3_identity();
     view.eye = v3(0, 0, 0);
     render_pass_init(pass, &ps, &view, &id, v3(0, 0, 0), u3(0, 0, -1), 4);
@@ -476,7 +476,7 @@ void test_render_lighting_and_colour(void)
         const mat3 id = mat3_identity();
         struct proj_setup ps;
 
-        proj_setup_init(&ps, 200, to_real(160.0));
+        proj_setup_init(&ps, 200, to_real(160.0), GPU_FB_WIDTH, GPU_FB_HEIGHT);
         view.rot = mat3_identity();
         view.eye = v3(0, 0, 0);
         render_pass_init(&pass, &ps, &view, &id, v3(0, 0, 0), u3(1, 0, 0), 4);

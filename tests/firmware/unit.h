@@ -74,6 +74,7 @@ void unit_srand(uint32_t seed);
     X(test_proj_vs_double)            \
     X(test_proj_vertex_path_vs_double) \
     X(test_proj_near_plane)           \
+    X(test_proj_focal_scaling)        \
     X(test_proj_outcodes)             \
     X(test_proj_guard_band)           \
     X(test_proj_depths)               \

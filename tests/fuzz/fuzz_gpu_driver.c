@@ -376,7 +376,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const bool good = device.id == GPU_ID_VALUE &&
                       (device.version >> 16) == (GPU_VERSION_VALUE >> 16) &&
                       device.version >= GPU_VERSION_VALUE &&
-                      device.fb_size == ((GPU_FB_HEIGHT << 16) | GPU_FB_WIDTH) &&
+                      (device.fb_size & 0xFFFFu) >= 1u &&
+                      (device.fb_size & 0xFFFFu) <= GPU_FB_MAX_WIDTH &&
+                      (device.fb_size >> 16) >= 1u && (device.fb_size >> 16) <= GPU_FB_MAX_HEIGHT &&
                       device.vtx_cap >= 3u && device.vtx_cap <= WIN_VTX_MAX &&
                       device.tri_cap >= 1u && device.tri_cap <= WIN_IDX_MAX;
     REQUIRE(dev.info.id == device.id && dev.info.vtx_cap == device.vtx_cap, "info not read");

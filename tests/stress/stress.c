@@ -2,8 +2,11 @@
  * stress.c — `make stress` (issue #13): named stiff and extreme cases of the firmware's pure core
  * rendered through the golden model, one Markdown row each: | case | result | figure |.
  *
- *   stress [--short] [--lists DIR] [--soak-frames=N] [--spin-frames=N]
+ *   stress [--short] [--frame WxH] [--lists DIR] [--soak-frames=N] [--spin-frames=N]
  *     --short        the make-test form: every case, fewer frames (soak 60, look key 10^4)
+ *     --frame WxH    the GPU's frame and the projection's: 320x240 (the contract's, the default)
+ *                    or 640x480 (its largest; the guard band is then a narrower angle and the
+ *                    frame's centre 160 px further from the Q12.4 range's end)
  *     --lists DIR    some cases also write their frame as a primitive list and the frame the
  *                    golden model drew (tests/stress/run.sh co-simulates them)
  *
@@ -42,6 +45,13 @@
 /* ---- settings: the full run and the short (make test) one ---------------------------------- */
 static uint32_t stress_soak_frames = 10000u;     /* per scene and run */
 static uint32_t stress_spin_frames = 1000000u;   /* the held rotation key */
+static uint32_t stress_fb_w = GPU_FB_WIDTH;       /* --frame */
+static uint32_t stress_fb_h = GPU_FB_HEIGHT;
+
+static uint32_t stress_pixels(void)
+{
+    return stress_fb_w * stress_fb_h;
+}
 
 #define Q30_MIN_ ((q2_30)INT32_MIN)  /* -2.0 */
 
@@ -132,7 +142,7 @@ static uint64_t fb_hash(void)
     const uint8_t *fb = gpu_model_front(stress_bsp_gpu());
     uint64_t h = 0xcbf29ce484222325ull;
 
-    for (uint32_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
+    for (uint32_t i = 0; i < stress_pixels(); i++) {
         h = (h ^ fb[i]) * 0x100000001b3ull;
     }
     return h;
@@ -168,7 +178,7 @@ static void list_raw(const char *name)
     FILE *f = list_open(name, "raw");
 
     if (f != NULL) {
-        fwrite(gpu_model_front(stress_bsp_gpu()), 1, GPU_MODEL_FB_PIXELS, f);
+        fwrite(gpu_model_front(stress_bsp_gpu()), 1, stress_pixels(), f);
         fclose(f);
     }
 }
@@ -256,7 +266,7 @@ static void setup_pass(struct render_pass *pass, vec3 eye, fx_angle yaw, int32_t
     struct cam_view view;
     const mat3 id = mat3_identity();
 
-    proj_setup_init(&ps, 200, to_real(160.0));
+    proj_setup_init(&ps, 200, to_real(160.0), stress_fb_w, stress_fb_h);
     view.rot = cam_basis(yaw, pitch);
     view.eye = eye;
     render_pass_init(pass, &ps, &view, &id, v3(0, 0, 0), mat3_row(&view.rot, 2), 4);
@@ -284,8 +294,8 @@ static void tri_render(struct tri_mesh *t, struct render_frame *f)
 /* Extremes of the frame's vertices (Q12.4) and whether all lie in the guard band. */
 static bool frame_in_band(const struct render_frame *f, int32_t *worst)
 {
-    const int32_t cx = 16 * 160;
-    const int32_t cy = 16 * 120;
+    const int32_t cx = 16 * (int32_t)(stress_fb_w / 2u);
+    const int32_t cy = 16 * (int32_t)(stress_fb_h / 2u);
     bool ok = true;
 
     *worst = 0;
@@ -339,11 +349,12 @@ static bool near_case(const char *name, char *out, real_t z0, uint32_t want_clip
     bool band;
 
     /* In the plane y = -0.5, below the eye whatever z0 is: one winding faces the eye, the other
-     * is culled as back-facing. The vertex on the near plane projects 400 px below the centre,
-     * inside the guard band. */
+     * is culled as back-facing. The vertex on the near plane projects 400 px below the centre at
+     * 240 lines (800 at 480), and the vertices the near plane cuts from a triangle reaching
+     * behind the eye less than 800 px beside it: inside the guard band at either frame. */
     tri_begin(&t);
-    tri_add(&t, vec3_make(0, REAL_C(-0.5), z0), v3(1, -0.5, 2), v3(-1, -0.5, 2));
-    tri_add(&t, vec3_make(0, REAL_C(-0.5), z0), v3(-1, -0.5, 2), v3(1, -0.5, 2));
+    tri_add(&t, vec3_make(0, REAL_C(-0.5), z0), v3(0.5, -0.5, 2), v3(-0.5, -0.5, 2));
+    tri_add(&t, vec3_make(0, REAL_C(-0.5), z0), v3(-0.5, -0.5, 2), v3(0.5, -0.5, 2));
     tri_render(&t, &tri_frame);
     band = frame_in_band(&tri_frame, &worst);
     gpu_frame(&tri_frame, &r);
@@ -495,16 +506,17 @@ static bool case_sliver(char *out)
     rc = raw_batch(4, 2, &st);
     list_words("sliver-row", 2);
     covered = 0;
-    for (uint32_t i = 0; i < GPU_MODEL_FB_PIXELS; i++) {
+    for (uint32_t i = 0; i < stress_pixels(); i++) {
         covered += gpu_model_front(stress_bsp_gpu())[i] != PAL_SKY;
     }
     fig(out, "3 slivers (1/16, 1/32 px), both windings: %u emitted, %u back, %u drawn, %u px; "
              "2 sharing a pixel-centre row: %u px written, %u covered (once each)",
         (unsigned)tri_frame.prim_count, (unsigned)tri_frame.stats.faces_back, (unsigned)r.drawn,
         (unsigned)r.pixels, (unsigned)st.pixels, (unsigned)covered);
-    /* Whatever the rounding keeps, each covers at most a pixel row / column: < 3 * 240 px; the
-     * row of the pair is written once per pixel, nearly all of its 200. */
-    return r.submit_rc == GPU_OK && r.errors == 0u && r.pixels <= 3u * 240u && rc == GPU_OK &&
+    /* Whatever the rounding keeps, each covers at most a pixel row / column: < 3 H px (the
+     * frame's lines); the row of the pair is written once per pixel, nearly all of its 200. */
+    return r.submit_rc == GPU_OK && r.errors == 0u && r.pixels <= 3u * stress_fb_h &&
+           rc == GPU_OK &&
            st.errors == 0u && st.pixels == covered && covered >= 199u && covered <= 201u &&
            no_overflow();
 }
@@ -581,7 +593,7 @@ static bool case_world_1024(char *out)
             struct cam_view view;
             const mat3 id = mat3_identity();
 
-            proj_setup_init(&ps, 200, to_real(160.0));
+            proj_setup_init(&ps, 200, to_real(160.0), stress_fb_w, stress_fb_h);
             view.rot = cam_basis((fx_angle)lround(yaw), (int32_t)lround(pitch));
             view.eye = eye;
             check_mat(&view.rot);
@@ -630,6 +642,7 @@ static bool case_world_beyond(char *out)
     tri_add(&t, v3(-1, -1, 0), v3(1, -1, 0), v3(0, 1, 0));
     mesh_finish(&t.m);
     scene_set_attach(&stress_scene, &stress_scene_frame);
+    scene_set_frame(&stress_scene, stress_fb_w, stress_fb_h);
     if (!scene_start(&stress_scene, scene_find("tetra"))) {
         fig(out, "tetra did not start");
         return false;
@@ -732,10 +745,11 @@ static bool case_q12_4_ends(char *out)
     raw_prim(&stress_prim_words[6], 3, 1, 2, GPU_PRIM_KIND_TRI);
     rc = raw_batch(4, 4, &st);
     list_words("q12-4-ends", 4);
-    fig(out, "corners +-2048 px: %u of 4 drawn, %u pixels (screen: 76800 + line), ERRORS 0x%x",
-        (unsigned)st.tris_drawn, (unsigned)st.pixels, (unsigned)st.errors);
-    return rc == GPU_OK && st.errors == 0u && st.pixels >= GPU_MODEL_FB_PIXELS &&
-           st.pixels <= 3u * GPU_MODEL_FB_PIXELS;
+    fig(out, "corners +-2048 px: %u of 4 drawn, %u pixels (screen: %u + line), ERRORS 0x%x",
+        (unsigned)st.tris_drawn, (unsigned)st.pixels, (unsigned)stress_pixels(),
+        (unsigned)st.errors);
+    return rc == GPU_OK && st.errors == 0u && st.pixels >= stress_pixels() &&
+           st.pixels <= 3u * stress_pixels();
 }
 
 /* ---- GPU contract errors: indices out of range, capacities overflowed ----------------------- */
@@ -816,6 +830,7 @@ static bool case_frame_capacity(char *out)
     struct frame_result r;
 
     scene_set_attach(&s, &big);
+    scene_set_frame(&s, stress_fb_w, stress_fb_h);
     RENDER_FRAME_ATTACH(&small, small_frame);
     if (!scene_start(&s, scene_find("cubes"))) {
         fig(out, "cubes did not start");
@@ -862,6 +877,7 @@ static bool sweep_from(const char *what, char *out)
 static bool case_inside_mesh(char *out)
 {
     scene_set_attach(&stress_scene, &stress_scene_frame);
+    scene_set_frame(&stress_scene, stress_fb_w, stress_fb_h);
     if (!scene_start(&stress_scene, scene_find("cubes")) || stress_scene.object_count == 0u) {
         fig(out, "cubes did not start");
         return false;
@@ -876,6 +892,7 @@ static bool case_inside_voxel(char *out)
     struct voxel_scene_state *v;
 
     scene_set_attach(&stress_scene, &stress_scene_frame);
+    scene_set_frame(&stress_scene, stress_fb_w, stress_fb_h);
     if (!scene_start(&stress_scene, scene_find("voxel"))) {
         fig(out, "voxel did not start");
         return false;
@@ -1013,6 +1030,7 @@ static void soak_one(const struct scene_desc *d, uint32_t frames, int run, struc
     fx_overflow_clear();
     gpu_start();
     scene_set_attach(&stress_scene, &stress_scene_frame);
+    scene_set_frame(&stress_scene, stress_fb_w, stress_fb_h);
     scene_start(&stress_scene, d);
     input_decoder_init(&dec);
     for (uint32_t k = 0; k < frames; k++) {
@@ -1128,6 +1146,21 @@ int main(int argc, char **argv)
         if (strcmp(argv[i], "--short") == 0) {
             stress_soak_frames = 60u;
             stress_spin_frames = 10000u;
+        } else if (strcmp(argv[i], "--frame") == 0 && i + 1 < argc) {
+            unsigned w = 0;
+            unsigned h = 0;
+
+            if (sscanf(argv[++i], "%ux%u", &w, &h) != 2 ||
+                !((w == GPU_FB_WIDTH && h == GPU_FB_HEIGHT) ||
+                  (w == GPU_FB_MAX_WIDTH && h == GPU_FB_MAX_HEIGHT))) {
+                fprintf(stderr, "stress: --frame %s: %ux%u or %ux%u\n", argv[i],
+                        (unsigned)GPU_FB_WIDTH, (unsigned)GPU_FB_HEIGHT,
+                        (unsigned)GPU_FB_MAX_WIDTH, (unsigned)GPU_FB_MAX_HEIGHT);
+                return 2;
+            }
+            stress_fb_w = w;
+            stress_fb_h = h;
+            stress_bsp_set_frame(w, h);
         } else if (strcmp(argv[i], "--lists") == 0 && i + 1 < argc) {
             stress_lists_dir = argv[++i];
         } else if (strncmp(argv[i], "--soak-frames=", 14) == 0) {
@@ -1135,12 +1168,14 @@ int main(int argc, char **argv)
         } else if (strncmp(argv[i], "--spin-frames=", 14) == 0) {
             stress_spin_frames = (uint32_t)strtoul(argv[i] + 14, NULL, 10);
         } else {
-            fprintf(stderr, "usage: stress [--short] [--lists DIR] [--soak-frames=N] [--spin-frames=N]\n");
+            fprintf(stderr, "usage: stress [--short] [--frame WxH] [--lists DIR] [--soak-frames=N] "
+                            "[--spin-frames=N]\n");
             return 2;
         }
     }
-    printf("stress (%s backend): soak %u frames per scene and run, look key %u frames\n\n",
-           REAL_BACKEND_NAME, (unsigned)stress_soak_frames, (unsigned)stress_spin_frames);
+    printf("stress (%s backend, %ux%u frame): soak %u frames per scene and run, look key %u "
+           "frames\n\n", REAL_BACKEND_NAME, (unsigned)stress_fb_w, (unsigned)stress_fb_h,
+           (unsigned)stress_soak_frames, (unsigned)stress_spin_frames);
     printf("| case | result | figure |\n|---|---|---|\n");
     for (uint32_t i = 0; i < n; i++) {
         char out[FIG_BYTES] = "";

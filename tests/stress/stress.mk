@@ -6,7 +6,8 @@
 # of bsp/host's BSP and main).
 #
 #   make stress                 the full run: STRESS_ARGS (default: 10^4 soak frames per scene
-#                               and run, the look key held 10^6 frames), both backends
+#                               and run, the look key held 10^6 frames), both backends, at each
+#                               of STRESS_FRAMES (the contract's frame and its largest)
 #   make stress STRESS_ARGS=--short    the make-test form (tests/stress/run.sh: the same cases,
 #                               fewer frames, and a sample co-simulated)
 #   make stress-san             the same under ASan and UBSan (any report fails; not in make test)
@@ -19,6 +20,7 @@ STRESS         := $(BUILD)/tests/stress
 STRESS_FLOAT   := $(BUILD)/tests/stress_float
 STRESS_ARGS    ?=
 STRESS_TIMEOUT ?= 900
+STRESS_FRAMES  ?= $(CONTRACT_FB) $(CONTRACT_FB_MAX)
 STRESS_SRCS    := tests/stress/stress.c tests/stress/stress_bsp.c
 
 # $(1) = binary, $(2) = backend
@@ -45,10 +47,10 @@ $(eval $(call STRESS_RULES,$(STRESS_FLOAT),float))
 
 .PHONY: stress
 stress: $(STRESS) $(STRESS_FLOAT)
-	@timeout $(STRESS_TIMEOUT) $(STRESS) $(STRESS_ARGS); a=$$?; \
-	  timeout $(STRESS_TIMEOUT) $(STRESS_FLOAT) $(STRESS_ARGS); b=$$?; \
-	  if [ $$a -eq 124 ] || [ $$b -eq 124 ]; then echo "stress: HUNG (timeout $(STRESS_TIMEOUT) s)"; fi; \
-	  test $$a -eq 0 && test $$b -eq 0
+	@rc=0; for f in $(STRESS_FRAMES); do for s in $(STRESS) $(STRESS_FLOAT); do \
+	  timeout $(STRESS_TIMEOUT) $$s $(STRESS_ARGS) --frame $$f; a=$$?; \
+	  if [ $$a -eq 124 ]; then echo "stress: HUNG (timeout $(STRESS_TIMEOUT) s)"; fi; \
+	  [ $$a -eq 0 ] || rc=1; done; done; exit $$rc
 
 # `make stress-san`: the same cases with AddressSanitizer and UndefinedBehaviorSanitizer, both
 # backends, every source compiled in one command (not in make test: a minute of compiling). Any

@@ -9,15 +9,29 @@
 #include "stress_bsp.h"
 
 static gpu_model stress_model;
+static uint32_t stress_fb_width = GPU_FB_WIDTH;
+static uint32_t stress_fb_height = GPU_FB_HEIGHT;
 
 gpu_model *stress_bsp_gpu(void)
 {
     return &stress_model;
 }
 
+void stress_bsp_set_frame(uint32_t width, uint32_t height)
+{
+    stress_fb_width = width;
+    stress_fb_height = height;
+}
+
 void bsp_init(void)
 {
-    gpu_model_reset(&stress_model);
+    gpu_model_config cfg;
+
+    gpu_model_reset(&stress_model);  /* the defaults, then the frame */
+    cfg = stress_model.cfg;
+    cfg.fb_width = stress_fb_width;
+    cfg.fb_height = stress_fb_height;
+    gpu_model_reset_config(&stress_model, &cfg);
 }
 
 void bsp_exit(int code)

@@ -10,4 +10,8 @@
 /* The model behind bsp_gpu_*: reset to power-on by every bsp_init(). */
 gpu_model *stress_bsp_gpu(void);
 
+/* The frame the model draws from the next bsp_init() on: the contract's (the default) or its
+ * largest. */
+void stress_bsp_set_frame(uint32_t width, uint32_t height);
+
 #endif /* STRESS_BSP_H */
