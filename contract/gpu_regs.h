@@ -3,7 +3,7 @@
 #define GPU_REGS_H
 
 #define GPU_ID_VALUE                 0x47505530u
-#define GPU_VERSION_VALUE            0x00010001u
+#define GPU_VERSION_VALUE            0x00010002u
 #define GPU_APERTURE_BYTES           0x20000u
 
 #define GPU_VTX_CAP                  1024u
@@ -54,10 +54,11 @@
 #define GPU_REG_FRAME_COUNT          0x048u  /* ro: Buffer swaps since reset. */
 #define GPU_REG_ERRORS               0x04Cu  /* ro: Error flags ERR_* of the last batch; cleared when the next batch starts. */
 #define GPU_REG_FB_WRITE_MASK        0x050u  /* rw: Framebuffer planes a batch writes, see field WMASK_* (the other bits read 0; 3 after reset: all of each pixel). Applies to the clear and to every primitive; the depth test and the depth buffer are not masked. Sampled when DOORBELL is written. Without CAPS_WMASK writes are ignored and it reads 3. */
+#define GPU_REG_STRIP                0x054u  /* rw: The band of rows a batch draws: rows STRIP_FIRST to STRIP_LAST of the frame, both included (0 and the frame's last row after reset: the whole frame). Triangles and lines are clipped to it, CTRL_CLEAR and CTRL_ZCLEAR clear its rows only; a last row beyond the frame means the frame's last, a first row after the last draws and clears nothing. Reads back as written. Sampled when DOORBELL is written. */
 #define GPU_REG_PERF_BUSY_CYCLES     0x060u  /* ro: Clock cycles from the doorbell until the batch finished drawing (excludes the wait for vsync). */
 #define GPU_REG_PERF_TRIS_IN         0x064u  /* ro: Primitives read from the index buffer in the last batch. */
-#define GPU_REG_PERF_TRIS_DRAWN      0x068u  /* ro: Primitives rasterized: valid, non-zero area, bounding box on screen. */
-#define GPU_REG_PERF_TRIS_REJECTED   0x06Cu  /* ro: Primitives skipped: bad vertex index, unsupported kind, zero area or off screen. */
+#define GPU_REG_PERF_TRIS_DRAWN      0x068u  /* ro: Primitives rasterized: valid, non-zero area, bounding box on screen and in the STRIP rows. */
+#define GPU_REG_PERF_TRIS_REJECTED   0x06Cu  /* ro: Primitives skipped: bad vertex index, unsupported kind, zero area, off screen or outside the STRIP rows. */
 #define GPU_REG_PERF_PIXELS          0x070u  /* ro: Pixels written by primitives in the last batch (the clear is not counted). */
 #define GPU_REG_PERF_SAMPLES         0x074u  /* ro: Size of the drawn primitives: pixel centres in each triangle's clamped bounding box, steps of each line. */
 #define GPU_REG_PERF_SPANS_WRITTEN   0x078u  /* ro: Aligned spans (CAPS_SPAN_W pixels of one row, first pixel a multiple of the width) with at least one covered pixel, over the batch's triangles. */
@@ -125,6 +126,10 @@
 #define GPU_ERR_KIND_MASK            0x00000004u
 #define GPU_ERR_WRITE_BUSY_LSB       3u  /* in ERRORS: The bus wrote a buffer, palette or batch register while a batch was running; the write was dropped. */
 #define GPU_ERR_WRITE_BUSY_MASK      0x00000008u
+#define GPU_STRIP_FIRST_LSB          0u  /* in STRIP: The band's first row. */
+#define GPU_STRIP_FIRST_MASK         0x0000FFFFu
+#define GPU_STRIP_LAST_LSB           16u  /* in STRIP: The band's last row (the frame's last where it is beyond it). */
+#define GPU_STRIP_LAST_MASK          0xFFFF0000u
 
 /* Buffer word formats. */
 #define GPU_VTX_X_WORD               0u  /* signed: Screen x, signed Q12.4 (1/16 pixel); pixel centres are at (n + 1/2). */

@@ -3,7 +3,7 @@
 // gpu_pkg::GPU_*. Not every build uses every constant:
 /* verilator lint_off UNUSEDPARAM */
 localparam [31:0] GPU_ID_VALUE                 = 32'h47505530;
-localparam [31:0] GPU_VERSION_VALUE            = 32'h10001;
+localparam [31:0] GPU_VERSION_VALUE            = 32'h10002;
 localparam integer GPU_VTX_CAP                  = 1024;
 localparam integer GPU_TRI_CAP                  = 512;
 localparam integer GPU_FB_WIDTH                 = 320;
@@ -46,6 +46,7 @@ localparam [7:0] GPU_REG_DONE_SEQ             = 8'h44;  // ro
 localparam [7:0] GPU_REG_FRAME_COUNT          = 8'h48;  // ro
 localparam [7:0] GPU_REG_ERRORS               = 8'h4C;  // ro
 localparam [7:0] GPU_REG_FB_WRITE_MASK        = 8'h50;  // rw
+localparam [7:0] GPU_REG_STRIP                = 8'h54;  // rw
 localparam [7:0] GPU_REG_PERF_BUSY_CYCLES     = 8'h60;  // ro
 localparam [7:0] GPU_REG_PERF_TRIS_IN         = 8'h64;  // ro
 localparam [7:0] GPU_REG_PERF_TRIS_DRAWN      = 8'h68;  // ro
@@ -92,6 +93,10 @@ localparam integer GPU_ERR_KIND_LSB             = 2;  // in ERRORS
 localparam integer GPU_ERR_KIND_WIDTH           = 1;
 localparam integer GPU_ERR_WRITE_BUSY_LSB       = 3;  // in ERRORS
 localparam integer GPU_ERR_WRITE_BUSY_WIDTH     = 1;
+localparam integer GPU_STRIP_FIRST_LSB          = 0;  // in STRIP
+localparam integer GPU_STRIP_FIRST_WIDTH        = 16;
+localparam integer GPU_STRIP_LAST_LSB           = 16;  // in STRIP
+localparam integer GPU_STRIP_LAST_WIDTH         = 16;
 localparam integer GPU_VTX_X_WORD               = 0;
 localparam integer GPU_VTX_X_LSB                = 0;
 localparam integer GPU_VTX_X_WIDTH              = 16;

@@ -136,7 +136,9 @@ int rtl_check_main(int argc, char **argv)
     Writer write{sim, model};
     const bool wmask = (sim.read(GPU_REG_CAPS) & GPU_CAPS_WMASK_MASK) != 0;
     uint64_t tris = 0, pixels = 0, frames = 0, resets = 0, back_checks = 0, overflows = 0, index_errors = 0;
-    uint64_t masked = 0;
+    uint64_t masked = 0, strips = 0;
+    // STRIP draws from a stream of its own, so that the other draws of a seed stay as they were.
+    Rng rs{seed ^ 0x5354524950ull};
     const Frame fb{static_cast<int32_t>(cfg.fb_width), static_cast<int32_t>(cfg.fb_height)};
     std::vector<uint8_t> back(static_cast<std::size_t>(fb.w) * static_cast<std::size_t>(fb.h));
     bool must_clear = false;
@@ -229,6 +231,18 @@ int rtl_check_main(int argc, char **argv)
         const uint32_t planes = (r.chance(40) && !clear_forced) ? r.below(4) : 3u;
         write(GPU_WIN_REGS + GPU_REG_FB_WRITE_MASK, planes | (r.below(64) << 2));
         masked += (wmask && planes != 3u) ? 1u : 0u;
+        // A band of rows on some batches (contract "Strips"): anywhere in the frame, one row to
+        // half of it, now and then past the frame's end or empty (first after last); the whole
+        // frame on the others, and on the clear after a RESET probe.
+        uint32_t strip = static_cast<uint32_t>(fb.h - 1) << GPU_STRIP_LAST_LSB;
+        if (!clear_forced && rs.chance(40)) {
+            const uint32_t first = rs.below(static_cast<uint32_t>(fb.h) + 8u);
+            uint32_t last = first + rs.below(static_cast<uint32_t>(fb.h) / 2u);
+            last = rs.chance(10) ? 0xFFFFu : (rs.chance(10) && first > 0 ? first - 1u : last);
+            strip = first | (last << GPU_STRIP_LAST_LSB);
+            strips++;
+        }
+        write(GPU_WIN_REGS + GPU_REG_STRIP, strip);
         uint32_t ctrl = (clear ? GPU_CTRL_CLEAR_MASK : 0) | (swap ? GPU_CTRL_SWAP_MASK : 0);
         if (r.chance(60)) {  // depth test (a no-op without CAPS_ZBUF: the bits are then ignored)
             ctrl |= GPU_CTRL_ZTEST_MASK;
@@ -274,9 +288,12 @@ int rtl_check_main(int argc, char **argv)
             return 1;
         }
         std::string diff = model.compare_registers(sim);
-        if (diff.empty() && sim.read(GPU_REG_FB_WRITE_MASK) != gpu_model_read(model.model(), GPU_REG_FB_WRITE_MASK)) {
-            diff = "FB_WRITE_MASK reads " + std::to_string(sim.read(GPU_REG_FB_WRITE_MASK)) + ", the model's " +
-                   std::to_string(gpu_model_read(model.model(), GPU_REG_FB_WRITE_MASK));
+        for (const uint32_t reg : {GPU_REG_FB_WRITE_MASK, GPU_REG_STRIP}) {
+            if (diff.empty() && sim.read(reg) != gpu_model_read(model.model(), reg)) {
+                diff = std::string(reg == GPU_REG_STRIP ? "STRIP" : "FB_WRITE_MASK") + " reads " +
+                       std::to_string(sim.read(reg)) + ", the model's " +
+                       std::to_string(gpu_model_read(model.model(), reg));
+            }
         }
         if (diff.empty()) {
             diff = compare_back_buffer(sim, model, back);
@@ -291,8 +308,8 @@ int rtl_check_main(int argc, char **argv)
             }
         }
         if (!diff.empty()) {
-            std::printf("random: seed %llu batch %d (vertex family %d, %u prims, CTRL 0x%x, FB_WRITE_MASK %u, %llu resets before): %s\n",
-                        static_cast<unsigned long long>(seed), b, family, nt, ctrl, planes,
+            std::printf("random: seed %llu batch %d (vertex family %d, %u prims, CTRL 0x%x, FB_WRITE_MASK %u, STRIP 0x%08x, %llu resets before): %s\n",
+                        static_cast<unsigned long long>(seed), b, family, nt, ctrl, planes, strip,
                         static_cast<unsigned long long>(resets), diff.c_str());
             return 1;
         }
@@ -315,10 +332,11 @@ int rtl_check_main(int argc, char **argv)
     }
     const uint32_t fb_size = sim.read(GPU_REG_FB_SIZE);  // the RTL's, which the model's has equalled
     std::printf("random: seed %llu: VTX_CAP %u TRI_CAP %u FB %ux%u, %d batches (%llu over the capacities, %llu with bad "
-                "indices, %llu plane-masked), %llu primitives (%llu of kind Gouraud), %llu pixels, %llu back buffers, %llu frames, %llu resets: "
+                "indices, %llu plane-masked, %llu in strips), %llu primitives (%llu of kind Gouraud), %llu pixels, %llu back buffers, %llu frames, %llu resets: "
                 "RTL equals model\n",
                 static_cast<unsigned long long>(seed), vcap, tcap, fb_size & 0xFFFFu, fb_size >> 16, batches, static_cast<unsigned long long>(overflows),
-                static_cast<unsigned long long>(index_errors), static_cast<unsigned long long>(masked), static_cast<unsigned long long>(tris),
+                static_cast<unsigned long long>(index_errors), static_cast<unsigned long long>(masked),
+                static_cast<unsigned long long>(strips), static_cast<unsigned long long>(tris),
                 static_cast<unsigned long long>(shaded),
                 static_cast<unsigned long long>(pixels), static_cast<unsigned long long>(back_checks),
                 static_cast<unsigned long long>(frames), static_cast<unsigned long long>(resets));

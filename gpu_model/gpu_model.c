@@ -142,16 +142,11 @@ static void put_pixel(const gpu_model *m, uint8_t *fb, size_t i, uint8_t color)
     }
 }
 
+/* On the frame and in the batch's strip rows (row1 <= the frame's last). */
 static bool on_screen(const gpu_model *m, int64_t px, int64_t py)
 {
-    return px >= 0 && px < (int64_t)m->cfg.fb_width && py >= 0 &&
-           py < (int64_t)m->cfg.fb_height;
-}
-
-/* Pixels in a framebuffer of m's frame. */
-static size_t fb_pixels(const gpu_model *m)
-{
-    return (size_t)m->cfg.fb_width * m->cfg.fb_height;
+    return px >= 0 && px < (int64_t)m->cfg.fb_width && py >= m->row0 &&
+           py <= m->row1;
 }
 
 /* ------------------------------------------------------------- rasterizer */
@@ -305,7 +300,8 @@ static prim_result draw_triangle(gpu_model *m, gpu_model_pt v0,
     }
 
     /* Clamped bounding box: exactly the pixels whose centres 16*p + 8 lie in
-     * [min, max] of the vertex coordinates, clipped to the screen. */
+     * [min, max] of the vertex coordinates, clipped to the screen's columns
+     * and the strip's rows. */
     int64_t minx = min3(v0.x, v1.x, v2.x);
     int64_t maxx = max3(v0.x, v1.x, v2.x);
     int64_t miny = min3(v0.y, v1.y, v2.y);
@@ -317,17 +313,17 @@ static prim_result draw_triangle(gpu_model *m, gpu_model_pt v0,
     if (px0 < 0) {
         px0 = 0;
     }
-    if (py0 < 0) {
-        py0 = 0;
+    if (py0 < m->row0) {
+        py0 = m->row0;
     }
     if (px1 > (int64_t)m->cfg.fb_width - 1) {
         px1 = (int64_t)m->cfg.fb_width - 1;
     }
-    if (py1 > (int64_t)m->cfg.fb_height - 1) {
-        py1 = (int64_t)m->cfg.fb_height - 1;
+    if (py1 > m->row1) {
+        py1 = m->row1;
     }
     if (px0 > px1 || py0 > py1) {
-        return PRIM_REJECTED; /* off screen, or too thin for any centre */
+        return PRIM_REJECTED; /* off screen or strip, or too thin for any centre */
     }
 
     /* Edges v0->v1, v1->v2, v2->v0 and their fill-rule class. */
@@ -518,9 +514,19 @@ static void run_batch(gpu_model *m, uint32_t tag)
     bool zclear = m->cfg.zbuf && (ctrl & GPU_CTRL_ZCLEAR_MASK) != 0;
     bool dither = m->cfg.gouraud && (ctrl & GPU_CTRL_DITHER_MASK) != 0;
 
-    /* 1. Clear ERRORS and the PERF_* counters. */
+    /* 1. Clear ERRORS and the PERF_* counters. STRIP is sampled too: its
+     *    rows, the last clamped to the frame. */
     m->errors = 0;
     memset(&m->perf, 0, sizeof m->perf);
+    m->row0 = (int64_t)(m->regs.strip & GPU_STRIP_FIRST_MASK) >> GPU_STRIP_FIRST_LSB;
+    m->row1 = (int64_t)((m->regs.strip & GPU_STRIP_LAST_MASK) >> GPU_STRIP_LAST_LSB);
+    if (m->row1 > (int64_t)m->cfg.fb_height - 1) {
+        m->row1 = (int64_t)m->cfg.fb_height - 1;
+    }
+    /* The strip's pixels: rows row0 .. row1 (none when row0 > row1). */
+    const size_t strip_first = (size_t)m->row0 * m->cfg.fb_width;
+    const size_t strip_end = (m->row0 > m->row1) ? strip_first
+                                                 : (size_t)(m->row1 + 1) * m->cfg.fb_width;
 
     /* 2. Range check in 64 bits so a huge BASE + COUNT cannot wrap; against
      *    the capacities this GPU was built with. */
@@ -538,19 +544,21 @@ static void run_batch(gpu_model *m, uint32_t tag)
             uint8_t *fb = back_buffer(m);
             const uint8_t color = (uint8_t)(m->regs.clear_color & 0xFFu);
             if (written_bits(m) == 0xFFu) {
-                memset(fb, color, fb_pixels(m)); /* the usual, unmasked clear: fast */
+                /* the usual, unmasked clear: fast */
+                memset(fb + strip_first, color, strip_end - strip_first);
                 if (m->shade_probe != NULL) {
-                    memset(probe_word(m, fb, 0), 0, fb_pixels(m) * sizeof(uint32_t));
+                    memset(probe_word(m, fb, strip_first), 0,
+                           (strip_end - strip_first) * sizeof(uint32_t));
                 }
             } else {
-                for (size_t i = 0; i < fb_pixels(m); i++) {
+                for (size_t i = strip_first; i < strip_end; i++) {
                     put_pixel(m, fb, i, color);
                 }
             }
         }
         if (zclear) {
             const uint16_t far = (uint16_t)((1u << m->cfg.zbuf_bits) - 1u);
-            for (size_t i = 0; i < fb_pixels(m); i++) {
+            for (size_t i = strip_first; i < strip_end; i++) {
                 m->zbuf[i] = far;
             }
         }
@@ -654,6 +662,7 @@ void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
     memset(m, 0, sizeof *m); /* the shade probe detached too */
     m->cfg = c;
     m->regs.fb_write_mask = GPU_MODEL_WMASK_BITS; /* both planes */
+    m->regs.strip = (c.fb_height - 1u) << GPU_STRIP_LAST_LSB; /* the whole frame */
 }
 
 void gpu_model_attach_shade_probe(gpu_model *m, gpu_model_shade_probe *probe)
@@ -745,6 +754,9 @@ void gpu_model_write(gpu_model *m, uint32_t offset, uint32_t value)
             m->regs.fb_write_mask = value & GPU_MODEL_WMASK_BITS;
         }
         break;
+    case GPU_REG_STRIP:
+        m->regs.strip = value;
+        break;
     case GPU_REG_DOORBELL:
         /* Any write starts a batch, whatever the value (the contract asks the
          * firmware for fresh non-zero tags but the device does not check). */
@@ -796,6 +808,8 @@ uint32_t gpu_model_read(const gpu_model *m, uint32_t offset)
         return m->regs.clear_color;
     case GPU_REG_FB_WRITE_MASK:
         return m->regs.fb_write_mask;
+    case GPU_REG_STRIP:
+        return m->regs.strip;
     case GPU_REG_DOORBELL:
         return m->regs.doorbell;
     case GPU_REG_RESET:

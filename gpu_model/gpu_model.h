@@ -138,7 +138,14 @@ typedef struct gpu_model {
                                * other effect, as no batch is ever running */
         uint32_t fb_write_mask; /* FB_WRITE_MASK, its two plane bits; 3 after
                                  * reset and always 3 without cfg.wmask */
+        uint32_t strip;       /* STRIP, all 32 bits; the whole frame after
+                               * reset: first row 0, last fb_height - 1 */
     } regs;
+
+    /* The running batch's rows (contract "Strips"): STRIP's first row and
+     * its last clamped to the frame, set by the doorbell; row0 > row1 draws
+     * nothing. */
+    int64_t row0, row1;
 
     /* Read-only status registers. */
     uint32_t done_seq;        /* DONE_SEQ: tag of the last finished batch */

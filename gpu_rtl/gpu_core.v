@@ -63,6 +63,7 @@ module gpu_core #(
     wire        ctrl_clear, ctrl_swap, ctrl_ztest, ctrl_zclear, ctrl_dither, start, soft_reset;
     wire        busy, front, swap;
     wire [31:0] vtx_base, vtx_count, tri_base, tri_count, doorbell_tag, done_seq, frame_count;
+    wire [31:0] strip;                    // STRIP: the batch's rows
     wire [7:0]  clear_color;
     wire [2:0]  raster_errors;
     gpu_pkg::perf_t perf;                 // the PERF_* counters
@@ -90,7 +91,7 @@ module gpu_core #(
         .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .ctrl_ztest(ctrl_ztest),
         .ctrl_zclear(ctrl_zclear), .ctrl_dither(ctrl_dither), .vtx_base(vtx_base), .vtx_count(vtx_count),
         .tri_base(tri_base), .tri_count(tri_count), .clear_color(clear_color), .fb_wmask(fb_wmask),
-        .doorbell_tag(doorbell_tag), .start(start), .soft_reset(soft_reset),
+        .strip(strip), .doorbell_tag(doorbell_tag), .start(start), .soft_reset(soft_reset),
         .vtx_wr_en(vtx_wr_en), .vtx_wr_addr(vtx_wr_addr), .idx_wr_en(idx_wr_en),
         .idx_wr_addr(idx_wr_addr), .pal_wr_en(pal_wr_en), .pal_wr_addr(pal_wr_addr),
         .busy(busy), .front(front), .done_seq(done_seq), .frame_count(frame_count),
@@ -183,7 +184,7 @@ module gpu_core #(
         .start(start), .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .ctrl_ztest(ctrl_ztest),
         .ctrl_zclear(ctrl_zclear), .ctrl_dither(ctrl_dither), .vtx_base(vtx_base), .vtx_count(vtx_count),
         .tri_base(tri_base), .tri_count(tri_count),
-        .clear_color(clear_color), .doorbell_tag(doorbell_tag),
+        .clear_color(clear_color), .strip(strip), .doorbell_tag(doorbell_tag),
         .busy(busy), .done_seq(done_seq), .frame_count(frame_count), .errors(raster_errors),
         .perf(perf),
         .idx_rd_en(idx_rd_en), .idx_rd_addr(idx_rd_addr), .idx_rd_data(idx_rd_data),

@@ -33,8 +33,8 @@
 module gpu_prim_setup #(
     parameter integer VTX_CAP = gpu_pkg::GPU_VTX_CAP,              // build options: see gpu_top
     parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,
-    parameter integer FB_WIDTH = gpu_pkg::GPU_FB_WIDTH,   // the frame the box is clamped to
-    parameter integer FB_HEIGHT = gpu_pkg::GPU_FB_HEIGHT,
+    parameter integer FB_WIDTH = gpu_pkg::GPU_FB_WIDTH,   // the frame's columns the box is clamped
+                                                          // to (its rows: row_first .. row_last)
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W,
     parameter integer ENABLE_LINES = gpu_pkg::GPU_DEFAULT_ENABLE_LINES,
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,  // depth-plane set-up (a division
@@ -68,6 +68,9 @@ module gpu_prim_setup #(
     input  wire [31:0]              tri_base,
     input  wire [31:0]              tri_count,
     input  wire                     ctrl_ztest,
+    input  wire [ROW_W-1:0]         row_first,     // the batch's STRIP rows, the last within the
+    input  wire [ROW_W-1:0]         row_last,      // frame; rows_empty: none (every triangle is
+    input  wire                     rows_empty,    // rejected)
     output wire                     idle,          // nothing fetched or in flight
     // index RAM (both words of a primitive at once)
     output wire                     idx_rd_en,
@@ -289,12 +292,15 @@ module gpu_prim_setup #(
             centre_pixel = 13'(t >>> 4);
         end
     endfunction
-    function automatic signed [12:0] clamp(input signed [12:0] v, input signed [12:0] hi);
-        clamp = (v < 13'sd0) ? 13'sd0 : ((v > hi) ? hi : v);
+    function automatic signed [12:0] clamp(input signed [12:0] v, input signed [12:0] lo,
+                                           input signed [12:0] hi);
+        clamp = (v < lo) ? lo : ((v > hi) ? hi : v);
     endfunction
 
     localparam signed [12:0] X_LAST = 13'(FB_WIDTH - 1);   // last pixel column
-    localparam signed [12:0] Y_LAST = 13'(FB_HEIGHT - 1);  // last pixel row
+    // The box's rows: the strip's (contract "Strips"), the whole frame unless the firmware says.
+    wire signed [12:0] y_first = 13'(row_first);
+    wire signed [12:0] y_last = 13'(row_last);
     // Centre, Q12.4, of lane 0 of the span holding on-screen pixel column px, and of pixel row py.
     function automatic signed [17:0] span_centre_x(input [X_W-1:0] px);
         span_centre_x = 18'(32'(COL_W'(px / X_W'(SPAN_W))) * SPAN_W * 16 + 8);
@@ -306,8 +312,8 @@ module gpu_prim_setup #(
     // The box's first pixel centres from stage A's corners (unclamped).
     wire signed [12:0] a_rpx0 = centre_pixel(min3(ax0_q, ax1_q, ax2_q), FIRST_CENTRE);
     wire signed [12:0] a_rpy0 = centre_pixel(min3(ay0_q, ay1_q, ay2_q), FIRST_CENTRE);
-    wire [X_W-1:0] a_px0 = X_W'(clamp(a_rpx0, X_LAST));  // clamped as stage C clamps b_rpx0_q
-    wire [ROW_W-1:0] a_py0 = ROW_W'(clamp(a_rpy0, Y_LAST));
+    wire [X_W-1:0] a_px0 = X_W'(clamp(a_rpx0, 13'sd0, X_LAST));  // clamped as stage C clamps b_rpx0_q
+    wire [ROW_W-1:0] a_py0 = ROW_W'(clamp(a_rpy0, y_first, y_last));
     wire signed [16:0] d01x = 17'(ax1_q) - 17'(ax0_q);
     wire signed [16:0] d01y = 17'(ay1_q) - 17'(ay0_q);
     wire signed [16:0] d02x = 17'(ax2_q) - 17'(ax0_q);
@@ -362,12 +368,13 @@ module gpu_prim_setup #(
         end
     end
 
-    // Clamped to the screen: px0 = max(0, raw), px1 = min(X_LAST, raw). Empty when px0 > px1, i.e.
-    // when the raw box is empty or lies wholly off one side.
-    wire signed [12:0] b_px0 = clamp(b_rpx0_q, X_LAST), b_px1 = clamp(b_rpx1_q, X_LAST);
-    wire signed [12:0] b_py0 = clamp(b_rpy0_q, Y_LAST), b_py1 = clamp(b_rpy1_q, Y_LAST);
+    // Clamped to the screen's columns and the strip's rows: px0 = max(0, raw), px1 = min(X_LAST,
+    // raw), py0 = max(y_first, raw), py1 = min(y_last, raw). Empty when px0 > px1 or py0 > py1,
+    // i.e. when the raw box is empty or lies wholly off one side of the screen or the strip.
+    wire signed [12:0] b_px0 = clamp(b_rpx0_q, 13'sd0, X_LAST), b_px1 = clamp(b_rpx1_q, 13'sd0, X_LAST);
+    wire signed [12:0] b_py0 = clamp(b_rpy0_q, y_first, y_last), b_py1 = clamp(b_rpy1_q, y_first, y_last);
     wire box_empty = b_rpx0_q > b_rpx1_q || b_rpy0_q > b_rpy1_q || b_rpx1_q < 13'sd0
-                  || b_rpy1_q < 13'sd0 || b_rpx0_q > X_LAST || b_rpy0_q > Y_LAST;
+                  || b_rpy1_q < y_first || b_rpx0_q > X_LAST || b_rpy0_q > y_last || rows_empty;
 
     // ------------------------------------------------------------------ stage C: the descriptor
     // Winding: with area < 0, v1 and v2 trade places so that the interior is where every E > 0.
@@ -473,7 +480,7 @@ module gpu_prim_setup #(
     endgenerate
 
     wire [X_W:0] box_w = (X_W + 1)'(b_px1 - b_px0 + 13'sd1);   // 1 .. FB_WIDTH
-    wire [ROW_W:0] box_h = (ROW_W + 1)'(b_py1 - b_py0 + 13'sd1);  // 1 .. FB_HEIGHT
+    wire [ROW_W:0] box_h = (ROW_W + 1)'(b_py1 - b_py0 + 13'sd1);  // 1 .. the frame's height
 
     always @(posedge clk) begin
         if (rst) begin

@@ -25,7 +25,9 @@ module gpu_raster #(
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer WORDS = FB_WIDTH * FB_HEIGHT / SPAN_W,   // spans in a frame
     localparam integer WAW = $clog2(WORDS),
-    localparam integer CNT_W = $clog2(SPAN_W + 1)
+    localparam integer CNT_W = $clog2(SPAN_W + 1),
+    localparam integer ROW_W = gpu_pkg::ROW_W,
+    localparam integer COLS = FB_WIDTH / SPAN_W                 // spans in a row
 ) (
     input  wire                clk,
     input  wire                rst,
@@ -42,6 +44,7 @@ module gpu_raster #(
     input  wire [31:0]         tri_base,
     input  wire [31:0]         tri_count,
     input  wire [7:0]          clear_color,
+    input  wire [31:0]         strip,        // STRIP: {last row, first row} (contract "Strips")
     input  wire [31:0]         doorbell_tag,
     // status and counters (to gpu_regs)
     output wire                busy,
@@ -82,6 +85,17 @@ module gpu_raster #(
     reg [WAW-1:0] clear_addr_q;
     wire pipe_rst = rst || soft_reset;
 
+    // ---- the batch's rows (contract "Strips"), taken with start: STRIP's first row and its last
+    // clamped to the frame; none when the first is after the last. The clear covers their spans,
+    // words first_row * COLS .. (last_row + 1) * COLS - 1 (multiplications by a constant).
+    wire [15:0] strip_first = strip[gpu_pkg::GPU_STRIP_FIRST_LSB +: 16];
+    wire [15:0] strip_last = strip[gpu_pkg::GPU_STRIP_LAST_LSB +: 16];
+    wire [15:0] strip_last_in = (strip_last > 16'(FB_HEIGHT - 1)) ? 16'(FB_HEIGHT - 1) : strip_last;
+    wire strip_none = strip_first > strip_last_in;
+    reg [ROW_W-1:0] row_first_q, row_last_q;
+    reg rows_empty_q;
+    reg [WAW-1:0] clear_last_q;
+
     // ---- front end and back end ----
     wire setup_idle, walker_idle;
     wire desc_valid, desc_ready;
@@ -101,12 +115,13 @@ module gpu_raster #(
     wire [SPAN_W*8-1:0] walker_wr_data;
     wire [SPAN_W-1:0] walker_wr_mask;
 
-    gpu_prim_setup #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT), .SPAN_W(SPAN_W),
+    gpu_prim_setup #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .FB_WIDTH(FB_WIDTH), .SPAN_W(SPAN_W),
                      .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF),
                      .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_setup (
         .clk(clk), .rst(pipe_rst),
         .start(state_q == S_CHECK && !count_error), .vtx_base(vtx_base), .vtx_count(vtx_count),
-        .tri_base(tri_base), .tri_count(tri_count), .ctrl_ztest(ztest), .idle(setup_idle),
+        .tri_base(tri_base), .tri_count(tri_count), .ctrl_ztest(ztest), .row_first(row_first_q),
+        .row_last(row_last_q), .rows_empty(rows_empty_q), .idle(setup_idle),
         .idx_rd_en(idx_rd_en), .idx_rd_addr(idx_rd_addr), .idx_rd_data(idx_rd_data),
         .vtx_rd_en(vtx_rd_en), .vtx_rd_addr(vtx_rd_addr), .vtx_rd_data(vtx_rd_data),
         .vz_rd_data(vz_rd_data), .vi_rd_data(vi_rd_data), .out_valid(desc_valid), .out_ready(desc_ready), .out_desc(desc),
@@ -121,7 +136,8 @@ module gpu_raster #(
                       .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_walker (
         .clk(clk), .rst(pipe_rst),
         .in_valid(desc_valid && walk_enable), .in_ready(walker_ready), .in_desc(desc), .ztest(ztest),
-        .dither(ENABLE_GOURAUD != 0 && ctrl_dither),
+        .dither(ENABLE_GOURAUD != 0 && ctrl_dither), .row_first(row_first_q), .row_last(row_last_q),
+        .rows_empty(rows_empty_q),
         .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data),
         .z_wr_en(walker_z_wr_en), .z_wr_addr(walker_z_wr_addr), .z_wr_data(walker_z_wr_data),
         .z_wr_mask(walker_z_wr_mask),
@@ -183,7 +199,11 @@ module gpu_raster #(
                     errors <= 3'd0;
                     perf <= '0;
                     perf.busy_cycles <= 32'd1;
-                    clear_addr_q <= {WAW{1'b0}};
+                    row_first_q <= ROW_W'(strip_first);  // meaningful unless rows_empty_q
+                    row_last_q <= ROW_W'(strip_last_in);
+                    rows_empty_q <= strip_none;
+                    clear_addr_q <= WAW'(32'(strip_first[ROW_W-1:0]) * COLS);
+                    clear_last_q <= WAW'(32'(strip_last_in[ROW_W-1:0]) * COLS + (COLS - 1));
                     state_q <= S_CHECK;
                 end
                 S_CHECK: begin
@@ -191,12 +211,12 @@ module gpu_raster #(
                         errors[1] <= 1'b1;
                         state_q <= ctrl_swap ? S_VBLANK : S_FINISH;
                     end else begin
-                        state_q <= (ctrl_clear || zclear) ? S_CLEAR : S_DRAW;
+                        state_q <= ((ctrl_clear || zclear) && !rows_empty_q) ? S_CLEAR : S_DRAW;
                     end
                 end
                 S_CLEAR: begin
                     clear_addr_q <= clear_addr_q + 1'b1;
-                    if (clear_addr_q == WAW'(WORDS - 1)) begin
+                    if (clear_addr_q == clear_last_q) begin
                         state_q <= S_DRAW;
                     end
                 end

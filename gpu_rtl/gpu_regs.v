@@ -40,6 +40,7 @@ module gpu_regs #(
     output reg  [31:0]       tri_count,
     output reg  [7:0]        clear_color,
     output reg  [1:0]        fb_wmask,     // FB_WRITE_MASK: {WMASK_HI, WMASK_LO}, 2'b11 without ENABLE_WMASK
+    output reg  [31:0]       strip,        // STRIP as written: {STRIP_LAST, STRIP_FIRST}
     output reg  [31:0]       doorbell_tag,
     output reg               start,        // one-cycle pulse: run the batch
     output reg               soft_reset,   // one-cycle pulse: RESET was written
@@ -74,7 +75,7 @@ module gpu_regs #(
         || reg_offset == gpu_pkg::GPU_REG_VTX_BASE || reg_offset == gpu_pkg::GPU_REG_VTX_COUNT
         || reg_offset == gpu_pkg::GPU_REG_TRI_BASE || reg_offset == gpu_pkg::GPU_REG_TRI_COUNT
         || reg_offset == gpu_pkg::GPU_REG_CLEAR_COLOR || reg_offset == gpu_pkg::GPU_REG_DOORBELL
-        || reg_offset == gpu_pkg::GPU_REG_FB_WRITE_MASK);
+        || reg_offset == gpu_pkg::GPU_REG_FB_WRITE_MASK || reg_offset == gpu_pkg::GPU_REG_STRIP);
     wire write_dropped = is_write && busy && (in_pal || in_vtx || in_idx || is_batch_reg);
     wire write_ok = is_write && !busy;
 
@@ -103,6 +104,7 @@ module gpu_regs #(
             tri_count <= 32'd0;
             clear_color <= 8'd0;
             fb_wmask <= 2'b11;
+            strip <= 32'(FB_HEIGHT - 1) << gpu_pkg::GPU_STRIP_LAST_LSB;  // the whole frame
             doorbell_tag <= 32'd0;
             start <= 1'b0;
             err_write_busy_q <= 1'b0;
@@ -135,6 +137,7 @@ module gpu_regs #(
                                          bus_wdata[gpu_pkg::GPU_WMASK_LO_LSB]};
                         end
                     end
+                    gpu_pkg::GPU_REG_STRIP:       strip <= bus_wdata;
                     gpu_pkg::GPU_REG_DOORBELL: begin
                         doorbell_tag <= bus_wdata;
                         start <= 1'b1;
@@ -179,6 +182,7 @@ module gpu_regs #(
             gpu_pkg::GPU_REG_CLEAR_COLOR:        reg_value = {24'd0, clear_color};
             gpu_pkg::GPU_REG_FB_WRITE_MASK:      reg_value = (32'(fb_wmask[1]) << gpu_pkg::GPU_WMASK_HI_LSB)
                                                            | (32'(fb_wmask[0]) << gpu_pkg::GPU_WMASK_LO_LSB);
+            gpu_pkg::GPU_REG_STRIP:              reg_value = strip;
             gpu_pkg::GPU_REG_DOORBELL:           reg_value = doorbell_tag;
             gpu_pkg::GPU_REG_RESET:              reg_value = reset_value_q;
             gpu_pkg::GPU_REG_STATUS:             reg_value = status_value;

@@ -65,6 +65,9 @@ module gpu_span_walker #(
     input  gpu_pkg::desc_t          in_desc,      // the primitive; columns in its low COL_W bits
     input  wire                     ztest,        // CTRL.ZTEST of the batch
     input  wire                     dither,       // CTRL.DITHER of the batch (Gouraud triangles)
+    input  wire [gpu_pkg::ROW_W-1:0] row_first,   // the batch's STRIP rows, the last within the
+    input  wire [gpu_pkg::ROW_W-1:0] row_last,    // frame; rows_empty: none (lines plot nothing,
+    input  wire                     rows_empty,   // the set-up rejects every triangle)
     // depth buffer (ENABLE_ZBUF): read the span's depths, write the winners'
     output wire                     z_rd_en,
     output wire [WAW-1:0]           z_rd_addr,
@@ -187,9 +190,10 @@ module gpu_span_walker #(
     reg [PIX_W:0] l2maj_q, l2min_q;
     reg signed [LERR_W-1:0] lerr_q;
     localparam signed [PIX_W-1:0] LINE_X_END = PIX_W'(FB_WIDTH);   // first column off screen
-    localparam signed [PIX_W-1:0] LINE_Y_END = PIX_W'(FB_HEIGHT);  // first row off screen
     localparam signed [PIX_W-1:0] PIX_ONE = 1;
-    wire line_on_screen = lx_q >= 0 && lx_q < LINE_X_END && ly_q >= 0 && ly_q < LINE_Y_END;
+    // On the screen's columns and the strip's rows (contract "Strips"; row_last <= FB_HEIGHT - 1).
+    wire line_on_screen = lx_q >= 0 && lx_q < LINE_X_END && !rows_empty
+                       && ly_q >= PIX_W'(row_first) && ly_q <= PIX_W'(row_last);
     wire [X_W-1:0] line_px = lx_q[X_W-1:0];
     wire [ROW_W-1:0] line_py = ly_q[ROW_W-1:0];
     wire [WAW-1:0] line_addr = WAW'(32'(line_py) * WORDS_PER_ROW + 32'(line_px) / SPAN_W);

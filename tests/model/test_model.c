@@ -237,7 +237,7 @@ void test_bus(void)
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), GPU_TRI_CAP);
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), 512);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), 1024);
-    CHECK_EQ(gpu_model_read(m, GPU_REG_VERSION), 0x00010001u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_VERSION), 0x00010002u);
     CHECK_EQ(gpu_model_read(m, GPU_REG_FB_SIZE), 320u | (240u << 16));
 
     /* Power-on state: everything else zero, palette black, fbs 0. */
@@ -659,11 +659,134 @@ static void test_scanout(void)
     free(m);
 }
 
+/* ---- strips (contract "Strips") ---------------------------------------- */
+
+/* Pixels of value v among the first n of fb. */
+static size_t count_n(const uint8_t *fb, size_t n, uint8_t v)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < n; i++) {
+        k += fb[i] == v;
+    }
+    return k;
+}
+
+/* A model with every feature, at the given frame. */
+static gpu_model *strip_model(uint32_t w, uint32_t h)
+{
+    gpu_model *m = alloc_model();
+    gpu_model_config cfg = { 8, true, true, 0, 0, 16, true, true, w, h };
+    gpu_model_reset_config(m, &cfg);
+    return m;
+}
+
+/* The same random scene into m: vertices with depths and intensities (some far beyond the frame),
+ * flat and Gouraud triangles and lines. */
+static void strip_scene(gpu_model *m, uint32_t seed, uint32_t nv, uint32_t np)
+{
+    const int32_t w16 = 16 * (int32_t)m->cfg.fb_width;
+    const int32_t h16 = 16 * (int32_t)m->cfg.fb_height;
+
+    test_srand(seed);
+    for (uint32_t i = 0; i < nv; i++) {
+        uint32_t word[GPU_VTX_WORDS] = { 0 };
+        const int32_t x = test_rand_range(-w16 / 4, w16 + w16 / 4);
+        const int32_t y = test_rand_range(-h16 / 4, h16 + h16 / 4);
+
+        word[GPU_VTX_X_WORD] |= ((uint32_t)x & GPU_VTX_X_MASK) << GPU_VTX_X_LSB;
+        word[GPU_VTX_Y_WORD] |= ((uint32_t)y & GPU_VTX_Y_MASK) << GPU_VTX_Y_LSB;
+        word[GPU_VTX_Z_WORD] |= (test_rand() & GPU_VTX_Z_MASK) << GPU_VTX_Z_LSB;
+        word[GPU_VTX_I_WORD] |= (test_rand() & GPU_VTX_I_MASK) << GPU_VTX_I_LSB;
+        for (uint32_t k = 0; k < GPU_VTX_WORDS; k++) {
+            gpu_model_write(m, GPU_WIN_VTX + (i * GPU_VTX_WORDS + k) * 4u, word[k]);
+        }
+    }
+    for (uint32_t i = 0; i < np; i++) {
+        const uint32_t kind = (i % 5u == 0u) ? GPU_PRIM_KIND_LINE
+                            : ((i % 3u == 0u) ? GPU_PRIM_KIND_TRI_GOURAUD : GPU_PRIM_KIND_TRI);
+        test_set_prim(m, i, test_rand() % nv, test_rand() % nv, test_rand() % nv,
+                      16u * (1u + test_rand() % 14u), kind);
+    }
+}
+
+/* One batch of the scene's primitives into the rows first .. last: clearing colour and depth
+ * there, depth-tested, dithered. */
+static void strip_batch(gpu_model *m, uint32_t nv, uint32_t np, uint32_t first, uint32_t last,
+                        uint32_t tag)
+{
+    gpu_model_write(m, GPU_REG_STRIP, first | (last << GPU_STRIP_LAST_LSB));
+    test_batch(m, GPU_CTRL_CLEAR_MASK | GPU_CTRL_ZCLEAR_MASK | GPU_CTRL_ZTEST_MASK |
+                  GPU_CTRL_DITHER_MASK, 0, nv, 0, np, 0x21, tag);
+}
+
+static void test_strips(void)
+{
+    static const uint32_t frames[][2] = { { GPU_FB_WIDTH, GPU_FB_HEIGHT },
+                                          { GPU_FB_MAX_WIDTH, GPU_FB_MAX_HEIGHT } };
+
+    for (unsigned f = 0; f < 2; f++) {
+        const uint32_t w = frames[f][0];
+        const uint32_t h = frames[f][1];
+        const uint32_t heights[] = { 1, 7, 16, 64, h };
+        gpu_model *whole = strip_model(w, h);
+        gpu_model *strips = strip_model(w, h);
+        const size_t px = (size_t)w * h;
+
+        /* After reset: the whole frame; reads back all 32 bits. */
+        CHECK_EQ(gpu_model_read(whole, GPU_REG_STRIP), (h - 1u) << GPU_STRIP_LAST_LSB);
+        gpu_model_write(strips, GPU_REG_STRIP, 0xFFFF1234u);
+        CHECK_EQ(gpu_model_read(strips, GPU_REG_STRIP), 0xFFFF1234u);
+
+        /* The clear fills the strip's rows only; a last row beyond the frame is its last. */
+        gpu_model_write(strips, GPU_REG_STRIP, 10u | (20u << GPU_STRIP_LAST_LSB));
+        test_batch(strips, GPU_CTRL_CLEAR_MASK, 0, 0, 0, 0, 0xAB, 1);
+        CHECK_EQ(count_n(gpu_model_back(strips), px, 0xAB), 11u * w);
+        CHECK_EQ(test_back_px(strips, 0, 9), 0);
+        CHECK_EQ(test_back_px(strips, (int)w - 1, 20), 0xAB);
+        CHECK_EQ(test_back_px(strips, 0, 21), 0);
+        gpu_model_write(strips, GPU_REG_STRIP, (h - 2u) | (0xFFFFu << GPU_STRIP_LAST_LSB));
+        test_batch(strips, GPU_CTRL_CLEAR_MASK, 0, 0, 0, 0, 0xCD, 2);
+        CHECK_EQ(test_back_px(strips, 3, (int)h - 2), 0xCD);
+        CHECK_EQ(test_back_px(strips, 3, (int)h - 1), 0xCD);
+        CHECK_EQ(test_back_px(strips, 3, (int)h - 3), 0);
+
+        /* A first row after the last: nothing cleared or drawn, every triangle rejected (the 20
+         * lines step through as if off screen: drawn, no pixel). */
+        strip_scene(strips, 7, 64, 100);
+        strip_batch(strips, 64, 100, 30, 29, 3);
+        CHECK_EQ(count_n(gpu_model_back(strips), px, 0x21), 0);
+        CHECK_EQ(gpu_model_read(strips, GPU_REG_PERF_PIXELS), 0);
+        CHECK_EQ(gpu_model_read(strips, GPU_REG_PERF_TRIS_REJECTED), 80);
+
+        /* The frame drawn as strips of every height equals the frame drawn whole (colour and
+         * depth), several scenes. */
+        for (uint32_t seed = 1; seed <= 3; seed++) {
+            strip_scene(whole, seed, 64, 120);
+            strip_scene(strips, seed, 64, 120);
+            strip_batch(whole, 64, 120, 0, h - 1u, 10);
+            for (size_t k = 0; k < sizeof heights / sizeof heights[0]; k++) {
+                uint32_t tag = 100;
+
+                memset((uint8_t *)gpu_model_back(strips), 0x5A, px);
+                for (uint32_t r = 0; r < h; r += heights[k]) {
+                    strip_batch(strips, 64, 120, r, r + heights[k] - 1u, tag++);
+                }
+                CHECK(memcmp(gpu_model_back(whole), gpu_model_back(strips), px) == 0);
+                CHECK(memcmp(whole->zbuf, strips->zbuf, px * sizeof whole->zbuf[0]) == 0);
+            }
+            CHECK(count_n(gpu_model_back(whole), px, 0x21) < px / 2);  /* much was drawn */
+        }
+        free(whole);
+        free(strips);
+    }
+}
+
 void test_batch_rules(void)
 {
     test_errors();
     test_clear_swap();
     test_scanout();
+    test_strips();
 }
 
 int main(void)

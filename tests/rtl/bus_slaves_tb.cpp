@@ -72,6 +72,7 @@ struct Model {
         reg[GPU_REG_VTX_CAP / 4] = GPU_VTX_CAP;
         reg[GPU_REG_TRI_CAP / 4] = GPU_TRI_CAP;
         reg[GPU_REG_FB_SIZE / 4] = (GPU_FB_HEIGHT << 16) | GPU_FB_WIDTH;
+        reg[GPU_REG_STRIP / 4] = (GPU_FB_HEIGHT - 1u) << GPU_STRIP_LAST_LSB;  // the whole frame
     }
     static uint32_t rw_mask(uint32_t addr)  // 0 for an address that is not a rw register
     {
@@ -82,7 +83,7 @@ struct Model {
         case GPU_REG_CLEAR_COLOR: return 0xffu;
         case GPU_REG_FB_WRITE_MASK: return GPU_DEFAULT_ENABLE_WMASK ? GPU_WMASK_LO_MASK | GPU_WMASK_HI_MASK : 0u;
         case GPU_REG_VTX_BASE: case GPU_REG_VTX_COUNT: case GPU_REG_TRI_BASE: case GPU_REG_TRI_COUNT:
-        case GPU_REG_DOORBELL: case GPU_REG_RESET: return 0xffffffffu;
+        case GPU_REG_STRIP: case GPU_REG_DOORBELL: case GPU_REG_RESET: return 0xffffffffu;
         default: return 0;
         }
     }
@@ -115,7 +116,7 @@ struct Op {
 };
 
 static const uint32_t RW_REGS[] = {GPU_REG_CTRL, GPU_REG_VTX_BASE, GPU_REG_VTX_COUNT, GPU_REG_TRI_BASE,
-                                   GPU_REG_TRI_COUNT, GPU_REG_CLEAR_COLOR, GPU_REG_RESET};
+                                   GPU_REG_TRI_COUNT, GPU_REG_CLEAR_COLOR, GPU_REG_STRIP, GPU_REG_RESET};
 
 static uint32_t random_data()
 {
@@ -579,6 +580,7 @@ static void batch()
     write_sync(GPU_REG_TRI_BASE, tb);
     write_sync(GPU_REG_TRI_COUNT, 1);
     write_sync(GPU_REG_CLEAR_COLOR, rnd(256));
+    write_sync(GPU_REG_STRIP, GPU_STRIP_LAST_MASK);  // rows 0 .. the frame's last, whatever went before
     const uint32_t tag = uint32_t(rng()) | 1u;
     write_sync(GPU_REG_DOORBELL, tag);
     int polls = 0;
