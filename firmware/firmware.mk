@@ -135,7 +135,7 @@ FW_UNIT_WIDE  := $(BUILD)/tests/fw_unit_wide
 # pipeline stages), gpu/ (batching and the driver), scenes/, app/ (the loop, main, settings).
 FW_PURE_SRCS := firmware/math/fixed.c firmware/math/vec.c firmware/camera/camera.c \
                 firmware/input/input.c \
-                $(addprefix firmware/render/,palette.c mesh.c proj.c clip.c sort.c render.c) \
+                $(addprefix firmware/render/,palette.c mesh.c proj.c clip.c sort.c render.c strips.c) \
                 firmware/gpu/batch.c firmware/scenes/scene.c \
                 $(addprefix firmware/model/,crc32.c meshfile.c upload.c) \
                 $(FW_ALL_SCENE_SRCS)

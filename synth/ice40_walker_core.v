@@ -60,7 +60,7 @@ module ice40_walker_core #(
 
     gpu_span_walker #(.SPAN_W(SPAN_W), .ENABLE_ZBUF(0)) u_walker (
         .clk(clk), .rst(rst),
-        .in_valid(ld_go), .in_ready(ready), .in_desc(walker_desc), .ztest(1'b0),
+        .in_valid(ld_go), .in_ready(ready), .in_desc(walker_desc), .ztest(1'b0), .dither(1'b0),
         .row_first('0), .row_last(gpu_pkg::ROW_W'(gpu_pkg::GPU_FB_HEIGHT - 1)), .rows_empty(1'b0),
         .z_rd_en(unused_z_rd_en), .z_rd_addr(unused_z_rd_addr), .z_rd_data({(SPAN_W * 16){1'b0}}),
         .z_wr_en(unused_z_wr_en), .z_wr_addr(unused_z_wr_addr), .z_wr_data(unused_z_wr_data),

@@ -60,6 +60,7 @@
 #include "render/proj.h"
 #include "math/real.h"
 #include "render/render.h"
+#include "render/strips.h"
 #include "scenes/scene.h"
 #include "app/pipeline.h"
 #include "app/cam_path.h"
@@ -84,6 +85,9 @@ struct app {
 #if FW_WITH_UPLOAD
     struct upload_rx upload;
     bool model_from_upload;  /* the model scene's source is the staging buffer */
+#endif
+#if FW_STRIP_ROWS
+    struct strip_bins strips;  /* the pass's primitives binned into strips (render/strips.h) */
 #endif
 };
 
@@ -745,43 +749,56 @@ static bool app_global_keys(struct app *app, const struct input_counts *keys,
     return true;
 }
 
+/* A batch's CTRL: the first of a group (the pass, or a strip of it) clears the colour when
+ * `clear` and, with the depth test on, the depth; the frame's last swaps. */
+static uint32_t app_batch_ctrl(const struct app *app, bool first, bool clear, bool last)
+{
+    uint32_t ctrl = ((first && clear) ? GPU_CTRL_CLEAR_MASK : 0u) | (last ? GPU_CTRL_SWAP_MASK : 0u);
+
+    if (app->depth_test) {
+        ctrl |= GPU_CTRL_ZTEST_MASK | (first ? GPU_CTRL_ZCLEAR_MASK : 0u);
+    }
+    if (FW_WITH_GOURAUD && FW_GOURAUD && FW_DITHER && gpu_caps_gouraud(app->gpu.info.caps)) {
+        ctrl |= GPU_CTRL_DITHER_MASK;  /* acts on Gouraud triangles only */
+    }
+    return ctrl;
+}
+
 /*
- * Stream the frame's primitives to the GPU: its first batch clears the colour when `clear` and
- * (depth test on) the depth buffer always, the pass's own. Returns false when the watchdog fired
+ * Send a group of batches: the primitives of the cursor (the pass's draw order, or with `list`
+ * a strip's list), drawing rows `strip`; its first batch clears (app_batch_ctrl), and when
+ * `final` (the frame's last group) its last batch swaps. Returns false when the watchdog fired
  * (the GPU has been reset and the frame is abandoned).
  */
-static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last_pass,
-                       struct frame_stats *tot)
+static bool app_send_group(struct app *app, unsigned frame_no, struct batch_cursor *cur, bool list,
+                           bool clear, bool final, uint32_t strip, uint8_t clear_color,
+                           struct frame_stats *tot)
 {
-    struct batch_cursor cur;
     bool first = true;
-    const uint8_t clear_color = !app->anaglyph ? PAL_SKY
-                                : (app_eye_planes(app) ? PAL_ANAGLYPH_BACKGROUND : PAL_NIGHT);
+    bool done;
 
-    batch_begin(&cur);
     do {
         struct gpu_batch batch;
         struct gpu_stats stats;
-        uint32_t ctrl;
         uint32_t tag;
         struct frame_span wait;
         uint64_t t0;
         uint64_t t1;
-        bool last;
         int rc;
 
         t0 = frame_stats_mark();
-        batch_fill(&cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap, &app->words);
+        if (list) {
+            batch_fill_list(cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap,
+                            &app->words);
+            done = batch_list_done(cur);
+        } else {
+            batch_fill(cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap, &app->words);
+            done = batch_done(cur, &app->frame);
+        }
         t1 = frame_stats_batch_filled(tot, t0);
-        last = last_pass && batch_done(&cur, &app->frame);
-        ctrl = ((first && clear) ? GPU_CTRL_CLEAR_MASK : 0u) | (last ? GPU_CTRL_SWAP_MASK : 0u);
-        if (app->depth_test) {
-            ctrl |= GPU_CTRL_ZTEST_MASK | (first ? GPU_CTRL_ZCLEAR_MASK : 0u);
-        }
-        if (FW_WITH_GOURAUD && FW_GOURAUD && FW_DITHER && gpu_caps_gouraud(app->gpu.info.caps)) {
-            ctrl |= GPU_CTRL_DITHER_MASK;  /* acts on Gouraud triangles only */
-        }
-        batch = batch_descriptor(&app->words, ctrl, clear_color);
+        batch = batch_descriptor(&app->words, app_batch_ctrl(app, first, clear, final && done),
+                                 clear_color);
+        batch.strip = strip;
         rc = gpu_submit_batch(&app->gpu, &batch, &tag);
         if (rc != GPU_OK) {
             printf("error: frame %u: batch not submitted: %s\n", frame_no, gpu_strerror(rc));
@@ -804,8 +821,67 @@ static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last
         frame_stats_submitted(tot, t0);
         frame_stats_add_gpu(tot, &stats);
         first = false;
-    } while (!batch_done(&cur, &app->frame));
+    } while (!done);
     return true;
+}
+
+#if FW_STRIP_ROWS
+/*
+ * The pass in strips of FW_STRIP_ROWS lines: each strip's batches carry the primitives that
+ * reach it, in draw order, and draw its rows only. A strip no primitive reaches is cleared with
+ * the next one that is drawn (their rows as one band: the band's primitives reach none of the
+ * empty strip's rows); after the last strip drawn, the rows left are cleared by one more batch
+ * where the pass clears, and the frame's last batch swaps.
+ */
+static bool app_submit_strips(struct app *app, unsigned frame_no, bool clear, bool last_pass,
+                              uint8_t clear_color, struct frame_stats *tot)
+{
+    struct strip_bins *b = &app->strips;
+    uint32_t band_first = 0;  /* the first row not yet drawn or cleared */
+
+    strips_bin(b, &app->frame, FW_STRIP_ROWS, gpu_fb_height(&app->gpu.info));
+    for (uint32_t s = 0; s < b->count; s++) {
+        const uint32_t pos = strips_take(b, &app->frame, s);
+        const bool final = last_pass && s + 1u == b->count;
+        struct batch_cursor cur;
+
+        if (pos == STRIPS_NONE && s + 1u < b->count) {
+            continue;
+        }
+        if (pos == STRIPS_NONE && !clear && !final) {
+            break;  /* the rows left: nothing to draw or clear */
+        }
+        batch_begin_list(&cur, pos);
+        if (!app_send_group(app, frame_no, &cur, true, clear, final,
+                            gpu_strip(band_first, strips_last_row(b, s)), clear_color, tot)) {
+            return false;
+        }
+        band_first = strips_last_row(b, s) + 1u;
+    }
+    return true;
+}
+#endif
+
+/*
+ * Stream the pass's primitives to the GPU: its first batch clears the colour when `clear` and
+ * (depth test on) the depth buffer always, the pass's own; in strips where the build says so
+ * (FW_STRIP_ROWS). Returns false when the watchdog fired (the GPU has been reset and the frame is
+ * abandoned).
+ */
+static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last_pass,
+                       struct frame_stats *tot)
+{
+    const uint8_t clear_color = !app->anaglyph ? PAL_SKY
+                                : (app_eye_planes(app) ? PAL_ANAGLYPH_BACKGROUND : PAL_NIGHT);
+#if FW_STRIP_ROWS
+    return app_submit_strips(app, frame_no, clear, last_pass, clear_color, tot);
+#else
+    struct batch_cursor cur;
+
+    batch_begin(&cur);
+    return app_send_group(app, frame_no, &cur, false, clear, last_pass, GPU_STRIP_WHOLE,
+                          clear_color, tot);
+#endif
 }
 
 /* One pass (pipeline.h): the scene seen from one eye, sorted, then the overlay. */

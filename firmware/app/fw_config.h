@@ -30,6 +30,16 @@
 #define FW_DEPTH_TEST 0
 #endif
 
+/* Strips (contract "Strips", render/strips.h): 0, the default, sends each frame whole; a power of
+ * two N draws it N lines at a time, each band given the primitives that reach it (the frames are
+ * the same; the strip renderer's way, docs/strips.md). */
+#ifndef FW_STRIP_ROWS
+#define FW_STRIP_ROWS 0
+#endif
+#if FW_STRIP_ROWS != 0 && (FW_STRIP_ROWS & (FW_STRIP_ROWS - 1)) != 0
+#error "FW_STRIP_ROWS must be 0 or a power of two"
+#endif
+
 /* Gouraud shading (needs FW_WITH_GOURAUD and a GPU with CAPS_GOURAUD): 1, the default, draws the
  * meshes that carry vertex normals (the landscape's) with per-vertex light, interpolated by the GPU;
  * 0 draws every scene flat. FW_DITHER: 1 sets CTRL_DITHER (4x4 ordered dither between adjacent

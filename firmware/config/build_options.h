@@ -69,16 +69,16 @@
 #define FW_MODEL_WIRE_PRIMS(f) (6u * ((f) + (f) / 4u) + 2u)
 
 /* The render frame's vertex and primitive numbers (render/render.h): 16 bits, which bound a frame
- * to 65,536 of each and keep a primitive 8 bytes (the GPU's two words) and a sort item 32 bits, or
+ * to 65,535 of each (the last value marks no position) and keep a primitive 8 bytes (the GPU's two words) and a sort item 32 bits, or
  * (FW_RENDER_WIDE_INDEX 1) 32 bits, with 16-byte primitives and 64-bit sort items, where the model
  * scene's frame needs more: the SDRAM's builds, whose model holds 65,536 faces. Derived, never set:
  * every object of a program sees the same capacities and so agrees on it. (Without the capacities,
  * as in a test that builds no model scene, both are 0 here and the frame is narrow.) */
 #define FW_MODEL_FRAME_WIDEST_ \
     ((FW_FRAME_WIRE_COLUMNS ? FW_MODEL_WIRE_VERTS(FW_MODEL_MAX_FACES) \
-                            : FW_MODEL_FRAME_VERTS(FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES)) > 65536u || \
+                            : FW_MODEL_FRAME_VERTS(FW_MODEL_MAX_VERTS, FW_MODEL_MAX_FACES)) > 65535u || \
      (FW_FRAME_WIRE_COLUMNS ? FW_MODEL_WIRE_PRIMS(FW_MODEL_MAX_FACES) \
-                            : FW_MODEL_FRAME_PRIMS(FW_MODEL_MAX_FACES)) > 65536u)
+                            : FW_MODEL_FRAME_PRIMS(FW_MODEL_MAX_FACES)) > 65535u)
 #if FW_MODEL_FRAME_WIDEST_
 #define FW_RENDER_WIDE_INDEX 1
 #else

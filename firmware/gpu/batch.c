@@ -8,6 +8,11 @@ void batch_begin(struct batch_cursor *cur)
     cur->next = 0;
 }
 
+void batch_begin_list(struct batch_cursor *cur, uint32_t first)
+{
+    cur->next = first;
+}
+
 /* The contract's vertex and primitive words are, on a little-endian CPU, the very bytes of
  * proj_vertex.sxy / zbuf and render_prim.w (with frame vertex numbers): batches copy words
  * instead of packing fields. Every platform of this firmware is little-endian; a contract or a
@@ -129,8 +134,14 @@ static inline uint32_t batch_put_outline(uint32_t *pw, const uint32_t s[3], uint
     return n;
 }
 
-void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_cap,
-                uint32_t tri_cap, struct batch_words *out)
+/* batch_fill and batch_fill_list: the next primitives from the draw order, or from a list linked
+ * through sort_tmp (render/strips.h), a constant at each call. */
+static inline __attribute__((always_inline)) void batch_fill_from(struct batch_cursor *cur,
+                                                                  struct render_frame *f,
+                                                                  uint32_t vtx_cap,
+                                                                  uint32_t tri_cap,
+                                                                  struct batch_words *out,
+                                                                  bool list)
 {
     uint8_t stamp;
     const uint32_t first = cur->next;
@@ -152,7 +163,8 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
     /* With outlines, at least 3: an outline's three lines always fit an empty batch. */
     tri_cap = (tri_cap < 3u && f->outline_count != 0u) ? 3u : tri_cap;
 
-    if (first == 0u && f->outline_count == 0u && f->vert_count <= vtx_cap && total <= tri_cap) {
+    if (!list && first == 0u && f->outline_count == 0u && f->vert_count <= vtx_cap &&
+        total <= tri_cap) {
         batch_fill_whole(f, out);
         cur->next = total;
         return;
@@ -173,9 +185,9 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
     /* Primitives [first, end) in draw order (render_draw_index) at most; the batch closes early
      * when fewer than three vertex slots are left (nv > vtx_room), or, before an outline, fewer
      * than three primitive slots. */
-    end = (total - first > tri_cap) ? first + tri_cap : total;
+    end = list ? BATCH_LIST_END : ((total - first > tri_cap) ? first + tri_cap : total);
     vtx_room = vtx_cap - 3u;
-    while (i < end && nv <= vtx_room) {
+    while (i != end && nv <= vtx_room) {
         const struct batch_prim_fields r = batch_prim_read(&prim[render_draw_index(f, i)]);
         const bool outline = ((r.hi >> GPU_PRIM_KIND_LSB) & RENDER_PRIM_OUTLINE) != 0u;
         uint32_t *pw = &prim_words[np * GPU_PRIM_WORDS];
@@ -198,7 +210,7 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
                 np++;
             }
         }
-        i++;
+        i = list ? sort_item_payload(f->sort_tmp[i]) : i + 1u;
         if (np >= tri_cap) {
             break;
         }
@@ -206,4 +218,16 @@ void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_c
     out->vtx_count = nv;
     out->prim_count = np;
     cur->next = i;
+}
+
+void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_cap,
+                uint32_t tri_cap, struct batch_words *out)
+{
+    batch_fill_from(cur, f, vtx_cap, tri_cap, out, false);
+}
+
+void batch_fill_list(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_cap,
+                     uint32_t tri_cap, struct batch_words *out)
+{
+    batch_fill_from(cur, f, vtx_cap, tri_cap, out, true);
 }

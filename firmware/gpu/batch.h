@@ -57,15 +57,27 @@ static inline bool batch_done(const struct batch_cursor *cur, const struct rende
     return cur->next >= f->prim_count;
 }
 
+/* The same from a list of draw positions linked through the frame's sort_tmp (a strip's,
+ * render/strips.h: its first position, BATCH_LIST_END after the last), in its order. */
+#define BATCH_LIST_END RENDER_NO_POSITION
+void batch_begin_list(struct batch_cursor *cur, uint32_t first);
+void batch_fill_list(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_cap,
+                     uint32_t tri_cap, struct batch_words *out);
+
+static inline bool batch_list_done(const struct batch_cursor *cur)
+{
+    return cur->next == BATCH_LIST_END;
+}
+
 /* The driver's descriptor of the batch batch_fill just wrote: its words from buffer offset 0,
- * with these CTRL bits and clear colour. */
+ * with these CTRL bits and clear colour, drawing every row (a strip's: set .strip). */
 static inline struct gpu_batch batch_descriptor(const struct batch_words *w, uint32_t ctrl,
                                                 uint8_t clear_color)
 {
     const struct gpu_batch b = {
         .vtx_words = w->vtx, .vtx_base = 0, .vtx_count = w->vtx_count,
         .prim_words = w->prim, .tri_base = 0, .prim_count = w->prim_count,
-        .ctrl = ctrl, .clear_color = clear_color,
+        .ctrl = ctrl, .clear_color = clear_color, .strip = GPU_STRIP_WHOLE,
     };
 
     return b;

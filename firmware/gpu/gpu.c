@@ -117,6 +117,7 @@ int gpu_submit_batch(struct gpu_dev *dev, const struct gpu_batch *batch, uint32_
     gpu_write(GPU_REG_TRI_BASE, batch->tri_base);
     gpu_write(GPU_REG_TRI_COUNT, batch->prim_count);
     gpu_write(GPU_REG_CLEAR_COLOR, batch->clear_color);
+    gpu_write(GPU_REG_STRIP, batch->strip);
 
     t = dev->next_tag;
     bsp_fence();  /* buffers and batch registers before the doorbell */

@@ -115,7 +115,17 @@ struct gpu_batch {
     uint32_t prim_count;
     uint32_t ctrl;               /* GPU_CTRL_*_MASK bits */
     uint8_t clear_color;         /* palette index used when ctrl has GPU_CTRL_CLEAR_MASK */
+    uint32_t strip;              /* STRIP: the rows it draws and clears (gpu_strip, GPU_STRIP_WHOLE) */
 };
+
+/* STRIP of a batch drawing rows first .. last (contract "Strips"), and of one drawing them all
+ * (rows 0 .. 65535: the frame's last is its last). */
+static inline uint32_t gpu_strip(uint32_t first, uint32_t last)
+{
+    return ((first << GPU_STRIP_FIRST_LSB) & GPU_STRIP_FIRST_MASK) |
+           ((last << GPU_STRIP_LAST_LSB) & GPU_STRIP_LAST_MASK);
+}
+#define GPU_STRIP_WHOLE GPU_STRIP_LAST_MASK
 
 /* Counters and flags of the last finished batch. */
 struct gpu_stats {

@@ -49,9 +49,10 @@
 /* A frame's capacities are the program's (render_frame_init): each scene states what it needs in
  * scenes/scene_list.h and the program sizes its frame for the largest of the scenes it is built
  * with (scenes/scene_set.h). The index formats bound them: vertex numbers are render_index values
- * (render_prim), primitive numbers the payload of a sort item (sort.h) — 16 bits, or 32 in a build
- * with wide frame indices (config/build_options.h: FW_RENDER_WIDE_INDEX, where the model scene's
- * capacities need more than 65,536), whose limit 2^24 keeps every count and sum of them far from
+ * (render_prim), primitive numbers the payload of a sort item (sort.h) — 16 bits (65,535 of each:
+ * the largest value is RENDER_NO_POSITION), or 32 in a build with wide frame indices
+ * (config/build_options.h: FW_RENDER_WIDE_INDEX, where the model scene's capacities need more
+ * than 65,535), whose limit 2^24 keeps every count and sum of them far from
  * overflowing 32 bits. Anything beyond a capacity is not drawn and is counted in stats.dropped,
  * which the frame loop reports. */
 #if FW_RENDER_WIDE_INDEX
@@ -59,8 +60,11 @@ typedef uint32_t render_index;
 #define RENDER_INDEX_LIMIT 16777216u
 #else
 typedef uint16_t render_index;
-#define RENDER_INDEX_LIMIT 65536u
+#define RENDER_INDEX_LIMIT 65535u
 #endif
+/* No draw position: a list of positions linked through sort_tmp ends with it (render/strips.h,
+ * gpu/batch.h). A frame's positions are below RENDER_INDEX_LIMIT <= it. */
+#define RENDER_NO_POSITION SORT_PAYLOAD_MASK
 
 struct render_prim {
 #if FW_RENDER_WIDE_INDEX

@@ -30,7 +30,7 @@ static const uint32_t test_gpu_tiny_words[2] = {0};
 static const struct gpu_batch test_gpu_tiny_batch = {
     .vtx_words = test_gpu_tiny_words, .vtx_base = 0, .vtx_count = 1,
     .prim_words = test_gpu_tiny_words, .tri_base = 0, .prim_count = 0,
-    .ctrl = 0, .clear_color = 0,
+    .ctrl = 0, .clear_color = 0, .strip = GPU_STRIP_WHOLE,
 };
 
 /* A device as the contract describes it after reset. */
@@ -190,6 +190,7 @@ void test_gpu_submit(void)
         .vtx_words = vtx, .vtx_base = 0, .vtx_count = 3,
         .prim_words = prim, .tri_base = 0, .prim_count = 2,
         .ctrl = GPU_CTRL_CLEAR_MASK | GPU_CTRL_SWAP_MASK, .clear_color = 1,
+        .strip = gpu_strip(16u, 31u),
     };
     struct gpu_dev dev;
     uint32_t tag = 0;
@@ -212,6 +213,7 @@ void test_gpu_submit(void)
     CHECK_EQ(REG(GPU_REG_TRI_BASE), 0u);
     CHECK_EQ(REG(GPU_REG_TRI_COUNT), 2u);
     CHECK_EQ(REG(GPU_REG_CLEAR_COLOR), 1u);
+    CHECK_EQ(REG(GPU_REG_STRIP), 16u | (31u << GPU_STRIP_LAST_LSB));
     CHECK_EQ(REG(GPU_REG_DOORBELL), 42u);
 
     /* Ordering: at the fence the batch registers held their values, DOORBELL still the old tag. */
@@ -253,7 +255,7 @@ void test_gpu_submit_in_place(void)
     uint32_t *prim = gpu_buffer_words(GPU_WIN_IDX);
     struct gpu_batch b = {
         .vtx_base = 0, .vtx_count = 3, .tri_base = 0, .prim_count = 1,
-        .ctrl = GPU_CTRL_SWAP_MASK, .clear_color = 0,
+        .ctrl = GPU_CTRL_SWAP_MASK, .clear_color = 0, .strip = GPU_STRIP_WHOLE,
     };
     struct gpu_dev dev;
     uint32_t tag = 0;
@@ -271,7 +273,8 @@ void test_gpu_submit_in_place(void)
     b.prim_words = prim;
     writes = fake_write_count;
     CHECK_EQ(gpu_submit_batch(&dev, &b, &tag), GPU_OK);
-    CHECK_EQ(fake_write_count - writes, 7u);  /* CTRL, VTX_BASE/COUNT, TRI_BASE/COUNT, CLEAR, DOORBELL */
+    CHECK_EQ(fake_write_count - writes, 8u);  /* CTRL, VTX_BASE/COUNT, TRI_BASE/COUNT, CLEAR, STRIP,
+                                                 DOORBELL */
     for (unsigned i = 0; i < 3u * GPU_VTX_WORDS; i++) {
         CHECK_EQ(REG(GPU_WIN_VTX + 4u * i), 0x00100010u + i);
     }
@@ -283,7 +286,7 @@ void test_gpu_submit_in_place(void)
     b.vtx_base = 5;
     writes = fake_write_count;
     CHECK_EQ(gpu_submit_batch(&dev, &b, &tag), GPU_OK);
-    CHECK_EQ(fake_write_count - writes, 7u + 3u * GPU_VTX_WORDS);
+    CHECK_EQ(fake_write_count - writes, 8u + 3u * GPU_VTX_WORDS);
     CHECK_EQ(REG(GPU_WIN_VTX + 4u * 5u * GPU_VTX_WORDS), 0x00100010u);
 }
 
@@ -293,7 +296,7 @@ void test_gpu_submit_capacity(void)
     struct gpu_batch b = {
         .vtx_words = words, .vtx_base = GPU_VTX_CAP - 1u, .vtx_count = 2,
         .prim_words = words, .tri_base = 0, .prim_count = 1,
-        .ctrl = 0, .clear_color = 0,
+        .ctrl = 0, .clear_color = 0, .strip = GPU_STRIP_WHOLE,
     };
     struct gpu_dev dev;
     uint32_t tag = 0;

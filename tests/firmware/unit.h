@@ -108,6 +108,8 @@ void unit_srand(uint32_t seed);
     X(test_batch_shares_vertices)     \
     X(test_batch_outlines)            \
     X(test_batch_wide_frame)          \
+    X(test_strips_match_brute_force)  \
+    X(test_strips_batches)            \
     X(test_voxel_hidden_faces)        \
     X(test_voxel_chunk_border)        \
     X(test_voxel_worst_case)          \

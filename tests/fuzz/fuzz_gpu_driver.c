@@ -97,7 +97,8 @@ void fuzz_bus_write(uint32_t offset, uint32_t value)
         REQUIRE(bus.reset, "RESET written");
         REQUIRE(value != gpu_model_read(gpu, GPU_REG_RESET), "RESET written with its old value");
     } else {
-        REQUIRE(bus.regs && offset >= GPU_REG_CTRL && offset <= GPU_REG_DOORBELL,
+        REQUIRE(bus.regs && ((offset >= GPU_REG_CTRL && offset <= GPU_REG_DOORBELL) ||
+                             offset == GPU_REG_STRIP),
                 "register 0x%x written", offset);
         if (offset == GPU_REG_DOORBELL) {
             REQUIRE(value != 0u, "tag 0");
@@ -194,7 +195,8 @@ static int submit(struct gpu_dev *dev, const struct gpu_batch *b, uint32_t *tag)
     }
     REQUIRE(rc == GPU_OK, "rc %d for a batch that fits", rc);
     REQUIRE(bus.doorbell_done, "no doorbell");
-    REQUIRE(bus.writes == GPU_VTX_WORDS * b->vtx_count + GPU_PRIM_WORDS * b->prim_count + 7u,
+    /* The buffers' words, then CTRL, VTX_BASE/COUNT, TRI_BASE/COUNT, CLEAR_COLOR, STRIP, DOORBELL. */
+    REQUIRE(bus.writes == GPU_VTX_WORDS * b->vtx_count + GPU_PRIM_WORDS * b->prim_count + 8u,
             "%u writes", bus.writes);
     REQUIRE(*tag != 0u && *tag != doorbell_before && dev->pending, "tag %u", *tag);
     /* The model has run the batch: ERR_COUNT exactly when it exceeds the model's own buffers
@@ -409,6 +411,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             b.prim_count = take_value(&r);
             b.ctrl = take8(&r);
             b.clear_color = (uint8_t)take8(&r);
+            b.strip = (fill & 4u) ? take32(&r) : GPU_STRIP_WHOLE;
             b.vtx_words = vtx_words;
             b.prim_words = prim_words;
             /* Arbitrary buffer words (bad indices and kinds included) in the first slots. */

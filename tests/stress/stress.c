@@ -427,6 +427,7 @@ static int raw_batch(uint32_t vtx_count, uint32_t prims, struct gpu_stats *st)
     b.prim_count = prims;
     b.clear_color = PAL_SKY;
     b.ctrl = GPU_CTRL_CLEAR_MASK | GPU_CTRL_SWAP_MASK;
+    b.strip = GPU_STRIP_WHOLE;
     rc = gpu_submit_batch(&stress_dev, &b, &tag);
     if (rc == GPU_OK) {
         rc = gpu_wait(&stress_dev, tag, 1000u);
@@ -794,6 +795,7 @@ static bool case_gpu_capacity(char *out)
     b.prim_count = 1;
     b.clear_color = PAL_SKY;
     b.ctrl = GPU_CTRL_CLEAR_MASK | GPU_CTRL_SWAP_MASK;
+    b.strip = GPU_STRIP_WHOLE;
     rc_vtx = gpu_submit_batch(&stress_dev, &b, &tag);
     b.vtx_count = 3;
     b.prim_count = stress_dev.info.tri_cap + 1u;

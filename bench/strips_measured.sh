@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# make bench-strips, second table: the firmware's binning measured (issue #26's "F"). Each scene's
+# benchmark frames (FW_BENCH_FRAMES, default view, depth test on) at 640x480 in co-simulation, the
+# frame sent whole against the frame in strips of 16 lines (FW_STRIP_ROWS=16: render/strips.h):
+# the firmware's instructions a frame (QEMU -icount, exact) and the GPU's busy cycles a frame (its
+# batches' PERF_BUSY_CYCLES), and the batches. The golden model is not consulted (scene-strips
+# checks the frames are the same).
+#
+# Usage: strips_measured.sh GPUSIM BENCH_DIR OUT_DIR SCENE...
+set -euo pipefail
+sim=${1:?}; dir=${2:?}; out=${3:?}; shift 3
+mean() {  # mean "WORDS" LOG: the mean of the number after WORDS (e.g. "gpu cycles") on the frame lines
+    awk -v f="$1" '/^frame / { k = split(f, w, " ")
+                               for (i = 1; i + k <= NF; i++) {
+                                   hit = 1
+                                   for (j = 1; j <= k; j++) if ($(i + j - 1) != w[j]) hit = 0
+                                   if (hit) { s += $(i + k); n++ }
+                               } }
+                   END { printf "%.0f", n ? s / n : 0 }' "$2"
+}
+commas() { echo "$1" | sed -E ':a; s/([0-9])([0-9]{3})($|[^0-9])/\1,\2\3/; ta'; }
+echo
+echo "| scene | whole: fw instr | GPU cycles | batches | strips of 16: fw instr | GPU cycles | batches | binning, instructions |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|"
+for scene in "$@"; do
+    row="| $scene"
+    whole_instr=0
+    for v in z strips16-z; do
+        log="$out/$scene-$v.uart"
+        "$sim" cosim --fw "$dir/$scene-$v.elf" --frames "$out/frames-$scene-$v" --no-model-check \
+            --uart-log "$log" >"$out/$scene-$v.out" 2>&1 || { tail -n 5 "$out/$scene-$v.out" >&2; exit 1; }
+        instr=$(mean "fw instr" "$log")
+        [ "$v" = z ] && whole_instr=$instr
+        row="$row | $(commas "$instr") | $(commas "$(mean "gpu cycles" "$log")") | $(mean batches "$log")"
+    done
+    echo "$row | +$(commas $((instr - whole_instr))) |"
+done
