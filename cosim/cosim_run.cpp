@@ -225,6 +225,12 @@ int CosimRun::run()
             for (const auto &k : opt_.harness.keys_at) {
                 if (k.first == bridge_.batches() + 1) {
                     uart_.type(qemu_.uart_in_fd(), k.second);
+                    // In QEMU's UART before the batch is done: the firmware, waiting for it, reads
+                    // the keys at its next frame on any host load (scripted runs reproducible).
+                    if (!uart_.wait_taken(qemu_.uart_in_fd(), 5.0)) {
+                        std::fprintf(stderr, "cosim: warning: QEMU took the keys for doorbell %u late\n",
+                                     k.first);
+                    }
                 }
             }
             std::string error;

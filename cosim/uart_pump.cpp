@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include "uart_pty.h"
@@ -70,6 +71,22 @@ void UartPump::pump(int uart_out_fd, bool final)
         finish();
     }
     std::fflush(stdout);
+}
+
+bool UartPump::wait_taken(int uart_in_fd, double timeout_s)
+{
+    // FIONREAD on a pipe's write end counts the bytes the reader has not taken yet (Linux).
+    for (double waited = 0; uart_in_fd >= 0; waited += 100e-6) {
+        int pending = 0;
+        if (ioctl(uart_in_fd, FIONREAD, &pending) != 0 || pending == 0) {
+            return true;
+        }
+        if (waited >= timeout_s) {
+            return false;
+        }
+        usleep(100);
+    }
+    return true;
 }
 
 void UartPump::type(int uart_in_fd, const std::string &text)

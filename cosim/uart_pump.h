@@ -33,6 +33,10 @@ public:
     void finish();
     void pump(int uart_out_fd, bool final);
     void type(int uart_in_fd, const std::string &text);
+    // Waits (up to timeout_s) until QEMU has read everything typed into its UART: its serial port
+    // then holds the bytes (the firmware enables the 16-byte FIFO), so a script's keys reach the
+    // firmware at the frame they were typed for whatever the host's load. False on the timeout.
+    bool wait_taken(int uart_in_fd, double timeout_s);
     void tee_to(UartPty *pty) { tee_ = pty; }
     void on_line(std::function<void(const std::string &)> fn) { on_line_ = std::move(fn); }
 

@@ -402,7 +402,7 @@ void test_scene_voxel_place_break(void)
 /* A frame larger than any pass of the scenes needs (each pass below checks nothing was dropped),
  * to measure what a pass really needs: a narrow frame's most, in a wide build too (whose limit,
  * 2^24, would be a gigabyte of storage). */
-#define MEASURE_FRAME_CAP RENDER_INDEX_LIMIT
+#define MEASURE_FRAME_CAP 65535u
 RENDER_FRAME_STORAGE(measure_frame, MEASURE_FRAME_CAP, MEASURE_FRAME_CAP);
 static struct render_frame measure;
 
