@@ -14,6 +14,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <string.h>
 
 /* Q12.4: one pixel is 16 units, a pixel centre is at 16*n + 8. */
@@ -598,6 +599,21 @@ static bool fb_supported(uint32_t w, uint32_t h)
 {
     return (w == GPU_FB_WIDTH && h == GPU_FB_HEIGHT) ||
            (w == GPU_FB_MAX_WIDTH && h == GPU_FB_MAX_HEIGHT);
+}
+
+bool gpu_model_parse_frame(const char *text, uint32_t *w, uint32_t *h)
+{
+    unsigned width = 0;
+    unsigned height = 0;
+    char tail = 0;
+
+    if (sscanf(text, "%ux%u%c", &width, &height, &tail) != 2 ||
+        !fb_supported(width, height)) {
+        return false;
+    }
+    *w = width;
+    *h = height;
+    return true;
 }
 
 /* A capacity the model can hold: 1 ... max (0 is "the default", handled by

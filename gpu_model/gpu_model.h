@@ -231,6 +231,11 @@ void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg);
  * model cannot stand beside, rather than compare it with another one. */
 const char *gpu_model_config_error(const gpu_model_config *cfg);
 
+/* A frame given as "WxH" on a harness's command line (--frame): true, with
+ * *w and *h, when it is one the model draws (the contract's or its largest),
+ * false for anything else. */
+bool gpu_model_parse_frame(const char *text, uint32_t *w, uint32_t *h);
+
 /* The CAPS register for m's build options. */
 uint32_t gpu_model_caps(const gpu_model *m);
 

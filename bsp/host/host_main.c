@@ -40,6 +40,7 @@
 
 #include "bsp.h"
 #include "bsp_host.h"
+#include "gpu_model.h"
 #include "gpu_regs.h"
 
 /* A mesh file for --model: read whole (the validator, at the scene's start, says what is wrong). */
@@ -142,20 +143,12 @@ int bsp_args(int argc, char **argv)
                 return 2;
             }
         } else if (strcmp(a, "--frame") == 0 && has_value) {
-            unsigned w = 0;
-            unsigned h = 0;
-            char tail = 0;
-
-            if (sscanf(argv[++i], "%ux%u%c", &w, &h, &tail) != 2 ||
-                !((w == GPU_FB_WIDTH && h == GPU_FB_HEIGHT) ||
-                  (w == GPU_FB_MAX_WIDTH && h == GPU_FB_MAX_HEIGHT))) {
+            if (!gpu_model_parse_frame(argv[++i], &cfg.fb_width, &cfg.fb_height)) {
                 fprintf(stderr, "fw-host: --frame wants %ux%u or %ux%u, got '%s'\n",
                         (unsigned)GPU_FB_WIDTH, (unsigned)GPU_FB_HEIGHT,
                         (unsigned)GPU_FB_MAX_WIDTH, (unsigned)GPU_FB_MAX_HEIGHT, argv[i]);
                 return 2;
             }
-            cfg.fb_width = w;
-            cfg.fb_height = h;
         } else if (strcmp(a, "--span-w") == 0 && has_value) {
             cfg.span_w = (unsigned)strtoul(argv[++i], NULL, 10);
         } else {

@@ -753,7 +753,8 @@ static bool app_global_keys(struct app *app, const struct input_counts *keys,
  * `clear` and, with the depth test on, the depth; the frame's last swaps. */
 static uint32_t app_batch_ctrl(const struct app *app, bool first, bool clear, bool last)
 {
-    uint32_t ctrl = ((first && clear) ? GPU_CTRL_CLEAR_MASK : 0u) | (last ? GPU_CTRL_SWAP_MASK : 0u);
+    uint32_t ctrl = ((first && clear) ? GPU_CTRL_CLEAR_MASK : 0u) |
+                    (last ? GPU_CTRL_SWAP_MASK : 0u);
 
     if (app->depth_test) {
         ctrl |= GPU_CTRL_ZTEST_MASK | (first ? GPU_CTRL_ZCLEAR_MASK : 0u);
@@ -845,10 +846,10 @@ static bool app_submit_strips(struct app *app, unsigned frame_no, bool clear, bo
         const bool final = last_pass && s + 1u == b->count;
         struct batch_cursor cur;
 
-        if (pos == STRIPS_NONE && s + 1u < b->count) {
+        if (pos == RENDER_NO_POSITION && s + 1u < b->count) {
             continue;
         }
-        if (pos == STRIPS_NONE && !clear && !final) {
+        if (pos == RENDER_NO_POSITION && !clear && !final) {
             break;  /* the rows left: nothing to draw or clear */
         }
         batch_begin_list(&cur, pos);

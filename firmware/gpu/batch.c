@@ -185,7 +185,7 @@ static inline __attribute__((always_inline)) void batch_fill_from(struct batch_c
     /* Primitives [first, end) in draw order (render_draw_index) at most; the batch closes early
      * when fewer than three vertex slots are left (nv > vtx_room), or, before an outline, fewer
      * than three primitive slots. */
-    end = list ? BATCH_LIST_END : ((total - first > tri_cap) ? first + tri_cap : total);
+    end = list ? RENDER_NO_POSITION : ((total - first > tri_cap) ? first + tri_cap : total);
     vtx_room = vtx_cap - 3u;
     while (i != end && nv <= vtx_room) {
         const struct batch_prim_fields r = batch_prim_read(&prim[render_draw_index(f, i)]);

@@ -58,15 +58,14 @@ static inline bool batch_done(const struct batch_cursor *cur, const struct rende
 }
 
 /* The same from a list of draw positions linked through the frame's sort_tmp (a strip's,
- * render/strips.h: its first position, BATCH_LIST_END after the last), in its order. */
-#define BATCH_LIST_END RENDER_NO_POSITION
+ * render/strips.h: its first position, RENDER_NO_POSITION after the last), in its order. */
 void batch_begin_list(struct batch_cursor *cur, uint32_t first);
 void batch_fill_list(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_cap,
                      uint32_t tri_cap, struct batch_words *out);
 
 static inline bool batch_list_done(const struct batch_cursor *cur)
 {
-    return cur->next == BATCH_LIST_END;
+    return cur->next == RENDER_NO_POSITION;
 }
 
 /* The driver's descriptor of the batch batch_fill just wrote: its words from buffer offset 0,

@@ -32,10 +32,10 @@ void strips_bin(struct strip_bins *b, struct render_frame *f, uint32_t rows, uin
     b->rows = 1u << shift;
     b->height = height;
     b->count = (height + b->rows - 1u) >> shift;
-    b->active = STRIPS_NONE;
+    b->active = RENDER_NO_POSITION;
     b->reached = 0;
     for (uint32_t s = 0; s < b->count; s++) {
-        b->head[s] = (render_index)STRIPS_NONE;
+        b->head[s] = (render_index)RENDER_NO_POSITION;
     }
     /* Backwards, each primitive pushed onto the list of its first strip: every list in draw
      * order. */
@@ -70,26 +70,26 @@ uint32_t strips_take(struct strip_bins *b, struct render_frame *f, uint32_t s)
     sort_item_t *link = f->sort_tmp;
     uint32_t a = b->active;  /* the last strip's list: whatever of it reaches this strip stays */
     uint32_t c = b->head[s]; /* the primitives that start here */
-    uint32_t first = STRIPS_NONE;
-    uint32_t tail = STRIPS_NONE;
+    uint32_t first = RENDER_NO_POSITION;
+    uint32_t tail = RENDER_NO_POSITION;
     uint32_t n = 0;
 
     /* Merge the two (both in draw order) into this strip's list, relinking in place. */
-    while (a != STRIPS_NONE || c != STRIPS_NONE) {
+    while (a != RENDER_NO_POSITION || c != RENDER_NO_POSITION) {
         uint32_t take;
 
-        if (a != STRIPS_NONE && sort_item_key(link[a]) < s) {
+        if (a != RENDER_NO_POSITION && sort_item_key(link[a]) < s) {
             a = sort_item_payload(link[a]);  /* it ended above this strip */
             continue;
         }
-        if (c == STRIPS_NONE || (a != STRIPS_NONE && a < c)) {
+        if (c == RENDER_NO_POSITION || (a != RENDER_NO_POSITION && a < c)) {
             take = a;
             a = sort_item_payload(link[a]);
         } else {
             take = c;
             c = sort_item_payload(link[c]);
         }
-        if (tail == STRIPS_NONE) {
+        if (tail == RENDER_NO_POSITION) {
             first = take;
         } else {
             link[tail] = sort_item_make(sort_item_key(link[tail]), take);
@@ -97,8 +97,8 @@ uint32_t strips_take(struct strip_bins *b, struct render_frame *f, uint32_t s)
         tail = take;
         n++;
     }
-    if (tail != STRIPS_NONE) {
-        link[tail] = sort_item_make(sort_item_key(link[tail]), STRIPS_NONE);
+    if (tail != RENDER_NO_POSITION) {
+        link[tail] = sort_item_make(sort_item_key(link[tail]), RENDER_NO_POSITION);
     }
     b->active = first;
     b->reached += n;

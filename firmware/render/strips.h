@@ -25,9 +25,6 @@
 #include "gpu_regs.h"
 #include "render/render.h"
 
-/* The end of a list: no draw position (render.h). */
-#define STRIPS_NONE RENDER_NO_POSITION
-
 /* Strips of a frame: at most one per row of the contract's largest frame. */
 #define STRIPS_MAX GPU_FB_MAX_HEIGHT
 
@@ -35,7 +32,8 @@ struct strip_bins {
     uint32_t rows;        /* lines per strip (the last strip may have fewer) */
     uint32_t count;       /* strips in the frame: ceil(height / rows) */
     uint32_t height;      /* the frame's lines */
-    uint32_t active;      /* draw position heading the current strip's list, or STRIPS_NONE */
+    uint32_t active;      /* draw position heading the current strip's list, or
+                           * RENDER_NO_POSITION */
     uint32_t reached;     /* primitives handed to strips so far (a primitive counts per strip) */
     render_index head[STRIPS_MAX];  /* per strip: the list of primitives it is the first of */
 };
@@ -46,7 +44,7 @@ struct strip_bins {
 void strips_bin(struct strip_bins *b, struct render_frame *f, uint32_t rows, uint32_t height);
 
 /* The list of strip s (0 .. count - 1, each once, in order): its first draw position, or
- * STRIPS_NONE when no primitive reaches it; strips_next_pos walks it in draw order. */
+ * RENDER_NO_POSITION when no primitive reaches it; strips_next_pos walks it in draw order. */
 uint32_t strips_take(struct strip_bins *b, struct render_frame *f, uint32_t s);
 
 static inline uint32_t strips_next_pos(const struct render_frame *f, uint32_t pos)

@@ -125,7 +125,7 @@ void test_strips_match_brute_force(void)
                     }
                     pos = strips_next_pos(f, pos);
                 }
-                CHECK_EQ(pos, STRIPS_NONE);
+                CHECK_EQ(pos, RENDER_NO_POSITION);
             }
             CHECK_EQ(bins.reached, want_reached);
             for (uint32_t i = 0; i < f->prim_count; i++) {
@@ -165,7 +165,7 @@ void test_strips_batches(void)
                 /* An outline becomes one line per edge it names (0x5: edges 0 and 2). */
                 const uint32_t gpu_prims = ((p->kind & RENDER_PRIM_OUTLINE) != 0u) ? 2u : 1u;
 
-                CHECK(pos != STRIPS_NONE);
+                CHECK(pos != RENDER_NO_POSITION);
                 CHECK_EQ((pw[GPU_PRIM_COLOR_WORD] >> GPU_PRIM_COLOR_LSB) & GPU_PRIM_COLOR_MASK,
                          p->color);
                 CHECK(i0 < words.vtx_count);
@@ -177,9 +177,9 @@ void test_strips_batches(void)
                 pos = strips_next_pos(f, pos);
             }
         } while (!batch_list_done(&cur));
-        CHECK_EQ(pos, STRIPS_NONE);  /* the whole list went out */
+        CHECK_EQ(pos, RENDER_NO_POSITION);  /* the whole list went out */
         strips_with_many_batches += (batches > 2u) ? 1u : 0u;
-        CHECK(first != STRIPS_NONE || batches == 1u);
+        CHECK(first != RENDER_NO_POSITION || batches == 1u);
     }
     CHECK(strips_with_many_batches > 0u);
 }

@@ -45,8 +45,9 @@
 /* ---- settings: the full run and the short (make test) one ---------------------------------- */
 static uint32_t stress_soak_frames = 10000u;     /* per scene and run */
 static uint32_t stress_spin_frames = 1000000u;   /* the held rotation key */
-static uint32_t stress_fb_w = GPU_FB_WIDTH;       /* --frame */
-static uint32_t stress_fb_h = GPU_FB_HEIGHT;
+/* The frame (--frame), stress_bsp's: the model's and the projection's. */
+#define stress_fb_w stress_bsp_frame_width()
+#define stress_fb_h stress_bsp_frame_height()
 
 static uint32_t stress_pixels(void)
 {
@@ -1149,19 +1150,15 @@ int main(int argc, char **argv)
             stress_soak_frames = 60u;
             stress_spin_frames = 10000u;
         } else if (strcmp(argv[i], "--frame") == 0 && i + 1 < argc) {
-            unsigned w = 0;
-            unsigned h = 0;
+            uint32_t w;
+            uint32_t h;
 
-            if (sscanf(argv[++i], "%ux%u", &w, &h) != 2 ||
-                !((w == GPU_FB_WIDTH && h == GPU_FB_HEIGHT) ||
-                  (w == GPU_FB_MAX_WIDTH && h == GPU_FB_MAX_HEIGHT))) {
+            if (!gpu_model_parse_frame(argv[++i], &w, &h)) {
                 fprintf(stderr, "stress: --frame %s: %ux%u or %ux%u\n", argv[i],
                         (unsigned)GPU_FB_WIDTH, (unsigned)GPU_FB_HEIGHT,
                         (unsigned)GPU_FB_MAX_WIDTH, (unsigned)GPU_FB_MAX_HEIGHT);
                 return 2;
             }
-            stress_fb_w = w;
-            stress_fb_h = h;
             stress_bsp_set_frame(w, h);
         } else if (strcmp(argv[i], "--lists") == 0 && i + 1 < argc) {
             stress_lists_dir = argv[++i];

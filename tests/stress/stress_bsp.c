@@ -23,6 +23,16 @@ void stress_bsp_set_frame(uint32_t width, uint32_t height)
     stress_fb_height = height;
 }
 
+uint32_t stress_bsp_frame_width(void)
+{
+    return stress_fb_width;
+}
+
+uint32_t stress_bsp_frame_height(void)
+{
+    return stress_fb_height;
+}
+
 void bsp_init(void)
 {
     gpu_model_config cfg;

@@ -13,5 +13,7 @@ gpu_model *stress_bsp_gpu(void);
 /* The frame the model draws from the next bsp_init() on: the contract's (the default) or its
  * largest. */
 void stress_bsp_set_frame(uint32_t width, uint32_t height);
+uint32_t stress_bsp_frame_width(void);
+uint32_t stress_bsp_frame_height(void);
 
 #endif /* STRESS_BSP_H */
