@@ -17,6 +17,10 @@
 //                   every batch writes all 8 bits and FB_WRITE_MASK reads 3.
 //   ZBUF_BITS       Depth bits the depth buffer keeps, 1 to 16 (CAPS_ZBUF_BITS): the top ZBUF_BITS
 //                   bits of each depth are stored and compared; fewer bits, less block RAM.
+//   STRIP_ROWS      Rows of the strip buffer (STRIP_ROWS): 0, the GPU draws into the back frame
+//                   itself; a power of two up to the frame's height, the GPU draws each strip of
+//                   that many rows on chip and writes it to the back frame when done (contract "The
+//                   strip buffer").
 //   ENABLE_GOURAUD  Gouraud triangles (PRIM_KIND_TRI_GOURAUD: VTX_I interpolated, palette ramp,
 //                   CTRL_DITHER; CAPS_GOURAUD); without them such a triangle sets ERR_KIND.
 `ifndef GPU_BUILD_PARAMS_VH
@@ -31,6 +35,7 @@
     parameter integer ENABLE_ZBUF    = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF, \
     parameter integer ENABLE_WMASK   = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK, \
     parameter integer ZBUF_BITS      = gpu_pkg::GPU_DEFAULT_ZBUF_BITS, \
+    parameter integer STRIP_ROWS     = gpu_pkg::GPU_DEFAULT_STRIP_ROWS, \
     parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD
 `define GPU_BUILD_PARAMS_PASS \
     .VTX_CAP        (VTX_CAP), \
@@ -42,5 +47,6 @@
     .ENABLE_ZBUF    (ENABLE_ZBUF), \
     .ENABLE_WMASK   (ENABLE_WMASK), \
     .ZBUF_BITS      (ZBUF_BITS), \
+    .STRIP_ROWS     (STRIP_ROWS), \
     .ENABLE_GOURAUD (ENABLE_GOURAUD)
 `endif

@@ -3,7 +3,7 @@
 #define GPU_REGS_H
 
 #define GPU_ID_VALUE                 0x47505530u
-#define GPU_VERSION_VALUE            0x00010002u
+#define GPU_VERSION_VALUE            0x00010003u
 #define GPU_APERTURE_BYTES           0x20000u
 
 #define GPU_VTX_CAP                  1024u
@@ -22,6 +22,7 @@
 #define GPU_DEFAULT_ENABLE_ZBUF      0u  /* 16-bit depth buffer (CAPS_ZBUF); without it CTRL_ZTEST and CTRL_ZCLEAR have no effect. */
 #define GPU_DEFAULT_ENABLE_WMASK     1u  /* Framebuffer write mask (CAPS_WMASK): each pixel's two 4-bit planes have their own write enables, FB_WRITE_MASK chooses the planes a batch writes; without it every batch writes all 8 bits and FB_WRITE_MASK reads 3. */
 #define GPU_DEFAULT_ZBUF_BITS        16u  /* Depth bits the depth buffer keeps, 1 to 16 (CAPS_ZBUF_BITS): the top ZBUF_BITS bits of each depth are stored and compared; fewer bits, less block RAM. */
+#define GPU_DEFAULT_STRIP_ROWS       0u  /* Rows of the strip buffer (STRIP_ROWS): 0, the GPU draws into the back frame itself; a power of two up to the frame's height, the GPU draws each strip of that many rows on chip and writes it to the back frame when done (contract "The strip buffer"). */
 #define GPU_DEFAULT_ENABLE_GOURAUD   0u  /* Gouraud triangles (PRIM_KIND_TRI_GOURAUD: VTX_I interpolated, palette ramp, CTRL_DITHER; CAPS_GOURAUD); without them such a triangle sets ERR_KIND. */
 
 /* Bus windows: byte offset and size from the GPU base. */
@@ -41,6 +42,7 @@
 #define GPU_REG_VTX_CAP              0x00Cu  /* ro: Vertex buffer capacity in vertices. */
 #define GPU_REG_TRI_CAP              0x010u  /* ro: Index buffer capacity in primitives. */
 #define GPU_REG_FB_SIZE              0x014u  /* ro: Framebuffer size: width in [15:0], height in [31:16]. */
+#define GPU_REG_STRIP_ROWS           0x018u  /* ro: Rows of the strip buffer, the build's STRIP_ROWS: 0, batches draw into the back frame; otherwise a power of two, and a batch's STRIP rows must lie in one strip of that many rows (contract "The strip buffer"). */
 #define GPU_REG_CTRL                 0x020u  /* rw: Batch options, see field CTRL_* (the other bits read 0). Sampled when DOORBELL is written. */
 #define GPU_REG_VTX_BASE             0x024u  /* rw: First vertex of the batch: index i of a primitive addresses vertex VTX_BASE + i. */
 #define GPU_REG_VTX_COUNT            0x028u  /* rw: Vertices in the batch. A primitive index >= VTX_COUNT is an error (ERR_VTX_INDEX). */
@@ -73,6 +75,7 @@
     X(VTX_CAP) \
     X(TRI_CAP) \
     X(FB_SIZE) \
+    X(STRIP_ROWS) \
     X(STATUS) \
     X(DONE_SEQ) \
     X(FRAME_COUNT) \
@@ -85,7 +88,7 @@
     X(PERF_SAMPLES) \
     X(PERF_SPANS_WRITTEN) \
     X(PERF_SPANS_VISITED)
-#define GPU_READ_ONLY_REG_COUNT      18u
+#define GPU_READ_ONLY_REG_COUNT      19u
 
 /* Register bit fields. */
 #define GPU_CTRL_CLEAR_LSB           0u  /* in CTRL: Fill the back buffer with CLEAR_COLOR before drawing. */
@@ -126,6 +129,8 @@
 #define GPU_ERR_KIND_MASK            0x00000004u
 #define GPU_ERR_WRITE_BUSY_LSB       3u  /* in ERRORS: The bus wrote a buffer, palette or batch register while a batch was running; the write was dropped. */
 #define GPU_ERR_WRITE_BUSY_MASK      0x00000008u
+#define GPU_ERR_STRIP_LSB            4u  /* in ERRORS: Strip builds (STRIP_ROWS > 0): the batch's STRIP rows are not within one strip, or it opens a strip without clearing all of it (CTRL_CLEAR, both planes), or it tests depth on a strip whose depths it has not cleared; nothing was drawn. */
+#define GPU_ERR_STRIP_MASK           0x00000010u
 #define GPU_STRIP_FIRST_LSB          0u  /* in STRIP: The band's first row. */
 #define GPU_STRIP_FIRST_MASK         0x0000FFFFu
 #define GPU_STRIP_LAST_LSB           16u  /* in STRIP: The band's last row (the frame's last where it is beyond it). */

@@ -3,7 +3,7 @@
 // gpu_pkg::GPU_*. Not every build uses every constant:
 /* verilator lint_off UNUSEDPARAM */
 localparam [31:0] GPU_ID_VALUE                 = 32'h47505530;
-localparam [31:0] GPU_VERSION_VALUE            = 32'h10002;
+localparam [31:0] GPU_VERSION_VALUE            = 32'h10003;
 localparam integer GPU_VTX_CAP                  = 1024;
 localparam integer GPU_TRI_CAP                  = 512;
 localparam integer GPU_FB_WIDTH                 = 320;
@@ -18,6 +18,7 @@ localparam integer GPU_DEFAULT_ENABLE_LINES     = 1;  // build-option default
 localparam integer GPU_DEFAULT_ENABLE_ZBUF      = 0;  // build-option default
 localparam integer GPU_DEFAULT_ENABLE_WMASK     = 1;  // build-option default
 localparam integer GPU_DEFAULT_ZBUF_BITS        = 16;  // build-option default
+localparam integer GPU_DEFAULT_STRIP_ROWS       = 0;  // build-option default
 localparam integer GPU_DEFAULT_ENABLE_GOURAUD   = 0;  // build-option default
 localparam [16:0] GPU_WIN_REGS                 = 17'h0;  // Registers, 32-bit words.
 localparam [16:0] GPU_WIN_REGS_BYTES           = 17'h100;
@@ -33,6 +34,7 @@ localparam [7:0] GPU_REG_CAPS                 = 8'h8;  // ro
 localparam [7:0] GPU_REG_VTX_CAP              = 8'hC;  // ro
 localparam [7:0] GPU_REG_TRI_CAP              = 8'h10;  // ro
 localparam [7:0] GPU_REG_FB_SIZE              = 8'h14;  // ro
+localparam [7:0] GPU_REG_STRIP_ROWS           = 8'h18;  // ro
 localparam [7:0] GPU_REG_CTRL                 = 8'h20;  // rw
 localparam [7:0] GPU_REG_VTX_BASE             = 8'h24;  // rw
 localparam [7:0] GPU_REG_VTX_COUNT            = 8'h28;  // rw
@@ -93,6 +95,8 @@ localparam integer GPU_ERR_KIND_LSB             = 2;  // in ERRORS
 localparam integer GPU_ERR_KIND_WIDTH           = 1;
 localparam integer GPU_ERR_WRITE_BUSY_LSB       = 3;  // in ERRORS
 localparam integer GPU_ERR_WRITE_BUSY_WIDTH     = 1;
+localparam integer GPU_ERR_STRIP_LSB            = 4;  // in ERRORS
+localparam integer GPU_ERR_STRIP_WIDTH          = 1;
 localparam integer GPU_STRIP_FIRST_LSB          = 0;  // in STRIP
 localparam integer GPU_STRIP_FIRST_WIDTH        = 16;
 localparam integer GPU_STRIP_LAST_LSB           = 16;  // in STRIP

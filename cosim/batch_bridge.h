@@ -59,12 +59,15 @@ public:
     BatchBridge(const BridgeOptions &o, Harness &harness);
 
     // The firmware's view of the window starts as the GPU's power-on registers where they are not
-    // 0 (FB_WRITE_MASK: both planes), so that the shadow and the RTL agree before the first
-    // replay: a store of 0 there is then a change, replayed like any other.
+    // 0 (FB_WRITE_MASK: both planes; STRIP: the whole frame), so that the shadow and the RTL agree
+    // before the first replay: a store of 0 there is then a change, replayed like any other (the
+    // first strip of one row is STRIP = 0).
     void attach(volatile uint32_t *window)
     {
         window_ = window;
-        window_[GPU_REG_FB_WRITE_MASK / 4] = shadow_[GPU_REG_FB_WRITE_MASK / 4] = sim_.read(GPU_REG_FB_WRITE_MASK);
+        for (const uint32_t reg : {GPU_REG_FB_WRITE_MASK, GPU_REG_STRIP}) {
+            window_[reg / 4] = shadow_[reg / 4] = sim_.read(reg);
+        }
     }
     bool pending_doorbell(uint32_t *tag) const;
     bool pending_reset(uint32_t *value) const;

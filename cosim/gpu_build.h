@@ -46,6 +46,9 @@ extern "C" {
 #ifndef GPU_BUILD_FB_HEIGHT
 #define GPU_BUILD_FB_HEIGHT GPU_FB_HEIGHT
 #endif
+#ifndef GPU_BUILD_STRIP_ROWS
+#define GPU_BUILD_STRIP_ROWS GPU_DEFAULT_STRIP_ROWS
+#endif
 
 // The model's configuration for this build.
 inline gpu_model_config gpu_build_config()
@@ -61,6 +64,7 @@ inline gpu_model_config gpu_build_config()
     cfg.zbuf_bits = GPU_BUILD_ZBUF_BITS;
     cfg.fb_width = GPU_BUILD_FB_WIDTH;
     cfg.fb_height = GPU_BUILD_FB_HEIGHT;
+    cfg.strip_rows = GPU_BUILD_STRIP_ROWS;
     return cfg;
 }
 

@@ -140,6 +140,8 @@ void GpuSim::tick()
 #if GPUSIM_FAST_DISPLAY
     // The display is this harness: vertical blank every kFastVblankEvery clocks, clk_pix still.
     v_->top.vblank_start = (cycles_ % kFastVblankEvery) == 0;
+    // The back frame takes a span this clock unless throttled (a frame memory busy elsewhere).
+    v_->top.fb_wr_ready = throttle_percent_ == 0 || throttle_rng_.below(100) >= throttle_percent_;
     v_->top.clk = 0;
     v_->top.eval();
     v_->dump(cycles_ * 10);
@@ -167,6 +169,16 @@ void GpuSim::tick()
         background_left_ = background_every_;
         background_();
     }
+}
+
+bool GpuSim::throttle_frame(unsigned percent, uint64_t seed)
+{
+    if (!fast_display() || percent > 100) {
+        return false;
+    }
+    throttle_percent_ = percent;
+    throttle_rng_ = Rng{seed};
+    return true;
 }
 
 void GpuSim::write(uint32_t offset, uint32_t value)
@@ -239,6 +251,12 @@ bool GpuSim::wait_capture(uint64_t max_cycles)
 #define GPU_FB_BOTH GPU_CORE_NAME(u_framebuffer__DOT__g_merged__DOT__u_both__DOT__mem)
 #define GPU_FB_FRONT GPU_CORE_NAME(u_framebuffer__DOT__front_q)
 #define GPU_PALETTE GPU_CORE_NAME(u_palette__DOT__mem)
+// The strip buffer (STRIP_ROWS > 0, gpu_strip_buffer.v): bank b's colour RAM (words of SPAN_W
+// pixels, a strip's rows), the flush's state, and the raster's open strip.
+#define GPU_STRIP_BANK(bank) \
+    GPU_CORE_NAME(g_strips__DOT__u_strips__DOT__g_bank__BRA__##bank##__KET____DOT__u_colour__DOT__mem)
+#define GPU_STRIPS(reg) GPU_CORE_NAME(g_strips__DOT__u_strips__DOT__##reg)
+#define GPU_RASTER(reg) GPU_CORE_NAME(u_raster__DOT__##reg)
 
 namespace {
 
@@ -336,11 +354,48 @@ void read_bank(const R &root, bool back_is_1, uint8_t *pixels)
     }
 }
 
+// Strip `words` spans of bank `bank` of the strip buffer over the frame's spans from `base` on.
+template <class R>
+void overlay_strip(const R &root, unsigned bank, std::size_t base, std::size_t words, uint8_t *pixels)
+{
+    constexpr unsigned span_w = GPU_BUILD_SPAN_W;
+    const auto &mem0 = root.GPU_STRIP_BANK(0);
+    if (words > depth(mem0) || (base + words) * span_w > std::size_t{GPU_BUILD_FB_WIDTH} * GPU_BUILD_FB_HEIGHT) {
+        std::fprintf(stderr, "gpusim: a strip of %zu spans at span %zu\n", words, base);
+        std::abort();
+    }
+    for (std::size_t w = 0; w < words; w++) {
+        for (unsigned i = 0; i < span_w; i++) {
+            pixels[(base + w) * span_w + i] = lane(bank ? root.GPU_STRIP_BANK(1)[w] : mem0[w], i);
+        }
+    }
+}
+
+// The back frame as it will be once the strip buffer has written what it holds: the frame's bank,
+// then the strip being flushed (its base is where the flush's frame address started), then the open
+// strip, which is newer (a strip opens only once the other bank's flush is over).
+template <class R>
+void read_back_frame(const R &root, uint8_t *pixels)
+{
+    read_bank(root, root.GPU_FB_FRONT == 0, pixels);
+    if constexpr (GPU_BUILD_STRIP_ROWS > 0) {
+        if (root.GPU_STRIPS(job_q)) {
+            const std::size_t issued = root.GPU_STRIPS(rd_addr_q);
+            overlay_strip(root, root.GPU_STRIPS(job_bank_q), root.GPU_STRIPS(rd_frame_q) - issued,
+                          issued + root.GPU_STRIPS(issue_left_q), pixels);
+        }
+        if (root.GPU_RASTER(open_q)) {
+            overlay_strip(root, root.GPU_RASTER(open_bank_q), root.GPU_RASTER(open_base_q),
+                          root.GPU_RASTER(open_words_q), pixels);
+        }
+    }
+}
+
 }  // namespace
 
 void GpuSim::back_buffer(uint8_t *pixels) const
 {
-    read_bank(*v_->top.rootp, v_->top.rootp->GPU_FB_FRONT == 0, pixels);
+    read_back_frame(*v_->top.rootp, pixels);
 }
 
 // The front bank through the palette (RGB444, each channel times 17 as the monitor model takes the

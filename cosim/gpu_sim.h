@@ -23,6 +23,7 @@ extern "C" {
 #include "gpu_model.h"
 #include "vga_monitor.h"
 }
+#include "rng.h"
 
 class GpuSim {
 public:
@@ -58,8 +59,14 @@ public:
     // row-major: read from the framebuffer's block-RAM arrays in the Verilated model (their
     // Verilator names, gpu_top.u_framebuffer.g_split.g_bank[b].u_main / g_tail.u_tail .mem, or
     // g_merged.u_both.mem with the write mask, are checked at
-    // compile time). Takes no clock and no bus cycle, so it changes nothing the GPU does.
+    // compile time). A strip build's strips still on chip (being flushed, open) are laid over it
+    // from the strip buffer's banks: the frame as it will be written. Takes no clock and no bus
+    // cycle, so it changes nothing the GPU does.
     void back_buffer(uint8_t *pixels) const;
+    // The fast path: the back frame refuses a span on `percent` of the clocks, at random from `seed`
+    // (a frame memory busy elsewhere; a strip build's flush must wait, never drop). The pin path's
+    // frame (gpu_top's) takes a span every clock: false there.
+    bool throttle_frame(unsigned percent, uint64_t seed);
 
     const uint8_t *frame_rgb() const { return monitor_.rgb; }  // VGA_W x VGA_H RGB888
     const char *vga_error() const { return monitor_.error; }
@@ -93,6 +100,8 @@ private:
     std::unique_ptr<Verilated> v_;
     vga_monitor monitor_;
     uint64_t cycles_ = 0;
+    unsigned throttle_percent_ = 0;
+    Rng throttle_rng_{1};
     std::function<void()> background_;
     uint64_t background_every_ = 0;
     uint64_t background_left_ = 0;

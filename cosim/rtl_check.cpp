@@ -91,7 +91,8 @@ int rtl_check_main(int argc, char **argv)
     int max_tris = 48;
     uint64_t min_prims = 0;     // fail unless at least this many primitives were checked
     uint64_t min_overflows = 0;  // fail unless at least this many batches set ERR_COUNT
-    uint32_t swap_percent = 80;  // batches that end with a swap (and a frame captured from the VGA pins)
+    uint32_t swap_percent = 80;
+    unsigned throttle = 0;       // percent of clocks the back frame refuses a span (fast path)  // batches that end with a swap (and a frame captured from the VGA pins)
     for (int i = 0; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
         if (a == "--seed") {
@@ -106,15 +107,22 @@ int rtl_check_main(int argc, char **argv)
             min_prims = std::strtoull(argv[i + 1], nullptr, 0);
         } else if (a == "--min-overflows") {
             min_overflows = std::strtoull(argv[i + 1], nullptr, 0);
+        } else if (a == "--frame-throttle") {
+            throttle = static_cast<unsigned>(std::atoi(argv[i + 1]));
         } else {
             std::fprintf(stderr, "usage: gpusim random [--seed N] [--batches N] [--tris N] [--min-prims N] [--min-overflows N] "
-                                 "[--swap-percent P]\n");
+                                 "[--swap-percent P] [--frame-throttle P]\n");
             return 2;
         }
     }
 
     Rng r{seed};
     GpuSim sim;
+    // The back frame busy on some clocks (a strip build's flushes must wait for it, losing nothing).
+    if (throttle != 0 && !sim.throttle_frame(throttle, seed ^ 0x5448524Full)) {
+        std::fprintf(stderr, "random: --frame-throttle needs the fast display path (gpu_core's frame port) and 0 .. 100\n");
+        return 2;
+    }
     const gpu_model_config cfg = GpuSim::build_config();
     ModelCheck model(cfg);
     // The buffers' capacities this GPU was built with (the model has the same). On a GPU built with
@@ -142,6 +150,10 @@ int rtl_check_main(int argc, char **argv)
     const Frame fb{static_cast<int32_t>(cfg.fb_width), static_cast<int32_t>(cfg.fb_height)};
     std::vector<uint8_t> back(static_cast<std::size_t>(fb.w) * static_cast<std::size_t>(fb.h));
     bool must_clear = false;
+    // A strip build's strip height, and the strip a RESET probe drew into (opened again after it).
+    const uint32_t strip_rows = cfg.strip_rows;
+    uint32_t reset_strip = 0;
+    uint64_t strip_refusals = 0;
 
     // The power-on registers first (ID, CAPS, VTX_CAP, TRI_CAP ...): a model of another build says
     // so here, before any batch could fail for that reason less plainly.
@@ -210,10 +222,13 @@ int rtl_check_main(int argc, char **argv)
         // Now and then a watchdog's RESET lands in the middle of a batch that does not swap; the
         // next batch then clears, which makes RTL and model agree again (the model has no "middle").
         // (Not on a batch past the capacities: it ends at once, before the RESET could land.)
-        const bool reset_probe = !over_capacity && !past && r.chance(5) && b != batches - 1;
+        // (In a strip build only into a strip already open, which the RESET then drops and the next
+        // batch opens anew: RTL and model then agree on every row again.)
+        const bool reset_probe = !over_capacity && !past && r.chance(5) && b != batches - 1
+                              && (strip_rows == 0 || model.model()->open_strip >= 0);
         const bool swap = !reset_probe && (r.chance(swap_percent) || b == batches - 1);
         const bool clear_forced = must_clear;
-        const bool clear = r.chance(50) || b == 0 || must_clear;
+        bool clear = r.chance(50) || b == 0 || must_clear;
         must_clear = reset_probe;
         // Half the batches past the capacities draw the part of them inside: had the words written
         // beyond wrapped around into the buffers (RTL or model), the primitives drawn would differ.
@@ -228,31 +243,71 @@ int rtl_check_main(int argc, char **argv)
         // The write mask on some batches: any of the four plane sets (none, low, high, both), the
         // clear included, with junk in the undefined bits; both planes on the others, and on the
         // clear after a RESET probe, which must overwrite every bit the aborted batch left.
-        const uint32_t planes = (r.chance(40) && !clear_forced) ? r.below(4) : 3u;
-        write(GPU_WIN_REGS + GPU_REG_FB_WRITE_MASK, planes | (r.below(64) << 2));
-        masked += (wmask && planes != 3u) ? 1u : 0u;
+        uint32_t planes = (r.chance(40) && !clear_forced) ? r.below(4) : 3u;
+        const uint32_t planes_junk = r.below(64) << 2;
         // A band of rows on some batches (contract "Strips"): anywhere in the frame, one row to
         // half of it, now and then past the frame's end or empty (first after last); the whole
         // frame on the others, and on the clear after a RESET probe.
         uint32_t strip = static_cast<uint32_t>(fb.h - 1) << GPU_STRIP_LAST_LSB;
-        if (!clear_forced && rs.chance(40)) {
+        if (strip_rows == 0 && !clear_forced && rs.chance(40)) {
             const uint32_t first = rs.below(static_cast<uint32_t>(fb.h) + 8u);
             uint32_t last = first + rs.below(static_cast<uint32_t>(fb.h) / 2u);
             last = rs.chance(10) ? 0xFFFFu : (rs.chance(10) && first > 0 ? first - 1u : last);
             strip = first | (last << GPU_STRIP_LAST_LSB);
             strips++;
         }
+        bool ztest = r.chance(60);  // depth test (a no-op without CAPS_ZBUF: the bits are then ignored)
+        bool zclear = r.chance(30) || b == 0 || clear_forced;  // a reset may also leave the depths half done
+        const bool dither = r.chance(50);  // ordered dithering of Gouraud triangles (ignored without CAPS_GOURAUD)
+        if (strip_rows != 0) {
+            // A strip build: the band, the clear, the planes and the depth test by the strip
+            // buffer's rules (contract "The strip buffer"), from the model's open strip; now and
+            // then one that breaks them (ERR_STRIP, nothing drawn).
+            const gpu_model *mm = model.model();
+            const uint32_t strips_n = (static_cast<uint32_t>(fb.h) + strip_rows - 1) / strip_rows;
+            const bool opens = mm->open_strip < 0 || clear_forced || (!reset_probe && rs.chance(35));
+            const uint32_t k = clear_forced ? reset_strip
+                             : opens ? rs.below(strips_n) : static_cast<uint32_t>(mm->open_strip);
+            const uint32_t k_first = k * strip_rows;
+            const uint32_t k_rows = std::min(strip_rows, static_cast<uint32_t>(fb.h) - k_first);
+            uint32_t first = k_first, last = k_first + k_rows - 1;
+            if (opens) {
+                clear = true;
+                planes = 3;
+                zclear = zclear || rs.chance(70);
+                last = (last == static_cast<uint32_t>(fb.h) - 1 && rs.chance(30)) ? 0xFFFFu : last;
+            } else if (rs.chance(70)) {
+                first = k_first + rs.below(k_rows);
+                last = first + rs.below(k_first + k_rows - first);
+            }
+            const bool whole = first == k_first && last >= k_first + k_rows - 1;
+            const bool opens_k = mm->open_strip != static_cast<int64_t>(k);
+            const bool zclear_after = (!opens_k && mm->open_strip_zclear) || (zclear && whole);
+            ztest = ztest && zclear_after;
+            if (!clear_forced && !reset_probe && rs.chance(8)) {  // broken on purpose: one rule or another
+                switch (rs.below(3)) {
+                case 0:  // rows in two strips (where there are two)
+                    last = std::min(last + strip_rows, 0xFFFFu);
+                    break;
+                case 1:  // opening without clearing all of it
+                    clear = false;
+                    break;
+                default:  // testing depths not cleared
+                    ztest = true;
+                    zclear = false;
+                    break;
+                }
+            }
+            strip = first | (last << GPU_STRIP_LAST_LSB);
+            reset_strip = k;
+            strips++;
+        }
+        write(GPU_WIN_REGS + GPU_REG_FB_WRITE_MASK, planes | planes_junk);
+        masked += (wmask && planes != 3u) ? 1u : 0u;
         write(GPU_WIN_REGS + GPU_REG_STRIP, strip);
-        uint32_t ctrl = (clear ? GPU_CTRL_CLEAR_MASK : 0) | (swap ? GPU_CTRL_SWAP_MASK : 0);
-        if (r.chance(60)) {  // depth test (a no-op without CAPS_ZBUF: the bits are then ignored)
-            ctrl |= GPU_CTRL_ZTEST_MASK;
-        }
-        if (r.chance(30) || b == 0 || clear_forced) {  // a reset may also leave the depths half done
-            ctrl |= GPU_CTRL_ZCLEAR_MASK;
-        }
-        if (r.chance(50)) {  // ordered dithering of Gouraud triangles (ignored without CAPS_GOURAUD)
-            ctrl |= GPU_CTRL_DITHER_MASK;
-        }
+        const uint32_t ctrl = (clear ? GPU_CTRL_CLEAR_MASK : 0) | (swap ? GPU_CTRL_SWAP_MASK : 0)
+                            | (ztest ? GPU_CTRL_ZTEST_MASK : 0) | (zclear ? GPU_CTRL_ZCLEAR_MASK : 0)
+                            | (dither ? GPU_CTRL_DITHER_MASK : 0);
         write(GPU_WIN_REGS + GPU_REG_CTRL, ctrl);
         const uint32_t tag = static_cast<uint32_t>(b + 1);
         write(GPU_WIN_REGS + GPU_REG_DOORBELL, tag);
@@ -319,6 +374,7 @@ int rtl_check_main(int argc, char **argv)
         const uint32_t errors = sim.read(GPU_REG_ERRORS);  // equal to the model's (compared above)
         overflows += (errors & GPU_ERR_COUNT_MASK) != 0;
         index_errors += (errors & GPU_ERR_VTX_INDEX_MASK) != 0;
+        strip_refusals += (errors & GPU_ERR_STRIP_MASK) != 0;
     }
     if (overflows < min_overflows) {
         std::printf("random: only %llu batches over the capacities (ERR_COUNT), fewer than the %llu asked for\n",
@@ -331,6 +387,10 @@ int rtl_check_main(int argc, char **argv)
         return 1;
     }
     const uint32_t fb_size = sim.read(GPU_REG_FB_SIZE);  // the RTL's, which the model's has equalled
+    if (strip_rows != 0) {
+        std::printf("random: strips of %u rows, %llu batches refused (ERR_STRIP), the frame refusing %u %% of the clocks\n",
+                    strip_rows, static_cast<unsigned long long>(strip_refusals), throttle);
+    }
     std::printf("random: seed %llu: VTX_CAP %u TRI_CAP %u FB %ux%u, %d batches (%llu over the capacities, %llu with bad "
                 "indices, %llu plane-masked, %llu in strips), %llu primitives (%llu of kind Gouraud), %llu pixels, %llu back buffers, %llu frames, %llu resets: "
                 "RTL equals model\n",

@@ -504,6 +504,35 @@ static prim_result run_primitive(gpu_model *m, uint32_t prim, bool ztest,
                          dither);
 }
 
+/* The strip buffer's rules (contract "The strip buffer") for a batch of rows
+ * row0 .. row1 on a strip build: true when they hold. *opens says whether the
+ * batch opens its strip, *zclear_after whether the strip's depths are cleared
+ * once the batch has run. */
+static bool strip_rules_hold(const gpu_model *m, uint32_t ctrl, bool ztest,
+                             bool zclear, bool *opens, bool *zclear_after)
+{
+    const int64_t rows = m->cfg.strip_rows;
+    *opens = false;
+    *zclear_after = m->open_strip_zclear;
+    if (rows == 0 || m->row0 > m->row1) {
+        return true; /* no strip buffer, or a batch of no rows */
+    }
+    const int64_t strip = m->row0 / rows;
+    if (m->row1 / rows != strip) {
+        return false; /* rows in two strips */
+    }
+    const int64_t first = strip * rows;
+    const int64_t end = first + rows;
+    const int64_t last = (end < (int64_t)m->cfg.fb_height ? end : (int64_t)m->cfg.fb_height) - 1;
+    const bool whole = m->row0 == first && m->row1 == last;
+    *opens = strip != m->open_strip;
+    if (*opens && !((ctrl & GPU_CTRL_CLEAR_MASK) != 0 && whole && written_bits(m) == 0xFFu)) {
+        return false; /* a strip's pixels are undefined until cleared */
+    }
+    *zclear_after = (*opens ? false : m->open_strip_zclear) || (zclear && whole);
+    return !ztest || *zclear_after;
+}
+
 /* A batch, contract "A batch, and the frame handshake" steps 1-6, run to
  * completion (the model has no time, so BUSY is never observable). */
 static void run_batch(gpu_model *m, uint32_t tag)
@@ -535,9 +564,18 @@ static void run_batch(gpu_model *m, uint32_t tag)
         (uint64_t)m->regs.vtx_base + m->regs.vtx_count > m->cfg.vtx_cap ||
         (uint64_t)m->regs.tri_base + m->regs.tri_count > m->cfg.tri_cap;
 
-    if (count_bad) {
-        m->errors |= GPU_ERR_COUNT_MASK; /* skip clear and draw */
+    bool opens_strip = false;
+    bool strip_zclear = false;
+    const bool strip_bad = !strip_rules_hold(m, ctrl, ztest, zclear, &opens_strip, &strip_zclear);
+
+    if (count_bad || strip_bad) {
+        /* skip clear and draw; the open strip stays as it was */
+        m->errors |= (count_bad ? GPU_ERR_COUNT_MASK : 0u) | (strip_bad ? GPU_ERR_STRIP_MASK : 0u);
     } else {
+        if (opens_strip) {
+            m->open_strip = m->row0 / m->cfg.strip_rows;
+        }
+        m->open_strip_zclear = strip_zclear;
         /* 3. Clear the back buffer to CLEAR_COLOR[7:0]; and, independently,
          *    the depth buffer to 0xFFFF. */
         if (ctrl & GPU_CTRL_CLEAR_MASK) {
@@ -578,6 +616,7 @@ static void run_batch(gpu_model *m, uint32_t tag)
     /* 5. Swap, also after ERR_COUNT ("a requested swap still happens").
      *    Nothing is copied: the new back buffer keeps the old front's pixels. */
     if (ctrl & GPU_CTRL_SWAP_MASK) {
+        m->open_strip = -1; /* closed, and in the back buffer before the swap */
         m->front ^= 1u;
         m->frame_count++;
     }
@@ -616,6 +655,15 @@ bool gpu_model_parse_frame(const char *text, uint32_t *w, uint32_t *h)
     return true;
 }
 
+/* STRIP_ROWS of a strip build: a power of two up to the frame's height (0 x 0
+ * is the contract's frame). */
+static bool strip_rows_supported(const gpu_model_config *cfg)
+{
+    const uint32_t height = cfg->fb_height != 0u ? cfg->fb_height : GPU_FB_HEIGHT;
+    const uint32_t rows = cfg->strip_rows;
+    return rows != 0u && (rows & (rows - 1u)) == 0u && rows <= height;
+}
+
 /* A capacity the model can hold: 1 ... max (0 is "the default", handled by
  * the callers). */
 static bool cap_supported(uint32_t cap, uint32_t max)
@@ -643,6 +691,9 @@ const char *gpu_model_config_error(const gpu_model_config *cfg)
     if ((cfg->fb_width != 0u || cfg->fb_height != 0u) && !fb_supported(cfg->fb_width, cfg->fb_height)) {
         return "fb_width x fb_height is neither the contract's frame nor its largest";
     }
+    if (cfg->strip_rows != 0u && !strip_rows_supported(cfg)) {
+        return "strip_rows is not a power of two up to the frame's height";
+    }
     return NULL;
 }
 
@@ -652,7 +703,7 @@ void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
                            GPU_MODEL_DEFAULT_ZBUF, GPU_MODEL_MAX_VTX_CAP,
                            GPU_MODEL_MAX_TRI_CAP, GPU_MODEL_DEFAULT_ZBUF_BITS,
                            GPU_MODEL_DEFAULT_WMASK, GPU_MODEL_DEFAULT_GOURAUD,
-                           GPU_FB_WIDTH, GPU_FB_HEIGHT };
+                           GPU_FB_WIDTH, GPU_FB_HEIGHT, GPU_DEFAULT_STRIP_ROWS };
     if (cfg != NULL) {
         c = *cfg;
         if (!span_w_supported(c.span_w)) {
@@ -671,6 +722,9 @@ void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
             c.fb_width = GPU_FB_WIDTH; /* 0 x 0: the default; else refused */
             c.fb_height = GPU_FB_HEIGHT;
         }
+        if (c.strip_rows != 0u && !strip_rows_supported(&c)) {
+            c.strip_rows = 0u; /* refused: no strip buffer */
+        }
     }
     /* Everything is zero at power-on: registers (RESET included), counters,
      * front = 0, palette black, both framebuffers palette index 0, depth
@@ -679,6 +733,7 @@ void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
     m->cfg = c;
     m->regs.fb_write_mask = GPU_MODEL_WMASK_BITS; /* both planes */
     m->regs.strip = (c.fb_height - 1u) << GPU_STRIP_LAST_LSB; /* the whole frame */
+    m->open_strip = -1;
 }
 
 void gpu_model_attach_shade_probe(gpu_model *m, gpu_model_shade_probe *probe)
@@ -781,9 +836,10 @@ void gpu_model_write(gpu_model *m, uint32_t offset, uint32_t value)
         break;
     case GPU_REG_RESET:
         /* Aborts the running batch: there never is one in the model (a
-         * batch completes inside the DOORBELL write), so the value is only
-         * stored, to read back. */
+         * batch completes inside the DOORBELL write), so the value is
+         * stored, to read back, and the open strip dropped. */
         m->regs.reset = value;
+        m->open_strip = -1; /* dropped: the next batch of its rows opens it anew */
         break;
     default:
         break;
@@ -810,6 +866,8 @@ uint32_t gpu_model_read(const gpu_model *m, uint32_t offset)
         return m->cfg.tri_cap;
     case GPU_REG_FB_SIZE:
         return m->cfg.fb_width | (m->cfg.fb_height << 16);
+    case GPU_REG_STRIP_ROWS:
+        return m->cfg.strip_rows;
     case GPU_REG_CTRL:
         return m->regs.ctrl;
     case GPU_REG_VTX_BASE:

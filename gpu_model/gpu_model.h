@@ -97,8 +97,14 @@
  *           shown 1:1); 0 x 0 means the contract's, any other pair is
  *           replaced by it. FB_SIZE reports it; the framebuffers and the
  *           depth buffer hold fb_width * fb_height pixels, rows fb_width apart.
- *           Last, so that an initializer naming only the fields before them
+ *           So that an initializer naming only the fields before them
  *           leaves the contract's frame.
+ *   strip_rows: STRIP_ROWS, the rows of the strip buffer (contract "The strip
+ *           buffer"): 0 (the default: an initializer naming only the fields
+ *           before it), or a power of two up to fb_height; any other value is
+ *           replaced by 0. The model draws the frame either way: with strips
+ *           it checks the batches against the strip rules (ERR_STRIP), which
+ *           is all that makes a strip build differ from the frame drawn whole.
  */
 typedef struct gpu_model_config {
     unsigned span_w;
@@ -109,8 +115,9 @@ typedef struct gpu_model_config {
     unsigned zbuf_bits;  /* configs written before it get 0 = 16 */
     bool wmask;          /* configs written before it get false (no mask) */
     bool gouraud;        /* configs written before it get false (flat only) */
-    uint32_t fb_width;   /* last two: configs written before them get 0 x 0, */
+    uint32_t fb_width;   /* configs written before them get 0 x 0, */
     uint32_t fb_height;  /* the contract's 320 x 240 */
+    uint32_t strip_rows; /* configs written before it get 0: no strip buffer */
 } gpu_model_config;
 
 /*
@@ -134,8 +141,9 @@ typedef struct gpu_model {
         uint32_t tri_count;
         uint32_t clear_color;
         uint32_t doorbell;    /* reads back the last tag written */
-        uint32_t reset;       /* RESET: reads back the last value written; no
-                               * other effect, as no batch is ever running */
+        uint32_t reset;       /* RESET: reads back the last value written; it
+                               * drops the open strip, and has no other
+                               * effect, as no batch is ever running */
         uint32_t fb_write_mask; /* FB_WRITE_MASK, its two plane bits; 3 after
                                  * reset and always 3 without cfg.wmask */
         uint32_t strip;       /* STRIP, all 32 bits; the whole frame after
@@ -146,6 +154,12 @@ typedef struct gpu_model {
      * its last clamped to the frame, set by the doorbell; row0 > row1 draws
      * nothing. */
     int64_t row0, row1;
+
+    /* The strip buffer's state (cfg.strip_rows > 0): the open strip's index,
+     * -1 when none is open (after reset, a swap or RESET), and whether its
+     * depths have been cleared since it was opened. */
+    int64_t open_strip;
+    bool open_strip_zclear;
 
     /* Read-only status registers. */
     uint32_t done_seq;        /* DONE_SEQ: tag of the last finished batch */

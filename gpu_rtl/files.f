@@ -11,6 +11,7 @@ gpu_rtl/gpu_prim_setup.v
 gpu_rtl/gpu_span_walker.v
 gpu_rtl/gpu_raster.v
 gpu_rtl/gpu_framebuffer.v
+gpu_rtl/gpu_strip_buffer.v
 gpu_rtl/gpu_vga.v
 gpu_rtl/gpu_core.v
 gpu_rtl/gpu_top.v

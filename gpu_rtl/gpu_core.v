@@ -17,6 +17,11 @@
 // build option costs: ENABLE_ZBUF 1.2 Mb more block RAM (ZBUF_BITS / 16 of it: 76,800 bits a depth
 // bit kept) and a 16-bit VTX_Z RAM; ENABLE_WMASK 4-bit framebuffer lanes; ENABLE_GOURAUD a 16-bit
 // VTX_I RAM, two dividers and the intensity lanes.
+//
+// STRIP_ROWS > 0 (contract "The strip buffer"): the rasterizer draws into gpu_strip_buffer, whose
+// flush writes each closed strip to the back frame through fb_wr_ready's handshake; the depth buffer
+// holds one strip. The rasterizer's addresses are the frame's; the open strip's first span
+// (strip_base) is taken off them here.
 `include "contract/gpu_build_params.vh"
 `default_nettype none
 
@@ -28,7 +33,14 @@ module gpu_core #(
     localparam integer IDX_AW = $clog2(TRI_CAP * 2),
     localparam integer FB_WORDS = FB_WIDTH * FB_HEIGHT / SPAN_W,  // spans in a frame
     localparam integer FB_WAW = $clog2(FB_WORDS),
-    localparam integer FB_PAW = $clog2(FB_WIDTH * FB_HEIGHT)
+    localparam integer FB_PAW = $clog2(FB_WIDTH * FB_HEIGHT),
+    localparam integer COLS = FB_WIDTH / SPAN_W,
+    // the strip buffer's spans (a strip of STRIP_ROWS rows, the frame's at most), and the depth
+    // buffer's: a strip's or the frame's
+    localparam integer STRIP_WORDS = ((STRIP_ROWS > 0 && STRIP_ROWS < FB_HEIGHT) ? STRIP_ROWS : FB_HEIGHT) * COLS,
+    localparam integer SAW = (STRIP_WORDS > 1) ? $clog2(STRIP_WORDS) : 1,
+    localparam integer Z_WORDS = (STRIP_ROWS > 0) ? STRIP_WORDS : FB_WORDS,
+    localparam integer ZAW = (Z_WORDS > 1) ? $clog2(Z_WORDS) : 1
 ) (
     input  wire        clk,           // system clock: bus, rasterizer, framebuffer writes
     input  wire        rst,           // synchronous to clk, active high
@@ -50,7 +62,10 @@ module gpu_core #(
     output wire [7:0]  fb_rd_data,
     input  wire        pal_rd_en,
     input  wire [7:0]  pal_rd_addr,
-    output wire [11:0] pal_rd_data
+    output wire [11:0] pal_rd_data,
+    // the back frame takes a span this clock (strip builds: a flush waits while it is low; a frame
+    // in block RAM takes one every clock, gpu_top ties it high; a simulation may throttle it)
+    input  wire        fb_wr_ready
 );
     localparam [31:0] CAPS = (32'(SPAN_W) << gpu_pkg::GPU_CAPS_SPAN_W_LSB)
                            | (32'(ENABLE_LINES != 0) << gpu_pkg::GPU_CAPS_LINES_LSB)
@@ -65,7 +80,7 @@ module gpu_core #(
     wire [31:0] vtx_base, vtx_count, tri_base, tri_count, doorbell_tag, done_seq, frame_count;
     wire [31:0] strip;                    // STRIP: the batch's rows
     wire [7:0]  clear_color;
-    wire [2:0]  raster_errors;
+    wire [3:0]  raster_errors;
     gpu_pkg::perf_t perf;                 // the PERF_* counters
 
     // RAM ports.
@@ -82,8 +97,14 @@ module gpu_core #(
     wire [SPAN_W*8-1:0] fb_wr_data;
     wire [SPAN_W-1:0] fb_wr_mask;
     wire [1:0] fb_wmask;  // FB_WRITE_MASK's planes, stable while busy like the other batch registers
+    // The strip buffer's side of the rasterizer (STRIP_ROWS > 0).
+    wire [FB_WAW-1:0] strip_base, flush_base;
+    wire draw_bank, flush, flush_bank;
+    wire [SAW:0] flush_words;
+    wire [1:0] bank_busy;
 
-    gpu_regs #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT), .CAPS(CAPS),
+    gpu_regs #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT),
+               .STRIP_ROWS(STRIP_ROWS), .CAPS(CAPS),
                .ENABLE_WMASK(ENABLE_WMASK)) u_regs (
         .clk(clk), .rst(rst),
         .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr), .bus_wdata(bus_wdata),
@@ -101,7 +122,7 @@ module gpu_core #(
     // Depth: the vertices' z (word 1) and the depth buffer exist only in a build that tests depth.
     wire [15:0] vz_rd_data;
     wire z_rd_en, z_wr_en;
-    wire [FB_WAW-1:0] z_rd_addr, z_wr_addr;
+    wire [FB_WAW-1:0] z_rd_addr, z_wr_addr;  // frame spans (the strip's: less strip_base)
     wire [SPAN_W*16-1:0] z_rd_data, z_wr_data;
     wire [SPAN_W-1:0] z_wr_mask;
     generate
@@ -116,6 +137,7 @@ module gpu_core #(
                 .wr_data(bus_wdata[gpu_pkg::GPU_VTX_Z_LSB +: 16]), .wr_mask(1'b1),
                 .rd_en(vtx_rd_en), .rd_addr(vtx_rd_addr), .rd_data(vz_rd_data)
             );
+            wire [FB_WAW-1:0] z_base = (STRIP_ROWS > 0) ? strip_base : {FB_WAW{1'b0}};
             // The depth memory holds the top ZBUF_BITS bits of each lane's depth (the walker keeps
             // only those, the rest are 0): ZBUF_BITS / 16 of the block RAM of a full buffer.
             wire [SPAN_W*ZBUF_BITS-1:0] zm_wr_data, zm_rd_data;
@@ -128,10 +150,10 @@ module gpu_core #(
                     assign z_rd_data[l*16 +: 16] = zm_rd_data[l*ZBUF_BITS +: ZBUF_BITS];
                 end
             end
-            gpu_ram #(.DEPTH(FB_WORDS), .WIDTH(SPAN_W * ZBUF_BITS), .LANES(SPAN_W)) u_depth (
+            gpu_ram #(.DEPTH(Z_WORDS), .WIDTH(SPAN_W * ZBUF_BITS), .LANES(SPAN_W)) u_depth (
                 .wr_clk(clk), .rd_clk(clk),
-                .wr_en(z_wr_en), .wr_addr(z_wr_addr), .wr_data(zm_wr_data), .wr_mask(z_wr_mask),
-                .rd_en(z_rd_en), .rd_addr(z_rd_addr), .rd_data(zm_rd_data)
+                .wr_en(z_wr_en), .wr_addr(ZAW'(z_wr_addr - z_base)), .wr_data(zm_wr_data), .wr_mask(z_wr_mask),
+                .rd_en(z_rd_en), .rd_addr(ZAW'(z_rd_addr - z_base)), .rd_data(zm_rd_data)
             );
         end else begin : g_no_zbuf
             assign vz_rd_data = 16'd0;
@@ -179,12 +201,13 @@ module gpu_core #(
 
     gpu_raster #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT), .SPAN_W(SPAN_W),
                  .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS),
-                 .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_raster (
+                 .ENABLE_GOURAUD(ENABLE_GOURAUD), .STRIP_ROWS(STRIP_ROWS)) u_raster (
         .clk(clk), .rst(rst), .soft_reset(soft_reset),
         .start(start), .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .ctrl_ztest(ctrl_ztest),
         .ctrl_zclear(ctrl_zclear), .ctrl_dither(ctrl_dither), .vtx_base(vtx_base), .vtx_count(vtx_count),
         .tri_base(tri_base), .tri_count(tri_count),
-        .clear_color(clear_color), .strip(strip), .doorbell_tag(doorbell_tag),
+        .clear_color(clear_color), .strip(strip), .planes_all(fb_wmask == 2'b11),
+        .doorbell_tag(doorbell_tag),
         .busy(busy), .done_seq(done_seq), .frame_count(frame_count), .errors(raster_errors),
         .perf(perf),
         .idx_rd_en(idx_rd_en), .idx_rd_addr(idx_rd_addr), .idx_rd_data(idx_rd_data),
@@ -192,14 +215,54 @@ module gpu_core #(
         .vz_rd_data(vz_rd_data), .vi_rd_data(vi_rd_data), .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data),
         .z_wr_en(z_wr_en), .z_wr_addr(z_wr_addr), .z_wr_data(z_wr_data), .z_wr_mask(z_wr_mask),
         .fb_wr_en(fb_wr_en), .fb_wr_addr(fb_wr_addr), .fb_wr_data(fb_wr_data),
-        .fb_wr_mask(fb_wr_mask), .vblank_start(vblank_start), .swap(swap)
+        .fb_wr_mask(fb_wr_mask), .strip_base(strip_base), .draw_bank(draw_bank), .flush(flush),
+        .flush_bank(flush_bank), .flush_base(flush_base), .flush_words(flush_words),
+        .bank_busy(bank_busy), .vblank_start(vblank_start), .swap(swap)
     );
+
+    // The back frame's writes: the rasterizer's, or the strip buffer's flushes.
+    wire frame_wr_en;
+    wire [FB_WAW-1:0] frame_wr_addr;
+    wire [SPAN_W*8-1:0] frame_wr_data;
+    wire [SPAN_W-1:0] frame_wr_mask;
+    wire [1:0] frame_wr_planes;
+    generate
+        if (STRIP_ROWS > 0) begin : g_strips
+            if ((STRIP_ROWS & (STRIP_ROWS - 1)) != 0 || STRIP_ROWS > FB_HEIGHT) begin : g_bad_strip_rows
+                // Elaboration stops here, with this name in the error: there is no such module.
+                gpu_core_STRIP_ROWS_must_be_a_power_of_two_up_to_FB_HEIGHT u_bad ();
+            end
+            wire fr_valid;
+            gpu_strip_buffer #(.WORDS(STRIP_WORDS), .FRAME_WORDS(FB_WORDS), .SPAN_W(SPAN_W),
+                               .ENABLE_WMASK(ENABLE_WMASK)) u_strips (
+                .clk(clk), .rst(rst),
+                .draw_bank(draw_bank), .wr_en(fb_wr_en), .wr_addr(SAW'(fb_wr_addr - strip_base)),
+                .wr_data(fb_wr_data), .wr_mask(fb_wr_mask), .wr_planes(fb_wmask),
+                .flush(flush), .flush_bank(flush_bank), .flush_base(flush_base),
+                .flush_words(flush_words), .bank_busy(bank_busy),
+                .fr_valid(fr_valid), .fr_ready(fb_wr_ready), .fr_addr(frame_wr_addr),
+                .fr_data(frame_wr_data)
+            );
+            assign frame_wr_en = fr_valid && fb_wr_ready;
+            assign frame_wr_mask = {SPAN_W{1'b1}};
+            assign frame_wr_planes = 2'b11;
+        end else begin : g_frame
+            assign bank_busy = 2'b00;
+            assign frame_wr_en = fb_wr_en;
+            assign frame_wr_addr = fb_wr_addr;
+            assign frame_wr_data = fb_wr_data;
+            assign frame_wr_mask = fb_wr_mask;
+            assign frame_wr_planes = fb_wmask;
+            wire unused_strips = fb_wr_ready | draw_bank | flush | flush_bank | (|flush_base)
+                               | (|flush_words) | (|strip_base);
+        end
+    endgenerate
 
     gpu_framebuffer #(.FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT), .SPAN_W(SPAN_W), .ENABLE_WMASK(ENABLE_WMASK)) u_framebuffer (
         .clk(clk), .rst(rst), .clk_pix(clk_pix),
         .swap(swap), .front(front),
-        .wr_en(fb_wr_en), .wr_addr(fb_wr_addr), .wr_data(fb_wr_data), .wr_mask(fb_wr_mask),
-        .wr_planes(fb_wmask),
+        .wr_en(frame_wr_en), .wr_addr(frame_wr_addr), .wr_data(frame_wr_data),
+        .wr_mask(frame_wr_mask), .wr_planes(frame_wr_planes),
         .rd_en(fb_rd_en), .rd_addr(fb_rd_addr), .rd_data(fb_rd_data)
     );
 

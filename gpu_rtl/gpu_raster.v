@@ -1,10 +1,18 @@
-// gpu_raster: the batch engine — count check, fast clear, primitive pipeline (gpu_prim_setup ->
-// gpu_span_walker), swap at vertical blank, counters.
+// gpu_raster: the batch engine — count and strip checks, fast clear, primitive pipeline
+// (gpu_prim_setup -> gpu_span_walker), the strips' opening and closing, swap at vertical blank,
+// counters.
 //
 // Contract: start (one-cycle pulse) begins a batch described by the batch inputs, which hold still
 // until busy falls; soft_reset abandons it at once (RESET register). Steps and counters follow
 // contract/gpu-contract.md ("A batch, and the frame handshake"). The clear writes SPAN_W pixels per clock;
 // primitives are set up at one per 3 clocks while earlier ones are drawn at one span per clock.
+//
+// Strip builds (STRIP_ROWS > 0, contract "The strip buffer"): the raster keeps the open strip (its
+// index, its bank of gpu_strip_buffer, its first span and size in the frame, whether its depths are
+// cleared) and checks each batch against the rules in S_CHECK. A batch that opens a strip waits in
+// S_OPEN until the other bank's flush is over, then flushes the open strip's bank and draws into the
+// other; CTRL.SWAP closes the open strip in S_CLOSE and waits there until no flush runs. The frame
+// addresses it puts out stay the frame's: gpu_core takes strip_base off them.
 //
 // The descriptor between the two is one gpu_pkg::desc_t; the widths of its fields and their range
 // arguments are in gpu_pkg.sv. The assertion below checks the edge values' bound (EDGE_NEED_W bits)
@@ -21,13 +29,17 @@ module gpu_raster #(
     parameter integer ENABLE_ZBUF = gpu_pkg::GPU_DEFAULT_ENABLE_ZBUF,
     parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,
     parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,
+    parameter integer STRIP_ROWS = gpu_pkg::GPU_DEFAULT_STRIP_ROWS,
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer WORDS = FB_WIDTH * FB_HEIGHT / SPAN_W,   // spans in a frame
     localparam integer WAW = $clog2(WORDS),
     localparam integer CNT_W = $clog2(SPAN_W + 1),
     localparam integer ROW_W = gpu_pkg::ROW_W,
-    localparam integer COLS = FB_WIDTH / SPAN_W                 // spans in a row
+    localparam integer COLS = FB_WIDTH / SPAN_W,                // spans in a row
+    localparam integer STRIP_L = (STRIP_ROWS > 1) ? $clog2(STRIP_ROWS) : 0,  // log2 of the rows
+    localparam integer STRIP_WORDS = ((STRIP_ROWS > 0 && STRIP_ROWS < FB_HEIGHT) ? STRIP_ROWS : FB_HEIGHT) * COLS,
+    localparam integer SAW = (STRIP_WORDS > 1) ? $clog2(STRIP_WORDS) : 1
 ) (
     input  wire                clk,
     input  wire                rst,
@@ -45,12 +57,13 @@ module gpu_raster #(
     input  wire [31:0]         tri_count,
     input  wire [7:0]          clear_color,
     input  wire [31:0]         strip,        // STRIP: {last row, first row} (contract "Strips")
+    input  wire                planes_all,   // FB_WRITE_MASK writes both planes
     input  wire [31:0]         doorbell_tag,
     // status and counters (to gpu_regs)
     output wire                busy,
     output reg  [31:0]         done_seq,
     output reg  [31:0]         frame_count,
-    output reg  [2:0]          errors,       // {ERR_KIND, ERR_COUNT, ERR_VTX_INDEX}
+    output reg  [3:0]          errors,       // {ERR_STRIP, ERR_KIND, ERR_COUNT, ERR_VTX_INDEX}
     output gpu_pkg::perf_t     perf,         // the PERF_* counters
     // index RAM read port (both words of a primitive)
     output wire                idx_rd_en,
@@ -75,13 +88,23 @@ module gpu_raster #(
     output wire [WAW-1:0]      fb_wr_addr,
     output wire [SPAN_W*8-1:0] fb_wr_data,
     output wire [SPAN_W-1:0]   fb_wr_mask,
+    // the strip buffer (STRIP_ROWS > 0): the bank drawn, the flush of a closed strip
+    output wire [WAW-1:0]      strip_base,   // the open strip's first span in the frame
+    output wire                draw_bank,
+    output wire                flush,
+    output wire                flush_bank,
+    output wire [WAW-1:0]      flush_base,
+    output wire [SAW:0]        flush_words,
+    input  wire [1:0]          bank_busy,
     // buffer swap
     input  wire                vblank_start,
     output wire                swap
 );
-    localparam [2:0] S_IDLE = 3'd0, S_CHECK = 3'd1, S_CLEAR = 3'd2, S_DRAW = 3'd3, S_DRAIN = 3'd4,
-                     S_VBLANK = 3'd5, S_FINISH = 3'd6;
-    reg [2:0] state_q;
+    localparam [3:0] S_IDLE = 4'd0, S_CHECK = 4'd1, S_CLEAR = 4'd2, S_DRAW = 4'd3, S_DRAIN = 4'd4,
+                     S_VBLANK = 4'd5, S_FINISH = 4'd6, S_OPEN = 4'd7, S_CLOSE = 4'd8;
+    // A swap first closes the open strip (S_CLOSE) where there is a strip buffer.
+    localparam [3:0] S_SWAP = (STRIP_ROWS > 0) ? S_CLOSE : S_VBLANK;
+    reg [3:0] state_q;
     reg [WAW-1:0] clear_addr_q;
     wire pipe_rst = rst || soft_reset;
 
@@ -95,6 +118,28 @@ module gpu_raster #(
     reg [ROW_W-1:0] row_first_q, row_last_q;
     reg rows_empty_q;
     reg [WAW-1:0] clear_last_q;
+
+    // ---- the strip buffer's state and rules (STRIP_ROWS > 0; contract "The strip buffer") ----
+    reg open_q;                     // a strip is open: its index, bank, first span, spans
+    reg [ROW_W-1:0] open_strip_q;
+    reg open_bank_q;
+    reg [WAW-1:0] open_base_q;
+    reg [SAW:0] open_words_q;
+    reg open_zclear_q;              // its depths have been cleared since it was opened
+    // The batch's strip (in S_CHECK, from the rows taken at start): its rows in one strip, all of
+    // them, whether it opens the strip, whether its depths are cleared after it.
+    wire [ROW_W-1:0] batch_strip = row_first_q >> STRIP_L;
+    wire one_strip = (row_last_q >> STRIP_L) == batch_strip;
+    wire [ROW_W:0] strip_end_row = ({1'b0, batch_strip} << STRIP_L) + (ROW_W + 1)'(STRIP_ROWS - 1);
+    wire whole_strip = (row_first_q & ROW_W'(STRIP_ROWS - 1)) == '0
+                    && ((ROW_W + 1)'(row_last_q) == strip_end_row || row_last_q == ROW_W'(FB_HEIGHT - 1));
+    wire opens = !open_q || open_strip_q != batch_strip;
+    wire zclear_after = (!opens && open_zclear_q) || (zclear && whole_strip);
+    wire strip_error = STRIP_ROWS > 0 && !rows_empty_q
+                    && (!one_strip || (opens && !(ctrl_clear && whole_strip && planes_all))
+                        || (ztest && !zclear_after));
+    wire opening = STRIP_ROWS > 0 && !rows_empty_q && opens;
+    wire other_busy = bank_busy[!open_bank_q];
 
     // ---- front end and back end ----
     wire setup_idle, walker_idle;
@@ -119,7 +164,7 @@ module gpu_raster #(
                      .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF),
                      .ENABLE_GOURAUD(ENABLE_GOURAUD)) u_setup (
         .clk(clk), .rst(pipe_rst),
-        .start(state_q == S_CHECK && !count_error), .vtx_base(vtx_base), .vtx_count(vtx_count),
+        .start(state_q == S_CHECK && !count_error && !strip_error), .vtx_base(vtx_base), .vtx_count(vtx_count),
         .tri_base(tri_base), .tri_count(tri_count), .ctrl_ztest(ztest), .row_first(row_first_q),
         .row_last(row_last_q), .rows_empty(rows_empty_q), .idle(setup_idle),
         .idx_rd_en(idx_rd_en), .idx_rd_addr(idx_rd_addr), .idx_rd_data(idx_rd_data),
@@ -172,17 +217,34 @@ module gpu_raster #(
     assign busy = start || (state_q != S_IDLE);
     assign swap = (state_q == S_VBLANK) && vblank_start;
 
+    // Opening: the open strip's bank is flushed as the other becomes the drawn one. Closing: the
+    // drawn bank is flushed once the other's flush is over.
+    wire open_now = state_q == S_OPEN && !other_busy;
+    wire close_now = state_q == S_CLOSE && open_q && !other_busy;
+    assign flush = (open_now || close_now) && open_q;
+    assign flush_bank = open_bank_q;
+    assign flush_base = open_base_q;
+    assign flush_words = open_words_q;
+    assign draw_bank = open_bank_q;
+    assign strip_base = open_base_q;
+
     always @(posedge clk) begin
         if (rst || soft_reset) begin
             state_q <= S_IDLE;
+            open_q <= 1'b0;  // RESET drops the open strip; a flush that runs goes on
             if (rst) begin
                 done_seq <= 32'd0;
                 frame_count <= 32'd0;
-                errors <= 3'd0;
+                errors <= 4'd0;
                 perf <= '0;
+                open_bank_q <= 1'b0;
+                open_strip_q <= '0;
+                open_base_q <= '0;
+                open_words_q <= '0;
+                open_zclear_q <= 1'b0;
             end
         end else begin
-            if (state_q != S_IDLE && state_q != S_VBLANK && state_q != S_FINISH) begin
+            if (state_q != S_IDLE && state_q != S_VBLANK && state_q != S_FINISH && state_q != S_CLOSE) begin
                 perf.busy_cycles <= perf.busy_cycles + 32'd1;
             end
             perf.tris_in <= perf.tris_in + 32'(ev_prim_in);
@@ -196,7 +258,7 @@ module gpu_raster #(
             if (ev_err_kind) errors[2] <= 1'b1;
             case (state_q)
                 S_IDLE: if (start) begin
-                    errors <= 3'd0;
+                    errors <= 4'd0;
                     perf <= '0;
                     perf.busy_cycles <= 32'd1;
                     row_first_q <= ROW_W'(strip_first);  // meaningful unless rows_empty_q
@@ -207,12 +269,26 @@ module gpu_raster #(
                     state_q <= S_CHECK;
                 end
                 S_CHECK: begin
-                    if (count_error) begin
-                        errors[1] <= 1'b1;
-                        state_q <= ctrl_swap ? S_VBLANK : S_FINISH;
+                    if (count_error || strip_error) begin
+                        errors[1] <= count_error;
+                        errors[3] <= strip_error;
+                        state_q <= ctrl_swap ? S_SWAP : S_FINISH;
                     end else begin
-                        state_q <= ((ctrl_clear || zclear) && !rows_empty_q) ? S_CLEAR : S_DRAW;
+                        if (STRIP_ROWS > 0 && !rows_empty_q) begin
+                            open_zclear_q <= zclear_after;
+                        end
+                        state_q <= opening ? S_OPEN
+                                 : ((ctrl_clear || zclear) && !rows_empty_q) ? S_CLEAR : S_DRAW;
                     end
+                end
+                S_OPEN: if (!other_busy) begin
+                    // The whole strip is the batch's rows: the clear's words are the strip's.
+                    open_q <= 1'b1;
+                    open_strip_q <= batch_strip;
+                    open_bank_q <= !open_bank_q;
+                    open_base_q <= clear_addr_q;
+                    open_words_q <= (SAW + 1)'(clear_last_q - clear_addr_q) + 1'b1;
+                    state_q <= S_CLEAR;
                 end
                 S_CLEAR: begin
                     clear_addr_q <= clear_addr_q + 1'b1;
@@ -223,7 +299,14 @@ module gpu_raster #(
                 S_DRAW: state_q <= S_DRAIN;  // from here the walker takes descriptors; S_DRAIN waits
                                              // for setup and walker to be idle (the setup started in S_CHECK)
                 S_DRAIN: if (pipeline_empty) begin
-                    state_q <= ctrl_swap ? S_VBLANK : S_FINISH;
+                    state_q <= ctrl_swap ? S_SWAP : S_FINISH;
+                end
+                S_CLOSE: begin  // the swap's wait for the strips (none without a strip buffer)
+                    if (close_now) begin
+                        open_q <= 1'b0;
+                    end else if (!open_q && bank_busy == 2'b00) begin
+                        state_q <= S_VBLANK;
+                    end
                 end
                 S_VBLANK: if (vblank_start) begin
                     frame_count <= frame_count + 32'd1;

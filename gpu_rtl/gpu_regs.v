@@ -14,6 +14,7 @@ module gpu_regs #(
     parameter integer TRI_CAP = gpu_pkg::GPU_TRI_CAP,  // primitives; the index RAM holds 2 words each
     parameter integer FB_WIDTH = gpu_pkg::GPU_FB_WIDTH,    // the frame (FB_SIZE)
     parameter integer FB_HEIGHT = gpu_pkg::GPU_FB_HEIGHT,
+    parameter integer STRIP_ROWS = gpu_pkg::GPU_DEFAULT_STRIP_ROWS,  // the strip buffer (STRIP_ROWS)
     parameter [31:0]  CAPS = 32'h0,    // value of the CAPS register, set by gpu_top from its parameters
     parameter integer ENABLE_WMASK = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK,  // FB_WRITE_MASK is writable
     localparam integer VTX_AW = $clog2(VTX_CAP * 2),
@@ -56,7 +57,7 @@ module gpu_regs #(
     input  wire              front,
     input  wire [31:0]       done_seq,
     input  wire [31:0]       frame_count,
-    input  wire [2:0]        raster_errors,  // {ERR_KIND, ERR_COUNT, ERR_VTX_INDEX}
+    input  wire [3:0]        raster_errors,  // {ERR_STRIP, ERR_KIND, ERR_COUNT, ERR_VTX_INDEX}
     input  gpu_pkg::perf_t   perf          // the PERF_* counters
 );
     wire [16:0] byte_addr = {bus_addr, 2'b00};
@@ -163,6 +164,7 @@ module gpu_regs #(
     wire [31:0] errors_value = (32'(raster_errors[0]) << gpu_pkg::GPU_ERR_VTX_INDEX_LSB)
                              | (32'(raster_errors[1]) << gpu_pkg::GPU_ERR_COUNT_LSB)
                              | (32'(raster_errors[2]) << gpu_pkg::GPU_ERR_KIND_LSB)
+                             | (32'(raster_errors[3]) << gpu_pkg::GPU_ERR_STRIP_LSB)
                              | (32'(err_write_busy_q) << gpu_pkg::GPU_ERR_WRITE_BUSY_LSB);
     reg [31:0] reg_value;
     always @(*) begin
@@ -174,6 +176,7 @@ module gpu_regs #(
             gpu_pkg::GPU_REG_TRI_CAP:            reg_value = 32'(TRI_CAP);
             gpu_pkg::GPU_REG_FB_SIZE:            reg_value = {16'(FB_HEIGHT),
                                                               16'(FB_WIDTH)};
+            gpu_pkg::GPU_REG_STRIP_ROWS:         reg_value = 32'(STRIP_ROWS);
             gpu_pkg::GPU_REG_CTRL:               reg_value = ctrl_value;
             gpu_pkg::GPU_REG_VTX_BASE:           reg_value = vtx_base;
             gpu_pkg::GPU_REG_VTX_COUNT:          reg_value = vtx_count;

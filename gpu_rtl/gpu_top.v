@@ -58,7 +58,8 @@ module gpu_top #(
         .frame_swapped(frame_swapped), .error(error),
         .vblank_start(vblank_start_sys), .clk_pix(clk_pix),
         .fb_rd_en(fb_rd_en), .fb_rd_addr(fb_rd_addr), .fb_rd_data(fb_rd_data),
-        .pal_rd_en(pal_rd_en), .pal_rd_addr(pal_rd_addr), .pal_rd_data(pal_rd_data)
+        .pal_rd_en(pal_rd_en), .pal_rd_addr(pal_rd_addr), .pal_rd_data(pal_rd_data),
+        .fb_wr_ready(1'b1)  // the frame is block RAM: it takes a span every clock
     );
 
     // ---- the scan-out's clock domain ----

@@ -12,6 +12,14 @@ include bsp/soc/soc_ram.mk
 FW_SCENE_SET ?= one
 # The SoC's GPU draws lines (CAPS_LINES, the contract's default): no room for emulated ones.
 FW_LINE_EMULATION ?= 0
+# Its GPU draws into its frame (STRIP_ROWS 0): with the firmware in the on-chip RAM there is no
+# room for the strip binning (FW_WITH_STRIPS, about 4 KiB of code and list heads) either, unless
+# FW_DEFS asks for it. With SOC_MEM=sdram it stays in.
+ifneq ($(SOC_MEM),sdram)
+ifeq ($(findstring FW_WITH_STRIPS,$(FW_DEFS)),)
+FW_DEFS += -DFW_WITH_STRIPS=0
+endif
+endif
 
 FW_CC         = $(RV_CC)
 FW_OBJDUMP    = $(patsubst %gcc,%objdump,$(RV_CC))

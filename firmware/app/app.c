@@ -86,7 +86,8 @@ struct app {
     struct upload_rx upload;
     bool model_from_upload;  /* the model scene's source is the staging buffer */
 #endif
-#if FW_STRIP_ROWS
+#if FW_WITH_STRIPS
+    uint32_t strip_rows;       /* lines per strip a frame is sent in; 0: whole */
     struct strip_bins strips;  /* the pass's primitives binned into strips (render/strips.h) */
 #endif
 };
@@ -292,6 +293,12 @@ static void app_print_keys(const struct scene *s)
     }
 }
 
+#if FW_WITH_STRIPS
+#define APP_STRIPS_EXPECTED "0 or a power of two up to the height"
+#else
+#define APP_STRIPS_EXPECTED "0 (built without FW_WITH_STRIPS)"
+#endif
+
 static void app_report_init_error(int rc, const struct gpu_info *info)
 {
     switch (rc) {
@@ -306,10 +313,10 @@ static void app_report_init_error(int rc, const struct gpu_info *info)
                (unsigned long)info->version, (unsigned long)GPU_VERSION_VALUE);
         break;
     case GPU_E_GEOMETRY:
-        printf("error: unexpected framebuffer size (FB_SIZE=0x%08lx, expected at least 1x1 and at "
-               "most %lux%lu)\n",
-               (unsigned long)info->fb_size, (unsigned long)GPU_FB_MAX_WIDTH,
-               (unsigned long)GPU_FB_MAX_HEIGHT);
+        printf("error: unexpected frame (FB_SIZE=0x%08lx STRIP_ROWS=%lu; expected 1x1 .. %lux%lu, "
+               "strips " APP_STRIPS_EXPECTED ")\n",
+               (unsigned long)info->fb_size, (unsigned long)info->strip_rows,
+               (unsigned long)GPU_FB_MAX_WIDTH, (unsigned long)GPU_FB_MAX_HEIGHT);
         break;
     case GPU_E_BUFFERS:
         printf("error: GPU buffer capacities out of range (VTX_CAP=%lu, TRI_CAP=%lu; expected "
@@ -325,11 +332,12 @@ static void app_report_init_error(int rc, const struct gpu_info *info)
 
 static void app_report_gpu_errors(unsigned frame, uint32_t errors)
 {
-    printf("error: GPU reported ERRORS=0x%lx in frame %u:%s%s%s%s\n", (unsigned long)errors,
+    printf("error: GPU reported ERRORS=0x%lx in frame %u:%s%s%s%s%s\n", (unsigned long)errors,
            frame, (errors & GPU_ERR_VTX_INDEX_MASK) ? " VTX_INDEX" : "",
            (errors & GPU_ERR_COUNT_MASK) ? " COUNT" : "",
            (errors & GPU_ERR_KIND_MASK) ? " KIND" : "",
-           (errors & GPU_ERR_WRITE_BUSY_MASK) ? " WRITE_BUSY" : "");
+           (errors & GPU_ERR_WRITE_BUSY_MASK) ? " WRITE_BUSY" : "",
+           (errors & GPU_ERR_STRIP_MASK) ? " STRIP" : "");
 }
 
 static void app_report_lines(const struct app *app)
@@ -355,6 +363,13 @@ struct app_notes {
 
 /* FB_WRITE_MASK before the frame loop has written it: no value the register can hold. */
 #define APP_WRITE_MASK_UNKNOWN 0xFFFFFFFFu
+
+/* A GPU with a strip buffer (contract "The strip buffer"): it draws each strip once a frame, so
+ * the anaglyph's second pass cannot go over the first's strips. */
+static bool app_gpu_strips(const struct app *app)
+{
+    return app->gpu.info.strip_rows != 0u;
+}
 
 /* The anaglyph through the write mask: built in, and the GPU has the mask. */
 static bool app_eye_planes(const struct app *app)
@@ -727,7 +742,10 @@ static bool app_global_keys(struct app *app, const struct input_counts *keys,
         }
     }
     if (input_toggled(keys, KEY_ANAGLYPH)) {
-        if (FW_WITH_ANAGLYPH) {
+        if (FW_WITH_ANAGLYPH && FW_WITH_STRIPS && app_gpu_strips(app)) {
+            app_note(notes, "anaglyph: not on a GPU that draws in strips (STRIP_ROWS > 0): its two "
+                            "passes would draw each strip twice");
+        } else if (FW_WITH_ANAGLYPH) {
             app->anaglyph = !app->anaglyph;
             app_anaglyph_palette(app);
             app_note(notes, app->anaglyph ? "anaglyph on (left eye red, right eye cyan)"
@@ -826,27 +844,30 @@ static bool app_send_group(struct app *app, unsigned frame_no, struct batch_curs
     return true;
 }
 
-#if FW_STRIP_ROWS
+#if FW_WITH_STRIPS
 /*
- * The pass in strips of FW_STRIP_ROWS lines: each strip's batches carry the primitives that
- * reach it, in draw order, and draw its rows only. A strip no primitive reaches is cleared with
- * the next one that is drawn (their rows as one band: the band's primitives reach none of the
- * empty strip's rows); after the last strip drawn, the rows left are cleared by one more batch
- * where the pass clears, and the frame's last batch swaps.
+ * The pass in strips of app->strip_rows lines: each strip's batches carry the primitives that
+ * reach it, in draw order, and draw its rows only. On a GPU that draws into its frame, a strip no
+ * primitive reaches is cleared with the next one that is drawn (their rows as one band: the
+ * band's primitives reach none of the empty strip's rows), and after the last strip drawn the rows
+ * left are cleared by one more batch where the pass clears. A GPU with a strip buffer is sent
+ * every strip, each with its own rows, its first batch clearing it (the contract's rules for
+ * opening a strip). The frame's last batch swaps.
  */
 static bool app_submit_strips(struct app *app, unsigned frame_no, bool clear, bool last_pass,
                               uint8_t clear_color, struct frame_stats *tot)
 {
     struct strip_bins *b = &app->strips;
+    const bool every_strip = app_gpu_strips(app);
     uint32_t band_first = 0;  /* the first row not yet drawn or cleared */
 
-    strips_bin(b, &app->frame, FW_STRIP_ROWS, gpu_fb_height(&app->gpu.info));
+    strips_bin(b, &app->frame, app->strip_rows, gpu_fb_height(&app->gpu.info));
     for (uint32_t s = 0; s < b->count; s++) {
         const uint32_t pos = strips_take(b, &app->frame, s);
         const bool final = last_pass && s + 1u == b->count;
         struct batch_cursor cur;
 
-        if (pos == RENDER_NO_POSITION && s + 1u < b->count) {
+        if (pos == RENDER_NO_POSITION && s + 1u < b->count && !every_strip) {
             continue;
         }
         if (pos == RENDER_NO_POSITION && !clear && !final) {
@@ -865,8 +886,8 @@ static bool app_submit_strips(struct app *app, unsigned frame_no, bool clear, bo
 
 /*
  * Stream the pass's primitives to the GPU: its first batch clears the colour when `clear` and
- * (depth test on) the depth buffer always, the pass's own; in strips where the build says so
- * (FW_STRIP_ROWS). Returns false when the watchdog fired (the GPU has been reset and the frame is
+ * (depth test on) the depth buffer always, the pass's own; in strips where the GPU draws in
+ * strips (STRIP_ROWS) or the build says so (FW_STRIP_ROWS). Returns false when the watchdog fired (the GPU has been reset and the frame is
  * abandoned).
  */
 static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last_pass,
@@ -874,15 +895,16 @@ static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last
 {
     const uint8_t clear_color = !app->anaglyph ? PAL_SKY
                                 : (app_eye_planes(app) ? PAL_ANAGLYPH_BACKGROUND : PAL_NIGHT);
-#if FW_STRIP_ROWS
-    return app_submit_strips(app, frame_no, clear, last_pass, clear_color, tot);
-#else
     struct batch_cursor cur;
 
+#if FW_WITH_STRIPS
+    if (app->strip_rows != 0u) {
+        return app_submit_strips(app, frame_no, clear, last_pass, clear_color, tot);
+    }
+#endif
     batch_begin(&cur);
     return app_send_group(app, frame_no, &cur, false, clear, last_pass, GPU_STRIP_WHOLE,
                           clear_color, tot);
-#endif
 }
 
 /* One pass (pipeline.h): the scene seen from one eye, sorted, then the overlay. */
@@ -998,6 +1020,13 @@ static void app_boot(struct app *app)
         app_report_init_error(rc, &app->gpu.info);
         app_fail(FW_EXIT_GPU_INIT);
     }
+#if FW_WITH_STRIPS  /* (without, gpu_init refuses a GPU with strips) */
+    app->strip_rows = app_gpu_strips(app) ? app->gpu.info.strip_rows : FW_STRIP_ROWS;
+    if (app_gpu_strips(app)) {
+        printf("strips: the GPU draws %lu rows at a time on chip (STRIP_ROWS)\n",
+               (unsigned long)app->gpu.info.strip_rows);
+    }
+#endif
     scene_set_frame(&app->scene, gpu_fb_width(&app->gpu.info), gpu_fb_height(&app->gpu.info));
     app_check_words(app);
     desc = scene_find(FW_SCENE);

@@ -30,14 +30,18 @@
 #define FW_DEPTH_TEST 0
 #endif
 
-/* Strips (contract "Strips", render/strips.h): 0, the default, sends each frame whole; a power of
- * two N draws it N lines at a time, each band given the primitives that reach it (the frames are
- * the same; the strip renderer's way, docs/strips.md). */
+/* Strips (contract "Strips", render/strips.h): 0, the default, sends each frame whole to a GPU
+ * that draws into its frame; a power of two N draws it N lines at a time, each band given the
+ * primitives that reach it (the frames are the same; the strip renderer's way, docs/strips.md).
+ * A GPU with a strip buffer (STRIP_ROWS > 0) is always sent its own strips, whatever this says. */
 #ifndef FW_STRIP_ROWS
 #define FW_STRIP_ROWS 0
 #endif
 #if FW_STRIP_ROWS != 0 && (FW_STRIP_ROWS & (FW_STRIP_ROWS - 1)) != 0
 #error "FW_STRIP_ROWS must be 0 or a power of two"
+#endif
+#if FW_STRIP_ROWS != 0 && !FW_WITH_STRIPS
+#error "FW_STRIP_ROWS needs FW_WITH_STRIPS"
 #endif
 
 /* Gouraud shading (needs FW_WITH_GOURAUD and a GPU with CAPS_GOURAUD): 1, the default, draws the

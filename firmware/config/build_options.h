@@ -35,7 +35,10 @@
  *   FW_WITH_DEPTH      the GPU's depth test: VTX_Z per vertex and the Z key
  *   FW_WITH_LIGHTING   flat light per face; without, every face shows its material at full level
  *   FW_WITH_GOURAUD    per-vertex light and Gouraud triangles for meshes with vertex normals;
- *                      without, every face is flat (and the scenes keep no vertex normals) */
+ *                      without, every face is flat (and the scenes keep no vertex normals)
+ *   FW_WITH_STRIPS     frames binned into strips (render/strips.c): what a GPU with a strip buffer
+ *                      (STRIP_ROWS > 0) needs, and FW_STRIP_ROWS; without, such a GPU is refused at
+ *                      start-up with a message */
 #ifndef FW_WITH_WIREFRAME
 #define FW_WITH_WIREFRAME 1
 #endif
@@ -53,6 +56,9 @@
 #endif
 #ifndef FW_WITH_GOURAUD
 #define FW_WITH_GOURAUD 1
+#endif
+#ifndef FW_WITH_STRIPS
+#define FW_WITH_STRIPS 1
 #endif
 
 /* Whether a frame is sized by the scenes' wireframe columns (an outline emulated with triangles

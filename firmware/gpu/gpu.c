@@ -10,6 +10,8 @@
 #include "bsp.h"
 #include "gpu/gpu.h"
 
+#include "config/build_options.h"
+
 /* The contract's register names, through the platform's one accessor pair (bsp.h). */
 static inline void gpu_write(uint32_t offset, uint32_t value)
 {
@@ -40,6 +42,7 @@ int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n)
     info->vtx_cap = gpu_read(GPU_REG_VTX_CAP);
     info->tri_cap = gpu_read(GPU_REG_TRI_CAP);
     info->fb_size = gpu_read(GPU_REG_FB_SIZE);
+    info->strip_rows = gpu_read(GPU_REG_STRIP_ROWS);
     dev->pending = false;
     dev->next_tag = 1u;
     dev->last_done_seq = 0u;
@@ -56,6 +59,12 @@ int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n)
      * (render/proj.h). */
     if (gpu_fb_width(info) == 0u || gpu_fb_width(info) > GPU_FB_MAX_WIDTH ||
         gpu_fb_height(info) == 0u || gpu_fb_height(info) > GPU_FB_MAX_HEIGHT) {
+        return GPU_E_GEOMETRY;
+    }
+    /* A strip buffer's strips: a power of two of rows, within the frame (contract "The strip
+     * buffer"); the firmware bins its frames into them, where it is built to (FW_WITH_STRIPS). */
+    if ((info->strip_rows & (info->strip_rows - 1u)) != 0u ||
+        info->strip_rows > (FW_WITH_STRIPS ? gpu_fb_height(info) : 0u)) {
         return GPU_E_GEOMETRY;
     }
     /* gpu_submit_batch trusts the capacities: they must fit the windows (else buffer words would
@@ -225,7 +234,7 @@ const char *gpu_strerror(int result)
     case GPU_E_VERSION:
         return "unsupported GPU contract version";
     case GPU_E_GEOMETRY:
-        return "unexpected framebuffer size";
+        return "unexpected frame or strips";
     case GPU_E_CAPACITY:
         return "batch exceeds the GPU's buffer capacity";
     case GPU_E_PENDING:

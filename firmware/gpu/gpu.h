@@ -34,7 +34,9 @@ enum gpu_result {
     GPU_OK = 0,
     GPU_E_NOT_FOUND = -1,  /* ID register is not GPU_ID_VALUE */
     GPU_E_VERSION = -2,    /* contract major version differs, or minor is older than ours */
-    GPU_E_GEOMETRY = -3,   /* FB_SIZE is empty or beyond GPU_FB_MAX_WIDTH x GPU_FB_MAX_HEIGHT */
+    GPU_E_GEOMETRY = -3,   /* FB_SIZE is empty or beyond GPU_FB_MAX_WIDTH x GPU_FB_MAX_HEIGHT, or
+                            * STRIP_ROWS neither 0 nor a power of two up to the frame's height
+                            * (not 0 in a build without FW_WITH_STRIPS) */
     GPU_E_CAPACITY = -4,   /* the batch does not fit VTX_CAP / TRI_CAP */
     GPU_E_PENDING = -5,    /* a batch was submitted and not yet waited for */
     GPU_E_TIMEOUT = -6,    /* DONE_SEQ did not reach the tag within max_polls reads */
@@ -82,6 +84,7 @@ struct gpu_info {
     uint32_t vtx_cap;
     uint32_t tri_cap;
     uint32_t fb_size;   /* FB_SIZE: the frame, height << 16 | width */
+    uint32_t strip_rows; /* STRIP_ROWS: 0, or the rows of the strips the GPU draws on chip */
 };
 
 /* The frame the device draws, from FB_SIZE. */

@@ -50,7 +50,7 @@
 
 static gpu_model *gpu;
 static struct {
-    uint32_t id, version, caps, vtx_cap, tri_cap, fb_size;  /* what the device reports */
+    uint32_t id, version, caps, vtx_cap, tri_cap, fb_size, strip_rows;  /* what the device reports */
     bool hung;                /* DONE_SEQ reads stay at stale_done */
     uint32_t stale_done;
 } device;

@@ -53,7 +53,7 @@ static void test_caps(void)
      * again. */
     gpu_model_reset_config(m, NULL);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0805u);
-    gpu_model_config cfg = { 1, false, true, 0, 0, 12, false, false, 0, 0 };
+    gpu_model_config cfg = { 1, false, true, 0, 0, 12, false, false, 0, 0, 0 };
     gpu_model_reset_config(m, &cfg);
     CHECK_EQ(gpu_model_read(m, GPU_REG_CAPS), 0x0C0102u);
     gpu_model_reset(m);
@@ -400,7 +400,7 @@ static void test_capacities(void)
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), GPU_TRI_CAP);
 
-    gpu_model_config cfg = { 8, true, false, 32, 16, 0, false, false, 0, 0 };
+    gpu_model_config cfg = { 8, true, false, 32, 16, 0, false, false, 0, 0, 0 };
     CHECK(gpu_model_config_error(&cfg) == NULL);
     gpu_model_reset_config(m, &cfg);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), 32);
@@ -442,12 +442,12 @@ static void test_capacities(void)
 
     /* 0: the contract's; above the contract's limit: refused by
      * gpu_model_config_error, replaced by the limit by reset_config. */
-    gpu_model_config zero = { 8, true, false, 0, 0, 0, false, false, 0, 0 };
+    gpu_model_config zero = { 8, true, false, 0, 0, 0, false, false, 0, 0, 0 };
     CHECK(gpu_model_config_error(&zero) == NULL);
     gpu_model_reset_config(m, &zero);
     CHECK_EQ(m->cfg.vtx_cap, GPU_VTX_CAP);
     CHECK_EQ(m->cfg.tri_cap, GPU_TRI_CAP);
-    gpu_model_config big = { 8, true, false, GPU_VTX_CAP + 1u, 16, 0, false, false, 0, 0 };
+    gpu_model_config big = { 8, true, false, GPU_VTX_CAP + 1u, 16, 0, false, false, 0, 0, 0 };
     CHECK(gpu_model_config_error(&big) != NULL);
     gpu_model_reset_config(m, &big);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);

@@ -103,7 +103,7 @@ static uint32_t ramp_at(int32_t x, int32_t y)
 
 void test_gouraud(void)
 {
-    gpu_model_config cfg = { 8, true, false, 0, 0, 0, false, true, 0, 0 };  /* zbuf_bits 0: the default; no write mask */
+    gpu_model_config cfg = { 8, true, false, 0, 0, 0, false, true, 0, 0, 0 };  /* zbuf_bits 0: the default; no write mask */
     gpu_model *m = malloc(sizeof *m);
     if (m == NULL) {
         CHECK(false);
@@ -183,7 +183,7 @@ static int probe_channel(int k, int c)
 
 void test_gouraud_probe(void)
 {
-    gpu_model_config cfg = { 8, true, false, 0, 0, 0, false, true, 0, 0 };
+    gpu_model_config cfg = { 8, true, false, 0, 0, 0, false, true, 0, 0, 0 };
     gpu_model *m = malloc(sizeof *m);
     gpu_model_shade_probe *probe = malloc(sizeof *probe);
     uint8_t *rgb = malloc((size_t)GPU_MODEL_SCREEN_W * GPU_MODEL_SCREEN_H * 3u);

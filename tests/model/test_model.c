@@ -62,7 +62,7 @@ gpu_model *test_new_model(void)
 gpu_model *test_new_model_cfg(unsigned span_w, bool lines, bool zbuf)
 {
     gpu_model *m = alloc_model();
-    gpu_model_config cfg = { span_w, lines, zbuf, 0, 0, GPU_MODEL_DEFAULT_ZBUF_BITS, false, false, 0, 0 }; /* capacities: the contract's; no write mask, flat only */
+    gpu_model_config cfg = { span_w, lines, zbuf, 0, 0, GPU_MODEL_DEFAULT_ZBUF_BITS, false, false, 0, 0, 0 }; /* capacities: the contract's; no write mask, flat only */
     gpu_model_reset_config(m, &cfg);
     return m;
 }
@@ -237,7 +237,7 @@ void test_bus(void)
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), GPU_TRI_CAP);
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), 512);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), 1024);
-    CHECK_EQ(gpu_model_read(m, GPU_REG_VERSION), 0x00010002u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_VERSION), 0x00010003u);
     CHECK_EQ(gpu_model_read(m, GPU_REG_FB_SIZE), 320u | (240u << 16));
 
     /* Power-on state: everything else zero, palette black, fbs 0. */
@@ -675,7 +675,7 @@ static size_t count_n(const uint8_t *fb, size_t n, uint8_t v)
 static gpu_model *strip_model(uint32_t w, uint32_t h)
 {
     gpu_model *m = alloc_model();
-    gpu_model_config cfg = { 8, true, true, 0, 0, 16, true, true, w, h };
+    gpu_model_config cfg = { 8, true, true, 0, 0, 16, true, true, w, h, 0 };
     gpu_model_reset_config(m, &cfg);
     return m;
 }
@@ -781,12 +781,115 @@ static void test_strips(void)
     }
 }
 
+/* A strip build (contract "The strip buffer"): the model draws the frame and checks the rules. */
+static void test_strip_buffer(void)
+{
+    const uint32_t w = GPU_FB_MAX_WIDTH;
+    const uint32_t h = GPU_FB_MAX_HEIGHT;
+    const uint32_t clear_z = GPU_CTRL_CLEAR_MASK | GPU_CTRL_ZCLEAR_MASK;
+    gpu_model *m = alloc_model();
+    gpu_model *whole = strip_model(w, h);
+    const size_t px = (size_t)w * h;
+
+    /* STRIP_ROWS: a power of two up to the frame's height, else refused (0). */
+    gpu_model_config cfg = { 8, true, true, 0, 0, 16, true, true, w, h, 64 };
+    CHECK(gpu_model_config_error(&cfg) == NULL);
+    gpu_model_reset_config(m, &cfg);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_STRIP_ROWS), 64);
+    CHECK_EQ(gpu_model_read(whole, GPU_REG_STRIP_ROWS), 0);
+    for (uint32_t bad = 0; bad < 3; bad++) {
+        gpu_model_config c = cfg;
+        c.strip_rows = (uint32_t[]){ 48, 512, 3 }[bad];
+        CHECK(gpu_model_config_error(&c) != NULL);
+        gpu_model_reset_config(m, &c);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_STRIP_ROWS), 0);
+    }
+    gpu_model_reset_config(m, &cfg);
+
+    /* Each broken rule: ERR_STRIP, nothing cleared, the open strip kept. */
+    struct { uint32_t first, last, ctrl, mask; } bad[] = {
+        { 0, 64, GPU_CTRL_CLEAR_MASK, 3 },                              /* two strips */
+        { 0, 63, 0, 3 },                                                /* opens without a clear */
+        { 1, 63, GPU_CTRL_CLEAR_MASK, 3 },                              /* ... of part of it */
+        { 64, 127, GPU_CTRL_CLEAR_MASK, 1 },                            /* ... of one plane */
+        { 0, 63, GPU_CTRL_CLEAR_MASK | GPU_CTRL_ZTEST_MASK, 3 },        /* depths not cleared */
+        { 0, 62, GPU_CTRL_CLEAR_MASK | GPU_CTRL_ZCLEAR_MASK | GPU_CTRL_ZTEST_MASK, 3 },
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        gpu_model_write(m, GPU_REG_FB_WRITE_MASK, bad[i].mask);
+        gpu_model_write(m, GPU_REG_STRIP, bad[i].first | (bad[i].last << GPU_STRIP_LAST_LSB));
+        test_batch(m, bad[i].ctrl, 0, 0, 0, 0, 0x77, 1u + (uint32_t)i);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_STRIP_MASK);
+        CHECK_EQ(count_n(gpu_model_back(m), px, 0x77), 0);
+        CHECK_EQ(m->open_strip, -1);
+    }
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, 3);
+
+    /* Opening the last strip (rows 448 .. 479: the frame ends inside it), a last row past the frame. */
+    gpu_model_write(m, GPU_REG_STRIP, 448u | (0xFFFFu << GPU_STRIP_LAST_LSB));
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 0, 0, 0, 0x33, 20);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
+    CHECK_EQ(m->open_strip, 7);
+    /* In the open strip: part of its rows, no clear, any planes; depth once cleared. */
+    gpu_model_write(m, GPU_REG_STRIP, 450u | (460u << GPU_STRIP_LAST_LSB));
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, 1);
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, 0, 0, 0, 0x44, 21);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
+    CHECK_EQ(test_back_px(m, 5, 455), 0x34);
+    gpu_model_write(m, GPU_REG_FB_WRITE_MASK, 3);
+    test_batch(m, GPU_CTRL_ZTEST_MASK, 0, 0, 0, 0, 0, 22);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_STRIP_MASK);  /* a part is not all */
+    gpu_model_write(m, GPU_REG_STRIP, 448u | (479u << GPU_STRIP_LAST_LSB));
+    test_batch(m, GPU_CTRL_ZCLEAR_MASK, 0, 0, 0, 0, 0, 23);
+    gpu_model_write(m, GPU_REG_STRIP, 450u | (451u << GPU_STRIP_LAST_LSB));
+    test_batch(m, GPU_CTRL_ZTEST_MASK, 0, 0, 0, 0, 0, 24);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
+    /* A batch of no rows opens nothing; ERR_COUNT keeps the strip too. */
+    gpu_model_write(m, GPU_REG_STRIP, 10u | (9u << GPU_STRIP_LAST_LSB));
+    test_batch(m, 0, 0, 0, 0, 0, 0, 25);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
+    CHECK_EQ(m->open_strip, 7);
+    gpu_model_write(m, GPU_REG_STRIP, 0u | (63u << GPU_STRIP_LAST_LSB));
+    test_batch(m, GPU_CTRL_CLEAR_MASK, 0, GPU_VTX_CAP + 1u, 0, 0, 0, 26);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_COUNT_MASK);
+    CHECK_EQ(m->open_strip, 7);
+    /* A swap closes it (the next batch there must clear again); so does RESET. */
+    gpu_model_write(m, GPU_REG_STRIP, 448u | (479u << GPU_STRIP_LAST_LSB));
+    test_batch(m, GPU_CTRL_SWAP_MASK, 0, 0, 0, 0, 0, 27);
+    CHECK_EQ(m->open_strip, -1);
+    test_batch(m, 0, 0, 0, 0, 0, 0, 28);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_STRIP_MASK);
+    test_batch(m, clear_z, 0, 0, 0, 0, 0, 29);
+    CHECK_EQ(m->open_strip, 7);
+    gpu_model_write(m, GPU_REG_RESET, 1);
+    CHECK_EQ(m->open_strip, -1);
+
+    /* A frame by the rules, in strips of 64 (depth-tested, each strip's batch cleared as it
+     * opens, then a second batch into it), equals the same scene drawn whole. */
+    strip_scene(whole, 5, 64, 120);
+    strip_scene(m, 5, 64, 120);
+    strip_batch(whole, 64, 120, 0, h - 1u, 40);
+    for (uint32_t r = 0; r < h; r += 64) {
+        strip_batch(m, 64, 120, r, r + 63u, 42);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS) & GPU_ERR_STRIP_MASK, 0);
+        gpu_model_write(m, GPU_REG_STRIP, r | ((r + 63u) << GPU_STRIP_LAST_LSB));
+        test_batch(m, GPU_CTRL_ZTEST_MASK | GPU_CTRL_DITHER_MASK, 0, 64, 0, 120, 0x21, 43);
+        CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS) & GPU_ERR_STRIP_MASK, 0);
+    }
+    gpu_model_write(whole, GPU_REG_STRIP, 0u | ((h - 1u) << GPU_STRIP_LAST_LSB));
+    test_batch(whole, GPU_CTRL_ZTEST_MASK | GPU_CTRL_DITHER_MASK, 0, 64, 0, 120, 0x21, 44);
+    CHECK(memcmp(gpu_model_back(whole), gpu_model_back(m), px) == 0);
+    free(whole);
+    free(m);
+}
+
 void test_batch_rules(void)
 {
     test_errors();
     test_clear_swap();
     test_scanout();
     test_strips();
+    test_strip_buffer();
 }
 
 int main(void)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Leave out what a scene does not need: the cubes built with every optional feature off
-# (FW_WITH_WIREFRAME/ANAGLYPH/DEPTH/LIGHTING = 0, config/build_options.h) run in co-simulation on the depth
+# (FW_WITH_WIREFRAME/ANAGLYPH/DEPTH/LIGHTING/STRIPS = 0, config/build_options.h) run in co-simulation on the depth
 # GPU: every frame rendered and equal to the golden model, the F, G and Z keys answered with
 # "not built in" and changing nothing, and the program smaller than the full build.
 source "$(dirname "$0")/../lib.sh"

@@ -4,7 +4,10 @@
 # build, byte for byte, at 320x240 (painter's order; wireframe with the anaglyph, so outlines,
 # lines and the write mask's two passes) and at 640x480 with the depth test; then two scenes'
 # ELFs in strips of 16 in co-simulation on a 640x480 GPU (sim-f640-w8: the RTL's STRIP, every
-# frame checked against the golden model) against the host build's whole frames.
+# frame checked against the golden model) against the host build's whole frames; then the
+# whole-frame ELFs on GPUs with a strip buffer (contract "The strip buffer": STRIP_ROWS 16 for
+# landscape and knot, 1, 4 and 64 for cubes, with depth and Gouraud; the firmware reads STRIP_ROWS
+# and sends every strip), each frame equal to the model and to the host's whole frames.
 # Keys go in before the first doorbell (--keys-at 1:...): a frame in strips rings more doorbells,
 # so a later doorbell would fall into another frame than in the whole build.
 source "$(dirname "$0")/../lib.sh"
@@ -47,4 +50,26 @@ for scene in landscape knot; do
         fail "$scene: frame 1 in ${batches:-no} batches (whole: ${whole:-?}): not drawn in strips"
     echo "$scene: frame 1 in $batches batches in strips, $whole whole"
 done
-pass "strips: ${#scenes[@]} scenes, $compared frames in strips of 16 and 1 lines equal to the whole frames (320x240 painter's and wireframe anaglyph, 640x480 depth-tested); landscape and knot in strips co-simulated at 640x480, RTL = model = host"
+# A GPU that draws in strips on chip: the firmware built for whole frames sends it its strips.
+strip_gpu_runs=0
+for run in landscape:16 knot:16 cubes:1 cubes:4 cubes:64; do
+    scene=${run%%:*} rows=${run#*:}
+    gpu="$BUILD/sim-fast-s$rows-f640-w8/gpusim"
+    need_file "$gpu" "$dir/$scene.elf"
+    out="$work/$scene-gpu$rows"
+    run_to "$out.out" 300 "$gpu" cosim --fw "$dir/$scene.elf" --frames "$out" --uart-log "$out.uart" \
+        --summary "$out.summary" --keys-at 1:z
+    [ "$status" -eq 0 ] || { tail -n 5 "$out.out"; fail "$scene: co-simulation on a GPU with strips of $rows failed (status $status)"; }
+    expect_line "^strips: the GPU draws $rows rows at a time on chip" "$out.uart"
+    expect_eq "$(summary frames_model_checked "$out.summary")" "$(summary frames "$out.summary")" \
+        "$scene on strips of $rows: frames checked against the model"
+    [ -d "$work/$scene-zg640-whole" ] ||
+        "$dir/host-$scene" --frame 640x480 --zbuf --gouraud --keys-at 1:z --frames "$work/$scene-zg640-whole" \
+            >"$work/$scene-zg640-whole.log" || fail "$scene: the host build with depth and Gouraud failed"
+    same_pngs "$out" "$work/$scene-zg640-whole" "$scene: a GPU drawing strips of $rows rows against the host's whole frames"
+    batches=$(sed -nE 's/^frame 1: .*batches ([0-9]+).*/\1/p' "$out.uart")
+    [ "${batches:-0}" -ge $(( (480 + rows - 1) / rows )) ] ||
+        fail "$scene: frame 1 in ${batches:-no} batches on a GPU with $(( (480 + rows - 1) / rows )) strips"
+    strip_gpu_runs=$((strip_gpu_runs + 1))
+done
+pass "strips: ${#scenes[@]} scenes, $compared frames in strips of 16 and 1 lines equal to the whole frames (320x240 painter's and wireframe anaglyph, 640x480 depth-tested); landscape and knot in strips co-simulated at 640x480, RTL = model = host; $strip_gpu_runs runs on GPUs with a strip buffer (strips of 1, 4, 16, 64 rows) = model = host"
