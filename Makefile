@@ -196,13 +196,15 @@ bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM) $(FW_ELF)
 # ---- the strip renderer's binning workload per scene and strip height (bench/strip_bins.py):
 # each scene's benchmark frames as primitive lists, counted at 640x480 ----
 STRIP_HEIGHTS ?= 1 8 16 32 60
-bench-strips: $(FW_BENCH_ELFS) $(FW_BENCH_STRIPS_ELFS) $(GPUSIM_FAST) $(BUILD)/sim-f640-w8/gpusim
+bench-strips: $(FW_BENCH_ELFS) $(FW_BENCH_STRIPS_ELFS) $(GPUSIM_FAST) $(BUILD)/sim-f640-w8/gpusim \
+              $(BUILD)/sim-s16-f640-w8/gpusim
 	@rm -rf $(BUILD)/bench-strips && mkdir -p $(BUILD)/bench-strips
 	@for s in $(FW_SCENES); do mkdir -p $(BUILD)/bench-strips/$$s; \
 	  $(GPUSIM_FAST) cosim --fw $(FW_BENCH_DIR)/$$s.elf --frames $(BUILD)/bench-strips/frames-$$s \
 	    --no-model-check --dump-lists $(BUILD)/bench-strips/$$s >/dev/null || exit 1; done
 	@$(PYTHON) bench/strip_bins.py 2 $(STRIP_HEIGHTS) -- $(foreach s,$(FW_SCENES),$(s)=$(BUILD)/bench-strips/$(s))
-	@bash bench/strips_measured.sh $(BUILD)/sim-f640-w8/gpusim $(FW_BENCH_DIR) $(BUILD)/bench-strips $(FW_SCENES)
+	@bash bench/strips_measured.sh $(BUILD)/sim-f640-w8/gpusim $(BUILD)/sim-s16-f640-w8/gpusim $(FW_BENCH_DIR) \
+	  $(BUILD)/bench-strips $(FW_SCENES)
 
 # ---- pixel error against counted cost, for every accuracy/speed knob (bench/bench_error.py) ----
 # Installs matplotlib for the plot (tools/packages-plot.txt), then runs the table and the plot with

@@ -3,12 +3,14 @@
 # benchmark frames (FW_BENCH_FRAMES, default view, depth test on) at 640x480 in co-simulation, the
 # frame sent whole against the frame in strips of 16 lines (FW_STRIP_ROWS=16: render/strips.h):
 # the firmware's instructions a frame (QEMU -icount, exact) and the GPU's busy cycles a frame (its
-# batches' PERF_BUSY_CYCLES), and the batches. The golden model is not consulted (scene-strips
-# checks the frames are the same).
+# batches' PERF_BUSY_CYCLES), and the batches; then the whole-frame program on STRIP_GPU, the same
+# GPU with a strip buffer of 16 rows (STRIP_ROWS: it sends that GPU its strips, every one, and the
+# GPU draws each on chip and flushes it to the frame). The golden model is not consulted
+# (scene-strips checks the frames are the same).
 #
-# Usage: strips_measured.sh GPUSIM BENCH_DIR OUT_DIR SCENE...
+# Usage: strips_measured.sh GPUSIM STRIP_GPU BENCH_DIR OUT_DIR SCENE...
 set -euo pipefail
-sim=${1:?}; dir=${2:?}; out=${3:?}; shift 3
+sim=${1:?}; strip_sim=${2:?}; dir=${3:?}; out=${4:?}; shift 4
 mean() {  # mean "WORDS" LOG: the mean of the number after WORDS (e.g. "gpu cycles") on the frame lines
     awk -v f="$1" '/^frame / { k = split(f, w, " ")
                                for (i = 1; i + k <= NF; i++) {
@@ -20,18 +22,22 @@ mean() {  # mean "WORDS" LOG: the mean of the number after WORDS (e.g. "gpu cycl
 }
 commas() { echo "$1" | sed -E ':a; s/([0-9])([0-9]{3})($|[^0-9])/\1,\2\3/; ta'; }
 echo
-echo "| scene | whole: fw instr | GPU cycles | batches | strips of 16: fw instr | GPU cycles | batches | binning, instructions |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|"
+echo "| scene | whole: fw instr | GPU cycles | batches | strips of 16: fw instr | GPU cycles | batches | binning, instructions | strip buffer of 16: fw instr | GPU cycles | batches |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for scene in "$@"; do
     row="| $scene"
     whole_instr=0
-    for v in z strips16-z; do
+    for v in z strips16-z buffer16; do
         log="$out/$scene-$v.uart"
-        "$sim" cosim --fw "$dir/$scene-$v.elf" --frames "$out/frames-$scene-$v" --no-model-check \
+        gpu=$sim elf="$dir/$scene-$v.elf"
+        [ "$v" = buffer16 ] && gpu=$strip_sim elf="$dir/$scene-z.elf"
+        "$gpu" cosim --fw "$elf" --frames "$out/frames-$scene-$v" --no-model-check \
             --uart-log "$log" >"$out/$scene-$v.out" 2>&1 || { tail -n 5 "$out/$scene-$v.out" >&2; exit 1; }
         instr=$(mean "fw instr" "$log")
         [ "$v" = z ] && whole_instr=$instr
+        [ "$v" = strips16-z ] && binning=$((instr - whole_instr))
         row="$row | $(commas "$instr") | $(commas "$(mean "gpu cycles" "$log")") | $(mean batches "$log")"
+        [ "$v" = strips16-z ] && row="$row | +$(commas $binning)"
     done
-    echo "$row | +$(commas $((instr - whole_instr))) |"
+    echo "$row |"
 done

@@ -251,10 +251,9 @@ bool GpuSim::wait_capture(uint64_t max_cycles)
 #define GPU_FB_BOTH GPU_CORE_NAME(u_framebuffer__DOT__g_merged__DOT__u_both__DOT__mem)
 #define GPU_FB_FRONT GPU_CORE_NAME(u_framebuffer__DOT__front_q)
 #define GPU_PALETTE GPU_CORE_NAME(u_palette__DOT__mem)
-// The strip buffer (STRIP_ROWS > 0, gpu_strip_buffer.v): bank b's colour RAM (words of SPAN_W
-// pixels, a strip's rows), the flush's state, and the raster's open strip.
-#define GPU_STRIP_BANK(bank) \
-    GPU_CORE_NAME(g_strips__DOT__u_strips__DOT__g_bank__BRA__##bank##__KET____DOT__u_colour__DOT__mem)
+// The strip buffer (STRIP_ROWS > 0, gpu_strip_buffer.v): its colour RAM (words of SPAN_W pixels;
+// bank b's words from b times half its depth on), the flush's state, and the raster's open strip.
+#define GPU_STRIP_RAM GPU_CORE_NAME(g_strips__DOT__u_strips__DOT__u_colour__DOT__mem)
 #define GPU_STRIPS(reg) GPU_CORE_NAME(g_strips__DOT__u_strips__DOT__##reg)
 #define GPU_RASTER(reg) GPU_CORE_NAME(u_raster__DOT__##reg)
 
@@ -359,14 +358,15 @@ template <class R>
 void overlay_strip(const R &root, unsigned bank, std::size_t base, std::size_t words, uint8_t *pixels)
 {
     constexpr unsigned span_w = GPU_BUILD_SPAN_W;
-    const auto &mem0 = root.GPU_STRIP_BANK(0);
-    if (words > depth(mem0) || (base + words) * span_w > std::size_t{GPU_BUILD_FB_WIDTH} * GPU_BUILD_FB_HEIGHT) {
+    const auto &mem = root.GPU_STRIP_RAM;
+    const std::size_t bank_words = depth(mem) / 2;
+    if (words > bank_words || (base + words) * span_w > std::size_t{GPU_BUILD_FB_WIDTH} * GPU_BUILD_FB_HEIGHT) {
         std::fprintf(stderr, "gpusim: a strip of %zu spans at span %zu\n", words, base);
         std::abort();
     }
     for (std::size_t w = 0; w < words; w++) {
         for (unsigned i = 0; i < span_w; i++) {
-            pixels[(base + w) * span_w + i] = lane(bank ? root.GPU_STRIP_BANK(1)[w] : mem0[w], i);
+            pixels[(base + w) * span_w + i] = lane(mem[bank * bank_words + w], i);
         }
     }
 }

@@ -14,6 +14,11 @@
 //   does not fall, nor do fr_addr and fr_data change, until the span has moved. fr_ready may stay
 //   low for any time (a frame memory that is busy): the flush waits, nothing is dropped.
 //
+// Both banks are one RAM, bank b at words b * 2^SAW + i: the drawn bank and the flushed one are
+// never the same, so one write port and one read port serve both, and a block RAM column holds
+// both banks' lanes (at 640 x 480, 16 rows, SPAN_W 8 with the write mask: 16 EBR where two RAMs
+// take 32; the padding to 2^SAW words costs no block RAM, whose depth is a power of two anyway).
+//
 // The flush reads the bank's block RAM one clock ahead: a read is issued only when the two-entry
 // output queue will have room for its word when it arrives, so the stream moves a span every clock
 // while fr_ready is high and stops without losing a word when it falls.
@@ -50,9 +55,9 @@ module gpu_strip_buffer #(
     output wire [FAW-1:0]    fr_addr,
     output wire [DW-1:0]     fr_data
 );
-    // ---- the two banks ----
+    // ---- the two banks: one RAM ----
     wire [LANES-1:0] lane_mask;
-    genvar lane, bank;
+    genvar lane;
     generate
         if (ENABLE_WMASK != 0) begin : g_planes
             for (lane = 0; lane < SPAN_W; lane = lane + 1) begin : g_lane
@@ -71,19 +76,13 @@ module gpu_strip_buffer #(
     reg  [SAW-1:0]   rd_addr_q;           // the next span to read
     reg  [FAW-1:0]   rd_frame_q;          // ... and its frame span
     wire             rd_issue;
-    wire [DW-1:0]    bank_rd_data [0:1];
+    wire [DW-1:0]    arriving;            // the word read, one clock after rd_issue
 
-    generate
-        for (bank = 0; bank < 2; bank = bank + 1) begin : g_bank
-            gpu_ram #(.DEPTH(WORDS), .WIDTH(DW), .LANES(LANES)) u_colour (
-                .wr_clk(clk), .rd_clk(clk),
-                .wr_en(wr_en && draw_bank == bank[0]), .wr_addr(wr_addr), .wr_data(wr_data),
-                .wr_mask(lane_mask),
-                .rd_en(rd_issue && job_bank_q == bank[0]), .rd_addr(rd_addr_q),
-                .rd_data(bank_rd_data[bank])
-            );
-        end
-    endgenerate
+    gpu_ram #(.DEPTH(2 << SAW), .WIDTH(DW), .LANES(LANES)) u_colour (
+        .wr_clk(clk), .rd_clk(clk),
+        .wr_en(wr_en), .wr_addr({draw_bank, wr_addr}), .wr_data(wr_data), .wr_mask(lane_mask),
+        .rd_en(rd_issue), .rd_addr({job_bank_q, rd_addr_q}), .rd_data(arriving)
+    );
 
     // ---- the flush: reads one clock ahead into a two-entry queue ----
     reg            inflight_q;            // a read was issued last clock: its word arrives now
@@ -98,7 +97,6 @@ module gpu_strip_buffer #(
     // Words held or on their way, less the one leaving now: issue while that leaves room.
     wire [1:0] held = 2'(head_valid_q) + 2'(tail_valid_q) + 2'(inflight_q) - 2'(pop);
     assign rd_issue = job_q && issue_left_q != '0 && held < 2'd2;
-    wire [DW-1:0] arriving = bank_rd_data[job_bank_q];
 
     always @(posedge clk) begin
         if (rst) begin
