@@ -5,7 +5,9 @@
 # the firmware's instructions a frame (QEMU -icount, exact) and the GPU's busy cycles a frame (its
 # batches' PERF_BUSY_CYCLES), and the batches; then the whole-frame program on STRIP_GPU, the same
 # GPU with a strip buffer of 16 rows (STRIP_ROWS: it sends that GPU its strips, every one, and the
-# GPU draws each on chip and flushes it to the frame). The golden model is not consulted
+# GPU draws each on chip and flushes it to the frame), and with the GPU's binning (FW_STRIP_WALK:
+# a pass of one batch rung again for each strip, one of several sent again whole). The golden model
+# is not consulted
 # (scene-strips checks the frames are the same).
 #
 # Usage: strips_measured.sh GPUSIM STRIP_GPU BENCH_DIR OUT_DIR SCENE...
@@ -22,15 +24,16 @@ mean() {  # mean "WORDS" LOG: the mean of the number after WORDS (e.g. "gpu cycl
 }
 commas() { echo "$1" | sed -E ':a; s/([0-9])([0-9]{3})($|[^0-9])/\1,\2\3/; ta'; }
 echo
-echo "| scene | whole: fw instr | GPU cycles | batches | strips of 16: fw instr | GPU cycles | batches | binning, instructions | strip buffer of 16: fw instr | GPU cycles | batches |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "| scene | whole: fw instr | GPU cycles | batches | strips of 16: fw instr | GPU cycles | batches | binning, instructions | strip buffer of 16: fw instr | GPU cycles | batches | the GPU's binning: fw instr | GPU cycles | batches |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for scene in "$@"; do
     row="| $scene"
     whole_instr=0
-    for v in z strips16-z buffer16; do
+    for v in z strips16-z buffer16 walk-z; do
         log="$out/$scene-$v.uart"
         gpu=$sim elf="$dir/$scene-$v.elf"
         [ "$v" = buffer16 ] && gpu=$strip_sim elf="$dir/$scene-z.elf"
+        [ "$v" = walk-z ] && gpu=$strip_sim
         "$gpu" cosim --fw "$elf" --frames "$out/frames-$scene-$v" --no-model-check \
             --uart-log "$log" >"$out/$scene-$v.out" 2>&1 || { tail -n 5 "$out/$scene-$v.out" >&2; exit 1; }
         instr=$(mean "fw instr" "$log")

@@ -783,17 +783,23 @@ static uint32_t app_batch_ctrl(const struct app *app, bool first, bool clear, bo
     return ctrl;
 }
 
+/* What a group of batches sends: the pass's primitives in draw order, a strip's list
+ * (render/strips.h), or no primitives at all: the batch last sent, rung again for another strip
+ * (the GPU's binning, FW_STRIP_WALK). */
+enum app_group { APP_GROUP_PASS, APP_GROUP_LIST, APP_GROUP_AGAIN };
+
 /*
- * Send a group of batches: the primitives of the cursor (the pass's draw order, or with `list`
- * a strip's list), drawing rows `strip`; its first batch clears (app_batch_ctrl), and when
- * `final` (the frame's last group) its last batch swaps. Returns false when the watchdog fired
- * (the GPU has been reset and the frame is abandoned). Inlined into both callers, so that each
- * keeps its own path (`list` a constant): out of line, with the strips' caller beside the whole
- * frame's, it cost the whole frame 153 instructions (tetra, make bench-strips).
+ * Send a group of batches: the primitives of the cursor (`what`: the pass's draw order, or a
+ * strip's list; or the last batch again, one batch, cur unused), drawing rows `strip`; its first
+ * batch clears (app_batch_ctrl), and when `final` (the frame's last group) its last batch swaps.
+ * Returns false when the watchdog fired (the GPU has been reset and the frame is abandoned).
+ * Inlined into each caller, so that each keeps its own path (`what` a constant): out of line, with
+ * the strips' caller beside the whole frame's, it cost the whole frame 153 instructions (tetra,
+ * make bench-strips).
  */
 static inline __attribute__((always_inline)) bool
-app_send_group(struct app *app, unsigned frame_no, struct batch_cursor *cur, bool list, bool clear,
-               bool final, uint32_t strip, uint8_t clear_color, struct frame_stats *tot)
+app_send_group(struct app *app, unsigned frame_no, struct batch_cursor *cur, enum app_group what,
+               bool clear, bool final, uint32_t strip, uint8_t clear_color, struct frame_stats *tot)
 {
     bool first = true;
     bool done;
@@ -808,19 +814,27 @@ app_send_group(struct app *app, unsigned frame_no, struct batch_cursor *cur, boo
         int rc;
 
         t0 = frame_stats_mark();
-        if (list) {
-            batch_fill_list(cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap,
-                            &app->words);
-            done = batch_list_done(cur);
+        if (what == APP_GROUP_AGAIN) {
+            done = true;
+            t1 = frame_stats_batch_filled(tot, t0);
+            rc = gpu_ring_again(&app->gpu, app_batch_ctrl(app, true, clear, final), strip, &tag);
+            batch.prim_count = 0;  /* none sent */
         } else {
-            batch_fill(cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap, &app->words);
-            done = batch_done(cur, &app->frame);
+            if (what == APP_GROUP_LIST) {
+                batch_fill_list(cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap,
+                                &app->words);
+                done = batch_list_done(cur);
+            } else {
+                batch_fill(cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap,
+                           &app->words);
+                done = batch_done(cur, &app->frame);
+            }
+            t1 = frame_stats_batch_filled(tot, t0);
+            batch = batch_descriptor(&app->words, app_batch_ctrl(app, first, clear, final && done),
+                                     clear_color);
+            batch.strip = strip;
+            rc = gpu_submit_batch(&app->gpu, &batch, &tag);
         }
-        t1 = frame_stats_batch_filled(tot, t0);
-        batch = batch_descriptor(&app->words, app_batch_ctrl(app, first, clear, final && done),
-                                 clear_color);
-        batch.strip = strip;
-        rc = gpu_submit_batch(&app->gpu, &batch, &tag);
         if (rc != GPU_OK) {
             printf("error: frame %u: batch not submitted: %s\n", frame_no, gpu_strerror(rc));
             app_fail(FW_EXIT_GPU_SUBMIT);
@@ -846,6 +860,37 @@ app_send_group(struct app *app, unsigned frame_no, struct batch_cursor *cur, boo
     return true;
 }
 
+#if FW_STRIP_WALK
+/*
+ * The GPU's binning (FW_STRIP_WALK) on a GPU with a strip buffer: the pass whole for the first
+ * strip; when it was one batch, that batch rung again for every other strip (the GPU fetches and
+ * sets up all its primitives each time and draws what reaches the strip), else the pass sent again
+ * whole for each. Each strip's first batch clears it, the frame's last swaps.
+ */
+static bool app_submit_walk(struct app *app, unsigned frame_no, bool clear, bool last_pass,
+                            uint8_t clear_color, struct frame_stats *tot)
+{
+    const uint32_t rows = app->strip_rows;
+    const uint32_t height = gpu_fb_height(&app->gpu.info);
+    bool one_batch = false;
+
+    for (uint32_t first = 0; first < height; first += rows) {
+        const uint32_t last = (height - first > rows) ? first + rows - 1u : height - 1u;
+        const bool final = last_pass && last == height - 1u;
+        const uint32_t batches = tot->batches;
+        struct batch_cursor cur;
+
+        batch_begin(&cur);
+        if (!app_send_group(app, frame_no, &cur, one_batch ? APP_GROUP_AGAIN : APP_GROUP_PASS,
+                            clear, final, gpu_strip(first, last), clear_color, tot)) {
+            return false;
+        }
+        one_batch = tot->batches == batches + 1u;
+    }
+    return true;
+}
+#endif
+
 #if FW_WITH_STRIPS
 /*
  * The pass in strips of app->strip_rows lines: each strip's batches carry the primitives that
@@ -863,6 +908,11 @@ static bool app_submit_strips(struct app *app, unsigned frame_no, bool clear, bo
     const bool every_strip = app_gpu_strips(app);
     uint32_t band_first = 0;  /* the first row not yet drawn or cleared */
 
+#if FW_STRIP_WALK
+    if (every_strip) {
+        return app_submit_walk(app, frame_no, clear, last_pass, clear_color, tot);
+    }
+#endif
     strips_bin(b, &app->frame, app->strip_rows, gpu_fb_height(&app->gpu.info));
     for (uint32_t s = 0; s < b->count; s++) {
         const uint32_t pos = strips_take(b, &app->frame, s);
@@ -876,7 +926,7 @@ static bool app_submit_strips(struct app *app, unsigned frame_no, bool clear, bo
             break;  /* the rows left: nothing to draw or clear */
         }
         batch_begin_list(&cur, pos);
-        if (!app_send_group(app, frame_no, &cur, true, clear, final,
+        if (!app_send_group(app, frame_no, &cur, APP_GROUP_LIST, clear, final,
                             gpu_strip(band_first, strips_last_row(b, s)), clear_color, tot)) {
             return false;
         }
@@ -905,7 +955,7 @@ static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last
     }
 #endif
     batch_begin(&cur);
-    return app_send_group(app, frame_no, &cur, false, clear, last_pass, GPU_STRIP_WHOLE,
+    return app_send_group(app, frame_no, &cur, APP_GROUP_PASS, clear, last_pass, GPU_STRIP_WHOLE,
                           clear_color, tot);
 }
 

@@ -44,6 +44,18 @@
 #error "FW_STRIP_ROWS needs FW_WITH_STRIPS"
 #endif
 
+/* The GPU's binning instead of the firmware's, on a GPU with a strip buffer (a measurement: make
+ * bench-strips, docs/strips.md): 1 sends a pass that fits one batch once and rings it again for
+ * every other strip, the GPU walking all its primitives each time and keeping what reaches the
+ * strip; a pass of several batches is sent again whole for each strip. 0, the default: the
+ * firmware bins (render/strips.c). */
+#ifndef FW_STRIP_WALK
+#define FW_STRIP_WALK 0
+#endif
+#if FW_STRIP_WALK && !FW_WITH_STRIPS
+#error "FW_STRIP_WALK needs FW_WITH_STRIPS"
+#endif
+
 /* Gouraud shading (needs FW_WITH_GOURAUD and a GPU with CAPS_GOURAUD): 1, the default, draws the
  * meshes that carry vertex normals (the landscape's) with per-vertex light, interpolated by the GPU;
  * 0 draws every scene flat. FW_DITHER: 1 sets CTRL_DITHER (4x4 ordered dither between adjacent

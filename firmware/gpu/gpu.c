@@ -94,13 +94,25 @@ int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n)
     return GPU_OK;
 }
 
+/* The doorbell, after the batch's buffers and registers: a fresh tag, returned; the batch is
+ * pending until waited for. */
+static inline __attribute__((always_inline)) uint32_t gpu_ring(struct gpu_dev *dev)
+{
+    const uint32_t t = dev->next_tag;
+
+    bsp_fence();  /* buffers and batch registers before the doorbell */
+    gpu_write(GPU_REG_DOORBELL, t);
+    dev->next_tag = gpu_next_tag(t);
+    dev->pending = true;
+    return t;
+}
+
 int gpu_submit_batch(struct gpu_dev *dev, const struct gpu_batch *batch, uint32_t *tag)
 {
     const uint32_t nv = batch->vtx_count * GPU_VTX_WORDS;
     const uint32_t np = batch->prim_count * GPU_PRIM_WORDS;
     const uint32_t vtx_off = GPU_WIN_VTX + 4u * GPU_VTX_WORDS * batch->vtx_base;
     const uint32_t idx_off = GPU_WIN_IDX + 4u * GPU_PRIM_WORDS * batch->tri_base;
-    uint32_t t;
 
     if (dev->pending) {
         return GPU_E_PENDING;
@@ -127,13 +139,18 @@ int gpu_submit_batch(struct gpu_dev *dev, const struct gpu_batch *batch, uint32_
     gpu_write(GPU_REG_TRI_COUNT, batch->prim_count);
     gpu_write(GPU_REG_CLEAR_COLOR, batch->clear_color);
     gpu_write(GPU_REG_STRIP, batch->strip);
+    *tag = gpu_ring(dev);
+    return GPU_OK;
+}
 
-    t = dev->next_tag;
-    bsp_fence();  /* buffers and batch registers before the doorbell */
-    gpu_write(GPU_REG_DOORBELL, t);
-    dev->next_tag = gpu_next_tag(t);
-    dev->pending = true;
-    *tag = t;
+int gpu_ring_again(struct gpu_dev *dev, uint32_t ctrl, uint32_t strip, uint32_t *tag)
+{
+    if (dev->pending) {
+        return GPU_E_PENDING;
+    }
+    gpu_write(GPU_REG_CTRL, ctrl);
+    gpu_write(GPU_REG_STRIP, strip);
+    *tag = gpu_ring(dev);
     return GPU_OK;
 }
 

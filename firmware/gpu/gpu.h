@@ -156,6 +156,12 @@ int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n);
  * at that base is) are not copied. */
 int gpu_submit_batch(struct gpu_dev *dev, const struct gpu_batch *batch, uint32_t *tag);
 
+/* Ring the batch last submitted again with another CTRL and STRIP: its buffers and its other batch
+ * registers stay as gpu_submit_batch left them, so a GPU with a strip buffer walks the same
+ * primitives for another strip (docs/strips.md, "the GPU's binning"). A fresh tag in *tag, as
+ * gpu_submit_batch gives; GPU_E_PENDING while a batch is in flight. */
+int gpu_ring_again(struct gpu_dev *dev, uint32_t ctrl, uint32_t strip, uint32_t *tag);
+
 /* The GPU's vertex buffer (GPU_WIN_VTX) or index buffer (GPU_WIN_IDX) as CPU memory to build
  * batches in place, when the platform maps the window (bsp_gpu_buffer); NULL otherwise. Write it
  * only while no batch is pending. */
