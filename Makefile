@@ -169,6 +169,10 @@ lint:
 	  $(FB_MAX_GFLAGS) -GENABLE_ZBUF=1 -f $(RTL_FILES)
 	$(Q)$(call say,LINT,gpu_top 640x480 depth strips of 16)$(VERILATOR) --lint-only -Wall --top-module gpu_top \
 	  $(RTL_LINT) $(FB_MAX_GFLAGS) -GENABLE_ZBUF=1 -GSTRIP_ROWS=16 -f $(RTL_FILES)
+	$(Q)$(call say,LINT,gpu_top 640x480 depth strips of 16 frames in SDRAM)$(VERILATOR) --lint-only -Wall \
+	  --top-module gpu_top $(RTL_LINT) $(FB_MAX_GFLAGS) -GENABLE_ZBUF=1 -GSTRIP_ROWS=16 -GFRAME_DRAM=1 -f $(RTL_FILES)
+	$(Q)$(call say,LINT,gpu_top 320x240 strips of 4 frames in SDRAM)$(VERILATOR) --lint-only -Wall \
+	  --top-module gpu_top $(RTL_LINT) -GSTRIP_ROWS=4 -GFRAME_DRAM=1 -f $(RTL_FILES)
 	@# The bus slaves are not under gpu_top (a SoC puts one in front of it): each is its own top.
 	$(Q)$(call say,LINT,$(RTL_BUS_SLAVES))$(foreach m,$(RTL_BUS_SLAVES),$(VERILATOR) --lint-only -Wall --top-module $(m) $(RTL_LINT) gpu_rtl/$(m).v &&) true
 	@echo "lint: $(words $(RTL_V)) files of $(RTL_FILES) clean under -Wall"

@@ -171,7 +171,7 @@ def gen_v(c):
         out.append(f"localparam integer {('GPU_' + f['name'] + '_LSB'):<28} = {f['lsb']};")
         out.append(f"localparam integer {('GPU_' + f['name'] + '_WIDTH'):<28} = {f['width']};")
     for k, v in c["constants"].items():
-        lp(f"GPU_{k}", 8, v)
+        lp(f"GPU_{k}", max(8, int(v).bit_length()), v)
     out += ["/* verilator lint_on UNUSEDPARAM */", ""]
     return "\n".join(out)
 

@@ -21,6 +21,10 @@
 //                   itself; a power of two up to the frame's height, the GPU draws each strip of
 //                   that many rows on chip and writes it to the back frame when done (contract "The
 //                   strip buffer").
+//   FRAME_DRAM      Frames in external memory (FRAME_DRAM): 0, the two frames are the GPU's block
+//                   RAM; 1, they are in the SDRAM behind a native memory port, written by the strip
+//                   buffer's flushes (needs STRIP_ROWS) and read a line ahead into an on-chip line
+//                   buffer by the scan-out (contract "Frames in external memory").
 //   ENABLE_GOURAUD  Gouraud triangles (PRIM_KIND_TRI_GOURAUD: VTX_I interpolated, palette ramp,
 //                   CTRL_DITHER; CAPS_GOURAUD); without them such a triangle sets ERR_KIND.
 `ifndef GPU_BUILD_PARAMS_VH
@@ -36,6 +40,7 @@
     parameter integer ENABLE_WMASK   = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK, \
     parameter integer ZBUF_BITS      = gpu_pkg::GPU_DEFAULT_ZBUF_BITS, \
     parameter integer STRIP_ROWS     = gpu_pkg::GPU_DEFAULT_STRIP_ROWS, \
+    parameter integer FRAME_DRAM     = gpu_pkg::GPU_DEFAULT_FRAME_DRAM, \
     parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD
 `define GPU_BUILD_PARAMS_PASS \
     .VTX_CAP        (VTX_CAP), \
@@ -48,5 +53,6 @@
     .ENABLE_WMASK   (ENABLE_WMASK), \
     .ZBUF_BITS      (ZBUF_BITS), \
     .STRIP_ROWS     (STRIP_ROWS), \
+    .FRAME_DRAM     (FRAME_DRAM), \
     .ENABLE_GOURAUD (ENABLE_GOURAUD)
 `endif

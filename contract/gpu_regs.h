@@ -3,7 +3,7 @@
 #define GPU_REGS_H
 
 #define GPU_ID_VALUE                 0x47505530u
-#define GPU_VERSION_VALUE            0x00010003u
+#define GPU_VERSION_VALUE            0x00010004u
 #define GPU_APERTURE_BYTES           0x20000u
 
 #define GPU_VTX_CAP                  1024u
@@ -23,6 +23,7 @@
 #define GPU_DEFAULT_ENABLE_WMASK     1u  /* Framebuffer write mask (CAPS_WMASK): each pixel's two 4-bit planes have their own write enables, FB_WRITE_MASK chooses the planes a batch writes; without it every batch writes all 8 bits and FB_WRITE_MASK reads 3. */
 #define GPU_DEFAULT_ZBUF_BITS        16u  /* Depth bits the depth buffer keeps, 1 to 16 (CAPS_ZBUF_BITS): the top ZBUF_BITS bits of each depth are stored and compared; fewer bits, less block RAM. */
 #define GPU_DEFAULT_STRIP_ROWS       0u  /* Rows of the strip buffer (STRIP_ROWS): 0, the GPU draws into the back frame itself; a power of two up to the frame's height, the GPU draws each strip of that many rows on chip and writes it to the back frame when done (contract "The strip buffer"). */
+#define GPU_DEFAULT_FRAME_DRAM       0u  /* Frames in external memory (FRAME_DRAM): 0, the two frames are the GPU's block RAM; 1, they are in the SDRAM behind a native memory port, written by the strip buffer's flushes (needs STRIP_ROWS) and read a line ahead into an on-chip line buffer by the scan-out (contract "Frames in external memory"). */
 #define GPU_DEFAULT_ENABLE_GOURAUD   0u  /* Gouraud triangles (PRIM_KIND_TRI_GOURAUD: VTX_I interpolated, palette ramp, CTRL_DITHER; CAPS_GOURAUD); without them such a triangle sets ERR_KIND. */
 
 /* Bus windows: byte offset and size from the GPU base. */
@@ -57,6 +58,7 @@
 #define GPU_REG_ERRORS               0x04Cu  /* ro: Error flags ERR_* of the last batch; cleared when the next batch starts. */
 #define GPU_REG_FB_WRITE_MASK        0x050u  /* rw: Framebuffer planes a batch writes, see field WMASK_* (the other bits read 0; 3 after reset: all of each pixel). Applies to the clear and to every primitive; the depth test and the depth buffer are not masked. Sampled when DOORBELL is written. Without CAPS_WMASK writes are ignored and it reads 3. */
 #define GPU_REG_STRIP                0x054u  /* rw: The band of rows a batch draws: rows STRIP_FIRST to STRIP_LAST of the frame, both included (0 and the frame's last row after reset: the whole frame). Triangles and lines are clipped to it, CTRL_CLEAR and CTRL_ZCLEAR clear its rows only; a last row beyond the frame means the frame's last, a first row after the last draws and clears nothing. Reads back as written. Sampled when DOORBELL is written. */
+#define GPU_REG_SCANOUT_UNDERFLOWS   0x058u  /* ro: Display lines shown before their row of the front frame had arrived from external memory (FRAME_DRAM builds), counted since reset and saturating; each such line is shown in the colour SCANOUT_UNDERFLOW_RGB444, never torn. Always 0 where the frames are on chip. */
 #define GPU_REG_PERF_BUSY_CYCLES     0x060u  /* ro: Clock cycles from the doorbell until the batch finished drawing (excludes the wait for vsync). */
 #define GPU_REG_PERF_TRIS_IN         0x064u  /* ro: Primitives read from the index buffer in the last batch. */
 #define GPU_REG_PERF_TRIS_DRAWN      0x068u  /* ro: Primitives rasterized: valid, non-zero area, bounding box on screen and in the STRIP rows. */
@@ -80,6 +82,7 @@
     X(DONE_SEQ) \
     X(FRAME_COUNT) \
     X(ERRORS) \
+    X(SCANOUT_UNDERFLOWS) \
     X(PERF_BUSY_CYCLES) \
     X(PERF_TRIS_IN) \
     X(PERF_TRIS_DRAWN) \
@@ -88,7 +91,7 @@
     X(PERF_SAMPLES) \
     X(PERF_SPANS_WRITTEN) \
     X(PERF_SPANS_VISITED)
-#define GPU_READ_ONLY_REG_COUNT      19u
+#define GPU_READ_ONLY_REG_COUNT      20u
 
 /* Register bit fields. */
 #define GPU_CTRL_CLEAR_LSB           0u  /* in CTRL: Fill the back buffer with CLEAR_COLOR before drawing. */
@@ -170,5 +173,6 @@
 #define GPU_PRIM_KIND_TRI_GOURAUD    2u
 #define GPU_VTX_WORDS                2u
 #define GPU_PRIM_WORDS               2u
+#define GPU_SCANOUT_UNDERFLOW_RGB444 3855u
 
 #endif /* GPU_REGS_H */

@@ -3,7 +3,7 @@
 // gpu_pkg::GPU_*. Not every build uses every constant:
 /* verilator lint_off UNUSEDPARAM */
 localparam [31:0] GPU_ID_VALUE                 = 32'h47505530;
-localparam [31:0] GPU_VERSION_VALUE            = 32'h10003;
+localparam [31:0] GPU_VERSION_VALUE            = 32'h10004;
 localparam integer GPU_VTX_CAP                  = 1024;
 localparam integer GPU_TRI_CAP                  = 512;
 localparam integer GPU_FB_WIDTH                 = 320;
@@ -19,6 +19,7 @@ localparam integer GPU_DEFAULT_ENABLE_ZBUF      = 0;  // build-option default
 localparam integer GPU_DEFAULT_ENABLE_WMASK     = 1;  // build-option default
 localparam integer GPU_DEFAULT_ZBUF_BITS        = 16;  // build-option default
 localparam integer GPU_DEFAULT_STRIP_ROWS       = 0;  // build-option default
+localparam integer GPU_DEFAULT_FRAME_DRAM       = 0;  // build-option default
 localparam integer GPU_DEFAULT_ENABLE_GOURAUD   = 0;  // build-option default
 localparam [16:0] GPU_WIN_REGS                 = 17'h0;  // Registers, 32-bit words.
 localparam [16:0] GPU_WIN_REGS_BYTES           = 17'h100;
@@ -49,6 +50,7 @@ localparam [7:0] GPU_REG_FRAME_COUNT          = 8'h48;  // ro
 localparam [7:0] GPU_REG_ERRORS               = 8'h4C;  // ro
 localparam [7:0] GPU_REG_FB_WRITE_MASK        = 8'h50;  // rw
 localparam [7:0] GPU_REG_STRIP                = 8'h54;  // rw
+localparam [7:0] GPU_REG_SCANOUT_UNDERFLOWS   = 8'h58;  // ro
 localparam [7:0] GPU_REG_PERF_BUSY_CYCLES     = 8'h60;  // ro
 localparam [7:0] GPU_REG_PERF_TRIS_IN         = 8'h64;  // ro
 localparam [7:0] GPU_REG_PERF_TRIS_DRAWN      = 8'h68;  // ro
@@ -133,4 +135,5 @@ localparam [7:0] GPU_PRIM_KIND_LINE           = 8'h1;
 localparam [7:0] GPU_PRIM_KIND_TRI_GOURAUD    = 8'h2;
 localparam [7:0] GPU_VTX_WORDS                = 8'h2;
 localparam [7:0] GPU_PRIM_WORDS               = 8'h2;
+localparam [11:0] GPU_SCANOUT_UNDERFLOW_RGB444 = 12'hF0F;
 /* verilator lint_on UNUSEDPARAM */

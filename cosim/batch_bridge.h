@@ -80,6 +80,10 @@ public:
     uint32_t doorbells_dropped() const { return dropped_; }
     uint32_t resets() const { return resets_; }
     uint64_t cycles() const { return sim_.cycles(); }
+    // SCANOUT_UNDERFLOWS as last published; the frames' memory port's traffic (FRAME_DRAM, pin path).
+    uint32_t scanout_underflows() const { return shadow_[GPU_REG_SCANOUT_UNDERFLOWS / 4]; }
+    uint64_t memory_words_read() const { return sim_.memory_words_read(); }
+    uint64_t memory_words_written() const { return sim_.memory_words_written(); }
     const char *error_kind() const { return error_kind_; }
     // The harness's UART work during a batch (GpuSim::set_background).
     void set_background(std::function<void()> fn, uint64_t every) { sim_.set_background(std::move(fn), every); }

@@ -132,6 +132,10 @@ void CosimRun::summary_keys(FILE *f) const
     std::fprintf(f, "frame_wall_first_s=%.6f\nframe_wall_last_s=%.6f\n", c.first_s, c.last_s);
     std::fprintf(f, "frame_cycles_first=%llu\nframe_cycles_last=%llu\n",
                  static_cast<unsigned long long>(c.first_cycles), static_cast<unsigned long long>(c.last_cycles));
+    // The frames in external memory (FRAME_DRAM; 0 elsewhere): 16-bit words through the port.
+    std::fprintf(f, "scanout_underflows=%u\nframe_memory_words_written=%llu\nframe_memory_words_read=%llu\n",
+                 bridge_.scanout_underflows(), static_cast<unsigned long long>(bridge_.memory_words_written()),
+                 static_cast<unsigned long long>(bridge_.memory_words_read()));
 }
 
 // The pty's bytes, as many as the UART's input pipe takes without blocking (POLLOUT: room for

@@ -49,6 +49,9 @@ extern "C" {
 #ifndef GPU_BUILD_STRIP_ROWS
 #define GPU_BUILD_STRIP_ROWS GPU_DEFAULT_STRIP_ROWS
 #endif
+#ifndef GPU_BUILD_FRAME_DRAM
+#define GPU_BUILD_FRAME_DRAM GPU_DEFAULT_FRAME_DRAM
+#endif
 
 // The model's configuration for this build.
 inline gpu_model_config gpu_build_config()

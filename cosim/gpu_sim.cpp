@@ -2,6 +2,7 @@
 #include "gpu_sim.h"
 
 #include <cstdio>
+#include <algorithm>
 #include <cstdlib>
 #include <type_traits>
 #include <utility>
@@ -22,6 +23,7 @@ using VerilatedGpu = Vgpu_top;
 #define GPU_CORE_NAME(path) gpu_top__DOT__u_core__DOT__##path
 #endif
 #include "gpu_build.h"
+#include "native_port_model.h"
 #include "verilated.h"
 #ifndef GPUSIM_TRACE
 #define GPUSIM_TRACE 0
@@ -64,8 +66,36 @@ gpu_model_config GpuSim::build_config()
     return gpu_build_config();
 }
 
+namespace {
+
+template <class T>
+uint8_t lane(const T &word, unsigned i)  // a word of at most 64 bits
+{
+    return static_cast<uint8_t>(static_cast<uint64_t>(word) >> (8 * i));
+}
+template <std::size_t N>
+uint8_t lane(const VlWide<N> &word, unsigned i)  // a word wider than 64 bits, in 32-bit parts
+{
+    return static_cast<uint8_t>(word.m_storage[i / 4] >> (8 * (i % 4)));
+}
+
+}  // namespace
+
+// FRAME_DRAM: the frames' place behind gpu_top's memory port (its FRAME_BASE: the simulator
+// passes none), in native 16-bit words.
+constexpr uint32_t kFrameBase = 0;
+constexpr uint32_t kFramePixels = uint32_t{GPU_BUILD_FB_WIDTH} * GPU_BUILD_FB_HEIGHT;
+constexpr uint32_t kFrameWords = kFramePixels / 2;
+
 GpuSim::GpuSim() : v_(new Verilated)
 {
+    if constexpr (GPU_BUILD_FRAME_DRAM != 0) {
+        if (fast_display()) {
+            fast_frames_.assign(2 * std::size_t{kFramePixels}, 0);
+        } else {
+            memory_.reset(new NativePortModel(kFrameBase, 2 * kFrameWords));
+        }
+    }
     vga_monitor_reset(&monitor_);
     reset();
 }
@@ -142,9 +172,20 @@ void GpuSim::tick()
     v_->top.vblank_start = (cycles_ % kFastVblankEvery) == 0;
     // The back frame takes a span this clock unless throttled (a frame memory busy elsewhere).
     v_->top.fb_wr_ready = throttle_percent_ == 0 || throttle_rng_.below(100) >= throttle_percent_;
+    v_->top.fb_wr_idle = 1;  // FRAME_DRAM: this harness writes each span as it takes it
+    v_->top.scanout_underflows = 0;
     v_->top.clk = 0;
     v_->top.eval();
     v_->dump(cycles_ * 10);
+    if constexpr (GPU_BUILD_FRAME_DRAM != 0) {
+        if (v_->top.fb_wr_valid && v_->top.fb_wr_ready) {  // a span into the back frame
+            uint8_t *span = &fast_frames_[(v_->top.front_bank ? 0 : kFramePixels)
+                                          + std::size_t{v_->top.fb_wr_addr_out} * GPU_BUILD_SPAN_W];
+            for (unsigned i = 0; i < GPU_BUILD_SPAN_W; i++) {
+                span[i] = lane(v_->top.fb_wr_data_out, i);
+            }
+        }
+    }
     v_->top.clk = 1;
     v_->top.eval();
     v_->dump(cycles_ * 10 + 5);
@@ -152,14 +193,28 @@ void GpuSim::tick()
 #else
     // Outputs change on the edge at which vga_pix_stb is high; sample them right after it. The
     // scan-out's clock is the system clock here (PIX_DIV clocks a pixel), its crossings still in.
+    if (memory_) {  // FRAME_DRAM: the memory's side of the port for this clock
+        const NativePortModel::Out out = memory_->drive();
+        v_->top.mem_cmd_ready = out.cmd_ready;
+        v_->top.mem_wdata_ready = out.wdata_ready;
+        v_->top.mem_rdata_valid = out.rdata_valid;
+        v_->top.mem_rdata_data = out.rdata;
+    }
     v_->top.clk = v_->top.clk_pix = 0;
     v_->top.eval();
     v_->dump(cycles_ * 10);
     const bool pixel_edge = v_->top.vga_pix_stb;
+    if (memory_) {
+        memory_->sample(v_->top.mem_cmd_valid, v_->top.mem_cmd_we, v_->top.mem_cmd_addr,
+                        v_->top.mem_wdata_valid, v_->top.mem_wdata_data, v_->top.mem_wdata_we);
+    }
     v_->top.clk = v_->top.clk_pix = 1;
     v_->top.eval();
     v_->dump(cycles_ * 10 + 5);
     cycles_++;
+    if (memory_) {
+        memory_->edge();
+    }
     if (pixel_edge) {
         vga_monitor_sample(&monitor_, v_->top.vga_hsync_n, v_->top.vga_vsync_n, v_->top.vga_r,
                            v_->top.vga_g, v_->top.vga_b);
@@ -173,12 +228,43 @@ void GpuSim::tick()
 
 bool GpuSim::throttle_frame(unsigned percent, uint64_t seed)
 {
-    if (!fast_display() || percent > 100) {
+    if (percent > 100) {
+        return false;
+    }
+    if (memory_) {
+        memory_->throttle(percent, seed);
+        return true;
+    }
+    if (!fast_display()) {
         return false;
     }
     throttle_percent_ = percent;
     throttle_rng_ = Rng{seed};
     return true;
+}
+
+bool GpuSim::stall_memory(uint64_t clocks)
+{
+    if (!memory_) {
+        return false;
+    }
+    memory_->stall(cycles_, clocks);
+    return true;
+}
+
+std::string GpuSim::memory_error() const
+{
+    return memory_ ? memory_->error() : std::string{};
+}
+
+uint64_t GpuSim::memory_words_read() const
+{
+    return memory_ ? memory_->words_read() : 0;
+}
+
+uint64_t GpuSim::memory_words_written() const
+{
+    return memory_ ? memory_->words_written() : 0;
 }
 
 void GpuSim::write(uint32_t offset, uint32_t value)
@@ -245,11 +331,11 @@ bool GpuSim::wait_capture(uint64_t max_cycles)
 // With the write mask (ENABLE_WMASK) both banks are one RAM of 2 x WORDS words instead, bank b
 // at words [b * WORDS, (b + 1) * WORDS) (g_merged).
 #define GPU_FB_MAIN(bank) \
-    GPU_CORE_NAME(u_framebuffer__DOT__g_split__DOT__g_bank__BRA__##bank##__KET____DOT__u_main__DOT__mem)
+    GPU_CORE_NAME(g_frame_bram__DOT__u_framebuffer__DOT__g_split__DOT__g_bank__BRA__##bank##__KET____DOT__u_main__DOT__mem)
 #define GPU_FB_TAIL(bank) \
-    GPU_CORE_NAME(u_framebuffer__DOT__g_split__DOT__g_bank__BRA__##bank##__KET____DOT__g_tail__DOT__u_tail__DOT__mem)
-#define GPU_FB_BOTH GPU_CORE_NAME(u_framebuffer__DOT__g_merged__DOT__u_both__DOT__mem)
-#define GPU_FB_FRONT GPU_CORE_NAME(u_framebuffer__DOT__front_q)
+    GPU_CORE_NAME(g_frame_bram__DOT__u_framebuffer__DOT__g_split__DOT__g_bank__BRA__##bank##__KET____DOT__g_tail__DOT__u_tail__DOT__mem)
+#define GPU_FB_BOTH GPU_CORE_NAME(g_frame_bram__DOT__u_framebuffer__DOT__g_merged__DOT__u_both__DOT__mem)
+#define GPU_FB_FRONT GPU_CORE_NAME(g_frame_bram__DOT__u_framebuffer__DOT__front_q)
 #define GPU_PALETTE GPU_CORE_NAME(u_palette__DOT__mem)
 // The strip buffer (STRIP_ROWS > 0, gpu_strip_buffer.v): its colour RAM (words of SPAN_W pixels;
 // bank b's words from b times half its depth on), the flush's state, and the raster's open strip.
@@ -273,17 +359,6 @@ template <class T, std::size_t D>
 constexpr std::size_t depth(const VlUnpacked<T, D> &)
 {
     return D;
-}
-
-template <class T>
-uint8_t lane(const T &word, unsigned i)  // a word of at most 64 bits
-{
-    return static_cast<uint8_t>(static_cast<uint64_t>(word) >> (8 * i));
-}
-template <std::size_t N>
-uint8_t lane(const VlWide<N> &word, unsigned i)  // a word wider than 64 bits, in 32-bit parts
-{
-    return static_cast<uint8_t>(word.m_storage[i / 4] >> (8 * (i % 4)));
 }
 
 template <class T, std::size_t D>
@@ -375,9 +450,8 @@ void overlay_strip(const R &root, unsigned bank, std::size_t base, std::size_t w
 // then the strip being flushed (its base is where the flush's frame address started), then the open
 // strip, which is newer (a strip opens only once the other bank's flush is over).
 template <class R>
-void read_back_frame(const R &root, uint8_t *pixels)
+void overlay_strips(const R &root, uint8_t *pixels)
 {
-    read_bank(root, root.GPU_FB_FRONT == 0, pixels);
     if constexpr (GPU_BUILD_STRIP_ROWS > 0) {
         if (root.GPU_STRIPS(job_q)) {
             const std::size_t issued = root.GPU_STRIPS(rd_addr_q);
@@ -391,11 +465,74 @@ void read_back_frame(const R &root, uint8_t *pixels)
     }
 }
 
+// FRAME_DRAM (gpu_core.v g_frame_dram; gpu_top.v g_frame_dram.u_frames, gpu_frame_dram.v): the
+// bank shown, and the flush queue's spans whose data the memory has not taken yet.
+#define GPU_DRAM_FRONT GPU_CORE_NAME(g_frame_dram__DOT__front_q)
+#define GPU_DRAM_Q(reg) gpu_top__DOT__g_frame_dram__DOT__u_frames__DOT__##reg
+
+template <class R>
+bool front_bank(const R &root)
+{
+    if constexpr (GPU_BUILD_FRAME_DRAM != 0) {
+        return root.GPU_DRAM_FRONT != 0;
+    } else {
+        return root.GPU_FB_FRONT != 0;
+    }
+}
+
+// The pin path's flush queue over the frame (a span's words from the first the memory has not
+// taken): newer than the memory, older than any strip still in the strip buffer.
+template <class R>
+void overlay_flush_queue(const R &root, unsigned back, uint8_t *pixels)
+{
+    constexpr unsigned span_words = GPU_BUILD_SPAN_W / 2;
+    constexpr unsigned depth = 4;  // gpu_frame_dram's SPAN_Q
+    unsigned entry = root.GPU_DRAM_Q(dat_q), word = root.GPU_DRAM_Q(dat_lane_q);
+    for (; entry != root.GPU_DRAM_Q(tail_q); entry = (entry + 1) % (2 * depth), word = 0) {
+        const uint32_t first = root.GPU_DRAM_Q(q_addr)[entry % depth];
+        for (; word < span_words; word++) {
+            const uint32_t addr = first + word - kFrameBase;
+            const uint32_t pixel = (addr % kFrameWords) * 2;
+            if (addr >= 2 * kFrameWords) {
+                std::fprintf(stderr, "gpusim: a queued span at native word 0x%x\n", first);
+                std::abort();
+            }
+            if (addr / kFrameWords != back) {  // the frame now shown, written before its swap
+                continue;
+            }
+            pixels[pixel] = lane(root.GPU_DRAM_Q(q_data)[entry % depth], 2 * word);
+            pixels[pixel + 1] = lane(root.GPU_DRAM_Q(q_data)[entry % depth], 2 * word + 1);
+        }
+    }
+}
+
 }  // namespace
+
+void GpuSim::read_frame(bool bank, uint8_t *pixels) const
+{
+    if constexpr (GPU_BUILD_FRAME_DRAM != 0) {
+        if (fast_display()) {
+            std::copy_n(&fast_frames_[bank ? kFramePixels : 0], kFramePixels, pixels);
+            return;
+        }
+        for (uint32_t i = 0; i < kFrameWords; i++) {
+            const uint16_t word = *memory_->word(kFrameBase + (bank ? kFrameWords : 0) + i);
+            pixels[2 * i] = static_cast<uint8_t>(word);
+            pixels[2 * i + 1] = static_cast<uint8_t>(word >> 8);
+        }
+    } else {
+        read_bank(*v_->top.rootp, bank, pixels);
+    }
+}
 
 void GpuSim::back_buffer(uint8_t *pixels) const
 {
-    read_back_frame(*v_->top.rootp, pixels);
+    const auto &root = *v_->top.rootp;
+    read_frame(!front_bank(root), pixels);
+    if constexpr (GPU_BUILD_FRAME_DRAM != 0 && !GPUSIM_FAST_DISPLAY) {
+        overlay_flush_queue(root, front_bank(root) ? 0 : 1, pixels);
+    }
+    overlay_strips(root, pixels);
 }
 
 // The front bank through the palette (RGB444, each channel times 17 as the monitor model takes the
@@ -405,7 +542,7 @@ void GpuSim::show_front_bank()
     static uint8_t front[GPU_BUILD_FB_WIDTH * GPU_BUILD_FB_HEIGHT];
     constexpr int scale = VGA_W / GPU_BUILD_FB_WIDTH;
     const auto &root = *v_->top.rootp;
-    read_bank(root, root.GPU_FB_FRONT != 0, front);
+    read_frame(front_bank(root), front);
     static_assert(VGA_W == scale * GPU_BUILD_FB_WIDTH && VGA_H == scale * GPU_BUILD_FB_HEIGHT,
                   "gpu_vga shows each pixel scale x scale");
     for (int y = 0; y < VGA_H; y++) {

@@ -18,12 +18,15 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 extern "C" {
 #include "gpu_model.h"
 #include "vga_monitor.h"
 }
 #include "rng.h"
+
+class NativePortModel;
 
 class GpuSim {
 public:
@@ -57,16 +60,26 @@ public:
     // The framebuffer being drawn (the back bank, !STATUS.FRONT), as the build's frame (build_config's
     // fb_width x fb_height) of palette indices,
     // row-major: read from the framebuffer's block-RAM arrays in the Verilated model (their
-    // Verilator names, gpu_top.u_framebuffer.g_split.g_bank[b].u_main / g_tail.u_tail .mem, or
+    // Verilator names, gpu_top.u_core.g_frame_bram.u_framebuffer.g_split.g_bank[b].u_main / g_tail.u_tail .mem, or
     // g_merged.u_both.mem with the write mask, are checked at
     // compile time). A strip build's strips still on chip (being flushed, open) are laid over it
     // from the strip buffer's banks: the frame as it will be written. Takes no clock and no bus
     // cycle, so it changes nothing the GPU does.
     void back_buffer(uint8_t *pixels) const;
     // The fast path: the back frame refuses a span on `percent` of the clocks, at random from `seed`
-    // (a frame memory busy elsewhere; a strip build's flush must wait, never drop). The pin path's
-    // frame (gpu_top's) takes a span every clock: false there.
+    // (a frame memory busy elsewhere; a strip build's flush must wait, never drop). The pin path
+    // with the frames in external memory (FRAME_DRAM): its memory port refuses commands and write
+    // data on `percent` of the clocks. The pin path's frame in block RAM takes a span every clock:
+    // false there.
     bool throttle_frame(unsigned percent, uint64_t seed);
+    // FRAME_DRAM, pin path: the memory refuses every command for `clocks` clocks from now (reads
+    // for the scan-out included: the display underflows). False in other builds.
+    bool stall_memory(uint64_t clocks);
+    // FRAME_DRAM, pin path: the memory port model's first protocol error (empty: none), and what
+    // moved through the port since reset.
+    std::string memory_error() const;
+    uint64_t memory_words_read() const;
+    uint64_t memory_words_written() const;
 
     const uint8_t *frame_rgb() const { return monitor_.rgb; }  // VGA_W x VGA_H RGB888
     const char *vga_error() const { return monitor_.error; }
@@ -94,12 +107,17 @@ public:
 
 private:
     void show_front_bank();  // the fast path's display
+    void read_frame(bool bank, uint8_t *pixels) const;  // a frame's pixels (either kind of frame)
 
     struct Verilated;  // the model (gpu_top or gpu_core) and its context: gpu_sim.cpp, the one
                        // file compiled per simulator, defines it
     std::unique_ptr<Verilated> v_;
     vga_monitor monitor_;
     uint64_t cycles_ = 0;
+    // FRAME_DRAM: the pin path's memory behind gpu_top's port; the fast path's frames (both
+    // banks, pixels), written from gpu_core's frame stream.
+    std::unique_ptr<NativePortModel> memory_;
+    std::vector<uint8_t> fast_frames_;
     unsigned throttle_percent_ = 0;
     Rng throttle_rng_{1};
     std::function<void()> background_;

@@ -92,7 +92,8 @@ int rtl_check_main(int argc, char **argv)
     uint64_t min_prims = 0;     // fail unless at least this many primitives were checked
     uint64_t min_overflows = 0;  // fail unless at least this many batches set ERR_COUNT
     uint32_t swap_percent = 80;
-    unsigned throttle = 0;       // percent of clocks the back frame refuses a span (fast path)  // batches that end with a swap (and a frame captured from the VGA pins)
+    unsigned throttle = 0;       // percent of clocks the back frame refuses a span (fast path) or
+                                 // the frames' memory port refuses a command (FRAME_DRAM)
     for (int i = 0; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
         if (a == "--seed") {
@@ -120,7 +121,8 @@ int rtl_check_main(int argc, char **argv)
     GpuSim sim;
     // The back frame busy on some clocks (a strip build's flushes must wait for it, losing nothing).
     if (throttle != 0 && !sim.throttle_frame(throttle, seed ^ 0x5448524Full)) {
-        std::fprintf(stderr, "random: --frame-throttle needs the fast display path (gpu_core's frame port) and 0 .. 100\n");
+        std::fprintf(stderr, "random: --frame-throttle needs the fast display path (gpu_core's frame port) or frames in "
+                             "external memory, and 0 .. 100\n");
         return 2;
     }
     const gpu_model_config cfg = GpuSim::build_config();
@@ -362,6 +364,9 @@ int rtl_check_main(int argc, char **argv)
                 frames++;
             }
         }
+        if (diff.empty() && !sim.memory_error().empty()) {
+            diff = sim.memory_error();
+        }
         if (!diff.empty()) {
             std::printf("random: seed %llu batch %d (vertex family %d, %u prims, CTRL 0x%x, FB_WRITE_MASK %u, STRIP 0x%08x, %llu resets before): %s\n",
                         static_cast<unsigned long long>(seed), b, family, nt, ctrl, planes, strip,
@@ -387,6 +392,12 @@ int rtl_check_main(int argc, char **argv)
         return 1;
     }
     const uint32_t fb_size = sim.read(GPU_REG_FB_SIZE);  // the RTL's, which the model's has equalled
+    if (sim.memory_words_written() + sim.memory_words_read() != 0) {
+        // SCANOUT_UNDERFLOWS has equalled the model's 0 after every batch.
+        std::printf("random: frames in external memory: %llu native words written, %llu read by the scan-out, no underflow\n",
+                    static_cast<unsigned long long>(sim.memory_words_written()),
+                    static_cast<unsigned long long>(sim.memory_words_read()));
+    }
     if (strip_rows != 0) {
         std::printf("random: strips of %u rows, %llu batches refused (ERR_STRIP), the frame refusing %u %% of the clocks\n",
                     strip_rows, static_cast<unsigned long long>(strip_refusals), throttle);

@@ -868,6 +868,8 @@ uint32_t gpu_model_read(const gpu_model *m, uint32_t offset)
         return m->cfg.fb_width | (m->cfg.fb_height << 16);
     case GPU_REG_STRIP_ROWS:
         return m->cfg.strip_rows;
+    case GPU_REG_SCANOUT_UNDERFLOWS:
+        return 0; /* the model has no display to fall behind: the co-simulation holds the RTL's to 0 */
     case GPU_REG_CTRL:
         return m->regs.ctrl;
     case GPU_REG_VTX_BASE:

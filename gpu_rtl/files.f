@@ -12,6 +12,7 @@ gpu_rtl/gpu_span_walker.v
 gpu_rtl/gpu_raster.v
 gpu_rtl/gpu_framebuffer.v
 gpu_rtl/gpu_strip_buffer.v
+gpu_rtl/gpu_frame_dram.v
 gpu_rtl/gpu_vga.v
 gpu_rtl/gpu_core.v
 gpu_rtl/gpu_top.v

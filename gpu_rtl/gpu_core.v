@@ -22,6 +22,13 @@
 // flush writes each closed strip to the back frame through fb_wr_ready's handshake; the depth buffer
 // holds one strip. The rasterizer's addresses are the frame's; the open strip's first span
 // (strip_base) is taken off them here.
+//
+// FRAME_DRAM = 1 (contract "Frames in external memory"; needs STRIP_ROWS): the frames are not here.
+// The strip buffer's flush leaves as the frame stream fb_wr_* (valid/ready) for gpu_frame_dram,
+// which also reads the front frame (front) for the display, counts its underflows
+// (scanout_underflows, the SCANOUT_UNDERFLOWS register) and says when every flushed span has
+// gone to the memory (fb_wr_idle: a swap waits for it); the read port fb_rd_* is then unused and
+// reads 0.
 `include "contract/gpu_build_params.vh"
 `default_nettype none
 
@@ -63,9 +70,16 @@ module gpu_core #(
     input  wire        pal_rd_en,
     input  wire [7:0]  pal_rd_addr,
     output wire [11:0] pal_rd_data,
-    // the back frame takes a span this clock (strip builds: a flush waits while it is low; a frame
-    // in block RAM takes one every clock, gpu_top ties it high; a simulation may throttle it)
-    input  wire        fb_wr_ready
+    // the back frame's writes (strip builds: a flush waits while fb_wr_ready is low; a frame in
+    // block RAM takes one every clock, gpu_top ties it high; a simulation may throttle it); with
+    // FRAME_DRAM the stream itself, for the external frame memory
+    input  wire        fb_wr_ready,
+    output wire        fb_wr_valid,
+    output wire [FB_WAW-1:0] fb_wr_addr_out,
+    output wire [SPAN_W*8-1:0] fb_wr_data_out,
+    input  wire        fb_wr_idle,    // FRAME_DRAM: every span taken has gone to the memory
+    output wire        front_bank,    // the frame shown (STATUS.FRONT)
+    input  wire [31:0] scanout_underflows  // FRAME_DRAM: the display's underflows, else 0
 );
     localparam [31:0] CAPS = (32'(SPAN_W) << gpu_pkg::GPU_CAPS_SPAN_W_LSB)
                            | (32'(ENABLE_LINES != 0) << gpu_pkg::GPU_CAPS_LINES_LSB)
@@ -116,7 +130,8 @@ module gpu_core #(
         .vtx_wr_en(vtx_wr_en), .vtx_wr_addr(vtx_wr_addr), .idx_wr_en(idx_wr_en),
         .idx_wr_addr(idx_wr_addr), .pal_wr_en(pal_wr_en), .pal_wr_addr(pal_wr_addr),
         .busy(busy), .front(front), .done_seq(done_seq), .frame_count(frame_count),
-        .raster_errors(raster_errors), .perf(perf)
+        .raster_errors(raster_errors), .perf(perf),
+        .scanout_underflows(FRAME_DRAM != 0 ? scanout_underflows : 32'd0)
     );
 
     // Depth: the vertices' z (word 1) and the depth buffer exist only in a build that tests depth.
@@ -217,7 +232,8 @@ module gpu_core #(
         .fb_wr_en(fb_wr_en), .fb_wr_addr(fb_wr_addr), .fb_wr_data(fb_wr_data),
         .fb_wr_mask(fb_wr_mask), .strip_base(strip_base), .draw_bank(draw_bank), .flush(flush),
         .flush_bank(flush_bank), .flush_base(flush_base), .flush_words(flush_words),
-        .bank_busy(bank_busy), .vblank_start(vblank_start), .swap(swap)
+        .bank_busy(bank_busy), .frame_idle(FRAME_DRAM == 0 || fb_wr_idle),
+        .vblank_start(vblank_start), .swap(swap)
     );
 
     // The back frame's writes: the rasterizer's, or the strip buffer's flushes.
@@ -244,6 +260,7 @@ module gpu_core #(
                 .fr_data(frame_wr_data)
             );
             assign frame_wr_en = fr_valid && fb_wr_ready;
+            assign fb_wr_valid = fr_valid;
             assign frame_wr_mask = {SPAN_W{1'b1}};
             assign frame_wr_planes = 2'b11;
         end else begin : g_frame
@@ -253,18 +270,43 @@ module gpu_core #(
             assign frame_wr_data = fb_wr_data;
             assign frame_wr_mask = fb_wr_mask;
             assign frame_wr_planes = fb_wmask;
+            assign fb_wr_valid = fb_wr_en;
             wire unused_strips = fb_wr_ready | draw_bank | flush | flush_bank | (|flush_base)
                                | (|flush_words) | (|strip_base);
         end
     endgenerate
 
-    gpu_framebuffer #(.FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT), .SPAN_W(SPAN_W), .ENABLE_WMASK(ENABLE_WMASK)) u_framebuffer (
-        .clk(clk), .rst(rst), .clk_pix(clk_pix),
-        .swap(swap), .front(front),
-        .wr_en(frame_wr_en), .wr_addr(frame_wr_addr), .wr_data(frame_wr_data),
-        .wr_mask(frame_wr_mask), .wr_planes(frame_wr_planes),
-        .rd_en(fb_rd_en), .rd_addr(fb_rd_addr), .rd_data(fb_rd_data)
-    );
+    assign fb_wr_addr_out = frame_wr_addr;
+    assign fb_wr_data_out = frame_wr_data;
+    assign front_bank = front;
+    generate
+        if (FRAME_DRAM != 0) begin : g_frame_dram
+            if (STRIP_ROWS == 0) begin : g_bad_frame_dram
+                // Elaboration stops here, with this name in the error: there is no such module.
+                gpu_core_FRAME_DRAM_needs_STRIP_ROWS u_bad ();
+            end
+            // The frames are external: the front bank is kept here, as gpu_framebuffer keeps it.
+            reg front_q;
+            always @(posedge clk) begin
+                if (rst) front_q <= 1'b0;
+                else if (swap) front_q <= ~front_q;
+            end
+            assign front = front_q;
+            assign fb_rd_data = 8'd0;
+            wire unused_frame = frame_wr_en | (|frame_wr_mask) | (|frame_wr_planes) | fb_rd_en
+                              | (|fb_rd_addr) | clk_pix;
+        end else begin : g_frame_bram
+            gpu_framebuffer #(.FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT), .SPAN_W(SPAN_W),
+                              .ENABLE_WMASK(ENABLE_WMASK)) u_framebuffer (
+                .clk(clk), .rst(rst), .clk_pix(clk_pix),
+                .swap(swap), .front(front),
+                .wr_en(frame_wr_en), .wr_addr(frame_wr_addr), .wr_data(frame_wr_data),
+                .wr_mask(frame_wr_mask), .wr_planes(frame_wr_planes),
+                .rd_en(fb_rd_en), .rd_addr(fb_rd_addr), .rd_data(fb_rd_data)
+            );
+            wire unused_idle = fb_wr_idle;
+        end
+    endgenerate
 
 
     assign frame_swapped = swap;

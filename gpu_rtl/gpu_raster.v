@@ -96,6 +96,7 @@ module gpu_raster #(
     output wire [WAW-1:0]      flush_base,
     output wire [SAW:0]        flush_words,
     input  wire [1:0]          bank_busy,
+    input  wire                frame_idle,   // every flushed span is in the frame (external frames)
     // buffer swap
     input  wire                vblank_start,
     output wire                swap
@@ -304,7 +305,7 @@ module gpu_raster #(
                 S_CLOSE: begin  // the swap's wait for the strips (none without a strip buffer)
                     if (close_now) begin
                         open_q <= 1'b0;
-                    end else if (!open_q && bank_busy == 2'b00) begin
+                    end else if (!open_q && bank_busy == 2'b00 && frame_idle) begin
                         state_q <= S_VBLANK;
                     end
                 end

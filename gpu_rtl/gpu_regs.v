@@ -58,7 +58,8 @@ module gpu_regs #(
     input  wire [31:0]       done_seq,
     input  wire [31:0]       frame_count,
     input  wire [3:0]        raster_errors,  // {ERR_STRIP, ERR_KIND, ERR_COUNT, ERR_VTX_INDEX}
-    input  gpu_pkg::perf_t   perf          // the PERF_* counters
+    input  gpu_pkg::perf_t   perf,         // the PERF_* counters
+    input  wire [31:0]       scanout_underflows  // SCANOUT_UNDERFLOWS (0 with the frames on chip)
 );
     wire [16:0] byte_addr = {bus_addr, 2'b00};
     wire is_write = bus_valid && bus_write;
@@ -177,6 +178,7 @@ module gpu_regs #(
             gpu_pkg::GPU_REG_FB_SIZE:            reg_value = {16'(FB_HEIGHT),
                                                               16'(FB_WIDTH)};
             gpu_pkg::GPU_REG_STRIP_ROWS:         reg_value = 32'(STRIP_ROWS);
+            gpu_pkg::GPU_REG_SCANOUT_UNDERFLOWS: reg_value = scanout_underflows;
             gpu_pkg::GPU_REG_CTRL:               reg_value = ctrl_value;
             gpu_pkg::GPU_REG_VTX_BASE:           reg_value = vtx_base;
             gpu_pkg::GPU_REG_VTX_COUNT:          reg_value = vtx_count;

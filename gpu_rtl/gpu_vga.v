@@ -8,6 +8,12 @@
 // pixel covers SCALE x SCALE screen pixels: 2x2 for the contract's 320x240, 1:1 for 640x480. RGB is 0 outside the visible area, where vga_de (data enable, for a
 // DVI transmitter) is low. vblank_start pulses for one cycle when the last visible pixel has been
 // read, the moment a buffer swap becomes invisible.
+// Line schedule (for a frame read a line ahead from external memory, gpu_frame_dram): line_stb
+// pulses with the strobe of each display line's first blank pixel; with it, and held until the
+// next, show_row is the frame row the next display line shows (show_valid: it shows one) and
+// fetch_row the row after that one (the first row at the last line of vertical blank). fb_rd_x and
+// fb_rd_row_odd are the read's pixel and its row's parity, fb_rd_invalid (with fb_rd_data) says the
+// row did not arrive in time: such a pixel is shown as SCANOUT_UNDERFLOW_RGB444, not its colour.
 // Latency: the read pipeline (framebuffer, palette, output register) advances only on pixel strobes,
 // so outputs trail the counters by two pixels with the syncs delayed to match, for any PIX_DIV >= 1.
 `default_nettype none
@@ -24,7 +30,16 @@ module gpu_vga #(
     // framebuffer read port (front bank, one-cycle latency)
     output wire             fb_rd_en,
     output wire [FB_AW-1:0] fb_rd_addr,
+    output wire [gpu_pkg::X_W-1:0] fb_rd_x,   // the same pixel as x and its row's parity
+    output wire             fb_rd_row_odd,
     input  wire [7:0]       fb_rd_data,
+    input  wire             fb_rd_invalid,  // with fb_rd_data: show the underflow colour
+    // line schedule (a frame in external memory)
+    output wire             line_stb,
+    output reg              show_valid,
+    output reg  [gpu_pkg::ROW_W-1:0] show_row,
+    output reg              fetch_valid,
+    output reg  [gpu_pkg::ROW_W-1:0] fetch_row,
     // palette read port (one-cycle latency)
     output wire             pal_rd_en,
     output wire [7:0]       pal_rd_addr,
@@ -89,17 +104,45 @@ module gpu_vga #(
     wire [gpu_pkg::ROW_W-1:0] fb_y = gpu_pkg::ROW_W'(v_q >> SCALE_SHIFT);
     assign fb_rd_en   = stb;
     assign fb_rd_addr = times_fb_w(fb_y) + FB_AW'(fb_x);
+    assign fb_rd_x = fb_x;
+    assign fb_rd_row_odd = fb_y[0];
+
+    // The line schedule: at the first blank pixel of line v, the rows of line v + 1 and after.
+    wire [9:0] next_line = (v_q == 10'(V_TOTAL - 1)) ? 10'd0 : v_q + 10'd1;
+    wire [gpu_pkg::ROW_W-1:0] next_row = gpu_pkg::ROW_W'(next_line >> SCALE_SHIFT);
+    assign line_stb = stb && h_q == 10'(H_VISIBLE);
+    always @(posedge clk) begin
+        if (rst) begin
+            show_valid <= 1'b0;
+            show_row <= {gpu_pkg::ROW_W{1'b0}};
+            fetch_valid <= 1'b0;
+            fetch_row <= {gpu_pkg::ROW_W{1'b0}};
+        end else if (line_stb) begin
+            show_valid <= next_line < 10'(V_VISIBLE);
+            show_row <= next_row;
+            if (next_line == 10'(V_TOTAL - 1)) begin
+                fetch_valid <= 1'b1;
+                fetch_row <= {gpu_pkg::ROW_W{1'b0}};
+            end else begin
+                fetch_valid <= next_line < 10'(V_VISIBLE) && next_row + 1'b1 < gpu_pkg::ROW_W'(FB_HEIGHT);
+                fetch_row <= next_row + 1'b1;
+            end
+        end
+    end
 
     // Stage 1: framebuffer data -> palette address. Stage 2: palette data -> output register.
     assign pal_rd_en   = stb;
     assign pal_rd_addr = fb_rd_data;
 
     reg [1:0] visible_pipe_q, hsync_pipe_q, vsync_pipe_q;
+    reg invalid_q;  // fb_rd_invalid, one strobe on: with pal_rd_data
+    wire [11:0] shown = invalid_q ? 12'(gpu_pkg::GPU_SCANOUT_UNDERFLOW_RGB444) : pal_rd_data;
     always @(posedge clk) begin
         if (rst) begin
             visible_pipe_q <= 2'b00;
             hsync_pipe_q <= 2'b00;
             vsync_pipe_q <= 2'b00;
+            invalid_q <= 1'b0;
             vga_de <= 1'b0;
             vga_hsync_n <= 1'b1;
             vga_vsync_n <= 1'b1;
@@ -110,13 +153,15 @@ module gpu_vga #(
             visible_pipe_q <= {visible_pipe_q[0], visible};
             hsync_pipe_q <= {hsync_pipe_q[0], hsync};
             vsync_pipe_q <= {vsync_pipe_q[0], vsync};
-            // pal_rd_data belongs to the pixel two strobes back, as does index [1] of the pipes.
+            invalid_q <= fb_rd_invalid;
+            // pal_rd_data belongs to the pixel two strobes back, as do index [1] of the pipes and
+            // invalid_q.
             vga_de <= visible_pipe_q[1];
             vga_hsync_n <= ~hsync_pipe_q[1];
             vga_vsync_n <= ~vsync_pipe_q[1];
-            vga_r <= visible_pipe_q[1] ? pal_rd_data[11:8] : 4'd0;
-            vga_g <= visible_pipe_q[1] ? pal_rd_data[7:4] : 4'd0;
-            vga_b <= visible_pipe_q[1] ? pal_rd_data[3:0] : 4'd0;
+            vga_r <= visible_pipe_q[1] ? shown[11:8] : 4'd0;
+            vga_g <= visible_pipe_q[1] ? shown[7:4] : 4'd0;
+            vga_b <= visible_pipe_q[1] ? shown[3:0] : 4'd0;
         end
     end
 

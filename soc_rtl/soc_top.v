@@ -338,6 +338,10 @@ module soc_top #(
         .bus_rvalid (gpu_bus_rvalid)
     );
 
+    wire [3:0]  gpu_mem_idle;
+    wire [23:0] gpu_mem_idle_addr;
+    wire [15:0] gpu_mem_idle_data;
+    wire [1:0]  gpu_mem_idle_we;
     gpu_top #(
         `GPU_BUILD_PARAMS_PASS,
         .PIX_DIV      (PIX_DIV)
@@ -359,8 +363,24 @@ module soc_top #(
         .vga_vsync_n (vga_vsync_n),
         .vga_r       (vga_r),
         .vga_g       (vga_g),
-        .vga_b       (vga_b)
+        .vga_b       (vga_b),
+        // the frames stay in the GPU's block RAM here (FRAME_DRAM 0): its memory port is idle
+        .mem_cmd_valid   (gpu_mem_idle[0]),
+        .mem_cmd_ready   (1'b0),
+        .mem_cmd_we      (gpu_mem_idle[1]),
+        .mem_cmd_addr    (gpu_mem_idle_addr),
+        .mem_wdata_valid (gpu_mem_idle[2]),
+        .mem_wdata_ready (1'b0),
+        .mem_wdata_data  (gpu_mem_idle_data),
+        .mem_wdata_we    (gpu_mem_idle_we),
+        .mem_rdata_valid (1'b0),
+        .mem_rdata_ready (gpu_mem_idle[3]),
+        .mem_rdata_data  (16'd0)
     );
+    wire unused_gpu_mem = &{1'b0, gpu_mem_idle, gpu_mem_idle_addr, gpu_mem_idle_data, gpu_mem_idle_we};
+    generate if (FRAME_DRAM != 0) begin : g_no_frame_dram
+        $error("soc_top: the GPU's frames in SDRAM (FRAME_DRAM) are not wired to the SDRAM yet");
+    end endgenerate
 
     soc_uart #(
         .CLK_HZ (CLK_HZ),

@@ -34,7 +34,7 @@ mult=$(count '^MULT18X18D$')
 # cells (the pseudo-dual-port PDPW16KD ones included) grouped by <memory> are each memory's count.
 per_mem=$(sed -n 's:^soc_top/::p' "$out/ebr_cells.txt" | sed -E 's/\.[0-9]+\.[0-9]+$//' | sort | uniq -c)
 ram_ebr=$(echo "$per_mem" | awk '$2 == "u_ram.mem" { print $1 }')
-fb_ebr=$(echo "$per_mem" | awk '$2 ~ /^u_gpu\.u_core\.u_framebuffer\./ { n += $1 } END { print n + 0 }')
+fb_ebr=$(echo "$per_mem" | awk '$2 ~ /^u_gpu\.u_core\.g_frame_bram\.u_framebuffer\./ { n += $1 } END { print n + 0 }')
 ram_want=$((ram_bytes / 2048))
 
 echo "| design | LUT4 | FF | CCU2C | LUT RAM (DPR16X4) | DP16KD (EBR) | MULT18X18D | yosys time |"

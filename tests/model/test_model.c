@@ -237,7 +237,8 @@ void test_bus(void)
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), GPU_TRI_CAP);
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), 512);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), 1024);
-    CHECK_EQ(gpu_model_read(m, GPU_REG_VERSION), 0x00010003u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_VERSION), 0x00010004u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_SCANOUT_UNDERFLOWS), 0u);  /* no display to fall behind */
     CHECK_EQ(gpu_model_read(m, GPU_REG_FB_SIZE), 320u | (240u << 16));
 
     /* Power-on state: everything else zero, palette black, fbs 0. */
