@@ -29,6 +29,7 @@
 #define SOC_SDRAM_BASE                   0x40000000u  /* cached: The board's SDRAM through LiteDRAM (soc_rtl/litedram), a build option (soc_top SDRAM_BYTES, 0 = none). Addresses from the SDRAM's size to the window's end, and the whole window in a build without SDRAM, answer ERR. */
 #define SOC_SDRAM_WINDOW_BYTES           0x04000000u
 #define SOC_SDRAM_DEFAULT_BYTES          0x02000000u  /* default build (SYS SDRAM_BYTES reads a build's own) */
+#define SOC_SDRAM_GPU_FRAMES_OFFSET      0x01F00000u  /* the GPU's two frames (FRAME_DRAM): the firmware stays below */
 #define SOC_GPU_BASE                     0x80000000u  /* uncached: The GPU's 128 KiB window: registers, palette, vertex and index buffers (contract/gpu-contract.md). */
 #define SOC_GPU_WINDOW_BYTES             0x00020000u
 #define SOC_UART_BASE                    0x81000000u  /* uncached: Serial port, 8N1 at uart_baud, with RX and TX FIFOs. */

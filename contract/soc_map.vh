@@ -16,6 +16,7 @@ localparam integer SOC_RAM_BOOT_BYTES               = 16384;
 localparam [31:0] SOC_SDRAM_BASE                   = 32'h40000000;  // cached
 localparam integer SOC_SDRAM_WINDOW_BYTES           = 67108864;
 localparam integer SOC_SDRAM_DEFAULT_BYTES          = 33554432;
+localparam integer SOC_SDRAM_GPU_FRAMES_OFFSET      = 32505856;  // the GPU's frames (FRAME_DRAM)
 localparam [31:0] SOC_GPU_BASE                     = 32'h80000000;  // uncached
 localparam integer SOC_GPU_WINDOW_BYTES             = 131072;
 localparam [31:0] SOC_UART_BASE                    = 32'h81000000;  // uncached

@@ -6,7 +6,9 @@
 // also reads the board's SPI flash (soc_spiflash, region FLASH: the boot program copies the
 // firmware from it into the SDRAM, docs/boot.md); its pins leave soc_top as flash_* (on ECP5 the
 // board's top sends flash_sck through USRMCLK). Without SDRAM the three regions answer ERR and the
-// ports stay idle (tie their inputs to 0: soc_rtl/soc_top_no_sdram.vh).
+// ports stay idle (tie their inputs to 0: soc_rtl/soc_top_no_sdram.vh). A GPU built with FRAME_DRAM
+// keeps its frames in the SDRAM: its memory port leaves soc_top as gpu_mem_* for the controller's
+// second user port (soc_sdram); otherwise that port is idle.
 //
 //   VexRiscv iBus ─┐                      ┌─ soc_ram (RAM_BYTES, RAM_INIT)
 //                  ├─ soc_wb_arbiter ─ soc_wb_decoder ─┼─ gpu_wb_slave ─ gpu_top ─ VGA pins
@@ -42,6 +44,7 @@ module soc_top #(
     localparam integer RAM_AW = $clog2(RAM_BYTES / 4),
     localparam integer SDRAM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),        // word address bits
     localparam integer SDRAM_CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4),
+    localparam integer GPU_MEM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 2),    // 16-bit words
     localparam integer POR_CLKS = 16           // reset length after power-on or ext_rst
 ) (
     input  wire       clk,            // the system clock, CLK_HZ
@@ -78,6 +81,20 @@ module soc_top #(
     input  wire [31:0]               sdram_ctrl_dat_r,
     input  wire                      sdram_ctrl_ack,
     input  wire                      sdram_ctrl_err,
+    // the GPU's frames in the SDRAM (FRAME_DRAM, SDRAM_BYTES > 0): LiteDRAM's native user port
+    // protocol, 16-bit words from SOC_SDRAM_BASE (the frames from SOC_SDRAM_GPU_FRAMES_OFFSET on);
+    // idle (valid low) in a build whose frames are the GPU's block RAM
+    output wire                      gpu_mem_cmd_valid,
+    input  wire                      gpu_mem_cmd_ready,
+    output wire                      gpu_mem_cmd_we,
+    output wire [GPU_MEM_AW-1:0]     gpu_mem_cmd_addr,
+    output wire                      gpu_mem_wdata_valid,
+    input  wire                      gpu_mem_wdata_ready,
+    output wire [15:0]               gpu_mem_wdata_data,
+    output wire [1:0]                gpu_mem_wdata_we,
+    input  wire                      gpu_mem_rdata_valid,
+    output wire                      gpu_mem_rdata_ready,
+    input  wire [15:0]               gpu_mem_rdata_data,
     // SPI flash (SDRAM_BYTES > 0), SPI mode 0; idle: cs_n high, sck low
     output wire       flash_cs_n,
     output wire       flash_sck,
@@ -338,13 +355,11 @@ module soc_top #(
         .bus_rvalid (gpu_bus_rvalid)
     );
 
-    wire [3:0]  gpu_mem_idle;
-    wire [23:0] gpu_mem_idle_addr;
-    wire [15:0] gpu_mem_idle_data;
-    wire [1:0]  gpu_mem_idle_we;
     gpu_top #(
         `GPU_BUILD_PARAMS_PASS,
-        .PIX_DIV      (PIX_DIV)
+        .PIX_DIV      (PIX_DIV),
+        .MEM_AW       (GPU_MEM_AW),
+        .FRAME_BASE   (soc_pkg::SOC_SDRAM_GPU_FRAMES_OFFSET / 2)
     ) u_gpu (
         .clk         (clk),
         .rst         (rst),
@@ -364,22 +379,21 @@ module soc_top #(
         .vga_r       (vga_r),
         .vga_g       (vga_g),
         .vga_b       (vga_b),
-        // the frames stay in the GPU's block RAM here (FRAME_DRAM 0): its memory port is idle
-        .mem_cmd_valid   (gpu_mem_idle[0]),
-        .mem_cmd_ready   (1'b0),
-        .mem_cmd_we      (gpu_mem_idle[1]),
-        .mem_cmd_addr    (gpu_mem_idle_addr),
-        .mem_wdata_valid (gpu_mem_idle[2]),
-        .mem_wdata_ready (1'b0),
-        .mem_wdata_data  (gpu_mem_idle_data),
-        .mem_wdata_we    (gpu_mem_idle_we),
-        .mem_rdata_valid (1'b0),
-        .mem_rdata_ready (gpu_mem_idle[3]),
-        .mem_rdata_data  (16'd0)
+        .mem_cmd_valid   (gpu_mem_cmd_valid),
+        .mem_cmd_ready   (gpu_mem_cmd_ready),
+        .mem_cmd_we      (gpu_mem_cmd_we),
+        .mem_cmd_addr    (gpu_mem_cmd_addr),
+        .mem_wdata_valid (gpu_mem_wdata_valid),
+        .mem_wdata_ready (gpu_mem_wdata_ready),
+        .mem_wdata_data  (gpu_mem_wdata_data),
+        .mem_wdata_we    (gpu_mem_wdata_we),
+        .mem_rdata_valid (gpu_mem_rdata_valid),
+        .mem_rdata_ready (gpu_mem_rdata_ready),
+        .mem_rdata_data  (gpu_mem_rdata_data)
     );
-    wire unused_gpu_mem = &{1'b0, gpu_mem_idle, gpu_mem_idle_addr, gpu_mem_idle_data, gpu_mem_idle_we};
-    generate if (FRAME_DRAM != 0) begin : g_no_frame_dram
-        $error("soc_top: the GPU's frames in SDRAM (FRAME_DRAM) are not wired to the SDRAM yet");
+    generate if (FRAME_DRAM != 0 && (SDRAM_BYTES == 0
+                 || soc_pkg::SOC_SDRAM_GPU_FRAMES_OFFSET + 2 * FB_WIDTH * FB_HEIGHT > SDRAM_BYTES)) begin : g_bad_frames
+        $error("soc_top: the GPU's frames in SDRAM (FRAME_DRAM) need an SDRAM that holds them (SDRAM_BYTES)");
     end endgenerate
 
     soc_uart #(

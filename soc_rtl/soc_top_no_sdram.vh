@@ -1,6 +1,6 @@
 // soc_top_no_sdram.vh — soc_top in a system without SDRAM (SDRAM_BYTES 0, both SDRAM regions and
 // the flash answer ERR): SOC_TOP_NO_SDRAM_WIRES declares what its SDRAM and flash ports' outputs
-// drive (unused), and SOC_TOP_NO_SDRAM_PORTS connects them and ties the answers off, in soc_top's
+// drive (unused) — the GPU's frame memory port too — and SOC_TOP_NO_SDRAM_PORTS connects them and ties the answers off, in soc_top's
 // port list — so each board says "no SDRAM" in two lines. Included from the repository root, as contract/ headers are.
 `ifndef SOC_TOP_NO_SDRAM_VH
 `define SOC_TOP_NO_SDRAM_VH
@@ -12,8 +12,13 @@
     wire [31:0] sdram_idle_dat, sdram_idle_ctrl_dat; \
     wire [3:0]  sdram_idle_sel, sdram_idle_ctrl_sel; \
     wire [2:0]  sdram_idle_cti; \
+    wire [3:0]  gpu_mem_idle; \
+    wire [$clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 2)-1:0] gpu_mem_idle_addr; \
+    wire [15:0] gpu_mem_idle_data; \
+    wire [1:0]  gpu_mem_idle_we; \
     wire unused_sdram = &{1'b0, sdram_idle, sdram_idle_adr, sdram_idle_ctrl_adr, sdram_idle_dat, \
-                          sdram_idle_ctrl_dat, sdram_idle_sel, sdram_idle_ctrl_sel, sdram_idle_cti};
+                          sdram_idle_ctrl_dat, sdram_idle_sel, sdram_idle_ctrl_sel, sdram_idle_cti, \
+                          gpu_mem_idle, gpu_mem_idle_addr, gpu_mem_idle_data, gpu_mem_idle_we};
 
 `define SOC_TOP_NO_SDRAM_PORTS \
     .sdram_cyc        (sdram_idle[0]), \
@@ -38,6 +43,17 @@
     .flash_cs_n       (sdram_idle[6]), \
     .flash_sck        (sdram_idle[7]), \
     .flash_mosi       (sdram_idle[8]), \
-    .flash_miso       (1'b0)
+    .flash_miso       (1'b0), \
+    .gpu_mem_cmd_valid   (gpu_mem_idle[0]), \
+    .gpu_mem_cmd_ready   (1'b0), \
+    .gpu_mem_cmd_we      (gpu_mem_idle[1]), \
+    .gpu_mem_cmd_addr    (gpu_mem_idle_addr), \
+    .gpu_mem_wdata_valid (gpu_mem_idle[2]), \
+    .gpu_mem_wdata_ready (1'b0), \
+    .gpu_mem_wdata_data  (gpu_mem_idle_data), \
+    .gpu_mem_wdata_we    (gpu_mem_idle_we), \
+    .gpu_mem_rdata_valid (1'b0), \
+    .gpu_mem_rdata_ready (gpu_mem_idle[3]), \
+    .gpu_mem_rdata_data  (16'd0)
 
 `endif

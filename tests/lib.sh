@@ -86,15 +86,24 @@ count() {
     grep -cE -- "$1" "$2" || true
 }
 
-# wait_for_pty LINK WHAT LOG: wait up to 20 s for a simulator's --uart-pty link, or fail naming
-# WHAT and the tail of its LOG.
+# wait_for_pty LINK WHAT LOG [READY]: wait up to 20 s for a simulator's --uart-pty link, or fail
+# naming WHAT and the tail of its LOG; with READY (a regex), then up to 60 s more for a line of LOG
+# matching it: the firmware's UART is set up. Bytes sent before that are lost as on a board before
+# its firmware runs (the UART's set-up clears its FIFOs), and a client would wait out its resend
+# timeout for them.
 wait_for_pty() {
     local _
     for _ in $(seq 100); do
-        [ -e "$1" ] && return 0
+        [ -e "$1" ] && break
         sleep 0.2
     done
-    fail "$2 made no pty ($(tail -n 3 "$3"))"
+    [ -e "$1" ] || fail "$2 made no pty ($(tail -n 3 "$3"))"
+    [ -n "${4:-}" ] || return 0
+    for _ in $(seq 300); do
+        grep -qE -- "$4" "$3" && return 0
+        sleep 0.2
+    done
+    fail "$2 printed no line matching '$4' ($(tail -n 3 "$3"))"
 }
 
 expect_line() {

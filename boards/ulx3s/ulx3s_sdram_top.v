@@ -17,6 +17,7 @@
 // Only the primitives live here; the logic is in ulx3s_system and soc_sdram. The GPU's build
 // parameters (contract/gpu_build_params.vh) are passed through, as in ulx3s_top.
 `include "contract/gpu_build_params.vh"
+`include "soc_rtl/soc_gpu_mem.vh"
 `default_nettype none
 
 module ulx3s_sdram_top #(
@@ -82,6 +83,7 @@ module ulx3s_sdram_top #(
     wire [31:0]              c_dat_w, c_dat_r;
     wire [3:0]               c_sel;
     wire                     flash_sck;
+    `SOC_GPU_MEM_WIRES   // the GPU's frames (FRAME_DRAM): soc_top to LiteDRAM (soc_rtl/soc_gpu_mem.vh)
     ulx3s_system #(
         .SYS_HZ       (SYS_MHZ * 1000000),
         .RAM_BYTES    (RAM_BYTES),
@@ -123,6 +125,7 @@ module ulx3s_sdram_top #(
         .flash_sck        (flash_sck),
         .flash_mosi       (flash_mosi),
         .flash_miso       (flash_miso),
+        `SOC_GPU_MEM_PORTS,
         .exit_valid       (exit_valid),
         .exit_code        (exit_code)
     );
@@ -155,6 +158,7 @@ module ulx3s_sdram_top #(
         .sdram_ctrl_dat_r (c_dat_r),
         .sdram_ctrl_ack   (c_ack),
         .sdram_ctrl_err   (c_err),
+        `SOC_GPU_MEM_PORTS,
         .pin_a            (sdram_a),
         .pin_ba           (sdram_ba),
         .pin_cs_n         (sdram_csn),

@@ -1,7 +1,7 @@
 // ulx3s_system: everything of the ULX3S build between the PLL and the pins — the SoC, its DVI
 // transmitter, the resets of every clock domain and the status LEDs — without a vendor primitive,
 // so that Verilator runs it as it is (cosim/soc/socsim.mk's board build drives its three clocks).
-// With SDRAM_BYTES > 0 (ulx3s_sdram_top) soc_top's SDRAM and flash ports pass through to the top,
+// With SDRAM_BYTES > 0 (ulx3s_sdram_top) soc_top's SDRAM, GPU frame memory and flash ports pass through to the top,
 // whose LiteDRAM core (soc_rtl/litedram/soc_sdram) and I/O primitives live there; sdram_rst is its
 // reset. With SDRAM_BYTES = 0 (ulx3s_top, socsim's board build) those answers are tied to 0 here,
 // whatever drives the ports (soc_top asks for 0; a Verilated top leaves its inputs undriven).
@@ -28,7 +28,8 @@ module ulx3s_system #(
     parameter RAM_INIT = "",                                       // the firmware image (soc_top)
     `GPU_BUILD_PARAMS,                                             // the GPU's (soc_top)
     localparam integer SDRAM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),      // soc_top's
-    localparam integer SDRAM_CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4)
+    localparam integer SDRAM_CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4),
+    localparam integer GPU_MEM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 2)     // soc_top's
 ) (
     // clocks (ulx3s_pll)
     input  wire       clk_sys,
@@ -69,6 +70,18 @@ module ulx3s_system #(
     output wire                     flash_sck,
     output wire                     flash_mosi,
     input  wire                     flash_miso,
+    // the GPU's frames in the SDRAM (FRAME_DRAM): soc_top's gpu_mem_* port
+    output wire                     gpu_mem_cmd_valid,
+    input  wire                     gpu_mem_cmd_ready,
+    output wire                     gpu_mem_cmd_we,
+    output wire [GPU_MEM_AW-1:0]    gpu_mem_cmd_addr,
+    output wire                     gpu_mem_wdata_valid,
+    input  wire                     gpu_mem_wdata_ready,
+    output wire [15:0]              gpu_mem_wdata_data,
+    output wire [1:0]               gpu_mem_wdata_we,
+    input  wire                     gpu_mem_rdata_valid,
+    output wire                     gpu_mem_rdata_ready,
+    input  wire [15:0]              gpu_mem_rdata_data,
     // for a simulation: the firmware's SYS EXIT
     output wire       exit_valid,
     output wire [7:0] exit_code
@@ -84,7 +97,13 @@ module ulx3s_system #(
     // soc_top's answers from the SDRAM and the flash: the ports' with SDRAM, else 0.
     wire [31:0] soc_sdram_dat_r, soc_sdram_ctrl_dat_r;
     wire        soc_sdram_ack, soc_sdram_err, soc_sdram_ctrl_ack, soc_sdram_ctrl_err, soc_flash_miso;
+    wire        soc_gpu_mem_cmd_ready, soc_gpu_mem_wdata_ready, soc_gpu_mem_rdata_valid;
+    wire [15:0] soc_gpu_mem_rdata_data;
     generate if (SDRAM_BYTES != 0) begin : g_sdram
+        assign soc_gpu_mem_cmd_ready   = gpu_mem_cmd_ready;
+        assign soc_gpu_mem_wdata_ready = gpu_mem_wdata_ready;
+        assign soc_gpu_mem_rdata_valid = gpu_mem_rdata_valid;
+        assign soc_gpu_mem_rdata_data  = gpu_mem_rdata_data;
         assign soc_sdram_dat_r      = sdram_dat_r;
         assign soc_sdram_ack        = sdram_ack;
         assign soc_sdram_err        = sdram_err;
@@ -93,6 +112,10 @@ module ulx3s_system #(
         assign soc_sdram_ctrl_err   = sdram_ctrl_err;
         assign soc_flash_miso       = flash_miso;
     end else begin : g_no_sdram
+        assign soc_gpu_mem_cmd_ready   = 1'b0;
+        assign soc_gpu_mem_wdata_ready = 1'b0;
+        assign soc_gpu_mem_rdata_valid = 1'b0;
+        assign soc_gpu_mem_rdata_data  = 16'd0;
         assign soc_sdram_dat_r      = 32'd0;
         assign soc_sdram_ack        = 1'b0;
         assign soc_sdram_err        = 1'b0;
@@ -101,7 +124,8 @@ module ulx3s_system #(
         assign soc_sdram_ctrl_err   = 1'b0;
         assign soc_flash_miso       = 1'b0;
         wire unused_sdram_in = &{1'b0, sdram_dat_r, sdram_ack, sdram_err, sdram_ctrl_dat_r, sdram_ctrl_ack,
-                                 sdram_ctrl_err, flash_miso};
+                                 sdram_ctrl_err, flash_miso, gpu_mem_cmd_ready, gpu_mem_wdata_ready,
+                                 gpu_mem_rdata_valid, gpu_mem_rdata_data};
     end endgenerate
 
     soc_top #(
@@ -147,6 +171,17 @@ module ulx3s_system #(
         .flash_sck         (flash_sck),
         .flash_mosi        (flash_mosi),
         .flash_miso        (soc_flash_miso),
+        .gpu_mem_cmd_valid   (gpu_mem_cmd_valid),
+        .gpu_mem_cmd_ready   (soc_gpu_mem_cmd_ready),
+        .gpu_mem_cmd_we      (gpu_mem_cmd_we),
+        .gpu_mem_cmd_addr    (gpu_mem_cmd_addr),
+        .gpu_mem_wdata_valid (gpu_mem_wdata_valid),
+        .gpu_mem_wdata_ready (soc_gpu_mem_wdata_ready),
+        .gpu_mem_wdata_data  (gpu_mem_wdata_data),
+        .gpu_mem_wdata_we    (gpu_mem_wdata_we),
+        .gpu_mem_rdata_valid (soc_gpu_mem_rdata_valid),
+        .gpu_mem_rdata_ready (gpu_mem_rdata_ready),
+        .gpu_mem_rdata_data  (soc_gpu_mem_rdata_data),
         .leds              (soc_leds),
         .gpu_frame_swapped (gpu_frame_swapped),
         .gpu_error         (gpu_error),

@@ -47,7 +47,7 @@ ifeq ($(SOC_MEM),sdram)
 FW_MODEL_MAX_VERTS ?= $(call fw_sdram_model_cap,verts)
 FW_MODEL_MAX_FACES ?= $(call fw_sdram_model_cap,faces)
 FW_BSP_LDFLAGS += -Wl,--defsym=__ram=$(SOC_SDRAM_BASE)
-FW_POSTLINK   = $(or $(PYTHON),python3) bsp/soc/postlink.py --image --ram-bytes $(SOC_SDRAM_BYTES) \
+FW_POSTLINK   = $(or $(PYTHON),python3) bsp/soc/postlink.py --image --ram-bytes $(SOC_SDRAM_CPU_BYTES) \
                 --size $(patsubst %gcc,%size,$(RV_CC)) --nm $(patsubst %gcc,%nm,$(RV_CC))
 endif
 

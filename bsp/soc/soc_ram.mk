@@ -21,6 +21,8 @@ $(error SOC_MEM=$(SOC_MEM): ram (the on-chip RAM) or sdram (the SDRAM, booted fr
 endif
 SOC_SDRAM_BASE      := $(call soc_map_value,SOC_SDRAM_BASE)
 SOC_SDRAM_BYTES     := $(call soc_map_value,SOC_SDRAM_DEFAULT_BYTES)
+# The firmware's share of it: below the GPU's frames (contract/soc_map.toml gpu_frames_offset).
+SOC_SDRAM_CPU_BYTES := $(call soc_map_value,SOC_SDRAM_GPU_FRAMES_OFFSET)
 SOC_RAM_BOOT_KIB    := $(call soc_map_kib,SOC_RAM_BOOT_BYTES)
 ifeq ($(SOC_MEM),sdram)
 SOC_RAM_KIB         := $(SOC_RAM_BOOT_KIB)

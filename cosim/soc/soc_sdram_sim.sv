@@ -9,6 +9,7 @@
 // and which side the controller is on (ctrl_dq_oe: the tristate of DQ bit 0, all 16 share one
 // registered enable in LiteDRAM's GENSDRPHY) for the chip model.
 `include "contract/gpu_build_params.vh"
+`include "soc_rtl/soc_gpu_mem.vh"
 `default_nettype none
 
 module soc_sdram_sim #(
@@ -69,6 +70,7 @@ module soc_sdram_sim #(
     wire [CTRL_AW-1:0] c_adr;
     wire [31:0]        c_dat_w, c_dat_r;
     wire [3:0]         c_sel;
+    `SOC_GPU_MEM_WIRES   // the GPU's frames (FRAME_DRAM): soc_top to LiteDRAM (soc_rtl/soc_gpu_mem.vh)
 
     soc_top #(
         .RAM_BYTES   (RAM_BYTES),
@@ -86,6 +88,7 @@ module soc_sdram_sim #(
         .sdram_ctrl_dat_w (c_dat_w), .sdram_ctrl_sel (c_sel), .sdram_ctrl_dat_r (c_dat_r),
         .sdram_ctrl_ack (c_ack), .sdram_ctrl_err (c_err),
         .flash_cs_n (flash_cs_n), .flash_sck (flash_sck), .flash_mosi (flash_mosi), .flash_miso (flash_miso),
+        `SOC_GPU_MEM_PORTS,
         .leds (leds), .gpu_frame_swapped (gpu_frame_swapped), .gpu_error (gpu_error),
         .exit_valid (exit_valid), .exit_code (exit_code)
     );
@@ -107,6 +110,7 @@ module soc_sdram_sim #(
         .sdram_ctrl_cyc (c_cyc), .sdram_ctrl_stb (c_stb), .sdram_ctrl_we (c_we), .sdram_ctrl_adr (c_adr),
         .sdram_ctrl_dat_w (c_dat_w), .sdram_ctrl_sel (c_sel), .sdram_ctrl_dat_r (c_dat_r),
         .sdram_ctrl_ack (c_ack), .sdram_ctrl_err (c_err),
+        `SOC_GPU_MEM_PORTS,
         .pin_a (sdram_a), .pin_ba (sdram_ba), .pin_cs_n (sdram_cs_n), .pin_ras_n (sdram_ras_n),
         .pin_cas_n (sdram_cas_n), .pin_we_n (sdram_we_n), .pin_cke (sdram_cke), .pin_dqm (sdram_dqm),
         .pin_dq (dq)

@@ -236,6 +236,15 @@ public:
     void on_gpu_write(uint32_t offset, uint32_t value);
     void on_gpu_read(uint32_t offset, uint32_t value);
     void on_gpu_swap(uint32_t frame_count);
+    void on_gpu_underflows(uint32_t count)
+    {
+        if (scanout_underflows_ == 0 || count % 100 == 0) {  // the first, then every hundredth
+            std::printf("socsim: scan-out underflow %u at cycle %llu (a display line shown in the underflow colour)\n",
+                        count, static_cast<unsigned long long>(cycles_));
+        }
+        scanout_underflows_ = count;
+    }
+    void on_row_fetch(uint32_t clocks) { worst_row_fetch_ = clocks; }
     void on_bus_cycle(bool ibus, uint32_t word_addr, bool write);
     void on_uart_data_read();
 
@@ -324,6 +333,8 @@ private:
     std::vector<KeyWatch> watches_;
 
     uint32_t doorbells_ = 0, resets_ = 0, keys_late_ = 0;
+    uint32_t scanout_underflows_ = 0;  // the GPU's SCANOUT_UNDERFLOWS (frames in the SDRAM)
+    uint32_t worst_row_fetch_ = 0;     // the scan-out's slowest row fetch, clocks (its deadline: a line)
     uint32_t last_tag_ = 0;       // the last DOORBELL value
     bool batch_done_ = true;      // the firmware has read DONE_SEQ == last_tag_ since (or no batch yet)
     uint64_t regs_checked_ = 0;   // register reads compared with the model
@@ -675,6 +686,7 @@ void SocRun::summary_keys(FILE *f) const
     std::fprintf(f, "cycles=%llu\ninstructions=%llu\nkeys_late=%u\n", static_cast<unsigned long long>(cycles_),
                  static_cast<unsigned long long>(instret()), keys_late_);
     std::fprintf(f, "registers_model_checked=%llu\n", static_cast<unsigned long long>(regs_checked_));
+    std::fprintf(f, "scanout_underflows=%u\nscanout_worst_row_clocks=%u\n", scanout_underflows_, worst_row_fetch_);
     std::fprintf(f, "icache_refills=%llu\ndcache_refills=%llu\nuart_framing_errors=%u\n",
                  static_cast<unsigned long long>(icache_refills_), static_cast<unsigned long long>(dcache_refills_),
                  rx_.framing_errors());
@@ -882,6 +894,20 @@ extern "C" void socsim_gpu_swap(unsigned frame_count)
 {
     if (g_run != nullptr) {
         g_run->on_gpu_swap(frame_count);
+    }
+}
+
+extern "C" void socsim_gpu_underflows(unsigned count)
+{
+    if (g_run != nullptr) {
+        g_run->on_gpu_underflows(count);
+    }
+}
+
+extern "C" void socsim_row_fetch(unsigned clocks)
+{
+    if (g_run != nullptr) {
+        g_run->on_row_fetch(clocks);
     }
 }
 

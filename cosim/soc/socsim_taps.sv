@@ -7,7 +7,10 @@
 //   socsim_gpu_tap (in gpu_core): every bus write the GPU takes (byte offset, data) — the golden
 //                                 model is fed the same writes —, every read's answer (compared
 //                                 with the model's registers), and each change of FRAME_COUNT (a
-//                                 buffer swap, after which the next VGA frame is captured).
+//                                 buffer swap, after which the next VGA frame is captured), and each
+//                                 change of its scan-out underflow count (SCANOUT_UNDERFLOWS: a GPU
+//                                 whose frames are in the SDRAM).
+//   socsim_frame_tap (in gpu_frame_dram): the slowest row fetch of the scan-out (below).
 //   socsim_cpu_tap (in VexRiscv): the start of every Wishbone cycle of either bus (a fetch or load
 //                                 of a cached address starts a cache-line refill: the misses), every
 //                                 acknowledged load of UART DATA (the firmware reading keys), and
@@ -22,13 +25,16 @@ module socsim_gpu_tap (
     input wire [31:0] bus_wdata,
     input wire [31:0] bus_rdata,    // valid with bus_rvalid, the cycle after the read request
     input wire        bus_rvalid,
-    input wire [31:0] frame_count   // gpu_core's FRAME_COUNT
+    input wire [31:0] frame_count,  // gpu_core's FRAME_COUNT
+    input wire [31:0] scanout_underflows  // gpu_core's SCANOUT_UNDERFLOWS input (0 but with FRAME_DRAM)
 );
     import "DPI-C" function void socsim_gpu_write(input int unsigned offset, input int unsigned value);
     import "DPI-C" function void socsim_gpu_read(input int unsigned offset, input int unsigned value);
     import "DPI-C" function void socsim_gpu_swap(input int unsigned frame_count);
+    import "DPI-C" function void socsim_gpu_underflows(input int unsigned count);
 
     reg [31:0] frame_count_q = 32'd0;
+    reg [31:0] underflows_q = 32'd0;
     reg [16:2] read_addr_q = 15'd0;   // the address of the read whose data comes next
     always @(posedge clk) begin
         if (bus_valid && bus_write) begin
@@ -44,6 +50,30 @@ module socsim_gpu_tap (
             socsim_gpu_swap(frame_count);
         end
         frame_count_q <= frame_count;
+        if (scanout_underflows != underflows_q) begin
+            socsim_gpu_underflows(scanout_underflows);
+        end
+        underflows_q <= scanout_underflows;
+    end
+endmodule
+
+// socsim_frame_tap (in gpu_frame_dram, a GPU whose frames are in the SDRAM): the clocks each row
+// fetch of the scan-out took, from its start to its last word, once the display is in step (after
+// the first vertical blank); each new worst is reported. Its deadline is a display line.
+module socsim_frame_tap (
+    input wire clk,
+    input wire start,        // a row's fetch starts
+    input wire last_answer,  // its last word arrives
+    input wire synced_q      // the display has passed its first vertical blank
+);
+    import "DPI-C" function void socsim_row_fetch(input int unsigned clocks);
+    reg [31:0] clocks_q = 32'd0, worst_q = 32'd0;
+    always @(posedge clk) begin
+        clocks_q <= start ? 32'd1 : clocks_q + 32'd1;
+        if (last_answer && synced_q && clocks_q > worst_q) begin
+            worst_q <= clocks_q;
+            socsim_row_fetch(clocks_q);
+        end
     end
 endmodule
 
@@ -92,7 +122,12 @@ endmodule
 
 bind gpu_core socsim_gpu_tap u_socsim_gpu_tap (
     .clk(clk), .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr),
-    .bus_wdata(bus_wdata), .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid), .frame_count(frame_count)
+    .bus_wdata(bus_wdata), .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid), .frame_count(frame_count),
+    .scanout_underflows(scanout_underflows)
+);
+
+bind gpu_frame_dram socsim_frame_tap u_socsim_frame_tap (
+    .clk(clk), .start(start), .last_answer(last_answer), .synced_q(synced_q)
 );
 
 bind VexRiscv socsim_cpu_tap u_socsim_cpu_tap (

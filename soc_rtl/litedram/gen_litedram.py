@@ -142,6 +142,12 @@ def main():
         sys.exit(f"gen_litedram: {module.__name__} x{config['sdram_module_nb'] * 8} holds {sdram_bytes} bytes, "
                  f"the build expects {args.expect_bytes}")
 
+    # Banks as quarters of the chip (LiteDRAM's bank_byte_alignment; by default a bank every 1 KiB
+    # row, ROW_BANK_COL): the CPU's code and data at the SDRAM's start and the GPU's frames in its
+    # last MiB (contract/soc_map.toml gpu_frames_offset) are then in banks of their own, so the
+    # scan-out's rows never wait for a precharge and an activate each time the CPU's cache lines
+    # take a turn in the same bank (docs/sdram.md, "Two ports").
+    config["bank_byte_alignment"] = sdram_bytes // module.nbanks
     platform = LatticePlatform(config["device"], io=[], toolchain="trellis")
     core = LiteDRAMCore(platform, config)
     with tempfile.TemporaryDirectory() as tmp:

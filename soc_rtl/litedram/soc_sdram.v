@@ -13,6 +13,12 @@
 //                 error the CPU's SYS record shows), never left hanging.
 //   sdram_ctrl_*  soc_top's SDRAM_CTRL port: LiteDRAM's control registers (word addresses of its
 //                 csr.csv), always answered.
+//   gpu_mem_*     soc_top's GPU frame memory port (a GPU built with FRAME_DRAM; idle otherwise):
+//                 LiteDRAM's second native user port ("gpu" of ulx3s_sdram.yml), 16-bit words from
+//                 the SDRAM's base, as it is: the GPU speaks the native protocol itself
+//                 (gpu_frame_dram). LiteDRAM's crossbar serves the two ports round robin per bank;
+//                 a port waits for init_done like the CPU's (the GPU's frames are written only once
+//                 the firmware, which runs after the power-up sequence, draws).
 //   pins          the chip's, as LiteDRAM's GENSDRPHY drives them (commands and data registered in
 //                 the I/O cells, DQ through TRELLIS_IO buffers); the chip's clock is the system's
 //                 shifted (docs/sdram.md): not made here.
@@ -23,7 +29,8 @@ module soc_sdram #(
     parameter integer SDRAM_BYTES = soc_pkg::SOC_SDRAM_DEFAULT_BYTES,  // the chip's size
     localparam integer AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),       // soc_top's word address
     localparam integer CORE_AW = $clog2(SDRAM_BYTES / 4),                     // the core's
-    localparam integer CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4)
+    localparam integer CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4),
+    localparam integer GPU_MEM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 2)   // soc_top's, 16-bit words
 ) (
     input  wire               clk,
     input  wire               rst,              // the system's reset (button, PLL unlock): LiteDRAM
@@ -50,6 +57,18 @@ module soc_sdram #(
     output wire [31:0]        sdram_ctrl_dat_r,
     output wire               sdram_ctrl_ack,
     output wire               sdram_ctrl_err,
+    // ---- soc_top's GPU frame memory port (LiteDRAM's native protocol, 16-bit words)
+    input  wire               gpu_mem_cmd_valid,
+    output wire               gpu_mem_cmd_ready,
+    input  wire               gpu_mem_cmd_we,
+    input  wire [GPU_MEM_AW-1:0] gpu_mem_cmd_addr,
+    input  wire               gpu_mem_wdata_valid,
+    output wire               gpu_mem_wdata_ready,
+    input  wire [15:0]        gpu_mem_wdata_data,
+    input  wire [1:0]         gpu_mem_wdata_we,
+    output wire               gpu_mem_rdata_valid,
+    input  wire               gpu_mem_rdata_ready,
+    output wire [15:0]        gpu_mem_rdata_data,
     // ---- the chip's pins
     output wire [12:0]        pin_a,
     output wire [1:0]         pin_ba,
@@ -106,7 +125,8 @@ module soc_sdram #(
         .native_rdata_data  (rdata_data)
     );
 
-    wire unused_adr = &{1'b0, sdram_adr[AW-1:CORE_AW]};   // above SDRAM_BYTES: the decoder refuses it
+    wire unused_adr = &{1'b0, sdram_adr[AW-1:CORE_AW],     // above SDRAM_BYTES: the decoder refuses it
+                        gpu_mem_cmd_addr[GPU_MEM_AW-1:NAW]};  // soc_top places the frames below it
     wire unused_clk, unused_rst, unused_init_error;
 
     // user_clk, user_rst: the core's clock and reset handed back; init_error: LiteDRAM's, set only by
@@ -138,6 +158,17 @@ module soc_sdram #(
         .user_port_cpu_rdata_valid (rdata_valid),
         .user_port_cpu_rdata_ready (rdata_ready),
         .user_port_cpu_rdata_data  (rdata_data),
+        .user_port_gpu_cmd_valid   (gpu_mem_cmd_valid),
+        .user_port_gpu_cmd_ready   (gpu_mem_cmd_ready),
+        .user_port_gpu_cmd_we      (gpu_mem_cmd_we),
+        .user_port_gpu_cmd_addr    (gpu_mem_cmd_addr[NAW-1:0]),
+        .user_port_gpu_wdata_valid (gpu_mem_wdata_valid),
+        .user_port_gpu_wdata_ready (gpu_mem_wdata_ready),
+        .user_port_gpu_wdata_data  (gpu_mem_wdata_data),
+        .user_port_gpu_wdata_we    (gpu_mem_wdata_we),
+        .user_port_gpu_rdata_valid (gpu_mem_rdata_valid),
+        .user_port_gpu_rdata_ready (gpu_mem_rdata_ready),
+        .user_port_gpu_rdata_data  (gpu_mem_rdata_data),
         .wb_ctrl_cyc          (sdram_ctrl_cyc),
         .wb_ctrl_stb          (sdram_ctrl_stb),
         .wb_ctrl_we           (sdram_ctrl_we),

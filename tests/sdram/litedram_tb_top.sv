@@ -1,13 +1,15 @@
 // litedram_tb_top: the SoC's SDRAM block (soc_rtl/litedram/soc_sdram.v: LiteDRAM's generated
 // controller, behind sdram_wb_burst on soc_top's SDRAM port and its control registers on the other)
 // alone, for tests/sdram/litedram_tb.cpp, which plays a Wishbone master on those ports and the chip
-// (cosim/sdram/sdram_chip.h) on the pins.
+// (cosim/sdram/sdram_chip.h) on the pins. The GPU's frame memory port (gpu_mem_*) is a port of this
+// top so that the bench can drive it; it leaves it idle (no command), as a GPU without FRAME_DRAM.
 //
 // The pins' names are those of socsim's system (cosim/soc/soc_sdram_sim.sv), so both harnesses read
 // them with cosim/sdram/sdram_pins.h. DQ is split the same way: the controller drives it through
 // its TRELLIS_IO buffers (cosim/sdram/ecp5/TRELLIS_IO.v), the chip through chip_dq/chip_dq_oe;
 // ctrl_dq_oe is the tristate of DQ bit 0 (all 16 share one registered enable in GENSDRPHY).
 `default_nettype none
+`include "soc_rtl/soc_gpu_mem.vh"
 
 module litedram_tb_top #(
     localparam integer AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),
@@ -50,7 +52,19 @@ module litedram_tb_top #(
     input  wire               wb_stb,
     input  wire               wb_we,
     output wire               wb_ack,
-    output wire               wb_err
+    output wire               wb_err,
+    // ---- the GPU's frame memory port (LiteDRAM's native protocol, 16-bit words from SOC_SDRAM_BASE)
+    input  wire               gpu_mem_cmd_valid,
+    output wire               gpu_mem_cmd_ready,
+    input  wire               gpu_mem_cmd_we,
+    input  wire [$clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 2)-1:0] gpu_mem_cmd_addr,
+    input  wire               gpu_mem_wdata_valid,
+    output wire               gpu_mem_wdata_ready,
+    input  wire [15:0]        gpu_mem_wdata_data,
+    input  wire [1:0]         gpu_mem_wdata_we,
+    output wire               gpu_mem_rdata_valid,
+    input  wire               gpu_mem_rdata_ready,
+    output wire [15:0]        gpu_mem_rdata_data
 );
     wire [15:0] dq;
     assign dq = chip_dq_oe ? chip_dq : 16'bz;
@@ -66,6 +80,7 @@ module litedram_tb_top #(
         .sdram_ctrl_cyc (ctrl_cyc), .sdram_ctrl_stb (ctrl_stb), .sdram_ctrl_we (ctrl_we),
         .sdram_ctrl_adr (ctrl_adr), .sdram_ctrl_dat_w (ctrl_dat_w), .sdram_ctrl_sel (ctrl_sel),
         .sdram_ctrl_dat_r (ctrl_dat_r), .sdram_ctrl_ack (ctrl_ack), .sdram_ctrl_err (ctrl_err),
+        `SOC_GPU_MEM_PORTS,
         .pin_a (sdram_a), .pin_ba (sdram_ba), .pin_cs_n (sdram_cs_n), .pin_ras_n (sdram_ras_n),
         .pin_cas_n (sdram_cas_n), .pin_we_n (sdram_we_n), .pin_cke (sdram_cke), .pin_dqm (sdram_dqm),
         .pin_dq (dq)

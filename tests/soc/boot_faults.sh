@@ -5,7 +5,8 @@
 #   - an erased flash (no image):                       0xE2 "no firmware image"
 #   - a header with one bit flipped:                    0xE3 "image header corrupt"
 #   - a well-formed header whose image does not fit:    0xE3 "image does not fit the SDRAM"
-#   - a chip with address pin A11 stuck low:            0xE1 the memory test names address bit 23
+#   - a chip with address pin A11 stuck low:            0xE1 the memory test names address bit 21
+#     (row bit 11: rows sit above 9 column bits and the 16-bit word's byte bit, banks above the rows)
 #   - the payload with one bit flipped:                 0xE4 "image payload corrupt", after the copy
 # and the good image boots (the same run as suite soc-sdram-scenes, so not repeated here).
 #   usage: boot_faults.sh SOCSIM_SDRAM   (the suite passes {socsim-sdram-<RAM>k})
@@ -54,7 +55,7 @@ check_case erased 0xE2 '^boot: FAILED: no firmware image \(wrong magic\) at flas
 check_case header-bit 0xE3 '^boot: FAILED: image header corrupt' --fw "$elf" --flash "$work/header-bit.img"
 check_case too-big 0xE3 '^boot: FAILED: image does not fit the SDRAM .* bytes 33554436' --fw "$elf" --flash "$work/too-big.img"
 check_case a11-stuck 0xE1 '^boot: FAILED: the SDRAM does not work' --fw "$elf" --sdram-fault-a 11
-expect_line '^boot: memtest: address bus FAILED .*address bit 23' "$work/a11-stuck.uart"
+expect_line '^boot: memtest: address bus FAILED .*address bit 21' "$work/a11-stuck.uart"
 check_case payload-bit 0xE4 '^boot: FAILED: image payload corrupt \(CRC mismatch after the copy\)' --fw "$elf" --flash "$work/payload-bit.img"
 
 # socsim's own setup failures end with its message and status 1 and a summary naming them (a run
@@ -66,4 +67,4 @@ for bad in "--flash $work/missing.img" "--frames /dev/null/frames"; do
     expect_status 1 "socsim $bad (log: $work/setup.out)"
     [ "$(summary error "$work/setup.summary")" = setup ] || fail "socsim $bad: the summary's error is not setup"
 done
-pass "soc-boot-faults: an erased flash, a corrupt header, an image too big for the SDRAM, A11 stuck low (address bit 23) and a corrupt payload each stop the boot with its message, LEDs and exit code, no frame drawn; socsim's setup errors (no flash file, no frames directory) end with status 1"
+pass "soc-boot-faults: an erased flash, a corrupt header, an image too big for the SDRAM, A11 stuck low (address bit 21) and a corrupt payload each stop the boot with its message, LEDs and exit code, no frame drawn; socsim's setup errors (no flash file, no frames directory) end with status 1"

@@ -25,8 +25,11 @@ refreshes=$(summary sdram_refreshes "$work/summary.txt")
 [ "$refreshes" -gt 0 ] || fail "no refresh reached the chip"
 
 # The memory test program (bsp/soc/boot/memtest_main.c; socsim's build: one full pass over 16 KiB):
-# the CPU's bandwidth, a full pass; then on a chip whose address pin A2 is stuck low (column A2:
-# byte-address bit 3, inside the 16 KiB) it must name that bit, show 0xE1 and exit with it.
+# the CPU's bandwidth, a full pass; then on a chip whose address pin A2 is stuck low it must name a
+# bit that pin carries, show 0xE1 and exit with it. A2 is column bit 2 (byte-address bit 3) and row
+# bit 2 (byte-address bit 12: rows above 9 column bits and the 16-bit word's byte bit); both are
+# inside the 16 KiB, and which the address test meets first depends on what its write-through data
+# cache still holds of the first line (a hit there hides the column alias; the row alias misses).
 memtest="$BUILD/soc/memtest.elf.hex"
 need_file "$memtest"
 run_to "$work/memtest.txt" 300 "$socsim" --hex "$memtest" --frames "$work/frames-memtest" --uart-log "$work/uart-memtest.txt" \
@@ -42,6 +45,7 @@ run_to "$work/fault.txt" 300 "$socsim" --hex "$memtest" --frames "$work/frames-f
     --summary "$work/summary-fault.txt" --sdram-fault-a 2
 cat "$work/uart-fault.txt"
 [ "$status" -eq 225 ] || fail "with A2 stuck low socsim ended with status $status, not the program's 0xE1 (log: $work/fault.txt)"
-expect_line '^pass 1: memtest: address bus FAILED .*address bit 3 stuck' "$work/uart-fault.txt"
+expect_line '^pass 1: memtest: address bus FAILED .*address bit (3|12) stuck' "$work/uart-fault.txt"
+bit=$(sed -n 's/^pass 1: memtest: address bus FAILED .*address bit \([0-9]*\) stuck.*/\1/p' "$work/uart-fault.txt")
 [ "$(summary leds "$work/summary-fault.txt")" = 0xe1 ] || fail "the LEDs after a failed memory test: $(summary leds "$work/summary-fault.txt"), not 0xe1"
-pass "soc-sdram: $(grep -o 'quick ok.*' "$work/uart.txt" | head -c 80)...; $refreshes refreshes, 0 violations; the memory test program: $(grep -o 'stores.*' "$work/uart-memtest.txt" | head -c 60), $(grep -o 'loads.*' "$work/uart-memtest.txt" | head -c 60), a full pass; A2 stuck low caught as address bit 3"
+pass "soc-sdram: $(grep -o 'quick ok.*' "$work/uart.txt" | head -c 80)...; $refreshes refreshes, 0 violations; the memory test program: $(grep -o 'stores.*' "$work/uart-memtest.txt" | head -c 60), $(grep -o 'loads.*' "$work/uart-memtest.txt" | head -c 60), a full pass; A2 stuck low caught as address bit $bit"

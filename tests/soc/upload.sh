@@ -20,7 +20,7 @@ timeout 300 "$socsim" --fw "$elf" --frames "$work/soc" --uart-log "$work/uart.lo
     --summary "$work/summary" --uart-pty "$work/tty" >"$work/out" 2>&1 &
 sim=$!
 trap 'kill $sim 2>/dev/null' EXIT
-wait_for_pty "$work/tty" socsim "$work/out"
+wait_for_pty "$work/tty" socsim "$work/out" '^scene '
 run_to "$work/tool.out" 240 "$TOOL_PY" tools/mesh_upload.py "$work/tty" "$work/cube.gmsh" --session 21 \
     --chunk 64 --window 4 --timeout 60 --quiet
 cat "$work/tool.out"

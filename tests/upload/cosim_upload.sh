@@ -28,7 +28,7 @@ TOOL_PY=${TOOL_PY:-/usr/bin/python3}
     --summary "$work/summary" --uart-pty "$work/uart.pty" >"$work/cosim.out" 2>&1 &
 cosim=$!
 trap 'kill $cosim 2>/dev/null' EXIT
-wait_for_pty "$work/uart.pty" "the co-simulation" "$work/cosim.out"
+wait_for_pty "$work/uart.pty" "the co-simulation" "$work/cosim.out" '^scene tetra'
 
 run_to "$work/bad.out" 120 "$TOOL_PY" tools/mesh_upload.py "$work/uart.pty" "$work/bad.gmsh" --session 11 \
     --chunk 256 --window 8 --timeout 30 --quiet
