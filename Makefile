@@ -191,11 +191,16 @@ raster: $(GPUSIM)
 	$(Q)$(call say,RUN,gpusim raster $(IN))$(GPUSIM) raster --in $(IN) --out $(OUT)
 
 # ---- GPU performance, counted in simulated cycles, for each span width ----
-bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM) $(FW_ELF)
+# Then the frames in external memory, every scene at 640x480 (bench/frame_dram_measured.sh).
+BENCH_DRAM_SIMS = $(BUILD)/sim-s16-f640-w8/gpusim $(BUILD)/sim-dram-s16-f640-w8/gpusim
+BENCH_SYS_HZ    = $(shell sed -n 's/^\#define SOC_CLK_HZ_DEFAULT *\([0-9]*\)u.*/\1/p' $(SOC_MAP_H))
+bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM) $(FW_ELF) $(BENCH_DRAM_SIMS) $(FW_BENCH_STRIPS_ELFS)
 	@rm -rf $(BUILD)/bench-gpu/scene-lists && mkdir -p $(BUILD)/bench-gpu/scene-lists
 	@$(GPUSIM) cosim --fw $(FW_ELF) --frames $(BUILD)/bench-gpu/scene-frames --no-model-check \
 	  --dump-lists $(BUILD)/bench-gpu/scene-lists >/dev/null
 	@$(PYTHON) bench/bench_gpu.py $(BUILD) $(BUILD)/bench-gpu/scene-lists
+	@rm -rf $(BUILD)/bench-gpu/dram && mkdir -p $(BUILD)/bench-gpu/dram
+	@bash bench/frame_dram_measured.sh $(BENCH_SYS_HZ) $(BENCH_DRAM_SIMS) $(FW_BENCH_DIR) $(BUILD)/bench-gpu/dram $(FW_SCENES)
 
 # ---- the strip renderer's binning workload per scene and strip height (bench/strip_bins.py):
 # each scene's benchmark frames as primitive lists, counted at 640x480 ----

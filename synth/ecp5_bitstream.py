@@ -32,6 +32,7 @@ import crossings  # synth/crossings.py, beside this file
 # Resources of the parts (Lattice's ECP5 family data sheet: LUT4s, EBR blocks of 18 Kbit, 18x18
 # multipliers) for the fit columns.
 PARTS = {
+    "12k": {"LUT4": 12288, "DP16KD": 32, "MULT18X18D": 28},  # the 25F's die, nextpnr --12k
     "25k": {"LUT4": 24288, "DP16KD": 56, "MULT18X18D": 28},
     "45k": {"LUT4": 43848, "DP16KD": 108, "MULT18X18D": 72},
     "85k": {"LUT4": 83640, "DP16KD": 208, "MULT18X18D": 156},

@@ -1,7 +1,7 @@
 # boards/ulx3s/board.mk — the Radiona ULX3S (LFE5U-85F or -45F): bitstream, flash, terminal; included
 # by the top-level Makefile (paths relative to the repository root).
 #
-#   bitstream BOARD=ulx3s [SCENE=… SYS_MHZ=50 SOC_RAM_KIB=… SEED=… ZBUF=1 WMASK=0|1 SOC_MEM=ram|sdram FPGA=85F|45F]
+#   bitstream BOARD=ulx3s [SCENE=… SYS_MHZ=50 SOC_RAM_KIB=… SEED=… ZBUF=1 WMASK=0|1 SOC_MEM=ram|sdram FRAME_DRAM=1 FB=… FPGA=85F|45F|25F|12F]
 #       SOC_MEM=ram (the default): the firmware of SCENE (FRAMES 0: until Q) as the on-chip RAM's
 #       initial contents (ulx3s_top). SOC_MEM=sdram: the same firmware linked for the SDRAM (its boot
 #       image <elf>.img, bsp/soc/mkimage.py), and the on-chip RAM (SOC_RAM_BOOT_KIB) holding the boot
@@ -43,23 +43,32 @@
 # Build options (make variables):
 #   SYS_MHZ   the system clock, a divisor of 750 (boards/ulx3s/ulx3s_pll.v); 50 by default
 #   SOC_MEM   ram (default) or sdram: where the firmware runs (bsp/soc/soc_ram.mk)
-#   FPGA      85F (default), 45F or 25F: the board's part; nextpnr's --85k/--45k/--25k, the same pins
+#   FPGA      85F (default), 45F, 25F or 12F: the board's part; nextpnr's --85k/--45k/--25k/--12k, the same pins
 #             (one LPF); the build's directory says the part when it is not the 85F
 #   SEED      nextpnr's seed (1); ZBUF, WMASK, SPAN_W, SOC_RAM_KIB: the GPU's and the RAM's, as above
+#   FRAME_DRAM 1: the GPU's two frames in the SDRAM too (needs SOC_MEM=sdram; the contract's "Frames
+#             in external memory"): it draws in strips of STRIP_ROWS rows (16) on chip, colour and
+#             depth, at the frame size FB (the Makefile's: 320x240, or 640x480 shown 1:1)
 SYS_MHZ     ?= 50
 SEED        ?= 1
 FPGA        ?= 85F
+FRAME_DRAM  ?= 0
+STRIP_ROWS  ?= 16
 # The framebuffer write mask (ENABLE_WMASK, the anaglyph's planes) costs 4 EBR: on by default, off
-# beside the depth buffer, which leaves too few (with it, the smallest depth-buffer build needs 209
-# of the 85F's 208 EBR; the firmware reads CAPS_WMASK and draws the anaglyph's eyes one over the other).
-WMASK       ?= $(if $(filter 1,$(ZBUF)),0,1)
+# beside a depth buffer of frame size, which leaves too few (with it, the smallest such build needs
+# 209 of the 85F's 208 EBR; the firmware reads CAPS_WMASK and draws the anaglyph's eyes one over the
+# other). With FRAME_DRAM the depth buffer is a strip's and the mask stays.
+WMASK       ?= $(if $(and $(filter 1,$(ZBUF)),$(filter-out 1,$(FRAME_DRAM))),0,1)
 TERM_PORT   ?= /dev/ttyUSB0
 # A scene's manifest decides the mask itself (its GPU flags, tag m0); otherwise WMASK.
 ULX3S_WMASK  = $(if $(filter --param ENABLE_WMASK=%,$(ULX3S_GPU_PARAMS)),,--param ENABLE_WMASK=$(WMASK))
 # The part: nextpnr's device (85F -> 85k), and the directory's suffix when it is not the 85F.
-ULX3S_PARTS  := 25F 45F 85F
+ULX3S_PARTS  := 12F 25F 45F 85F
 ULX3S_DEVICE  = $(FPGA:F=k)
-ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)$(if $(ULX3S_WMASK),$(if $(filter 0,$(WMASK)),-nomask))$(SOC_MEM_SUFFIX)$(if $(filter-out 85F,$(FPGA)),-$(FPGA:F=f))
+# FRAME_DRAM=1: the frame's parameters (FB's, unless a scene's manifest gives them) and the strips'.
+ULX3S_FRAME_PARAMS = $(if $(filter 1,$(FRAME_DRAM)),--param FRAME_DRAM=1 --param STRIP_ROWS=$(STRIP_ROWS) \
+  $(if $(filter --param FB_WIDTH=%,$(ULX3S_GPU_PARAMS)),,$(patsubst -G%,--param %,$(FB_GFLAGS))))
+ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)$(if $(ULX3S_WMASK),$(if $(filter 0,$(WMASK)),-nomask))$(SOC_MEM_SUFFIX)$(if $(filter 1,$(FRAME_DRAM)),-dram-s$(STRIP_ROWS)$(if $(FB_TAG),-$(FB_TAG)))$(if $(filter-out 85F,$(FPGA)),-$(FPGA:F=f))
 ULX3S_DIR    = $(BUILD)/board-ulx3s/$(ULX3S_NAME)
 # The top: ulx3s_top (the firmware in on-chip RAM) or ulx3s_sdram_top (SOC_MEM=sdram); files named by it.
 ULX3S_TOP    = $(if $(SOC_MEM_SUFFIX),ulx3s_sdram_top,ulx3s_top)
@@ -95,7 +104,7 @@ ULX3S_FLOW   = $(PYTHON) synth/ecp5_bitstream.py --top $(ULX3S_TOP) --lpf $(ULX3
   --files $(RTL_FILES) --extra $(SOC_CPU_V_REL) --files $(SOC_FILES) --files boards/ulx3s/files.f \
   --files $(ULX3S_TOP_F) --param SYS_MHZ=$(SYS_MHZ) --param RAM_BYTES=$(SOC_RAM_BYTES) \
   $(ULX3S_MEM_FLOW) --param SPAN_W=$(SPAN_W) --param ENABLE_ZBUF=$(ZBUF) \
-  $(ULX3S_WMASK) $(ULX3S_GPU_PARAMS)
+  $(ULX3S_WMASK) $(ULX3S_GPU_PARAMS) $(ULX3S_FRAME_PARAMS)
 # Every clock-domain crossing declared, with its reason: checked after synthesis (synth/crossings.py).
 # Not yet for SOC_MEM=sdram: its netlist holds LiteDRAM's DQ buffers (TRELLIS_IO) and the flash's
 # USRMCLK, cell types synth/crossings.py does not model (it stops on them); that build's crossings
@@ -141,6 +150,14 @@ crossings: board-fw
 else
 ifeq ($(filter $(FPGA),$(ULX3S_PARTS)),)
 $(error FPGA=$(FPGA): the ULX3S's part, one of $(ULX3S_PARTS))
+endif
+ifeq ($(filter 1,$(FRAME_DRAM))$(SOC_MEM_SUFFIX),1)
+$(error FRAME_DRAM=1 keeps the frames in the SDRAM: it needs SOC_MEM=sdram)
+endif
+ifeq ($(filter 1,$(FRAME_DRAM)),)
+ifneq ($(FB_TAG),)
+$(error FB=$(FB) on the board: two frames of that size are more block RAM than any ULX3S has; FRAME_DRAM=1 SOC_MEM=sdram keeps them in the SDRAM)
+endif
 endif
 # SOC_MEM=sdram: the boot program, the LiteDRAM core and the joined constraints are inputs of the
 # flow too.

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """board_fit.py — `make board-fit`: the ULX3S build's resources (and, with --pnr, fmax per clock)
-for the default build, the depth-buffer build and every scene's lean build, as one Markdown table
-with the LFE5U-45F and -85F fit.
+for the default build, the depth-buffer build, every scene's lean build and the builds with the
+firmware and the frames in the SDRAM, as one Markdown table with the fit on each of the ULX3S's
+parts (LFE5U-12F, -25F, -45F, -85F).
 
 usage: board_fit.py --build BUILD [--pnr] [--jobs N] [--scenes S ...] [--make make]
 
@@ -13,6 +14,9 @@ Builds, each through `make synth-board BOARD=ulx3s` (or `make bitstream`, with -
                image's need (bsp/soc/postlink.py's <elf>.ramkib: image, bss and stack, rounded up
                to the RAM's granule), as the scene's manifest build sizes it
   zbuf-<scene>-lean  the depth-buffer build with the smallest lean RAM (a depth buffer fits only so)
+  sdram-frames the firmware in the SDRAM (SOC_MEM=sdram, a 16 KiB boot RAM) and the GPU's frames
+               there too (FRAME_DRAM=1, FB=640x480: strips of 16 rows on chip), with the depth
+               buffer (a strip's); the board's 640x480 build
 The firmware of every build is made first, one after another (they share object files); then the
 builds run JOBS at a time (default 2: yosys and nextpnr use one core each). Each build's numbers come from synth/ecp5_bitstream.py's resources.json and fmax.json in its
 directory; a build that does not fit the 85F is reported as such (no place and route).
@@ -70,21 +74,25 @@ def main():
 
     kib = {s: lean_kib(args, s, logdir) for s in args.scenes}
     smallest = min(args.scenes, key=lambda s: kib[s])
-    builds = [("default", "tetra", default_kib(), 0), ("zbuf", "tetra", default_kib(), 1)]
-    builds += [(f"{s}-lean", s, kib[s], 0) for s in args.scenes]
-    builds += [(f"zbuf-{smallest}-lean", smallest, kib[smallest], 1)]
+    # (name, scene, RAM in KiB, depth buffer, board.mk's variables beyond those)
+    builds = [("default", "tetra", default_kib(), 0, {}), ("zbuf", "tetra", default_kib(), 1, {})]
+    builds += [(f"{s}-lean", s, kib[s], 0, {}) for s in args.scenes]
+    builds += [(f"zbuf-{smallest}-lean", smallest, kib[smallest], 1, {})]
+    builds += [("sdram-frames", "tetra", soc_map_value("SOC_RAM_BOOT_BYTES") // 1024, 1,
+                {"SOC_MEM": "sdram", "FRAME_DRAM": 1, "FB": "640x480"})]
 
-    for name, scene, ram, zbuf in builds:
-        status, _ = make(args, ["board-fw"], {"BOARD": "ulx3s", "SCENE": scene, "SOC_RAM_KIB": ram, "BUILD": args.build},
+    for name, scene, ram, zbuf, more in builds:
+        status, _ = make(args, ["board-fw"], {"BOARD": "ulx3s", "SCENE": scene, "SOC_RAM_KIB": ram, "BUILD": args.build, **more},
                          os.path.join(logdir, f"fw-{name}.log"))
         if status != 0:
             sys.exit(f"board_fit: {name}: the firmware does not build (see {logdir}/fw-{name}.log)")
 
     def one(build):
-        name, scene, ram, zbuf = build
+        name, scene, ram, zbuf, more = build
         target = "bitstream" if args.pnr else "synth-board"
-        variables = {"BOARD": "ulx3s", "SCENE": scene, "SOC_RAM_KIB": ram, "ZBUF": zbuf, "BUILD": args.build}
-        print(f"board_fit: {name}: {target} SCENE={scene} SOC_RAM_KIB={ram} ZBUF={zbuf} ...", flush=True)
+        variables = {"BOARD": "ulx3s", "SCENE": scene, "SOC_RAM_KIB": ram, "ZBUF": zbuf, "BUILD": args.build, **more}
+        print(f"board_fit: {name}: {target} " + " ".join(f"{k}={v}" for k, v in variables.items() if k != "BUILD") + " ...",
+              flush=True)
         start = time.monotonic()
         status, _ = make(args, [target], variables, os.path.join(logdir, f"{name}.log"))
         out = subprocess.run([args.make, "-s", "--no-print-directory", "FULL=1", "ulx3s-dir"] + [f"{k}={v}" for k, v in variables.items()],
@@ -99,20 +107,23 @@ def main():
             with open(os.path.join(out, "fmax.json")) as f:
                 fmax = json.load(f)
         print(f"board_fit: {name}: status {status} in {time.monotonic() - start:.0f} s", flush=True)
-        return (name, scene, ram, zbuf, res, fmax, status)
+        return (name, scene, ram, zbuf, more, res, fmax, status)
 
     with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
         rows = list(pool.map(one, builds))
 
     print()
-    print("| build | RAM | LUT4 | FF | EBR | MULT18 | fits 45F | fits 85F | fmax sys / pix / tmds (MHz) |")
-    print("|---|---:|---:|---:|---:|---:|---|---|---|")
-    for name, scene, ram, zbuf, res, fmax, status in rows:
+    parts = ("12k", "25k", "45k", "85k")
+    print("| build | RAM | LUT4 | FF | EBR | MULT18 | " + " | ".join(f"fits {p[:-1]}F" for p in parts)
+          + " | fmax sys / pix / tmds (MHz) |")
+    print("|---|---:|---:|---:|---:|---:|" + "---|" * len(parts) + "---|")
+    for name, scene, ram, zbuf, more, res, fmax, status in rows:
         c = res["cells"]
         clocks = " / ".join(f"{fmax[k]['fmax_mhz']:.1f}" for k in sorted(fmax, key=clock_order)) if fmax else "—"
-        print(f"| {name} ({scene}{', depth buffer' if zbuf else ''}) | {ram} KiB | {c['LUT4']} | {c['TRELLIS_FF']} "
-              f"| {c['DP16KD']} | {c['MULT18X18D']} | {'yes' if res['fits']['45k'] else 'no'} "
-              f"| {'yes' if res['fits']['85k'] else 'no'} | {clocks} |")
+        where = ", firmware and 640x480 frames in the SDRAM" if more.get("FRAME_DRAM") else ""
+        print(f"| {name} ({scene}{', depth buffer' if zbuf else ''}{where}) | {ram} KiB | {c['LUT4']} | {c['TRELLIS_FF']} "
+              f"| {c['DP16KD']} | {c['MULT18X18D']} | " + " | ".join('yes' if res['fits'][p] else 'no' for p in parts)
+              + f" | {clocks} |")
     return 0
 
 

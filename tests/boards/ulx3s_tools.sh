@@ -44,4 +44,17 @@ run_to "$work/term.out" 10 env TERM_PORT="$work/ttyUSB-none" bash boards/board_t
 [ "$status" -ne 0 ] || fail "board_term.sh started on a missing port"
 expect_line "term: no serial port" "$work/term.out"
 
-pass "boards-ulx3s-tools: $(echo "$ports" | wc -l) pins of ulx3s_top constrained once each; flash/load/term refuse clearly without a board"
+# The frames' options: in the SDRAM only with the firmware there, 640x480 only in the SDRAM, and the
+# build's directory names the part and the frames.
+run_to "$work/dram-ram.out" 60 make --no-print-directory ulx3s-dir BOARD=ulx3s FRAME_DRAM=1 BUILD="$work/empty-build"
+[ "$status" -ne 0 ] || fail "FRAME_DRAM=1 with the firmware on chip was accepted"
+expect_line "FRAME_DRAM=1 keeps the frames in the SDRAM: it needs SOC_MEM=sdram" "$work/dram-ram.out"
+run_to "$work/fb640.out" 60 make --no-print-directory ulx3s-dir BOARD=ulx3s SOC_MEM=sdram FB=640x480 BUILD="$work/empty-build"
+[ "$status" -ne 0 ] || fail "FB=640x480 with the frames on chip was accepted"
+expect_line "FB=640x480 on the board: .*FRAME_DRAM=1 SOC_MEM=sdram" "$work/fb640.out"
+run_to "$work/dir.out" 60 make --no-print-directory ulx3s-dir BOARD=ulx3s SOC_MEM=sdram FRAME_DRAM=1 FB=640x480 ZBUF=1 \
+    FPGA=12F BUILD="$work/empty-build"
+expect_status 0 "make ulx3s-dir with the frames in the SDRAM"
+expect_line "/board-ulx3s/tetra-16k-50mhz-z-sdram-dram-s16-f640-12f$" "$work/dir.out"
+
+pass "boards-ulx3s-tools: $(echo "$ports" | wc -l) pins of ulx3s_top constrained once each; flash/load/term refuse clearly without a board; the frames' options checked"
