@@ -7,8 +7,9 @@
 //               area is (multiplied in the dividers' inputs they held the ECP5 board build's system
 //               clock to 43.6 MHz against 50);
 //   gradients   A, B = sat32(trunc(2^16 n / area)) by two gpu_div, started in the first clock of
-//               stage B that asserts need, valid ceil(31 / DIV_QBITS) + 1 clocks later: `ready`
-//               holds stage B until then (at once when the triangle does not need the plane);
+//               stage B that asserts need, valid ceil(31 / DIV_QBITS) + 1 clocks later; `ready`
+//               holds stage B until start is registered two clocks after that (at once when the
+//               triangle does not need the plane);
 //   outputs     start = 2^16 v0 + A off_x + B off_y at lane 0 of the first span; dx, dy = 16 A,
 //               16 B, the steps per pixel. Valid while `ready` and stage B holds the triangle.
 `default_nettype none
@@ -69,12 +70,26 @@ module gpu_plane_setup #(
         end
     end
     // Timeline in stage B: clock 0 starts both dividers from the registered numerators, the next
-    // STEPS clocks develop the quotients, and in the clock after they are valid and stage C takes
-    // them straight from the dividers (they hold until the next start, a clock later at the
-    // earliest): STEPS + 2 clocks a triangle that needs the plane.
-    assign ready = !b_need || (started_q && valid_a);
-    assign start = (START_W'($signed({1'b0, b_v0})) <<< 16)
-                 + START_W'(grad_a) * START_W'(b_off_x) + START_W'(grad_b) * START_W'(b_off_y);
+    // STEPS clocks develop the quotients; in the clock they are valid the two products are
+    // registered, in the next their sum with v0 (start), and in the one after stage C takes start
+    // and the steps (the quotients hold until the next start, a clock later at the earliest):
+    // STEPS + 4 clocks a triangle that needs the plane. The two registers are the board's: from
+    // the quotient's register through its sign, the multipliers and the sum into stage C was one
+    // path, 49.3 MHz on the ULX3S 25F against its 50 MHz system clock.
+    reg signed [START_W-1:0] prod_a_q, prod_b_q, start_q;
+    reg [1:0] stage_q;                 // 0: quotients not valid yet, 1: products held, 2: start held
+    always @(posedge clk) begin
+        prod_a_q <= START_W'(grad_a) * START_W'(b_off_x);
+        prod_b_q <= START_W'(grad_b) * START_W'(b_off_y);
+        start_q <= (START_W'($signed({1'b0, b_v0})) <<< 16) + prod_a_q + prod_b_q;
+        if (rst || b_next || !started_q || !valid_a) begin
+            stage_q <= 2'd0;
+        end else if (stage_q != 2'd2) begin
+            stage_q <= stage_q + 2'd1;
+        end
+    end
+    assign ready = !b_need || stage_q == 2'd2;
+    assign start = start_q;
     assign dx = STEP_W'(grad_a) <<< 4;
     assign dy = STEP_W'(grad_b) <<< 4;
     wire unused_valid_b = valid_b;

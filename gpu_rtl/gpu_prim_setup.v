@@ -15,7 +15,7 @@
 // primitive wait one clock for it (F_DECODE).
 // Latency from a primitive's index read to its descriptor: 6 clocks. Rejected primitives take 2-3.
 // A depth-tested triangle (ENABLE_ZBUF, CTRL.ZTEST) holds stage B for the depth-plane division:
-// ceil(31 / DIV_QBITS) + 2 clocks (18), its throughput then; the fetch of the next primitives and
+// ceil(31 / DIV_QBITS) + 4 clocks (20; gpu_plane_setup), its throughput then; the fetch of the next primitives and
 // the walk of the previous ones go on meanwhile, so large triangles hide it completely.
 // A Gouraud triangle (ENABLE_GOURAUD, PRIM_KIND_TRI_GOURAUD) holds it the same way for the intensity
 // plane's two divisions; they run beside the depth ones, so a triangle that is both waits once.
