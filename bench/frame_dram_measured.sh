@@ -15,17 +15,7 @@
 set -euo pipefail
 sys_hz=${1:?}; on_chip=${2:?}; dram=${3:?}; dir=${4:?}; out=${5:?}; shift 5
 display_clocks=$((800 * 525 * 4))
-mean() {  # mean "WORDS" LOG: the mean of the number after WORDS on the firmware's frame lines
-    awk -v f="$1" '/^frame / { k = split(f, w, " ")
-                               for (i = 1; i + k <= NF; i++) {
-                                   hit = 1
-                                   for (j = 1; j <= k; j++) if ($(i + j - 1) != w[j]) hit = 0
-                                   if (hit) { s += $(i + k); n++ }
-                               } }
-                   END { printf "%.0f", n ? s / n : 0 }' "$2"
-}
-value() { sed -n "s/^$1=//p" "$2"; }
-commas() { echo "$1" | sed -E ':a; s/([0-9])([0-9]{3})($|[^0-9])/\1,\2\3/; ta'; }
+source "$(dirname "$0")/frame_lines.sh"  # mean, commas
 echo
 echo "| scene | GPU cycles a frame: frame on chip | frames in SDRAM | SDRAM bytes written a frame drawn | read a frame shown | the port at 60 frames/s, $((sys_hz / 1000000)) MHz | underflows |"
 echo "|---|---:|---:|---:|---:|---:|---:|"

@@ -13,16 +13,7 @@
 # Usage: strips_measured.sh GPUSIM STRIP_GPU BENCH_DIR OUT_DIR SCENE...
 set -euo pipefail
 sim=${1:?}; strip_sim=${2:?}; dir=${3:?}; out=${4:?}; shift 4
-mean() {  # mean "WORDS" LOG: the mean of the number after WORDS (e.g. "gpu cycles") on the frame lines
-    awk -v f="$1" '/^frame / { k = split(f, w, " ")
-                               for (i = 1; i + k <= NF; i++) {
-                                   hit = 1
-                                   for (j = 1; j <= k; j++) if ($(i + j - 1) != w[j]) hit = 0
-                                   if (hit) { s += $(i + k); n++ }
-                               } }
-                   END { printf "%.0f", n ? s / n : 0 }' "$2"
-}
-commas() { echo "$1" | sed -E ':a; s/([0-9])([0-9]{3})($|[^0-9])/\1,\2\3/; ta'; }
+source "$(dirname "$0")/frame_lines.sh"  # mean, commas
 echo
 echo "| scene | whole: fw instr | GPU cycles | batches | strips of 16: fw instr | GPU cycles | batches | binning, instructions | strip buffer of 16: fw instr | GPU cycles | batches | the GPU's binning: fw instr | GPU cycles | batches |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
