@@ -151,12 +151,15 @@ else
 ifeq ($(filter $(FPGA),$(ULX3S_PARTS)),)
 $(error FPGA=$(FPGA): the ULX3S's part, one of $(ULX3S_PARTS))
 endif
+# The frames' options, for the goals that build for the board (FB is make run's too).
+ifneq ($(filter bitstream synth-board ulx3s-dir flash load netlist-sim crossings board-fw,$(MAKECMDGOALS)),)
 ifeq ($(filter 1,$(FRAME_DRAM))$(SOC_MEM_SUFFIX),1)
 $(error FRAME_DRAM=1 keeps the frames in the SDRAM: it needs SOC_MEM=sdram)
 endif
 ifeq ($(filter 1,$(FRAME_DRAM)),)
 ifneq ($(FB_TAG),)
 $(error FB=$(FB) on the board: two frames of that size are more block RAM than any ULX3S has; FRAME_DRAM=1 SOC_MEM=sdram keeps them in the SDRAM)
+endif
 endif
 endif
 # SOC_MEM=sdram: the boot program, the LiteDRAM core and the joined constraints are inputs of the
