@@ -56,6 +56,10 @@ public:
     // The golden model's configuration for this simulator: its -G parameters (cosim/gpu_build.h).
     static gpu_model_config build_config();
     static constexpr unsigned kFastVblankEvery = 64;  // the fast path's vblank_start period, clocks
+    // The pin path's display: gpu_top's default PIX_DIV (4 clocks a pixel), 640x480@60's 800 pixels
+    // a line and 525 lines a scan.
+    static constexpr uint64_t kScanLineClocks = 800 * 4;
+    static constexpr uint64_t kScanClocks = 525 * kScanLineClocks;
 
     // The framebuffer being drawn (the back bank, !STATUS.FRONT), as the build's frame (build_config's
     // fb_width x fb_height) of palette indices,

@@ -23,7 +23,6 @@ namespace {
 
 constexpr uint32_t kIndex = 5;         // the palette entry cleared to
 constexpr uint32_t kRgb444 = 0x2A7;    // its colour
-constexpr uint64_t kLineClocks = 800 * 4;  // a VGA line on the pin path (PIX_DIV 4)
 
 uint32_t rgb888(uint32_t rgb444)  // as the monitor model takes the pins: each channel times 17
 {
@@ -47,7 +46,7 @@ int line_kind(const uint8_t *rgb, int y)
 
 bool capture(GpuSim &sim, const char *what)
 {
-    if (!sim.capture_frame(3ull * 525 * kLineClocks)) {
+    if (!sim.capture_frame(3 * GpuSim::kScanClocks)) {
         std::printf("scanout-underflow: %s: no VGA frame: %s\n", what, sim.vga_error());
         return false;
     }
@@ -112,11 +111,11 @@ int scanout_underflow_main(int argc, char **argv)
 
     // 2. The memory stops answering for a while inside the next frame.
     sim.arm_capture();
-    for (uint64_t c = 0; c < at_line * kLineClocks; c++) {
+    for (uint64_t c = 0; c < at_line * GpuSim::kScanLineClocks; c++) {
         sim.tick();
     }
-    sim.stall_memory(stall_lines * kLineClocks);
-    if (!sim.wait_capture(3ull * 525 * kLineClocks)) {
+    sim.stall_memory(stall_lines * GpuSim::kScanLineClocks);
+    if (!sim.wait_capture(3 * GpuSim::kScanClocks)) {
         std::printf("scanout-underflow: during the stall: no VGA frame: %s\n", sim.vga_error());
         return 1;
     }

@@ -8,7 +8,7 @@
 
 `define SOC_GPU_MEM_WIRES \
     wire        gpu_mem_cmd_valid, gpu_mem_cmd_ready, gpu_mem_cmd_we; \
-    wire [$clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 2)-1:0] gpu_mem_cmd_addr; \
+    wire [soc_pkg::SOC_SDRAM_NATIVE_AW-1:0] gpu_mem_cmd_addr; \
     wire        gpu_mem_wdata_valid, gpu_mem_wdata_ready; \
     wire [15:0] gpu_mem_wdata_data; \
     wire [1:0]  gpu_mem_wdata_we; \

@@ -44,7 +44,7 @@ module soc_top #(
     localparam integer RAM_AW = $clog2(RAM_BYTES / 4),
     localparam integer SDRAM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),        // word address bits
     localparam integer SDRAM_CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4),
-    localparam integer GPU_MEM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 2),    // 16-bit words
+    localparam integer GPU_MEM_AW = soc_pkg::SOC_SDRAM_NATIVE_AW,    // 16-bit words
     localparam integer POR_CLKS = 16           // reset length after power-on or ext_rst
 ) (
     input  wire       clk,            // the system clock, CLK_HZ

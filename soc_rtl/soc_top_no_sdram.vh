@@ -13,7 +13,7 @@
     wire [3:0]  sdram_idle_sel, sdram_idle_ctrl_sel; \
     wire [2:0]  sdram_idle_cti; \
     wire [3:0]  gpu_mem_idle; \
-    wire [$clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 2)-1:0] gpu_mem_idle_addr; \
+    wire [soc_pkg::SOC_SDRAM_NATIVE_AW-1:0] gpu_mem_idle_addr; \
     wire [15:0] gpu_mem_idle_data; \
     wire [1:0]  gpu_mem_idle_we; \
     wire unused_sdram = &{1'b0, sdram_idle, sdram_idle_adr, sdram_idle_ctrl_adr, sdram_idle_dat, \

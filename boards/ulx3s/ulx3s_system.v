@@ -29,7 +29,7 @@ module ulx3s_system #(
     `GPU_BUILD_PARAMS,                                             // the GPU's (soc_top)
     localparam integer SDRAM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),      // soc_top's
     localparam integer SDRAM_CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4),
-    localparam integer GPU_MEM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 2)     // soc_top's
+    localparam integer GPU_MEM_AW = soc_pkg::SOC_SDRAM_NATIVE_AW     // soc_top's
 ) (
     // clocks (ulx3s_pll)
     input  wire       clk_sys,

@@ -10,8 +10,9 @@
 ifndef SOC_RAM_MK_INCLUDED
 SOC_RAM_MK_INCLUDED := 1
 SOC_MAP_H           := contract/soc_map.h
-soc_map_kib          = $(shell printf '%d' $$(( $$(sed -n 's/^\#define $(1) *\(0x[0-9A-Fa-f]*\).*/\1/p' $(SOC_MAP_H)) / 1024 )))
-soc_map_value        = $(shell printf '%d' $$(sed -n 's/^\#define $(1) *\(0x[0-9A-Fa-f]*\).*/\1/p' $(SOC_MAP_H)))
+# A constant of contract/soc_map.h, hexadecimal or decimal, as a decimal number (in KiB: soc_map_kib).
+soc_map_value        = $(shell printf '%d' $$(sed -n 's/^\#define $(1) *\(0x[0-9A-Fa-f]*\|[0-9][0-9]*\).*/\1/p' $(SOC_MAP_H)))
+soc_map_kib          = $(shell echo $$(( $(call soc_map_value,$(1)) / 1024 )))
 # SOC_MEM: where the firmware runs. ram: the on-chip RAM (loaded with the bitstream, or by socsim);
 # sdram: the SDRAM, linked at its base and copied there from the flash by the boot program
 # (docs/boot.md), the on-chip RAM then the boot program's (SOC_RAM_BOOT_BYTES).

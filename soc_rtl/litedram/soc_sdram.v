@@ -30,7 +30,7 @@ module soc_sdram #(
     localparam integer AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),       // soc_top's word address
     localparam integer CORE_AW = $clog2(SDRAM_BYTES / 4),                     // the core's
     localparam integer CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4),
-    localparam integer GPU_MEM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 2)   // soc_top's, 16-bit words
+    localparam integer GPU_MEM_AW = soc_pkg::SOC_SDRAM_NATIVE_AW   // soc_top's, 16-bit words
 ) (
     input  wire               clk,
     input  wire               rst,              // the system's reset (button, PLL unlock): LiteDRAM

@@ -57,7 +57,7 @@ module litedram_tb_top #(
     input  wire               gpu_mem_cmd_valid,
     output wire               gpu_mem_cmd_ready,
     input  wire               gpu_mem_cmd_we,
-    input  wire [$clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 2)-1:0] gpu_mem_cmd_addr,
+    input  wire [soc_pkg::SOC_SDRAM_NATIVE_AW-1:0] gpu_mem_cmd_addr,
     input  wire               gpu_mem_wdata_valid,
     output wire               gpu_mem_wdata_ready,
     input  wire [15:0]        gpu_mem_wdata_data,
