@@ -145,8 +145,8 @@ def socsims(table):
         if unknown:
             raise TableError(f"{where}: unknown key {sorted(unknown)[0]}")
         system = spec.get("system", "soc")
-        if system not in ("soc", "ulx3s", "sdram"):
-            raise TableError(f"{where}: system = {system!r}: soc, ulx3s or sdram")
+        if system not in ("soc", "ulx3s", "sdram", "ulx3s-sdram"):
+            raise TableError(f"{where}: system = {system!r}: soc, ulx3s, sdram or ulx3s-sdram")
         size = spec.get("ram", "default")
         if size not in ("default", "window", "boot"):
             raise TableError(f"{where}: ram = {size!r}: default, window or boot (sizes are the contract's)")

@@ -11,7 +11,9 @@
 // and the monitor sees what the GPDI connector carries: the four TMDS channels' bit pairs (the
 // ODDRX1F inputs), decoded by cosim/soc/tmds_decoder — which checks every symbol against the DVI
 // encoding, DC balance included — back into syncs and colours. The frames it writes are those of
-// the VGA build, byte for byte, when the board's video path is right.
+// the VGA build, byte for byte, when the board's video path is right. With SOCSIM_SDRAM as well
+// (socsim.mk's ulx3s-sdram system, cosim/soc/ulx3s_sdram_sim.sv), that board build with LiteDRAM
+// on its SDRAM ports, the chip and the flash played as in the system with SDRAM below.
 //
 //   socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]
 //          [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--stop-frames N]
@@ -72,7 +74,13 @@
 #include <string>
 #include <vector>
 
-#ifdef SOCSIM_BOARD_ULX3S
+#if defined(SOCSIM_BOARD_ULX3S) && defined(SOCSIM_SDRAM)
+#include "Vulx3s_sdram_sim.h"
+#include "sdram_pins.h"
+#include "spi_flash.h"
+#include "tmds_decoder.h"
+using SocModel = Vulx3s_sdram_sim;
+#elif defined(SOCSIM_BOARD_ULX3S)
 #include "Vulx3s_system.h"
 #include "tmds_decoder.h"
 using SocModel = Vulx3s_system;
@@ -485,14 +493,17 @@ bool SocRun::load_ram(std::string *error)
 // One system clock: every edge of the three clocks up to and including the system clock's next
 // rising one, in time order (edges at the same instant in one eval); the TMDS bit pairs are read
 // after each rising edge of the TMDS clock, which the ODDRX1Fs send during the period that follows.
+// With SDRAM, the chip is clocked at the system clock's falling edge and the flash stepped after
+// its rising one, as in the system with SDRAM.
 void SocRun::clock_once()
 {
     for (;;) {
         const uint64_t t = std::min({next_sys_ps_, next_pix_ps_, next_tmds_ps_});
-        bool sys_rose = false, tmds_rose = false;
+        bool sys_rose = false, sys_fell = false, tmds_rose = false;
         if (next_sys_ps_ == t) {
             top_->clk_sys = !top_->clk_sys;
             sys_rose = top_->clk_sys;
+            sys_fell = !sys_rose;
             next_sys_ps_ += kSysHalfPs;
         }
         if (next_pix_ps_ == t) {
@@ -506,6 +517,16 @@ void SocRun::clock_once()
         }
         top_->pll_locked = t >= kLockPs;
         top_->eval();
+#ifdef SOCSIM_SDRAM
+        if (sys_fell) {
+            sdram_clock();
+        }
+        if (sys_rose) {
+            flash_step(t);
+        }
+#else
+        (void)sys_fell;
+#endif
         trace_dump(t);
         if (tmds_rose) {
             tmds_clock();

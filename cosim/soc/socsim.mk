@@ -80,6 +80,15 @@ SOCSIM_CFLAGS_sdram      := -DSOCSIM_SDRAM -I$(CURDIR)/cosim/sdram -I$(CURDIR)/c
 SOCSIM_PREREQS_sdram     := $(LITEDRAM_SIM_V) soc_rtl/litedram/lint.vlt soc_rtl/litedram/sdram_wb_burst.v soc_rtl/litedram/soc_sdram.v \
                             cosim/soc/soc_sdram_sim.sv $(wildcard cosim/sdram/ecp5/*.v) cosim/sdram/sdram_chip.cpp \
                             cosim/sdram/sdram_chip.h cosim/sdram/sdram_pins.h cosim/flash/spi_flash.cpp cosim/flash/spi_flash.h
+# The ULX3S build with SDRAM (cosim/soc/ulx3s_sdram_sim.sv): ulx3s_system on its three clocks with
+# the same controller and chip on its SDRAM ports, the flash on its flash pins, the board's DVI
+# decoded; the system with SDRAM's sources and the board's.
+SOCSIM_SYSTEM_ulx3s-sdram   = ulx3s_sdram_sim -GSDRAM_BYTES=$(SOC_SDRAM_BYTES) --timescale 1ns/1ps
+SOCSIM_SOURCES_ulx3s-sdram  = $(filter-out cosim/soc/soc_sdram_sim.sv,$(SOCSIM_SOURCES_sdram)) -f $(ULX3S_SIM_FILES) \
+                              cosim/soc/ulx3s_sdram_sim.sv $(abspath cosim/soc/tmds_decoder.cpp)
+SOCSIM_CFLAGS_ulx3s-sdram  := $(SOCSIM_CFLAGS_sdram) $(SOCSIM_CFLAGS_ulx3s)
+SOCSIM_PREREQS_ulx3s-sdram := $(filter-out cosim/soc/soc_sdram_sim.sv,$(SOCSIM_PREREQS_sdram)) $(SOCSIM_PREREQS_ulx3s) \
+                              cosim/soc/ulx3s_sdram_sim.sv
 $(call litedram_dir,%)/litedram_core.v: soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram.yml contract/soc_map.h $(SOC_VENV)
 	@mkdir -p $(@D)
 	$(Q)$(call say,GEN,$@).venv/bin/python soc_rtl/litedram/gen_litedram.py soc_rtl/litedram/ulx3s_sdram.yml \

@@ -1,0 +1,118 @@
+// ulx3s_sdram_sim: socsim's ULX3S build with SDRAM — boards/ulx3s/ulx3s_system on its three clocks
+// (the TMDS pairs out, as socsim's plain board build) with its SDRAM, GPU frame and flash ports on
+// soc_sdram (LiteDRAM's generated controller), wired as boards/ulx3s/ulx3s_sdram_top wires them
+// (LiteDRAM reset by ulx3s_system's sdram_rst), and the chip's and the flash's pins out to socsim,
+// which plays both (cosim/sdram/sdram_chip.h, cosim/flash/spi_flash.h). Left out are the vendor
+// primitives a simulation cannot run: the PLL (socsim makes the clocks), the ODDRX1Fs (socsim reads their input
+// pairs) and the SDRAM clock's output register (the chip model is clocked on the system clock's
+// falling edge, the phase docs/sdram.md argues).
+//
+// The chip's pins are named as soc_sdram_sim names them (cosim/sdram/sdram_pins.h), DQ split the
+// same way: the controller's drive through its TRELLIS_IO buffers, the chip's through chip_dq and
+// chip_dq_oe.
+`include "contract/gpu_build_params.vh"
+`include "soc_rtl/soc_gpu_mem.vh"
+`default_nettype none
+
+module ulx3s_sdram_sim #(
+    parameter integer SYS_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,
+    parameter integer RAM_BYTES = soc_pkg::SOC_RAM_BOOT_BYTES,        // the boot program's on-chip RAM
+    parameter integer SDRAM_BYTES = soc_pkg::SOC_SDRAM_DEFAULT_BYTES,
+    `GPU_BUILD_PARAMS
+) (
+    // ---- the PLL's clocks, made by socsim
+    input  wire        clk_sys,
+    input  wire        clk_pix,         // 25 MHz
+    input  wire        clk_tmds,        // 125 MHz
+    input  wire        pll_locked,
+    // ---- board
+    input  wire        btn_reset,
+    input  wire        uart_rx,
+    output wire        uart_tx,
+    output wire [7:0]  led,
+    output wire [3:0]  tmds_d0,         // the ODDRX1F inputs (ulx3s_system)
+    output wire [3:0]  tmds_d1,
+    output wire        exit_valid,
+    output wire [7:0]  exit_code,
+    // ---- the SDRAM chip's pins, for socsim's chip model
+    output wire [12:0] sdram_a,
+    output wire [1:0]  sdram_ba,
+    output wire        sdram_cs_n,
+    output wire        sdram_ras_n,
+    output wire        sdram_cas_n,
+    output wire        sdram_we_n,
+    output wire        sdram_cke,
+    output wire [1:0]  sdram_dqm,
+    output wire [15:0] sdram_dq_pins,   // the DQ bus as resolved
+    output wire        ctrl_dq_oe,      // the controller drives DQ
+    input  wire [15:0] chip_dq,         // the chip's drive ...
+    input  wire        chip_dq_oe,      // ... while this is high
+    output wire        sdram_init_done,
+    output wire        sdram_busy,      // a request on the CPU's SDRAM port (waiting or answered)
+    // ---- the SPI flash's pins, for socsim's flash model
+    output wire        flash_cs_n,
+    output wire        flash_sck,
+    output wire        flash_mosi,
+    input  wire        flash_miso
+);
+    localparam integer AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4);
+    localparam integer CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4);
+
+    wire               sdram_rst;
+    wire               s_cyc, s_stb, s_we, s_ack, s_err;
+    wire [AW-1:0]      s_adr;
+    wire [31:0]        s_dat_w, s_dat_r;
+    wire [3:0]         s_sel;
+    wire [2:0]         s_cti;
+    wire               c_cyc, c_stb, c_we, c_ack, c_err;
+    wire [CTRL_AW-1:0] c_adr;
+    wire [31:0]        c_dat_w, c_dat_r;
+    wire [3:0]         c_sel;
+    `SOC_GPU_MEM_WIRES   // the GPU's frames (FRAME_DRAM): ulx3s_system to LiteDRAM (soc_rtl/soc_gpu_mem.vh)
+
+    ulx3s_system #(
+        .SYS_HZ      (SYS_HZ),
+        .RAM_BYTES   (RAM_BYTES),
+        .SDRAM_BYTES (SDRAM_BYTES),
+        `GPU_BUILD_PARAMS_PASS
+    ) u_system (
+        .clk_sys (clk_sys), .clk_pix (clk_pix), .clk_tmds (clk_tmds), .pll_locked (pll_locked),
+        .btn_reset (btn_reset), .uart_rx (uart_rx), .uart_tx (uart_tx), .led (led),
+        .tmds_d0 (tmds_d0), .tmds_d1 (tmds_d1),
+        .sdram_rst (sdram_rst),
+        .sdram_cyc (s_cyc), .sdram_stb (s_stb), .sdram_we (s_we), .sdram_adr (s_adr),
+        .sdram_dat_w (s_dat_w), .sdram_sel (s_sel), .sdram_cti (s_cti), .sdram_dat_r (s_dat_r),
+        .sdram_ack (s_ack), .sdram_err (s_err),
+        .sdram_ctrl_cyc (c_cyc), .sdram_ctrl_stb (c_stb), .sdram_ctrl_we (c_we), .sdram_ctrl_adr (c_adr),
+        .sdram_ctrl_dat_w (c_dat_w), .sdram_ctrl_sel (c_sel), .sdram_ctrl_dat_r (c_dat_r),
+        .sdram_ctrl_ack (c_ack), .sdram_ctrl_err (c_err),
+        .flash_cs_n (flash_cs_n), .flash_sck (flash_sck), .flash_mosi (flash_mosi), .flash_miso (flash_miso),
+        `SOC_GPU_MEM_PORTS,
+        .exit_valid (exit_valid), .exit_code (exit_code)
+    );
+
+    assign sdram_busy = s_cyc && s_stb;
+
+    wire [15:0] dq;
+    assign dq = chip_dq_oe ? chip_dq : 16'bz;
+    assign sdram_dq_pins = dq;
+    assign ctrl_dq_oe = !u_sdram.u_core.TRELLIS_IO.T;
+
+    soc_sdram #(
+        .SDRAM_BYTES (SDRAM_BYTES)
+    ) u_sdram (
+        .clk (clk_sys), .rst (sdram_rst), .init_done (sdram_init_done),
+        .sdram_cyc (s_cyc), .sdram_stb (s_stb), .sdram_we (s_we), .sdram_adr (s_adr),
+        .sdram_dat_w (s_dat_w), .sdram_sel (s_sel), .sdram_cti (s_cti), .sdram_dat_r (s_dat_r),
+        .sdram_ack (s_ack), .sdram_err (s_err),
+        .sdram_ctrl_cyc (c_cyc), .sdram_ctrl_stb (c_stb), .sdram_ctrl_we (c_we), .sdram_ctrl_adr (c_adr),
+        .sdram_ctrl_dat_w (c_dat_w), .sdram_ctrl_sel (c_sel), .sdram_ctrl_dat_r (c_dat_r),
+        .sdram_ctrl_ack (c_ack), .sdram_ctrl_err (c_err),
+        `SOC_GPU_MEM_PORTS,
+        .pin_a (sdram_a), .pin_ba (sdram_ba), .pin_cs_n (sdram_cs_n), .pin_ras_n (sdram_ras_n),
+        .pin_cas_n (sdram_cas_n), .pin_we_n (sdram_we_n), .pin_cke (sdram_cke), .pin_dqm (sdram_dqm),
+        .pin_dq (dq)
+    );
+endmodule
+
+`default_nettype wire
