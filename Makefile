@@ -27,6 +27,8 @@ VERILATOR_RT_MAKE  := VM_GLOBAL_FAST= VM_GLOBAL_SLOW=
 # the lists read here and the rules read below, by cosim/soc/socsim.mk and by firmware/firmware.mk
 # (mk/gen.mk); the contract's frames (CONTRACT_FB, CONTRACT_FB_MAX) with them.
 include mk/gen.mk
+# The ULX3S build's defaults (everything in the SDRAM, 640x480, depth), for the board's goals only.
+include boards/ulx3s/defaults.mk
 # FB=WxH: the frame of the GPU that run, run-soc and the window simulate: the contract's default
 # ($(CONTRACT_FB), shown 2x2) or its largest ($(CONTRACT_FB_MAX), shown 1:1; the simulators'
 # names then carry f<width>, a manifest build's tag too). The firmware reads the frame from the

@@ -97,9 +97,11 @@ def main():
     os.makedirs(logdir, exist_ok=True)
 
     builds = []  # (scene, kind, variables)
+    # The on-chip build (SOC_MEM=ram, not the board's default, boards/ulx3s/defaults.mk): the firmware
+    # in the RAM, which the lean build sizes to the scene.
     for s in args.scenes:
-        builds.append((s, "full", {"SCENE": s, "FULL": 1, "BUILD": args.build}))
-        builds.append((s, "lean", {"SCENE": s, "BUILD": args.build}))
+        builds.append((s, "full", {"SCENE": s, "FULL": 1, "SOC_MEM": "ram", "BUILD": args.build}))
+        builds.append((s, "lean", {"SCENE": s, "SOC_MEM": "ram", "BUILD": args.build}))
 
     # Firmware and simulators first, one make at a time (the builds share objects).
     info = {}

@@ -1,8 +1,10 @@
 # boards/ulx3s/board.mk — the Radiona ULX3S (LFE5U-85F or -45F): bitstream, flash, terminal; included
 # by the top-level Makefile (paths relative to the repository root).
 #
-#   bitstream BOARD=ulx3s [SCENE=… SYS_MHZ=50 SOC_RAM_KIB=… SEED=… ZBUF=1 WMASK=0|1 SOC_MEM=ram|sdram FRAME_DRAM=1 FB=… FPGA=85F|45F|25F|12F]
-#       SOC_MEM=ram (the default): the firmware of SCENE (FRAMES 0: until Q) as the on-chip RAM's
+#   bitstream BOARD=ulx3s [SCENE=… SYS_MHZ=50 SOC_RAM_KIB=… SEED=… ZBUF=0|1 WMASK=0|1 SOC_MEM=ram|sdram FRAME_DRAM=0|1 FB=… FPGA=85F|45F|25F|12F]
+#       The defaults (boards/ulx3s/defaults.mk): SOC_MEM=sdram FRAME_DRAM=1 FB=640x480 ZBUF=1, the
+#       firmware and the frames in the SDRAM, colour and depth in strips on chip.
+#       SOC_MEM=ram: the firmware of SCENE (FRAMES 0: until Q) as the on-chip RAM's
 #       initial contents (ulx3s_top). SOC_MEM=sdram: the same firmware linked for the SDRAM (its boot
 #       image <elf>.img, bsp/soc/mkimage.py), and the on-chip RAM (SOC_RAM_BOOT_KIB) holding the boot
 #       program built against the LiteDRAM controller generated for SYS_MHZ (ulx3s_sdram_top: LiteDRAM
@@ -42,13 +44,13 @@
 #
 # Build options (make variables):
 #   SYS_MHZ   the system clock, a divisor of 750 (boards/ulx3s/ulx3s_pll.v); 50 by default
-#   SOC_MEM   ram (default) or sdram: where the firmware runs (bsp/soc/soc_ram.mk)
+#   SOC_MEM   sdram (default) or ram: where the firmware runs (bsp/soc/soc_ram.mk)
 #   FPGA      85F (default), 45F, 25F or 12F: the board's part; nextpnr's --85k/--45k/--25k/--12k, the same pins
 #             (one LPF); the build's directory says the part when it is not the 85F
 #   SEED      nextpnr's seed (1); ZBUF, WMASK, SPAN_W, SOC_RAM_KIB: the GPU's and the RAM's, as above
-#   FRAME_DRAM 1: the GPU's two frames in the SDRAM too (needs SOC_MEM=sdram; the contract's "Frames
-#             in external memory"): it draws in strips of STRIP_ROWS rows (16) on chip, colour and
-#             depth, at the frame size FB (the Makefile's: 320x240, or 640x480 shown 1:1)
+#   FRAME_DRAM 1 (the default with SOC_MEM=sdram): the GPU's two frames in the SDRAM too (the contract's
+#             "Frames in external memory"): it draws in strips of STRIP_ROWS rows (16) on chip, colour
+#             and depth, at the frame size FB (640x480 shown 1:1 by default; 320x240 shown 2x2)
 SYS_MHZ     ?= 50
 SEED        ?= 1
 FPGA        ?= 85F
@@ -68,7 +70,7 @@ ULX3S_DEVICE  = $(FPGA:F=k)
 # FRAME_DRAM=1: the frame's parameters (FB's, unless a scene's manifest gives them) and the strips'.
 ULX3S_FRAME_PARAMS = $(if $(filter 1,$(FRAME_DRAM)),--param FRAME_DRAM=1 --param STRIP_ROWS=$(STRIP_ROWS) \
   $(if $(filter --param FB_WIDTH=%,$(ULX3S_GPU_PARAMS)),,$(patsubst -G%,--param %,$(FB_GFLAGS))))
-ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)$(if $(ULX3S_WMASK),$(if $(filter 0,$(WMASK)),-nomask))$(SOC_MEM_SUFFIX)$(if $(filter 1,$(FRAME_DRAM)),-dram-s$(STRIP_ROWS)$(if $(FB_TAG),-$(FB_TAG)))$(if $(filter-out 85F,$(FPGA)),-$(FPGA:F=f))
+ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)$(if $(ULX3S_WMASK),$(if $(filter 0,$(WMASK)),-nomask))$(SOC_MEM_SUFFIX)$(if $(filter 1,$(FRAME_DRAM)),-dram-s$(STRIP_ROWS)$(if $(and $(FB_TAG),$(if $(LEAN_SCENE),,1)),-$(FB_TAG)))$(if $(filter-out 85F,$(FPGA)),-$(FPGA:F=f))
 ULX3S_DIR    = $(BUILD)/board-ulx3s/$(ULX3S_NAME)
 # The top: ulx3s_top (the firmware in on-chip RAM) or ulx3s_sdram_top (SOC_MEM=sdram); files named by it.
 ULX3S_TOP    = $(if $(SOC_MEM_SUFFIX),ulx3s_sdram_top,ulx3s_top)
@@ -213,13 +215,14 @@ crossings:
 	  --declared $(ULX3S_CROSSINGS) --report $(ULX3S_DIR)/crossings.md
 
 # SOC_MEM=sdram: the firmware's image (remade if its sources changed: the bitstream does not hold
-# the firmware) into the flash at its offset first, without the reset that would start the old
-# bitstream; then the bitstream, into the flash at 0 (its reset starts it) or into the FPGA. The
-# bitstream must end below the image.
-flash load: $(if $(SOC_MEM_SUFFIX),board-fw)
-	@test -f $(ULX3S_BIT) || { echo "$@: no $(ULX3S_BIT): make bitstream BOARD=ulx3s first (same SCENE, SYS_MHZ, SOC_RAM_KIB, SOC_MEM, FPGA)"; exit 1; }
+# the firmware; after the bitstream is found, so that a missing one is said first) into the flash at
+# its offset first, without the reset that would start the old bitstream; then the bitstream, into
+# the flash at 0 (its reset starts it) or into the FPGA. The bitstream must end below the image.
+flash load:
+	@test -f $(ULX3S_BIT) || { echo "$@: no $(ULX3S_BIT): make bitstream BOARD=ulx3s first (same SCENE, SYS_MHZ, SOC_RAM_KIB, SOC_MEM, FRAME_DRAM, FB, ZBUF, FPGA)"; exit 1; }
 	@bash tools/setup.sh
 ifneq ($(SOC_MEM_SUFFIX),)
+	+@$(MAKE) --no-print-directory board-fw
 	@test -f $(ULX3S_FW_IMG) || { echo "$@: no $(ULX3S_FW_IMG) (the firmware's boot image)"; exit 1; }
 	@test $$(stat -c %s $(ULX3S_BIT)) -le $$(( $(ULX3S_IMAGE_OFFSET) )) || { echo "$@: $(ULX3S_BIT) is larger than the image's offset $(ULX3S_IMAGE_OFFSET)"; exit 1; }
 	$(Q)$(call say,FLASH,$(ULX3S_FW_IMG) at $(ULX3S_IMAGE_OFFSET))openFPGALoader -b ulx3s -f -o $(ULX3S_IMAGE_OFFSET) --skip-reset $(ULX3S_FW_IMG) \

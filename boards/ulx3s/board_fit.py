@@ -1,22 +1,23 @@
 #!/usr/bin/env python3
 """board_fit.py — `make board-fit`: the ULX3S build's resources (and, with --pnr, fmax per clock)
-for the default build, the depth-buffer build, every scene's lean build and the builds with the
-firmware and the frames in the SDRAM, as one Markdown table with the fit on each of the ULX3S's
+for the board's default build (the firmware and the frames in the SDRAM), the on-chip builds
+(SOC_MEM=ram: with and without the depth buffer, every scene's lean build), as one Markdown table with the fit on each of the ULX3S's
 parts (LFE5U-12F, -25F, -45F, -85F).
 
 usage: board_fit.py --build BUILD [--pnr] [--jobs N] [--scenes S ...] [--make make]
 
 Builds, each through `make synth-board BOARD=ulx3s` (or `make bitstream`, with --pnr):
-  default      SCENE tetra, the contract's 192 KiB RAM, SPAN_W 8, lines, no depth buffer
-  zbuf         the same with ENABLE_ZBUF (the 16-bit depth buffer: 75 EBR more) and without the
+  on-chip      SOC_MEM=ram: SCENE tetra, the contract's 192 KiB RAM, SPAN_W 8, lines, no depth
+               buffer, the frames on chip (320x240)
+  on-chip-zbuf the same with ENABLE_ZBUF (the 16-bit depth buffer: 75 EBR more) and without the
                framebuffer write mask (4 EBR less: board.mk's WMASK default beside the depth buffer)
-  <scene>-lean the scene's one-scene firmware and a RAM just large enough for it: the linked
+  <scene>-lean (on chip) the scene's one-scene firmware and a RAM just large enough for it: the linked
                image's need (bsp/soc/postlink.py's <elf>.ramkib: image, bss and stack, rounded up
                to the RAM's granule), as the scene's manifest build sizes it
   zbuf-<scene>-lean  the depth-buffer build with the smallest lean RAM (a depth buffer fits only so)
-  sdram-frames the firmware in the SDRAM (SOC_MEM=sdram, a 16 KiB boot RAM) and the GPU's frames
-               there too (FRAME_DRAM=1, FB=640x480: strips of 16 rows on chip), with the depth
-               buffer (a strip's); the board's 640x480 build
+  default      the board's default build (boards/ulx3s/defaults.mk): the firmware in the SDRAM
+               (SOC_MEM=sdram, a 16 KiB boot RAM) and the GPU's frames there too (FRAME_DRAM=1,
+               FB=640x480: strips of 16 rows on chip), with the depth buffer (a strip's)
 The firmware of every build is made first, one after another (they share object files); then the
 builds run JOBS at a time (default 2: yosys and nextpnr use one core each). Each build's numbers come from synth/ecp5_bitstream.py's resources.json and fmax.json in its
 directory; a build that does not fit the 85F is reported as such (no place and route).
@@ -53,7 +54,7 @@ def lean_kib(args, scene, logdir):
     """The scene's RAM need: its board firmware's <elf>.ramkib (bsp/soc/postlink.py: the linked
     image's stack top, rounded up to the RAM's granule)."""
     log = os.path.join(logdir, f"fw-{scene}.log")
-    status, _ = make(args, ["board-fw"], {"BOARD": "ulx3s", "SCENE": scene, "BUILD": args.build}, log)
+    status, _ = make(args, ["board-fw"], {"BOARD": "ulx3s", "SCENE": scene, "SOC_MEM": "ram", "BUILD": args.build}, log)
     elf = os.path.join(args.build, "board-fw", f"{scene}-{default_kib()}k.elf")
     if status != 0 or not os.path.exists(elf):
         sys.exit(f"board_fit: could not build {scene}'s firmware (see {log})")
@@ -75,11 +76,12 @@ def main():
     kib = {s: lean_kib(args, s, logdir) for s in args.scenes}
     smallest = min(args.scenes, key=lambda s: kib[s])
     # (name, scene, RAM in KiB, depth buffer, board.mk's variables beyond those)
-    builds = [("default", "tetra", default_kib(), 0, {}), ("zbuf", "tetra", default_kib(), 1, {})]
-    builds += [(f"{s}-lean", s, kib[s], 0, {}) for s in args.scenes]
-    builds += [(f"zbuf-{smallest}-lean", smallest, kib[smallest], 1, {})]
-    builds += [("sdram-frames", "tetra", soc_map_value("SOC_RAM_BOOT_BYTES") // 1024, 1,
-                {"SOC_MEM": "sdram", "FRAME_DRAM": 1, "FB": "640x480"})]
+    on_chip = {"SOC_MEM": "ram"}
+    builds = [("default", "tetra", soc_map_value("SOC_RAM_BOOT_BYTES") // 1024, 1,
+               {"SOC_MEM": "sdram", "FRAME_DRAM": 1, "FB": "640x480"})]
+    builds += [("on-chip", "tetra", default_kib(), 0, on_chip), ("on-chip-zbuf", "tetra", default_kib(), 1, on_chip)]
+    builds += [(f"{s}-lean", s, kib[s], 0, on_chip) for s in args.scenes]
+    builds += [(f"zbuf-{smallest}-lean", smallest, kib[smallest], 1, on_chip)]
 
     for name, scene, ram, zbuf, more in builds:
         status, _ = make(args, ["board-fw"], {"BOARD": "ulx3s", "SCENE": scene, "SOC_RAM_KIB": ram, "BUILD": args.build, **more},

@@ -45,16 +45,36 @@ run_to "$work/term.out" 10 env TERM_PORT="$work/ttyUSB-none" bash boards/board_t
 expect_line "term: no serial port" "$work/term.out"
 
 # The frames' options: in the SDRAM only with the firmware there, 640x480 only in the SDRAM, and the
-# build's directory names the part and the frames.
-run_to "$work/dram-ram.out" 60 make --no-print-directory ulx3s-dir BOARD=ulx3s FRAME_DRAM=1 BUILD="$work/empty-build"
+# build's directory names the part and the frames. The board's default build (boards/ulx3s/defaults.mk):
+# everything in the SDRAM at 640x480 with the depth buffer; SOC_MEM=ram the on-chip build.
+ulx3s_dir() {  # NAME ARGS...: make ulx3s-dir's answer for ARGS, into $work/NAME.out
+    local name="$1"
+    shift
+    run_to "$work/$name.out" 60 make --no-print-directory ulx3s-dir BOARD=ulx3s "$@" BUILD="$work/empty-build"
+}
+ulx3s_dir dram-ram SOC_MEM=ram FRAME_DRAM=1
 [ "$status" -ne 0 ] || fail "FRAME_DRAM=1 with the firmware on chip was accepted"
 expect_line "FRAME_DRAM=1 keeps the frames in the SDRAM: it needs SOC_MEM=sdram" "$work/dram-ram.out"
-run_to "$work/fb640.out" 60 make --no-print-directory ulx3s-dir BOARD=ulx3s SOC_MEM=sdram FB=640x480 BUILD="$work/empty-build"
+ulx3s_dir fb640 SOC_MEM=sdram FRAME_DRAM=0 FB=640x480
 [ "$status" -ne 0 ] || fail "FB=640x480 with the frames on chip was accepted"
 expect_line "FB=640x480 on the board: .*FRAME_DRAM=1 SOC_MEM=sdram" "$work/fb640.out"
-run_to "$work/dir.out" 60 make --no-print-directory ulx3s-dir BOARD=ulx3s SOC_MEM=sdram FRAME_DRAM=1 FB=640x480 ZBUF=1 \
-    FPGA=12F BUILD="$work/empty-build"
+ulx3s_dir part SOC_MEM=sdram FRAME_DRAM=1 FB=640x480 ZBUF=1 FPGA=12F
 expect_status 0 "make ulx3s-dir with the frames in the SDRAM"
-expect_line "/board-ulx3s/tetra-16k-50mhz-z-sdram-dram-s16-f640-12f$" "$work/dir.out"
+expect_line "/board-ulx3s/tetra-16k-50mhz-z-sdram-dram-s16-f640-12f$" "$work/part.out"
+ulx3s_dir default
+expect_status 0 "make ulx3s-dir (the default build)"
+expect_line "/board-ulx3s/tetra-16k-50mhz-z-sdram-dram-s16-f640$" "$work/default.out"
+ulx3s_dir on-chip SOC_MEM=ram
+expect_status 0 "make ulx3s-dir SOC_MEM=ram"
+expect_line "/board-ulx3s/tetra-192k-50mhz$" "$work/on-chip.out"
+ulx3s_dir sdram-only SOC_MEM=sdram FRAME_DRAM=0
+expect_status 0 "make ulx3s-dir SOC_MEM=sdram FRAME_DRAM=0"
+expect_line "/board-ulx3s/tetra-16k-50mhz-sdram$" "$work/sdram-only.out"
+# Every other goal keeps the Makefile's defaults (the contract's frame, no depth buffer, the
+# firmware on chip) whatever the board's are.
+run_to "$work/defaults.out" 60 make -s --no-print-directory BOARD=ulx3s BUILD="$work/empty-build" \
+    --eval 'show-defaults: ; @echo "defaults: $(FB) $(ZBUF) $(SOC_MEM)"' show-defaults
+expect_status 0 "make show-defaults"
+expect_line "^defaults: 320x240 0 ram$" "$work/defaults.out"
 
-pass "boards-ulx3s-tools: $(echo "$ports" | wc -l) pins of ulx3s_top constrained once each; flash/load/term refuse clearly without a board; the frames' options checked"
+pass "boards-ulx3s-tools: $(echo "$ports" | wc -l) pins of ulx3s_top constrained once each; flash/load/term refuse clearly without a board; the frames' options and the board's defaults checked"

@@ -53,7 +53,7 @@ while IFS=$'\t' read -r way first second; do
         *" lean-report "*)
             expect_line '^\| [a-z]+ \| lean \| [0-9]+ \|.*\| yes \|$' "$out/make.log" ;;
         *" bitstream "*)
-            expect_line '^inputs: ulx3s_top from [0-9]+ sources, .*RAM image [0-9]+ words' "$out/make.log" ;;
+            expect_line '^inputs: ulx3s_(sdram_)?top from [0-9]+ sources, .*RAM image [0-9]+ words' "$out/make.log" ;;
         *" clean "*)
             [ ! -e "$out/build" ] && [ ! -e "$out/out" ] || fail "'make $first' left BUILD or OUT behind" ;;
         esac
