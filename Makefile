@@ -196,7 +196,7 @@ raster: $(GPUSIM)
 # Then the frames in external memory, every scene at 640x480 (bench/frame_dram_measured.sh).
 BENCH_DRAM_SIMS = $(BUILD)/sim-s16-f640-w8/gpusim $(BUILD)/sim-dram-s16-f640-w8/gpusim
 BENCH_SYS_HZ    = $(call soc_map_value,SOC_CLK_HZ_DEFAULT)
-bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM) $(FW_ELF) $(BENCH_DRAM_SIMS) $(FW_BENCH_STRIPS_ELFS)
+bench-gpu: $(BENCH_SIMS) $(ZBUF_SIM) $(GOURAUD_SIM) $(FW_ELF) $(BENCH_DRAM_SIMS) $(BUILD)/sim-f640-w8/gpusim $(FW_BENCH_STRIPS_ELFS)
 	@rm -rf $(BUILD)/bench-gpu/scene-lists && mkdir -p $(BUILD)/bench-gpu/scene-lists
 	@$(GPUSIM) cosim --fw $(FW_ELF) --frames $(BUILD)/bench-gpu/scene-frames --no-model-check \
 	  --dump-lists $(BUILD)/bench-gpu/scene-lists >/dev/null

@@ -18,6 +18,20 @@ triangles as Gouraud `gtri` with random vertex intensities, dithered (no depth t
   gtiny  - the tiny triangles, Gouraud shaded (each drawn one needs the intensity-plane division)
   large, tiny on that build again as flat `tri`: what building the interpolator in costs flat ones
 
+A second table: the large triangles at the contract's largest frame (640x480: every coordinate
+doubled, four times the pixels), flat and depth-tested (zlarge), SPAN_W 8, on three GPUs with the
+depth buffer:
+  whole frame  sim-f640-w8: both frames and the depth buffer on chip, the batch drawn once
+  strips       sim-s16-f640-w8: strips of 16 rows on chip (colour and depth), flushed to frames on
+               chip that take a span a clock; `gpusim raster` rings the batch once per strip (30),
+               each strip's first batch clearing it (its 1,280 spans: a clear the whole frame does
+               not need here, counted apart)
+  SDRAM        sim-dram-s16-f640-w8: the same strips flushed through the model of LiteDRAM's 16-bit
+               native port (cosim/native_port_model.h, not throttled): 4 words a span, so a frame's
+               flush takes at least 153,600 clocks, whatever is drawn
+The busy cycles are PERF_BUSY_CYCLES summed over the batches (the last strip's flush runs on after
+the last, before the swap, and is not in them).
+
     bench_gpu.py BUILD SCENE_LISTS_DIR
 """
 import json
@@ -79,6 +93,69 @@ def write_scene(path, lists_dir):
                 f.write(batch.read())
 
 
+def write_doubled(path, src):
+    """The list src with every coordinate doubled (depths and colours kept): the same triangles on
+    a frame of twice the width and height."""
+    with open(src) as f, open(path, "w") as out:
+        for line in f:
+            v = line.split()
+            if v[0] == "tri":
+                xy, rest = v[1:7], v[7:]
+            else:  # ztri X0 Y0 Z0 X1 Y1 Z1 X2 Y2 Z2 C
+                xy, rest = [v[1], v[2], v[4], v[5], v[7], v[8]], [v[3], v[6], v[9], v[10]]
+            d = [str(2 * int(c)) for c in xy]
+            if v[0] == "tri":
+                out.write(" ".join(["tri"] + d + rest) + "\n")
+            else:
+                out.write(" ".join(["ztri", d[0], d[1], rest[0], d[2], d[3], rest[1], d[4], d[5], rest[2], rest[3]]) + "\n")
+
+
+def raster(sim, path, out):
+    subprocess.run([sim, "raster", "--in", path, "--out", out], check=True, stdout=subprocess.DEVNULL)
+    return json.load(open(os.path.join(out, "stats.json")))
+
+
+def frame_640_table(build, work, workloads, zworkloads):
+    big_w, big_h = 2 * FB_W, 2 * FB_H
+    lists = {}
+    for name, src in (("large", workloads["large"]), ("zlarge", zworkloads["zlarge"])):
+        lists[name] = os.path.join(work, "%s-%d.txt" % (name, big_w))
+        write_doubled(lists[name], src)
+    span_w = 8
+    gpus = [("whole frame", "sim-f%d-w%d" % (big_w, span_w)), ("strips of 16", "sim-s16-f%d-w%d" % (big_w, span_w)),
+            ("strips of 16, frames in SDRAM", "sim-dram-s16-f%d-w%d" % (big_w, span_w))]
+    rows = []
+    for label, ident in gpus:
+        busy = {}
+        for name, path in lists.items():
+            print("bench-gpu: %s at %dx%d, %s ..." % (name, big_w, big_h, label), file=sys.stderr, flush=True)
+            s = raster(os.path.join(build, ident, "gpusim"), path, os.path.join(work, "%s-%d-%s" % (name, big_w, ident)))
+            if not s["rtl_equals_model"]:
+                sys.exit("bench-gpu: %s on %s: RTL and model differ" % (name, ident))
+            strips = s["strip_rows"] and big_h // s["strip_rows"]
+            # The clears the list does not ask for: each strip's own (1,280 spans at 640x480), and the
+            # depth buffer's in a whole frame (one, for zlarge).
+            clears = big_w * big_h // span_w if (strips or name == "zlarge") else 0
+            busy[name] = s["busy_cycles"] - clears
+            rows.append((label, name, s["batches"], s["pixels"], s["busy_cycles"], clears, "dram" in ident))
+        rows.append((label, "zlarge / large, without the clears", None, None, busy["zlarge"] / busy["large"], None, None))
+    print()
+    print("| %dx%d, SPAN_W %d | workload | batches | pixels written | busy cycles | of which clears | covered px/clk "
+          "| without the clears |" % (big_w, big_h, span_w))
+    print("|---|---|---:|---:|---:|---:|---:|---:|")
+    # Behind the 16-bit port each span is SPAN_W / 2 words: a frame's flush is its pixels / 2 clocks,
+    # the strips' clears and drawing hidden under it (so not taken off).
+    flush_bound = big_w * big_h // 2
+    for label, name, batches, pixels, cycles, clears, behind_port in rows:
+        if batches is None:
+            print("| %s | %s | | | %.3f x | | | |" % (label, name, cycles))
+            continue
+        without = ("— (the flush: at least %d clocks)" % flush_bound if behind_port
+                   else "%.2f" % (pixels / (cycles - clears)))
+        print("| %s | %s | %d | %d | %d | %d | %.2f | %s |" % (label, name, batches, pixels, cycles, clears,
+                                                              pixels / cycles, without))
+
+
 def main():
     build, lists_dir = sys.argv[1], sys.argv[2]
     work = os.path.join(build, "bench-gpu")
@@ -106,8 +183,7 @@ def main():
         for name, path in loads.items():
             out = os.path.join(work, "%s-w%d" % (name.split()[0] + ("-g" if "(g" in name else ""), width))
             print("bench-gpu: %s, SPAN_W=%d ..." % (name, width), file=sys.stderr, flush=True)
-            subprocess.run([sim, "raster", "--in", path, "--out", out], check=True, stdout=subprocess.DEVNULL)
-            s = json.load(open(os.path.join(out, "stats.json")))
+            s = raster(sim, path, out)
             cycles = s["busy_cycles"] - (FB_W * FB_H // width if name.startswith("z") else 0)
             rows.append((name, width, s["prims_in"], s["pixels"], cycles, s["spans_visited"]))
 
@@ -116,6 +192,7 @@ def main():
     for name, width, prims, pixels, cycles, _ in rows:
         print("| %s | %d | %d | %d | %d | %.2f | %.2f |" % (name, width, prims, pixels, cycles,
                                                           pixels / cycles, cycles / max(prims, 1)))
+    frame_640_table(build, work, workloads, zworkloads)
 
 
 if __name__ == "__main__":

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# make bench-gpu, second table: the frames in external memory (FRAME_DRAM, contract "Frames in
+# make bench-gpu, third table: the frames in external memory (FRAME_DRAM, contract "Frames in
 # external memory"). Each scene's benchmark frames (FW_BENCH_FRAMES, default view, depth test on) at
 # 640x480 on two GPUs with a strip buffer of 16 rows: the frame on chip (ON_CHIP_GPU) and the frames
 # behind LiteDRAM's native port (DRAM_GPU, gpusim's model of the port, cosim/native_port_model.h,

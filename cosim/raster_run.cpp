@@ -4,6 +4,12 @@
 // row-major, top row first), the RTL's
 // frame as DIR/rtl.png (captured from the VGA pins) and DIR/stats.json (counters and cycles). The RTL's
 // indices are read back from the VGA colours through a palette that gives every index its own colour.
+// On a GPU with a strip buffer (STRIP_ROWS > 0: it draws one strip of rows at a time, contract "The
+// strip buffer") the list is drawn strip by strip, as the GPU walks a batch once per strip
+// (firmware's FW_STRIP_WALK): every batch again for each strip, STRIP set to its rows, the strip's
+// first batch clearing it (the list's clear colour, else 0: a frame's power-on contents) and its
+// depths where the list tests depth; the swap with the last strip's last batch. A list without a
+// clear so draws what it draws on a GPU without strips, on a frame that starts cleared to 0.
 // Exit status: 0 equal, 1 RTL and model differ, 2 bad input.
 #include <cerrno>
 #include <cstdio>
@@ -84,52 +90,65 @@ int raster_main(int argc, char **argv)
     }
 
     const std::vector<Batch> batches = prim_list_batches(ops, GPU_VTX_CAP, GPU_TRI_CAP);
+    const uint32_t fb_rows = model.model()->cfg.fb_height;
+    const uint32_t strip_rows = sim.read(GPU_REG_STRIP_ROWS);  // 0: the whole frame at once
+    const uint32_t strips = strip_rows == 0 ? 1 : (fb_rows + strip_rows - 1) / strip_rows;
     Counters total;
-    for (size_t k = 0; k < batches.size(); k++) {
-        const Batch &b = batches[k];
-        for (size_t w = 0; w < b.vtx.size(); w++) {
-            write(GPU_WIN_VTX + 4 * static_cast<uint32_t>(w), b.vtx[w]);
+    uint32_t tag = 0;
+    for (uint32_t strip = 0; strip < strips; strip++) {
+        for (size_t k = 0; k < batches.size(); k++) {
+            const Batch &b = batches[k];
+            if (strip == 0 || batches.size() > 1) {  // one batch stays in the GPU's buffers
+                for (size_t w = 0; w < b.vtx.size(); w++) {
+                    write(GPU_WIN_VTX + 4 * static_cast<uint32_t>(w), b.vtx[w]);
+                }
+                for (size_t w = 0; w < b.idx.size(); w++) {
+                    write(GPU_WIN_IDX + 4 * static_cast<uint32_t>(w), b.idx[w]);
+                }
+            }
+            const bool last = strip + 1 == strips && k + 1 == batches.size();
+            const bool opens = strip_rows != 0 && k == 0;  // the strip's first batch clears it
+            write(GPU_REG_VTX_BASE, 0);
+            write(GPU_REG_VTX_COUNT, static_cast<uint32_t>(b.vtx.size() / 2));
+            write(GPU_REG_TRI_BASE, 0);
+            write(GPU_REG_TRI_COUNT, static_cast<uint32_t>(b.idx.size() / 2));
+            write(GPU_REG_CLEAR_COLOR, b.clear ? b.clear_color : 0);
+            uint32_t ctrl = (b.clear || opens ? GPU_CTRL_CLEAR_MASK : 0) | (last ? GPU_CTRL_SWAP_MASK : 0);
+            if (b.dither) {
+                ctrl |= GPU_CTRL_DITHER_MASK;
+            }
+            if (b.depth) {
+                ctrl |= GPU_CTRL_ZTEST_MASK | ((b.clear || k == 0) ? GPU_CTRL_ZCLEAR_MASK : 0);
+            }
+            if (strip_rows != 0) {
+                const uint32_t first = strip * strip_rows;
+                write(GPU_REG_STRIP, first << GPU_STRIP_FIRST_LSB | (first + strip_rows - 1) << GPU_STRIP_LAST_LSB);
+            }
+            write(GPU_REG_CTRL, ctrl);
+            tag++;
+            write(GPU_REG_DOORBELL, tag);
+            if (!sim.wait_done(tag, 2000000000ull)) {
+                std::fprintf(stderr, "raster: GPU timeout in batch %zu (strip %u)\n", k, strip);
+                return 1;
+            }
+            const std::string diff = model.compare_registers(sim);
+            if (!diff.empty()) {
+                std::fprintf(stderr, "raster: batch %zu (strip %u): RTL and model differ: %s\n", k, strip, diff.c_str());
+                return 1;
+            }
+            total.batches++;
+            total.busy_cycles += sim.read(GPU_REG_PERF_BUSY_CYCLES);
+            total.prims_in += sim.read(GPU_REG_PERF_TRIS_IN);
+            total.drawn += sim.read(GPU_REG_PERF_TRIS_DRAWN);
+            total.rejected += sim.read(GPU_REG_PERF_TRIS_REJECTED);
+            total.pixels += sim.read(GPU_REG_PERF_PIXELS);
+            total.samples += sim.read(GPU_REG_PERF_SAMPLES);
+            total.spans_written += sim.read(GPU_REG_PERF_SPANS_WRITTEN);
+            total.spans_visited += sim.read(GPU_REG_PERF_SPANS_VISITED);
+            total.errors |= sim.read(GPU_REG_ERRORS);
         }
-        for (size_t w = 0; w < b.idx.size(); w++) {
-            write(GPU_WIN_IDX + 4 * static_cast<uint32_t>(w), b.idx[w]);
-        }
-        const bool last = k + 1 == batches.size();
-        write(GPU_REG_VTX_BASE, 0);
-        write(GPU_REG_VTX_COUNT, static_cast<uint32_t>(b.vtx.size() / 2));
-        write(GPU_REG_TRI_BASE, 0);
-        write(GPU_REG_TRI_COUNT, static_cast<uint32_t>(b.idx.size() / 2));
-        write(GPU_REG_CLEAR_COLOR, b.clear_color);
-        uint32_t ctrl = (b.clear ? GPU_CTRL_CLEAR_MASK : 0) | (last ? GPU_CTRL_SWAP_MASK : 0);
-        if (b.dither) {
-            ctrl |= GPU_CTRL_DITHER_MASK;
-        }
-        if (b.depth) {
-            ctrl |= GPU_CTRL_ZTEST_MASK | ((b.clear || k == 0) ? GPU_CTRL_ZCLEAR_MASK : 0);
-        }
-        write(GPU_REG_CTRL, ctrl);
-        const uint32_t tag = static_cast<uint32_t>(k + 1);
-        write(GPU_REG_DOORBELL, tag);
-        if (!sim.wait_done(tag, 2000000000ull)) {
-            std::fprintf(stderr, "raster: GPU timeout in batch %zu\n", k);
-            return 1;
-        }
-        const std::string diff = model.compare_registers(sim);
-        if (!diff.empty()) {
-            std::fprintf(stderr, "raster: batch %zu: RTL and model differ: %s\n", k, diff.c_str());
-            return 1;
-        }
-        total.batches++;
-        total.busy_cycles += sim.read(GPU_REG_PERF_BUSY_CYCLES);
-        total.prims_in += sim.read(GPU_REG_PERF_TRIS_IN);
-        total.drawn += sim.read(GPU_REG_PERF_TRIS_DRAWN);
-        total.rejected += sim.read(GPU_REG_PERF_TRIS_REJECTED);
-        total.pixels += sim.read(GPU_REG_PERF_PIXELS);
-        total.samples += sim.read(GPU_REG_PERF_SAMPLES);
-        total.spans_written += sim.read(GPU_REG_PERF_SPANS_WRITTEN);
-        total.spans_visited += sim.read(GPU_REG_PERF_SPANS_VISITED);
-        total.errors |= sim.read(GPU_REG_ERRORS);
     }
-    if (!sim.capture_frame(3ull * 800 * 525 * 4)) {
+    if (!sim.capture_frame(3 * GpuSim::kScanClocks)) {
         std::fprintf(stderr, "raster: no frame from the VGA pins: %s\n", sim.vga_error());
         return 1;
     }
@@ -177,12 +196,12 @@ int raster_main(int argc, char **argv)
     FILE *json = std::fopen((dir + "stats.json").c_str(), "w");
     if (json != nullptr) {
         std::fprintf(json,
-                     "{\n  \"primitives_listed\": %zu,\n  \"batches\": %llu,\n  \"span_width\": %u,\n"
+                     "{\n  \"primitives_listed\": %zu,\n  \"batches\": %llu,\n  \"strip_rows\": %u,\n  \"span_width\": %u,\n"
                      "  \"busy_cycles\": %llu,\n  \"simulated_cycles\": %llu,\n  \"prims_in\": %llu,\n"
                      "  \"prims_drawn\": %llu,\n  \"prims_rejected\": %llu,\n  \"pixels\": %llu,\n"
                      "  \"samples\": %llu,\n  \"spans_written\": %llu,\n  \"spans_visited\": %llu,\n"
                      "  \"errors\": %u,\n  \"rtl_equals_model\": %s,\n  \"pixels_differing\": %ld\n}\n",
-                     ops.size(), static_cast<unsigned long long>(total.batches),
+                     ops.size(), static_cast<unsigned long long>(total.batches), strip_rows,
                      (sim.read(GPU_REG_CAPS) & GPU_CAPS_SPAN_W_MASK) >> GPU_CAPS_SPAN_W_LSB,
                      static_cast<unsigned long long>(total.busy_cycles), static_cast<unsigned long long>(sim.cycles()),
                      static_cast<unsigned long long>(total.prims_in), static_cast<unsigned long long>(total.drawn),

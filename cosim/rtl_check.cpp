@@ -357,7 +357,7 @@ int rtl_check_main(int argc, char **argv)
             back_checks++;
         }
         if (diff.empty() && swap) {
-            if (!sim.capture_frame(3ull * 800 * 525 * 4)) {
+            if (!sim.capture_frame(3 * GpuSim::kScanClocks)) {
                 diff = std::string("no VGA frame: ") + sim.vga_error();
             } else {
                 diff = model.compare_frame(sim.frame_rgb());
