@@ -9,6 +9,8 @@ SOC_VENV      := .venv/.requirements.sha256
 SOC_CPU_V      = $(shell .venv/bin/python -c 'import os, pythondata_cpu_vexriscv as p; print(os.path.join(p.data_location, "VexRiscv_Full.v"))')
 SOC_FILES     := soc_rtl/files.f
 SOC_RTL_V     := $(shell sed -e 's://.*::' $(SOC_FILES))
+# The headers its systems include (the SDRAM's and the GPU frames' port bundles, the no-SDRAM ties).
+SOC_RTL_VH    := $(wildcard soc_rtl/*.vh)
 SOC_LINT      := soc_rtl/lint.vlt
 # Everything under soc_top, in compilation order: the GPU's list, the core, the SoC's list.
 SOC_VFLAGS     = $(RTL_LINT) $(SOC_LINT) -f $(RTL_FILES) $(SOC_CPU_V) -f $(SOC_FILES)

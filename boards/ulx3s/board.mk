@@ -182,8 +182,8 @@ synth-board: board-fw $(ULX3S_MEM_DEPS)
 
 # The flow's netlists as files, remade when a source, the constraints or the firmware changed: after
 # synthesis (the flow stopped there) and after place and route (the whole flow, the .bit too).
-ULX3S_SOURCES = $(RTL_V) $(SOC_RTL_V) $(SOC_CPU_V) $(foreach f,boards/ulx3s/files.f $(ULX3S_TOP_F),$(f) \
-  $(shell sed -e 's://.*::' $(f))) contract/gpu_build_params.vh contract/gpu_regs.vh contract/soc_map.vh soc_rtl/soc_top_no_sdram.vh \
+ULX3S_SOURCES = $(RTL_V) $(SOC_RTL_V) $(SOC_RTL_VH) $(SOC_CPU_V) $(foreach f,boards/ulx3s/files.f $(ULX3S_TOP_F),$(f) \
+  $(shell sed -e 's://.*::' $(f))) contract/gpu_build_params.vh contract/gpu_regs.vh contract/soc_map.vh \
   boards/ulx3s/ulx3s.lpf synth/ecp5_bitstream.py $(if $(SOC_MEM_SUFFIX),$(ULX3S_MEM_DEPS),$(ULX3S_FW_ELF).hex)
 $(ULX3S_DIR)/$(ULX3S_TOP).json: $(ULX3S_SOURCES)
 	@bash tools/setup.sh

@@ -18,6 +18,7 @@
 // parameters (contract/gpu_build_params.vh) are passed through, as in ulx3s_top.
 `include "contract/gpu_build_params.vh"
 `include "soc_rtl/soc_gpu_mem.vh"
+`include "soc_rtl/soc_sdram_bus.vh"
 `default_nettype none
 
 module ulx3s_sdram_top #(
@@ -25,9 +26,7 @@ module ulx3s_sdram_top #(
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_BOOT_BYTES,        // the boot program's on-chip RAM
     parameter integer SDRAM_BYTES = soc_pkg::SOC_SDRAM_DEFAULT_BYTES, // the generated controller's chip
     parameter RAM_INIT = "",                                          // the boot program's RAM image
-    `GPU_BUILD_PARAMS,                                                // the GPU's (ulx3s_system)
-    localparam integer SDRAM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),
-    localparam integer SDRAM_CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4)
+    `GPU_BUILD_PARAMS                                                 // the GPU's (ulx3s_system)
 ) (
     input  wire        clk_25mhz,      // G2
     // FT231X USB serial
@@ -73,15 +72,7 @@ module ulx3s_sdram_top #(
     wire [7:0] exit_code;
     // soc_top's SDRAM ports, between ulx3s_system and soc_sdram (clk_sys)
     wire                     sdram_rst;
-    wire                     s_cyc, s_stb, s_we, s_ack, s_err;
-    wire [SDRAM_AW-1:0]      s_adr;
-    wire [31:0]              s_dat_w, s_dat_r;
-    wire [3:0]               s_sel;
-    wire [2:0]               s_cti;
-    wire                     c_cyc, c_stb, c_we, c_ack, c_err;
-    wire [SDRAM_CTRL_AW-1:0] c_adr;
-    wire [31:0]              c_dat_w, c_dat_r;
-    wire [3:0]               c_sel;
+    `SOC_SDRAM_BUS_WIRES  // (soc_rtl/soc_sdram_bus.vh)
     wire                     flash_sck;
     `SOC_GPU_MEM_WIRES   // the GPU's frames (FRAME_DRAM): soc_top to LiteDRAM (soc_rtl/soc_gpu_mem.vh)
     ulx3s_system #(
@@ -102,25 +93,7 @@ module ulx3s_sdram_top #(
         .tmds_d0          (tmds_d0),
         .tmds_d1          (tmds_d1),
         .sdram_rst        (sdram_rst),
-        .sdram_cyc        (s_cyc),
-        .sdram_stb        (s_stb),
-        .sdram_we         (s_we),
-        .sdram_adr        (s_adr),
-        .sdram_dat_w      (s_dat_w),
-        .sdram_sel        (s_sel),
-        .sdram_cti        (s_cti),
-        .sdram_dat_r      (s_dat_r),
-        .sdram_ack        (s_ack),
-        .sdram_err        (s_err),
-        .sdram_ctrl_cyc   (c_cyc),
-        .sdram_ctrl_stb   (c_stb),
-        .sdram_ctrl_we    (c_we),
-        .sdram_ctrl_adr   (c_adr),
-        .sdram_ctrl_dat_w (c_dat_w),
-        .sdram_ctrl_sel   (c_sel),
-        .sdram_ctrl_dat_r (c_dat_r),
-        .sdram_ctrl_ack   (c_ack),
-        .sdram_ctrl_err   (c_err),
+        `SOC_SDRAM_BUS_PORTS,
         .flash_cs_n       (flash_csn),
         .flash_sck        (flash_sck),
         .flash_mosi       (flash_mosi),
@@ -139,25 +112,7 @@ module ulx3s_sdram_top #(
         .clk              (clk_sys),
         .rst              (sdram_rst),
         .init_done        (sdram_init_done),
-        .sdram_cyc        (s_cyc),
-        .sdram_stb        (s_stb),
-        .sdram_we         (s_we),
-        .sdram_adr        (s_adr),
-        .sdram_dat_w      (s_dat_w),
-        .sdram_sel        (s_sel),
-        .sdram_cti        (s_cti),
-        .sdram_dat_r      (s_dat_r),
-        .sdram_ack        (s_ack),
-        .sdram_err        (s_err),
-        .sdram_ctrl_cyc   (c_cyc),
-        .sdram_ctrl_stb   (c_stb),
-        .sdram_ctrl_we    (c_we),
-        .sdram_ctrl_adr   (c_adr),
-        .sdram_ctrl_dat_w (c_dat_w),
-        .sdram_ctrl_sel   (c_sel),
-        .sdram_ctrl_dat_r (c_dat_r),
-        .sdram_ctrl_ack   (c_ack),
-        .sdram_ctrl_err   (c_err),
+        `SOC_SDRAM_BUS_PORTS,
         `SOC_GPU_MEM_PORTS,
         .pin_a            (sdram_a),
         .pin_ba           (sdram_ba),

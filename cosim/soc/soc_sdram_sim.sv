@@ -10,6 +10,7 @@
 // registered enable in LiteDRAM's GENSDRPHY) for the chip model.
 `include "contract/gpu_build_params.vh"
 `include "soc_rtl/soc_gpu_mem.vh"
+`include "soc_rtl/soc_sdram_bus.vh"
 `default_nettype none
 
 module soc_sdram_sim #(
@@ -58,18 +59,8 @@ module soc_sdram_sim #(
     output wire        flash_mosi,
     input  wire        flash_miso
 );
-    localparam integer AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4);
-    localparam integer CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4);
 
-    wire               s_cyc, s_stb, s_we, s_ack, s_err;
-    wire [AW-1:0]      s_adr;
-    wire [31:0]        s_dat_w, s_dat_r;
-    wire [3:0]         s_sel;
-    wire [2:0]         s_cti;
-    wire               c_cyc, c_stb, c_we, c_ack, c_err;
-    wire [CTRL_AW-1:0] c_adr;
-    wire [31:0]        c_dat_w, c_dat_r;
-    wire [3:0]         c_sel;
+    `SOC_SDRAM_BUS_WIRES  // soc_top's SDRAM ports to soc_sdram (soc_rtl/soc_sdram_bus.vh)
     `SOC_GPU_MEM_WIRES   // the GPU's frames (FRAME_DRAM): soc_top to LiteDRAM (soc_rtl/soc_gpu_mem.vh)
 
     soc_top #(
@@ -81,19 +72,14 @@ module soc_sdram_sim #(
         .clk (clk), .clk_pix (clk_pix), .ext_rst (ext_rst), .uart_rx (uart_rx), .uart_tx (uart_tx),
         .vga_pix_stb (vga_pix_stb), .vga_de (vga_de), .vga_hsync_n (vga_hsync_n),
         .vga_vsync_n (vga_vsync_n), .vga_r (vga_r), .vga_g (vga_g), .vga_b (vga_b),
-        .sdram_cyc (s_cyc), .sdram_stb (s_stb), .sdram_we (s_we), .sdram_adr (s_adr),
-        .sdram_dat_w (s_dat_w), .sdram_sel (s_sel), .sdram_cti (s_cti), .sdram_dat_r (s_dat_r),
-        .sdram_ack (s_ack), .sdram_err (s_err),
-        .sdram_ctrl_cyc (c_cyc), .sdram_ctrl_stb (c_stb), .sdram_ctrl_we (c_we), .sdram_ctrl_adr (c_adr),
-        .sdram_ctrl_dat_w (c_dat_w), .sdram_ctrl_sel (c_sel), .sdram_ctrl_dat_r (c_dat_r),
-        .sdram_ctrl_ack (c_ack), .sdram_ctrl_err (c_err),
+        `SOC_SDRAM_BUS_PORTS,
         .flash_cs_n (flash_cs_n), .flash_sck (flash_sck), .flash_mosi (flash_mosi), .flash_miso (flash_miso),
         `SOC_GPU_MEM_PORTS,
         .leds (leds), .gpu_frame_swapped (gpu_frame_swapped), .gpu_error (gpu_error),
         .exit_valid (exit_valid), .exit_code (exit_code)
     );
 
-    assign sdram_busy = s_cyc && s_stb;
+    assign sdram_busy = sdram_wb_cyc && sdram_wb_stb;
 
     wire [15:0] dq;
     assign dq = chip_dq_oe ? chip_dq : 16'bz;
@@ -104,12 +90,7 @@ module soc_sdram_sim #(
         .SDRAM_BYTES (SDRAM_BYTES)
     ) u_sdram (
         .clk (clk), .rst (ext_rst), .init_done (sdram_init_done),
-        .sdram_cyc (s_cyc), .sdram_stb (s_stb), .sdram_we (s_we), .sdram_adr (s_adr),
-        .sdram_dat_w (s_dat_w), .sdram_sel (s_sel), .sdram_cti (s_cti), .sdram_dat_r (s_dat_r),
-        .sdram_ack (s_ack), .sdram_err (s_err),
-        .sdram_ctrl_cyc (c_cyc), .sdram_ctrl_stb (c_stb), .sdram_ctrl_we (c_we), .sdram_ctrl_adr (c_adr),
-        .sdram_ctrl_dat_w (c_dat_w), .sdram_ctrl_sel (c_sel), .sdram_ctrl_dat_r (c_dat_r),
-        .sdram_ctrl_ack (c_ack), .sdram_ctrl_err (c_err),
+        `SOC_SDRAM_BUS_PORTS,
         `SOC_GPU_MEM_PORTS,
         .pin_a (sdram_a), .pin_ba (sdram_ba), .pin_cs_n (sdram_cs_n), .pin_ras_n (sdram_ras_n),
         .pin_cas_n (sdram_cas_n), .pin_we_n (sdram_we_n), .pin_cke (sdram_cke), .pin_dqm (sdram_dqm),

@@ -35,7 +35,7 @@ SOC_FW_ELF   := $(SOC_FW_DIR)/$(SCENE)$(if $(filter float,$(FW_BACKEND)),-float)
 SOC_FW_MAKE   = $(MAKE) --no-print-directory FW_PLATFORM=soc BUILD=$(BUILD) SOC_RAM_KIB=$(SOC_RAM_KIB) \
                 SOC_MEM=$(SOC_MEM) FW_DIR=$(SOC_FW_DIR)
 
-SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_LINT) $(RTL_V) $(RTL_FILES) contract/gpu_regs.vh \
+SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_RTL_VH) $(SOC_LINT) $(RTL_V) $(RTL_FILES) contract/gpu_regs.vh \
                contract/soc_map.vh contract/soc_map.h $(SOCSIM_SRC) $(SOCSIM_SV) $(wildcard cosim/soc/*.h) \
                $(wildcard cosim/*.h) $(COSIM_C_LIB) $(GPU_MODEL_LIB) $(VERILATOR_RT)
 
@@ -50,8 +50,9 @@ socsim_cmd = $(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign
            $(6) $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract) $$(pkg-config --cflags sdl2)" \
   -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng sdl2) $(abspath $(VERILATOR_RT))" \
   --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1 CXX=$(SIM_CXX) LINK=$(SIM_CXX) $(VERILATOR_RT_MAKE)" --Mdir $(1)/obj -o $(abspath $(1))/socsim
-# The systems a socsim build Verilates: soc_top (the pixel clock tied to the system clock), and the
-# ULX3S's (boards/ulx3s/ulx3s_system on its three clocks, the monitor on the TMDS pairs).
+# The systems a socsim build Verilates: soc_top (the pixel clock tied to the system clock), the
+# ULX3S's (boards/ulx3s/ulx3s_system on its three clocks, the monitor on the TMDS pairs), each with
+# the SDRAM too (below: sdram, ulx3s-sdram, the board's default build's memory system).
 # Each system's top and parameters, further sources, -CFLAGS definitions and prerequisites (the
 # names mk/gen_builds.py's rules use for a table build of that system).
 SOCSIM_SYSTEM_soc         = soc_top $(SOC_SIM_TIED)
@@ -62,7 +63,7 @@ SOCSIM_SYSTEM_ulx3s       = ulx3s_system
 ULX3S_SIM_FILES          := boards/ulx3s/files.f
 SOCSIM_SOURCES_ulx3s      = -f $(ULX3S_SIM_FILES) $(abspath cosim/soc/tmds_decoder.cpp)
 SOCSIM_CFLAGS_ulx3s      := -DSOCSIM_BOARD_ULX3S
-SOCSIM_PREREQS_ulx3s     := $(ULX3S_SIM_FILES) $(shell sed -e 's://.*::' $(ULX3S_SIM_FILES)) cosim/soc/tmds_decoder.cpp soc_rtl/soc_top_no_sdram.vh
+SOCSIM_PREREQS_ulx3s     := $(ULX3S_SIM_FILES) $(shell sed -e 's://.*::' $(ULX3S_SIM_FILES)) cosim/soc/tmds_decoder.cpp
 # With SDRAM (cosim/soc/soc_sdram_sim.sv): soc_top and LiteDRAM's controller generated at the
 # simulated clock for the contract's SDRAM size (soc_rtl/litedram), the chip played by socsim
 # (cosim/sdram/sdram_chip.h), -DSOCSIM_SDRAM.
