@@ -132,10 +132,9 @@ def frame_640_table(build, work, workloads, zworkloads):
             s = raster(os.path.join(build, ident, "gpusim"), path, os.path.join(work, "%s-%d-%s" % (name, big_w, ident)))
             if not s["rtl_equals_model"]:
                 sys.exit("bench-gpu: %s on %s: RTL and model differ" % (name, ident))
-            strips = s["strip_rows"] and big_h // s["strip_rows"]
             # The clears the list does not ask for: each strip's own (1,280 spans at 640x480), and the
             # depth buffer's in a whole frame (one, for zlarge).
-            clears = big_w * big_h // span_w if (strips or name == "zlarge") else 0
+            clears = big_w * big_h // span_w if (s["strip_rows"] or name == "zlarge") else 0
             busy[name] = s["busy_cycles"] - clears
             rows.append((label, name, s["batches"], s["pixels"], s["busy_cycles"], clears, "dram" in ident))
         rows.append((label, "zlarge / large, without the clears", None, None, busy["zlarge"] / busy["large"], None, None))

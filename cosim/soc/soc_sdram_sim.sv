@@ -3,14 +3,13 @@
 // chip's pins out to socsim, which plays the chip (cosim/sdram/sdram_chip.h) on them, and soc_top's
 // flash pins likewise (cosim/flash/spi_flash.h).
 //
-// The ports are soc_top's but the SDRAM's, so socsim drives either system with the same code; DQ is
-// split as tests/sdram/litedram_tb_top.sv splits it: the controller's drive through its TRELLIS_IO
-// buffers (cosim/sdram/ecp5/TRELLIS_IO.v), the chip's through chip_dq/chip_dq_oe, the resolved bus
-// and which side the controller is on (ctrl_dq_oe: the tristate of DQ bit 0, all 16 share one
-// registered enable in LiteDRAM's GENSDRPHY) for the chip model.
+// The ports are soc_top's but the SDRAM's, so socsim drives either system with the same code; the
+// controller and its pins as cosim/soc/soc_sdram_chip_model.vh makes them (DQ split for the chip
+// model).
 `include "contract/gpu_build_params.vh"
 `include "soc_rtl/soc_gpu_mem.vh"
 `include "soc_rtl/soc_sdram_bus.vh"
+`include "cosim/soc/soc_sdram_chip_model.vh"
 `default_nettype none
 
 module soc_sdram_sim #(
@@ -79,23 +78,7 @@ module soc_sdram_sim #(
         .exit_valid (exit_valid), .exit_code (exit_code)
     );
 
-    assign sdram_busy = sdram_wb_cyc && sdram_wb_stb;
-
-    wire [15:0] dq;
-    assign dq = chip_dq_oe ? chip_dq : 16'bz;
-    assign sdram_dq_pins = dq;
-    assign ctrl_dq_oe = !u_sdram.u_core.TRELLIS_IO.T;
-
-    soc_sdram #(
-        .SDRAM_BYTES (SDRAM_BYTES)
-    ) u_sdram (
-        .clk (clk), .rst (ext_rst), .init_done (sdram_init_done),
-        `SOC_SDRAM_BUS_PORTS,
-        `SOC_GPU_MEM_PORTS,
-        .pin_a (sdram_a), .pin_ba (sdram_ba), .pin_cs_n (sdram_cs_n), .pin_ras_n (sdram_ras_n),
-        .pin_cas_n (sdram_cas_n), .pin_we_n (sdram_we_n), .pin_cke (sdram_cke), .pin_dqm (sdram_dqm),
-        .pin_dq (dq)
-    );
+    `SOC_SDRAM_FOR_CHIP_MODEL(clk, ext_rst)   // LiteDRAM, its pins to socsim (cosim/soc/soc_sdram_chip_model.vh)
 endmodule
 
 `default_nettype wire

@@ -79,7 +79,7 @@ SOCSIM_SOURCES_sdram      = soc_rtl/litedram/lint.vlt soc_rtl/litedram/sdram_wb_
                             $(abspath cosim/flash/spi_flash.cpp)
 SOCSIM_CFLAGS_sdram      := -DSOCSIM_SDRAM -I$(CURDIR)/cosim/sdram -I$(CURDIR)/cosim/flash
 SOCSIM_PREREQS_sdram     := $(LITEDRAM_SIM_V) soc_rtl/litedram/lint.vlt soc_rtl/litedram/sdram_wb_burst.v soc_rtl/litedram/soc_sdram.v \
-                            cosim/soc/soc_sdram_sim.sv $(wildcard cosim/sdram/ecp5/*.v) cosim/sdram/sdram_chip.cpp \
+                            cosim/soc/soc_sdram_sim.sv cosim/soc/soc_sdram_chip_model.vh $(wildcard cosim/sdram/ecp5/*.v) cosim/sdram/sdram_chip.cpp \
                             cosim/sdram/sdram_chip.h cosim/sdram/sdram_pins.h cosim/flash/spi_flash.cpp cosim/flash/spi_flash.h
 # The ULX3S build with SDRAM (cosim/soc/ulx3s_sdram_sim.sv): ulx3s_system on its three clocks with
 # the same controller and chip on its SDRAM ports, the flash on its flash pins, the board's DVI

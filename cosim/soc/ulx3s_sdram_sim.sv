@@ -7,12 +7,11 @@
 // pairs) and the SDRAM clock's output register (the chip model is clocked on the system clock's
 // falling edge, the phase docs/sdram.md argues).
 //
-// The chip's pins are named as soc_sdram_sim names them (cosim/sdram/sdram_pins.h), DQ split the
-// same way: the controller's drive through its TRELLIS_IO buffers, the chip's through chip_dq and
-// chip_dq_oe.
+// The controller and the chip's pins as in soc_sdram_sim (cosim/soc/soc_sdram_chip_model.vh).
 `include "contract/gpu_build_params.vh"
 `include "soc_rtl/soc_gpu_mem.vh"
 `include "soc_rtl/soc_sdram_bus.vh"
+`include "cosim/soc/soc_sdram_chip_model.vh"
 `default_nettype none
 
 module ulx3s_sdram_sim #(
@@ -77,23 +76,7 @@ module ulx3s_sdram_sim #(
         .exit_valid (exit_valid), .exit_code (exit_code)
     );
 
-    assign sdram_busy = sdram_wb_cyc && sdram_wb_stb;
-
-    wire [15:0] dq;
-    assign dq = chip_dq_oe ? chip_dq : 16'bz;
-    assign sdram_dq_pins = dq;
-    assign ctrl_dq_oe = !u_sdram.u_core.TRELLIS_IO.T;
-
-    soc_sdram #(
-        .SDRAM_BYTES (SDRAM_BYTES)
-    ) u_sdram (
-        .clk (clk_sys), .rst (sdram_rst), .init_done (sdram_init_done),
-        `SOC_SDRAM_BUS_PORTS,
-        `SOC_GPU_MEM_PORTS,
-        .pin_a (sdram_a), .pin_ba (sdram_ba), .pin_cs_n (sdram_cs_n), .pin_ras_n (sdram_ras_n),
-        .pin_cas_n (sdram_cas_n), .pin_we_n (sdram_we_n), .pin_cke (sdram_cke), .pin_dqm (sdram_dqm),
-        .pin_dq (dq)
-    );
+    `SOC_SDRAM_FOR_CHIP_MODEL(clk_sys, sdram_rst)   // LiteDRAM, its pins to socsim (cosim/soc/soc_sdram_chip_model.vh)
 endmodule
 
 `default_nettype wire

@@ -59,7 +59,7 @@ dram_scene() {
     local s="$1" elf="$BUILD/fw-test-soc-sdram/$1-2f.elf" host="$BUILD/fw-test/host-$1" f sum
     sum="$work/$s.dram.summary"
     need_file "$elf.img" "$host"
-    run_to "$work/$s.dram-host.uart" 300 "$host" --frame 640x480 --zbuf --gouraud --keys-at 1:z --frames "$work/$s-dram-host"
+    run_to "$work/$s.dram-host.uart" 300 "$host" "${dram_host_frame[@]}" --keys-at 1:z --frames "$work/$s-dram-host"
     expect_status 0 "host build of $s at 640x480"
     run_to "$work/$s.dram.out" 600 "$dram_sim" --boot "$boot" --stop-frames 2 --fw "$elf" --frames "$work/$s-dram" \
         --uart-log "$work/$s.dram.uart" --keys-at 1:z --summary "$sum"

@@ -4,6 +4,9 @@
 #   $soc_test_dir        the FW_PLATFORM=soc test builds (<scene>.elf, tetra-watchdog-tiny.elf, bus_error.elf)
 socsim=${SOCSIM:-$BUILD/socsim-192k/socsim}
 soc_test_dir=$BUILD/fw-test-soc
+# The host build's options for the GPU of the systems with the frames in the SDRAM
+# (socsim-sdram-dram, socsim-ulx3s-sdram-dram in mk/builds.toml: 640x480, depth, Gouraud).
+dram_host_frame=(--frame 640x480 --zbuf --gouraud)
 #
 #   soc_test PROGRAM NAME          $elf: the soc test build PROGRAM (it and socsim must exist);
 #                                  $work: the empty run folder NAME (fresh_dir)

@@ -47,7 +47,7 @@ if [ "${1:-}" = sdram ]; then
     soc_test_dir=$BUILD/fw-test-soc-sdram
     boot=(--boot "$BUILD/soc/boot-fast.elf.hex")  # its random fill 16 KiB: the scenes are the subject here
     short=(--stop-frames 2)
-    host_frame=(--frame 640x480 --zbuf --gouraud)  # the GPU socsim-sdram-dram builds
+    host_frame=("${dram_host_frame[@]}")
     keys='1:z'
     counts='s/ drawn .*//'
     need_file "${boot[1]}"
