@@ -1,4 +1,4 @@
-# tests/formal/formal.mk — formal checks of the RTL (tests/formal/*.sby, yowasp-sby with Debian's z3):
+# tests/formal/formal.mk — formal checks of the RTL (tests/formal/*.sby, yowasp-sby with Yices 2 from the venv):
 #   make formal          every task of every check must pass (a table of results and seconds)
 #   make formal-broken   the deliberately broken copies of tests/formal/<check>.broken files must fail
 #   CHECK=<name>          only tests/formal/<name>.sby (both targets)

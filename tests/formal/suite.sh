@@ -1,17 +1,12 @@
 #!/usr/bin/env bash
-# make test's formal suite: every proof of make formal (tests/formal/*.sby) but the variants below,
-# and the first broken copy of each check (make formal-broken's short form), which must fail — so a
-# proof that stopped checking anything (a property compiled out, a solver that no longer runs) fails
-# the suite too. Left to make formal (variants of a proof that runs here, together about 60 s of
-# CPU): sdram_wb_burst's 32-bit native port (not built) and its invariant-free BMC, soc_spiflash's
-# SCK at clk/4 (not built) and its induction step as a BMC, gpu_strip_buffer's invariant-free BMC
-# (its broken copy runs it).
+# make test's formal suite: every task of make formal (tests/formal/*.sby), and the first broken
+# copy of each check (make formal-broken's short form), which must fail — so a proof that stopped
+# checking anything (a property compiled out, a solver that no longer runs) fails the suite too.
 source "$(dirname "$0")/../lib.sh"
 need BUILD
 work=$(fresh_dir formal)
 export VENV_BIN="$PWD/.venv/bin" BUILD="$work"
-SKIP_TASKS="sdram_wb_burst:n32 sdram_wb_burst:bmc soc_spiflash:div2 soc_spiflash:step gpu_strip_buffer:bmc" \
-    run_to "$work/prove.log" 900 bash tests/formal/run.sh prove
+run_to "$work/prove.log" 900 bash tests/formal/run.sh prove
 cat "$work/prove.log"
 expect_status 0 "make formal's proofs (log: $work/prove.log)"
 proved=$(count '\| PASS \|' "$work/prove.log")
