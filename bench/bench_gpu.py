@@ -132,9 +132,15 @@ def frame_640_table(build, work, workloads, zworkloads):
             s = raster(os.path.join(build, ident, "gpusim"), path, os.path.join(work, "%s-%d-%s" % (name, big_w, ident)))
             if not s["rtl_equals_model"]:
                 sys.exit("bench-gpu: %s on %s: RTL and model differ" % (name, ident))
-            # The clears the list does not ask for: each strip's own (1,280 spans at 640x480), and the
-            # depth buffer's in a whole frame (one, for zlarge).
-            clears = big_w * big_h // span_w if (s["strip_rows"] or name == "zlarge") else 0
+            # The clears on the raster's path: a whole frame's depths (zlarge; one span a clock). With
+            # strips the flushes clear the banks and a depth clear is an epoch (docs/strips.md): left
+            # are the first two strips' colour after reset (the banks then hold nothing known) and,
+            # for zlarge, the depth tags' scrub after reset, a strip's spans each.
+            strip_words = s["strip_rows"] * big_w // span_w
+            if s["strip_rows"]:
+                clears = (2 + (name == "zlarge")) * strip_words
+            else:
+                clears = big_w * big_h // span_w if name == "zlarge" else 0
             busy[name] = s["busy_cycles"] - clears
             rows.append((label, name, s["batches"], s["pixels"], s["busy_cycles"], clears, "dram" in ident))
         rows.append((label, "zlarge / large, without the clears", None, None, busy["zlarge"] / busy["large"], None, None))

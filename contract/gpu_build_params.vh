@@ -21,6 +21,11 @@
 //                   itself; a power of two up to the frame's height, the GPU draws each strip of
 //                   that many rows on chip and writes it to the back frame when done (contract "The
 //                   strip buffer").
+//   Z_EPOCH_BITS    Bits of the strip depth buffer's epoch tags, 2 to 16 (strip builds with
+//                   ENABLE_ZBUF): a ZCLEAR of a whole strip advances an epoch instead of writing
+//                   the strip's depths, a span of an older epoch reads as cleared, and every
+//                   2^Z_EPOCH_BITS - 2 such clears one clock a span rewrites the tags. 9: one 2048
+//                   x 9 block RAM for a strip of up to 2,048 spans.
 //   FRAME_DRAM      Frames in external memory (FRAME_DRAM): 0, the two frames are the GPU's block
 //                   RAM; 1, they are in the SDRAM behind a native memory port, written by the strip
 //                   buffer's flushes (needs STRIP_ROWS) and read a line ahead into an on-chip line
@@ -40,6 +45,7 @@
     parameter integer ENABLE_WMASK   = gpu_pkg::GPU_DEFAULT_ENABLE_WMASK, \
     parameter integer ZBUF_BITS      = gpu_pkg::GPU_DEFAULT_ZBUF_BITS, \
     parameter integer STRIP_ROWS     = gpu_pkg::GPU_DEFAULT_STRIP_ROWS, \
+    parameter integer Z_EPOCH_BITS   = gpu_pkg::GPU_DEFAULT_Z_EPOCH_BITS, \
     parameter integer FRAME_DRAM     = gpu_pkg::GPU_DEFAULT_FRAME_DRAM, \
     parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD
 `define GPU_BUILD_PARAMS_PASS \
@@ -53,6 +59,7 @@
     .ENABLE_WMASK   (ENABLE_WMASK), \
     .ZBUF_BITS      (ZBUF_BITS), \
     .STRIP_ROWS     (STRIP_ROWS), \
+    .Z_EPOCH_BITS   (Z_EPOCH_BITS), \
     .FRAME_DRAM     (FRAME_DRAM), \
     .ENABLE_GOURAUD (ENABLE_GOURAUD)
 `endif

@@ -19,6 +19,7 @@ localparam integer GPU_DEFAULT_ENABLE_ZBUF      = 0;  // build-option default
 localparam integer GPU_DEFAULT_ENABLE_WMASK     = 1;  // build-option default
 localparam integer GPU_DEFAULT_ZBUF_BITS        = 16;  // build-option default
 localparam integer GPU_DEFAULT_STRIP_ROWS       = 0;  // build-option default
+localparam integer GPU_DEFAULT_Z_EPOCH_BITS     = 9;  // build-option default
 localparam integer GPU_DEFAULT_FRAME_DRAM       = 0;  // build-option default
 localparam integer GPU_DEFAULT_ENABLE_GOURAUD   = 0;  // build-option default
 localparam [16:0] GPU_WIN_REGS                 = 17'h0;  // Registers, 32-bit words.

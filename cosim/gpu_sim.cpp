@@ -339,7 +339,7 @@ bool GpuSim::wait_capture(uint64_t max_cycles)
 #define GPU_PALETTE GPU_CORE_NAME(u_palette__DOT__mem)
 // The strip buffer (STRIP_ROWS > 0, gpu_strip_buffer.v): its colour RAM (words of SPAN_W pixels;
 // bank b's words from b times half its depth on), the flush's state, and the raster's open strip.
-#define GPU_STRIP_RAM GPU_CORE_NAME(g_strips__DOT__u_strips__DOT__u_colour__DOT__mem)
+#define GPU_STRIP_RAM GPU_CORE_NAME(g_strips__DOT__u_strips__DOT__colour_mem)
 #define GPU_STRIPS(reg) GPU_CORE_NAME(g_strips__DOT__u_strips__DOT__##reg)
 #define GPU_RASTER(reg) GPU_CORE_NAME(u_raster__DOT__##reg)
 
@@ -446,17 +446,44 @@ void overlay_strip(const R &root, unsigned bank, std::size_t base, std::size_t w
     }
 }
 
+// One span the flush has read and not yet moved (its queue's head or tail, or the word arriving).
+template <class T>
+void overlay_span(const T &word, std::size_t frame_span, uint8_t *pixels)
+{
+    for (unsigned i = 0; i < GPU_BUILD_SPAN_W; i++) {
+        pixels[frame_span * GPU_BUILD_SPAN_W + i] = lane(word, i);
+    }
+}
+
 // The back frame as it will be once the strip buffer has written what it holds: the frame's bank,
-// then the strip being flushed (its base is where the flush's frame address started), then the open
-// strip, which is newer (a strip opens only once the other bank's flush is over).
+// then the strip being flushed, then the open strip, which is newer (a strip opens only once the
+// other bank's flush is over). The flush clears each span as it reads it: its spans not yet read
+// are in the bank (from rd_addr_q on, at rd_frame_q), those read and not yet moved in its queue.
 template <class R>
 void overlay_strips(const R &root, uint8_t *pixels)
 {
     if constexpr (GPU_BUILD_STRIP_ROWS > 0) {
         if (root.GPU_STRIPS(job_q)) {
-            const std::size_t issued = root.GPU_STRIPS(rd_addr_q);
-            overlay_strip(root, root.GPU_STRIPS(job_bank_q), root.GPU_STRIPS(rd_frame_q) - issued,
-                          issued + root.GPU_STRIPS(issue_left_q), pixels);
+            const std::size_t bank_words = depth(root.GPU_STRIP_RAM) / 2;
+            const std::size_t unread = root.GPU_STRIPS(issue_left_q);
+            const std::size_t first = root.GPU_STRIPS(rd_addr_q);
+            if (first + unread > bank_words) {
+                std::fprintf(stderr, "gpusim: a flush of %zu spans from span %zu\n", unread, first);
+                std::abort();
+            }
+            for (std::size_t w = 0; w < unread; w++) {
+                overlay_span(root.GPU_STRIP_RAM[root.GPU_STRIPS(job_bank_q) * bank_words + first + w],
+                             root.GPU_STRIPS(rd_frame_q) + w, pixels);
+            }
+            if (root.GPU_STRIPS(inflight_q)) {
+                overlay_span(root.GPU_STRIPS(arriving_q), root.GPU_STRIPS(inflight_frame_q), pixels);
+            }
+            if (root.GPU_STRIPS(tail_valid_q)) {
+                overlay_span(root.GPU_STRIPS(tail_data_q), root.GPU_STRIPS(tail_addr_q), pixels);
+            }
+            if (root.GPU_STRIPS(head_valid_q)) {
+                overlay_span(root.GPU_STRIPS(head_data_q), root.GPU_STRIPS(head_addr_q), pixels);
+            }
         }
         if (root.GPU_RASTER(open_q)) {
             overlay_strip(root, root.GPU_RASTER(open_bank_q), root.GPU_RASTER(open_base_q),

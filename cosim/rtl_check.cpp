@@ -155,6 +155,10 @@ int rtl_check_main(int argc, char **argv)
     // A strip build's strip height, and the strip a RESET probe drew into (opened again after it).
     const uint32_t strip_rows = cfg.strip_rows;
     uint32_t reset_strip = 0;
+    // A strip build's clear colour: mostly the same from batch to batch, as a frame's strips clear
+    // (a strip then opens in a bank its last flush already cleared to that colour, and skips the
+    // clear: gpu_raster); changed now and then, and a batch's own on some batches.
+    uint32_t strip_colour = 0;
     uint64_t strip_refusals = 0;
 
     // The power-on registers first (ID, CAPS, VTX_CAP, TRI_CAP ...): a model of another build says
@@ -241,7 +245,11 @@ int rtl_check_main(int argc, char **argv)
         write(GPU_WIN_REGS + GPU_REG_VTX_COUNT, over_capacity ? vcap : vcount);
         write(GPU_WIN_REGS + GPU_REG_TRI_BASE, tbase);
         write(GPU_WIN_REGS + GPU_REG_TRI_COUNT, tcount);
-        write(GPU_WIN_REGS + GPU_REG_CLEAR_COLOR, r.below(256));
+        const uint32_t batch_colour = r.below(256);
+        if (strip_rows != 0 && rs.chance(5)) {
+            strip_colour = batch_colour;
+        }
+        write(GPU_WIN_REGS + GPU_REG_CLEAR_COLOR, (strip_rows == 0 || rs.chance(15)) ? batch_colour : strip_colour);
         // The write mask on some batches: any of the four plane sets (none, low, high, both), the
         // clear included, with junk in the undefined bits; both planes on the others, and on the
         // clear after a RESET probe, which must overwrite every bit the aborted batch left.

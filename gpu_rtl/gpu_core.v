@@ -20,8 +20,9 @@
 //
 // STRIP_ROWS > 0 (contract "The strip buffer"): the rasterizer draws into gpu_strip_buffer, whose
 // flush writes each closed strip to the back frame through fb_wr_ready's handshake; the depth buffer
-// holds one strip. The rasterizer's addresses are the frame's; the open strip's first span
-// (strip_base) is taken off them here.
+// holds one strip, each span tagged with the epoch of its last write (Z_EPOCH_BITS; gpu_raster
+// advances the epoch where it would clear the strip's depths). The rasterizer's addresses are the
+// frame's; the open strip's first span (strip_base) is taken off them here.
 //
 // FRAME_DRAM = 1 (contract "Frames in external memory"; needs STRIP_ROWS): the frames are not here.
 // The strip buffer's flush leaves as the frame stream fb_wr_* (valid/ready) for gpu_frame_dram,
@@ -115,6 +116,7 @@ module gpu_core #(
     wire [FB_WAW-1:0] strip_base, flush_base;
     wire draw_bank, flush, flush_bank;
     wire [SAW:0] flush_words;
+    wire [7:0] flush_colour;
     wire [1:0] bank_busy;
 
     gpu_regs #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT),
@@ -140,10 +142,18 @@ module gpu_core #(
     wire [FB_WAW-1:0] z_rd_addr, z_wr_addr;  // frame spans (the strip's: less strip_base)
     wire [SPAN_W*16-1:0] z_rd_data, z_wr_data;
     wire [SPAN_W-1:0] z_wr_mask;
+    wire z_rd_cleared;                       // the span read is of an older epoch (strips)
+    wire [Z_EPOCH_BITS-1:0] z_epoch;
+    wire z_scrub;
+    wire [SAW-1:0] z_scrub_addr;
     generate
         if (ZBUF_BITS < 1 || ZBUF_BITS > 16) begin : g_bad_zbuf_bits
             // Elaboration stops here, with this name in the error: there is no such module.
             gpu_core_ZBUF_BITS_must_be_1_to_16 u_bad ();
+        end
+        if (Z_EPOCH_BITS < 2 || Z_EPOCH_BITS > 16) begin : g_bad_z_epoch_bits
+            // Elaboration stops here, with this name in the error: there is no such module.
+            gpu_core_Z_EPOCH_BITS_must_be_2_to_16 u_bad ();
         end
         if (ENABLE_ZBUF != 0) begin : g_zbuf
             gpu_ram #(.DEPTH(VTX_CAP), .WIDTH(16)) u_vtx_z_ram (
@@ -170,9 +180,27 @@ module gpu_core #(
                 .wr_en(z_wr_en), .wr_addr(ZAW'(z_wr_addr - z_base)), .wr_data(zm_wr_data), .wr_mask(z_wr_mask),
                 .rd_en(z_rd_en), .rd_addr(ZAW'(z_rd_addr - z_base)), .rd_data(zm_rd_data)
             );
+            if (STRIP_ROWS > 0) begin : g_epochs
+                // Each span's epoch: the z_epoch of its last write (gpu_raster says why), 0 after
+                // a scrub. A span of another epoch reads as cleared.
+                wire [Z_EPOCH_BITS-1:0] epoch_rd;
+                gpu_ram #(.DEPTH(Z_WORDS), .WIDTH(Z_EPOCH_BITS)) u_depth_epochs (
+                    .wr_clk(clk), .rd_clk(clk),
+                    .wr_en(z_wr_en || z_scrub),
+                    .wr_addr(z_scrub ? ZAW'(z_scrub_addr) : ZAW'(z_wr_addr - z_base)),
+                    .wr_data(z_scrub ? {Z_EPOCH_BITS{1'b0}} : z_epoch), .wr_mask(1'b1),
+                    .rd_en(z_rd_en), .rd_addr(ZAW'(z_rd_addr - z_base)), .rd_data(epoch_rd)
+                );
+                assign z_rd_cleared = epoch_rd != z_epoch;
+            end else begin : g_no_epochs
+                assign z_rd_cleared = 1'b0;
+                wire unused_epochs = z_scrub | (|z_scrub_addr) | (|z_epoch);
+            end
         end else begin : g_no_zbuf
             assign vz_rd_data = 16'd0;
             assign z_rd_data = {(SPAN_W * 16){1'b0}};
+            assign z_rd_cleared = 1'b0;
+            wire unused_epochs = z_scrub | (|z_scrub_addr) | (|z_epoch);
             wire unused_z = z_rd_en | z_wr_en | (|z_rd_addr) | (|z_wr_addr) | (|z_wr_data) | (|z_wr_mask);
         end
     endgenerate
@@ -216,7 +244,7 @@ module gpu_core #(
 
     gpu_raster #(.VTX_CAP(VTX_CAP), .TRI_CAP(TRI_CAP), .FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT), .SPAN_W(SPAN_W),
                  .ENABLE_LINES(ENABLE_LINES), .ENABLE_ZBUF(ENABLE_ZBUF), .ZBUF_BITS(ZBUF_BITS),
-                 .ENABLE_GOURAUD(ENABLE_GOURAUD), .STRIP_ROWS(STRIP_ROWS)) u_raster (
+                 .ENABLE_GOURAUD(ENABLE_GOURAUD), .STRIP_ROWS(STRIP_ROWS), .Z_EPOCH_BITS(Z_EPOCH_BITS)) u_raster (
         .clk(clk), .rst(rst), .soft_reset(soft_reset),
         .start(start), .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .ctrl_ztest(ctrl_ztest),
         .ctrl_zclear(ctrl_zclear), .ctrl_dither(ctrl_dither), .vtx_base(vtx_base), .vtx_count(vtx_count),
@@ -228,11 +256,12 @@ module gpu_core #(
         .idx_rd_en(idx_rd_en), .idx_rd_addr(idx_rd_addr), .idx_rd_data(idx_rd_data),
         .vtx_rd_en(vtx_rd_en), .vtx_rd_addr(vtx_rd_addr), .vtx_rd_data(vtx_rd_data),
         .vz_rd_data(vz_rd_data), .vi_rd_data(vi_rd_data), .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data),
+        .z_rd_cleared(z_rd_cleared), .z_epoch(z_epoch), .z_scrub(z_scrub), .z_scrub_addr(z_scrub_addr),
         .z_wr_en(z_wr_en), .z_wr_addr(z_wr_addr), .z_wr_data(z_wr_data), .z_wr_mask(z_wr_mask),
         .fb_wr_en(fb_wr_en), .fb_wr_addr(fb_wr_addr), .fb_wr_data(fb_wr_data),
         .fb_wr_mask(fb_wr_mask), .strip_base(strip_base), .draw_bank(draw_bank), .flush(flush),
         .flush_bank(flush_bank), .flush_base(flush_base), .flush_words(flush_words),
-        .bank_busy(bank_busy), .frame_idle(FRAME_DRAM == 0 || fb_wr_idle),
+        .flush_colour(flush_colour), .bank_busy(bank_busy), .frame_idle(FRAME_DRAM == 0 || fb_wr_idle),
         .vblank_start(vblank_start), .swap(swap)
     );
 
@@ -255,7 +284,7 @@ module gpu_core #(
                 .draw_bank(draw_bank), .wr_en(fb_wr_en), .wr_addr(SAW'(fb_wr_addr - strip_base)),
                 .wr_data(fb_wr_data), .wr_mask(fb_wr_mask), .wr_planes(fb_wmask),
                 .flush(flush), .flush_bank(flush_bank), .flush_base(flush_base),
-                .flush_words(flush_words), .bank_busy(bank_busy),
+                .flush_words(flush_words), .flush_colour(flush_colour), .bank_busy(bank_busy),
                 .fr_valid(fr_valid), .fr_ready(fb_wr_ready), .fr_addr(frame_wr_addr),
                 .fr_data(frame_wr_data)
             );
@@ -272,7 +301,7 @@ module gpu_core #(
             assign frame_wr_planes = fb_wmask;
             assign fb_wr_valid = fb_wr_en;
             wire unused_strips = fb_wr_ready | draw_bank | flush | flush_bank | (|flush_base)
-                               | (|flush_words) | (|strip_base);
+                               | (|flush_words) | (|flush_colour) | (|strip_base);
         end
     endgenerate
 

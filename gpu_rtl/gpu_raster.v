@@ -13,6 +13,19 @@
 // S_OPEN until the other bank's flush is over, then flushes the open strip's bank and draws into the
 // other; CTRL.SWAP closes the open strip in S_CLOSE and waits there until no flush runs. The frame
 // addresses it puts out stay the frame's: gpu_core takes strip_base off them.
+// The clear off the drawing's path: each flush leaves its bank filled with CLEAR_COLOR as it is
+// then (flush_colour), and the raster remembers, per bank, that colour and the spans it covers. A
+// batch that opens a strip in a bank so filled, clearing it to the same colour, draws at once: its
+// clear is already done (S_CLEAR is skipped; a frame of strips pays no clear clocks but the first
+// two strips' after reset and those whose colour changed).
+// The depth clear off the path too: a batch that clears the strip's depths whole (ZCLEAR over all
+// its rows) only advances z_epoch; gpu_core's depth buffer tags each span with the epoch it was
+// last written in, and a span of another epoch reads as cleared (the walker then writes all of
+// it). The tags are Z_EPOCH_BITS bits: before an epoch would come round again (every
+// 2^Z_EPOCH_BITS - 2 whole clears; and after reset, when the tags are unknown) S_SCRUB writes tag
+// 0, which no epoch is, to every span of the depth buffer: with the default 9 bits (a 2048 x 9
+// block RAM holds the tags of a strip of up to 2,048 spans) at 640 x 480 in strips of 16, 1,280
+// clocks every 17 frames.
 //
 // The descriptor between the two is one gpu_pkg::desc_t; the widths of its fields and their range
 // arguments are in gpu_pkg.sv. The assertion below checks the edge values' bound (EDGE_NEED_W bits)
@@ -30,6 +43,7 @@ module gpu_raster #(
     parameter integer ZBUF_BITS = gpu_pkg::GPU_DEFAULT_ZBUF_BITS,
     parameter integer ENABLE_GOURAUD = gpu_pkg::GPU_DEFAULT_ENABLE_GOURAUD,
     parameter integer STRIP_ROWS = gpu_pkg::GPU_DEFAULT_STRIP_ROWS,
+    parameter integer Z_EPOCH_BITS = gpu_pkg::GPU_DEFAULT_Z_EPOCH_BITS,   // 2 .. 16
     localparam integer VI_W = $clog2(VTX_CAP),
     localparam integer TI_W = $clog2(TRI_CAP),
     localparam integer WORDS = FB_WIDTH * FB_HEIGHT / SPAN_W,   // spans in a frame
@@ -79,10 +93,14 @@ module gpu_raster #(
     output wire                z_rd_en,
     output wire [WAW-1:0]      z_rd_addr,
     input  wire [SPAN_W*16-1:0] z_rd_data,
+    input  wire                z_rd_cleared, // the span read is of an older epoch (strip builds)
     output wire                z_wr_en,
     output wire [WAW-1:0]      z_wr_addr,
     output wire [SPAN_W*16-1:0] z_wr_data,
     output wire [SPAN_W-1:0]   z_wr_mask,
+    output wire [Z_EPOCH_BITS-1:0] z_epoch,     // the depth clears' epoch (strip builds)
+    output wire                z_scrub,      // write tag 0 at the strip's span z_scrub_addr
+    output wire [SAW-1:0]      z_scrub_addr,
     // framebuffer write port (back bank, one span)
     output wire                fb_wr_en,
     output wire [WAW-1:0]      fb_wr_addr,
@@ -95,6 +113,7 @@ module gpu_raster #(
     output wire                flush_bank,
     output wire [WAW-1:0]      flush_base,
     output wire [SAW:0]        flush_words,
+    output wire [7:0]          flush_colour, // the colour the flush leaves in the bank
     input  wire [1:0]          bank_busy,
     input  wire                frame_idle,   // every flushed span is in the frame (external frames)
     // buffer swap
@@ -102,7 +121,7 @@ module gpu_raster #(
     output wire                swap
 );
     localparam [3:0] S_IDLE = 4'd0, S_CHECK = 4'd1, S_CLEAR = 4'd2, S_DRAW = 4'd3, S_DRAIN = 4'd4,
-                     S_VBLANK = 4'd5, S_FINISH = 4'd6, S_OPEN = 4'd7, S_CLOSE = 4'd8;
+                     S_VBLANK = 4'd5, S_FINISH = 4'd6, S_OPEN = 4'd7, S_CLOSE = 4'd8, S_SCRUB = 4'd9;
     // A swap first closes the open strip (S_CLOSE) where there is a strip buffer.
     localparam [3:0] S_SWAP = (STRIP_ROWS > 0) ? S_CLOSE : S_VBLANK;
     reg [3:0] state_q;
@@ -141,6 +160,24 @@ module gpu_raster #(
                         || (ztest && !zclear_after));
     wire opening = STRIP_ROWS > 0 && !rows_empty_q && opens;
     wire other_busy = bank_busy[!open_bank_q];
+    // What each bank's last flush left in it: its first bank_words_q spans hold bank_colour_q
+    // (bank_filled_q), until the bank is drawn into again.
+    reg [1:0] bank_filled_q;
+    reg [7:0] bank_colour_q [0:1];
+    reg [SAW:0] bank_words_q [0:1];
+    wire [SAW:0] batch_words = (SAW + 1)'(clear_last_q - clear_addr_q) + 1'b1;
+    wire new_bank = !open_bank_q;   // the bank a strip opening now draws into
+    wire prefilled = bank_filled_q[new_bank] && bank_colour_q[new_bank] == clear_color
+                  && bank_words_q[new_bank] >= batch_words;
+    // What the batch's S_CLEAR writes: the colour, the depths (from S_CHECK, less what is done).
+    reg clear_colour_q, clear_depth_q;
+    // The depth epoch: 1 .. EPOCH_LAST current, EPOCH_UNKNOWN after reset (the tags not scrubbed).
+    localparam [Z_EPOCH_BITS-1:0] EPOCH_UNKNOWN = {Z_EPOCH_BITS{1'b1}};
+    localparam [Z_EPOCH_BITS-1:0] EPOCH_LAST = EPOCH_UNKNOWN - 1'b1;
+    reg [Z_EPOCH_BITS-1:0] epoch_q;
+    reg scrub_q;                    // the batch scrubs the tags first (S_SCRUB)
+    reg [SAW-1:0] scrub_addr_q;
+    wire z_by_epoch = STRIP_ROWS > 0 && zclear && whole_strip;
 
     // ---- front end and back end ----
     wire setup_idle, walker_idle;
@@ -184,7 +221,7 @@ module gpu_raster #(
         .in_valid(desc_valid && walk_enable), .in_ready(walker_ready), .in_desc(desc), .ztest(ztest),
         .dither(ENABLE_GOURAUD != 0 && ctrl_dither), .row_first(row_first_q), .row_last(row_last_q),
         .rows_empty(rows_empty_q),
-        .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data),
+        .z_rd_en(z_rd_en), .z_rd_addr(z_rd_addr), .z_rd_data(z_rd_data), .z_rd_cleared(z_rd_cleared),
         .z_wr_en(walker_z_wr_en), .z_wr_addr(walker_z_wr_addr), .z_wr_data(walker_z_wr_data),
         .z_wr_mask(walker_z_wr_mask),
         .fb_wr_en(walker_wr_en), .fb_wr_addr(walker_wr_addr), .fb_wr_data(walker_wr_data),
@@ -196,17 +233,23 @@ module gpu_raster #(
 
     // ---- framebuffer port: the clear or the walker ----
     wire clearing = state_q == S_CLEAR;
-    wire fb_clearing = clearing && ctrl_clear;
+    wire fb_clearing = clearing && clear_colour_q;
     assign fb_wr_en   = fb_clearing || walker_wr_en;
     assign fb_wr_addr = clearing ? clear_addr_q : walker_wr_addr;
     assign fb_wr_data = clearing ? {SPAN_W{clear_color}} : walker_wr_data;
     assign fb_wr_mask = clearing ? {SPAN_W{1'b1}} : walker_wr_mask;
     // ... and the depth buffer: its clear (all 0xFFFF) runs beside the colour clear.
-    wire zclearing = clearing && zclear;
+    wire zclearing = clearing && clear_depth_q;
     assign z_wr_en   = zclearing || walker_z_wr_en;
     assign z_wr_addr = zclearing ? clear_addr_q : walker_z_wr_addr;
     assign z_wr_data = zclearing ? {(SPAN_W * 16){1'b1}} : walker_z_wr_data;
     assign z_wr_mask = zclearing ? {SPAN_W{1'b1}} : walker_z_wr_mask;
+
+    assign z_epoch = epoch_q;
+    assign z_scrub = state_q == S_SCRUB;
+    assign z_scrub_addr = scrub_addr_q;
+    // After the opening and the scrub: the clear, if anything is left to clear.
+    wire [3:0] after_scrub = (clear_colour_q || clear_depth_q) ? S_CLEAR : S_DRAW;
 
     // ---- batch sequencing ----
     wire [32:0] vtx_end = {1'b0, vtx_base} + {1'b0, vtx_count};
@@ -226,6 +269,7 @@ module gpu_raster #(
     assign flush_bank = open_bank_q;
     assign flush_base = open_base_q;
     assign flush_words = open_words_q;
+    assign flush_colour = clear_color;
     assign draw_bank = open_bank_q;
     assign strip_base = open_base_q;
 
@@ -243,8 +287,15 @@ module gpu_raster #(
                 open_base_q <= '0;
                 open_words_q <= '0;
                 open_zclear_q <= 1'b0;
+                bank_filled_q <= 2'b00;
+                epoch_q <= EPOCH_UNKNOWN;
             end
         end else begin
+            if (flush) begin
+                bank_filled_q[flush_bank] <= 1'b1;
+                bank_colour_q[flush_bank] <= clear_color;
+                bank_words_q[flush_bank] <= open_words_q;
+            end
             if (state_q != S_IDLE && state_q != S_VBLANK && state_q != S_FINISH && state_q != S_CLOSE) begin
                 perf.busy_cycles <= perf.busy_cycles + 32'd1;
             end
@@ -278,8 +329,18 @@ module gpu_raster #(
                         if (STRIP_ROWS > 0 && !rows_empty_q) begin
                             open_zclear_q <= zclear_after;
                         end
+                        clear_colour_q <= ctrl_clear && !rows_empty_q;
+                        clear_depth_q <= zclear && !rows_empty_q && !z_by_epoch;
+                        // A whole clear of the strip's depths: the next epoch, or a scrub first
+                        // (which sets epoch 1 when it is over).
+                        scrub_q <= z_by_epoch && !rows_empty_q && epoch_q >= EPOCH_LAST;
+                        scrub_addr_q <= '0;
+                        if (z_by_epoch && !rows_empty_q && epoch_q < EPOCH_LAST) begin
+                            epoch_q <= epoch_q + 1'b1;
+                        end
                         state_q <= opening ? S_OPEN
-                                 : ((ctrl_clear || zclear) && !rows_empty_q) ? S_CLEAR : S_DRAW;
+                                 : (z_by_epoch && !rows_empty_q && epoch_q >= EPOCH_LAST) ? S_SCRUB
+                                 : ((ctrl_clear || (zclear && !z_by_epoch)) && !rows_empty_q) ? S_CLEAR : S_DRAW;
                     end
                 end
                 S_OPEN: if (!other_busy) begin
@@ -288,8 +349,18 @@ module gpu_raster #(
                     open_strip_q <= batch_strip;
                     open_bank_q <= !open_bank_q;
                     open_base_q <= clear_addr_q;
-                    open_words_q <= (SAW + 1)'(clear_last_q - clear_addr_q) + 1'b1;
-                    state_q <= S_CLEAR;
+                    open_words_q <= batch_words;
+                    // Drawn into from now on: what its flush left is gone.
+                    bank_filled_q[new_bank] <= 1'b0;
+                    clear_colour_q <= !prefilled;
+                    state_q <= scrub_q ? S_SCRUB : (!prefilled || clear_depth_q) ? S_CLEAR : S_DRAW;
+                end
+                S_SCRUB: begin
+                    scrub_addr_q <= scrub_addr_q + 1'b1;
+                    if (scrub_addr_q == SAW'(STRIP_WORDS - 1)) begin
+                        epoch_q <= Z_EPOCH_BITS'(1);
+                        state_q <= after_scrub;
+                    end
                 end
                 S_CLEAR: begin
                     clear_addr_q <= clear_addr_q + 1'b1;

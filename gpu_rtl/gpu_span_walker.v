@@ -72,6 +72,8 @@ module gpu_span_walker #(
     output wire                     z_rd_en,
     output wire [WAW-1:0]           z_rd_addr,
     input  wire [SPAN_W*16-1:0]     z_rd_data,
+    input  wire                     z_rd_cleared, // with z_rd_data: the span's depths are cleared
+                                                  // by epoch, not written (it reads as cleared)
     output wire                     z_wr_en,
     output wire [WAW-1:0]           z_wr_addr,
     output wire [SPAN_W*16-1:0]     z_wr_data,
@@ -444,14 +446,23 @@ module gpu_span_walker #(
             reg [SPAN_W-1:0] s3_near_ram_q;   // nearer than the RAM's depth
             reg [SPAN_W-1:0] s3_near_last_q;  // nearer than the last write's
             reg [SPAN_W-1:0] s3_last_hit_q;   // lanes the last write covered, at this address
+            // The span read as cleared by epoch (a strip build's depth clear, gpu_core): its RAM
+            // words are stale, so its write writes every lane, the cleared value where no pixel
+            // wins. A write at the read's own clock (the last one, at this address) made it
+            // current: that write covered every lane, or the span was current before it.
+            reg s3_stale_q;
             reg [SPAN_W-1:0] near_ram, near_last, last_hit;
+            reg [SPAN_W*16-1:0] wr_z;
             always @(*) begin
                 for (l = 0; l < SPAN_W; l = l + 1) begin
-                    near_ram[l] = cand_z_q[l*16 +: 16] < z_rd_data[l*16 +: 16];
+                    // a span cleared by epoch holds what a clear writes, whatever its RAM says
+                    near_ram[l] = z_rd_cleared ? cand_z_q[l*16 +: 16] < Z_KEEP
+                                               : cand_z_q[l*16 +: 16] < z_rd_data[l*16 +: 16];
                     near_last[l] = cand_z_q[l*16 +: 16] < last_z_q[l*16 +: 16];
                     last_hit[l] = last_wr_q && last_addr_q == cand_addr_q && last_mask_q[l];
                     final_mask[l] = s3_cov_q[l]
                                  && (!s3_depth_q || (s3_last_hit_q[l] ? s3_near_last_q[l] : s3_near_ram_q[l]));
+                    wr_z[l*16 +: 16] = final_mask[l] ? s3_z_q[l*16 +: 16] : Z_KEEP;
                 end
             end
             always @(posedge clk) begin
@@ -470,17 +481,18 @@ module gpu_span_walker #(
                 s3_near_ram_q <= near_ram;
                 s3_near_last_q <= near_last;
                 s3_last_hit_q <= last_hit;
+                s3_stale_q <= z_rd_cleared && !(last_wr_q && last_addr_q == cand_addr_q);
                 last_addr_q <= s3_addr_q;
-                last_mask_q <= final_mask;
-                last_z_q <= s3_z_q;
+                last_mask_q <= z_wr_mask;
+                last_z_q <= z_wr_data;
             end
             // The read is issued with the span it belongs to, so its data meets the candidate.
             assign z_rd_en = (seek || scan) && draw_span;
             assign z_rd_addr = row_addr_q + WAW'(col_q);
             assign z_wr_en = s3_valid_q && s3_depth_q && final_mask != {SPAN_W{1'b0}};
             assign z_wr_addr = s3_addr_q;
-            assign z_wr_data = s3_z_q;
-            assign z_wr_mask = final_mask;
+            assign z_wr_data = s3_stale_q ? wr_z : s3_z_q;
+            assign z_wr_mask = s3_stale_q ? {SPAN_W{1'b1}} : final_mask;
             assign wr_valid = s3_valid_q;
             assign wr_addr = s3_addr_q;
             assign wr_colors = s3_data_q;
@@ -507,7 +519,7 @@ module gpu_span_walker #(
             assign wr_addr = cand_addr_q;
             assign wr_colors = wr_data;
             assign late_busy = 1'b0;
-            wire unused_z = cand_depth_q | (|cand_z_q) | (|z_rd_data);
+            wire unused_z = cand_depth_q | (|cand_z_q) | (|z_rd_data) | z_rd_cleared;
         end
     endgenerate
 

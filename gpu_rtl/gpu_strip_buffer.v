@@ -14,10 +14,19 @@
 //   does not fall, nor do fr_addr and fr_data change, until the span has moved. fr_ready may stay
 //   low for any time (a frame memory that is busy): the flush waits, nothing is dropped.
 //
+// - Clear on flush: the flush leaves each span it moves filled with flush_colour (taken with
+//   flush), so a bank that has been flushed holds that colour in its first flush_words spans: the
+//   next strip drawn into it needs no clear of its own when it clears to that colour (gpu_raster
+//   keeps track of that).
+//
 // Both banks are one RAM, bank b at words b * 2^SAW + i: the drawn bank and the flushed one are
-// never the same, so one write port and one read port serve both, and a block RAM column holds
-// both banks' lanes (at 640 x 480, 16 rows, SPAN_W 8 with the write mask: 16 EBR where two RAMs
-// take 32; the padding to 2^SAW words costs no block RAM, whose depth is a power of two anyway).
+// never the same, so the raster's write port (A) and the flush's port (B: it reads a span and, on
+// the same clock, writes the clear colour over it, reading the old word) never meet at one address,
+// and a block RAM column holds both banks' lanes (at 640 x 480, 16 rows, SPAN_W 8 with the write
+// mask: 16 DP16KD in true dual-port mode, as many as one write and one read port took; the padding
+// to 2^SAW words costs no block RAM, whose depth is a power of two anyway). no_rw_check tells
+// yosys that the ports never collide: without it, it cannot give port B's read the other port's
+// same-clock write and maps the RAM to flip-flops.
 //
 // The flush reads the bank's block RAM one clock ahead: a read is issued only when the two-entry
 // output queue will have room for its word when it arrives, so the stream moves a span every clock
@@ -48,6 +57,7 @@ module gpu_strip_buffer #(
     input  wire              flush_bank,
     input  wire [FAW-1:0]    flush_base,  // the frame span of the strip's first
     input  wire [SAW:0]      flush_words, // spans to write, 1 .. WORDS
+    input  wire [7:0]        flush_colour, // the colour each flushed span is left holding
     output wire [1:0]        bank_busy,
     // frame port (the back frame's writes)
     output wire              fr_valid,
@@ -78,11 +88,30 @@ module gpu_strip_buffer #(
     wire             rd_issue;
     wire [DW-1:0]    arriving;            // the word read, one clock after rd_issue
 
-    gpu_ram #(.DEPTH(2 << SAW), .WIDTH(DW), .LANES(LANES)) u_colour (
-        .wr_clk(clk), .rd_clk(clk),
-        .wr_en(wr_en), .wr_addr({draw_bank, wr_addr}), .wr_data(wr_data), .wr_mask(lane_mask),
-        .rd_en(rd_issue), .rd_addr({job_bank_q, rd_addr_q}), .rd_data(arriving)
-    );
+    reg  [7:0]       job_colour_q;        // the colour the flush leaves behind
+
+    // The RAM, true dual-port (the template yosys maps to DP16KD; gpu_ram's has one write port).
+    // Power-on contents are zero, as gpu_ram's.
+    localparam integer LANE_W = DW / LANES;
+    (* ram_style = "block", no_rw_check *) reg [DW-1:0] colour_mem [0:(2 << SAW) - 1];
+    reg [DW-1:0] arriving_q;
+    integer i;
+    initial begin
+        for (i = 0; i < (2 << SAW); i = i + 1) colour_mem[i] = {DW{1'b0}};
+        arriving_q = {DW{1'b0}};
+    end
+    always @(posedge clk) begin  // port A: the raster draws by lanes
+        for (i = 0; i < LANES; i = i + 1) begin
+            if (wr_en && lane_mask[i]) colour_mem[{draw_bank, wr_addr}][i*LANE_W +: LANE_W] <= wr_data[i*LANE_W +: LANE_W];
+        end
+    end
+    always @(posedge clk) begin  // port B: the flush reads a span and clears it on the same clock
+        if (rd_issue) begin
+            arriving_q <= colour_mem[{job_bank_q, rd_addr_q}];
+            colour_mem[{job_bank_q, rd_addr_q}] <= {SPAN_W{job_colour_q}};
+        end
+    end
+    assign arriving = arriving_q;
 
     // ---- the flush: reads one clock ahead into a two-entry queue ----
     reg            inflight_q;            // a read was issued last clock: its word arrives now
@@ -96,7 +125,8 @@ module gpu_strip_buffer #(
     wire pop = head_valid_q && fr_ready;
     // Words held or on their way, less the one leaving now: issue while that leaves room.
     wire [1:0] held = 2'(head_valid_q) + 2'(tail_valid_q) + 2'(inflight_q) - 2'(pop);
-    assign rd_issue = job_q && issue_left_q != '0 && held < 2'd2;
+    // Never in a reset's clock: a read clears the word it reads.
+    assign rd_issue = !rst && job_q && issue_left_q != '0 && held < 2'd2;
 
     always @(posedge clk) begin
         if (rst) begin
@@ -112,6 +142,7 @@ module gpu_strip_buffer #(
             if (flush) begin
                 job_q <= 1'b1;
                 job_bank_q <= flush_bank;
+                job_colour_q <= flush_colour;
                 issue_left_q <= flush_words;
                 move_left_q <= flush_words;
                 rd_addr_q <= '0;

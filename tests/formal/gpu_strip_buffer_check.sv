@@ -25,6 +25,12 @@
 //            f_idx of the bank moves with the value its bank held when the flush started (the
 //            check's shadow of that word, every draw's lanes mirrored into it: its pixel mask and,
 //            with ENABLE_WMASK, the planes of wr_planes);
+//   clear    a flush leaves each span it moved holding flush_colour in every pixel: the tracked
+//            word, flushed again before it is drawn, moves as that colour (the shadow takes it at
+//            the flush's pulse; the flush moves the value from before). A reset in the middle
+//            of a flush leaves the words it had not read as they were and the others cleared:
+//            the tracked word of that bank is then unknown (not checked) until a draw writes
+//            all of it or a flush clears it again;
 //   busy     bank_busy is exactly the flushed bank's bit from the clock after the flush pulse to
 //            the clock after its last span moved (so a flush moves exactly flush_words spans);
 //   timing   a span is presented in every clock from the third after the flush pulse until the
@@ -56,6 +62,7 @@ module gpu_strip_buffer_check #(
     input wire              flush_bank,
     input wire [FAW-1:0]    flush_base,
     input wire [SAW:0]      flush_words,
+    input wire [7:0]        flush_colour,
     input wire              fr_ready
 );
     wire [1:0]     bank_busy;
@@ -68,7 +75,7 @@ module gpu_strip_buffer_check #(
         .draw_bank(draw_bank), .wr_en(wr_en), .wr_addr(wr_addr), .wr_data(wr_data),
         .wr_mask(wr_mask), .wr_planes(wr_planes),
         .flush(flush), .flush_bank(flush_bank), .flush_base(flush_base),
-        .flush_words(flush_words), .bank_busy(bank_busy),
+        .flush_words(flush_words), .flush_colour(flush_colour), .bank_busy(bank_busy),
         .fr_valid(fr_valid), .fr_ready(fr_ready), .fr_addr(fr_addr), .fr_data(fr_data)
     );
 
@@ -106,13 +113,25 @@ module gpu_strip_buffer_check #(
     reg  [DW-1:0] f_shadow0 = '0, f_shadow1 = '0;   // power-on contents are zero (gpu_ram)
     wire [DW-1:0] f_drawn = ((draw_bank ? f_shadow1 : f_shadow0) & ~f_wbits) | (wr_data & f_wbits);
     wire          f_draw_idx = wr_en && wr_addr == f_idx;
-    always @(posedge clk) begin   // the banks have no reset: neither has the shadow
-        if (f_draw_idx && !draw_bank) f_shadow0 <= f_drawn;
-        if (f_draw_idx && draw_bank) f_shadow1 <= f_drawn;
-    end
     // The word as a flush of bank b finds it: with a draw in the flush pulse's clock.
     wire [DW-1:0] f_start0 = (f_draw_idx && !draw_bank) ? f_drawn : f_shadow0;
     wire [DW-1:0] f_start1 = (f_draw_idx && draw_bank) ? f_drawn : f_shadow1;
+    // A flush that reaches the word leaves it the flush's colour (a flush pulse is never in a
+    // reset's clock by the check's use of rst below: the pulse is taken only without it).
+    wire          f_clear_idx = flush && !rst && (SAW + 1)'(f_idx) < flush_words;
+    wire [DW-1:0] f_cleared = {SPAN_W{flush_colour}};
+    reg           f_known0 = 1'b1, f_known1 = 1'b1;   // the shadow holds the word
+    wire          f_draw_all = f_draw_idx && f_wbits == {DW{1'b1}};
+    always @(posedge clk) begin   // the banks have no reset: neither has the shadow
+        if (f_clear_idx && !flush_bank) f_shadow0 <= f_cleared;
+        else if (f_draw_idx && !draw_bank) f_shadow0 <= f_drawn;
+        if (f_clear_idx && flush_bank) f_shadow1 <= f_cleared;
+        else if (f_draw_idx && draw_bank) f_shadow1 <= f_drawn;
+        if (rst && f_job && !f_bank) f_known0 <= 1'b0;
+        else if ((f_clear_idx && !flush_bank) || (f_draw_all && !draw_bank)) f_known0 <= 1'b1;
+        if (rst && f_job && f_bank) f_known1 <= 1'b0;
+        else if ((f_clear_idx && flush_bank) || (f_draw_all && draw_bank)) f_known1 <= 1'b1;
+    end
 
     // ---- the flush, from the ports ----
     reg            f_job = 1'b0;       // a flush is running (from the clock after its pulse)
@@ -121,6 +140,7 @@ module gpu_strip_buffer_check #(
     reg  [SAW:0]   f_words = '0;
     reg  [SAW:0]   f_moved = '0;       // spans moved so far: the one presented is the next
     reg  [DW-1:0]  f_snap = '0;        // the tracked word as the flush found it
+    reg            f_snap_known = 1'b1;
     reg  [3:0]     f_age = '0;         // clocks since the pulse (1 in the first busy clock),
                                        // saturating
     reg            f_waited = 1'b0;    // a span presented waited for fr_ready
@@ -145,6 +165,8 @@ module gpu_strip_buffer_check #(
             f_words <= flush_words;
             f_moved <= '0;
             f_snap <= flush_bank ? f_start1 : f_start0;
+            f_snap_known <= flush_bank ? (f_known1 || (f_draw_all && draw_bank))
+                                       : (f_known0 || (f_draw_all && !draw_bank));
             f_age <= 4'd1;
             f_waited <= 1'b0;
             f_toggled <= 1'b1;
@@ -167,7 +189,7 @@ module gpu_strip_buffer_check #(
             if (fr_valid) begin
                 assert(f_job);
                 assert(fr_addr == f_due);
-                if (f_moved == (SAW + 1)'(f_idx)) assert(fr_data == f_snap);
+                if (f_moved == (SAW + 1)'(f_idx) && f_snap_known) assert(fr_data == f_snap);
             end
             if (f_job) begin
                 assert(f_moved < f_words);
@@ -201,6 +223,7 @@ module gpu_strip_buffer_check #(
     wire [SAW:0]   f_q_issue_left, f_q_move_left;
     wire [SAW-1:0] f_q_rd_addr;
     wire [FAW-1:0] f_q_rd_frame, f_q_inflight_frame, f_q_tail_addr;
+    wire [7:0]     f_q_colour;                                  // the colour the flush leaves
     wire [DW-1:0]  f_q_tail_data, f_q_rd_data;                  // rd_data: the banks' RAM's read word
     wire [WORDS*DW-1:0] f_q_mem0, f_q_mem1;                     // each bank's words, i at [i*DW]
 
@@ -210,8 +233,14 @@ module gpu_strip_buffer_check #(
     wire [SAW:0]   f_in_idx = f_moved + (SAW + 1)'(fr_valid) + (SAW + 1)'(f_q_tail_valid);
     always @(*) begin
         if (f_past_valid) begin
-            assert(f_q_mem0[f_idx * DW +: DW] == f_shadow0);
-            assert(f_q_mem1[f_idx * DW +: DW] == f_shadow1);
+            // the tracked word in its bank: the shadow's, but as the flush found it until the
+            // flush has read it
+            if (f_job && !f_bank && f_idx_w >= f_issued) begin
+                if (f_snap_known) assert(f_q_mem0[f_idx * DW +: DW] == f_snap);
+            end else if (f_known0) assert(f_q_mem0[f_idx * DW +: DW] == f_shadow0);
+            if (f_job && f_bank && f_idx_w >= f_issued) begin
+                if (f_snap_known) assert(f_q_mem1[f_idx * DW +: DW] == f_snap);
+            end else if (f_known1) assert(f_q_mem1[f_idx * DW +: DW] == f_shadow1);
             assert(f_q_job == f_job);
             if (!f_job) begin
                 assert(!fr_valid && !f_q_tail_valid && !f_q_inflight);
@@ -220,7 +249,13 @@ module gpu_strip_buffer_check #(
                 assert(f_q_job_bank == f_bank);
                 assert(f_words != '0 && f_words <= (SAW + 1)'(WORDS));
                 assert(32'(f_base) + 32'(f_words) <= FRAME_WORDS);
-                assert(f_snap == (f_bank ? f_shadow1 : f_shadow0));
+                if (f_idx_w >= f_words) begin
+                    assert(f_snap_known == (f_bank ? f_known1 : f_known0));
+                    assert(f_snap == (f_bank ? f_shadow1 : f_shadow0));
+                end else begin
+                    assert(f_bank ? f_known1 : f_known0);
+                    assert((f_bank ? f_shadow1 : f_shadow0) == {SPAN_W{f_q_colour}});
+                end
                 assert(f_q_move_left == f_words - f_moved);
                 assert(f_q_held <= 2'd2);
                 assert(!f_q_tail_valid || fr_valid);
@@ -228,9 +263,9 @@ module gpu_strip_buffer_check #(
                 assert(f_q_rd_addr == SAW'(f_issued));
                 assert(f_q_rd_frame == f_base + FAW'(f_issued));
                 if (f_q_tail_valid) assert(f_q_tail_addr == f_due + 1'b1);
-                if (f_q_tail_valid && f_moved + 1'b1 == f_idx_w) assert(f_q_tail_data == f_snap);
+                if (f_q_tail_valid && f_moved + 1'b1 == f_idx_w && f_snap_known) assert(f_q_tail_data == f_snap);
                 if (f_q_inflight) assert(f_q_inflight_frame == f_base + FAW'(f_in_idx));
-                if (f_q_inflight && f_in_idx == f_idx_w)
+                if (f_q_inflight && f_in_idx == f_idx_w && f_snap_known)
                     assert(f_q_rd_data == f_snap);
                 // timing: nothing in the first clock, the first read's word arriving in the
                 // second, then a span presented with the next behind it (or none left to read)

@@ -5,14 +5,17 @@
 # on the one whose frames are behind the SDRAM's port model (sim-dram-s16-f640-w8): each run's
 # frame from the VGA pins equals the golden model's, and the three frames are the same bytes. The
 # flat example and the depth-tested one (two triangles piercing each other, a flat tri and a line
-# over them: the strip's depths cleared where it opens).
+# over them: the strip's depths cleared where it opens), and 3,000 small depth-tested triangles
+# piled across three strip boundaries (tests/raster/depth_tiny.py: a span's depths cleared by epoch
+# and written by one triangle, read by the next two clocks later).
 source "$(dirname "$0")/../lib.sh"
 need BUILD
 whole=${1:?usage: strips.sh WHOLE_SIM STRIP_SIM DRAM_SIM} strips=${2:?} dram=${3:?}
 need_file "$whole" "$strips" "$dram"
 work=$(fresh_dir raster-strips)
+python3 tests/raster/depth_tiny.py "$work/depth_tiny.txt" || fail "depth_tiny.py did not write its list"
 n=0
-for list in tests/raster/example.txt tests/raster/depth_example.txt; do
+for list in tests/raster/example.txt tests/raster/depth_example.txt "$work/depth_tiny.txt"; do
     name=$(basename "$list" .txt)
     for gpu in whole strips dram; do
         sim=${!gpu}
@@ -27,4 +30,4 @@ for list in tests/raster/example.txt tests/raster/depth_example.txt; do
         cmp -s "$work/$name-whole/rtl.raw" "$work/$name-$gpu/rtl.raw" || fail "$name: the $gpu GPU's frame differs from the whole frame's"
     done
 done
-pass "raster-strips: 2 lists on 3 GPUs at 640x480 ($n runs): drawn whole, in strips of 16 on chip and with the frames behind the SDRAM port, every frame = model, the three the same bytes"
+pass "raster-strips: 3 lists on 3 GPUs at 640x480 ($n runs): drawn whole, in strips of 16 on chip and with the frames behind the SDRAM port, every frame = model, the three the same bytes"
