@@ -177,7 +177,6 @@ module gpu_raster #(
     reg [Z_EPOCH_BITS-1:0] epoch_q;
     reg scrub_q;                    // the batch scrubs the tags first (S_SCRUB)
     reg [SAW-1:0] scrub_addr_q;
-    wire z_by_epoch = STRIP_ROWS > 0 && zclear && whole_strip;
 
     // ---- front end and back end ----
     wire setup_idle, walker_idle;
@@ -189,6 +188,12 @@ module gpu_raster #(
     wire [SPAN_W-1:0] walker_z_wr_mask;
     wire ztest = ENABLE_ZBUF != 0 && ctrl_ztest;
     wire zclear = ENABLE_ZBUF != 0 && ctrl_zclear;
+    // The batch's clears, as S_CHECK finds them: a whole clear of the strip's depths is the next
+    // epoch, or a scrub first (which sets epoch 1 when it is over); what is left runs in S_CLEAR.
+    wire z_by_epoch = STRIP_ROWS > 0 && zclear && whole_strip && !rows_empty_q;
+    wire scrub_first = z_by_epoch && epoch_q >= EPOCH_LAST;
+    wire clear_colour = ctrl_clear && !rows_empty_q;
+    wire clear_depth = zclear && !rows_empty_q && !z_by_epoch;
     wire ev_prim_in, ev_drawn, ev_err_kind, ev_err_index, ev_span_visit, ev_span_written;
     wire [1:0] ev_rejected;
     wire [gpu_pkg::SAMPLES_W-1:0] ev_samples;
@@ -329,18 +334,15 @@ module gpu_raster #(
                         if (STRIP_ROWS > 0 && !rows_empty_q) begin
                             open_zclear_q <= zclear_after;
                         end
-                        clear_colour_q <= ctrl_clear && !rows_empty_q;
-                        clear_depth_q <= zclear && !rows_empty_q && !z_by_epoch;
-                        // A whole clear of the strip's depths: the next epoch, or a scrub first
-                        // (which sets epoch 1 when it is over).
-                        scrub_q <= z_by_epoch && !rows_empty_q && epoch_q >= EPOCH_LAST;
+                        clear_colour_q <= clear_colour;
+                        clear_depth_q <= clear_depth;
+                        scrub_q <= scrub_first;
                         scrub_addr_q <= '0;
-                        if (z_by_epoch && !rows_empty_q && epoch_q < EPOCH_LAST) begin
+                        if (z_by_epoch && !scrub_first) begin
                             epoch_q <= epoch_q + 1'b1;
                         end
-                        state_q <= opening ? S_OPEN
-                                 : (z_by_epoch && !rows_empty_q && epoch_q >= EPOCH_LAST) ? S_SCRUB
-                                 : ((ctrl_clear || (zclear && !z_by_epoch)) && !rows_empty_q) ? S_CLEAR : S_DRAW;
+                        state_q <= opening ? S_OPEN : scrub_first ? S_SCRUB
+                                 : (clear_colour || clear_depth) ? S_CLEAR : S_DRAW;
                     end
                 end
                 S_OPEN: if (!other_busy) begin

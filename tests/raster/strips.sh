@@ -6,8 +6,8 @@
 # frame from the VGA pins equals the golden model's, and the three frames are the same bytes. The
 # flat example and the depth-tested one (two triangles piercing each other, a flat tri and a line
 # over them: the strip's depths cleared where it opens), and 3,000 small depth-tested triangles
-# piled across three strip boundaries (tests/raster/depth_tiny.py: a span's depths cleared by epoch
-# and written by one triangle, read by the next two clocks later).
+# piled across three strip boundaries (tests/raster/depth_tiny.py: spans cleared by epoch, written
+# in part by one triangle and tested by the next).
 source "$(dirname "$0")/../lib.sh"
 need BUILD
 whole=${1:?usage: strips.sh WHOLE_SIM STRIP_SIM DRAM_SIM} strips=${2:?} dram=${3:?}
