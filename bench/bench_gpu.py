@@ -26,9 +26,10 @@ depth buffer:
                chip that take a span a clock; `gpusim raster` rings the batch once per strip (30),
                each strip's first batch clearing it (its 1,280 spans: a clear the whole frame does
                not need here, counted apart)
-  SDRAM        sim-dram-s16-f640-w8: the same strips flushed through the model of LiteDRAM's 16-bit
-               native port (cosim/native_port_model.h, not throttled): 4 words a span, so a frame's
-               flush takes at least 153,600 clocks, whatever is drawn
+  SDRAM        sim-dram-s16-f640-w8: the same strips flushed through the model of LiteDRAM's 32-bit
+               native port (cosim/native_port_model.h, not throttled; the width from the run's
+               stats.json): 2 words a span, so a frame's flush takes at least 76,800 clocks,
+               whatever is drawn
 The busy cycles are PERF_BUSY_CYCLES summed over the batches (the last strip's flush runs on after
 the last, before the swap, and is not in them).
 
@@ -142,20 +143,21 @@ def frame_640_table(build, work, workloads, zworkloads):
             else:
                 clears = big_w * big_h // span_w if name == "zlarge" else 0
             busy[name] = s["busy_cycles"] - clears
-            rows.append((label, name, s["batches"], s["pixels"], s["busy_cycles"], clears, "dram" in ident))
+            rows.append((label, name, s["batches"], s["pixels"], s["busy_cycles"], clears,
+                         s["frame_memory_word_bytes"] if "dram" in ident else 0))
         rows.append((label, "zlarge / large, without the clears", None, None, busy["zlarge"] / busy["large"], None, None))
     print()
     print("| %dx%d, SPAN_W %d | workload | batches | pixels written | busy cycles | of which clears | covered px/clk "
           "| without the clears |" % (big_w, big_h, span_w))
     print("|---|---|---:|---:|---:|---:|---:|---:|")
-    # Behind the 16-bit port each span is SPAN_W / 2 words: a frame's flush is its pixels / 2 clocks,
-    # the strips' clears and drawing hidden under it (so not taken off).
-    flush_bound = big_w * big_h // 2
-    for label, name, batches, pixels, cycles, clears, behind_port in rows:
+    # Behind the port (word_bytes pixels a native word, one word a clock) each span is
+    # SPAN_W / word_bytes words: a frame's flush is its pixels / word_bytes clocks, the strips'
+    # clears and drawing hidden under it (so not taken off).
+    for label, name, batches, pixels, cycles, clears, word_bytes in rows:
         if batches is None:
             print("| %s | %s | | | %.3f x | | | |" % (label, name, cycles))
             continue
-        without = ("— (the flush: at least %d clocks)" % flush_bound if behind_port
+        without = ("— (the flush: at least %d clocks)" % (big_w * big_h // word_bytes) if word_bytes
                    else "%.2f" % (pixels / (cycles - clears)))
         print("| %s | %s | %d | %d | %d | %d | %.2f | %s |" % (label, name, batches, pixels, cycles, clears,
                                                               pixels / cycles, without))

@@ -7,9 +7,10 @@
 # GPU's busy cycles a frame on each (the firmware's "gpu cycles"); the bytes the port wrote a frame
 # drawn and read a frame shown (counted: the read words over the display scans the run simulated,
 # its summary's scan_clocks each, cosim/gpu_sim.h); and what those bytes take
-# of the board's port at 60 frames a second, one 16-bit word a clock at the system clock (SYS_HZ,
-# contract/soc_map.toml's SOC_CLK_HZ_DEFAULT): each frame drawn once and shown once. The golden
-# model is not consulted (scene-dram checks the frames).
+# of the board's port at 60 frames a second, one native word a clock at the system clock (SYS_HZ,
+# contract/soc_map.toml's SOC_CLK_HZ_DEFAULT; the word's bytes from the summary's
+# frame_memory_word_bytes: 4, the half-rate PHY's 32-bit port): each frame drawn once and shown
+# once. The golden model is not consulted (scene-dram checks the frames).
 #
 # Usage: frame_dram_measured.sh SYS_HZ ON_CHIP_GPU DRAM_GPU BENCH_DIR OUT_DIR SCENE...
 set -euo pipefail
@@ -29,13 +30,13 @@ for scene in "$@"; do
     done
     s="$out/$scene-dram.summary"
     frames=$(value frames "$s") written=$(value frame_memory_words_written "$s") read=$(value frame_memory_words_read "$s")
-    clocks=$(value gpu_cycles "$s") scan=$(value scan_clocks "$s")
-    [ "${frames:-0}" -gt 0 ] && [ "${clocks:-0}" -gt 0 ] && [ "${scan:-0}" -gt 0 ] ||
-        { echo "frame_dram_measured: $scene: no frames or no display scan in $s" >&2; exit 1; }
+    clocks=$(value gpu_cycles "$s") scan=$(value scan_clocks "$s") bytes=$(value frame_memory_word_bytes "$s")
+    [ "${frames:-0}" -gt 0 ] && [ "${clocks:-0}" -gt 0 ] && [ "${scan:-0}" -gt 0 ] && [ "${bytes:-0}" -gt 0 ] ||
+        { echo "frame_dram_measured: $scene: no frames, no display scan or no port width in $s" >&2; exit 1; }
     on=$(mean "gpu cycles" "$out/$scene-on-chip.uart") off=$(mean "gpu cycles" "$out/$scene-dram.uart")
-    wr=$((2 * written / frames))
-    rd=$(awk -v r="$read" -v c="$clocks" -v d="$scan" 'BEGIN { printf "%.0f", 2 * r / (c / d) }')
-    share=$(awk -v w="$wr" -v r="$rd" -v hz="$sys_hz" 'BEGIN { printf "%.1f %%", 100 * (w + r) / 2 * 60 / hz }')
+    wr=$((bytes * written / frames))
+    rd=$(awk -v b="$bytes" -v r="$read" -v c="$clocks" -v d="$scan" 'BEGIN { printf "%.0f", b * r / (c / d) }')
+    share=$(awk -v b="$bytes" -v w="$wr" -v r="$rd" -v hz="$sys_hz" 'BEGIN { printf "%.1f %%", 100 * (w + r) / b * 60 / hz }')
     echo "| $scene | $(commas "$on") | $(commas "$off") (+$(((off - on) * 100 / on)) %) | $(commas $wr) | $(commas "$rd") |" \
          "$share | $(value scanout_underflows "$s") |"
 done

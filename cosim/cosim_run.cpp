@@ -132,13 +132,15 @@ void CosimRun::summary_keys(FILE *f) const
     std::fprintf(f, "frame_wall_first_s=%.6f\nframe_wall_last_s=%.6f\n", c.first_s, c.last_s);
     std::fprintf(f, "frame_cycles_first=%llu\nframe_cycles_last=%llu\n",
                  static_cast<unsigned long long>(c.first_cycles), static_cast<unsigned long long>(c.last_cycles));
-    // The frames in external memory (FRAME_DRAM; 0 elsewhere): 16-bit words through the port; and
-    // the clocks of one display scan on the pin path (0 on the fast path: no scan is simulated).
+    // The frames in external memory (FRAME_DRAM; 0 elsewhere): native words through the port, and
+    // their bytes (the port's width); and the clocks of one display scan on the pin path (0 on the
+    // fast path: no scan is simulated).
     std::fprintf(f, "scan_clocks=%llu\n",
                  static_cast<unsigned long long>(GpuSim::fast_display() ? 0 : GpuSim::kScanClocks));
-    std::fprintf(f, "scanout_underflows=%u\nframe_memory_words_written=%llu\nframe_memory_words_read=%llu\n",
+    std::fprintf(f, "scanout_underflows=%u\nframe_memory_words_written=%llu\nframe_memory_words_read=%llu\n"
+                 "frame_memory_word_bytes=%u\n",
                  bridge_.scanout_underflows(), static_cast<unsigned long long>(bridge_.memory_words_written()),
-                 static_cast<unsigned long long>(bridge_.memory_words_read()));
+                 static_cast<unsigned long long>(bridge_.memory_words_read()), GpuSim::memory_word_bytes());
 }
 
 // The pty's bytes, as many as the UART's input pipe takes without blocking (POLLOUT: room for

@@ -82,10 +82,21 @@ uint8_t lane(const VlWide<N> &word, unsigned i)  // a word wider than 64 bits, i
 }  // namespace
 
 // FRAME_DRAM: the frames' place behind gpu_top's memory port (its FRAME_BASE: the simulator
-// passes none), in native 16-bit words.
+// passes none), in native words of kWordPixels pixels (its MEM_DW, the default: the model's Word;
+// pixel p of a frame in byte p % kWordPixels of word p / kWordPixels, little-endian).
 constexpr uint32_t kFrameBase = 0;
 constexpr uint32_t kFramePixels = uint32_t{GPU_BUILD_FB_WIDTH} * GPU_BUILD_FB_HEIGHT;
-constexpr uint32_t kFrameWords = kFramePixels / 2;
+constexpr uint32_t kWordPixels = NativePortModel::WORD_BYTES;
+constexpr uint32_t kFrameWords = kFramePixels / kWordPixels;
+static_assert(GPU_BUILD_FRAME_DRAM == 0
+                  || (kFrameWords * kWordPixels == kFramePixels && GPU_BUILD_SPAN_W % kWordPixels == 0),
+              "gpu_frame_dram: a frame and a span are whole native words");
+#if !GPUSIM_FAST_DISPLAY
+// gpu_top's memory port as Verilated (C types of 8, 16, 32, 64 bits) holds the model's words.
+static_assert(sizeof(std::declval<VerilatedGpu &>().mem_rdata_data) == sizeof(NativePortModel::Word) &&
+                  sizeof(std::declval<VerilatedGpu &>().mem_wdata_data) == sizeof(NativePortModel::Word),
+              "gpu_top's MEM_DW is not the native port model's Word");
+#endif
 
 GpuSim::GpuSim() : v_(new Verilated)
 {
@@ -265,6 +276,11 @@ uint64_t GpuSim::memory_words_read() const
 uint64_t GpuSim::memory_words_written() const
 {
     return memory_ ? memory_->words_written() : 0;
+}
+
+unsigned GpuSim::memory_word_bytes()
+{
+    return GPU_BUILD_FRAME_DRAM != 0 ? NativePortModel::WORD_BYTES : 0;
 }
 
 void GpuSim::write(uint32_t offset, uint32_t value)
@@ -512,14 +528,14 @@ bool front_bank(const R &root)
 template <class R>
 void overlay_flush_queue(const R &root, unsigned back, uint8_t *pixels)
 {
-    constexpr unsigned span_words = GPU_BUILD_SPAN_W / 2;
+    constexpr unsigned span_words = GPU_BUILD_SPAN_W / kWordPixels;
     constexpr unsigned depth = 4;  // gpu_frame_dram's SPAN_Q
     unsigned entry = root.GPU_DRAM_Q(dat_q), word = root.GPU_DRAM_Q(dat_lane_q);
     for (; entry != root.GPU_DRAM_Q(tail_q); entry = (entry + 1) % (2 * depth), word = 0) {
         const uint32_t first = root.GPU_DRAM_Q(q_addr)[entry % depth];
         for (; word < span_words; word++) {
             const uint32_t addr = first + word - kFrameBase;
-            const uint32_t pixel = (addr % kFrameWords) * 2;
+            const uint32_t pixel = (addr % kFrameWords) * kWordPixels;
             if (addr >= 2 * kFrameWords) {
                 std::fprintf(stderr, "gpusim: a queued span at native word 0x%x\n", first);
                 std::abort();
@@ -527,8 +543,9 @@ void overlay_flush_queue(const R &root, unsigned back, uint8_t *pixels)
             if (addr / kFrameWords != back) {  // the frame now shown, written before its swap
                 continue;
             }
-            pixels[pixel] = lane(root.GPU_DRAM_Q(q_data)[entry % depth], 2 * word);
-            pixels[pixel + 1] = lane(root.GPU_DRAM_Q(q_data)[entry % depth], 2 * word + 1);
+            for (unsigned i = 0; i < kWordPixels; i++) {
+                pixels[pixel + i] = lane(root.GPU_DRAM_Q(q_data)[entry % depth], kWordPixels * word + i);
+            }
         }
     }
 }
@@ -543,9 +560,10 @@ void GpuSim::read_frame(bool bank, uint8_t *pixels) const
             return;
         }
         for (uint32_t i = 0; i < kFrameWords; i++) {
-            const uint16_t word = *memory_->word(kFrameBase + (bank ? kFrameWords : 0) + i);
-            pixels[2 * i] = static_cast<uint8_t>(word);
-            pixels[2 * i + 1] = static_cast<uint8_t>(word >> 8);
+            const NativePortModel::Word word = *memory_->word(kFrameBase + (bank ? kFrameWords : 0) + i);
+            for (uint32_t b = 0; b < kWordPixels; b++) {
+                pixels[kWordPixels * i + b] = lane(word, b);
+            }
         }
     } else {
         read_bank(*v_->top.rootp, bank, pixels);

@@ -80,10 +80,12 @@ public:
     // for the scan-out included: the display underflows). False in other builds.
     bool stall_memory(uint64_t clocks);
     // FRAME_DRAM, pin path: the memory port model's first protocol error (empty: none), and what
-    // moved through the port since reset.
+    // moved through the port since reset, in native words of memory_word_bytes() bytes (the
+    // port's width, gpu_top's MEM_DW / 8; 0 in a build without FRAME_DRAM).
     std::string memory_error() const;
     uint64_t memory_words_read() const;
     uint64_t memory_words_written() const;
+    static unsigned memory_word_bytes();
 
     const uint8_t *frame_rgb() const { return monitor_.rgb; }  // VGA_W x VGA_H RGB888
     const char *vga_error() const { return monitor_.error; }

@@ -3,11 +3,13 @@
 //
 // Written from LiteDRAM's port protocol (litedram/common.py LiteDRAMNativePort and its crossbar, as
 // docs/sdram.md describes them), sharing nothing with the RTL that drives it (gpu_frame_dram):
-//   - cmd: valid/ready; we and a native word address (16-bit words here). The model takes a
+//   - cmd: valid/ready; we and a native word address (32-bit words, Word: the half-rate PHY's
+//     port, 4 pixels a word, the lowest-addressed byte in bits 7:0). The model takes a
 //     command when cmd_ready is high, which it decides a clock ahead, at random when throttled
 //     and never while WRITE_DEPTH writes wait for their data.
 //   - wdata: valid/ready; each accepted write's data is taken in command order, on a clock with
-//     wdata_ready (never before the clock after its command was taken), with byte enables.
+//     wdata_ready (never before the clock after its command was taken), with WORD_BYTES byte
+//     enables (bit i: bits [8i +: 8]).
 //   - rdata: no ready (LiteDRAM cannot wait); each accepted read's word comes back in command order,
 //     READ_LATENCY clocks after its command at the earliest, and never before every write accepted
 //     before it has had its data taken (one port's commands stay in order).
@@ -27,7 +29,11 @@
 
 class NativePortModel {
 public:
-    static constexpr unsigned READ_LATENCY = 6;  // LiteDRAM's GENSDRPHY at CL 2, row open: ~6-8
+    using Word = uint32_t;                        // a native word: gpu_top's MEM_DW (default 32)
+    static constexpr unsigned WORD_BYTES = sizeof(Word);
+    // Command to its read data, at the least: LiteDRAM's HalfRateGENSDRPHY at CL 2, row open. A
+    // first figure, to be replaced by the value measured on the controller.
+    static constexpr unsigned READ_LATENCY = 5;
     static constexpr unsigned WRITE_DEPTH = 8;   // writes accepted and waiting for their data
 
     NativePortModel(uint32_t base, uint32_t words) : base_(base), mem_(words, 0) {}
@@ -48,12 +54,12 @@ public:
     // The outputs for this clock.
     struct Out {
         bool cmd_ready, wdata_ready, rdata_valid;
-        uint16_t rdata;
+        Word rdata;
     };
     Out drive() const { return out_; }
 
     // The DUT's outputs in this clock's low phase: what moves on the coming edge.
-    void sample(bool cmd_valid, bool cmd_we, uint32_t cmd_addr, bool wdata_valid, uint16_t wdata,
+    void sample(bool cmd_valid, bool cmd_we, uint32_t cmd_addr, bool wdata_valid, Word wdata,
                 unsigned wdata_we)
     {
         cmd_fire_ = cmd_valid && out_.cmd_ready;
@@ -74,9 +80,13 @@ public:
         if (wdata_fire_) {
             const Cmd w = writes_.front();
             writes_.pop_front();
-            if (uint16_t *cell = at(w.addr)) {
-                if (wdata_we_ & 1u) *cell = static_cast<uint16_t>((*cell & 0xFF00u) | (wdata_ & 0x00FFu));
-                if (wdata_we_ & 2u) *cell = static_cast<uint16_t>((*cell & 0x00FFu) | (wdata_ & 0xFF00u));
+            if (Word *cell = at(w.addr)) {
+                for (unsigned i = 0; i < WORD_BYTES; i++) {
+                    if (wdata_we_ & (1u << i)) {
+                        const Word byte = Word{0xFF} << (8 * i);
+                        *cell = static_cast<Word>((*cell & ~byte) | (wdata_ & byte));
+                    }
+                }
             }
             words_written_++;
         }
@@ -95,7 +105,7 @@ public:
             const Cmd &r = reads_.front();
             const bool writes_before = !writes_.empty() && writes_.front().seq < r.seq;
             if (clock_ >= r.taken + READ_LATENCY && !writes_before) {
-                const uint16_t *cell = at(r.addr);
+                const Word *cell = at(r.addr);
                 out_.rdata_valid = true;
                 out_.rdata = cell ? *cell : 0;
             }
@@ -103,7 +113,7 @@ public:
     }
 
     // The memory, native word `addr` (absolute): nullptr outside the model's range.
-    const uint16_t *word(uint32_t addr) const
+    const Word *word(uint32_t addr) const
     {
         return addr >= base_ && addr - base_ < mem_.size() ? &mem_[addr - base_] : nullptr;
     }
@@ -120,7 +130,7 @@ private:
     };
 
     bool open() { return throttle_ == 0 || rng_.below(100) >= throttle_; }
-    uint16_t *at(uint32_t addr)
+    Word *at(uint32_t addr)
     {
         if (addr >= base_ && addr - base_ < mem_.size()) {
             return &mem_[addr - base_];
@@ -135,12 +145,12 @@ private:
     }
 
     uint32_t base_;
-    std::vector<uint16_t> mem_;
+    std::vector<Word> mem_;
     std::deque<Cmd> writes_, reads_;
     Out out_{false, false, false, 0};
     bool cmd_fire_ = false, cmd_we_ = false, wdata_fire_ = false;
     uint32_t cmd_addr_ = 0;
-    uint16_t wdata_ = 0;
+    Word wdata_ = 0;
     unsigned wdata_we_ = 0;
     uint64_t seq_ = 0, clock_ = 0, stall_from_ = 0, stall_until_ = 0;
     uint64_t commands_ = 0, words_read_ = 0, words_written_ = 0;

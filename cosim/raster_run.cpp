@@ -200,7 +200,8 @@ int raster_main(int argc, char **argv)
                      "  \"busy_cycles\": %llu,\n  \"simulated_cycles\": %llu,\n  \"prims_in\": %llu,\n"
                      "  \"prims_drawn\": %llu,\n  \"prims_rejected\": %llu,\n  \"pixels\": %llu,\n"
                      "  \"samples\": %llu,\n  \"spans_written\": %llu,\n  \"spans_visited\": %llu,\n"
-                     "  \"errors\": %u,\n  \"rtl_equals_model\": %s,\n  \"pixels_differing\": %ld\n}\n",
+                     "  \"errors\": %u,\n  \"rtl_equals_model\": %s,\n  \"pixels_differing\": %ld,\n"
+                     "  \"frame_memory_word_bytes\": %u\n}\n",
                      ops.size(), static_cast<unsigned long long>(total.batches), strip_rows,
                      (sim.read(GPU_REG_CAPS) & GPU_CAPS_SPAN_W_MASK) >> GPU_CAPS_SPAN_W_LSB,
                      static_cast<unsigned long long>(total.busy_cycles), static_cast<unsigned long long>(sim.cycles()),
@@ -208,7 +209,7 @@ int raster_main(int argc, char **argv)
                      static_cast<unsigned long long>(total.rejected), static_cast<unsigned long long>(total.pixels),
                      static_cast<unsigned long long>(total.samples), static_cast<unsigned long long>(total.spans_written),
                      static_cast<unsigned long long>(total.spans_visited), total.errors, differ == 0 ? "true" : "false",
-                     differ);
+                     differ, GpuSim::memory_word_bytes());
         ok = std::fclose(json) == 0 && ok;
     } else {
         ok = false;

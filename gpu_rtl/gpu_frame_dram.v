@@ -4,21 +4,25 @@
 //
 // Contract:
 // - Flush port (clk): the strip buffer's valid/ready stream of frame spans (gpu_strip_buffer's
-//   frame port). A span taken goes to the back frame (bank !front) as SPAN_NW native writes, the
-//   span's pixels in address order; fr_ready falls only while the SPAN_Q-entry queue is full, so a
-//   memory that is slow stalls the flush and loses nothing. fr_idle is high when every taken span's
-//   writes have had their data taken by the port: a later read on the same port (LiteDRAM keeps one
-//   port's commands in order) sees them. The swap waits for it (gpu_raster S_CLOSE).
-// - Frames: bank b's pixel (x, y) is byte (y * FB_WIDTH + x) of native words FRAME_BASE +
-//   b * FRAME_NW ..., the low byte first (LiteDRAM's native words are little-endian).
+//   frame port). A span taken goes to the back frame (bank !front) as SPAN_NW native writes of
+//   PX_NW pixels each, every byte enabled, the span's pixels in address order; fr_ready falls only
+//   while the SPAN_Q-entry queue is full, so a memory that is slow stalls the flush and loses
+//   nothing. fr_idle is high when every taken span's writes have had their data taken by the port:
+//   a later read on the same port (LiteDRAM keeps one port's commands in order) sees them. The
+//   swap waits for it (gpu_raster S_CLOSE).
+// - Frames: a native word is NATIVE_DW bits, PX_NW = NATIVE_DW / 8 pixels. Bank b's pixel (x, y)
+//   is byte p = y * FB_WIDTH + x of the native words from FRAME_BASE + b * FRAME_NW on, the
+//   lowest-addressed byte in bits 7:0 (LiteDRAM's native words are little-endian): native word
+//   FRAME_BASE + b * FRAME_NW + p / PX_NW, bits [8 * (p % PX_NW) +: 8].
 // - Line schedule (clk_pix, gpu_vga): line_stb pulses once a display line, in its horizontal blank;
 //   with it and until the next, show_* names the frame row the next display line shows and
 //   fetch_* the row after it, each valid or not. The rows cross as bundled data: they change only
 //   with line_stb, and the clk side samples them when line_stb's pulse has crossed (gpu_cdc_pulse),
 //   two or three clocks later, by when they have been stable for at least a clock.
 // - Line buffer: two slots of one frame row each, slot = row & 1. A fetch reads the front frame's
-//   row into its slot; the display reads the slot of its row, a pixel a clk_pix cycle (rd_x, the
-//   row's parity), with one cycle of latency, and rd_invalid with it.
+//   row into its slot (ROW_NW native words); the display reads the slot of its row, a pixel a
+//   clk_pix cycle (rd_x: pixel rd_x % PX_NW of the slot's word rd_x / PX_NW; rd_row_odd, the row's
+//   parity), with one cycle of latency, and rd_invalid with it.
 // - Underflow: when the line schedule names a row to show whose fetch has not completed, that row's
 //   slot is marked invalid for the whole display line (the display shows it in a fixed colour,
 //   never half a line) and underflows counts one (saturating). The mark crosses as a level per slot
@@ -37,18 +41,25 @@
 //   nothing is counted (the display may start anywhere in a frame).
 //
 // Bandwidth (docs/strips.md): a row of FB_WIDTH pixels is ROW_NW read commands a display line
-// (800 pixel clocks); at 640 x 480, a 25 MHz pixel clock and a 50 MHz system clock, 320 of the
-// 1,600 clocks of a line; the deadline is the next line's pulse (one line; two at 320 x 240).
+// (800 pixel clocks); at 640 x 480, a 25 MHz pixel clock and a 50 MHz system clock, 160 of the
+// 1,600 clocks of a line with 32-bit native words (320 with 16-bit ones); the deadline is the next
+// line's pulse (one line; two at 320 x 240). A frame's flush is FRAME_NW write commands, one a
+// clock at most: 76,800 clocks at 640 x 480 with 32-bit words (153,600 with 16-bit ones).
 `default_nettype none
 
 module gpu_frame_dram #(
     parameter integer FB_WIDTH = gpu_pkg::GPU_FB_WIDTH,     // the frame
     parameter integer FB_HEIGHT = gpu_pkg::GPU_FB_HEIGHT,
     parameter integer SPAN_W = gpu_pkg::GPU_DEFAULT_SPAN_W, // pixels per flushed span
+    // The port's width, LiteDRAM's native user port's: 32 behind the SoC's half-rate SDR PHY (two
+    // 16-bit beats of the SDRAM's pins a system clock), 16 behind a full-rate one. Any power-of-two
+    // multiple of 8 bits up to a span (SPAN_W * 8): a span is whole native words.
+    parameter integer NATIVE_DW = 32,
     parameter integer NAW = 24,                             // native word address bits
     parameter integer FRAME_BASE = 0,                       // native word address of frame 0
-    localparam integer NATIVE_DW = 16,                      // the port's width: the SDRAM's pins
     localparam integer PX_NW = NATIVE_DW / 8,               // pixels a native word
+    localparam integer PXW = $clog2(PX_NW),                 // a pixel's index in its native word
+    localparam integer PX_LANE_W = (PX_NW > 1) ? PXW : 1,   // ... as a register (1 bit at PX_NW 1)
     localparam integer SPAN_NW = SPAN_W / PX_NW,            // native words a span
     localparam integer FB_WORDS = FB_WIDTH * FB_HEIGHT / SPAN_W,
     localparam integer FAW = $clog2(FB_WORDS),
@@ -99,11 +110,12 @@ module gpu_frame_dram #(
     output wire                 rdata_ready,
     input  wire [NATIVE_DW-1:0] rdata_data
 );
-    generate if (SPAN_NW < 1 || SPAN_NW * PX_NW != SPAN_W || (1 << LANE_W) < SPAN_NW
+    generate if (NATIVE_DW < 8 || PX_NW * 8 != NATIVE_DW || (1 << PXW) != PX_NW
+                 || SPAN_NW < 1 || SPAN_NW * PX_NW != SPAN_W || (1 << LANE_W) < SPAN_NW
                  || (SPAN_NW > 1 && (1 << LANE_W) != SPAN_NW) || ROW_NW * PX_NW != FB_WIDTH
                  || FRAME_BASE + 2 * FRAME_NW > (1 << NAW)) begin : g_bad_params
         // Elaboration stops here, with this name in the error: there is no such module.
-        gpu_frame_dram_needs_spans_of_whole_native_words_and_both_frames_in_NAW u_bad ();
+        gpu_frame_dram_needs_power_of_two_byte_native_words_whole_spans_and_both_frames_in_NAW u_bad ();
     end endgenerate
 
     // A constant times a variable by shifts and adds of the constant's set bits: no multiplier.
@@ -210,12 +222,14 @@ module gpu_frame_dram #(
     end
 
     // ---- the line buffer: written on clk, read on clk_pix ----
+    // A slot is a row's native words as they came (ROW_NW of them, ROW_NW <= 2^RIW); the display
+    // reads the word of its pixel and picks the pixel's byte a clock later, as the word arrives.
     wire [NATIVE_DW-1:0] lb_word;
-    reg rd_lane_q;  // the pixel of the word (PX_NW = 2)
+    reg [PX_LANE_W-1:0] rd_lane_q;  // the pixel of the word read: rd_x % PX_NW (0 at PX_NW 1)
     gpu_ram #(.DEPTH(2 << RIW), .WIDTH(NATIVE_DW)) u_lines (
         .wr_clk(clk), .rd_clk(clk_pix),
         .wr_en(rdata_valid), .wr_addr({slot_q, fill_q}), .wr_data(rdata_data), .wr_mask(1'b1),
-        .rd_en(rd_en), .rd_addr({rd_row_odd, RIW'(rd_x >> 1)}), .rd_data(lb_word)
+        .rd_en(rd_en), .rd_addr({rd_row_odd, RIW'(rd_x >> PXW)}), .rd_data(lb_word)
     );
     wire [1:0] slot_bad_pix;
     gpu_cdc_sync #(.WIDTH(2)) u_bad_sync (.clk(clk_pix), .in(slot_bad_q), .out(slot_bad_pix));
@@ -227,7 +241,7 @@ module gpu_frame_dram #(
         end
     end
     always @(posedge clk_pix) begin
-        if (rd_en) rd_lane_q <= rd_x[0];
+        if (rd_en) rd_lane_q <= PX_LANE_W'(rd_x) & PX_LANE_W'(PX_NW - 1);
     end
     assign rd_data = lb_word[rd_lane_q * 8 +: 8];
 

@@ -16,8 +16,9 @@
 // options, reported in CAPS) are gpu_core's, declared once in contract/gpu_build_params.vh.
 //
 // FRAME_DRAM = 1 (contract "Frames in external memory"): the frames are in the memory behind the
-// native port (mem_*: LiteDRAM's user port protocol, MEM_AW native 16-bit word address bits, frame 0
-// at native word FRAME_BASE), and gpu_frame_dram stands between the core and the display: it
+// native port (mem_*: LiteDRAM's user port protocol, MEM_DW-bit native words with MEM_DW / 8 byte
+// enables, MEM_AW native word address bits, frame 0 at native word FRAME_BASE: a byte offset in the
+// memory divided by MEM_DW / 8), and gpu_frame_dram stands between the core and the display: it
 // writes the strips' flushes and reads the front frame a line ahead (gpu_vga's line schedule) into
 // its line buffer, which gpu_vga scans. A third crossing then: the line schedule (bundled data
 // with a gpu_cdc_pulse), and the line buffer's slots' underflow marks (levels, constant while their
@@ -29,6 +30,9 @@
 module gpu_top #(
     `GPU_BUILD_PARAMS,                   // capacities and build options, passed to gpu_core
     parameter integer PIX_DIV = 4,       // clk_pix clocks per VGA pixel (1 for a 25 MHz clk_pix)
+    // FRAME_DRAM: the memory port's native word, the SoC's SDRAM port's (LiteDRAM behind its
+    // half-rate PHY: 32 bits; 16 behind a full-rate one); gpu_frame_dram says which widths work.
+    parameter integer MEM_DW = 32,
     parameter integer MEM_AW = 24,       // FRAME_DRAM: native word address bits of the memory port
     parameter integer FRAME_BASE = 0,    // FRAME_DRAM: native word address of frame 0 (frame 1 follows)
     localparam integer FB_PAW = $clog2(FB_WIDTH * FB_HEIGHT),
@@ -55,18 +59,18 @@ module gpu_top #(
     output wire [3:0]  vga_r,
     output wire [3:0]  vga_g,
     output wire [3:0]  vga_b,
-    // the frames' memory port (FRAME_DRAM), clk domain: LiteDRAM's native user port, 16 bits
-    output wire              mem_cmd_valid,
-    input  wire              mem_cmd_ready,
-    output wire              mem_cmd_we,
-    output wire [MEM_AW-1:0] mem_cmd_addr,    // native (16-bit) word address
-    output wire              mem_wdata_valid,
-    input  wire              mem_wdata_ready,
-    output wire [15:0]       mem_wdata_data,
-    output wire [1:0]        mem_wdata_we,
-    input  wire              mem_rdata_valid,
-    output wire              mem_rdata_ready,
-    input  wire [15:0]       mem_rdata_data
+    // the frames' memory port (FRAME_DRAM), clk domain: LiteDRAM's native user port, MEM_DW bits
+    output wire                mem_cmd_valid,
+    input  wire                mem_cmd_ready,
+    output wire                mem_cmd_we,
+    output wire [MEM_AW-1:0]   mem_cmd_addr,    // native (MEM_DW-bit) word address
+    output wire                mem_wdata_valid,
+    input  wire                mem_wdata_ready,
+    output wire [MEM_DW-1:0]   mem_wdata_data,
+    output wire [MEM_DW/8-1:0] mem_wdata_we,    // byte enables, byte i in bits [8i +: 8]
+    input  wire                mem_rdata_valid,
+    output wire                mem_rdata_ready,
+    input  wire [MEM_DW-1:0]   mem_rdata_data
 );
     // Between the core and its display: vertical blank, and the front bank's and palette's reads.
     wire vblank_start_sys, vblank_start_pix;
@@ -109,7 +113,7 @@ module gpu_top #(
     generate
         if (FRAME_DRAM != 0) begin : g_frame_dram
             gpu_frame_dram #(.FB_WIDTH(FB_WIDTH), .FB_HEIGHT(FB_HEIGHT), .SPAN_W(SPAN_W),
-                             .NAW(MEM_AW), .FRAME_BASE(FRAME_BASE)) u_frames (
+                             .NATIVE_DW(MEM_DW), .NAW(MEM_AW), .FRAME_BASE(FRAME_BASE)) u_frames (
                 .clk(clk), .rst(rst), .clk_pix(clk_pix), .rst_pix(rst_pix),
                 .fr_valid(fb_wr_valid), .fr_ready(fb_wr_ready), .fr_addr(fb_wr_addr),
                 .fr_data(fb_wr_data), .fr_idle(fb_wr_idle), .front(front_bank),
@@ -138,8 +142,8 @@ module gpu_top #(
             assign mem_cmd_we = 1'b0;
             assign mem_cmd_addr = {MEM_AW{1'b0}};
             assign mem_wdata_valid = 1'b0;
-            assign mem_wdata_data = 16'd0;
-            assign mem_wdata_we = 2'b00;
+            assign mem_wdata_data = {MEM_DW{1'b0}};
+            assign mem_wdata_we = {(MEM_DW / 8){1'b0}};
             assign mem_rdata_ready = 1'b1;
             wire unused_mem = mem_cmd_ready | mem_wdata_ready | mem_rdata_valid | (|mem_rdata_data)
                             | fb_wr_valid | (|fb_wr_addr) | (|fb_wr_data) | front_bank | line_stb

@@ -10,10 +10,10 @@
     wire        gpu_mem_cmd_valid, gpu_mem_cmd_ready, gpu_mem_cmd_we; \
     wire [soc_pkg::SOC_SDRAM_NATIVE_AW-1:0] gpu_mem_cmd_addr; \
     wire        gpu_mem_wdata_valid, gpu_mem_wdata_ready; \
-    wire [15:0] gpu_mem_wdata_data; \
-    wire [1:0]  gpu_mem_wdata_we; \
+    wire [soc_pkg::SOC_SDRAM_NATIVE_DW-1:0] gpu_mem_wdata_data; \
+    wire [soc_pkg::SOC_SDRAM_NATIVE_DW/8-1:0] gpu_mem_wdata_we; \
     wire        gpu_mem_rdata_valid, gpu_mem_rdata_ready; \
-    wire [15:0] gpu_mem_rdata_data;
+    wire [soc_pkg::SOC_SDRAM_NATIVE_DW-1:0] gpu_mem_rdata_data;
 
 `define SOC_GPU_MEM_PORTS \
     .gpu_mem_cmd_valid   (gpu_mem_cmd_valid), \

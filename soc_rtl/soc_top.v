@@ -44,7 +44,8 @@ module soc_top #(
     localparam integer RAM_AW = $clog2(RAM_BYTES / 4),
     localparam integer SDRAM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),        // word address bits
     localparam integer SDRAM_CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4),
-    localparam integer GPU_MEM_AW = soc_pkg::SOC_SDRAM_NATIVE_AW,    // 16-bit words
+    localparam integer GPU_MEM_AW = soc_pkg::SOC_SDRAM_NATIVE_AW,    // native words
+    localparam integer GPU_MEM_DW = soc_pkg::SOC_SDRAM_NATIVE_DW,
     localparam integer POR_CLKS = 16           // reset length after power-on or ext_rst
 ) (
     input  wire       clk,            // the system clock, CLK_HZ
@@ -90,11 +91,11 @@ module soc_top #(
     output wire [GPU_MEM_AW-1:0]     gpu_mem_cmd_addr,
     output wire                      gpu_mem_wdata_valid,
     input  wire                      gpu_mem_wdata_ready,
-    output wire [15:0]               gpu_mem_wdata_data,
-    output wire [1:0]                gpu_mem_wdata_we,
+    output wire [GPU_MEM_DW-1:0]     gpu_mem_wdata_data,
+    output wire [GPU_MEM_DW/8-1:0]   gpu_mem_wdata_we,
     input  wire                      gpu_mem_rdata_valid,
     output wire                      gpu_mem_rdata_ready,
-    input  wire [15:0]               gpu_mem_rdata_data,
+    input  wire [GPU_MEM_DW-1:0]     gpu_mem_rdata_data,
     // SPI flash (SDRAM_BYTES > 0), SPI mode 0; idle: cs_n high, sck low
     output wire       flash_cs_n,
     output wire       flash_sck,
@@ -359,7 +360,8 @@ module soc_top #(
         `GPU_BUILD_PARAMS_PASS,
         .PIX_DIV      (PIX_DIV),
         .MEM_AW       (GPU_MEM_AW),
-        .FRAME_BASE   (soc_pkg::SOC_SDRAM_GPU_FRAMES_OFFSET / 2)
+        .MEM_DW       (GPU_MEM_DW),
+        .FRAME_BASE   (soc_pkg::SOC_SDRAM_GPU_FRAMES_OFFSET / (GPU_MEM_DW / 8))
     ) u_gpu (
         .clk         (clk),
         .rst         (rst),

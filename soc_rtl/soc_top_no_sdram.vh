@@ -14,8 +14,8 @@
     wire [2:0]  sdram_idle_cti; \
     wire [3:0]  gpu_mem_idle; \
     wire [soc_pkg::SOC_SDRAM_NATIVE_AW-1:0] gpu_mem_idle_addr; \
-    wire [15:0] gpu_mem_idle_data; \
-    wire [1:0]  gpu_mem_idle_we; \
+    wire [soc_pkg::SOC_SDRAM_NATIVE_DW-1:0] gpu_mem_idle_data; \
+    wire [soc_pkg::SOC_SDRAM_NATIVE_DW/8-1:0] gpu_mem_idle_we; \
     wire unused_sdram = &{1'b0, sdram_idle, sdram_idle_adr, sdram_idle_ctrl_adr, sdram_idle_dat, \
                           sdram_idle_ctrl_dat, sdram_idle_sel, sdram_idle_ctrl_sel, sdram_idle_cti, \
                           gpu_mem_idle, gpu_mem_idle_addr, gpu_mem_idle_data, gpu_mem_idle_we};
@@ -54,6 +54,6 @@
     .gpu_mem_wdata_we    (gpu_mem_idle_we), \
     .gpu_mem_rdata_valid (1'b0), \
     .gpu_mem_rdata_ready (gpu_mem_idle[3]), \
-    .gpu_mem_rdata_data  (16'd0)
+    .gpu_mem_rdata_data  ({soc_pkg::SOC_SDRAM_NATIVE_DW{1'b0}})
 
 `endif

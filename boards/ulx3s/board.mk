@@ -43,7 +43,8 @@
 #                             firmware, its text back; Ctrl-A Ctrl-X leaves
 #
 # Build options (make variables):
-#   SYS_MHZ   the system clock, a divisor of 750 (boards/ulx3s/ulx3s_pll.v); 50 by default
+#   SYS_MHZ   the system clock, a divisor of 750 (boards/ulx3s/ulx3s_pll.v; with SOC_MEM=sdram 25 or 50,
+#             boards/ulx3s/ulx3s_sdram_pll.v); 50 by default
 #   SOC_MEM   sdram (default) or ram: where the firmware runs (bsp/soc/soc_ram.mk)
 #   FPGA      85F (default), 45F, 25F or 12F: the board's part; nextpnr's --85k/--45k/--25k/--12k, the same pins
 #             (one LPF); the build's directory says the part when it is not the 85F

@@ -5,11 +5,14 @@
 // = SDRAM_BYTES and its on-chip RAM the boot program's (RAM_INIT, RAM_BYTES: docs/boot.md): the
 // boot program powers the SDRAM up, tests it, copies the firmware's image from the flash into it
 // and jumps there.
-//   SDRAM   soc_sdram (LiteDRAM's controller, generated for SYS_MHZ: soc_rtl/litedram) on clk_sys,
-//           its commands and data registered in the I/O cells; sdram_clk is the PLL's CLKOS3
-//           (SYS_MHZ, SDRAM_PHASE_DEG after clk_sys: the argument is in ulx3s_pll.v) leaving through
-//           an ODDRX1F (D0 1, D1 0), the same kind of I/O register as the commands. Its reset is
-//           ulx3s_system's sdram_rst (PLL unlock or FIRE1, synchronised to clk_sys).
+//   clocks  two PLLs: ulx3s_pll's clk_tmds and clk_pix (the DVI), ulx3s_sdram_pll's clk_sys,
+//           clk_sys2x and clk_sdram; the system is held in reset until both have locked.
+//   SDRAM   soc_sdram (LiteDRAM's controller with its half-rate PHY, generated for SYS_MHZ:
+//           soc_rtl/litedram) on clk_sys, the pins on clk_sys2x, commands and data registered in the
+//           I/O cells; sdram_clk is clk_sdram (2 x SYS_MHZ, SDRAM_PHASE_DEG after clk_sys2x: the
+//           argument is in ulx3s_sdram_pll.v) leaving through an ODDRX1F (D0 1, D1 0), the same kind
+//           of I/O register as the commands. Its reset is ulx3s_system's sdram_rst (PLL unlock or
+//           FIRE1, synchronised to clk_sys).
 //   flash   soc_top's SPI pins (mode 0, SCK = clk_sys / 2): CS#, MOSI, MISO on their balls; SCK
 //           reaches the flash's clock ball (CCLK, a configuration pin) only through USRMCLK
 //           (USRMCLKI = SCK, USRMCLKTS = 0: always driven, after configuration; the LPF's
@@ -22,7 +25,7 @@
 `default_nettype none
 
 module ulx3s_sdram_top #(
-    parameter integer SYS_MHZ = 50,                                   // a divisor of 750 (ulx3s_pll)
+    parameter integer SYS_MHZ = 50,                                   // 25 or 50 (ulx3s_sdram_pll)
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_BOOT_BYTES,        // the boot program's on-chip RAM
     parameter integer SDRAM_BYTES = soc_pkg::SOC_SDRAM_DEFAULT_BYTES, // the generated controller's chip
     parameter RAM_INIT = "",                                          // the boot program's RAM image
@@ -57,15 +60,24 @@ module ulx3s_sdram_top #(
     output wire        flash_wpn,      // held high
     output wire        flash_holdn     // held high
 );
-    wire clk_tmds, clk_pix, clk_sys, clk_sdram, pll_locked;
-    ulx3s_pll #(.SYS_MHZ(SYS_MHZ), .SDRAM_CLK(1)) u_pll (
+    wire clk_tmds, clk_pix, clk_sys_off, video_locked;
+    ulx3s_pll #(.SYS_CLK(0)) u_pll (
         .clk_25mhz (clk_25mhz),
         .clk_tmds  (clk_tmds),
         .clk_pix   (clk_pix),
-        .clk_sys   (clk_sys),
-        .clk_sdram (clk_sdram),
-        .locked    (pll_locked)
+        .clk_sys   (clk_sys_off),    // off: the system clock is ulx3s_sdram_pll's
+        .locked    (video_locked)
     );
+    wire unused_clk_sys = clk_sys_off;
+    wire clk_sys, clk_sys2x, clk_sdram, sys_locked;
+    ulx3s_sdram_pll #(.SYS_MHZ(SYS_MHZ)) u_sdram_pll (
+        .clk_25mhz (clk_25mhz),
+        .clk_sys   (clk_sys),
+        .clk_sys2x (clk_sys2x),
+        .clk_sdram (clk_sdram),
+        .locked    (sys_locked)
+    );
+    wire pll_locked = video_locked && sys_locked;
 
     wire [3:0] tmds_d0, tmds_d1;
     wire       exit_valid;
@@ -104,12 +116,13 @@ module ulx3s_sdram_top #(
     );
     wire unused_exit = exit_valid | (|exit_code);  // the board runs the firmware for ever
 
-    // ---- the SDRAM: LiteDRAM on soc_top's ports, the chip's clock from CLKOS3 ----
+    // ---- the SDRAM: LiteDRAM on soc_top's ports, the chip's clock clk_sdram ----
     wire sdram_init_done;
     soc_sdram #(
         .SDRAM_BYTES (SDRAM_BYTES)
     ) u_sdram (
         .clk              (clk_sys),
+        .clk2x            (clk_sys2x),
         .rst              (sdram_rst),
         .init_done        (sdram_init_done),
         `SOC_SDRAM_BUS_PORTS,

@@ -77,11 +77,11 @@ module ulx3s_system #(
     output wire [GPU_MEM_AW-1:0]    gpu_mem_cmd_addr,
     output wire                     gpu_mem_wdata_valid,
     input  wire                     gpu_mem_wdata_ready,
-    output wire [15:0]              gpu_mem_wdata_data,
-    output wire [1:0]               gpu_mem_wdata_we,
+    output wire [soc_pkg::SOC_SDRAM_NATIVE_DW-1:0]   gpu_mem_wdata_data,
+    output wire [soc_pkg::SOC_SDRAM_NATIVE_DW/8-1:0] gpu_mem_wdata_we,
     input  wire                     gpu_mem_rdata_valid,
     output wire                     gpu_mem_rdata_ready,
-    input  wire [15:0]              gpu_mem_rdata_data,
+    input  wire [soc_pkg::SOC_SDRAM_NATIVE_DW-1:0]   gpu_mem_rdata_data,
     // for a simulation: the firmware's SYS EXIT
     output wire       exit_valid,
     output wire [7:0] exit_code
@@ -98,7 +98,7 @@ module ulx3s_system #(
     wire [31:0] soc_sdram_dat_r, soc_sdram_ctrl_dat_r;
     wire        soc_sdram_ack, soc_sdram_err, soc_sdram_ctrl_ack, soc_sdram_ctrl_err, soc_flash_miso;
     wire        soc_gpu_mem_cmd_ready, soc_gpu_mem_wdata_ready, soc_gpu_mem_rdata_valid;
-    wire [15:0] soc_gpu_mem_rdata_data;
+    wire [soc_pkg::SOC_SDRAM_NATIVE_DW-1:0] soc_gpu_mem_rdata_data;
     generate if (SDRAM_BYTES != 0) begin : g_sdram
         assign soc_gpu_mem_cmd_ready   = gpu_mem_cmd_ready;
         assign soc_gpu_mem_wdata_ready = gpu_mem_wdata_ready;
@@ -115,7 +115,7 @@ module ulx3s_system #(
         assign soc_gpu_mem_cmd_ready   = 1'b0;
         assign soc_gpu_mem_wdata_ready = 1'b0;
         assign soc_gpu_mem_rdata_valid = 1'b0;
-        assign soc_gpu_mem_rdata_data  = 16'd0;
+        assign soc_gpu_mem_rdata_data  = {soc_pkg::SOC_SDRAM_NATIVE_DW{1'b0}};
         assign soc_sdram_dat_r      = 32'd0;
         assign soc_sdram_ack        = 1'b0;
         assign soc_sdram_err        = 1'b0;

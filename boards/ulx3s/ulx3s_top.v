@@ -10,7 +10,7 @@
 // parameters (contract/gpu_build_params.vh) are passed through: a scene's manifest may size the
 // buffers (VTX_CAP, TRI_CAP); ENABLE_WMASK costs 4 EBR, board.mk turns it off beside a depth buffer.
 // This is the build without SDRAM (SOC_MEM=ram): the firmware in on-chip RAM, the SDRAM and flash
-// ports of ulx3s_system idle, the PLL's fourth output off; ulx3s_sdram_top is the build with them.
+// ports of ulx3s_system idle; ulx3s_sdram_top is the build with them.
 `include "contract/gpu_build_params.vh"
 `include "soc_rtl/soc_top_no_sdram.vh"
 `default_nettype none
@@ -33,16 +33,14 @@ module ulx3s_top #(
     // ESP32
     output wire       wifi_gpio0      // held high
 );
-    wire clk_tmds, clk_pix, clk_sys, clk_sdram_off, pll_locked;
-    ulx3s_pll #(.SYS_MHZ(SYS_MHZ), .SDRAM_CLK(0)) u_pll (
+    wire clk_tmds, clk_pix, clk_sys, pll_locked;
+    ulx3s_pll #(.SYS_MHZ(SYS_MHZ)) u_pll (
         .clk_25mhz (clk_25mhz),
         .clk_tmds  (clk_tmds),
         .clk_pix   (clk_pix),
         .clk_sys   (clk_sys),
-        .clk_sdram (clk_sdram_off),   // CLKOS3 disabled: no SDRAM here
         .locked    (pll_locked)
     );
-    wire unused_clk_sdram = clk_sdram_off;
 
     wire [3:0] tmds_d0, tmds_d1;
     wire       exit_valid;

@@ -5,12 +5,13 @@
 // TRELLIS_IO buffers, the chip's through chip_dq/chip_dq_oe (in), the resolved bus (sdram_dq_pins)
 // and which side the controller is on (ctrl_dq_oe: the tristate of DQ bit 0, all 16 share one
 // registered enable in LiteDRAM's GENSDRPHY) out. sdram_busy: a request on the CPU's SDRAM port.
-// SOC_SDRAM_FOR_CHIP_MODEL(CLK, RST): the system's clock and LiteDRAM's reset. Needs the
+// SOC_SDRAM_FOR_CHIP_MODEL(CLK, CLK2X, RST): the system's clock, the PHY's (twice it, rising edges
+// aligned) and LiteDRAM's reset. Needs the
 // SOC_SDRAM_BUS_WIRES and SOC_GPU_MEM_WIRES, SDRAM_BYTES and the chip pins as the system's ports.
 `ifndef SOC_SDRAM_CHIP_MODEL_VH
 `define SOC_SDRAM_CHIP_MODEL_VH
 
-`define SOC_SDRAM_FOR_CHIP_MODEL(CLK, RST) \
+`define SOC_SDRAM_FOR_CHIP_MODEL(CLK, CLK2X, RST) \
     assign sdram_busy = sdram_wb_cyc && sdram_wb_stb; \
     wire [15:0] dq; \
     assign dq = chip_dq_oe ? chip_dq : 16'bz; \
@@ -19,7 +20,7 @@
     soc_sdram #( \
         .SDRAM_BYTES (SDRAM_BYTES) \
     ) u_sdram ( \
-        .clk (CLK), .rst (RST), .init_done (sdram_init_done), \
+        .clk (CLK), .clk2x (CLK2X), .rst (RST), .init_done (sdram_init_done), \
         `SOC_SDRAM_BUS_PORTS, \
         `SOC_GPU_MEM_PORTS, \
         .pin_a (sdram_a), .pin_ba (sdram_ba), .pin_cs_n (sdram_cs_n), .pin_ras_n (sdram_ras_n), \

@@ -19,6 +19,7 @@ module soc_sdram_sim #(
     `GPU_BUILD_PARAMS
 ) (
     input  wire        clk,
+    input  wire        clk2x,           // 2 x clk, rising edges aligned: the SDRAM PHY's
     input  wire        clk_pix,
     // verilator lint_off SYNCASYNCNET
     input  wire        ext_rst,         // soc_top synchronises it; LiteDRAM's reset flops take it asynchronously
@@ -78,7 +79,7 @@ module soc_sdram_sim #(
         .exit_valid (exit_valid), .exit_code (exit_code)
     );
 
-    `SOC_SDRAM_FOR_CHIP_MODEL(clk, ext_rst)   // LiteDRAM, its pins to socsim (cosim/soc/soc_sdram_chip_model.vh)
+    `SOC_SDRAM_FOR_CHIP_MODEL(clk, clk2x, ext_rst)   // LiteDRAM, its pins to socsim (cosim/soc/soc_sdram_chip_model.vh)
 endmodule
 
 `default_nettype wire

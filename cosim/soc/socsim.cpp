@@ -303,14 +303,19 @@ private:
     static constexpr uint64_t kTmdsHalfPs = 4000, kPixHalfPs = 20000, kLockPs = 1000000;
     static constexpr uint64_t kSysHalfPs = 500000000000ull / SOCSIM_CLK_HZ;
     uint64_t next_sys_ps_ = kSysHalfPs, next_pix_ps_ = kPixHalfPs, next_tmds_ps_ = kTmdsHalfPs;
+#ifdef SOCSIM_SDRAM
+    static_assert(kSysHalfPs % 2 == 0, "clk_sys2x's half period in whole picoseconds");
+    uint64_t next_sys2x_ps_ = kSysHalfPs;   // clk_sys2x: twice clk_sys, rising with clk_sys's first
+#endif
     TmdsDecoder tmds_;
     void tmds_clock();
 #endif
 #ifdef SOCSIM_SDRAM
-    // The SDRAM chip on soc_sdram_sim's pins (cosim/sdram/sdram_chip.h), clocked on the system
-    // clock's falling edge: the phase docs/sdram.md argues. Its first violation ends the run.
+    // The SDRAM chip on soc_sdram_sim's pins (cosim/sdram/sdram_chip.h), clocked at clk2x's rate a
+    // whole clk2x period behind the PHY (its edge at clk2x's rising edge, with the pins as they were
+    // just before it): the phase docs/sdram.md argues. Its first violation ends the run.
     std::unique_ptr<SdramChip> sdram_;
-    void sdram_clock();
+    void sdram_clock(const SdramPins &before);
     // The SPI flash on soc_top's flash pins (cosim/flash/spi_flash.h), stepped after each rising
     // edge of the system clock, where soc_spiflash's registered pins change; its MISO is what the
     // reader samples at the next one. Its first violation ends the run.
@@ -493,12 +498,23 @@ bool SocRun::load_ram(std::string *error)
 // One system clock: every edge of the three clocks up to and including the system clock's next
 // rising one, in time order (edges at the same instant in one eval); the TMDS bit pairs are read
 // after each rising edge of the TMDS clock, which the ODDRX1Fs send during the period that follows.
-// With SDRAM, the chip is clocked at the system clock's falling edge and the flash stepped after
-// its rising one, as in the system with SDRAM.
+// With SDRAM, clk_sys2x too; the chip is clocked at its rising edges and the flash stepped after
+// clk_sys's rising one, as in the system with SDRAM.
 void SocRun::clock_once()
 {
     for (;;) {
+#ifdef SOCSIM_SDRAM
+        const uint64_t t = std::min({next_sys_ps_, next_sys2x_ps_, next_pix_ps_, next_tmds_ps_});
+        bool sys2x_rose = false;
+        if (next_sys2x_ps_ == t) {
+            top_->clk_sys2x = !top_->clk_sys2x;
+            sys2x_rose = top_->clk_sys2x;
+            next_sys2x_ps_ += kSysHalfPs / 2;
+        }
+        const SdramPins before = sdram_pins_of(*top_);   // what the chip samples at clk_sys2x's edge
+#else
         const uint64_t t = std::min({next_sys_ps_, next_pix_ps_, next_tmds_ps_});
+#endif
         bool sys_rose = false, sys_fell = false, tmds_rose = false;
         if (next_sys_ps_ == t) {
             top_->clk_sys = !top_->clk_sys;
@@ -518,8 +534,11 @@ void SocRun::clock_once()
         top_->pll_locked = t >= kLockPs;
         top_->eval();
 #ifdef SOCSIM_SDRAM
+        if (sys2x_rose) {
+            sdram_clock(before);
+        }
         if (sys_fell) {
-            sdram_clock();
+            sdram_busy_ += top_->sdram_busy;
         }
         if (sys_rose) {
             flash_step(t);
@@ -538,23 +557,43 @@ void SocRun::clock_once()
 }
 #else
 // One clock of soc_top, the scan-out's clock tied to the system clock (soc.mk); the VGA pins are
-// sampled after the edges where vga_pix_stb was high.
+// sampled after the edges where vga_pix_stb was high. With SDRAM, clk2x too: it rises as clk falls
+// and as clk rises and falls between, and the chip is clocked at its rising edges.
 void SocRun::clock_once()
 {
     static constexpr uint64_t kHalfPs = 500000000000ull / SOCSIM_CLK_HZ;
+    const uint64_t t0 = 2 * kHalfPs * cycles_;
+#ifdef SOCSIM_SDRAM
+    SdramPins before = sdram_pins_of(*top_);
+    top_->clk2x = 1;
+#endif
     top_->clk = top_->clk_pix = 0;
     top_->eval();
 #ifdef SOCSIM_SDRAM
-    sdram_clock();
+    sdram_clock(before);
+    sdram_busy_ += top_->sdram_busy;
+    trace_dump(t0);
+    top_->clk2x = 0;
+    top_->eval();
+    trace_dump(t0 + kHalfPs / 2);
+    before = sdram_pins_of(*top_);
+    top_->clk2x = 1;
+#else
+    trace_dump(t0);
 #endif
-    trace_dump(2 * kHalfPs * cycles_);
     const bool pixel_edge = top_->vga_pix_stb;  // outputs change on the edge where it is high
     top_->clk = top_->clk_pix = 1;
     top_->eval();
 #ifdef SOCSIM_SDRAM
-    flash_step(2 * kHalfPs * cycles_ + kHalfPs);
+    sdram_clock(before);
+    flash_step(t0 + kHalfPs);
+    trace_dump(t0 + kHalfPs);
+    top_->clk2x = 0;
+    top_->eval();
+    trace_dump(t0 + 3 * kHalfPs / 2);
+#else
+    trace_dump(t0 + kHalfPs);
 #endif
-    trace_dump(2 * kHalfPs * cycles_ + kHalfPs);
     if (pixel_edge) {
         vga_sample(top_->vga_hsync_n, top_->vga_vsync_n, top_->vga_r, top_->vga_g, top_->vga_b);
     }
@@ -562,13 +601,12 @@ void SocRun::clock_once()
 #endif
 
 #ifdef SOCSIM_SDRAM
-// The chip's rising edge: it samples what the controller's output registers set at the system
-// clock's last rising edge, and drives DQ until its next edge.
-void SocRun::sdram_clock()
+// The chip's rising edge, at clk2x's: it samples the pins as they were before the edge (what the
+// PHY's output registers set at clk2x's previous rising edge) and drives DQ from now until its next
+// edge; the next eval settles it, and the PHY samples it at clk2x's next rising edge.
+void SocRun::sdram_clock(const SdramPins &before)
 {
-    sdram_drive(*top_, sdram_->clock(sdram_pins_of(*top_)));
-    top_->eval();
-    sdram_busy_ += top_->sdram_busy;
+    sdram_drive(*top_, sdram_->clock(before));
 }
 
 void SocRun::flash_step(uint64_t t_ps)
@@ -767,16 +805,22 @@ int SocRun::run()
     }
 #ifdef SOCSIM_BOARD_ULX3S
     top_->clk_sys = top_->clk_pix = top_->clk_tmds = 0;
+#ifdef SOCSIM_SDRAM
+    top_->clk_sys2x = 0;
+#endif
     top_->pll_locked = 0;
     top_->btn_reset = 0;
 #else
     top_->clk = top_->clk_pix = 0;
+#ifdef SOCSIM_SDRAM
+    top_->clk2x = 0;
+#endif
     top_->ext_rst = 0;
 #endif
 #ifdef SOCSIM_SDRAM
     {
         SdramConfig cfg;  // the -7 grade, as ULX3S boards carry (sdram_chip.h)
-        cfg.clock_period_ps = 1000000000000ull / SOCSIM_CLK_HZ;
+        cfg.clock_period_ps = 500000000000ull / SOCSIM_CLK_HZ;   // clk2x's
         cfg.strict_uninitialised_reads = false;  // a cache line refill may read words never written
         cfg.stuck_low_address_pin = opt_.sdram_fault_a;
         sdram_.reset(new SdramChip(cfg));

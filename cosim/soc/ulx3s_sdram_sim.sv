@@ -22,6 +22,7 @@ module ulx3s_sdram_sim #(
 ) (
     // ---- the PLL's clocks, made by socsim
     input  wire        clk_sys,
+    input  wire        clk_sys2x,       // 2 x clk_sys, rising edges aligned: the SDRAM PHY's
     input  wire        clk_pix,         // 25 MHz
     input  wire        clk_tmds,        // 125 MHz
     input  wire        pll_locked,
@@ -76,7 +77,7 @@ module ulx3s_sdram_sim #(
         .exit_valid (exit_valid), .exit_code (exit_code)
     );
 
-    `SOC_SDRAM_FOR_CHIP_MODEL(clk_sys, sdram_rst)   // LiteDRAM, its pins to socsim (cosim/soc/soc_sdram_chip_model.vh)
+    `SOC_SDRAM_FOR_CHIP_MODEL(clk_sys, clk_sys2x, sdram_rst)   // LiteDRAM, its pins to socsim (cosim/soc/soc_sdram_chip_model.vh)
 endmodule
 
 `default_nettype wire

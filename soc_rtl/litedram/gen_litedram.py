@@ -29,13 +29,19 @@ import os
 import shutil
 import sys
 import tempfile
+import types
 
 import yaml
+import litedram.gen as litedram_gen
 from litedram import modules as litedram_modules
 from litedram import phy as litedram_phys
 from litedram.gen import LiteDRAMCore
+from litex.build.generic_platform import Pins
 from litex.build.lattice import LatticePlatform
+from litex.gen import LiteXModule
 from litex.soc.integration.builder import Builder
+from migen import ClockDomain
+from migen.genlib.resetsync import AsyncResetSynchronizer
 
 TIMING_NAMES = ("tRP", "tRCD", "tWR", "tRAS", "tRFC", "tRRD", "tREFI")
 
@@ -69,9 +75,11 @@ def refresh_interval_ns(sys_clk_hz, window_ns=64e6, refreshes=8192):
     return int(window_ns / refreshes / clock_ns) * clock_ns
 
 
-def module_class(name, overrides, sys_clk_hz):
+def module_class(name, overrides, sys_clk_hz, rate):
     """The SDRAM module class NAME (ours, or litedram.modules'), its tREFI whole clocks at
-    SYS_CLK_HZ, OVERRIDES (ns) applied; a subclass, the original untouched."""
+    SYS_CLK_HZ, OVERRIDES (ns) applied, for a PHY of RATE ("1:1", "1:2": the controller's clocks
+    are the pins' times the rate's second number, which LiteDRAMCore does not know for an SDR
+    half-rate PHY); a subclass, the original untouched."""
     base = OUR_MODULES.get(name) or getattr(litedram_modules, name, None)
     if base is None:
         sys.exit(f"gen_litedram: no SDRAM module {name} here or in litedram.modules")
@@ -84,10 +92,50 @@ def module_class(name, overrides, sys_clk_hz):
         # LiteDRAM takes tRFC and tRRD as (clocks, ns) pairs, the others in ns.
         value = (None, ns) if key in ("tRFC", "tRRD") else ns
         (t if key in t else s)[key] = value
+    phy_rate = rate
+
+    def __init__(self, clk_freq, rate=None, **kwargs):  # LiteDRAMCore passes "1:1" for every SDR PHY
+        base.__init__(self, clk_freq, rate=phy_rate, **kwargs)
+
     return type(name, (base,), {
         "technology_timings": litedram_modules._TechnologyTimings(**t),
         "speedgrade_timings": {"default": litedram_modules._SpeedgradeTimings(**s)},
+        "__init__": __init__,
     })
+
+
+class HalfRateCRG(LiteXModule):
+    """The clocks of a core with the half-rate PHY: sys (the controller, the user ports) from pad
+    clk and sys2x (the PHY's I/O registers) from a new pad clk2x, both made outside from one PLL,
+    their rising edges aligned (HalfRateGENSDRPHY finds which sys2x edge starts a sys clock); rst
+    synchronised into each. LiteDRAM's own LiteDRAMGENSDRPHYCRG makes sys alone."""
+    def __init__(self, platform, core_config):
+        self.cd_sys = ClockDomain()
+        self.cd_sys2x = ClockDomain()
+        platform.add_extension([("clk2x", 0, Pins(1))])
+        rst = platform.request("rst")
+        self.comb += [self.cd_sys.clk.eq(platform.request("clk")),
+                      self.cd_sys2x.clk.eq(platform.request("clk2x"))]
+        self.specials += [AsyncResetSynchronizer(self.cd_sys, rst),
+                          AsyncResetSynchronizer(self.cd_sys2x, rst)]
+
+
+# The SDR PHYs this script builds: the name in the configuration, the class, the rate.
+SDR_PHYS = {
+    "GENSDRPHY": (litedram_phys.GENSDRPHY, "1:1"),
+    "HalfRateGENSDRPHY": (litedram_phys.HalfRateGENSDRPHY, "1:2"),
+}
+
+
+def use_half_rate_phy():
+    """LiteDRAMCore (2024.12) builds an SDR core only around GENSDRPHY, at rate "1:1", with a CRG
+    of one clock (it fails on HalfRateGENSDRPHY: no CRG). HalfRateGENSDRPHY takes the same pads and
+    arguments, so the core is built as for GENSDRPHY with the generator's names for that PHY and its
+    CRG pointing at the half-rate ones (the module's rate is module_class's)."""
+    litedram_gen.litedram_phys = types.SimpleNamespace(
+        **{k: getattr(litedram_phys, k) for k in dir(litedram_phys) if not k.startswith("_")})
+    litedram_gen.litedram_phys.GENSDRPHY = litedram_phys.HalfRateGENSDRPHY
+    litedram_gen.LiteDRAMGENSDRPHYCRG = HalfRateCRG
 
 
 def fix_dq_direction(verilog_path):
@@ -131,10 +179,13 @@ def main():
     config["sys_clk_freq"] = float(config["sys_clk_freq"])
     config["input_clk_freq"] = float(config["input_clk_freq"])
     config["cpu"] = None
-    config["sdram_module"] = module_class(config["sdram_module"], overrides, config["sys_clk_freq"])
-    config["sdram_phy"] = getattr(litedram_phys, config["sdram_phy"])
-    if config["sdram_phy"] is not litedram_phys.GENSDRPHY:
-        sys.exit("gen_litedram: only GENSDRPHY (the ULX3S's SDR SDRAM) is set up here")
+    if config["sdram_phy"] not in SDR_PHYS:
+        sys.exit(f"gen_litedram: sdram_phy must be one of {', '.join(SDR_PHYS)} (the ULX3S's SDR SDRAM)")
+    phy, rate = SDR_PHYS[config["sdram_phy"]]
+    if phy is litedram_phys.HalfRateGENSDRPHY:
+        use_half_rate_phy()
+    config["sdram_phy"] = phy
+    config["sdram_module"] = module_class(config["sdram_module"], overrides, config["sys_clk_freq"], rate)
 
     module = config["sdram_module"]
     sdram_bytes = module.nbanks * module.nrows * module.ncols * config["sdram_module_nb"]
@@ -174,6 +225,8 @@ def main():
         for key in sorted(k for k in vars(timing) if k.startswith("t")):
             f.write(f"{key} {getattr(timing, key)}\n")
         f.write(f"cl {core.sdrphy.settings.cl}\n")
+        f.write(f"phases {core.sdrphy.settings.nphases}\n")
+        f.write(f"read_latency {core.sdrphy.settings.read_latency}\n")
 
 
 if __name__ == "__main__":

@@ -5,7 +5,7 @@
 // Contract:
 //   sdram_*       soc_top's SDRAM port (Wishbone B4 classic with CTI): word addresses from
 //                 SOC_SDRAM_BASE; the decoder sends only addresses below SDRAM_BYTES. Served by
-//                 sdram_wb_burst on LiteDRAM's 16-bit native user port: an incrementing burst
+//                 sdram_wb_burst on LiteDRAM's 32-bit native user port: an incrementing burst
 //                 (sdram_cti 3'b010, the caches' line refills) has the rest of its 32-byte line read
 //                 ahead and streamed, one word a clock at best; writes are posted (acked in their
 //                 first clock while its queue has room). Once the power-up sequence has set
@@ -14,14 +14,17 @@
 //   sdram_ctrl_*  soc_top's SDRAM_CTRL port: LiteDRAM's control registers (word addresses of its
 //                 csr.csv), always answered.
 //   gpu_mem_*     soc_top's GPU frame memory port (a GPU built with FRAME_DRAM; idle otherwise):
-//                 LiteDRAM's second native user port ("gpu" of ulx3s_sdram.yml), 16-bit words from
+//                 LiteDRAM's second native user port ("gpu" of ulx3s_sdram.yml), 32-bit words from
 //                 the SDRAM's base, as it is: the GPU speaks the native protocol itself
 //                 (gpu_frame_dram). LiteDRAM's crossbar serves the two ports round robin per bank;
 //                 a port waits for init_done like the CPU's (the GPU's frames are written only once
 //                 the firmware, which runs after the power-up sequence, draws).
-//   pins          the chip's, as LiteDRAM's GENSDRPHY drives them (commands and data registered in
-//                 the I/O cells, DQ through TRELLIS_IO buffers); the chip's clock is the system's
-//                 shifted (docs/sdram.md): not made here.
+//   clocks        clk, the controller's and every port's; clk2x, twice its rate with rising edges
+//                 aligned (one PLL), LiteDRAM's HalfRateGENSDRPHY's: each clk's commands and two
+//                 16-bit beats go to the pins over two clk2x clocks.
+//   pins          the chip's, as the PHY drives them on clk2x (commands and data registered in the
+//                 I/O cells, DQ through TRELLIS_IO buffers); the chip's clock is clk2x inverted
+//                 (docs/sdram.md): not made here.
 // SDRAM_BYTES must be the generated core's size (gen_litedram.py --expect-bytes checks it).
 `default_nettype none
 
@@ -30,9 +33,11 @@ module soc_sdram #(
     localparam integer AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),       // soc_top's word address
     localparam integer CORE_AW = $clog2(SDRAM_BYTES / 4),                     // the core's
     localparam integer CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4),
-    localparam integer GPU_MEM_AW = soc_pkg::SOC_SDRAM_NATIVE_AW   // soc_top's, 16-bit words
+    localparam integer NATIVE_DW = soc_pkg::SOC_SDRAM_NATIVE_DW,   // LiteDRAM's user ports (no converter)
+    localparam integer GPU_MEM_AW = soc_pkg::SOC_SDRAM_NATIVE_AW   // soc_top's, native words
 ) (
     input  wire               clk,
+    input  wire               clk2x,            // 2 x clk, rising edges aligned: the PHY's pins
     input  wire               rst,              // the system's reset (button, PLL unlock): LiteDRAM
                                                 // synchronises it; it also clears the early-err flop
     output wire               init_done,        // the controller owns the pins: the SDRAM answers
@@ -57,18 +62,18 @@ module soc_sdram #(
     output wire [31:0]        sdram_ctrl_dat_r,
     output wire               sdram_ctrl_ack,
     output wire               sdram_ctrl_err,
-    // ---- soc_top's GPU frame memory port (LiteDRAM's native protocol, 16-bit words)
+    // ---- soc_top's GPU frame memory port (LiteDRAM's native protocol, NATIVE_DW-bit words)
     input  wire               gpu_mem_cmd_valid,
     output wire               gpu_mem_cmd_ready,
     input  wire               gpu_mem_cmd_we,
     input  wire [GPU_MEM_AW-1:0] gpu_mem_cmd_addr,
     input  wire               gpu_mem_wdata_valid,
     output wire               gpu_mem_wdata_ready,
-    input  wire [15:0]        gpu_mem_wdata_data,
-    input  wire [1:0]         gpu_mem_wdata_we,
+    input  wire [NATIVE_DW-1:0]   gpu_mem_wdata_data,
+    input  wire [NATIVE_DW/8-1:0] gpu_mem_wdata_we,
     output wire               gpu_mem_rdata_valid,
     input  wire               gpu_mem_rdata_ready,
-    output wire [15:0]        gpu_mem_rdata_data,
+    output wire [NATIVE_DW-1:0]   gpu_mem_rdata_data,
     // ---- the chip's pins
     output wire [12:0]        pin_a,
     output wire [1:0]         pin_ba,
@@ -85,7 +90,6 @@ module soc_sdram #(
     end endgenerate
 
     // The CPU's port: Wishbone onto LiteDRAM's native port (user port "cpu" of ulx3s_sdram.yml).
-    localparam integer NATIVE_DW = 16;                 // the PHY's width: no converter (docs/sdram.md)
     localparam integer NAW = CORE_AW + $clog2(32 / NATIVE_DW);
     wire                 cmd_valid, cmd_ready, cmd_we;
     wire [NAW-1:0]       cmd_addr;
@@ -133,6 +137,7 @@ module soc_sdram #(
     // a calibrating BIOS (an SDR chip has nothing to calibrate).
     litedram_core u_core (
         .clk                  (clk),
+        .clk2x                (clk2x),
         .rst                  (rst),
         .init_done            (init_done),
         .init_error           (unused_init_error),

@@ -81,8 +81,8 @@ module bus_slaves_top (
     wire [3:0] vga_r, vga_g, vga_b;
     wire [3:0] mem_out;
     wire [23:0] mem_addr;
-    wire [15:0] mem_data;
-    wire [1:0] mem_we;
+    wire [31:0] mem_data;  // gpu_top's default MEM_DW, the SoC's SDRAM port's
+    wire [3:0] mem_we;
     gpu_top u_gpu (
         .clk(clk), .rst(rst), .clk_pix(clk),
         .bus_valid(mon_valid), .bus_write(mon_write), .bus_addr(mon_addr), .bus_wdata(mon_wdata),
@@ -93,7 +93,7 @@ module bus_slaves_top (
         // the frames are the GPU's block RAM (FRAME_DRAM 0): its memory port is idle
         .mem_cmd_valid(mem_out[0]), .mem_cmd_ready(1'b0), .mem_cmd_we(mem_out[1]), .mem_cmd_addr(mem_addr),
         .mem_wdata_valid(mem_out[2]), .mem_wdata_ready(1'b0), .mem_wdata_data(mem_data),
-        .mem_wdata_we(mem_we), .mem_rdata_valid(1'b0), .mem_rdata_ready(mem_out[3]), .mem_rdata_data(16'd0)
+        .mem_wdata_we(mem_we), .mem_rdata_valid(1'b0), .mem_rdata_ready(mem_out[3]), .mem_rdata_data(32'd0)
     );
     wire unused_vga = vga_pix_stb | vga_de | vga_hsync_n | vga_vsync_n | (|vga_r) | (|vga_g) | (|vga_b)
                     | frame_swapped | error | (|mem_out) | (|mem_addr) | (|mem_data) | (|mem_we);

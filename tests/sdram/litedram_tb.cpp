@@ -4,7 +4,7 @@
 // this file the CPU on its two buses.
 //
 //   litedram_tb [--init ours|litedram] [--words N] [--bursts N] [--seed S] [--idle-us US]
-//               [--phase 180|0] [--grade 6|7] [--expect-error TEXT]
+//               [--lag full|half] [--grade 6|7] [--expect-error TEXT]
 //
 // The run: reset; the power-up sequence through the controller's DFI software interface — ours
 // (bsp/soc/sdram/sdram_init.c, the firmware's) or LiteDRAM's generated init_sequence(); N words written
@@ -20,11 +20,15 @@
 //
 // --grade: the chip's speed grade (cosim/sdram/sdram_chip.h: -6 and -7 differ in tRCD, tRP, tRAS,
 // tRRD and tWR, each the stricter in some); the controller is set up for both.
-// --phase: where the chip's clock edge falls in the system clock's period. 180: on its falling
-// edge (the chip samples what the controller's output registers set half a period before, and its
-// data is back before the controller's next rising edge); 0: on the rising edge itself (the chip
-// sees each command a full clock later). The board's PLL phase follows from which of the two the
-// controller's read latency expects (docs/sdram.md).
+// Clocks: the controller's clk and the half-rate PHY's clk2x (twice as fast, rising edges aligned);
+// the chip is clocked at clk2x's rate. --lag: where the chip's clock edge falls, zero-delay.
+// full (the default): at clk2x's rising edge, with the pins as they were just before it — the chip
+// sees each command a whole clk2x period after the PHY's output registers set it, and its data is
+// sampled by the PHY at the edge after the one that follows its edge; half: at clk2x's falling
+// edge — the chip sees a command half a period after it is set, and its data is on the pins before
+// the PHY's next edge. The board's SDRAM clock lags clk2x by the PLL's phase plus the I/O and the
+// chip's output delays; which of the two the PHY's read latency expects decides that phase
+// (docs/sdram.md).
 //
 // Exit 0 and a last line `litedram_tb: ok ...` when every read matched and the chip saw no
 // violation; with --expect-error TEXT, exit 0 only if the chip reported a violation containing
@@ -66,27 +70,28 @@ struct Bench {
     std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
     std::unique_ptr<Vlitedram_tb_top> top{new Vlitedram_tb_top{ctx.get()}};
     std::unique_ptr<SdramChip> chip;
-    int phase = 180;
+    bool lag_full = true;
     uint64_t clocks = 0;
     bool failed = false;
 
-    // One system clock. The chip's edge falls at the phase the run asked for (see the header).
+    // One system clock: two of clk2x, clk rising with the first and falling with the second. The
+    // chip's edges are clk2x's, at the lag the run asked for (see the header).
     void tick() {
-        if (phase == 0) {
-            const SdramPins before = sdram_pins_of(*top);  // what the chip samples at the shared edge
-            top->clk = 1;
-            top->eval();                         // the controller samples the chip's old drive
-            sdram_drive(*top, chip->clock(before));
+        for (int half = 0; half < 2; ++half) {
+            const SdramPins before = sdram_pins_of(*top);  // what a full-lag chip samples
+            top->clk2x = 1;
+            top->clk = half == 0;
+            top->eval();                                   // the PHY samples the chip's old drive
+            if (lag_full) {
+                sdram_drive(*top, chip->clock(before));
+                top->eval();
+            }
+            top->clk2x = 0;
             top->eval();
-            top->clk = 0;
-            top->eval();
-        } else {
-            top->clk = 1;
-            top->eval();
-            top->clk = 0;
-            top->eval();
-            sdram_drive(*top, chip->clock(sdram_pins_of(*top)));  // the falling edge: the chip's rising edge
-            top->eval();
+            if (!lag_full) {
+                sdram_drive(*top, chip->clock(sdram_pins_of(*top)));  // clk2x's falling edge
+                top->eval();
+            }
         }
         ++clocks;
         if (chip->failed() && !failed) {
@@ -365,7 +370,8 @@ extern "C" void cdelay(int i) {
 int main(int argc, char** argv) {
     std::string init = "ours";
     uint32_t words = 2000, seed = 1, idle_us = 0, bursts = 2000;
-    int phase = 180, grade = 7;
+    std::string lag = "full";
+    int grade = 7;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&]() -> const char* {
@@ -380,7 +386,7 @@ int main(int argc, char** argv) {
         else if (a == "--seed") seed = std::strtoul(value(), nullptr, 0);
         else if (a == "--bursts") bursts = std::strtoul(value(), nullptr, 0);
         else if (a == "--idle-us") idle_us = std::strtoul(value(), nullptr, 0);
-        else if (a == "--phase") phase = std::atoi(value());
+        else if (a == "--lag") lag = value();
         else if (a == "--grade") grade = std::atoi(value());
         else if (a == "--expect-error") expect_error = value();
         else {
@@ -388,16 +394,16 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    if ((init != "ours" && init != "litedram") || (phase != 0 && phase != 180) || (grade != 6 && grade != 7)) {
-        std::fprintf(stderr, "litedram_tb: --init ours|litedram, --phase 180|0, --grade 6|7\n");
+    if ((init != "ours" && init != "litedram") || (lag != "full" && lag != "half") || (grade != 6 && grade != 7)) {
+        std::fprintf(stderr, "litedram_tb: --init ours|litedram, --lag full|half, --grade 6|7\n");
         return 2;
     }
 
     Bench b;
     bench = &b;
-    b.phase = phase;
+    b.lag_full = lag == "full";
     SdramConfig cfg = SdramConfig::speed_grade(grade);
-    cfg.clock_period_ps = kPsPerClock;
+    cfg.clock_period_ps = kPsPerClock / 2;   // the chip's clock: clk2x's
     cfg.fail_fast = true;
     cfg.strict_uninitialised_reads = true;
     b.chip.reset(new SdramChip(cfg));
@@ -520,8 +526,9 @@ int main(int argc, char** argv) {
                 " %u abandoned, %u unaligned, %u wrap-8, %u across the top), %u wrong\n", ref.beats,
                 counts[0] + counts[1], counts[2], counts[3], counts[4], counts[5], counts[6], counts[7],
                 ref.mismatches);
-    std::printf("litedram_tb: %" PRIu64 " clocks (%.3f ms) at %.1f MHz, phase %d; chip (-%d): %s\n", b.clocks,
-                b.clocks * kPsPerClock / 1e9, kSysClkHz / 1e6, phase, grade, st.c_str());
+    std::printf("litedram_tb: %" PRIu64 " clocks (%.3f ms) at %.1f MHz, chip at %.1f MHz, lag %s; chip (-%d): %s\n",
+                b.clocks, b.clocks * kPsPerClock / 1e9, kSysClkHz / 1e6, 2 * kSysClkHz / 1e6, lag.c_str(), grade,
+                st.c_str());
     if (mismatches != 0) {
         std::printf("litedram_tb: FAILED: %u words read back wrong\n", mismatches);
         if (expect_error.empty()) b.finish_and_exit(1);

@@ -17,6 +17,7 @@ module litedram_tb_top #(
 ) (
     // ---- clock and reset
     input  wire               clk,
+    input  wire               clk2x,           // 2 x clk, rising edges aligned: the PHY's
     input  wire               rst,
     output wire               init_done,
     // ---- the SDRAM's pins as the chip sees them
@@ -53,18 +54,18 @@ module litedram_tb_top #(
     input  wire               wb_we,
     output wire               wb_ack,
     output wire               wb_err,
-    // ---- the GPU's frame memory port (LiteDRAM's native protocol, 16-bit words from SOC_SDRAM_BASE)
+    // ---- the GPU's frame memory port (LiteDRAM's native protocol, 32-bit words from SOC_SDRAM_BASE)
     input  wire               gpu_mem_cmd_valid,
     output wire               gpu_mem_cmd_ready,
     input  wire               gpu_mem_cmd_we,
     input  wire [soc_pkg::SOC_SDRAM_NATIVE_AW-1:0] gpu_mem_cmd_addr,
     input  wire               gpu_mem_wdata_valid,
     output wire               gpu_mem_wdata_ready,
-    input  wire [15:0]        gpu_mem_wdata_data,
-    input  wire [1:0]         gpu_mem_wdata_we,
+    input  wire [soc_pkg::SOC_SDRAM_NATIVE_DW-1:0]   gpu_mem_wdata_data,
+    input  wire [soc_pkg::SOC_SDRAM_NATIVE_DW/8-1:0] gpu_mem_wdata_we,
     output wire               gpu_mem_rdata_valid,
     input  wire               gpu_mem_rdata_ready,
-    output wire [15:0]        gpu_mem_rdata_data
+    output wire [soc_pkg::SOC_SDRAM_NATIVE_DW-1:0]   gpu_mem_rdata_data
 );
     wire [15:0] dq;
     assign dq = chip_dq_oe ? chip_dq : 16'bz;
@@ -72,7 +73,7 @@ module litedram_tb_top #(
     assign ctrl_dq_oe = !dut.u_core.TRELLIS_IO.T;
 
     soc_sdram dut (
-        .clk (clk), .rst (rst), .init_done (init_done),
+        .clk (clk), .clk2x (clk2x), .rst (rst), .init_done (init_done),
         .sdram_cyc (wb_cyc), .sdram_stb (wb_stb), .sdram_we (wb_we), .sdram_adr (wb_adr),
         .sdram_dat_w (wb_dat_w), .sdram_sel (wb_sel), .sdram_cti (wb_cti), .sdram_dat_r (wb_dat_r),
         .sdram_ack (wb_ack),

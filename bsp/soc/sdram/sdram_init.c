@@ -19,9 +19,13 @@ enum {
 /* Address bit 10 of PRECHARGE: all banks. */
 #define SDRAM_A10_ALL_BANKS 0x400u
 
-uint32_t sdram_mode_register(uint32_t cas_latency)
+uint32_t sdram_mode_register(uint32_t cas_latency, uint32_t phases)
 {
-    return (cas_latency & 0x7u) << 4;
+    uint32_t burst_code = 0u;
+    while ((1u << burst_code) < phases && burst_code < 3u) {
+        burst_code++;
+    }
+    return ((cas_latency & 0x7u) << 4) | burst_code;
 }
 
 /* One command on the DFI's phase 0 with the chip selected; RAS/CAS/WE as the command's truth table. */
@@ -42,7 +46,7 @@ void sdram_take_pins(void)
 
 uint32_t sdram_init(void)
 {
-    const uint32_t mode = sdram_mode_register(SDRAM_PHY_CL);
+    const uint32_t mode = sdram_mode_register(SDRAM_PHY_CL, SDRAM_PHY_PHASES);
 
     sdram_take_pins();
     sdram_delay_ns(SDRAM_POWER_UP_WAIT_NS);

@@ -17,10 +17,11 @@
 #include <stdint.h>
 
 /* The mode register this sequence programs (the chip data sheet's Mode Register Definition):
- * burst length 1 (A2..A0 = 0: LiteDRAM's full-rate SDR PHY moves one word per command),
- * sequential (A3 = 0), CAS latency cas_latency (A6..A4), standard operation (A8..A7 = 0),
- * programmed burst length for writes (A9 = 0), A12..A10 reserved 0. */
-uint32_t sdram_mode_register(uint32_t cas_latency);
+ * burst length `phases` (A2..A0 = log2 of it: LiteDRAM's SDR PHY moves one word per command and
+ * phase, 1 at full rate, 2 at half rate), sequential (A3 = 0), CAS latency cas_latency (A6..A4),
+ * standard operation (A8..A7 = 0), programmed burst length for writes (A9 = 0), A12..A10
+ * reserved 0. phases must be 1, 2, 4 or 8. */
+uint32_t sdram_mode_register(uint32_t cas_latency, uint32_t phases);
 
 /* The pins to software control at once (NOPs, CKE high): LiteDRAM leaves reset under hardware
  * control, its refresher sending PRECHARGE ALL and AUTO REFRESH every tREFI (7.8 us) to a chip
