@@ -4,7 +4,7 @@
 // them. DQ is split as tests/sdram/litedram_tb_top.sv splits it: the controller's drive through its
 // TRELLIS_IO buffers, the chip's through chip_dq/chip_dq_oe (in), the resolved bus (sdram_dq_pins)
 // and which side the controller is on (ctrl_dq_oe: the tristate of DQ bit 0, all 16 share one
-// registered enable in LiteDRAM's GENSDRPHY) out. sdram_busy: a request on the CPU's SDRAM port.
+// registered enable in LiteDRAM's PHY) out. sdram_busy: a request on the CPU's SDRAM port.
 // SOC_SDRAM_FOR_CHIP_MODEL(CLK, CLK2X, RST): the system's clock, the PHY's (twice it, rising edges
 // aligned) and LiteDRAM's reset. Needs the
 // SOC_SDRAM_BUS_WIRES and SOC_GPU_MEM_WIRES, SDRAM_BYTES and the chip pins as the system's ports.

@@ -3,9 +3,9 @@
 // soc_sdram (LiteDRAM's generated controller), wired as boards/ulx3s/ulx3s_sdram_top wires them
 // (LiteDRAM reset by ulx3s_system's sdram_rst), and the chip's and the flash's pins out to socsim,
 // which plays both (cosim/sdram/sdram_chip.h, cosim/flash/spi_flash.h). Left out are the vendor
-// primitives a simulation cannot run: the PLL (socsim makes the clocks), the ODDRX1Fs (socsim reads their input
-// pairs) and the SDRAM clock's output register (the chip model is clocked on the system clock's
-// falling edge, the phase docs/sdram.md argues).
+// primitives a simulation cannot run: the PLLs (socsim makes the clocks, clk_sys2x among them), the
+// ODDRX1Fs (socsim reads their input pairs) and the SDRAM clock's output register (the chip model is
+// clocked at clk_sys2x's rate a whole period behind it, the phase docs/sdram.md argues).
 //
 // The controller and the chip's pins as in soc_sdram_sim (cosim/soc/soc_sdram_chip_model.vh).
 `include "contract/gpu_build_params.vh"

@@ -7,7 +7,7 @@
 // The pins' names are those of socsim's system (cosim/soc/soc_sdram_sim.sv), so both harnesses read
 // them with cosim/sdram/sdram_pins.h. DQ is split the same way: the controller drives it through
 // its TRELLIS_IO buffers (cosim/sdram/ecp5/TRELLIS_IO.v), the chip through chip_dq/chip_dq_oe;
-// ctrl_dq_oe is the tristate of DQ bit 0 (all 16 share one registered enable in GENSDRPHY).
+// ctrl_dq_oe is the tristate of DQ bit 0 (all 16 share one registered enable in the PHY).
 `default_nettype none
 `include "soc_rtl/soc_gpu_mem.vh"
 
