@@ -114,6 +114,14 @@ ULX3S_FLOW   = $(PYTHON) synth/ecp5_bitstream.py --top $(ULX3S_TOP) --lpf $(ULX3
 # beyond this file's are declared in crossings_sdram.toml for when it does (boards/ulx3s/README.md).
 ULX3S_CROSSINGS = boards/ulx3s/crossings.toml
 ULX3S_FLOW  += $(if $(SOC_MEM_SUFFIX),,--crossings $(ULX3S_CROSSINGS))
+# The SDRAM build's two related clocks (ulx3s_sdram_pll: the system clock and the PHY's, twice it,
+# rising edges aligned): LiteDRAM's half-rate PHY moves each system clock's commands and data to
+# the pins' registers and the read beats back with one clk2x period for each path (the earliest
+# capturing edge after the launching one), which nextpnr does not constrain: checked after place and
+# route (synth/ecp5_bitstream.py --related).
+ULX3S_HALF_NS = $(shell echo $$((500000 / $(SYS_MHZ))) | sed 's/\(...\)$$/.\1/')
+ULX3S_FLOW  += $(if $(SOC_MEM_SUFFIX),--related u_sdram.u_core.sys_clk:u_sdram.clk2x:$(ULX3S_HALF_NS) \
+                 --related u_sdram.clk2x:u_sdram.u_core.sys_clk:$(ULX3S_HALF_NS))
 # YoWASP's tools see the working directory only: the core's path relative to it (in .venv/).
 SOC_CPU_V_REL = $(patsubst $(CURDIR)/%,%,$(SOC_CPU_V))
 

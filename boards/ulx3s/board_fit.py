@@ -117,7 +117,7 @@ def main():
     print()
     parts = ("12k", "25k", "45k", "85k")
     print("| build | RAM | LUT4 | FF | EBR | MULT18 | " + " | ".join(f"fits {p[:-1]}F" for p in parts)
-          + " | fmax sys / pix / tmds (MHz) |")
+          + " | fmax sys / pix / tmds (/ SDRAM PHY 2x) (MHz) |")
     print("|---|---:|---:|---:|---:|---:|" + "---|" * len(parts) + "---|")
     for name, scene, ram, zbuf, more, res, fmax, status in rows:
         c = res["cells"]
@@ -130,7 +130,7 @@ def main():
 
 
 def clock_order(name):
-    for i, key in enumerate(("sys", "pix", "tmds")):
+    for i, key in enumerate(("sys", "pix", "tmds", "clk2x")):
         if key in name:
             return i
     return 9
