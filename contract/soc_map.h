@@ -40,6 +40,8 @@
 #define SOC_SDRAM_CTRL_WINDOW_BYTES      0x00010000u
 #define SOC_FLASH_BASE                   0x84000000u  /* uncached: The board's SPI configuration flash, read only (soc_rtl/soc_spiflash.v: READ 0x03, one word a request, consecutive words streamed); writes answer ERR. The boot program reads the firmware's image here. */
 #define SOC_FLASH_WINDOW_BYTES           0x01000000u
+#define SOC_USB_BASE                     0x85000000u  /* uncached: The USB 1.1 low-speed host for one HID boot keyboard (soc_rtl/usb/soc_usb.v over usb_ls_host, docs/usb.md): the port's enable, its state, key events, error counters. Not decoded by soc_top yet (issue #28: the register block exists and is tested alone, tests/usb/regs.sh): today the whole window answers ERR, as an address outside every region. */
+#define SOC_USB_WINDOW_BYTES             0x00000100u
 
 /* UART registers: byte offsets from SOC_UART_BASE. */
 #define SOC_UART_REG_DATA                0x00u  /* rw: Write: push the TX byte [7:0] (dropped if the TX FIFO is full: check TX_FULL first). Read: [7:0] the oldest RX byte and bit 8 = valid; a read with valid set pops it. */
@@ -60,6 +62,23 @@
 #define SOC_SYS_REG_MTIMECMP_HI          0x24u  /* rw: Timer compare, high word. Resets to all ones. */
 #define SOC_SYS_REG_BUS_ERR_ADDR         0x28u  /* ro: Byte address of the first bus error since BUS_ERR was last cleared (0 if none). */
 #define SOC_SYS_REG_BUS_ERR              0x2Cu  /* rw: Bus-error status: VALID, WRITE, FETCH of the first error, COUNT of errors. Any write clears it (and releases the interrupt line). */
+
+/* USB registers: byte offsets from SOC_USB_BASE. */
+#define SOC_USB_REG_CTRL                 0x00u  /* rw: The port: ENABLE. Resets to 0. Off: nothing driven, the host held in reset (STATE detached), the keys still held released as KEY events, the counters kept. */
+#define SOC_USB_REG_STATUS               0x04u  /* ro: The host: STATE, ADDR (usb_ls_host's state and dev_addr). */
+#define SOC_USB_REG_KEY                  0x08u  /* ro: Read: the oldest key event, USAGE, PRESS and VALID set, and pops it; 0 (VALID clear) when none is held. One pop per read request. The host holds 16 events (usb_ls_host FIFO_DEPTH); more are dropped and counted in OVERFLOWS. */
+#define SOC_USB_REG_KBD                  0x0Cu  /* ro: The keyboard's interrupt IN endpoint as read from its configuration descriptor: EP, MPS, INTERVAL; 0 until enumerated. */
+#define SOC_USB_REG_CRC_ERRORS           0x10u  /* ro: Corrupted answers (CRC, PID, length, line errors), since reset (enable low keeps it): COUNT, saturating. */
+#define SOC_USB_REG_TIMEOUTS             0x14u  /* ro: Transactions without an answer (turnaround timeout), since reset (enable low keeps it): COUNT, saturating. */
+#define SOC_USB_REG_RETRIES              0x18u  /* ro: Transaction attempts repeated after a corrupted answer or a timeout, since reset (enable low keeps it): COUNT, saturating. */
+#define SOC_USB_REG_NAKS                 0x1Cu  /* ro: NAK handshakes (a keyboard with nothing new to report may answer a poll with NAK), since reset (enable low keeps it): COUNT, saturating. */
+#define SOC_USB_REG_STALLS               0x20u  /* ro: STALL handshakes, since reset (enable low keeps it): COUNT, saturating. */
+#define SOC_USB_REG_ATTACHES             0x24u  /* ro: Attaches (J steady for 100 ms), since reset (enable low keeps it): COUNT, saturating. */
+#define SOC_USB_REG_DETACHES             0x28u  /* ro: Detaches (SE0 over 2.5 us while the host does not drive), since reset (enable low keeps it): COUNT, saturating. */
+#define SOC_USB_REG_WRONG_LEN            0x2Cu  /* ro: Reports not 8 bytes long, ignored, since reset (enable low keeps it): COUNT, saturating. */
+#define SOC_USB_REG_OVERFLOWS            0x30u  /* ro: Key events lost to a full event FIFO (KEY not read fast enough), since reset (enable low keeps it): COUNT, saturating. */
+#define SOC_USB_REG_REENUMS              0x34u  /* ro: Bus resets and enumerations again after a failed transfer or an unexpected STALL, since reset (enable low keeps it): COUNT, saturating. */
+#define SOC_USB_REG_ROLLOVERS            0x38u  /* ro: ErrorRollOver (phantom) reports ignored, since reset (enable low keeps it): COUNT, saturating. */
 
 /* Register bit fields: _LSB and _MASK (in place); a one-bit field also by its bare name (= _MASK). */
 #define SOC_UART_DATA_BYTE_LSB           0u  /* in UART DATA: TX byte written, RX byte read. */
@@ -95,5 +114,48 @@
 #define SOC_SYS_BUS_ERR_COUNT_MASK       0xFFFF0000u
 #define SOC_SYS_LEDS_VALUE_LSB           0u  /* in SYS LEDS: One bit per LED, 1 = lit. */
 #define SOC_SYS_LEDS_VALUE_MASK          0x000000FFu
+#define SOC_USB_CTRL_ENABLE_LSB          0u  /* in USB CTRL: 1: the port on (attach, enumeration, polling); 0: off, as after reset. */
+#define SOC_USB_CTRL_ENABLE_MASK         0x00000001u
+#define SOC_USB_CTRL_ENABLE              0x00000001u
+#define SOC_USB_STATUS_STATE_LSB         0u  /* in USB STATUS: The host's state: 0 detached, 1 attached (debouncing), 2 resetting, 3 enumerating, 4 running (the keyboard polled), 5 no boot keyboard found (until a detach), 6 babble (the port disabled until a detach). */
+#define SOC_USB_STATUS_STATE_MASK        0x00000007u
+#define SOC_USB_STATUS_ADDR_LSB          8u  /* in USB STATUS: The keyboard's USB address (0 until SET_ADDRESS). */
+#define SOC_USB_STATUS_ADDR_MASK         0x00007F00u
+#define SOC_USB_KEY_USAGE_LSB            0u  /* in USB KEY: The key's HID usage (Keyboard/Keypad page; 0xE0..0xE7 the modifiers). */
+#define SOC_USB_KEY_USAGE_MASK           0x000000FFu
+#define SOC_USB_KEY_VALID_LSB            8u  /* in USB KEY: The event in USAGE and PRESS is a real one (and is popped by this read). */
+#define SOC_USB_KEY_VALID_MASK           0x00000100u
+#define SOC_USB_KEY_VALID                0x00000100u
+#define SOC_USB_KEY_PRESS_LSB            9u  /* in USB KEY: 1: the key was pressed, 0: released. */
+#define SOC_USB_KEY_PRESS_MASK           0x00000200u
+#define SOC_USB_KEY_PRESS                0x00000200u
+#define SOC_USB_KBD_EP_LSB               0u  /* in USB KBD: bEndpointAddress of the keyboard's interrupt IN endpoint (0x81 for endpoint 1). */
+#define SOC_USB_KBD_EP_MASK              0x000000FFu
+#define SOC_USB_KBD_MPS_LSB              8u  /* in USB KBD: Its wMaxPacketSize (low byte). */
+#define SOC_USB_KBD_MPS_MASK             0x0000FF00u
+#define SOC_USB_KBD_INTERVAL_LSB         16u  /* in USB KBD: Its bInterval in ms (polled every max(bInterval, 8) ms). */
+#define SOC_USB_KBD_INTERVAL_MASK        0x00FF0000u
+#define SOC_USB_CRC_ERRORS_COUNT_LSB     0u  /* in USB CRC_ERRORS: usb_ls_host cnt_crc, saturating at 0xFFFF. */
+#define SOC_USB_CRC_ERRORS_COUNT_MASK    0x0000FFFFu
+#define SOC_USB_TIMEOUTS_COUNT_LSB       0u  /* in USB TIMEOUTS: usb_ls_host cnt_timeout, saturating at 0xFFFF. */
+#define SOC_USB_TIMEOUTS_COUNT_MASK      0x0000FFFFu
+#define SOC_USB_RETRIES_COUNT_LSB        0u  /* in USB RETRIES: usb_ls_host cnt_retry, saturating at 0xFFFF. */
+#define SOC_USB_RETRIES_COUNT_MASK       0x0000FFFFu
+#define SOC_USB_NAKS_COUNT_LSB           0u  /* in USB NAKS: usb_ls_host cnt_nak, saturating at 0xFFFF. */
+#define SOC_USB_NAKS_COUNT_MASK          0x0000FFFFu
+#define SOC_USB_STALLS_COUNT_LSB         0u  /* in USB STALLS: usb_ls_host cnt_stall, saturating at 0xFFFF. */
+#define SOC_USB_STALLS_COUNT_MASK        0x0000FFFFu
+#define SOC_USB_ATTACHES_COUNT_LSB       0u  /* in USB ATTACHES: usb_ls_host cnt_attach, saturating at 0xFFFF. */
+#define SOC_USB_ATTACHES_COUNT_MASK      0x0000FFFFu
+#define SOC_USB_DETACHES_COUNT_LSB       0u  /* in USB DETACHES: usb_ls_host cnt_detach, saturating at 0xFFFF. */
+#define SOC_USB_DETACHES_COUNT_MASK      0x0000FFFFu
+#define SOC_USB_WRONG_LEN_COUNT_LSB      0u  /* in USB WRONG_LEN: usb_ls_host cnt_wrong_len, saturating at 0xFFFF. */
+#define SOC_USB_WRONG_LEN_COUNT_MASK     0x0000FFFFu
+#define SOC_USB_OVERFLOWS_COUNT_LSB      0u  /* in USB OVERFLOWS: usb_ls_host cnt_overflow, saturating at 0xFFFF. */
+#define SOC_USB_OVERFLOWS_COUNT_MASK     0x0000FFFFu
+#define SOC_USB_REENUMS_COUNT_LSB        0u  /* in USB REENUMS: usb_ls_host cnt_reenum, saturating at 0xFFFF. */
+#define SOC_USB_REENUMS_COUNT_MASK       0x0000FFFFu
+#define SOC_USB_ROLLOVERS_COUNT_LSB      0u  /* in USB ROLLOVERS: usb_ls_host cnt_rollover, saturating at 0xFFFF. */
+#define SOC_USB_ROLLOVERS_COUNT_MASK     0x0000FFFFu
 
 #endif /* SOC_MAP_H */

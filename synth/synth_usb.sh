@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # yosys synth_ecp5 of the USB low-speed host (soc_rtl/usb/): each module of the line and packet
-# layers alone, then the transaction layer, the report decoder and the whole host (usb_ls_host with
-# all its layers), at the SoC's default clock: a Markdown table of LUT4, flip-flops, carry cells and
-# block RAMs. Uses the venv's yosys (tools/setup.sh makes .venv/). Logs in BUILD_DIR/usb/.
+# layers alone, then the transaction layer, the report decoder, the whole host (usb_ls_host with
+# all its layers) and the host with its Wishbone register block (soc_usb), at the SoC's default
+# clock: a Markdown table of LUT4, flip-flops, carry cells and block RAMs. Uses the venv's yosys (tools/setup.sh makes .venv/). Logs in BUILD_DIR/usb/.
 # Usage: synth/synth_usb.sh [BUILD_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,11 +15,12 @@ files() {
     case "$1" in
         usb_ls_host) echo "$pkg soc_rtl/usb/usb_ls_tx.v soc_rtl/usb/usb_ls_rx.v soc_rtl/usb/usb_ls_packet_tx.v \
             soc_rtl/usb/usb_ls_packet_rx.v soc_rtl/usb/usb_ls_xfer.v soc_rtl/usb/usb_hid_keys.v soc_rtl/usb/usb_ls_host.v" ;;
+        soc_usb) echo "$(files usb_ls_host) soc_rtl/usb/soc_usb.v" ;;
         *) echo "$pkg soc_rtl/usb/$1.v" ;;
     esac
 }
 printf '| module | LUT4 | FF | CCU2C | EBR |\n|---|---:|---:|---:|---:|\n'
-for m in usb_ls_tx usb_ls_rx usb_ls_packet_tx usb_ls_packet_rx usb_ls_xfer usb_hid_keys usb_ls_host; do
+for m in usb_ls_tx usb_ls_rx usb_ls_packet_tx usb_ls_packet_rx usb_ls_xfer usb_hid_keys usb_ls_host soc_usb; do
     "$yosys" -q -l "$out/$m.log" -p "read_verilog -sv $(echo $(files $m)); \
         synth_ecp5 -top $m; tee -q -o $out/$m.stat stat" >/dev/null 2>"$out/$m.warnings"
     # "LUT4 166" (yosys 0.23) or "166 LUT4" (newer)
