@@ -6,7 +6,7 @@ fmax per clock against its constraint and of the resources used, then the .bit.
     ecp5_bitstream.py --top T --files F.f [--files ...] --lpf BOARD.lpf --device 85k
                       --package CABGA381 --speed 6 --out DIR [--param NAME=VALUE]... [--seed N]
                       [--synth-only | --inputs-only] [--crossings CROSSINGS.toml]
-                      [--related FROM:TO:NS]...
+                      [--related FROM:TO]...
 
 It fails (status 1, no .bit) when a clock misses its constraint, and says which. --inputs-only
 checks what the flow would read and stops: every source, the constraints, the tools, and each
@@ -19,12 +19,12 @@ The source lists are files.f files (one path a line, `//` comments), read in the
 --crossings: right after synthesis, synth/crossings.py checks the netlist's clock-domain crossings
 against that file (the table to DIR/crossings.md) and the flow stops (status 1) on one it does not
 declare, or on an entry that matches none.
---related FROM:TO:NS: paths from clock FROM to clock TO (names as the fmax table gives them) must
-take at most NS. nextpnr-ecp5 times each clock alone and only reports the paths between two (its
-"cross-domain" paths, unconstrained): two clocks of one PLL with a fixed relation (LiteDRAM's
-half-rate PHY: the system clock and twice it, rising edges aligned) need their paths checked
-against the time the relation leaves them. The flow fails, as for a missed clock, when one takes
-longer; the table shows each.
+--related FROM:TO: clocks FROM and TO (names as the fmax table gives them) come from one PLL, one
+a whole multiple of the other with their rising edges aligned (LiteDRAM's half-rate PHY: the system
+clock and twice it), so a path between them has the faster one's period from its launching edge to
+the first capturing one. nextpnr-ecp5 times each clock alone and only reports the paths between
+two (its "cross-domain" paths, unconstrained); the flow checks the longest from FROM to TO against
+that period and fails, as for a missed clock, when it is longer; the table shows each.
 """
 import argparse
 import json
@@ -119,6 +119,21 @@ def clock_name(net):
     return net.replace("$glbnet$", "").replace("$TRELLIS_IO_IN", "")
 
 
+def related_path(rep, spec):
+    """--related FROM:TO against nextpnr's report REP: (FROM, TO, the faster clock's period in ns,
+    the longest FROM -> TO path in ns)."""
+    src, dst = spec.split(":")
+    mhz = {clock_name(net): v["constraint"] for net, v in rep["fmax"].items()}
+    for name in (src, dst):
+        if name not in mhz:
+            sys.exit(f"ecp5_bitstream: --related {spec}: no clock {name} (clocks: {', '.join(sorted(mhz))})")
+    paths = [sum(step["delay"] for step in cp["path"]) for cp in rep["critical_paths"]
+             if clock_name(cp["from"]).endswith(" " + src) and clock_name(cp["to"]).endswith(" " + dst)]
+    if not paths:
+        sys.exit(f"ecp5_bitstream: --related {spec}: nextpnr reports no path from {src} to {dst}")
+    return src, dst, 1000.0 / max(mhz[src], mhz[dst]), max(paths)
+
+
 def check_crossings(a, json_path):
     """synth/crossings.py on the new netlist: its table here and in DIR/crossings.md; exits naming
     each undeclared crossing (and each declared one that matched nothing)."""
@@ -156,8 +171,8 @@ def main():
     ap.add_argument("--inputs-only", action="store_true",
                     help="check the sources, constraints, tools and RAM image, then stop")
     ap.add_argument("--crossings", help="declared clock-domain crossings (TOML): checked after synthesis")
-    ap.add_argument("--related", action="append", default=[], metavar="FROM:TO:NS",
-                    help="paths from clock FROM to clock TO take at most NS (repeatable)")
+    ap.add_argument("--related", action="append", default=[], metavar="FROM:TO",
+                    help="clocks of one PLL, edges aligned: paths FROM -> TO within the faster's period (repeatable)")
     a = ap.parse_args()
 
     os.makedirs(a.out, exist_ok=True)
@@ -231,14 +246,9 @@ def main():
         if v["achieved"] < v["constraint"]:
             failed.append(name)
     for spec in a.related:
-        src, dst, budget = spec.rsplit(":", 2)
-        paths = [sum(step["delay"] for step in cp["path"]) for cp in rep["critical_paths"]
-                 if clock_name(cp["from"]).endswith(" " + src) and clock_name(cp["to"]).endswith(" " + dst)]
-        if not paths:
-            sys.exit(f"ecp5_bitstream: --related {spec}: nextpnr reports no path from {src} to {dst}")
-        worst = max(paths)
-        print(f"| {src} -> {dst} | {float(budget):.2f} ns | {worst:.2f} ns | {float(budget) - worst:+.2f} ns |")
-        if worst > float(budget):
+        src, dst, budget, worst = related_path(rep, spec)
+        print(f"| {src} -> {dst} | {budget:.2f} ns | {worst:.2f} ns | {budget - worst:+.2f} ns |")
+        if worst > budget:
             failed.append(f"{src} -> {dst}")
     util = rep["utilization"]
     print(f"placed: {util['TRELLIS_COMB']['used']} of {util['TRELLIS_COMB']['available']} LUT4/carry halves, "

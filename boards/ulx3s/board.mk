@@ -119,9 +119,8 @@ ULX3S_FLOW  += $(if $(SOC_MEM_SUFFIX),,--crossings $(ULX3S_CROSSINGS))
 # the pins' registers and the read beats back with one clk2x period for each path (the earliest
 # capturing edge after the launching one), which nextpnr does not constrain: checked after place and
 # route (synth/ecp5_bitstream.py --related).
-ULX3S_HALF_NS = $(shell echo $$((500000 / $(SYS_MHZ))) | sed 's/\(...\)$$/.\1/')
-ULX3S_FLOW  += $(if $(SOC_MEM_SUFFIX),--related u_sdram.u_core.sys_clk:u_sdram.clk2x:$(ULX3S_HALF_NS) \
-                 --related u_sdram.clk2x:u_sdram.u_core.sys_clk:$(ULX3S_HALF_NS))
+ULX3S_FLOW  += $(if $(SOC_MEM_SUFFIX),--related u_sdram.u_core.sys_clk:u_sdram.clk2x \
+                 --related u_sdram.clk2x:u_sdram.u_core.sys_clk)
 # YoWASP's tools see the working directory only: the core's path relative to it (in .venv/).
 SOC_CPU_V_REL = $(patsubst $(CURDIR)/%,%,$(SOC_CPU_V))
 

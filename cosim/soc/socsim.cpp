@@ -505,13 +505,15 @@ void SocRun::clock_once()
     for (;;) {
 #ifdef SOCSIM_SDRAM
         const uint64_t t = std::min({next_sys_ps_, next_sys2x_ps_, next_pix_ps_, next_tmds_ps_});
-        bool sys2x_rose = false;
+        const bool sys2x_rose = next_sys2x_ps_ == t && !top_->clk_sys2x;
+        SdramPins before{};
+        if (sys2x_rose) {
+            before = sdram_pins_of(*top_);   // what the chip samples at clk_sys2x's edge
+        }
         if (next_sys2x_ps_ == t) {
             top_->clk_sys2x = !top_->clk_sys2x;
-            sys2x_rose = top_->clk_sys2x;
             next_sys2x_ps_ += kSysHalfPs / 2;
         }
-        const SdramPins before = sdram_pins_of(*top_);   // what the chip samples at clk_sys2x's edge
 #else
         const uint64_t t = std::min({next_sys_ps_, next_pix_ps_, next_tmds_ps_});
 #endif

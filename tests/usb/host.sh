@@ -5,19 +5,11 @@
 # switch, detach/re-attach, babble. Usage: BUILD=build bash tests/usb/host.sh [-v]
 set -euo pipefail
 : "${BUILD:=build}" "${VERILATOR_RT:?}"
-dir="$BUILD/tests/usb-host"
-mkdir -p "$dir"
-dir="$(cd "$dir" && pwd)"
-src="soc_rtl/soc_pkg.sv soc_rtl/usb/usb_pkg.sv soc_rtl/usb/usb_ls_tx.v soc_rtl/usb/usb_ls_rx.v
-     soc_rtl/usb/usb_ls_packet_tx.v soc_rtl/usb/usb_ls_packet_rx.v soc_rtl/usb/usb_ls_xfer.v
-     soc_rtl/usb/usb_hid_keys.v soc_rtl/usb/usb_ls_host.v"
-for m in usb_ls_xfer usb_hid_keys usb_ls_host; do
-    verilator --lint-only -Wall --top-module $m soc_rtl/usb/lint.vlt $src
+source "$(dirname "$0")/host_tb_build.sh"
+# usb_ls_xfer and usb_hid_keys linted alone too (usb_host_bench lints the top)
+for m in usb_ls_xfer usb_hid_keys; do
+    verilator --lint-only -Wall --top-module $m soc_rtl/usb/lint.vlt $usb_host_src
 done
-echo "lint: usb_ls_xfer, usb_hid_keys, usb_ls_host clean under -Wall"
-verilator --cc --exe --build -j 1 --assert --x-assign fast --x-initial fast --top-module usb_ls_host \
-    -GSYS_HZ=50000000 $src "$PWD/tests/usb/host_tb.cpp" "$PWD/cosim/usb/usb_kbd_device.cpp" \
-    -CFLAGS "-O2 -std=c++17 -I$PWD/cosim/usb" -LDFLAGS "$VERILATOR_RT" \
-    --MAKEFLAGS "VM_GLOBAL_FAST= VM_GLOBAL_SLOW=" --Mdir "$dir/obj" -o "$dir/host_tb" \
-    >"$dir/verilator.log" 2>&1 || { tail -30 "$dir/verilator.log"; exit 1; }
-"$dir/host_tb" "$@"
+echo "lint: usb_ls_xfer, usb_hid_keys clean under -Wall"
+bench=$(usb_host_bench usb_ls_host host_tb)
+"$bench" "$@"

@@ -26,57 +26,11 @@
 
 #include "usb_kbd_device.h"
 
-static long failures = 0, checks = 0;
-static bool verbose = false;
-#define CHECK(cond, ...)                                                    \
-    do {                                                                    \
-        checks++;                                                           \
-        if (!(cond)) {                                                      \
-            failures++;                                                     \
-            std::printf("host_tb: FAIL %s:%d: ", __FILE__, __LINE__);       \
-            std::printf(__VA_ARGS__);                                       \
-            std::printf("\n");                                              \
-        }                                                                   \
-    } while (0)
+#define TB_NAME "host_tb"
+#include "host_tb_common.h"
 
-enum { S_DETACHED = 0, S_ATTACHED, S_RESETTING, S_ENUM, S_RUNNING, S_NOKBD, S_BABBLE };
 static const char *kStateName[] = {"detached", "attached", "resetting", "enumerating", "running",
                                    "no boot keyboard", "babble", "?"};
-static const uint64_t kClkPs = 20000;  // 50 MHz
-
-struct Event {
-    bool press;
-    uint8_t usage;
-    bool operator==(const Event &o) const { return press == o.press && usage == o.usage; }
-};
-
-// The events a boot report implies after the previous one (usb_hid_keys' order: releases of the
-// modifier bits, of the old keys in slot order, then presses of the modifier bits, of the new keys).
-static void diff(const UsbKbdReport &o, const UsbKbdReport &n, std::vector<Event> *out) {
-    auto in = [](uint8_t k, const UsbKbdReport &r) {
-        for (uint8_t x : r.keys)
-            if (x == k) return true;
-        return false;
-    };
-    for (int b = 0; b < 8; ++b)
-        if ((o.modifiers >> b & 1) && !(n.modifiers >> b & 1)) out->push_back({false, uint8_t(0xE0 + b)});
-    for (uint8_t k : o.keys)
-        if (k >= 4 && !in(k, n)) out->push_back({false, k});
-    for (int b = 0; b < 8; ++b)
-        if (!(o.modifiers >> b & 1) && (n.modifiers >> b & 1)) out->push_back({true, uint8_t(0xE0 + b)});
-    for (uint8_t k : n.keys)
-        if (k >= 4 && !in(k, o)) out->push_back({true, k});
-}
-
-static std::vector<Event> expected_for(const std::string &text) {
-    std::vector<Event> ev;
-    UsbKbdReport prev;
-    for (const UsbKbdReport &r : UsbKbdDevice::reports_for_text(text)) {
-        diff(prev, r, &ev);
-        prev = r;
-    }
-    return ev;
-}
 
 struct Bench {
     std::unique_ptr<Vusb_ls_host> h{new Vusb_ls_host};

@@ -6,17 +6,6 @@
 # Usage: BUILD=build bash tests/usb/regs.sh [-v]
 set -euo pipefail
 : "${BUILD:=build}" "${VERILATOR_RT:?}"
-dir="$BUILD/tests/usb-regs"
-mkdir -p "$dir"
-dir="$(cd "$dir" && pwd)"
-src="soc_rtl/soc_pkg.sv soc_rtl/usb/usb_pkg.sv soc_rtl/usb/usb_ls_tx.v soc_rtl/usb/usb_ls_rx.v
-     soc_rtl/usb/usb_ls_packet_tx.v soc_rtl/usb/usb_ls_packet_rx.v soc_rtl/usb/usb_ls_xfer.v
-     soc_rtl/usb/usb_hid_keys.v soc_rtl/usb/usb_ls_host.v soc_rtl/usb/soc_usb.v"
-verilator --lint-only -Wall --top-module soc_usb soc_rtl/usb/lint.vlt $src
-echo "lint: soc_usb clean under -Wall"
-verilator --cc --exe --build -j 1 --assert --x-assign fast --x-initial fast --top-module soc_usb \
-    -GSYS_HZ=50000000 $src "$PWD/tests/usb/regs_tb.cpp" "$PWD/cosim/usb/usb_kbd_device.cpp" \
-    -CFLAGS "-O2 -std=c++17 -I$PWD/cosim/usb -I$PWD/contract" -LDFLAGS "$VERILATOR_RT" \
-    --MAKEFLAGS "VM_GLOBAL_FAST= VM_GLOBAL_SLOW=" --Mdir "$dir/obj" -o "$dir/regs_tb" \
-    >"$dir/verilator.log" 2>&1 || { tail -30 "$dir/verilator.log"; exit 1; }
-"$dir/regs_tb" "$@"
+source "$(dirname "$0")/host_tb_build.sh"
+bench=$(usb_host_bench soc_usb regs_tb)
+"$bench" "$@"

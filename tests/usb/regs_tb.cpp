@@ -24,54 +24,8 @@
 #include "soc_map.h"
 #include "usb_kbd_device.h"
 
-static long failures = 0, checks = 0;
-static bool verbose = false;
-#define CHECK(cond, ...)                                                    \
-    do {                                                                    \
-        checks++;                                                           \
-        if (!(cond)) {                                                      \
-            failures++;                                                     \
-            std::printf("regs_tb: FAIL %s:%d: ", __FILE__, __LINE__);       \
-            std::printf(__VA_ARGS__);                                       \
-            std::printf("\n");                                              \
-        }                                                                   \
-    } while (0)
-
-enum { S_DETACHED = 0, S_ATTACHED, S_RESETTING, S_ENUM, S_RUNNING, S_NOKBD, S_BABBLE };
-static const uint64_t kClkPs = 20000;  // 50 MHz
-
-struct Event {
-    bool press;
-    uint8_t usage;
-    bool operator==(const Event &o) const { return press == o.press && usage == o.usage; }
-};
-
-// The events a boot report implies after the previous one (usb_hid_keys' order), as in host_tb.
-static void diff(const UsbKbdReport &o, const UsbKbdReport &n, std::vector<Event> *out) {
-    auto in = [](uint8_t k, const UsbKbdReport &r) {
-        for (uint8_t x : r.keys)
-            if (x == k) return true;
-        return false;
-    };
-    for (int b = 0; b < 8; ++b)
-        if ((o.modifiers >> b & 1) && !(n.modifiers >> b & 1)) out->push_back({false, uint8_t(0xE0 + b)});
-    for (uint8_t k : o.keys)
-        if (k >= 4 && !in(k, n)) out->push_back({false, k});
-    for (int b = 0; b < 8; ++b)
-        if (!(o.modifiers >> b & 1) && (n.modifiers >> b & 1)) out->push_back({true, uint8_t(0xE0 + b)});
-    for (uint8_t k : n.keys)
-        if (k >= 4 && !in(k, o)) out->push_back({true, k});
-}
-
-static std::vector<Event> expected_for(const std::string &text) {
-    std::vector<Event> ev;
-    UsbKbdReport prev;
-    for (const UsbKbdReport &r : UsbKbdDevice::reports_for_text(text)) {
-        diff(prev, r, &ev);
-        prev = r;
-    }
-    return ev;
-}
+#define TB_NAME "regs_tb"
+#include "host_tb_common.h"
 
 static uint32_t field(uint32_t word, uint32_t lsb, uint32_t mask) { return (word & mask) >> lsb; }
 
