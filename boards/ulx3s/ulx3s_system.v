@@ -26,6 +26,7 @@ module ulx3s_system #(
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // on-chip RAM (soc_top)
     parameter integer SDRAM_BYTES = 0,                             // soc_top's: 0 = no SDRAM, no flash
     parameter RAM_INIT = "",                                       // the firmware image (soc_top)
+    parameter integer BAUD = soc_pkg::SOC_UART_BAUD,               // the UART's bits per second (soc_top)
     `GPU_BUILD_PARAMS,                                             // the GPU's (soc_top)
     localparam integer SDRAM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),      // soc_top's
     localparam integer SDRAM_CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4),
@@ -134,6 +135,7 @@ module ulx3s_system #(
         .RAM_INIT     (RAM_INIT),
         .CLK_HZ       (SYS_HZ),
         .PIX_CLK_HZ   (25000000),
+        .BAUD         (BAUD),
         `GPU_BUILD_PARAMS_PASS
     ) u_soc (
         .clk               (clk_sys),

@@ -16,6 +16,7 @@ module soc_sdram_sim #(
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,
     parameter integer SDRAM_BYTES = soc_pkg::SOC_SDRAM_DEFAULT_BYTES,
     parameter integer PIX_CLK_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,   // tied to clk, as socsim's soc_top
+    parameter integer BAUD = soc_pkg::SOC_UART_BAUD,              // soc_top's UART
     `GPU_BUILD_PARAMS
 ) (
     input  wire        clk,
@@ -67,6 +68,7 @@ module soc_sdram_sim #(
         .RAM_BYTES   (RAM_BYTES),
         .SDRAM_BYTES (SDRAM_BYTES),
         .PIX_CLK_HZ  (PIX_CLK_HZ),
+        .BAUD        (BAUD),
         `GPU_BUILD_PARAMS_PASS
     ) u_soc (
         .clk (clk), .clk_pix (clk_pix), .ext_rst (ext_rst), .uart_rx (uart_rx), .uart_tx (uart_tx),

@@ -120,6 +120,10 @@ extern "C" {
 #ifndef SOCSIM_CLK_HZ
 #define SOCSIM_CLK_HZ SOC_CLK_HZ_DEFAULT
 #endif
+// The UART's rate: the contract's, or the build's own (mk/builds.toml uart_baud, the RTL's BAUD).
+#ifndef SOCSIM_UART_BAUD
+#define SOCSIM_UART_BAUD SOC_UART_BAUD
+#endif
 
 extern "C" long long socsim_read_instret();  // exported by socsim_cpu_tap
 
@@ -134,7 +138,7 @@ struct Options {
     int sdram_fault_a = -1;               // --sdram-fault-a N: the SDRAM's address pin N stuck low
     std::string boot;                     // --boot FILE.hex: the RAM's image, the firmware in the flash
     std::string flash_image;              // --flash FILE: the flash's image at the boot offset
-    uint32_t uart_divider = (SOCSIM_CLK_HZ + SOC_UART_BAUD / 2) / SOC_UART_BAUD;  // as soc_uart rounds
+    uint32_t uart_divider = (SOCSIM_CLK_HZ + SOCSIM_UART_BAUD / 2) / SOCSIM_UART_BAUD;  // as soc_uart rounds
     UartReplies replies;
 };
 

@@ -119,16 +119,16 @@ SOC_BOOT_ELF := $(BUILD)/soc/boot.elf
 SOC_BOOT_HEX := $(SOC_BOOT_ELF).hex
 SOC_BOOT_SRC := bsp/soc/boot/boot_crt0.S bsp/soc/boot/boot.c bsp/soc/boot/boot_image.c firmware/model/crc32.c
 $(SOC_BOOT_HEX): $(SOC_BOOT_ELF)
-$(eval $(call SOC_SDRAM_PROGRAM,$(SOC_BOOT_ELF),$(SOC_BOOT_SRC),-DCRC32_BYTE_TABLE=1))
+$(eval $(call SOC_SDRAM_PROGRAM,$(SOC_BOOT_ELF),$(SOC_BOOT_SRC),-DCRC32_SLICE_TABLES=1))
 # make test's scene runs from the SDRAM (suite soc-sdram-scenes) boot with a random fill of 16 KiB
 # instead of 256: 3.3 M cycles less a scene; the boot as built for boards runs in soc-boot-faults.
 SOC_BOOT_FAST_ELF := $(BUILD)/soc/boot-fast.elf
 SOC_BOOT_FAST_HEX := $(SOC_BOOT_FAST_ELF).hex
 $(SOC_BOOT_FAST_HEX): $(SOC_BOOT_FAST_ELF)
-$(eval $(call SOC_SDRAM_PROGRAM,$(SOC_BOOT_FAST_ELF),$(SOC_BOOT_SRC),-DCRC32_BYTE_TABLE=1 -DMEMTEST_QUICK_RANDOM_BYTES=16384u))
+$(eval $(call SOC_SDRAM_PROGRAM,$(SOC_BOOT_FAST_ELF),$(SOC_BOOT_SRC),-DCRC32_SLICE_TABLES=1 -DMEMTEST_QUICK_RANDOM_BYTES=16384u))
 soc_boot_elf = $(if $(filter $(SOC_SIM_CLK_HZ),$(1)),$(SOC_BOOT_ELF),$(BUILD)/soc/boot-$(1).elf)
 soc_boot_rules = $(if $(filter $(SOC_SIM_CLK_HZ),$(1)),,$(eval $(call soc_boot_elf,$(1)).hex: $(call soc_boot_elf,$(1))) \
-  $(eval $(call SOC_SDRAM_PROGRAM,$(call soc_boot_elf,$(1)),$(SOC_BOOT_SRC),-DCRC32_BYTE_TABLE=1,$(1))))
+  $(eval $(call SOC_SDRAM_PROGRAM,$(call soc_boot_elf,$(1)),$(SOC_BOOT_SRC),-DCRC32_SLICE_TABLES=1,$(1))))
 # The full memory test as a program (bsp/soc/boot/memtest_main.c): socsim's over the first 16 KiB,
 # one pass (a pass over the whole chip is 570 M accesses); a board's tests the whole SDRAM for ever.
 SOC_MEMTEST_ELF := $(BUILD)/soc/memtest.elf

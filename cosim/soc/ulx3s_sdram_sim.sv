@@ -18,6 +18,7 @@ module ulx3s_sdram_sim #(
     parameter integer SYS_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_BOOT_BYTES,        // the boot program's on-chip RAM
     parameter integer SDRAM_BYTES = soc_pkg::SOC_SDRAM_DEFAULT_BYTES,
+    parameter integer BAUD = soc_pkg::SOC_UART_BAUD,                  // the SoC's UART (ulx3s_system)
     `GPU_BUILD_PARAMS
 ) (
     // ---- the PLL's clocks, made by socsim
@@ -65,6 +66,7 @@ module ulx3s_sdram_sim #(
         .SYS_HZ      (SYS_HZ),
         .RAM_BYTES   (RAM_BYTES),
         .SDRAM_BYTES (SDRAM_BYTES),
+        .BAUD        (BAUD),
         `GPU_BUILD_PARAMS_PASS
     ) u_system (
         .clk_sys (clk_sys), .clk_pix (clk_pix), .clk_tmds (clk_tmds), .pll_locked (pll_locked),

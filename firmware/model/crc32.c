@@ -11,18 +11,27 @@ static const uint32_t crc32_nibble[16] = {
     0x9B64C2B0u, 0x86D3D2D4u, 0xA00AE278u, 0xBDBDF21Cu,
 };
 
-#if CRC32_BYTE_TABLE
-/* -DCRC32_BYTE_TABLE=1 (the boot program, bsp/soc/boot, which checks a whole firmware image and has
- * the on-chip RAM to itself): a byte at a time from a 1 KiB table made from the nibble table at the
- * first call — a third of the cycles. */
-static uint32_t crc32_byte[256];
+#if CRC32_SLICE_TABLES
+/* -DCRC32_SLICE_TABLES=1 (the boot program, bsp/soc/boot, which checks a whole firmware image and
+ * has the on-chip RAM to itself): four 1 KiB tables made from the nibble table at the first call,
+ * slice[0] the byte table, slice[k][b] the CRC of byte b followed by k zero bytes; an aligned word
+ * at a time then takes four look-ups (slicing-by-4). On the SoC, an image in the SDRAM: 10.8 cycles
+ * a byte, against 20 a byte at a time (one table; docs/boot.md). */
+static uint32_t crc32_slice[4][256];
+typedef uint32_t __attribute__((may_alias)) crc32_word;  /* the bytes read as words */
 
-static void crc32_make_byte_table(void)
+static void crc32_make_slice_tables(void)
 {
     for (uint32_t b = 0; b < 256u; b++) {
         uint32_t c = b;
         c = (c >> 4) ^ crc32_nibble[c & 0xFu];
-        crc32_byte[b] = (c >> 4) ^ crc32_nibble[c & 0xFu];
+        crc32_slice[0][b] = (c >> 4) ^ crc32_nibble[c & 0xFu];
+    }
+    for (uint32_t k = 1; k < 4u; k++) {
+        for (uint32_t b = 0; b < 256u; b++) {
+            const uint32_t c = crc32_slice[k - 1u][b];
+            crc32_slice[k][b] = (c >> 8) ^ crc32_slice[0][c & 0xFFu];
+        }
     }
 }
 #endif
@@ -30,12 +39,22 @@ static void crc32_make_byte_table(void)
 uint32_t crc32_update(uint32_t crc, const uint8_t *p, size_t n)
 {
     crc = ~crc;
-#if CRC32_BYTE_TABLE
-    if (crc32_byte[1] == 0u) {  /* entry 1 is never 0 once made */
-        crc32_make_byte_table();
+#if CRC32_SLICE_TABLES
+    if (crc32_slice[0][1] == 0u) {  /* entry 1 is never 0 once made */
+        crc32_make_slice_tables();
     }
-    for (size_t i = 0; i < n; i++) {
-        crc = (crc >> 8) ^ crc32_byte[(crc ^ p[i]) & 0xFFu];
+    for (; n > 0u && ((uintptr_t)p & 3u) != 0u; n--) {  /* bytes up to a word boundary */
+        crc = (crc >> 8) ^ crc32_slice[0][(crc ^ *p++) & 0xFFu];
+    }
+    /* A word holds the next four bytes little-endian, as the CRC's bit order takes them (the SoC
+     * and the hosts this builds for are little-endian). */
+    for (; n >= 4u; n -= 4u, p += 4) {
+        crc ^= *(const crc32_word *)(const void *)p;
+        crc = crc32_slice[3][crc & 0xFFu] ^ crc32_slice[2][(crc >> 8) & 0xFFu] ^
+              crc32_slice[1][(crc >> 16) & 0xFFu] ^ crc32_slice[0][crc >> 24];
+    }
+    for (; n > 0u; n--) {
+        crc = (crc >> 8) ^ crc32_slice[0][(crc ^ *p++) & 0xFFu];
     }
 #else
     for (size_t i = 0; i < n; i++) {

@@ -13,7 +13,10 @@ The counts are exact and deterministic (QEMU -icount); they include the DONE_SEQ
 gpu_wait and the frame report's printing, which the firmware's own "fw instr" figure excludes,
 so both are listed separately below the table.
 
-Usage: profile_fw.py GPUSIM ELF [--top N]
+With --startup the table is the start-up's instead: everything before the first frame (the C
+runtime's start, the scene's building, the messages), counted once.
+
+Usage: profile_fw.py GPUSIM ELF [--top N] [--startup]
 """
 import argparse
 import bisect
@@ -45,6 +48,8 @@ def main():
     ap.add_argument("gpusim")
     ap.add_argument("elf")
     ap.add_argument("--top", type=int, default=25)
+    ap.add_argument("--startup", action="store_true",
+                    help="profile the start-up (before the first frame) instead of the frames")
     args = ap.parse_args()
 
     syms = symbols(args.elf)
@@ -71,6 +76,7 @@ def main():
 
     per_frame = []           # one Counter of pc -> count per frame
     pcs = collections.Counter()
+    startup = collections.Counter()  # everything before the first frame
     frames_seen = -1         # entries into FRAME_MARK so far, minus one
     lines = 0
     with open(fifo) as trace:
@@ -82,6 +88,8 @@ def main():
             if pc == mark:
                 if frames_seen >= 0:
                     per_frame.append(pcs)
+                else:
+                    startup = pcs
                 pcs = collections.Counter()
                 frames_seen += 1
                 print(f"profile-fw: frame {frames_seen} starts after {lines} instructions",
@@ -92,8 +100,13 @@ def main():
         sys.exit(f"profile-fw: co-simulation failed ({status}): {''.join(err)[-400:]}")
     if pcs and frames_seen >= 0:
         per_frame.append(pcs)  # the last frame runs until the firmware exits
-    # per_frame[0] is frame 0 (warm-up): skip it; the last one also holds the exit path.
-    measured = per_frame[1:-1] if len(per_frame) > 2 else per_frame[1:]
+    if args.startup:
+        if frames_seen < 0:
+            sys.exit("profile-fw: the firmware never reached its first frame")
+        measured = [startup]
+    else:
+        # per_frame[0] is frame 0 (warm-up): skip it; the last one also holds the exit path.
+        measured = per_frame[1:-1] if len(per_frame) > 2 else per_frame[1:]
     if not measured:
         sys.exit("profile-fw: fewer than two frames in the run; build with FRAMES >= 3")
 
@@ -107,7 +120,8 @@ def main():
     side = {k: by_fn.pop(k) for k in list(by_fn) if k in NOT_PIPELINE}
     work = total - sum(side.values())
 
-    print(f"| function | instructions/frame | share |")
+    unit = "instructions" if args.startup else "instructions/frame"
+    print(f"| function | {unit} | share |")
     print("|---|---:|---:|")
     shown = 0
     for name, n in by_fn.most_common(args.top):
@@ -120,8 +134,9 @@ def main():
     print()
     for name, n in side.items():
         print(f"{name} (polling DONE_SEQ): {n / nf:.0f} instructions/frame, not counted above")
-    print(f"Mean of {nf} frame(s) (frame 0 and the last skipped); QEMU -icount, one line of "
-          f"the execution log per instruction.")
+    what = ("The start-up, before the first frame" if args.startup else
+            f"Mean of {nf} frame(s) (frame 0 and the last skipped)")
+    print(f"{what}; QEMU -icount, one line of the execution log per instruction.")
 
 
 if __name__ == "__main__":

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The SoC against co-simulation: every scene runs on socsim (the whole SoC: VexRiscv, caches,
+# The SoC against co-simulation: the scenes run on socsim (the whole SoC: VexRiscv, caches,
 # Wishbone bus, RAM, UART, the GPU and its VGA pins) and on the firmware's host build (the golden
 # model as the GPU; suite scene-host-vs-cosim holds it byte-identical to `gpusim cosim`, QEMU and
 # the Verilated GPU, and it takes a second where co-simulation takes twenty), with the same
@@ -14,7 +14,9 @@
 # scene runs its 2-frame build (tests/soc/tests.mk): a SoC frame is seconds of simulation (the
 # start-up of landscape, voxel and knot alone is millions of cycles: terrain, chunk meshes, the
 # knot's grid), and frames 0-1 already cover the keys (read at frame 1). Two scenes run at a time.
-# SOC_SCENES='tetra cubes' limits the scenes.
+# On chip three scenes run, one per camera mode (voxel fly, cubes orbit, tetra object): the knot's
+# and the landscape's start-ups are most of a run's cycles, and both scenes run on socsim from the
+# SDRAM below (their on-chip images' fit, stack included, is fw-fit's). SOC_SCENES='…' picks others.
 #
 #   vs_cosim.sh sdram SOCSIM_SDRAM_DRAM   (suite soc-sdram-scenes) the same with everything in the
 #   SDRAM: the system with LiteDRAM and the chip and flash models (socsim-sdram-dram-<boot RAM>k),
@@ -57,7 +59,7 @@ need_file "$socsim"
 work=$(fresh_dir "soc-vs-cosim${1:+-$1}")
 # The slowest first, so that it overlaps the others.
 # From the SDRAM the model scene too: its capacities are the SDRAM build's.
-scenes=${SOC_SCENES:-knot voxel landscape cubes tetra${1:+ model}}
+scenes=${SOC_SCENES:-${1:+knot landscape model }voxel cubes tetra}
 
 one_scene() {
     local s="$1" host="$BUILD/fw-test/host-$1" soc_elf frames printed f worst detail=""
