@@ -68,6 +68,8 @@ EXACT_REF   := $(BUILD)/tools/exact_ref
 # firmware's host build link them.
 COSIM_C_SRC := cosim/vga_monitor.c cosim/png_write.c
 COSIM_C_LIB := $(BUILD)/host/libcosim.a
+# The co-simulators' C++ library (its rules below), gpusim's and socsim's.
+COSIM_CXX_LIB := $(BUILD)/host/libcosim_sim.a
 
 # Golden model (GPU_MODEL_LIB, model_unit), firmware (FW_ELF, fw_unit) rules.
 include gpu_model/model.mk
@@ -317,14 +319,19 @@ SIM_CXX        ?= clang++-14
 
 # The co-simulator's C++ apart from the Verilated model's two neighbours (gpu_sim.cpp includes the
 # model's headers, main.cpp Verilator's): the same in every configuration, so compiled once for all
-# the simulators, with the code-generation flags Verilator's make gives its user files.
-COSIM_CXXFLAGS := -O2 -std=c++17 -faligned-new -fcf-protection=none
+# the simulators, with the code-generation flags Verilator's make gives its user files. A function
+# a section: socsim links the library too, and its --gc-sections drops what needs gpusim's GpuSim.
+COSIM_CXXFLAGS := -O2 -std=c++17 -faligned-new -fcf-protection=none -ffunction-sections
 COSIM_CPP_SIM  := cosim/gpu_sim.cpp cosim/main.cpp
 COSIM_CPP_LIB  := $(filter-out $(COSIM_CPP_SIM),$(COSIM_CPP))
 COSIM_CXX_OBJ  := $(patsubst %.cpp,$(BUILD)/host/%.o,$(COSIM_CPP_LIB))
-COSIM_CXX_LIB  := $(BUILD)/host/libcosim_sim.a
 
-$(BUILD)/host/%.o: %.cpp
+# The compiler and flags recorded (rewritten only when they change): a change recompiles the objects.
+COSIM_CXX_FLAGS_FILE := $(BUILD)/host/cxxflags.txt
+$(COSIM_CXX_FLAGS_FILE): fw-force
+	$(call fw_flags_file,$@,$(SIM_CXX) $(COSIM_CXXFLAGS) $(HOST_INC))
+
+$(BUILD)/host/%.o: %.cpp $(COSIM_CXX_FLAGS_FILE)
 	@mkdir -p $(dir $@)
 	$(Q)$(call say,CXX,$<)$(SIM_CXX) $(COSIM_CXXFLAGS) -MMD -MP $(HOST_INC) $$(pkg-config --cflags sdl2) -c $< -o $@
 

@@ -25,9 +25,14 @@ include bsp/soc/soc_ram.mk
 SOCSIM_GPU_GFLAGS ?= $(if $(filter 1,$(ZBUF)), -GENABLE_ZBUF=1)$(if $(FB_GFLAGS), $(FB_GFLAGS))
 SOCSIM_DIR   := $(BUILD)/socsim$(SOC_MEM_SUFFIX)-$(SOC_RAM_KIB)k$(if $(filter 1,$(ZBUF)),-z)$(if $(FB_TAG),-$(FB_TAG))$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
 SOCSIM       := $(SOCSIM_DIR)/socsim
-SOCSIM_SRC   := $(filter-out cosim/soc/tmds_decoder.cpp,$(wildcard cosim/soc/*.cpp)) cosim/harness.cpp \
-                cosim/model_check.cpp cosim/uart_pump.cpp cosim/uart_terminal.cpp cosim/uart_pty.cpp \
-                cosim/sdl_window.cpp
+# Each build compiles socsim.cpp, which includes its Verilated model and reads the build's
+# definitions; the rest of its C++ is the same in every build, compiled once: the co-simulator's
+# library (harness, model check, UART pump, terminal and pty, window: COSIM_CXX_LIB) and socsim's
+# own (the UART line, the SDRAM chip and flash models, the TMDS decoder: SOCSIM_LIB). Six builds
+# compiled those six to nine files each, about 6 s of CPU a build.
+SOCSIM_SRC   := cosim/soc/socsim.cpp
+SOCSIM_LIB_SRC := cosim/soc/uart_line.cpp cosim/soc/tmds_decoder.cpp cosim/sdram/sdram_chip.cpp cosim/flash/spi_flash.cpp
+SOCSIM_LIB   := $(BUILD)/host/libsocsim.a
 SOCSIM_SV    := cosim/soc/socsim_taps.sv
 # soc firmware: the same sources as `make run`, built by a recursive make for FW_PLATFORM=soc.
 SOC_FW_DIR   := $(BUILD)/firmware-soc$(SOC_MEM_SUFFIX)
@@ -37,7 +42,11 @@ SOC_FW_MAKE   = $(MAKE) --no-print-directory FW_PLATFORM=soc BUILD=$(BUILD) SOC_
 
 SOCSIM_DEPS := $(SOC_VENV) $(SOC_FILES) $(SOC_RTL_V) $(SOC_RTL_VH) $(SOC_LINT) $(RTL_V) $(RTL_FILES) contract/gpu_regs.vh \
                contract/soc_map.vh contract/soc_map.h $(SOCSIM_SRC) $(SOCSIM_SV) $(wildcard cosim/soc/*.h) \
-               $(wildcard cosim/*.h) $(COSIM_C_LIB) $(GPU_MODEL_LIB) $(VERILATOR_RT)
+               $(wildcard cosim/*.h) $(SOCSIM_LIB) $(COSIM_CXX_LIB) $(COSIM_C_LIB) $(GPU_MODEL_LIB) $(VERILATOR_RT)
+
+$(SOCSIM_LIB): $(patsubst %.cpp,$(BUILD)/host/%.o,$(SOCSIM_LIB_SRC))
+	@rm -f $@
+	$(Q)$(call say,AR,$@)ar rcs $@ $^
 
 # The Verilator command of a socsim build, recorded in <dir>/cmd.txt (rewritten only when it changes)
 # so that a change of parameters or flags rebuilds, and an edit elsewhere in this file does not.
@@ -48,7 +57,7 @@ socsim_cmd = $(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign
   $(SOC_VFLAGS) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) $(5) \
   -CFLAGS "-O2 -march=native -std=c++17 -ffunction-sections $(call gpu_build_defs,$(4)) -DSOCSIM_RAM_BYTES=$(3)u \
            $(6) $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract) $$(pkg-config --cflags sdl2)" \
-  -LDFLAGS "-Wl,--gc-sections $(abspath $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng sdl2) $(abspath $(VERILATOR_RT))" \
+  -LDFLAGS "-Wl,--gc-sections $(abspath $(SOCSIM_LIB) $(COSIM_CXX_LIB) $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng sdl2) $(abspath $(VERILATOR_RT))" \
   --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1 CXX=$(SIM_CXX) LINK=$(SIM_CXX) $(VERILATOR_RT_MAKE)" --Mdir $(1)/obj -o $(abspath $(1))/socsim
 # The systems a socsim build Verilates: soc_top (the pixel clock tied to the system clock), the
 # ULX3S's (boards/ulx3s/ulx3s_system on its three clocks, the monitor on the TMDS pairs), each with
@@ -61,9 +70,9 @@ SOCSIM_CFLAGS_soc        :=
 SOCSIM_PREREQS_soc       :=
 SOCSIM_SYSTEM_ulx3s       = ulx3s_system
 ULX3S_SIM_FILES          := boards/ulx3s/files.f
-SOCSIM_SOURCES_ulx3s      = -f $(ULX3S_SIM_FILES) $(abspath cosim/soc/tmds_decoder.cpp)
+SOCSIM_SOURCES_ulx3s      = -f $(ULX3S_SIM_FILES)
 SOCSIM_CFLAGS_ulx3s      := -DSOCSIM_BOARD_ULX3S
-SOCSIM_PREREQS_ulx3s     := $(ULX3S_SIM_FILES) $(shell sed -e 's://.*::' $(ULX3S_SIM_FILES)) cosim/soc/tmds_decoder.cpp
+SOCSIM_PREREQS_ulx3s     := $(ULX3S_SIM_FILES) $(shell sed -e 's://.*::' $(ULX3S_SIM_FILES))
 # With SDRAM (cosim/soc/soc_sdram_sim.sv): soc_top and LiteDRAM's controller generated at the
 # simulated clock for the contract's SDRAM size (soc_rtl/litedram), the chip played by socsim
 # (cosim/sdram/sdram_chip.h), -DSOCSIM_SDRAM.
@@ -75,18 +84,17 @@ LITEDRAM_SIM_DIR         := $(call litedram_dir,$(SOC_SIM_CLK_HZ))
 LITEDRAM_SIM_V           := $(LITEDRAM_SIM_DIR)/litedram_core.v
 SOCSIM_SYSTEM_sdram       = soc_sdram_sim -GPIX_CLK_HZ=$(SOC_SIM_CLK_HZ) -GSDRAM_BYTES=$(SOC_SDRAM_BYTES) --timescale 1ns/1ps
 SOCSIM_SOURCES_sdram      = soc_rtl/litedram/lint.vlt soc_rtl/litedram/sdram_wb_burst.v soc_rtl/litedram/soc_sdram.v cosim/soc/soc_sdram_sim.sv \
-                            $(LITEDRAM_SIM_V) $(wildcard cosim/sdram/ecp5/*.v) $(abspath cosim/sdram/sdram_chip.cpp) \
-                            $(abspath cosim/flash/spi_flash.cpp)
+                            $(LITEDRAM_SIM_V) $(wildcard cosim/sdram/ecp5/*.v)
 SOCSIM_CFLAGS_sdram      := -DSOCSIM_SDRAM -I$(CURDIR)/cosim/sdram -I$(CURDIR)/cosim/flash
 SOCSIM_PREREQS_sdram     := $(LITEDRAM_SIM_V) soc_rtl/litedram/lint.vlt soc_rtl/litedram/sdram_wb_burst.v soc_rtl/litedram/soc_sdram.v \
-                            cosim/soc/soc_sdram_sim.sv cosim/soc/soc_sdram_chip_model.vh $(wildcard cosim/sdram/ecp5/*.v) cosim/sdram/sdram_chip.cpp \
-                            cosim/sdram/sdram_chip.h cosim/sdram/sdram_pins.h cosim/flash/spi_flash.cpp cosim/flash/spi_flash.h
+                            cosim/soc/soc_sdram_sim.sv cosim/soc/soc_sdram_chip_model.vh $(wildcard cosim/sdram/ecp5/*.v) \
+                            cosim/sdram/sdram_chip.h cosim/sdram/sdram_pins.h cosim/flash/spi_flash.h
 # The ULX3S build with SDRAM (cosim/soc/ulx3s_sdram_sim.sv): ulx3s_system on its three clocks with
 # the same controller and chip on its SDRAM ports, the flash on its flash pins, the board's DVI
 # decoded; the system with SDRAM's sources and the board's.
 SOCSIM_SYSTEM_ulx3s-sdram   = ulx3s_sdram_sim -GSDRAM_BYTES=$(SOC_SDRAM_BYTES) --timescale 1ns/1ps
 SOCSIM_SOURCES_ulx3s-sdram  = $(filter-out cosim/soc/soc_sdram_sim.sv,$(SOCSIM_SOURCES_sdram)) -f $(ULX3S_SIM_FILES) \
-                              cosim/soc/ulx3s_sdram_sim.sv $(abspath cosim/soc/tmds_decoder.cpp)
+                              cosim/soc/ulx3s_sdram_sim.sv
 SOCSIM_CFLAGS_ulx3s-sdram  := $(SOCSIM_CFLAGS_sdram) $(SOCSIM_CFLAGS_ulx3s)
 SOCSIM_PREREQS_ulx3s-sdram := $(filter-out cosim/soc/soc_sdram_sim.sv,$(SOCSIM_PREREQS_sdram)) $(SOCSIM_PREREQS_ulx3s) \
                               cosim/soc/ulx3s_sdram_sim.sv
