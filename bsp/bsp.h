@@ -1,15 +1,16 @@
 /*
  * bsp.h — the platform interface: everything the firmware asks of a platform, declared once.
  *
- * Every platform implements it: bsp/qemu_virt/, bsp/host/, and the test doubles
- * tests/firmware/fake_bsp/ and tests/fuzz/driver_bsp/. A platform folder is on the include path
- * before bsp/ and provides bsp_platform.h: the three macros below and the definitions it wants
- * inline (static inline, for the accessors on the frame loop's path); its .c files define the
- * rest. This header includes bsp_platform.h first and then declares every function, so:
+ * Every platform implements it: bsp/qemu_virt/, bsp/soc/, bsp/host/, and the test doubles
+ * tests/firmware/fake_bsp/, tests/fuzz/driver_bsp/ and tests/stress/. A platform folder is on the
+ * include path before bsp/ and provides bsp_platform.h: the macros below and the definitions it
+ * wants inline (static inline, for the accessors on the frame loop's path); its .c files define
+ * the rest. This header includes bsp_platform.h first and then declares every function, so:
  *   - a definition whose signature differs from the prototype here is a compile error
  *     ("conflicting types") in every file that includes bsp.h;
  *   - a function a platform does not define is a link error ("undefined reference") in every
- *     program that uses it — the firmware uses all of them (app.c, main.c, gpu/gpu.c);
+ *     program that uses it — the firmware uses all of them (app.c, main.c, gpu/gpu.c; the USB
+ *     keyboard's two where it is built with FW_USB_KEYBOARD);
  *   - a missing macro is a compile error (#error below).
  * Only the frame loop (firmware/app/), the target's main() and the GPU driver's edge
  * (firmware/gpu/gpu.c) include this header; the pipeline never touches the platform.
@@ -60,6 +61,31 @@ int bsp_uart_getc_nonblock(void);
 /* One byte to the console, blocking while the transmitter is full. stdout goes here, unbuffered,
  * `\n` not translated. */
 void bsp_uart_putc(char c);
+
+/* ---- USB keyboard ------------------------------------------------------------------------- */
+
+/* The oldest key event of a USB HID boot keyboard, taken from the platform's queue: the key's
+ * usage (Keyboard/Keypad page; 0xE0..0xE7 the modifiers) in BSP_USB_KEY_USAGE_MASK, with
+ * BSP_USB_KEY_PRESS set for a press and clear for a release; or -1 when none is waiting, and
+ * always on a platform without a USB host. Never blocks. The first call of this or of
+ * bsp_usb_state switches the port on. Only the frame loop built with FW_USB_KEYBOARD calls them,
+ * so a program without that option never touches a USB host (the SoC's window is a bus error on
+ * a SoC built without one). */
+#define BSP_USB_KEY_USAGE_MASK 0x0FFu
+#define BSP_USB_KEY_PRESS      0x100u
+int bsp_usb_key_nonblock(void);
+
+/* The USB port's state, one of enum bsp_usb_state, or -1 where the platform has no USB host. */
+enum bsp_usb_state {
+    BSP_USB_DETACHED = 0,      /* nothing plugged in (or the port off) */
+    BSP_USB_ATTACHED = 1,      /* a device plugged in, its connection debounced */
+    BSP_USB_RESETTING = 2,     /* the bus reset before enumeration */
+    BSP_USB_ENUMERATING = 3,
+    BSP_USB_RUNNING = 4,       /* a boot keyboard, polled: its keys arrive */
+    BSP_USB_NOT_KEYBOARD = 5,  /* the device has no boot keyboard interface (until unplugged) */
+    BSP_USB_BABBLE = 6,        /* the device talked out of turn: the port off until unplugged */
+};
+int bsp_usb_state(void);
 
 /* ---- counters and ordering ---------------------------------------------------------------- */
 

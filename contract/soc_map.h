@@ -40,7 +40,7 @@
 #define SOC_SDRAM_CTRL_WINDOW_BYTES      0x00010000u
 #define SOC_FLASH_BASE                   0x84000000u  /* uncached: The board's SPI configuration flash, read only (soc_rtl/soc_spiflash.v: READ 0x03, one word a request, consecutive words streamed); writes answer ERR. The boot program reads the firmware's image here. */
 #define SOC_FLASH_WINDOW_BYTES           0x01000000u
-#define SOC_USB_BASE                     0x85000000u  /* uncached: The USB 1.1 low-speed host for one HID boot keyboard (soc_rtl/usb/soc_usb.v over usb_ls_host, docs/usb.md): the port's enable, its state, key events, error counters. Not decoded by soc_top yet (issue #28: the register block exists and is tested alone, tests/usb/regs.sh): today the whole window answers ERR, as an address outside every region. */
+#define SOC_USB_BASE                     0x85000000u  /* uncached: The USB 1.1 low-speed host for one HID boot keyboard (soc_rtl/usb/soc_usb.v over usb_ls_host, docs/usb.md): the port's enable, its state, key events, error counters. A build option (soc_top USB_HOST, 0 = none): in a build without it the whole window answers ERR. */
 #define SOC_USB_WINDOW_BYTES             0x00000100u
 
 /* UART registers: byte offsets from SOC_UART_BASE. */

@@ -134,7 +134,7 @@ FW_UNIT_WIDE  := $(BUILD)/tests/fw_unit_wide
 # The folders follow the data path (firmware/README.md): math/, input/, camera/, render/ (the
 # pipeline stages), gpu/ (batching and the driver), scenes/, app/ (the loop, main, settings).
 FW_PURE_SRCS := firmware/math/fixed.c firmware/math/vec.c firmware/camera/camera.c \
-                firmware/input/input.c \
+                firmware/input/input.c firmware/input/usb_keys.c \
                 $(addprefix firmware/render/,palette.c mesh.c proj.c clip.c sort.c render.c strips.c) \
                 firmware/gpu/batch.c firmware/scenes/scene.c \
                 $(addprefix firmware/model/,crc32.c meshfile.c upload.c) \

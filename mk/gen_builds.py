@@ -135,13 +135,13 @@ def gpusims(table):
 
 # ---- SoC simulators ------------------------------------------------------------------------------
 def socsims(table):
-    """id -> (system, RAM KiB, GPU -G flags, trace, UART baud or None)."""
+    """id -> (system, RAM KiB, GPU -G flags, trace, UART baud or None, USB host)."""
     defaults = contract_params()
     ram = [r for r in load(SOC_MAP)["region"] if r["name"] == "RAM"][0]
     out = {}
     for family, spec in table.get("socsim", {}).items():
         where = f"{BUILDS}: socsim.{family}"
-        unknown = set(spec) - {"system", "ram", "params", "trace", "uart_baud"}
+        unknown = set(spec) - {"system", "ram", "params", "trace", "uart_baud", "usb"}
         if unknown:
             raise TableError(f"{where}: unknown key {sorted(unknown)[0]}")
         system = spec.get("system", "soc")
@@ -162,16 +162,20 @@ def socsims(table):
         baud = spec.get("uart_baud")
         if baud is not None and (not isinstance(baud, int) or baud <= 0):
             raise TableError(f"{where}: uart_baud = {baud!r}: bits per second, a positive integer")
-        out[ident] = (system, ram_kib, flags, bool(spec.get("trace", False)), baud)
+        usb = spec.get("usb", False)
+        if not isinstance(usb, bool):
+            raise TableError(f"{where}: usb = {usb!r}: true or false")
+        out[ident] = (system, ram_kib, flags, bool(spec.get("trace", False)), baud, usb)
     return out
 
 
 def socsim_mk(socs):
     lines = [HEADER, "# socsim_cmd, SOCSIM_BUILD_RULES and SOCSIM_SYSTEM_*: cosim/soc/socsim.mk's.", ""]
-    for ident, (system, ram_kib, flags, trace, baud) in socs.items():
-        top = f"$(SOCSIM_SYSTEM_{system})" + (" --trace-fst" if trace else "") + (f" -GBAUD={baud}" if baud else "")
+    for ident, (system, ram_kib, flags, trace, baud, usb) in socs.items():
+        top = (f"$(SOCSIM_SYSTEM_{system})" + (" --trace-fst" if trace else "") + (f" -GBAUD={baud}" if baud else "")
+               + (" -GUSB_HOST=1" if usb else ""))
         cflags = (f"$(SOCSIM_CFLAGS_{system})" + (" -DSOCSIM_TRACE=1" if trace else "")
-                  + (f" -DSOCSIM_UART_BAUD={baud}" if baud else ""))
+                  + (f" -DSOCSIM_UART_BAUD={baud}" if baud else "") + (" -DSOCSIM_USB=1" if usb else ""))
         lines.append(f"SOCSIM_CMD_{ident} = $(call socsim_cmd,$(BUILD)/{ident},{top},{ram_kib * 1024},{flags},"
                      f"$(SOCSIM_SOURCES_{system}),{cflags})")
         lines.append(f"$(eval $(call SOCSIM_BUILD_RULES,$(BUILD)/{ident},SOCSIM_CMD_{ident},$(SOCSIM_PREREQS_{system})))")
@@ -264,7 +268,7 @@ def builds_mk(table, sims, socs):
     lines.append(f"CONTRACT_FB_MAX := {lim['fb_max_width']}x{lim['fb_max_height']}")
     lines.append(f"GPUSIM_IDS := {' '.join(sims)}")
     lines.append(f"SOCSIM_IDS := {' '.join(socs)}")
-    lines += [f"SOCSIM_RAM_KIB_{i} := {ram}" for i, (_, ram, _, _, _) in socs.items()]
+    lines += [f"SOCSIM_RAM_KIB_{i} := {ram}" for i, (_, ram, *_) in socs.items()]
     for name, ids in gpusim_lists(table).items():
         lines.append(f"{name} := {' '.join(f'$(BUILD)/{i}/gpusim' for i in ids)}")
     return "\n".join(lines) + "\n"

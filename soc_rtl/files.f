@@ -8,4 +8,13 @@ soc_rtl/soc_ram.v
 soc_rtl/soc_uart.v
 soc_rtl/soc_sys.v
 soc_rtl/soc_spiflash.v
+soc_rtl/usb/usb_pkg.sv
+soc_rtl/usb/usb_ls_tx.v
+soc_rtl/usb/usb_ls_rx.v
+soc_rtl/usb/usb_ls_packet_tx.v
+soc_rtl/usb/usb_ls_packet_rx.v
+soc_rtl/usb/usb_ls_xfer.v
+soc_rtl/usb/usb_hid_keys.v
+soc_rtl/usb/usb_ls_host.v
+soc_rtl/usb/soc_usb.v
 soc_rtl/soc_top.v

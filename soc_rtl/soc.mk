@@ -11,7 +11,7 @@ SOC_FILES     := soc_rtl/files.f
 SOC_RTL_V     := $(shell sed -e 's://.*::' $(SOC_FILES))
 # The headers its systems include (the SDRAM's and the GPU frames' port bundles, the no-SDRAM ties).
 SOC_RTL_VH    := $(wildcard soc_rtl/*.vh)
-SOC_LINT      := soc_rtl/lint.vlt
+SOC_LINT      := soc_rtl/lint.vlt soc_rtl/usb/lint.vlt
 # Everything under soc_top, in compilation order: the GPU's list, the core, the SoC's list.
 SOC_VFLAGS     = $(RTL_LINT) $(SOC_LINT) -f $(RTL_FILES) $(SOC_CPU_V) -f $(SOC_FILES)
 # The simulator (socsim) runs soc_top at the contract's default clock and tie
@@ -26,7 +26,7 @@ $(SOC_VENV): tools/requirements.txt
 .PHONY: lint-soc synth-soc
 
 # files.f is the one list: a soc_rtl source left out of it is refused, as in `make lint`.
-SOC_UNLISTED = $(filter-out $(SOC_RTL_V),$(wildcard soc_rtl/*.v soc_rtl/*.sv))
+SOC_UNLISTED = $(filter-out $(SOC_RTL_V),$(wildcard soc_rtl/*.v soc_rtl/*.sv soc_rtl/usb/*.v soc_rtl/usb/*.sv))
 lint-soc: $(SOC_VENV)
 	@test -z "$(SOC_UNLISTED)" || { echo "lint-soc: not in $(SOC_FILES): $(SOC_UNLISTED)"; exit 1; }
 	$(Q)$(call say,LINT,soc_top)$(VERILATOR) --lint-only -Wall --top-module soc_top $(SOC_VFLAGS)

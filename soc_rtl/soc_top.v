@@ -8,7 +8,9 @@
 // board's top sends flash_sck through USRMCLK). Without SDRAM the three regions answer ERR and the
 // ports stay idle (tie their inputs to 0: soc_rtl/soc_top_no_sdram.vh). A GPU built with FRAME_DRAM
 // keeps its frames in the SDRAM: its memory port leaves soc_top as gpu_mem_* for the controller's
-// second user port (soc_sdram); otherwise that port is idle.
+// second user port (soc_sdram); otherwise that port is idle. With USB_HOST = 1 the USB low-speed
+// host for a boot keyboard (soc_usb, region USB, docs/usb.md) drives the usb_* pins; without it the
+// region answers ERR and the pins stay released (usb_oe low; tie the inputs to 0).
 //
 //   VexRiscv iBus ─┐                      ┌─ soc_ram (RAM_BYTES, RAM_INIT)
 //                  ├─ soc_wb_arbiter ─ soc_wb_decoder ─┼─ gpu_wb_slave ─ gpu_top ─ VGA pins
@@ -38,6 +40,7 @@ module soc_top #(
     parameter integer CLK_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,  // clk's frequency: UART divider, SYS CLK_HZ
     parameter integer PIX_CLK_HZ = 25000000,   // clk_pix's frequency: 25 MHz, or CLK_HZ when tied to clk
     parameter integer BAUD = soc_pkg::SOC_UART_BAUD,         // UART bits per second
+    parameter integer USB_HOST = 0,            // 1: the USB keyboard host (soc_usb); 0: none
     `GPU_BUILD_PARAMS,                         // the GPU's (gpu_top), passed through
     localparam integer PIX_HZ = 25000000,      // VGA 640x480@60 pixel rate
     localparam integer PIX_DIV = PIX_CLK_HZ / PIX_HZ,
@@ -101,6 +104,13 @@ module soc_top #(
     output wire       flash_sck,
     output wire       flash_mosi,
     input  wire       flash_miso,     // registered inside (soc_spiflash)
+    // USB low-speed host (USB_HOST = 1): D+ and D- as the host sees and drives them; the board
+    // keeps both lines' pull-downs on (host mode)
+    input  wire       usb_dp_in,      // asynchronous (synchronised inside)
+    input  wire       usb_dn_in,
+    output wire       usb_dp_out,     // driven while usb_oe
+    output wire       usb_dn_out,
+    output wire       usb_oe,
     // board
     output wire [7:0] leds,           // SYS LEDS
     output wire       gpu_frame_swapped,  // one clk cycle at each GPU buffer swap
@@ -226,10 +236,13 @@ module soc_top #(
     wire [31:0] sys_dat_r;
     wire        flash_stb, flash_ack, flash_err;
     wire [31:0] flash_dat_r;
+    wire        usb_stb, usb_ack, usb_err;
+    wire [31:0] usb_dat_r;
 
     soc_wb_decoder #(
         .RAM_BYTES   (RAM_BYTES),
-        .SDRAM_BYTES (SDRAM_BYTES)
+        .SDRAM_BYTES (SDRAM_BYTES),
+        .USB_HOST    (USB_HOST)
     ) u_decoder (
         .clk        (clk),
         .rst        (rst),
@@ -265,7 +278,11 @@ module soc_top #(
         .sys_stb    (sys_stb),
         .sys_dat_r  (sys_dat_r),
         .sys_ack    (sys_ack),
-        .sys_err    (sys_err)
+        .sys_err    (sys_err),
+        .usb_stb    (usb_stb),
+        .usb_dat_r  (usb_dat_r),
+        .usb_ack    (usb_ack),
+        .usb_err    (usb_err)
     );
 
     // ---- slaves ----
@@ -415,6 +432,39 @@ module soc_top #(
         .uart_rx_async (uart_rx),
         .uart_tx       (uart_tx)
     );
+
+    localparam integer USB_AW = $clog2(soc_pkg::SOC_USB_WINDOW_BYTES);
+    generate if (USB_HOST != 0) begin : g_usb
+        soc_usb #(
+            .SYS_HZ (CLK_HZ)
+        ) u_usb (
+            .clk        (clk),
+            .rst        (rst),
+            .wb_cyc     (bus_cyc),
+            .wb_stb     (usb_stb),
+            .wb_we      (bus_we),
+            .wb_adr     (bus_adr[USB_AW-3:0]),
+            .wb_dat_w   (bus_dat_w),
+            .wb_sel     (bus_sel),
+            .wb_dat_r   (usb_dat_r),
+            .wb_ack     (usb_ack),
+            .wb_err     (usb_err),
+            .usb_dp_in  (usb_dp_in),
+            .usb_dn_in  (usb_dn_in),
+            .usb_dp_out (usb_dp_out),
+            .usb_dn_out (usb_dn_out),
+            .usb_oe     (usb_oe)
+        );
+    end else begin : g_no_usb
+        // the decoder never selects the USB region without the host
+        assign usb_dat_r  = 32'd0;
+        assign usb_ack    = 1'b0;
+        assign usb_err    = 1'b0;
+        assign usb_dp_out = 1'b0;
+        assign usb_dn_out = 1'b0;
+        assign usb_oe     = 1'b0;
+        wire unused_usb = &{1'b0, usb_stb, usb_dp_in, usb_dn_in};
+    end endgenerate
 
     // The refused beats of either bus, for the SYS record (one clock each).
     wire        buserr_stb   = ibus_err || dbus_err;

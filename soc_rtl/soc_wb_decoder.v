@@ -1,22 +1,23 @@
 // soc_wb_decoder: the SoC's address decoder (contract/soc-memory-map.md), one Wishbone bus onto the
 // RAM, the SDRAM, its controller's registers and the flash (when the build has SDRAM, whose
-// firmware the boot program copies from the flash), the GPU, the UART and SYS, with the error
-// responder for every other address.
+// firmware the boot program copies from the flash), the GPU, the UART, SYS and the USB host (when the
+// build has one), with the error responder for every other address.
 //
 // Contract: combinational select, no added latency. A slave's *_stb is cyc && stb && (the address is
 // in its region); the shared request signals (we, adr, dat_w, sel, cti) go to every slave unchanged
 // (wired in soc_top). ack/err/dat_r come from the selected slave; the slaves answer only while
 // selected, so ack and err are ORed and dat_r is multiplexed by the region. The RAM region answers
 // only below RAM_BYTES, the SDRAM region only below SDRAM_BYTES, the SDRAM_CTRL and FLASH regions
-// only when SDRAM_BYTES is not 0; the rest of those windows, and every address outside the regions, is
+// only when SDRAM_BYTES is not 0, the USB region only when USB_HOST is not 0; the rest of those windows, and every address outside the regions, is
 // answered by the error responder: err one clock after the request, once per request (so a burst
-// there gets one err per beat, two clocks each), dat_r = 0. Offsets inside UART and SYS that name
-// no register are refused by those slaves themselves (they answer err).
+// there gets one err per beat, two clocks each), dat_r = 0. Offsets inside UART, SYS and USB that
+// name no register are refused by those slaves themselves (they answer err).
 `default_nettype none
 
 module soc_wb_decoder #(
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // the RAM's size: above it, err
-    parameter integer SDRAM_BYTES = 0       // the SDRAM's size: above it, err; 0: no SDRAM, no SDRAM_CTRL
+    parameter integer SDRAM_BYTES = 0,      // the SDRAM's size: above it, err; 0: no SDRAM, no SDRAM_CTRL
+    parameter integer USB_HOST = 0          // 1: the USB region is decoded; 0: it answers err
 ) (
     input  wire        clk,
     input  wire        rst,         // synchronous, active high
@@ -59,7 +60,12 @@ module soc_wb_decoder #(
     output wire        sys_stb,
     input  wire [31:0] sys_dat_r,
     input  wire        sys_ack,
-    input  wire        sys_err
+    input  wire        sys_err,
+    // the USB host's registers (soc_usb)
+    output wire        usb_stb,
+    input  wire [31:0] usb_dat_r,
+    input  wire        usb_ack,
+    input  wire        usb_err
 );
     // Each region is a power-of-two window aligned to its size (checked by contract/gen_contract.py):
     // it is selected by the byte address bits above the window.
@@ -70,6 +76,7 @@ module soc_wb_decoder #(
     localparam integer GPU_WB  = $clog2(soc_pkg::SOC_GPU_WINDOW_BYTES);
     localparam integer UART_WB = $clog2(soc_pkg::SOC_UART_WINDOW_BYTES);
     localparam integer SYS_WB  = $clog2(soc_pkg::SOC_SYS_WINDOW_BYTES);
+    localparam integer USB_WB  = $clog2(soc_pkg::SOC_USB_WINDOW_BYTES);
     localparam [31:0] RAM_BASE  = soc_pkg::SOC_RAM_BASE;
     localparam [31:0] SDRAM_BASE = soc_pkg::SOC_SDRAM_BASE;
     localparam [31:0] SDRAM_CTRL_BASE = soc_pkg::SOC_SDRAM_CTRL_BASE;
@@ -77,6 +84,7 @@ module soc_wb_decoder #(
     localparam [31:0] GPU_BASE  = soc_pkg::SOC_GPU_BASE;
     localparam [31:0] UART_BASE = soc_pkg::SOC_UART_BASE;
     localparam [31:0] SYS_BASE  = soc_pkg::SOC_SYS_BASE;
+    localparam [31:0] USB_BASE  = soc_pkg::SOC_USB_BASE;
     localparam [31:0] RAM_LIMIT = RAM_BYTES;   // bytes of the RAM window that hold RAM
     localparam [31:0] SDRAM_LIMIT = SDRAM_BYTES;  // bytes of the SDRAM window that hold SDRAM
 
@@ -104,7 +112,9 @@ module soc_wb_decoder #(
     wire hit_gpu  = (byte_adr >> GPU_WB) == (GPU_BASE >> GPU_WB);
     wire hit_uart = (byte_adr >> UART_WB) == (UART_BASE >> UART_WB);
     wire hit_sys  = (byte_adr >> SYS_WB) == (SYS_BASE >> SYS_WB);
-    wire hit_none = !(hit_ram || hit_sdram || hit_sdram_ctrl || hit_flash || hit_gpu || hit_uart || hit_sys);
+    wire hit_usb  = USB_HOST != 0 && (byte_adr >> USB_WB) == (USB_BASE >> USB_WB);
+    wire hit_none = !(hit_ram || hit_sdram || hit_sdram_ctrl || hit_flash || hit_gpu || hit_uart || hit_sys
+                      || hit_usb);
 
     wire req = cyc && stb;
     assign ram_stb  = req && hit_ram;
@@ -114,6 +124,7 @@ module soc_wb_decoder #(
     assign gpu_stb  = req && hit_gpu;
     assign uart_stb = req && hit_uart;
     assign sys_stb  = req && hit_sys;
+    assign usb_stb  = req && hit_usb;
 
     // The error responder: answers a request to no region in the next clock, then lets it go (the
     // master moves on after err), so a request held on is answered again every other clock.
@@ -124,15 +135,18 @@ module soc_wb_decoder #(
     end
     wire none_err = none_err_q && req && hit_none;
 
-    assign ack   = ram_ack || sdram_ack || sdram_ctrl_ack || flash_ack || gpu_ack || uart_ack || sys_ack;
-    assign err   = none_err || sdram_err || sdram_ctrl_err || flash_err || gpu_err || uart_err || sys_err;
+    assign ack   = ram_ack || sdram_ack || sdram_ctrl_ack || flash_ack || gpu_ack || uart_ack || sys_ack
+                   || usb_ack;
+    assign err   = none_err || sdram_err || sdram_ctrl_err || flash_err || gpu_err || uart_err || sys_err
+                   || usb_err;
     assign dat_r = hit_ram  ? ram_dat_r  :
                    hit_sdram ? sdram_dat_r :
                    hit_sdram_ctrl ? sdram_ctrl_dat_r :
                    hit_flash ? flash_dat_r :
                    hit_gpu  ? gpu_dat_r  :
                    hit_uart ? uart_dat_r :
-                   hit_sys  ? sys_dat_r  : 32'd0;
+                   hit_sys  ? sys_dat_r  :
+                   hit_usb  ? usb_dat_r  : 32'd0;
 endmodule
 
 `default_nettype wire

@@ -56,6 +56,8 @@ module digilent_top #(
     wire       frame_swapped, gpu_error, exit_valid;
 
     `SOC_TOP_NO_SDRAM_WIRES   // no SDRAM in this build (soc_rtl/soc_top_no_sdram.vh)
+    wire [2:0] usb_idle;
+    wire unused_usb = |usb_idle;
 
     soc_top #(
         .RAM_BYTES    (RAM_BYTES),
@@ -77,6 +79,11 @@ module digilent_top #(
         .vga_g             (g),
         .vga_b             (b),
         `SOC_TOP_NO_SDRAM_PORTS,   // no SDRAM in this build (soc_rtl/soc_top_no_sdram.vh)
+        .usb_dp_in         (1'b0),     // no USB host in this build (USB_HOST 0): the outputs stay low
+        .usb_dn_in         (1'b0),
+        .usb_dp_out        (usb_idle[0]),
+        .usb_dn_out        (usb_idle[1]),
+        .usb_oe            (usb_idle[2]),
         .leds              (sys_leds),
         .gpu_frame_swapped (frame_swapped),
         .gpu_error         (gpu_error),

@@ -17,6 +17,11 @@
 //           reaches the flash's clock ball (CCLK, a configuration pin) only through USRMCLK
 //           (USRMCLKI = SCK, USRMCLKTS = 0: always driven, after configuration; the LPF's
 //           MASTER_SPI_PORT=DISABLE leaves the pins to the design); WP# and HOLD# held high.
+//   US2     with USB_HOST = 1 the keyboard host (soc_usb) on the second USB socket, as a host: both
+//           lines' 15 kOhm pull-downs on (usb_fpga_pu_dp/dn low), D+ and D- driven and read single
+//           ended on usb_fpga_bd_dp/dn (the line states need SE0, which the differential receiver
+//           on usb_fpga_dp/dn cannot show). Without it (the default until the board build's cost and
+//           timing with the host are measured: issue #28) the lines are released, the pull-downs on.
 // Only the primitives live here; the logic is in ulx3s_system and soc_sdram. The GPU's build
 // parameters (contract/gpu_build_params.vh) are passed through, as in ulx3s_top.
 `include "contract/gpu_build_params.vh"
@@ -29,6 +34,7 @@ module ulx3s_sdram_top #(
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_BOOT_BYTES,        // the boot program's on-chip RAM
     parameter integer SDRAM_BYTES = soc_pkg::SOC_SDRAM_DEFAULT_BYTES, // the generated controller's chip
     parameter RAM_INIT = "",                                          // the boot program's RAM image
+    parameter integer USB_HOST = 0,                                   // 1: the keyboard host on US2
     `GPU_BUILD_PARAMS                                                 // the GPU's (ulx3s_system)
 ) (
     input  wire        clk_25mhz,      // G2
@@ -58,7 +64,12 @@ module ulx3s_sdram_top #(
     output wire        flash_mosi,
     input  wire        flash_miso,
     output wire        flash_wpn,      // held high
-    output wire        flash_holdn     // held high
+    output wire        flash_holdn,    // held high
+    // US2, host mode
+    inout  wire        usb_fpga_bd_dp,
+    inout  wire        usb_fpga_bd_dn,
+    output wire        usb_fpga_pu_dp, // 0: the 15 kOhm pull-down
+    output wire        usb_fpga_pu_dn
 );
     wire clk_tmds, clk_pix, clk_sys_off, video_locked;
     ulx3s_pll #(.SYS_CLK(0)) u_pll (
@@ -87,11 +98,13 @@ module ulx3s_sdram_top #(
     `SOC_SDRAM_BUS_WIRES  // (soc_rtl/soc_sdram_bus.vh)
     wire                     flash_sck;
     `SOC_GPU_MEM_WIRES   // the GPU's frames (FRAME_DRAM): soc_top to LiteDRAM (soc_rtl/soc_gpu_mem.vh)
+    wire                     usb_dp_out, usb_dn_out, usb_oe;
     ulx3s_system #(
         .SYS_HZ       (SYS_MHZ * 1000000),
         .RAM_BYTES    (RAM_BYTES),
         .SDRAM_BYTES  (SDRAM_BYTES),
         .RAM_INIT     (RAM_INIT),
+        .USB_HOST     (USB_HOST),
         `GPU_BUILD_PARAMS_PASS
     ) u_system (
         .clk_sys          (clk_sys),
@@ -110,11 +123,22 @@ module ulx3s_sdram_top #(
         .flash_sck        (flash_sck),
         .flash_mosi       (flash_mosi),
         .flash_miso       (flash_miso),
+        .usb_dp_in        (usb_fpga_bd_dp),
+        .usb_dn_in        (usb_fpga_bd_dn),
+        .usb_dp_out       (usb_dp_out),
+        .usb_dn_out       (usb_dn_out),
+        .usb_oe           (usb_oe),
         `SOC_GPU_MEM_PORTS,
         .exit_valid       (exit_valid),
         .exit_code        (exit_code)
     );
     wire unused_exit = exit_valid | (|exit_code);  // the board runs the firmware for ever
+
+    // ---- US2: the host drives both lines or neither (soc_usb), the pull-downs always on ----
+    assign usb_fpga_bd_dp = usb_oe ? usb_dp_out : 1'bz;
+    assign usb_fpga_bd_dn = usb_oe ? usb_dn_out : 1'bz;
+    assign usb_fpga_pu_dp = 1'b0;
+    assign usb_fpga_pu_dn = 1'b0;
 
     // ---- the SDRAM: LiteDRAM on soc_top's ports, the chip's clock clk_sdram ----
     wire sdram_init_done;

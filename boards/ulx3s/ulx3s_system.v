@@ -27,6 +27,7 @@ module ulx3s_system #(
     parameter integer SDRAM_BYTES = 0,                             // soc_top's: 0 = no SDRAM, no flash
     parameter RAM_INIT = "",                                       // the firmware image (soc_top)
     parameter integer BAUD = soc_pkg::SOC_UART_BAUD,               // the UART's bits per second (soc_top)
+    parameter integer USB_HOST = 0,                                // soc_top's: 1 = the keyboard host on US2
     `GPU_BUILD_PARAMS,                                             // the GPU's (soc_top)
     localparam integer SDRAM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),      // soc_top's
     localparam integer SDRAM_CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4),
@@ -42,6 +43,12 @@ module ulx3s_system #(
     input  wire       uart_rx,        // from the FT231X (ftdi_txd)
     output wire       uart_tx,        // to the FT231X (ftdi_rxd)
     output wire [7:0] led,
+    // US2 (USB_HOST = 1): soc_top's USB pins; the top puts them on usb_fpga_bd_dp/dn
+    input  wire       usb_dp_in,      // asynchronous
+    input  wire       usb_dn_in,
+    output wire       usb_dp_out,
+    output wire       usb_dn_out,
+    output wire       usb_oe,
     // DVI: the ODDRX1F inputs, clk_tmds domain
     output wire [3:0] tmds_d0,        // sent first (after the rising edge)
     output wire [3:0] tmds_d1,
@@ -136,6 +143,7 @@ module ulx3s_system #(
         .CLK_HZ       (SYS_HZ),
         .PIX_CLK_HZ   (25000000),
         .BAUD         (BAUD),
+        .USB_HOST     (USB_HOST),
         `GPU_BUILD_PARAMS_PASS
     ) u_soc (
         .clk               (clk_sys),
@@ -173,6 +181,11 @@ module ulx3s_system #(
         .flash_sck         (flash_sck),
         .flash_mosi        (flash_mosi),
         .flash_miso        (soc_flash_miso),
+        .usb_dp_in         (usb_dp_in),
+        .usb_dn_in         (usb_dn_in),
+        .usb_dp_out        (usb_dp_out),
+        .usb_dn_out        (usb_dn_out),
+        .usb_oe            (usb_oe),
         .gpu_mem_cmd_valid   (gpu_mem_cmd_valid),
         .gpu_mem_cmd_ready   (soc_gpu_mem_cmd_ready),
         .gpu_mem_cmd_we      (gpu_mem_cmd_we),

@@ -48,6 +48,8 @@ module ulx3s_top #(
     `SOC_TOP_NO_SDRAM_WIRES   // no SDRAM: ulx3s_system's SDRAM and flash ports (soc_rtl/soc_top_no_sdram.vh)
     wire       sdram_rst_idle;
     wire unused_sdram_rst = sdram_rst_idle;
+    wire [2:0] usb_idle;
+    wire unused_usb = |usb_idle;
     ulx3s_system #(
         .SYS_HZ       (SYS_MHZ * 1000000),
         .RAM_BYTES    (RAM_BYTES),
@@ -66,6 +68,11 @@ module ulx3s_top #(
         .tmds_d1    (tmds_d1),
         .sdram_rst  (sdram_rst_idle),
         `SOC_TOP_NO_SDRAM_PORTS,
+        .usb_dp_in  (1'b0),       // no USB host in this build (USB_HOST 0): the outputs stay low
+        .usb_dn_in  (1'b0),
+        .usb_dp_out (usb_idle[0]),
+        .usb_dn_out (usb_idle[1]),
+        .usb_oe     (usb_idle[2]),
         .exit_valid (exit_valid),
         .exit_code  (exit_code)
     );

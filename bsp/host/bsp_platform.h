@@ -11,6 +11,9 @@
  *     co-simulation run with the same key script render the same frames.
  *   - bsp_instret() and bsp_cycles() have nothing to count and return 0.
  *   - the GPU's buffers are not memory (BSP_GPU_BUFFERS_MAPPED 0): batches are staged.
+ *   - no USB host: bsp_usb_key_nonblock() and bsp_usb_state() return -1 (scripted keys come
+ *     through the UART only; a USB key gives the same action as its terminal bytes, which
+ *     --keys-at types).
  *   - with --dump-scene DIR, every frame's scene is written as DIR/NNNN.scene for the exact
  *     reference (bsp_host_scene_dump, scene_dump.c; bench/exact_ref/exact_ref.c reads it).
  *
@@ -40,6 +43,16 @@ static inline uint64_t bsp_cycles(void)
 static inline void bsp_fence(void)
 {
     __asm__ volatile("" ::: "memory");  /* the model runs in this thread: a compiler barrier */
+}
+
+static inline int bsp_usb_key_nonblock(void)
+{
+    return -1;
+}
+
+static inline int bsp_usb_state(void)
+{
+    return -1;
 }
 
 /* bsp_gpu_write, bsp_gpu_read, bsp_gpu_write_words: functions into the model (bsp_host.c). */

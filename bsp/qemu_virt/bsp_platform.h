@@ -33,6 +33,18 @@
  * exits with status & 0xFF through sifive_test; a non-zero status that would read as 0 becomes 1.
  * bsp_uart_getc_nonblock, bsp_uart_putc (uart.c): the NS16550. */
 
+/* No USB host: no key events, no port (a program built with FW_USB_KEYBOARD reads the UART's
+ * keys only). */
+static inline int bsp_usb_key_nonblock(void)
+{
+    return -1;
+}
+
+static inline int bsp_usb_state(void)
+{
+    return -1;
+}
+
 /* Counters, fence and the memory-mapped GPU window: shared by the RV32 platforms. */
 #include "rv32/rv32.h"
 

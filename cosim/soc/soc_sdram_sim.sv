@@ -17,6 +17,7 @@ module soc_sdram_sim #(
     parameter integer SDRAM_BYTES = soc_pkg::SOC_SDRAM_DEFAULT_BYTES,
     parameter integer PIX_CLK_HZ = soc_pkg::SOC_CLK_HZ_DEFAULT,   // tied to clk, as socsim's soc_top
     parameter integer BAUD = soc_pkg::SOC_UART_BAUD,              // soc_top's UART
+    parameter integer USB_HOST = 0,                                // soc_top's USB keyboard host
     `GPU_BUILD_PARAMS
 ) (
     input  wire        clk,
@@ -58,7 +59,13 @@ module soc_sdram_sim #(
     output wire        flash_cs_n,
     output wire        flash_sck,
     output wire        flash_mosi,
-    input  wire        flash_miso
+    input  wire        flash_miso,
+    // ---- the USB port (USB_HOST), for socsim's keyboard model
+    input  wire        usb_dp_in,
+    input  wire        usb_dn_in,
+    output wire        usb_dp_out,
+    output wire        usb_dn_out,
+    output wire        usb_oe
 );
 
     `SOC_SDRAM_BUS_WIRES  // soc_top's SDRAM ports to soc_sdram (soc_rtl/soc_sdram_bus.vh)
@@ -69,6 +76,7 @@ module soc_sdram_sim #(
         .SDRAM_BYTES (SDRAM_BYTES),
         .PIX_CLK_HZ  (PIX_CLK_HZ),
         .BAUD        (BAUD),
+        .USB_HOST    (USB_HOST),
         `GPU_BUILD_PARAMS_PASS
     ) u_soc (
         .clk (clk), .clk_pix (clk_pix), .ext_rst (ext_rst), .uart_rx (uart_rx), .uart_tx (uart_tx),
@@ -76,6 +84,8 @@ module soc_sdram_sim #(
         .vga_vsync_n (vga_vsync_n), .vga_r (vga_r), .vga_g (vga_g), .vga_b (vga_b),
         `SOC_SDRAM_BUS_PORTS,
         .flash_cs_n (flash_cs_n), .flash_sck (flash_sck), .flash_mosi (flash_mosi), .flash_miso (flash_miso),
+        .usb_dp_in (usb_dp_in), .usb_dn_in (usb_dn_in), .usb_dp_out (usb_dp_out), .usb_dn_out (usb_dn_out),
+        .usb_oe (usb_oe),
         `SOC_GPU_MEM_PORTS,
         .leds (leds), .gpu_frame_swapped (gpu_frame_swapped), .gpu_error (gpu_error),
         .exit_valid (exit_valid), .exit_code (exit_code)

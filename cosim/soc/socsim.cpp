@@ -53,6 +53,17 @@
 // prompt instead of a doorbell: TEXT is sent each time the text from uart_tx ends with PROMPT, as
 // the smoke program (tests/soc/smoke.c) asks for its receiver's tests.
 //
+// USB (a build with the keyboard host, socsim.mk's -DSOCSIM_USB and soc_top's USB_HOST): a low-speed
+// keyboard (cosim/usb/usb_kbd_device.h, written from the USB and HID specifications, sharing no code
+// with the host) is plugged into the USB pins at time 0 (--usb-unplugged: none) and stepped after
+// every rising edge of the system clock, where the host's registered outputs change; the lines it
+// and the host make are what the host's synchronisers sample at the next one. --usb-keys-at N:TEXT
+// types TEXT on it from the GPU's Nth DOORBELL write: the model's reports for TEXT (a press and a
+// release a key), one a poll, each release left out where the next press shares no key with the
+// one before (a report of a new key alone releases the last one: a key a poll instead of two). Every event the firmware takes from USB KEY is printed ("socsim: usb
+// key ..." with the doorbells before it: the UART's --keys-at of the same key at that doorbell
+// reaches the same frame). The keyboard's first violation of the specifications ends the run.
+//
 // The run ends when the firmware writes SYS EXIT (soc_top's exit_valid): the process exits with its
 // status (0..255); or, with --stop-frames N, with status 0 once N frames were captured and compared
 // (a board's firmware runs until Q: make netlist-sim's reference frames). A harness failure — a frame that differs from the model or cannot be captured,
@@ -107,6 +118,9 @@ using SocModel = Vsoc_top;
 #include "model_check.h"
 #include "uart_line.h"
 #include "uart_reply.h"
+#ifdef SOCSIM_USB
+#include "usb_kbd_device.h"
+#endif
 
 extern "C" {
 #include "gpu_regs.h"
@@ -140,6 +154,8 @@ struct Options {
     std::string flash_image;              // --flash FILE: the flash's image at the boot offset
     uint32_t uart_divider = (SOCSIM_CLK_HZ + SOCSIM_UART_BAUD / 2) / SOCSIM_UART_BAUD;  // as soc_uart rounds
     UartReplies replies;
+    KeysAt usb_keys_at;           // --usb-keys-at N:TEXT
+    bool usb_unplugged = false;                                 // --usb-unplugged
 };
 
 int usage()
@@ -161,6 +177,11 @@ int usage()
         "                     firmware (--fw FILE.elf) goes into the flash as FILE.elf.img\n"
         "  --flash FILE       the flash holds FILE at the boot image's offset (default with --boot:\n"
         "                     the firmware's image; without either the flash is erased)\n"
+#endif
+#ifdef SOCSIM_USB
+        "  --usb-keys-at N:TEXT  type TEXT on the USB keyboard from the GPU's Nth DOORBELL write\n"
+        "                     ({UP} {DOWN} {LEFT} {RIGHT} {ESC} ... for keys without a character)\n"
+        "  --usb-unplugged    no keyboard on the USB port\n"
 #endif
         "  Exit status: the firmware's (SYS EXIT); 1 on a harness error; 2 on a usage error.\n");
 }
@@ -187,6 +208,20 @@ bool parse(int argc, char **argv, Options &o)
             o.boot = argv[++*i];
         } else if (a == "--flash" && has_value) {
             o.flash_image = argv[++*i];
+#endif
+#ifdef SOCSIM_USB
+        } else if (a == "--usb-keys-at" && has_value) {
+            if (!parse_keys_at("socsim", argv[++*i], &o.usb_keys_at)) {
+                return HarnessArg::Bad;
+            }
+            try {
+                UsbKbdDevice::reports_for_text(o.usb_keys_at.back().second);  // refuses a key it cannot type
+            } catch (const std::invalid_argument &e) {
+                std::fprintf(stderr, "socsim: --usb-keys-at: %s\n", e.what());
+                return HarnessArg::Bad;
+            }
+        } else if (a == "--usb-unplugged") {
+            o.usb_unplugged = true;
 #endif
         } else if (a == "--uart-divider" && has_value) {
             o.uart_divider = static_cast<uint32_t>(std::strtoul(argv[++*i], nullptr, 0));
@@ -221,6 +256,33 @@ VerilatedContext *new_context()
     context->traceEverOn(SOCSIM_TRACE != 0);
     return context;
 }
+
+#ifdef SOCSIM_USB
+// The boot reports that type TEXT, a key a poll: see the header (--usb-keys-at).
+std::vector<UsbKbdReport> usb_reports_for_text(const std::string &text)
+{
+    const std::vector<UsbKbdReport> all = UsbKbdDevice::reports_for_text(text);
+    const auto shares_key = [](const UsbKbdReport &a, const UsbKbdReport &b) {
+        for (uint8_t k : a.keys) {
+            for (uint8_t l : b.keys) {
+                if (k != 0 && k == l) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    };
+    std::vector<UsbKbdReport> out;
+    for (size_t i = 0; i < all.size(); i++) {
+        const bool release = all[i] == UsbKbdReport();
+        if (release && !out.empty() && i + 1 < all.size() && !shares_key(out.back(), all[i + 1])) {
+            continue;
+        }
+        out.push_back(all[i]);
+    }
+    return out;
+}
+#endif
 
 class SocRun;
 SocRun *g_run = nullptr;  // the DPI callbacks' target (one run per process)
@@ -259,6 +321,7 @@ public:
     void on_row_fetch(uint32_t clocks) { worst_row_fetch_ = clocks; }
     void on_bus_cycle(bool ibus, uint32_t word_addr, bool write);
     void on_uart_data_read();
+    void on_usb_key_read(uint32_t value);
 
 private:
     struct KeyWatch {
@@ -326,6 +389,12 @@ private:
     std::unique_ptr<SpiFlash> flash_;
     void flash_step(uint64_t t_ps);
 #endif
+#ifdef SOCSIM_USB
+    // The keyboard on the USB pins (cosim/usb/usb_kbd_device.h): see the header.
+    std::unique_ptr<UsbKbdDevice> kbd_;
+    void usb_step(uint64_t t_ps);
+#endif
+    uint32_t usb_keys_read_ = 0;  // events the firmware took from USB KEY
     std::string video_error_;   // the board's: the first TMDS error, or a colour it cannot have sent
     ModelCheck model_;
     UartLineDecoder rx_;   // the firmware's output: soc_top's uart_tx
@@ -394,6 +463,15 @@ void SocRun::on_gpu_write(uint32_t offset, uint32_t value)
             watches_.push_back(w);
         }
     }
+#ifdef SOCSIM_USB
+    for (const auto &k : opt_.usb_keys_at) {
+        if (k.first == doorbells_) {
+            for (const UsbKbdReport &r : usb_reports_for_text(k.second)) {
+                kbd_->queue_report(r, cycles_ * (1000000000000ull / SOCSIM_CLK_HZ));
+            }
+        }
+    }
+#endif
 }
 
 // A register the firmware reads, against the model's: only once the firmware has seen the last
@@ -461,6 +539,17 @@ void SocRun::on_uart_data_read()
             }
         }
     }
+}
+
+// A key event the firmware popped from USB KEY, with the doorbells before it: the UART's
+// --keys-at of that doorbell reaches the same frame (tests/soc/usb_keys.sh replays them so).
+void SocRun::on_usb_key_read(uint32_t value)
+{
+    usb_keys_read_++;
+    std::printf("socsim: usb key 0x%02x %s after doorbell %u (cycle %llu)\n",
+                (value >> SOC_USB_KEY_USAGE_LSB) & (SOC_USB_KEY_USAGE_MASK >> SOC_USB_KEY_USAGE_LSB),
+                (value & SOC_USB_KEY_PRESS_MASK) ? "press" : "release", doorbells_,
+                static_cast<unsigned long long>(cycles_));
 }
 
 uint64_t SocRun::instret() const
@@ -552,6 +641,11 @@ void SocRun::clock_once()
 #else
         (void)sys_fell;
 #endif
+#ifdef SOCSIM_USB
+        if (sys_rose) {
+            usb_step(t);
+        }
+#endif
         trace_dump(t);
         if (tmds_rose) {
             tmds_clock();
@@ -600,6 +694,9 @@ void SocRun::clock_once()
 #else
     trace_dump(t0 + kHalfPs);
 #endif
+#ifdef SOCSIM_USB
+    usb_step(t0 + kHalfPs);
+#endif
     if (pixel_edge) {
         vga_sample(top_->vga_hsync_n, top_->vga_vsync_n, top_->vga_r, top_->vga_g, top_->vga_b);
     }
@@ -619,6 +716,21 @@ void SocRun::flash_step(uint64_t t_ps)
 {
     const SpiFlashOut out = flash_->step(t_ps, top_->flash_cs_n, top_->flash_sck, top_->flash_mosi);
     top_->flash_miso = out.oe && out.miso;  // undriven: the board's pull-up is not modelled, read 0
+}
+#endif
+
+#ifdef SOCSIM_USB
+// The keyboard after a rising edge of the system clock: it sees what the host drives from now on and
+// answers until the next edge; the bus's resolved lines go to the host's inputs.
+void SocRun::usb_step(uint64_t t_ps)
+{
+    UsbHostDrive host;
+    host.oe = top_->usb_oe;
+    host.dp = top_->usb_dp_out;
+    host.dm = top_->usb_dn_out;
+    const UsbLines lines = UsbKbdDevice::bus(host, kbd_->step(t_ps, host));
+    top_->usb_dp_in = lines.dp;
+    top_->usb_dn_in = lines.dm;
 }
 #endif
 
@@ -757,6 +869,13 @@ void SocRun::summary_keys(FILE *f) const
                  rx_.framing_errors());
     std::fprintf(f, "exit_valid=%d\nvga_vsyncs=%llu\nuart_replies=%u\n", top_->exit_valid ? 1 : 0,
                  static_cast<unsigned long long>(vsyncs_), replies_.sent());
+#ifdef SOCSIM_USB
+    if (kbd_) {
+        std::fprintf(f, "usb_keys_read=%u\nusb_violations=%zu\nusb_configured=%d\nusb_reports_queued=%zu\n",
+                     usb_keys_read_, kbd_->violations().size(), kbd_->configured() ? 1 : 0, kbd_->reports_queued());
+        std::fprintf(f, "usb_keyboard=%s\n", kbd_->stats().c_str());
+    }
+#endif
 #ifdef SOCSIM_BOARD_ULX3S
     // No leds= here: the board's pins show SYS LEDS 3:0 only, beside its own status (ulx3s_system).
     std::fprintf(f, "tmds_pixels=%llu\ntmds_data_symbols=%llu\ntmds_control_symbols=%llu\n",
@@ -841,6 +960,13 @@ int SocRun::run()
         top_->flash_miso = 0;
     }
 #endif
+#ifdef SOCSIM_USB
+    kbd_.reset(new UsbKbdDevice(UsbKbdConfig()));
+    if (!opt_.usb_unplugged) {
+        kbd_->attach(0);
+    }
+    top_->usb_dp_in = top_->usb_dn_in = 0;   // detached: the host's pull-downs
+#endif
     top_->uart_rx = 1;
     top_->eval();  // initial blocks: soc_ram reads the image
     if (!hopt_.trace.empty() && hopt_.trace_frame == 0 && !trace_open(&error)) {
@@ -889,6 +1015,11 @@ int SocRun::run()
         }
         if (flash_->error_count() != 0) {
             return fail("flash", "%s", flash_->errors().front().c_str());
+        }
+#endif
+#ifdef SOCSIM_USB
+        if (!kbd_->violations().empty()) {
+            return fail("usb", "%s", kbd_->violations().front().text.c_str());
         }
 #endif
         if (top_->exit_valid) {
@@ -993,6 +1124,13 @@ extern "C" void socsim_uart_data_read()
 {
     if (g_run != nullptr) {
         g_run->on_uart_data_read();
+    }
+}
+
+extern "C" void socsim_usb_key_read(unsigned value)
+{
+    if (g_run != nullptr) {
+        g_run->on_usb_key_read(value);
     }
 }
 

@@ -28,10 +28,12 @@ SOCSIM       := $(SOCSIM_DIR)/socsim
 # Each build compiles socsim.cpp, which includes its Verilated model and reads the build's
 # definitions; the rest of its C++ is the same in every build, compiled once: the co-simulator's
 # library (harness, model check, UART pump, terminal and pty, window: COSIM_CXX_LIB) and socsim's
-# own (the UART line, the SDRAM chip and flash models, the TMDS decoder: SOCSIM_LIB). Six builds
+# own (the UART line, the SDRAM chip and flash models, the TMDS decoder, the USB keyboard:
+# SOCSIM_LIB). Six builds
 # compiled those six to nine files each, about 6 s of CPU a build.
 SOCSIM_SRC   := cosim/soc/socsim.cpp
-SOCSIM_LIB_SRC := cosim/soc/uart_line.cpp cosim/soc/tmds_decoder.cpp cosim/sdram/sdram_chip.cpp cosim/flash/spi_flash.cpp
+SOCSIM_LIB_SRC := cosim/soc/uart_line.cpp cosim/soc/tmds_decoder.cpp cosim/sdram/sdram_chip.cpp cosim/flash/spi_flash.cpp \
+                  cosim/usb/usb_kbd_device.cpp
 SOCSIM_LIB   := $(BUILD)/host/libsocsim.a
 SOCSIM_SV    := cosim/soc/socsim_taps.sv
 # soc firmware: the same sources as `make run`, built by a recursive make for FW_PLATFORM=soc.
@@ -56,7 +58,7 @@ socsim_cmd = $(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign
   --top-module $(2) -GRAM_BYTES=$(3) $(4) \
   $(SOC_VFLAGS) $(SOCSIM_SV) $(abspath $(SOCSIM_SRC)) $(5) \
   -CFLAGS "-O2 -march=native -std=c++17 -ffunction-sections $(call gpu_build_defs,$(4)) -DSOCSIM_RAM_BYTES=$(3)u \
-           $(6) $(addprefix -I$(CURDIR)/,cosim cosim/soc gpu_model contract) $$(pkg-config --cflags sdl2)" \
+           $(6) $(addprefix -I$(CURDIR)/,cosim cosim/soc cosim/usb gpu_model contract) $$(pkg-config --cflags sdl2)" \
   -LDFLAGS "-Wl,--gc-sections $(abspath $(SOCSIM_LIB) $(COSIM_CXX_LIB) $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng sdl2) $(abspath $(VERILATOR_RT))" \
   --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1 CXX=$(SIM_CXX) LINK=$(SIM_CXX) $(VERILATOR_RT_MAKE)" --Mdir $(1)/obj -o $(abspath $(1))/socsim
 # The systems a socsim build Verilates: soc_top (the pixel clock tied to the system clock), the

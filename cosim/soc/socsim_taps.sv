@@ -13,8 +13,9 @@
 //   socsim_frame_tap (in gpu_frame_dram): the slowest row fetch of the scan-out (below).
 //   socsim_cpu_tap (in VexRiscv): the start of every Wishbone cycle of either bus (a fetch or load
 //                                 of a cached address starts a cache-line refill: the misses), every
-//                                 acknowledged load of UART DATA (the firmware reading keys), and
-//                                 the retired-instruction counter.
+//                                 acknowledged load of UART DATA (the firmware reading keys), every
+//                                 load of USB KEY that returns an event (VALID set: the firmware
+//                                 took a key of the USB keyboard), and the retired-instruction counter.
 `default_nettype none
 
 module socsim_gpu_tap (
@@ -79,7 +80,10 @@ endmodule
 
 module socsim_cpu_tap #(
     // The memory map's UART DATA register (contract/soc_map.toml, through soc_pkg).
-    parameter [31:0] UART_DATA_ADDR = soc_pkg::SOC_UART_BASE + 32'(soc_pkg::SOC_UART_REG_DATA)
+    parameter [31:0] UART_DATA_ADDR = soc_pkg::SOC_UART_BASE + 32'(soc_pkg::SOC_UART_REG_DATA),
+    // USB KEY and its VALID bit (a build without the USB host answers that address with 0)
+    parameter [31:0] USB_KEY_ADDR = soc_pkg::SOC_USB_BASE + 32'(soc_pkg::SOC_USB_REG_KEY),
+    parameter integer USB_KEY_VALID = soc_pkg::SOC_USB_KEY_VALID_LSB
 ) (
     input wire        clk,
     input wire        i_cyc,        // iBusWishbone_*
@@ -88,11 +92,13 @@ module socsim_cpu_tap #(
     input wire        d_ack,
     input wire        d_we,
     input wire [29:0] d_adr,
+    input wire [31:0] d_dat_r,      // the load's data, with d_ack
     input wire [63:0] minstret      // CsrPlugin_minstret
 );
     import "DPI-C" function void socsim_bus_cycle(input int unsigned ibus, input int unsigned word_addr,
                                                   input int unsigned write);
     import "DPI-C" function void socsim_uart_data_read();
+    import "DPI-C" function void socsim_usb_key_read(input int unsigned value);
     // Called once at time 0 so that the harness learns this instance's scope for the export below
     // (svGetScope in a context import), wherever soc_top put the core.
     import "DPI-C" context function void socsim_cpu_scope();
@@ -109,6 +115,9 @@ module socsim_cpu_tap #(
         end
         if (d_cyc && d_stb && d_ack && !d_we && {d_adr, 2'b00} == UART_DATA_ADDR) begin
             socsim_uart_data_read();
+        end
+        if (d_cyc && d_stb && d_ack && !d_we && {d_adr, 2'b00} == USB_KEY_ADDR && d_dat_r[USB_KEY_VALID]) begin
+            socsim_usb_key_read(d_dat_r);
         end
         i_cyc_q <= i_cyc;
         d_cyc_q <= d_cyc;
@@ -133,5 +142,5 @@ bind gpu_frame_dram socsim_frame_tap u_socsim_frame_tap (
 bind VexRiscv socsim_cpu_tap u_socsim_cpu_tap (
     .clk(clk), .i_cyc(iBusWishbone_CYC), .d_cyc(dBusWishbone_CYC), .d_stb(dBusWishbone_STB),
     .d_ack(dBusWishbone_ACK), .d_we(dBusWishbone_WE), .d_adr(dBusWishbone_ADR),
-    .minstret(CsrPlugin_minstret)
+    .d_dat_r(dBusWishbone_DAT_MISO), .minstret(CsrPlugin_minstret)
 );

@@ -19,6 +19,7 @@ module ulx3s_sdram_sim #(
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_BOOT_BYTES,        // the boot program's on-chip RAM
     parameter integer SDRAM_BYTES = soc_pkg::SOC_SDRAM_DEFAULT_BYTES,
     parameter integer BAUD = soc_pkg::SOC_UART_BAUD,                  // the SoC's UART (ulx3s_system)
+    parameter integer USB_HOST = 0,                                    // the keyboard host on US2 (ulx3s_system)
     `GPU_BUILD_PARAMS
 ) (
     // ---- the PLL's clocks, made by socsim
@@ -55,7 +56,13 @@ module ulx3s_sdram_sim #(
     output wire        flash_cs_n,
     output wire        flash_sck,
     output wire        flash_mosi,
-    input  wire        flash_miso
+    input  wire        flash_miso,
+    // ---- US2 (USB_HOST), for socsim's keyboard model
+    input  wire        usb_dp_in,
+    input  wire        usb_dn_in,
+    output wire        usb_dp_out,
+    output wire        usb_dn_out,
+    output wire        usb_oe
 );
 
     wire               sdram_rst;
@@ -67,6 +74,7 @@ module ulx3s_sdram_sim #(
         .RAM_BYTES   (RAM_BYTES),
         .SDRAM_BYTES (SDRAM_BYTES),
         .BAUD        (BAUD),
+        .USB_HOST    (USB_HOST),
         `GPU_BUILD_PARAMS_PASS
     ) u_system (
         .clk_sys (clk_sys), .clk_pix (clk_pix), .clk_tmds (clk_tmds), .pll_locked (pll_locked),
@@ -75,6 +83,8 @@ module ulx3s_sdram_sim #(
         .sdram_rst (sdram_rst),
         `SOC_SDRAM_BUS_PORTS,
         .flash_cs_n (flash_cs_n), .flash_sck (flash_sck), .flash_mosi (flash_mosi), .flash_miso (flash_miso),
+        .usb_dp_in (usb_dp_in), .usb_dn_in (usb_dn_in), .usb_dp_out (usb_dp_out), .usb_dn_out (usb_dn_out),
+        .usb_oe (usb_oe),
         `SOC_GPU_MEM_PORTS,
         .exit_valid (exit_valid), .exit_code (exit_code)
     );

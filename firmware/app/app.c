@@ -6,16 +6,18 @@
  * Layout: app_run is boot, then per frame the named stages app_input (steps 0-2's keys),
  * app_update (the scene), app_draw (per pass app_render_pass, then app_submit: step 3-4),
  * app_print_notes and app_statistics; the frame's counters are one struct frame_stats and its
- * frame_stats_* functions; what a build leaves out (uploads, the platform's GPU buffers and
- * hooks, the measurement camera) is decided in one block of #if's, each giving the stages a
- * function that is empty where the feature is not built.
+ * frame_stats_* functions; what a build leaves out (uploads, the USB keyboard, the platform's GPU
+ * buffers and hooks, the measurement camera) is decided in one block of #if's, each giving the
+ * stages a function that is empty where the feature is not built.
  *
  * Per frame:
  *   0. a model uploaded over the UART and committed in the last frame is swapped in: the model
  *      scene starts from it (model/upload.h; FW_WITH_UPLOAD);
  *   1. read at most INPUT_MAX_BYTES_PER_FRAME bytes from the UART (FW_UART_BYTES_PER_FRAME where
  *      uploads are built in; never blocks, the rest waits for the next frame); the upload's
- *      receiver takes its frames, the rest is decoded into key counts;
+ *      receiver takes its frames, the rest is decoded into key counts; with FW_USB_KEYBOARD, then
+ *      at most FW_USB_EVENTS_PER_FRAME events of the USB keyboard, into the same counts
+ *      (input/usb_keys.h: each key acts as its terminal bytes do on the UART);
  *   2. global keys (quit, scene, wireframe, anaglyph, depth buffer, help), then scene_update
  *      (camera keys, animation, scene keys);
  *   3. per pass (two for anaglyph: left eye red, right eye cyan): render the scene into the
@@ -56,6 +58,7 @@
 #include "app/fw_config.h"
 #include "gpu/gpu.h"
 #include "input/input.h"
+#include "input/usb_keys.h"
 #include "render/palette.h"
 #include "render/proj.h"
 #include "math/real.h"
@@ -85,6 +88,10 @@ struct app {
 #if FW_WITH_UPLOAD
     struct upload_rx upload;
     bool model_from_upload;  /* the model scene's source is the staging buffer */
+#endif
+#if FW_USB_KEYBOARD
+    struct usb_keys usb;     /* the USB keyboard's own decoder, Shift and held key */
+    int usb_state;           /* bsp_usb_state() as last reported */
 #endif
 #if FW_WITH_STRIPS
     uint32_t strip_rows;       /* lines per strip a frame is sent in; 0: whole */
@@ -579,6 +586,87 @@ static inline void app_upload_init(struct app *app)
 static inline int app_wait_batch(struct app *app, uint32_t tag)
 {
     return gpu_wait(&app->gpu, tag, FW_GPU_MAX_POLLS);
+}
+#endif
+
+#if FW_USB_KEYBOARD
+static void app_usb_init(struct app *app)
+{
+    usb_keys_init(&app->usb, FW_USB_KEY_REPEAT_DELAY, FW_USB_KEY_REPEAT_PERIOD);
+    app->usb_state = BSP_USB_DETACHED;  /* as the port starts: a line once something happens */
+}
+
+/* This frame's USB key events, never waiting, into the counts the UART's keys are in: a held
+ * key's repeat first (FW_USB_KEY_REPEAT_DELAY), then at most FW_USB_EVENTS_PER_FRAME events. */
+static void app_read_usb(struct app *app, struct input_counts *keys)
+{
+    if (FW_USB_KEY_REPEAT_DELAY != 0u) {
+        usb_keys_frame(&app->usb, keys);
+    }
+    for (uint32_t i = 0; i < FW_USB_EVENTS_PER_FRAME; i++) {
+        const int ev = bsp_usb_key_nonblock();
+
+        if (ev < 0) {
+            break;
+        }
+        usb_keys_event(&app->usb, keys, (uint8_t)((uint32_t)ev & BSP_USB_KEY_USAGE_MASK),
+                       ((uint32_t)ev & BSP_USB_KEY_PRESS) != 0u);
+    }
+}
+
+/* What a change of the USB port's state means to someone at the keyboard; 0: nothing worth a line
+ * (the steps between plugged in and ready, which take about 140 ms). */
+static const char *app_usb_state_line(int state)
+{
+    switch (state) {
+    case BSP_USB_DETACHED:
+        return "usb: keyboard unplugged";
+    case BSP_USB_ATTACHED:
+        return "usb: device plugged in";
+    case BSP_USB_RUNNING:
+        return "usb: keyboard ready";
+    case BSP_USB_NOT_KEYBOARD:
+        return "usb: error: the device is not a boot keyboard (unplug it)";
+    case BSP_USB_BABBLE:
+        return "usb: error: the device babbled; the port is off until it is unplugged";
+    default:
+        return 0;
+    }
+}
+
+/* A line when the USB port's state changed since the last frame (none on a platform without a
+ * USB host). Reading the state is counted, printing is not. */
+static void app_print_usb(struct app *app, struct frame_stats *st)
+{
+    const int state = bsp_usb_state();
+    const char *line;
+
+    if (state == app->usb_state || state < 0) {
+        return;
+    }
+    app->usb_state = state;
+    line = app_usb_state_line(state);
+    if (line != 0) {
+        const struct frame_span span = frame_span_begin();
+
+        puts(line);
+        frame_stats_exclude(st, span);
+    }
+}
+#else
+static inline void app_usb_init(struct app *app)
+{
+    (void)app;
+}
+static inline void app_read_usb(struct app *app, struct input_counts *keys)
+{
+    (void)app;
+    (void)keys;
+}
+static inline void app_print_usb(struct app *app, struct frame_stats *st)
+{
+    (void)app;
+    (void)st;
 }
 #endif
 
@@ -1088,6 +1176,7 @@ static void app_boot(struct app *app)
     }
     input_decoder_init(&app->decoder);
     app_upload_init(app);
+    app_usb_init(app);
     app->wireframe = false;
     app->anaglyph = false;
     app->write_mask = APP_WRITE_MASK_UNKNOWN;
@@ -1106,14 +1195,17 @@ static void app_boot(struct app *app)
 }
 
 /* Input: a model committed in the last frame swapped in, this frame's UART bytes (the upload's
- * frames, then keys), the upload's answers, the global keys. Returns false to quit. */
+ * frames, then keys), the USB keyboard's keys, the upload's answers, the USB port's news, the
+ * global keys. Returns false to quit. */
 static bool app_input(struct app *app, struct input_counts *keys, struct app_notes *notes,
                       struct frame_stats *st)
 {
     notes->scene_changed = false;
     app_swap_upload(app, notes);
     app_read_uart(app, keys);
+    app_read_usb(app, keys);
     app_print_upload(app, st);
+    app_print_usb(app, st);
     return app_global_keys(app, keys, notes);
 }
 

@@ -84,6 +84,41 @@
 #define FW_UART_BYTES_PER_FRAME 1024u
 #endif
 
+/* 1: keys are read from a USB HID boot keyboard too (bsp_usb_key_nonblock; input/usb_keys.h), after
+ * the UART's each frame and into the same counts, each key doing what its terminal bytes do on the
+ * UART; a line is printed when the keyboard's port changes state (plugged in, ready, unplugged, an
+ * error). 0, the default: none of it is compiled in. Such a program runs only on a platform whose
+ * USB host is there: on the SoC a build with the USB host (soc_top USB_HOST; elsewhere its window
+ * is a bus error); QEMU and the host build have none and read the UART only. */
+#ifndef FW_USB_KEYBOARD
+#define FW_USB_KEYBOARD 0
+#endif
+/* USB key events a frame takes at most: the host's event FIFO holds 16 (usb_ls_host FIFO_DEPTH), so
+ * one frame empties it, and the work stays bounded whatever the keyboard sends (the rest waits for
+ * the next frame; what the FIFO cannot hold the host drops and counts, OVERFLOWS). */
+#ifndef FW_USB_EVENTS_PER_FRAME
+#define FW_USB_EVENTS_PER_FRAME 16u
+#endif
+/* Typematic repeat of a held USB key, in frames (input/usb_keys.h): the first repeat
+ * FW_USB_KEY_REPEAT_DELAY frames after the press, then one every FW_USB_KEY_REPEAT_PERIOD. 0, the
+ * default: a held key acts once, as a key typed on the UART by a script does. Frames are not time
+ * (the rate would follow each scene's frame rate), and frames that depend on how long a key is
+ * held would not compare with a UART run's (tests/soc/usb_keys.sh). A board build for people may
+ * set it: at 60 frames/s, 30 and 2 are a terminal's 500 ms delay and 30 repeats a second. */
+#ifndef FW_USB_KEY_REPEAT_DELAY
+#define FW_USB_KEY_REPEAT_DELAY 0u
+#endif
+#ifndef FW_USB_KEY_REPEAT_PERIOD
+#define FW_USB_KEY_REPEAT_PERIOD 2u
+#endif
+#if FW_USB_KEY_REPEAT_DELAY != 0 && !FW_USB_KEYBOARD
+#error "FW_USB_KEY_REPEAT_DELAY needs FW_USB_KEYBOARD"
+#endif
+#if FW_USB_KEY_REPEAT_DELAY > 65535 || FW_USB_KEY_REPEAT_PERIOD < 1 || \
+    FW_USB_KEY_REPEAT_PERIOD > 65535
+#error "FW_USB_KEY_REPEAT_DELAY must be 0..65535 frames, FW_USB_KEY_REPEAT_PERIOD 1..65535"
+#endif
+
 /* The watchdog: reads of DONE_SEQ before a batch counts as lost. One poll is 4 instructions
  * (lw, addi, bne, beq); under QEMU -icount 2^28 polls take about 3 s of host time (measured); 2^31
  * would then take ~25 s (extrapolated), two orders of magnitude more than a co-simulated batch needs (the vsync wait is

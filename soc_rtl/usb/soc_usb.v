@@ -1,6 +1,6 @@
 // soc_usb: the USB low-speed host's register block (USB in contract/soc-memory-map.md), a Wishbone
-// B4 slave over usb_ls_host (docs/usb.md, "The register block"). Not decoded by soc_top yet (issue
-// #28): tested alone, tests/usb/regs.sh.
+// B4 slave over usb_ls_host (docs/usb.md, "The register block"), in soc_top when USB_HOST = 1;
+// tested alone (tests/usb/regs.sh) and in the SoC (tests/soc/usb_keys.sh).
 //
 // Contract (bus): every request is answered in the next clock, once: wb_ack for the registers of the
 // map (CTRL, STATUS, KEY, KBD and the counters), wb_err for any other offset of the window. Writes

@@ -71,6 +71,13 @@ void unit_srand(uint32_t seed);
     X(test_input_key_map)             \
     X(test_input_escape_and_unknown)  \
     X(test_input_counts_saturate)     \
+    X(test_usb_keys_same_as_uart)     \
+    X(test_usb_keys_key_map)          \
+    X(test_usb_keys_shift)            \
+    X(test_usb_keys_releases_and_unknown) \
+    X(test_usb_keys_sequence)         \
+    X(test_usb_keys_decoders_independent) \
+    X(test_usb_keys_repeat)           \
     X(test_proj_vs_double)            \
     X(test_proj_vertex_path_vs_double) \
     X(test_proj_near_plane)           \

@@ -9,7 +9,8 @@
 // request's first (task bounded).
 // Properties (asserted): the region of an address is computed here independently (base <= address
 // < base + size, the RAM's size RAM_BYTES and the SDRAM's SDRAM_BYTES, not their windows; the
-// SDRAM's registers and the flash only in a build with SDRAM), and each slave's stb is cyc && stb &&
+// SDRAM's registers and the flash only in a build with SDRAM, the USB host's registers only in a
+// build with one), and each slave's stb is cyc && stb &&
 // (the address in its region), nothing else: exactly one slave per request, or none for an address
 // outside every region; such a request is answered by err and nothing else in its second clock
 // (one clock late, once), with dat_r 0; ack, err and dat_r are the selected slave's, so a slave's
@@ -21,6 +22,7 @@
 module soc_wb_decoder_check #(
     parameter integer RAM_BYTES  = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // as soc_top passes it
     parameter integer SDRAM_BYTES = 0, // 0: a build without SDRAM
+    parameter integer USB_HOST = 0,    // 0: a build without the USB host
     parameter integer SLAVE_WAIT = 0   // > 0: every slave answers at most this many clocks late
 ) (
     input wire        clk,
@@ -47,11 +49,14 @@ module soc_wb_decoder_check #(
     input wire        uart_err,
     input wire [31:0] sys_dat_r,
     input wire        sys_ack,
-    input wire        sys_err
+    input wire        sys_err,
+    input wire [31:0] usb_dat_r,
+    input wire        usb_ack,
+    input wire        usb_err
 );
     wire [31:0] dat_r;
-    wire        ack, err, ram_stb, sdram_stb, sdram_ctrl_stb, flash_stb, gpu_stb, uart_stb, sys_stb;
-    soc_wb_decoder #(.RAM_BYTES(RAM_BYTES), .SDRAM_BYTES(SDRAM_BYTES)) dut (
+    wire        ack, err, ram_stb, sdram_stb, sdram_ctrl_stb, flash_stb, gpu_stb, uart_stb, sys_stb, usb_stb;
+    soc_wb_decoder #(.RAM_BYTES(RAM_BYTES), .SDRAM_BYTES(SDRAM_BYTES), .USB_HOST(USB_HOST)) dut (
         .clk(clk), .rst(rst), .cyc(cyc), .stb(stb), .adr(adr),
         .dat_r(dat_r), .ack(ack), .err(err),
         .ram_stb(ram_stb), .ram_dat_r(ram_dat_r), .ram_ack(ram_ack),
@@ -61,7 +66,8 @@ module soc_wb_decoder_check #(
         .flash_stb(flash_stb), .flash_dat_r(flash_dat_r), .flash_ack(flash_ack), .flash_err(flash_err),
         .gpu_stb(gpu_stb), .gpu_dat_r(gpu_dat_r), .gpu_ack(gpu_ack), .gpu_err(gpu_err),
         .uart_stb(uart_stb), .uart_dat_r(uart_dat_r), .uart_ack(uart_ack), .uart_err(uart_err),
-        .sys_stb(sys_stb), .sys_dat_r(sys_dat_r), .sys_ack(sys_ack), .sys_err(sys_err)
+        .sys_stb(sys_stb), .sys_dat_r(sys_dat_r), .sys_ack(sys_ack), .sys_err(sys_err),
+        .usb_stb(usb_stb), .usb_dat_r(usb_dat_r), .usb_ack(usb_ack), .usb_err(usb_err)
     );
 
     reg f_past_valid = 1'b0;
@@ -82,7 +88,10 @@ module soc_wb_decoder_check #(
     wire in_sys  = in_region(a, {1'b0, soc_pkg::SOC_SYS_BASE}, soc_pkg::SOC_SYS_WINDOW_BYTES);
     wire in_flash = in_region(a, {1'b0, soc_pkg::SOC_FLASH_BASE},
                               SDRAM_BYTES != 0 ? soc_pkg::SOC_FLASH_WINDOW_BYTES : 0);
-    wire in_none = !(in_ram || in_sdram || in_sdram_ctrl || in_flash || in_gpu || in_uart || in_sys);
+    wire in_usb  = in_region(a, {1'b0, soc_pkg::SOC_USB_BASE},
+                             USB_HOST != 0 ? soc_pkg::SOC_USB_WINDOW_BYTES : 0);
+    wire in_none = !(in_ram || in_sdram || in_sdram_ctrl || in_flash || in_gpu || in_uart || in_sys
+                     || in_usb);
     wire req     = cyc && stb;
 
     // The Wishbone rules: upstream the master's requests assumed and the decoder's answers asserted;
@@ -120,6 +129,10 @@ module soc_wb_decoder_check #(
         .clk(clk), .rst(rst), .cyc(cyc), .stb(sys_stb), .adr(adr), .ack(sys_ack), .err(sys_err),
         .f_wait()
     );
+    soc_wb_decoder_port #(.DUT_ANSWERS(0), .MAX_WAIT(SLAVE_WAIT)) p_usb (
+        .clk(clk), .rst(rst), .cyc(cyc), .stb(usb_stb), .adr(adr), .ack(usb_ack), .err(usb_err),
+        .f_wait()
+    );
 
     wire ram_answer  = ram_stb && ram_ack;
     wire sdram_answer = sdram_stb && (sdram_ack || sdram_err);
@@ -128,6 +141,7 @@ module soc_wb_decoder_check #(
     wire gpu_answer  = gpu_stb && (gpu_ack || gpu_err);
     wire uart_answer = uart_stb && (uart_ack || uart_err);
     wire sys_answer  = sys_stb && (sys_ack || sys_err);
+    wire usb_answer  = usb_stb && (usb_ack || usb_err);
     wire none_err    = req && in_none && up_wait != 4'd0;  // the error responder's answer, expected
 
     always @(*) begin
@@ -139,7 +153,9 @@ module soc_wb_decoder_check #(
         assert(gpu_stb == (req && in_gpu));
         assert(uart_stb == (req && in_uart));
         assert(sys_stb == (req && in_sys));
-        if (req) assert($onehot({ram_stb, sdram_stb, sdram_ctrl_stb, flash_stb, gpu_stb, uart_stb, sys_stb, in_none}));
+        assert(usb_stb == (req && in_usb));
+        if (req) assert($onehot({ram_stb, sdram_stb, sdram_ctrl_stb, flash_stb, gpu_stb, uart_stb, sys_stb,
+                                 usb_stb, in_none}));
         // An address outside every region: err in the request's second clock, nothing before it
         // (the request has then been answered: it never waits longer), dat_r 0.
         // (From the second clock on: the error responder's flop starts at any value.)
@@ -148,10 +164,12 @@ module soc_wb_decoder_check #(
         // The answer is the selected slave's, or the error responder's: nothing else reaches the
         // master, so a slave's answer only during a request to it.
         assert(ack == (ram_answer || (sdram_stb && sdram_ack) || (sdram_ctrl_stb && sdram_ctrl_ack)
-                       || (flash_stb && flash_ack) || (gpu_stb && gpu_ack) || (uart_stb && uart_ack) || (sys_stb && sys_ack)));
+                       || (flash_stb && flash_ack) || (gpu_stb && gpu_ack) || (uart_stb && uart_ack) || (sys_stb && sys_ack)
+                       || (usb_stb && usb_ack)));
         if (f_past_valid)
             assert(err == (none_err || (sdram_stb && sdram_err) || (sdram_ctrl_stb && sdram_ctrl_err)
-                           || (flash_stb && flash_err) || (gpu_stb && gpu_err) || (uart_stb && uart_err) || (sys_stb && sys_err)));
+                           || (flash_stb && flash_err) || (gpu_stb && gpu_err) || (uart_stb && uart_err) || (sys_stb && sys_err)
+                           || (usb_stb && usb_err)));
         if (ram_answer)  assert(dat_r == ram_dat_r);
         if (sdram_answer) assert(dat_r == sdram_dat_r);
         if (sdram_ctrl_answer) assert(dat_r == sdram_ctrl_dat_r);
@@ -159,6 +177,7 @@ module soc_wb_decoder_check #(
         if (gpu_answer)  assert(dat_r == gpu_dat_r);
         if (uart_answer) assert(dat_r == uart_dat_r);
         if (sys_answer)  assert(dat_r == sys_dat_r);
+        if (usb_answer)  assert(dat_r == usb_dat_r);
     end
 
     // Covers, out of reset: a request answered by each slave (ack; err from those that can refuse),
@@ -194,6 +213,14 @@ module soc_wb_decoder_check #(
         cover(f_run && uart_stb && err);
         cover(f_run && sys_stb && ack);
         cover(f_run && sys_stb && err);
+        if (USB_HOST != 0) begin
+            cover(f_run && usb_stb && ack);
+            cover(f_run && usb_stb && err);
+        end else begin
+            // without the USB host, its region answers err
+            cover(f_run && req && in_none && err && a >= soc_pkg::SOC_USB_BASE
+                  && a < soc_pkg::SOC_USB_BASE + soc_pkg::SOC_USB_WINDOW_BYTES);
+        end
         cover(f_run && req && in_none && err && a >= soc_pkg::SOC_RAM_WINDOW_BYTES);
         if (RAM_BYTES < soc_pkg::SOC_RAM_WINDOW_BYTES)
             cover(f_run && req && in_none && err && a >= RAM_BYTES && a < soc_pkg::SOC_RAM_WINDOW_BYTES);

@@ -1,6 +1,8 @@
 /*
  * stress_bsp.c — bsp.h for the stress program: every GPU access goes to one golden model
- * (gpu_model/), reset by bsp_init(); no console input; output to stdout.
+ * (gpu_model/), reset by bsp_init(); no console input; output to stdout. The host's
+ * bsp_platform.h (bsp/host/) defines the rest inline: the counters, the fence, no mapped GPU
+ * buffers, no USB keyboard (bsp_usb_key_nonblock and bsp_usb_state return -1).
  */
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,9 +1,8 @@
 # host_tb_build.sh, sourced by tests/usb/host.sh and tests/usb/regs.sh: the USB host's sources and
 # the build of a bench around one of its tops. Needs BUILD and VERILATOR_RT.
-# usb_host_src: the host's files, in dependency order (soc_usb.v last, for the register block's bench).
-usb_host_src="soc_rtl/soc_pkg.sv soc_rtl/usb/usb_pkg.sv soc_rtl/usb/usb_ls_tx.v soc_rtl/usb/usb_ls_rx.v
-     soc_rtl/usb/usb_ls_packet_tx.v soc_rtl/usb/usb_ls_packet_rx.v soc_rtl/usb/usb_ls_xfer.v
-     soc_rtl/usb/usb_hid_keys.v soc_rtl/usb/usb_ls_host.v soc_rtl/usb/soc_usb.v"
+# usb_host_src: the host's files in dependency order, as the SoC's list has them (soc_rtl/files.f:
+# the package, then soc_rtl/usb/ with soc_usb.v last, for the register block's bench).
+usb_host_src="soc_rtl/soc_pkg.sv $(sed -n -e 's://.*::' -e '/^soc_rtl\/usb\//p' soc_rtl/files.f | tr '\n' ' ')"
 
 # usb_host_bench TOP BENCH: lint TOP under -Wall, then Verilate it at 50 MHz with
 # tests/usb/BENCH.cpp and the keyboard model into $BUILD/tests/usb-BENCH/BENCH; prints its path.
