@@ -60,7 +60,7 @@ socsim_cmd = $(VERILATOR) --cc --exe --build -j $(VERILATOR_JOBS) -O3 --x-assign
   -CFLAGS "-O2 -march=native -std=c++17 -ffunction-sections $(call gpu_build_defs,$(4)) -DSOCSIM_RAM_BYTES=$(3)u \
            $(6) $(addprefix -I$(CURDIR)/,cosim cosim/soc cosim/usb gpu_model contract) $$(pkg-config --cflags sdl2)" \
   -LDFLAGS "-Wl,--gc-sections $(abspath $(SOCSIM_LIB) $(COSIM_CXX_LIB) $(COSIM_C_LIB) $(GPU_MODEL_LIB)) $$(pkg-config --libs libpng sdl2) $(abspath $(VERILATOR_RT))" \
-  --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1 CXX=$(SIM_CXX) LINK=$(SIM_CXX) $(VERILATOR_RT_MAKE)" --Mdir $(1)/obj -o $(abspath $(1))/socsim
+  --MAKEFLAGS "OPT_FAST=-O3 OPT_SLOW=-O1 CXX=$(SIM_CXX) LINK=$(SIM_CXX) $(VERILATOR_RT_MAKE) $(VERILATOR_ONE_UNIT)" --Mdir $(1)/obj -o $(abspath $(1))/socsim
 # The systems a socsim build Verilates: soc_top (the pixel clock tied to the system clock), the
 # ULX3S's (boards/ulx3s/ulx3s_system on its three clocks, the monitor on the TMDS pairs), each with
 # the SDRAM too (below: sdram, ulx3s-sdram, the board's default build's memory system).
