@@ -70,6 +70,11 @@ public:
         }
     }
     bool pending_doorbell(uint32_t *tag) const;
+    // Whether the pending doorbell's batch asks for a swap (CTRL SWAP as the firmware left it).
+    bool pending_swaps() const
+    {
+        return (__atomic_load_n(&window_[GPU_REG_CTRL / 4], __ATOMIC_ACQUIRE) & GPU_CTRL_SWAP_MASK) != 0;
+    }
     bool pending_reset(uint32_t *value) const;
     bool service_batch(uint32_t tag, std::string *error);
     bool service_reset(uint32_t value, std::string *error);

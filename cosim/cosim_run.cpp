@@ -121,6 +121,7 @@ private:
 
     const Options &opt_;
     BatchBridge bridge_;
+    KeysSchedule keys_{opt_.harness.keys_at};  // --keys-at
     SharedRam ram_;
     QemuProcess qemu_;
 };
@@ -231,17 +232,15 @@ int CosimRun::run()
         uint32_t tag;
         if (bridge_.pending_doorbell(&tag)) {
             pump_uart(false);  // what the firmware printed before ringing comes first
-            for (const auto &k : opt_.harness.keys_at) {
-                if (k.first == bridge_.batches() + 1) {
-                    uart_.type(qemu_.uart_in_fd(), k.second);
-                    // In QEMU's UART before the batch is done: the firmware, waiting for it, reads
-                    // the keys at its next frame on any host load (scripted runs reproducible).
-                    if (!uart_.wait_taken(qemu_.uart_in_fd(), 5.0)) {
-                        std::fprintf(stderr, "cosim: warning: QEMU took the keys for doorbell %u late\n",
-                                     k.first);
-                    }
+            keys_.doorbell(bridge_.pending_swaps(), [this](const std::string &text) {
+                uart_.type(qemu_.uart_in_fd(), text);
+                // In QEMU's UART before the batch is done: the firmware, waiting for it, reads
+                // the keys at its next frame on any host load (scripted runs reproducible).
+                if (!uart_.wait_taken(qemu_.uart_in_fd(), 5.0)) {
+                    std::fprintf(stderr, "cosim: warning: QEMU took the keys for doorbell %u late\n",
+                                 bridge_.batches() + 1);
                 }
-            }
+            });
             std::string error;
             if (!bridge_.service_batch(tag, &error)) {
                 return fail(bridge_.error_kind(), "%s", error.c_str());

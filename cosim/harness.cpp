@@ -101,7 +101,7 @@ int harness_usage(const char *own)
                  "  --frames DIR       write each frame as DIR/NNNN.png (default out/frames)\n"
                  "  --uart-log FILE    the firmware's UART output, line by line\n"
                  "  --keys-at N:TEXT   type TEXT into the firmware's UART when the GPU takes DOORBELL write N\n"
-                 "                     (counted from 1)\n"
+                 "                     (counted from 1); fF:TEXT: the doorbell that starts frame F (from 0)\n"
                  "  --no-model-check   no comparison with the golden model\n"
                  "  --summary FILE     write the run's outcome and counts as key=value lines\n"
                  "  --uart-pty LINK    also offer the UART as a pseudo-terminal, LINK a symlink to it (raw, 8 bits):\n"

@@ -62,7 +62,7 @@ struct HarnessOptions {
     bool window = false;                    // --window
     double window_fps = 60.0;               // --window-fps N: the window's frame-rate cap (0: none)
     bool check_model = true;                // cleared by --no-model-check
-    KeysAt keys_at;                         // --keys-at N:TEXT, (doorbell number, text)
+    KeysAt keys_at;                         // --keys-at N:TEXT or fF:TEXT (keys_at.h)
     std::string trace;                      // --trace FILE.fst, or empty
     uint32_t trace_frame = 0;               // --trace-frame N
     bool frames_given = false;              // --frames was on the command line

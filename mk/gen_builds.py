@@ -211,12 +211,13 @@ def as_list(v):
 
 
 def fw_programs(table, variants):
-    """Families: id -> (platform or None, [program]); a program is a dict of its row's values."""
+    """Families: id -> (make condition or None, [program]); a program is a dict of its row's values.
+    The condition: the family's platform (FW_PLATFORM) and, if given, its memory (SOC_MEM)."""
     all_scenes = scenes()
     out = {}
     seen = {}  # (kind, path) -> its settings: one path, one program, whichever families list it
     for family, spec in table.get("fw", {}).items():
-        unknown = set(spec) - {"build", "platform"}
+        unknown = set(spec) - {"build", "platform", "memory"}
         if unknown:
             raise TableError(f"{BUILDS}: fw.{family}: unknown key {sorted(unknown)[0]}")
         rows = []
@@ -252,7 +253,13 @@ def fw_programs(table, variants):
                         prog[kind] = path
                         seen[key] = same
                 rows.append(prog)
-        out[family] = (spec.get("platform"), rows)
+        if "memory" in spec and "platform" not in spec:
+            raise TableError(f"{BUILDS}: fw.{family}: memory without a platform")
+        where_built = None
+        if "platform" in spec:
+            where_built = (f"$(FW_PLATFORM)/$(SOC_MEM)", f"{spec['platform']}/{spec['memory']}") \
+                if "memory" in spec else ("$(FW_PLATFORM)", spec["platform"])
+        out[family] = (where_built, rows)
     return out
 
 
@@ -298,7 +305,7 @@ def firmware_mk(variants, families):
     for family, (platform, progs) in families.items():
         lines += ["", f"# fw.{family}"]
         if platform:
-            lines.append(f"ifeq ($(FW_PLATFORM),{platform})")
+            lines.append(f"ifeq ({platform[0]},{platform[1]})")
         for p in progs:
             lst = p["list"]
             if lst:

@@ -15,6 +15,8 @@ static struct bsp_host_config host_cfg;
 static gpu_model *host_gpu;
 static uint8_t host_rgb[GPU_MODEL_SCREEN_W * GPU_MODEL_SCREEN_H * 3];
 static uint32_t host_doorbells;     /* doorbells serviced so far */
+static uint32_t host_swaps;         /* of them, those whose batch swapped */
+static bool host_frame_starts = true;  /* the next doorbell starts a frame (--keys-at fF:TEXT) */
 static uint32_t host_frames_written;
 static char host_uart_in[4096];     /* typed, not yet read */
 static uint32_t host_uart_head;
@@ -107,12 +109,16 @@ static void host_doorbell(uint32_t offset, uint32_t value)
 
     host_doorbells++;
     for (uint32_t i = 0; i < host_cfg.key_events; i++) {
-        if (host_cfg.keys[i].doorbell == host_doorbells) {
-            host_type(host_cfg.keys[i].text);
+        const struct bsp_host_keys *k = &host_cfg.keys[i];
+
+        if (k->frame ? host_frame_starts && k->at == host_swaps : k->at == host_doorbells) {
+            host_type(k->text);
         }
     }
     gpu_model_write(host_gpu, offset, value);
-    if (gpu_model_read(host_gpu, GPU_REG_FRAME_COUNT) != frames_before) {
+    host_frame_starts = gpu_model_read(host_gpu, GPU_REG_FRAME_COUNT) != frames_before;
+    if (host_frame_starts) {
+        host_swaps++;
         if (host_cfg.frames_dir != NULL) {
             gpu_model_scanout(host_gpu, host_rgb);
             host_write_frame(host_cfg.frames_dir);

@@ -11,7 +11,8 @@
 #define BSP_HOST_MAX_KEY_EVENTS 64
 
 struct bsp_host_keys {
-    uint32_t doorbell;  /* typed just before this doorbell (1 = the first) is serviced */
+    uint32_t at;        /* typed just before this doorbell (1 = the first) is serviced, or with */
+    bool frame;         /* frame, the doorbell that starts frame `at` (0 = the first) */
     const char *text;
 };
 

@@ -14,7 +14,9 @@
  *                     the level is rounded or dithered, mixed between its ramp's entries):
  *                     bench-error's undithered reference
  *   --keys-at N:TEXT  type TEXT just before doorbell N (1 = first) is serviced, byte for byte
- *                     (as gpusim cosim; use the shell's $'...' for control bytes)
+ *                     (as gpusim cosim; use the shell's $'...' for control bytes); fF:TEXT just
+ *                     before the doorbell that starts frame F (0 = first: the first doorbell after
+ *                     F swaps), as socsim's
  *   --no-lines        model a GPU built without line primitives (CAPS_LINES = 0)
  *   --zbuf            model a GPU built with the depth buffer (CAPS_ZBUF = 1)
  *   --no-wmask        model a GPU built without the framebuffer write mask (CAPS_WMASK = 0)
@@ -107,13 +109,20 @@ int bsp_args(int argc, char **argv)
             }
         } else if (strcmp(a, "--keys-at") == 0 && has_value) {
             const char *spec = argv[++i];
+            const bool frame = spec[0] == 'f';
+            const char *number = frame ? spec + 1 : spec;
             const char *colon = strchr(spec, ':');
+            char *end = NULL;
+            const unsigned long at = strtoul(number, &end, 10);
 
-            if (colon == NULL || colon == spec || cfg.key_events >= BSP_HOST_MAX_KEY_EVENTS) {
-                fprintf(stderr, "fw-host: --keys-at wants N:TEXT, got '%s'\n", spec);
+            if (colon == NULL || end != colon || end == number || number[0] == '-' || at > UINT32_MAX ||
+                (!frame && at == 0) || cfg.key_events >= BSP_HOST_MAX_KEY_EVENTS) {
+                fprintf(stderr, "fw-host: --keys-at wants N:TEXT (N from 1) or fF:TEXT, at most %d of them, "
+                                "got '%s'\n", BSP_HOST_MAX_KEY_EVENTS, spec);
                 return 2;
             }
-            cfg.keys[cfg.key_events].doorbell = (uint32_t)strtoul(spec, NULL, 10);
+            cfg.keys[cfg.key_events].at = (uint32_t)at;
+            cfg.keys[cfg.key_events].frame = frame;
             cfg.keys[cfg.key_events].text = colon + 1;
             cfg.key_events++;
         } else if (strcmp(a, "--no-lines") == 0) {

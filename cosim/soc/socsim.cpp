@@ -42,7 +42,7 @@
 // the scan-out of frame N-1, which runs while frame N is drawn). Other builds refuse --trace.
 //
 // Keys: --keys-at N:TEXT starts sending TEXT on uart_rx when the GPU takes its Nth DOORBELL write
-// (the point where `gpusim cosim` types it); if bytes are still on the line when the firmware next
+// (the point where `gpusim cosim` types it; fF:TEXT the doorbell that starts frame F, keys_at.h); if bytes are still on the line when the firmware next
 // reads UART DATA after the following swap, the firmware's frame saw part of them, so the run would
 // differ from co-simulation: a warning, counted as keys_late in the summary. With a terminal on
 // stdin the keystrokes are sent as well (cosim/uart_terminal); Ctrl-C ends the run. With
@@ -179,7 +179,8 @@ int usage()
         "                     the firmware's image; without either the flash is erased)\n"
 #endif
 #ifdef SOCSIM_USB
-        "  --usb-keys-at N:TEXT  type TEXT on the USB keyboard from the GPU's Nth DOORBELL write\n"
+        "  --usb-keys-at N:TEXT  type TEXT on the USB keyboard from the GPU's Nth DOORBELL write (fF:TEXT:\n"
+        "                     from the doorbell that starts frame F, as --keys-at)\n"
         "                     ({UP} {DOWN} {LEFT} {RIGHT} {ESC} ... for keys without a character)\n"
         "  --usb-unplugged    no keyboard on the USB port\n"
 #endif
@@ -215,7 +216,7 @@ bool parse(int argc, char **argv, Options &o)
                 return HarnessArg::Bad;
             }
             try {
-                UsbKbdDevice::reports_for_text(o.usb_keys_at.back().second);  // refuses a key it cannot type
+                UsbKbdDevice::reports_for_text(o.usb_keys_at.back().text);  // refuses a key it cannot type
             } catch (const std::invalid_argument &e) {
                 std::fprintf(stderr, "socsim: --usb-keys-at: %s\n", e.what());
                 return HarnessArg::Bad;
@@ -417,6 +418,10 @@ private:
     bool arm_pending_ = false;     // a swap happened in this cycle's eval: arm the monitor after it
     bool capture_pending_ = false; // armed, waiting for the frame
     std::vector<KeyWatch> watches_;
+    KeysSchedule uart_keys_{hopt_.keys_at};  // --keys-at
+#ifdef SOCSIM_USB
+    KeysSchedule usb_keys_{opt_.usb_keys_at};  // --usb-keys-at
+#endif
 
     uint32_t doorbells_ = 0, resets_ = 0, keys_late_ = 0;
     uint32_t scanout_underflows_ = 0;  // the GPU's SCANOUT_UNDERFLOWS (frames in the SDRAM)
@@ -455,22 +460,19 @@ void SocRun::on_gpu_write(uint32_t offset, uint32_t value)
     if (ctrl_ & GPU_CTRL_SWAP_MASK) {
         swap_doorbell_cycle_ = cycles_;
     }
-    for (const auto &k : hopt_.keys_at) {
-        if (k.first == doorbells_) {
-            tx_.queue(k.second);
-            KeyWatch w{doorbells_};
-            w.sent = true;
-            watches_.push_back(w);
-        }
-    }
+    const bool swaps = (ctrl_ & GPU_CTRL_SWAP_MASK) != 0;
+    uart_keys_.doorbell(swaps, [this](const std::string &text) {
+        tx_.queue(text);
+        KeyWatch w{doorbells_};
+        w.sent = true;
+        watches_.push_back(w);
+    });
 #ifdef SOCSIM_USB
-    for (const auto &k : opt_.usb_keys_at) {
-        if (k.first == doorbells_) {
-            for (const UsbKbdReport &r : usb_reports_for_text(k.second)) {
-                kbd_->queue_report(r, cycles_ * (1000000000000ull / SOCSIM_CLK_HZ));
-            }
+    usb_keys_.doorbell(swaps, [this](const std::string &text) {
+        for (const UsbKbdReport &r : usb_reports_for_text(text)) {
+            kbd_->queue_report(r, cycles_ * (1000000000000ull / SOCSIM_CLK_HZ));
         }
-    }
+    });
 #endif
 }
 

@@ -130,8 +130,9 @@ SOC_BOOT_HEX := $(SOC_BOOT_ELF).hex
 SOC_BOOT_SRC := bsp/soc/boot/boot_crt0.S bsp/soc/boot/boot.c bsp/soc/boot/boot_image.c firmware/model/crc32.c
 $(SOC_BOOT_HEX): $(SOC_BOOT_ELF)
 $(eval $(call SOC_SDRAM_PROGRAM,$(SOC_BOOT_ELF),$(SOC_BOOT_SRC),-DCRC32_SLICE_TABLES=1))
-# make test's scene runs from the SDRAM (suite soc-sdram-scenes) boot with a random fill of 16 KiB
-# instead of 256: 3.3 M cycles less a scene; the boot as built for boards runs in soc-boot-faults.
+# make test's scene runs from the SDRAM (soc-sdram-scenes, boards-ulx3s-dvi) boot with a random fill
+# of 16 KiB instead of 256: 3.3 M cycles less a boot; the boot as built for boards runs in
+# soc-boot-faults.
 SOC_BOOT_FAST_ELF := $(BUILD)/soc/boot-fast.elf
 SOC_BOOT_FAST_HEX := $(SOC_BOOT_FAST_ELF).hex
 $(SOC_BOOT_FAST_HEX): $(SOC_BOOT_FAST_ELF)

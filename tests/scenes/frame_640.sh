@@ -4,8 +4,9 @@
 # run: the firmware reads its frame from the GPU's FB_SIZE) in QEMU against a GPU built for the
 # frame with the depth buffer (mk/builds.toml's sim-f640-w8), each frame from the VGA pins and
 # checked against the golden model by the harness; the host build with the model at that frame
-# (--frame 640x480 --zbuf) gives byte-identical frames. Z on the third doorbell turns the depth
-# test on: frames before it in painter's order, after it depth-tested.
+# (--frame 640x480 --zbuf) gives byte-identical frames. Z at the doorbell that starts frame 1
+# (--keys-at f1:z, whatever its batches) turns the depth test on from frame 2: frames 0 and 1 in
+# painter's order, the rest depth-tested.
 source "$(dirname "$0")/../lib.sh"
 need BUILD
 dir="$BUILD/fw-test"
@@ -17,12 +18,14 @@ frames_total=0
 for scene in "${scenes[@]}"; do
     need_file "$dir/$scene.elf" "$dir/host-$scene"
     run_to "$work/$scene-cosim.out" 300 "$sim" cosim --fw "$dir/$scene.elf" --frames "$work/$scene-cosim" \
-        --uart-log "$work/$scene-cosim.uart" --summary "$work/$scene.summary" --keys-at 3:z
+        --uart-log "$work/$scene-cosim.uart" --summary "$work/$scene.summary" --keys-at f1:z
     [ "$status" -eq 0 ] || { tail -n 5 "$work/$scene-cosim.out"; fail "$scene: co-simulation at 640x480 failed (status $status)"; }
-    run_to "$work/$scene-host.uart" 300 "$dir/host-$scene" --frame 640x480 --zbuf --frames "$work/$scene-host" --keys-at 3:z
+    run_to "$work/$scene-host.uart" 300 "$dir/host-$scene" --frame 640x480 --zbuf --frames "$work/$scene-host" --keys-at f1:z
     [ "$status" -eq 0 ] || { tail -n 5 "$work/$scene-host.uart"; fail "$scene: host build at 640x480 failed (status $status)"; }
     expect_line 'fb 640x480' "$work/$scene-cosim.uart"
     expect_line '^depth buffer on' "$work/$scene-cosim.uart"
+    [ "$(grep -B1 '^depth buffer on' "$work/$scene-cosim.uart" | head -n 1 | cut -d: -f1)" = "frame 1" ] ||
+        fail "$scene: the depth test did not start after frame 1 ($work/$scene-cosim.uart)"
     frames=$(summary frames "$work/$scene.summary")
     [ "$frames" -ge 4 ] || fail "$scene: only $frames frames"
     expect_eq "$(summary frames_model_checked "$work/$scene.summary")" "$frames" "$scene: frames checked against the model"

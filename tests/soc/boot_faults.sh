@@ -8,7 +8,7 @@
 #   - a chip with address pin A11 stuck low:            0xE1 the memory test names address bit 21
 #     (row bit 11: rows sit above 9 column bits and the 16-bit word's byte bit, banks above the rows)
 #   - the payload with one bit flipped:                 0xE4 "image payload corrupt", after the copy
-# and the good image boots (the same run as suite soc-sdram-scenes, so not repeated here).
+# and the good image boots (as in suite soc-sdram-scenes, so not repeated here).
 #   usage: boot_faults.sh SOCSIM_SDRAM   (the suite passes {socsim-sdram-<RAM>k})
 source "$(dirname "$0")/../lib.sh"
 need BUILD

@@ -15,59 +15,26 @@
 # start-up of landscape, voxel and knot alone is millions of cycles: terrain, chunk meshes, the
 # knot's grid), and frames 0-1 already cover the keys (read at frame 1). Two scenes run at a time.
 # On chip three scenes run, one per camera mode (voxel fly, cubes orbit, tetra object): the knot's
-# and the landscape's start-ups are most of a run's cycles, and both scenes run on socsim from the
-# SDRAM below (their on-chip images' fit, stack included, is fw-fit's). SOC_SCENES='…' picks others.
-#
-#   vs_cosim.sh sdram SOCSIM_SDRAM_DRAM   (suite soc-sdram-scenes) the same with everything in the
-#   SDRAM: the system with LiteDRAM and the chip and flash models (socsim-sdram-dram-<boot RAM>k),
-#   its RAM holding the boot program, which powers the SDRAM up, runs the quick memory test (its
-#   random fill cut to 16 KiB: boot-fast; the boards' boot runs in soc-boot-faults) and copies each
-#   scene's image (the SOC_MEM=sdram builds; the model scene at the host build's capacities) from
-#   the flash (docs/boot.md); and the GPU's two 640x480 frames in the SDRAM too (FRAME_DRAM, strips
-#   of 16 rows, depth buffer and Gouraud: the contract's "Frames in external memory"), on
-#   LiteDRAM's second port, the chip model serving the CPU's cache lines, the strips' flushes and
-#   the scan-out's rows. Two frames a scene: painter's order, then depth-tested (Z at doorbell 1,
-#   read at frame 1; the camera keys are the on-chip runs' subject), against the host build at
-#   640x480 with its depth buffer. The frames must be the same bytes, with no SDRAM or flash
-#   violation, no scan-out underflow, every row fetched within its display line, the image loaded
-#   and started.
+# and the landscape's start-ups are most of a run's cycles, and every scene runs on socsim from the
+# SDRAM in soc-sdram-scenes (tests/soc/sdram_tour.sh; their on-chip images' fit, stack included, is
+# fw-fit's). SOC_SCENES='…' picks others.
 source "$(dirname "$0")/../lib.sh"
 source "$(dirname "$0")/soc_lib.sh"
 need BUILD
-memory=on-chip
-boot=()
-short=()
-host_frame=()
-counts='s/$//'   # the frame lines' counts compared: all of them
-image=hex
 # J J J W at doorbell 1 (frame 0's first batch): look or swing left three times and move forward or
 # zoom in, in every camera mode; the firmware reads them at frame 1 in both worlds. No scene key.
 keys='1:jjjw'
-if [ "${1:-}" = sdram ]; then
-    memory=SDRAM
-    socsim=${2:?usage: vs_cosim.sh sdram SOCSIM_SDRAM_DRAM}
-    soc_test_dir=$BUILD/fw-test-soc-sdram
-    boot=(--boot "$BUILD/soc/boot-fast.elf.hex")  # its random fill 16 KiB: the scenes are the subject here
-    short=(--stop-frames 2)
-    host_frame=("${dram_host_frame[@]}")
-    keys='1:z'
-    counts='s/ drawn .*//'
-    need_file "${boot[1]}"
-    image=img
-fi
 need_file "$socsim"
-work=$(fresh_dir "soc-vs-cosim${1:+-$1}")
-# The slowest first, so that it overlaps the others.
-# From the SDRAM the model scene too: its capacities are the SDRAM build's.
-scenes=${SOC_SCENES:-${1:+knot landscape model }voxel cubes tetra}
+work=$(fresh_dir soc-vs-cosim)
+scenes=${SOC_SCENES:-voxel cubes tetra}
 
 one_scene() {
-    local s="$1" host="$BUILD/fw-test/host-$1" soc_elf frames printed f worst detail=""
+    local s="$1" host="$BUILD/fw-test/host-$1" soc_elf frames printed f
     soc_elf="$soc_test_dir/$s-2f.elf"
-    need_file "$host" "$soc_elf.$image"
-    run_to "$work/$s.host.uart" 300 "$host" "${host_frame[@]}" --frames "$work/$s-host" --keys-at "$keys"
+    need_file "$host" "$soc_elf.hex"
+    run_to "$work/$s.host.uart" 300 "$host" --frames "$work/$s-host" --keys-at "$keys"
     expect_status 0 "host build of $s"
-    run_to "$work/$s.soc.out" 600 "$socsim" "${boot[@]}" "${short[@]}" --fw "$soc_elf" --frames "$work/$s-soc" \
+    run_to "$work/$s.soc.out" 600 "$socsim" --fw "$soc_elf" --frames "$work/$s-soc" \
         --uart-log "$work/$s.soc.uart" --keys-at "$keys" --summary "$work/$s.soc.summary"
     expect_status 0 "socsim of $s (log: $work/$s.soc.out)"
     frames=$(summary frames "$work/$s.soc.summary")
@@ -81,33 +48,14 @@ one_scene() {
         [ -f "$work/$s-host/$(basename "$f")" ] || fail "$s: the host build has no $(basename "$f")"
         cmp -s "$f" "$work/$s-host/$(basename "$f")" || fail "$s: $(basename "$f") differs from the host build's"
     done
-    # Both worlds read the keys at the same frame: the same triangles submitted and drawn per frame
-    # (a short run may stop before its frame's line is out on the UART: the lines it has). In
-    # strips a triangle is drawn once for each strip it reaches: there the triangles submitted.
+    # Both worlds read the keys at the same frame: the same triangles submitted and drawn per frame.
     printed=$(frame_lines "$work/$s.soc.uart" | wc -l)
     [ "$printed" -le "$frames" ] || fail "$s: $printed frame lines for $frames frames"
-    diff <(frame_lines "$work/$s.soc.uart" | sed "$counts") <(frame_lines "$work/$s.host.uart" | head -n "$printed" | sed "$counts") >/dev/null ||
+    diff <(frame_lines "$work/$s.soc.uart") <(frame_lines "$work/$s.host.uart" | head -n "$printed") >/dev/null ||
         fail "$s: the firmware's triangle counts differ between socsim and the host build"
-    if [ "$memory" = SDRAM ]; then
-        expect_eq "$(summary sdram_violations "$work/$s.soc.summary")" 0 "$s: SDRAM chip model violations"
-        expect_eq "$(summary flash_violations "$work/$s.soc.summary")" 0 "$s: flash model violations"
-        grep -q "^boot: image of [0-9]* bytes from flash .* starting at 0x40000000" "$work/$s.soc.uart" ||
-            fail "$s: the boot program did not load and start the image (log: $work/$s.soc.uart)"
-        expect_eq "$(summary scanout_underflows "$work/$s.soc.summary")" 0 "$s: SCANOUT_UNDERFLOWS"
-        worst=$(summary scanout_worst_row_clocks "$work/$s.soc.summary")
-        # A row's deadline is one display line: 800 pixels of 2 system clocks (socsim's 50 MHz, the
-        # 25 MHz pixel rate).
-        [ "${worst:-0}" -gt 0 ] && [ "$worst" -lt 1600 ] ||
-            fail "$s: the slowest row fetch took ${worst:-?} clocks (deadline 1,600)"
-        expect_line '^strips: the GPU draws 16 rows at a time on chip' "$work/$s.soc.uart"
-        expect_line '^depth buffer on' "$work/$s.soc.uart"
-        detail=", the slowest row fetch $worst clocks, SDRAM words read $(summary sdram_words_read "$work/$s.soc.summary"), written $(summary sdram_words_written "$work/$s.soc.summary")"
-    fi
-    echo "$s: $frames frames identical to the host build's, $(summary cycles "$work/$s.soc.summary") SoC cycles ($memory)$detail"
+    echo "$s: $frames frames identical to the host build's, $(summary cycles "$work/$s.soc.summary") SoC cycles"
 }
 
 each_scene 2 one_scene $scenes
 total=$(total_frames "$work/%.soc.summary" $scenes)
-what=""
-[ "$memory" = SDRAM ] && what=" (the frames too: 640x480, painter's order then depth-tested, no underflow)"
-pass "soc-vs-cosim${1:+ ($1)}: $(echo $scenes | wc -w) scenes from the $memory$what, $total socsim frames byte-identical to the host build's (= co-simulation's), all equal to the model"
+pass "soc-vs-cosim: $(echo $scenes | wc -w) scenes, $total socsim frames byte-identical to the host build's (= co-simulation's), all equal to the model"
