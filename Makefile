@@ -126,10 +126,14 @@ run: setup
 	@$(MAKE) --no-print-directory run-built \
 	  $(if $(and $(WINDOW),$(filter-out command line,$(origin FRAMES))),FRAMES=0)
 
-# PLATFORM=soc: the whole SoC in socsim instead of QEMU + the GPU (cosim/soc/socsim.mk).
+# PLATFORM=soc: the whole SoC in socsim instead of QEMU + the GPU (cosim/soc/socsim.mk); USB=1 and
+# USB_KEYS=TEXT its USB keyboard.
 # UART_PTY=LINK: the firmware's UART also on a pseudo-terminal, for tools/mesh_upload.py.
 ifeq ($(PLATFORM),soc)
 run-built: run-soc
+else ifneq ($(filter-out 0,$(USB))$(USB_KEYS),)
+run-built:
+	@echo "run: USB=1 and USB_KEYS are socsim's USB keyboard: PLATFORM=soc"; exit 2
 else ifneq ($(WINDOW),)
 run-built: $(FW_ELF) $(GPUSIM_FAST)
 	@mkdir -p $(OUT)

@@ -187,7 +187,7 @@ bool Harness::stop_requested(std::string *keys)
     return signal_ != 0;
 }
 
-std::string Harness::window_keys()
+std::string Harness::window_keys(std::string *quit)
 {
     if (!window_.is_open()) {  // before the clock: the loops call this at every turn
         return "";
@@ -201,7 +201,7 @@ std::string Harness::window_keys()
     std::string keys = window_.poll(&closed);
     if (closed && window_closed_at_ < 0) {
         window_closed_at_ = now;
-        keys += "q";
+        (quit != nullptr ? *quit : keys) += "q";
     }
     return keys;
 }

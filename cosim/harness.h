@@ -110,9 +110,10 @@ protected:
     // otherwise go to *keys.
     bool stop_requested(std::string *keys);
     // The window's keys for the firmware, "q" when it has just been closed (the firmware quits as
-    // on Q); throttled to 100 polls a second. window_given_up(grace_s): closed more than grace_s
-    // ago and the firmware still runs.
-    std::string window_keys();
+    // on Q; into *quit instead where given, for a harness that types the keys elsewhere); throttled
+    // to 100 polls a second. window_given_up(grace_s): closed more than grace_s ago and the
+    // firmware still runs.
+    std::string window_keys(std::string *quit = nullptr);
     bool window_given_up(double grace_s) const;
     int end_by_window();  // "<prog>: the window was closed and the firmware did not quit: stopped", 0
 

@@ -68,7 +68,7 @@ override ULX3S_DIR     = $(LEAN_DIR)/board-ulx3s/$(ULX3S_NAME)$(if $(MANIFEST_GP
 # The GPU: the co-simulators, socsim (its -G flags after -GSPAN_W) and the board's --param list.
 override GPUSIM       := $(BUILD)/sim-$(MANIFEST_SIM_NAME)/gpusim
 override GPUSIM_FAST  := $(BUILD)/sim-fast-$(MANIFEST_SIM_NAME)/gpusim
-override SOCSIM_DIR    = $(BUILD)/socsim$(SOC_MEM_SUFFIX)-$(SOC_RAM_KIB)k$(if $(MANIFEST_GPU_TAG),-w$(SPAN_W)-$(MANIFEST_GPU_TAG),$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W)))
+override SOCSIM_DIR    = $(BUILD)/socsim$(SOC_MEM_SUFFIX)$(if $(SOC_USB),-usb)-$(SOC_RAM_KIB)k$(if $(MANIFEST_GPU_TAG),-w$(SPAN_W)-$(MANIFEST_GPU_TAG),$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W)))
 SOCSIM_GPU_GFLAGS     := $(if $(MANIFEST_GPU_GFLAGS), $(MANIFEST_GPU_GFLAGS))$(if $(filter 1,$(ZBUF)), -GENABLE_ZBUF=1)
 ULX3S_GPU_PARAMS      := $(patsubst -G%,--param %,$(MANIFEST_GPU_GFLAGS))
 # Every manifest GPU, capacities included, runs with the model check: the golden model takes the

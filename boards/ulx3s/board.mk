@@ -1,7 +1,7 @@
 # boards/ulx3s/board.mk — the Radiona ULX3S (LFE5U-85F or -45F): bitstream, flash, terminal; included
 # by the top-level Makefile (paths relative to the repository root).
 #
-#   bitstream BOARD=ulx3s [SCENE=… SYS_MHZ=50 SOC_RAM_KIB=… SEED=… ZBUF=0|1 WMASK=0|1 SOC_MEM=ram|sdram FRAME_DRAM=0|1 FB=… FPGA=85F|45F|25F|12F]
+#   bitstream BOARD=ulx3s [SCENE=… SYS_MHZ=50 SOC_RAM_KIB=… SEED=… ZBUF=0|1 WMASK=0|1 SOC_MEM=ram|sdram FRAME_DRAM=0|1 FB=… FPGA=85F|45F|25F|12F USB=0|1]
 #       The defaults (boards/ulx3s/defaults.mk): SOC_MEM=sdram FRAME_DRAM=1 FB=640x480 ZBUF=1, the
 #       firmware and the frames in the SDRAM, colour and depth in strips on chip.
 #       SOC_MEM=ram: the firmware of SCENE (FRAMES 0: until Q) as the on-chip RAM's
@@ -49,6 +49,8 @@
 #   FPGA      85F (default), 45F, 25F or 12F: the board's part; nextpnr's --85k/--45k/--25k/--12k, the same pins
 #             (one LPF); the build's directory says the part when it is not the 85F
 #   SEED      nextpnr's seed (1); ZBUF, WMASK, SPAN_W, SOC_RAM_KIB: the GPU's and the RAM's, as above
+#   USB       1: a USB keyboard on US2 (docs/usb.md): soc_top's keyboard host (USB_HOST) in ulx3s_sdram_top
+#             (SOC_MEM=sdram) and the firmware built with FW_USB_KEYBOARD; 0 by default
 #   FRAME_DRAM 1 (the default with SOC_MEM=sdram): the GPU's two frames in the SDRAM too (the contract's
 #             "Frames in external memory"): it draws in strips of STRIP_ROWS rows (16) on chip, colour
 #             and depth, at the frame size FB (640x480 shown 1:1 by default; 320x240 shown 2x2)
@@ -57,6 +59,7 @@ SEED        ?= 1
 FPGA        ?= 85F
 FRAME_DRAM  ?= 0
 STRIP_ROWS  ?= 16
+USB         ?= 0
 # The framebuffer write mask (ENABLE_WMASK, the anaglyph's planes) costs 4 EBR: on by default, off
 # beside a depth buffer of frame size, which leaves too few (with it, the smallest such build needs
 # 209 of the 85F's 208 EBR; the firmware reads CAPS_WMASK and draws the anaglyph's eyes one over the
@@ -71,7 +74,7 @@ ULX3S_DEVICE  = $(FPGA:F=k)
 # FRAME_DRAM=1: the frame's parameters (FB's, unless a scene's manifest gives them) and the strips'.
 ULX3S_FRAME_PARAMS = $(if $(filter 1,$(FRAME_DRAM)),--param FRAME_DRAM=1 --param STRIP_ROWS=$(STRIP_ROWS) \
   $(if $(filter --param FB_WIDTH=%,$(ULX3S_GPU_PARAMS)),,$(patsubst -G%,--param %,$(FB_GFLAGS))))
-ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)$(if $(ULX3S_WMASK),$(if $(filter 0,$(WMASK)),-nomask))$(SOC_MEM_SUFFIX)$(if $(filter 1,$(FRAME_DRAM)),-dram-s$(STRIP_ROWS)$(if $(and $(FB_TAG),$(if $(LEAN_SCENE),,1)),-$(FB_TAG)))$(if $(filter-out 85F,$(FPGA)),-$(FPGA:F=f))
+ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)$(if $(ULX3S_WMASK),$(if $(filter 0,$(WMASK)),-nomask))$(SOC_MEM_SUFFIX)$(if $(filter 1,$(FRAME_DRAM)),-dram-s$(STRIP_ROWS)$(if $(and $(FB_TAG),$(if $(LEAN_SCENE),,1)),-$(FB_TAG)))$(if $(filter-out 85F,$(FPGA)),-$(FPGA:F=f))$(if $(filter 1,$(USB)),-usb)
 ULX3S_DIR    = $(BUILD)/board-ulx3s/$(ULX3S_NAME)
 # The top: ulx3s_top (the firmware in on-chip RAM) or ulx3s_sdram_top (SOC_MEM=sdram); files named by it.
 ULX3S_TOP    = $(if $(SOC_MEM_SUFFIX),ulx3s_sdram_top,ulx3s_top)
@@ -80,9 +83,11 @@ ULX3S_BIT    = $(ULX3S_DIR)/$(ULX3S_TOP).bit
 # The firmware: for the on-chip RAM of SOC_RAM_KIB, or (SOC_MEM=sdram) for the SDRAM, its image
 # <elf>.img for the flash. A scene's manifest build names its own (mk/manifest.mk), one for either
 # memory: the SDRAM's in a folder of its own, as its FW_DIR is.
-ULX3S_FW_ELF = $(if $(SOC_MEM_SUFFIX),$(BUILD)/board-fw$(SOC_MEM_SUFFIX)/$(SCENE).elf,$(BUILD)/board-fw/$(SCENE)-$(SOC_RAM_KIB)k.elf)
+# USB=1: the firmware with the keyboard (FW_USB_KEYBOARD), an ELF of its own.
+ULX3S_FW_USB = $(if $(filter 1,$(USB)),-usb)
+ULX3S_FW_ELF = $(if $(SOC_MEM_SUFFIX),$(BUILD)/board-fw$(SOC_MEM_SUFFIX)/$(SCENE)$(ULX3S_FW_USB).elf,$(BUILD)/board-fw/$(SCENE)-$(SOC_RAM_KIB)k.elf)
 ifneq ($(and $(LEAN_SCENE),$(SOC_MEM_SUFFIX)),)
-override ULX3S_FW_ELF = $(LEAN_DIR)/board-fw$(SOC_MEM_SUFFIX)/$(SCENE).elf
+override ULX3S_FW_ELF = $(LEAN_DIR)/board-fw$(SOC_MEM_SUFFIX)/$(SCENE)$(ULX3S_FW_USB).elf
 endif
 ULX3S_FW_IMG = $(ULX3S_FW_ELF).img
 # SOC_MEM=sdram: LiteDRAM's controller generated for the system clock (the directory socsim's build
@@ -107,7 +112,7 @@ ULX3S_FLOW   = $(PYTHON) synth/ecp5_bitstream.py --top $(ULX3S_TOP) --lpf $(ULX3
   --files $(RTL_FILES) --extra $(SOC_CPU_V_REL) --files $(SOC_FILES) --files boards/ulx3s/files.f \
   --files $(ULX3S_TOP_F) --param SYS_MHZ=$(SYS_MHZ) --param RAM_BYTES=$(SOC_RAM_BYTES) \
   $(ULX3S_MEM_FLOW) --param SPAN_W=$(SPAN_W) --param ENABLE_ZBUF=$(ZBUF) \
-  $(ULX3S_WMASK) $(ULX3S_GPU_PARAMS) $(ULX3S_FRAME_PARAMS)
+  $(ULX3S_WMASK) $(ULX3S_GPU_PARAMS) $(ULX3S_FRAME_PARAMS) $(if $(filter 1,$(USB)),--param USB_HOST=1)
 # Every clock-domain crossing declared, with its reason: checked after synthesis (synth/crossings.py).
 # Not yet for SOC_MEM=sdram: its netlist holds LiteDRAM's DQ buffers (TRELLIS_IO) and the flash's
 # USRMCLK, cell types synth/crossings.py does not model (it stops on them); that build's crossings
@@ -147,7 +152,8 @@ lint-board: $(SOC_VENV) $(LITEDRAM_SIM_V)
 	@bash boards/digilent/lint.sh
 
 board-fw: $(SOC_VENV)
-	+@$(SOC_FW_MAKE) SCENE=$(SCENE) BOARD_FW_ELF=$(ULX3S_FW_ELF) -f Makefile -f boards/ulx3s/fw.mk ulx3s-fw-elf
+	+@$(SOC_FW_MAKE) SCENE=$(SCENE) BOARD_FW_ELF=$(ULX3S_FW_ELF) $(if $(filter 1,$(USB)),BOARD_FW_DEFS=-DFW_USB_KEYBOARD=1) \
+	  -f Makefile -f boards/ulx3s/fw.mk ulx3s-fw-elf
 
 ifeq ($(BOARD),ulx3s)
 ifeq ($(SOC_RAM_KIB),auto)
@@ -165,6 +171,9 @@ endif
 ifneq ($(filter bitstream synth-board ulx3s-dir flash load netlist-sim crossings board-fw,$(MAKECMDGOALS)),)
 ifeq ($(filter 1,$(FRAME_DRAM))$(SOC_MEM_SUFFIX),1)
 $(error FRAME_DRAM=1 keeps the frames in the SDRAM: it needs SOC_MEM=sdram)
+endif
+ifeq ($(filter 1,$(USB))$(SOC_MEM_SUFFIX),1)
+$(error USB=1: the keyboard host on US2 is wired in ulx3s_sdram_top: it needs SOC_MEM=sdram)
 endif
 ifeq ($(filter 1,$(FRAME_DRAM)),)
 ifneq ($(FB_TAG),)

@@ -156,6 +156,7 @@ struct Options {
     UartReplies replies;
     KeysAt usb_keys_at;           // --usb-keys-at N:TEXT
     bool usb_unplugged = false;                                 // --usb-unplugged
+    bool usb_window = false;      // --usb-window: the window's keys on the USB keyboard, not the UART
 };
 
 int usage()
@@ -183,6 +184,7 @@ int usage()
         "                     from the doorbell that starts frame F, as --keys-at)\n"
         "                     ({UP} {DOWN} {LEFT} {RIGHT} {ESC} ... for keys without a character)\n"
         "  --usb-unplugged    no keyboard on the USB port\n"
+        "  --usb-window       with --window: its keys typed on the USB keyboard instead of the UART\n"
 #endif
         "  Exit status: the firmware's (SYS EXIT); 1 on a harness error; 2 on a usage error.\n");
 }
@@ -223,6 +225,8 @@ bool parse(int argc, char **argv, Options &o)
             }
         } else if (a == "--usb-unplugged") {
             o.usb_unplugged = true;
+        } else if (a == "--usb-window") {
+            o.usb_window = true;
 #endif
         } else if (a == "--uart-divider" && has_value) {
             o.uart_divider = static_cast<uint32_t>(std::strtoul(argv[++*i], nullptr, 0));
@@ -237,6 +241,10 @@ bool parse(int argc, char **argv, Options &o)
         return HarnessArg::Taken;
     };
     if (!harness_parse("socsim", argc, argv, 1, SOCSIM_TRACE != 0, &o.harness, own)) {
+        return false;
+    }
+    if (o.usb_unplugged && (!o.usb_keys_at.empty() || o.usb_window)) {
+        std::fprintf(stderr, "socsim: --usb-keys-at and --usb-window type on the keyboard, which --usb-unplugged leaves out\n");
         return false;
     }
     if (!o.boot.empty()) {
@@ -280,6 +288,29 @@ std::vector<UsbKbdReport> usb_reports_for_text(const std::string &text)
             continue;
         }
         out.push_back(all[i]);
+    }
+    return out;
+}
+
+// A terminal's bytes (the window's keys: text, the cursor keys as ESC [ A..D) as --usb-keys-at
+// TEXT: the cursor keys by name, '{' doubled; a byte no key of the keyboard types is left out, as
+// the firmware ignores a byte it has no key for.
+std::string usb_text_from_terminal(const std::string &bytes)
+{
+    static const char *const kCursor[] = {"{UP}", "{DOWN}", "{RIGHT}", "{LEFT}"};
+    std::string out;
+    for (size_t i = 0; i < bytes.size(); i++) {
+        if (bytes.compare(i, 2, "\x1b[") == 0 && i + 2 < bytes.size() && bytes[i + 2] >= 'A' && bytes[i + 2] <= 'D') {
+            out += kCursor[bytes[i + 2] - 'A'];
+            i += 2;
+            continue;
+        }
+        const std::string one = bytes[i] == '{' ? "{{" : std::string(1, bytes[i]);
+        try {
+            UsbKbdDevice::reports_for_text(one);
+            out += one;
+        } catch (const std::invalid_argument &) {
+        }
     }
     return out;
 }
@@ -1056,7 +1087,21 @@ int SocRun::run()
             return fail_signal();
         }
         tx_.queue(keys);
-        tx_.queue(window_keys());  // "q" once it is closed: the firmware quits as on Q, with its status
+        // "q" once it is closed: the firmware quits as on Q, with its status (on the UART: the
+        // keyboard may not be enumerated yet).
+#ifdef SOCSIM_USB
+        if (opt_.usb_window) {
+            std::string quit;
+            for (const UsbKbdReport &r : usb_reports_for_text(usb_text_from_terminal(window_keys(&quit)))) {
+                kbd_->queue_report(r, cycles_ * (1000000000000ull / SOCSIM_CLK_HZ));
+            }
+            tx_.queue(quit);
+        } else {
+            tx_.queue(window_keys());
+        }
+#else
+        tx_.queue(window_keys());
+#endif
         if (window_given_up(10.0)) {
             return end_by_window();
         }

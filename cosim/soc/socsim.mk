@@ -9,7 +9,11 @@
 #                    TMDS pairs of the DVI connector), -DSOCSIM_BOARD_ULX3S
 #   run-soc        `make run PLATFORM=soc [SCENE=… FRAMES=…]`: the soc firmware of SCENE (a
 #                  recursive make with FW_PLATFORM=soc) on socsim -> $(OUT)/frames, $(OUT)/uart.log,
-#                  or a window where the Makefile's WINDOW says so (a display, not CI)
+#                  or a window where the Makefile's WINDOW says so (a display, not CI). USB=1: the
+#                  SoC with its keyboard host (USB_HOST) and socsim's keyboard on its pins, the
+#                  firmware with FW_USB_KEYBOARD, the window's keys typed on that keyboard;
+#                  USB_KEYS=TEXT (USB=1 implied) types TEXT on it once it is enumerated (socsim
+#                  --usb-keys-at 1:TEXT: {UP} {DOWN} {LEFT} {RIGHT} {ESC}... name keys, docs/usb.md)
 #   soc-fw         that firmware only; soc-fw-test: the FW_TEST_FRAMES builds of every scene
 #   bench-soc      per scene: instructions, cycles, CPI, refills, GPU cycles, fps (bench/bench_soc.py)
 #   soc-smoke      the bare-metal smoke program (tests/soc/smoke.c, soc_rtl/soc.mk) on socsim
@@ -23,7 +27,9 @@ include bsp/soc/soc_ram.mk
 # buffer, in a folder of its own (-z), as bench-error's depth-tested configurations run it.
 # FB=<the largest frame>: its GPU (the Makefile's FB_TAG), in a folder of its own (-f<width>).
 SOCSIM_GPU_GFLAGS ?= $(if $(filter 1,$(ZBUF)), -GENABLE_ZBUF=1)$(if $(FB_GFLAGS), $(FB_GFLAGS))
-SOCSIM_DIR   := $(BUILD)/socsim$(SOC_MEM_SUFFIX)-$(SOC_RAM_KIB)k$(if $(filter 1,$(ZBUF)),-z)$(if $(FB_TAG),-$(FB_TAG))$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
+# USB=1 or USB_KEYS=TEXT: the keyboard host and socsim's keyboard (-usb).
+SOC_USB      := $(if $(or $(filter 1,$(USB)),$(USB_KEYS)),1)
+SOCSIM_DIR   := $(BUILD)/socsim$(SOC_MEM_SUFFIX)$(if $(SOC_USB),-usb)-$(SOC_RAM_KIB)k$(if $(filter 1,$(ZBUF)),-z)$(if $(FB_TAG),-$(FB_TAG))$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
 SOCSIM       := $(SOCSIM_DIR)/socsim
 # Each build compiles socsim.cpp, which includes its Verilated model and reads the build's
 # definitions; the rest of its C++ is the same in every build, compiled once: the co-simulator's
@@ -38,7 +44,7 @@ SOCSIM_LIB   := $(BUILD)/host/libsocsim.a
 SOCSIM_SV    := cosim/soc/socsim_taps.sv
 # soc firmware: the same sources as `make run`, built by a recursive make for FW_PLATFORM=soc.
 SOC_FW_DIR   := $(BUILD)/firmware-soc$(SOC_MEM_SUFFIX)
-SOC_FW_ELF   := $(SOC_FW_DIR)/$(SCENE)$(if $(filter float,$(FW_BACKEND)),-float).elf
+SOC_FW_ELF   := $(SOC_FW_DIR)/$(SCENE)$(if $(filter float,$(FW_BACKEND)),-float)$(if $(SOC_USB),-usb).elf
 SOC_FW_MAKE   = $(MAKE) --no-print-directory FW_PLATFORM=soc BUILD=$(BUILD) SOC_RAM_KIB=$(SOC_RAM_KIB) \
                 SOC_MEM=$(SOC_MEM) FW_DIR=$(SOC_FW_DIR)
 
@@ -155,8 +161,8 @@ $(eval $(call SOC_SDRAM_PROGRAM,$(SOC_SDRAM_TEST_ELF),tests/soc/smoke_crt0.S tes
 SOCSIM_GPU_FLAGS          = -GSPAN_W=$(SPAN_W)$(SOCSIM_GPU_GFLAGS)
 # make's own socsim: soc_top, or with SOC_MEM=sdram the system with SDRAM (its RAM the boot program's).
 SOCSIM_SYSTEM := $(if $(SOC_MEM_SUFFIX),sdram,soc)
-SOCSIM_CMD = $(call socsim_cmd,$(SOCSIM_DIR),$(SOCSIM_SYSTEM_$(SOCSIM_SYSTEM)),$(SOC_RAM_BYTES),$(SOCSIM_GPU_FLAGS),\
-  $(SOCSIM_SOURCES_$(SOCSIM_SYSTEM)),$(SOCSIM_CFLAGS_$(SOCSIM_SYSTEM)))
+SOCSIM_CMD = $(call socsim_cmd,$(SOCSIM_DIR),$(SOCSIM_SYSTEM_$(SOCSIM_SYSTEM))$(if $(SOC_USB), -GUSB_HOST=1),$(SOC_RAM_BYTES),\
+  $(SOCSIM_GPU_FLAGS),$(SOCSIM_SOURCES_$(SOCSIM_SYSTEM)),$(SOCSIM_CFLAGS_$(SOCSIM_SYSTEM))$(if $(SOC_USB), -DSOCSIM_USB=1))
 
 # The board build.
 SOCSIM_ULX3S_DIR := $(BUILD)/socsim-ulx3s-$(SOC_RAM_KIB)k
@@ -204,7 +210,8 @@ socsim-ulx3s: $(SOCSIM_ULX3S)
 run-soc: $(SOCSIM) soc-fw $(SOCSIM_BOOT)
 	@rm -rf $(OUT)/frames && mkdir -p $(OUT)/frames
 	$(Q)$(call say,RUN,socsim $(SOC_FW_ELF))$(SOCSIM) $(if $(SOCSIM_BOOT),--boot $(SOCSIM_BOOT)) --fw $(SOC_FW_ELF) $(if $(WINDOW),--window,--frames $(OUT)/frames) --uart-log $(OUT)/uart.log \
-	  $(if $(UART_PTY),--uart-pty $(UART_PTY))
+	  $(if $(UART_PTY),--uart-pty $(UART_PTY)) $(if $(SOC_USB),$(if $(WINDOW),--usb-window) \
+	  $(if $(USB_KEYS),--usb-keys-at '1:$(subst ','\'',$(USB_KEYS))'))
 endif
 
 # The soc test programs (tests/soc/tests.mk), for the suites that need soc-programs

@@ -3,7 +3,9 @@
 # soc-test-elfs`), so that the platform's flags and objects are firmware.mk's:
 #   $(SOC_TEST_DIR)/<scene>.elf     make test's programs (mk/builds.toml fw.fw-test) of every scene
 #   $(SOC_TEST)                     mk/builds.toml's fw.soc-test: 2 frames of every scene, a tiny
-#                                   watchdog, the model scene for an upload, tetra for the window
+#                                   watchdog, the model scene for an upload, tetra and cubes with the
+#                                   USB keyboard (tetra also until Q, for the window); with
+#                                   SOC_MEM=sdram fw.soc-tour's program too
 #   $(SOC_TEST_DIR)/bus_error.elf   tests/soc/bus_error.c with the soc BSP
 #   $(SOC_TEST_DIR)/poll_cycles.elf tests/soc/poll_cycles.c with the GPU driver and the BSP
 SOC_TEST_DIR   := $(FW_TEST_DIR)

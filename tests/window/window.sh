@@ -6,10 +6,14 @@
 # expects the run to end with status 0 and no QEMU left. The screenshot must equal, pixel for
 # pixel, the golden model's frame after the same keys (the host build, $BUILD/fw-test/host-voxel:
 # the voxel world is still unless keys move the camera, so the frame depends on the keys only).
-# Then the SoC simulation's window (socsim --window, frames from the VGA pins): its first frame's
-# screenshot must equal the golden model's; then the window is closed as a window manager closes it
-# (WM_DELETE_WINDOW, sent with python3-xlib), and the firmware — built to run until Q — must quit
-# as on Q, status 0, within 60 s.
+# Then the SoC simulation's window (socsim --window, frames from the VGA pins), on the SoC with its
+# USB keyboard host (socsim-usb-192k, the firmware built with FW_USB_KEYBOARD; --usb-window: the
+# window's keys typed on socsim's USB keyboard, not the UART): its first frame's screenshot must
+# equal the golden model's; once the keyboard is enumerated, M typed into the window must reach the
+# firmware from the USB keyboard (its camera mode changes); then the window is closed as a window
+# manager closes it (WM_DELETE_WINDOW, sent with python3-xlib), and the firmware — built to run
+# until Q — must quit as on Q (typed on the UART), status 0, within 60 s.
+#   usage: window.sh SOCSIM_USB
 # Skips, saying so, where Xvfb, xdotool or xwd is missing (tools/packages.txt lists them).
 source "$(dirname "$0")/../lib.sh"
 source "$(dirname "$0")/../soc/soc_lib.sh"
@@ -19,7 +23,8 @@ for tool in Xvfb xdotool xwd; do
 done
 /usr/bin/python3 -c 'import Xlib' 2>/dev/null || pass "window: skipped: python3-xlib is not installed (tools/setup.sh installs it)"
 host="$BUILD/fw-test/host-voxel"
-need_file "$host" "$BUILD/fw-test/host-tetra" "$socsim" "$soc_test_dir/tetra-2f.elf"
+socsim=${1:?usage: window.sh SOCSIM_USB}
+need_file "$host" "$BUILD/fw-test/host-tetra" "$socsim" "$soc_test_dir/tetra-usb-window.elf"
 work=$(fresh_dir window)
 
 # A display of its own: Xvfb picks a free number and writes it to fd 3. TrueColor, 24 bits.
@@ -102,13 +107,27 @@ run_to "$work/diff.out" 10 "$BUILD/tools/png_diff" "$ref" "$work/window.png"
 grep -q ' differing 0 ' "$work/diff.out" || fail "the window's picture differs from the golden model's: $(cat "$work/diff.out")"
 cmp -s "$ref" "$work/ref/0000.png" && fail "the keys moved nothing: the test would not see them"
 
-# The SoC: tetra until Q.
-setsid "$socsim" --fw "$soc_test_dir/tetra-window.elf" --window </dev/null >"$work/run.out" 2>&1 &
+# The SoC: tetra until Q, its keys on the USB keyboard.
+setsid "$socsim" --fw "$soc_test_dir/tetra-usb-window.elf" --window --usb-window </dev/null >"$work/run.out" 2>&1 &
 run_pid=$!
-find_window '^socsim tetra-window\.elf' "socsim --window"
+find_window '^socsim tetra-usb-window\.elf' "socsim --window"
 wait_frames 1
 xwd -id "$win" -silent >"$work/soc.xwd" || fail "xwd could not dump the SoC's window"
 "$PYTHON" tests/window/xwd_to_png.py "$work/soc.xwd" "$work/soc.png"
+wait_line() {  # wait_line REGEX WHAT: up to 60 s for a line of socsim's output
+    local _
+    for _ in $(seq 600); do
+        grep -qE "$1" "$work/run.out" && return 0
+        kill -0 "$run_pid" 2>/dev/null || fail "socsim ended early: $(tail -n 5 "$work/run.out")"
+        sleep 0.1
+    done
+    fail "socsim --usb-window: no $2 within 60 s (log: $work/run.out)"
+}
+wait_line '^usb: keyboard ready' "keyboard enumerated"
+xdotool windowfocus --sync "$win"
+xdotool type m
+wait_line '^socsim: usb key 0x10 press' "M (usage 0x10) from the USB keyboard"
+wait_line '^camera: fly' "answer to M"
 /usr/bin/python3 - "$win" <<'EOF' || fail "could not close the window"
 import sys
 from Xlib import X, display
@@ -134,4 +153,4 @@ n=$(count '^socsim: frame [0-9]+ -> \(not written\)' "$work/run.out")
 run_to "$work/tetra.out" 60 "$BUILD/fw-test/host-tetra" --frames "$work/tetra"
 run_to "$work/diff.out" 10 "$BUILD/tools/png_diff" "$work/tetra/0000.png" "$work/soc.png"
 grep -q ' differing 0 ' "$work/diff.out" || fail "the SoC window's first frame differs from the golden model's: $(cat "$work/diff.out")"
-pass "window: make run SCENE=voxel opened '$shown'; keys typed into it, its screenshot equals the golden model's frame; Q ended it with status 0; socsim's window too, closed after $n frames with status 0"
+pass "window: make run SCENE=voxel opened '$shown'; keys typed into it, its screenshot equals the golden model's frame; Q ended it with status 0; socsim's window too, M typed into it taken from the USB keyboard, closed after $n frames with status 0"
