@@ -267,11 +267,13 @@ FW_DEP_FILES += $$(FW_OBJS_$(1):.o=.d) $$(FW_HOST_OBJS_$(1):.o=.d)
 endef
 
 # ---- per program: app.c with its settings, linked with a backend's objects ---------------------
-# The scene set of a program: one (only its boot scene) or all (every scene of the table).
+# The scene set of a program: one (only its boot scene), all (every scene of the table) or a list
+# joined by + (mk/builds.toml's set = [...]: those scenes, keys 1..N in the list's order).
 # fw_set_scenes = the scenes, fw_set_defs = app.c's -DFW_BUILT_SCENES (none: scene_set.h's default,
 # the whole table). $(1) = set, $(2) = boot scene.
-fw_set_scenes = $(if $(filter one,$(1)),$(2),$(FW_SCENES))
-fw_set_defs   = $(if $(filter one,$(1)),-DFW_BUILT_SCENES='SCENE($(2))')
+fw_set_scenes = $(if $(filter one,$(1)),$(2),$(if $(findstring +,$(1)),$(subst +, ,$(1)),$(FW_SCENES)))
+fw_set_defs   = $(if $(filter one,$(1)),-DFW_BUILT_SCENES='SCENE($(2))',$(if $(findstring +,$(1)),\
+                -DFW_BUILT_SCENES='$(foreach s,$(subst +, ,$(1)),SCENE($(s)))'))
 fw_set_objs   = $(patsubst %.c,$(3)/%.o,$(foreach s,$(call fw_set_scenes,$(1),$(2)),$(call fw_scene_srcs,$(s))))
 
 # $(1) = ELF path, $(2) = scene, $(3) = backend, $(4) = frames, $(5) = max polls (may be empty),

@@ -210,6 +210,21 @@ def as_list(v):
     return v if isinstance(v, list) else [v]
 
 
+def scene_set(value, boot, all_scenes, where):
+    """A row's set as make's FW_ELF_RULES takes it: "", "one", "all", or a list of scenes joined by
+    '+' (keys 1..N choose among them, in the list's order; the boot scene among them)."""
+    if isinstance(value, list):
+        for s in value:
+            if s not in all_scenes:
+                raise TableError(f"{where}: set: {s} is not in {SCENE_TABLE}")
+        if boot not in value or len(set(value)) != len(value):
+            raise TableError(f"{where}: set: the scenes once each, {boot} among them")
+        return "+".join(value)
+    if value not in ("", "one", "all"):
+        raise TableError(f"{where}: set: one, all or a list of scenes, not {value!r}")
+    return value
+
+
 def fw_programs(table, variants):
     """Families: id -> (make condition or None, [program]); a program is a dict of its row's values.
     The condition: the family's platform (FW_PLATFORM) and, if given, its memory (SOC_MEM)."""
@@ -242,7 +257,7 @@ def fw_programs(table, variants):
                 fill = {"scene": s, "variant": v, "suffix": suffix}
                 prog = {"scene": s, "variant": v, "frames": str(row["frames"]),
                         "polls": str(row.get("polls", "")), "defs": row.get("defs", ""),
-                        "set": row.get("set", ""), "list": row.get("list", "")}
+                        "set": scene_set(row.get("set", ""), s, all_scenes, where), "list": row.get("list", "")}
                 for kind in ("elf", "host"):
                     if kind in row:
                         path = row[kind].format_map(fill)
