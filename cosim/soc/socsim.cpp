@@ -42,7 +42,8 @@
 // the scan-out of frame N-1, which runs while frame N is drawn). Other builds refuse --trace.
 //
 // Keys: --keys-at N:TEXT starts sending TEXT on uart_rx when the GPU takes its Nth DOORBELL write
-// (the point where `gpusim cosim` types it; fF:TEXT the doorbell that starts frame F, keys_at.h); if bytes are still on the line when the firmware next
+// (the point where `gpusim cosim` types it; fF:TEXT the doorbell that starts frame F, keys_at.h);
+// if bytes are still on the line when the firmware next
 // reads UART DATA after the following swap, the firmware's frame saw part of them, so the run would
 // differ from co-simulation: a warning, counted as keys_late in the summary. With a terminal on
 // stdin the keystrokes are sent as well (cosim/uart_terminal); Ctrl-C ends the run. With
@@ -452,6 +453,13 @@ private:
     KeysSchedule uart_keys_{hopt_.keys_at};  // --keys-at
 #ifdef SOCSIM_USB
     KeysSchedule usb_keys_{opt_.usb_keys_at};  // --usb-keys-at
+    // TEXT's reports queued on the keyboard from now (usb_reports_for_text: a key a poll).
+    void type_on_usb(const std::string &text)
+    {
+        for (const UsbKbdReport &r : usb_reports_for_text(text)) {
+            kbd_->queue_report(r, cycles_ * (1000000000000ull / SOCSIM_CLK_HZ));
+        }
+    }
 #endif
 
     uint32_t doorbells_ = 0, resets_ = 0, keys_late_ = 0;
@@ -488,10 +496,10 @@ void SocRun::on_gpu_write(uint32_t offset, uint32_t value)
     doorbells_++;
     last_tag_ = value;
     batch_done_ = false;
-    if (ctrl_ & GPU_CTRL_SWAP_MASK) {
+    const bool swaps = (ctrl_ & GPU_CTRL_SWAP_MASK) != 0;
+    if (swaps) {
         swap_doorbell_cycle_ = cycles_;
     }
-    const bool swaps = (ctrl_ & GPU_CTRL_SWAP_MASK) != 0;
     uart_keys_.doorbell(swaps, [this](const std::string &text) {
         tx_.queue(text);
         KeyWatch w{doorbells_};
@@ -499,11 +507,7 @@ void SocRun::on_gpu_write(uint32_t offset, uint32_t value)
         watches_.push_back(w);
     });
 #ifdef SOCSIM_USB
-    usb_keys_.doorbell(swaps, [this](const std::string &text) {
-        for (const UsbKbdReport &r : usb_reports_for_text(text)) {
-            kbd_->queue_report(r, cycles_ * (1000000000000ull / SOCSIM_CLK_HZ));
-        }
-    });
+    usb_keys_.doorbell(swaps, [this](const std::string &text) { type_on_usb(text); });
 #endif
 }
 
@@ -1092,9 +1096,7 @@ int SocRun::run()
 #ifdef SOCSIM_USB
         if (opt_.usb_window) {
             std::string quit;
-            for (const UsbKbdReport &r : usb_reports_for_text(usb_text_from_terminal(window_keys(&quit)))) {
-                kbd_->queue_report(r, cycles_ * (1000000000000ull / SOCSIM_CLK_HZ));
-            }
+            type_on_usb(usb_text_from_terminal(window_keys(&quit)));
             tx_.queue(quit);
         } else {
             tx_.queue(window_keys());
