@@ -173,9 +173,9 @@ def socsim_mk(socs):
     lines = [HEADER, "# socsim_cmd, SOCSIM_BUILD_RULES and SOCSIM_SYSTEM_*: cosim/soc/socsim.mk's.", ""]
     for ident, (system, ram_kib, flags, trace, baud, usb) in socs.items():
         top = (f"$(SOCSIM_SYSTEM_{system})" + (" --trace-fst" if trace else "") + (f" -GBAUD={baud}" if baud else "")
-               + (" -GUSB_HOST=1" if usb else ""))
+               + (" $(SOCSIM_USB_PARAMS)" if usb else ""))
         cflags = (f"$(SOCSIM_CFLAGS_{system})" + (" -DSOCSIM_TRACE=1" if trace else "")
-                  + (f" -DSOCSIM_UART_BAUD={baud}" if baud else "") + (" -DSOCSIM_USB=1" if usb else ""))
+                  + (f" -DSOCSIM_UART_BAUD={baud}" if baud else "") + (" $(SOCSIM_USB_CFLAGS)" if usb else ""))
         lines.append(f"SOCSIM_CMD_{ident} = $(call socsim_cmd,$(BUILD)/{ident},{top},{ram_kib * 1024},{flags},"
                      f"$(SOCSIM_SOURCES_{system}),{cflags})")
         lines.append(f"$(eval $(call SOCSIM_BUILD_RULES,$(BUILD)/{ident},SOCSIM_CMD_{ident},$(SOCSIM_PREREQS_{system})))")

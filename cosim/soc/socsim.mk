@@ -27,8 +27,11 @@ include bsp/soc/soc_ram.mk
 # buffer, in a folder of its own (-z), as bench-error's depth-tested configurations run it.
 # FB=<the largest frame>: its GPU (the Makefile's FB_TAG), in a folder of its own (-f<width>).
 SOCSIM_GPU_GFLAGS ?= $(if $(filter 1,$(ZBUF)), -GENABLE_ZBUF=1)$(if $(FB_GFLAGS), $(FB_GFLAGS))
-# USB=1 or USB_KEYS=TEXT: the keyboard host and socsim's keyboard (-usb).
+# USB=1 or USB_KEYS=TEXT: the keyboard host and socsim's keyboard (-usb). A socsim build with them
+# (this make's own, or mk/builds.toml's usb = true) adds these parameters and definitions.
 SOC_USB      := $(if $(or $(filter 1,$(USB)),$(USB_KEYS)),1)
+SOCSIM_USB_PARAMS := -GUSB_HOST=1
+SOCSIM_USB_CFLAGS := -DSOCSIM_USB=1
 SOCSIM_DIR   := $(BUILD)/socsim$(SOC_MEM_SUFFIX)$(if $(SOC_USB),-usb)-$(SOC_RAM_KIB)k$(if $(filter 1,$(ZBUF)),-z)$(if $(FB_TAG),-$(FB_TAG))$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))
 SOCSIM       := $(SOCSIM_DIR)/socsim
 # Each build compiles socsim.cpp, which includes its Verilated model and reads the build's
@@ -161,8 +164,8 @@ $(eval $(call SOC_SDRAM_PROGRAM,$(SOC_SDRAM_TEST_ELF),tests/soc/smoke_crt0.S tes
 SOCSIM_GPU_FLAGS          = -GSPAN_W=$(SPAN_W)$(SOCSIM_GPU_GFLAGS)
 # make's own socsim: soc_top, or with SOC_MEM=sdram the system with SDRAM (its RAM the boot program's).
 SOCSIM_SYSTEM := $(if $(SOC_MEM_SUFFIX),sdram,soc)
-SOCSIM_CMD = $(call socsim_cmd,$(SOCSIM_DIR),$(SOCSIM_SYSTEM_$(SOCSIM_SYSTEM))$(if $(SOC_USB), -GUSB_HOST=1),$(SOC_RAM_BYTES),\
-  $(SOCSIM_GPU_FLAGS),$(SOCSIM_SOURCES_$(SOCSIM_SYSTEM)),$(SOCSIM_CFLAGS_$(SOCSIM_SYSTEM))$(if $(SOC_USB), -DSOCSIM_USB=1))
+SOCSIM_CMD = $(call socsim_cmd,$(SOCSIM_DIR),$(SOCSIM_SYSTEM_$(SOCSIM_SYSTEM))$(if $(SOC_USB), $(SOCSIM_USB_PARAMS)),$(SOC_RAM_BYTES),\
+  $(SOCSIM_GPU_FLAGS),$(SOCSIM_SOURCES_$(SOCSIM_SYSTEM)),$(SOCSIM_CFLAGS_$(SOCSIM_SYSTEM))$(if $(SOC_USB), $(SOCSIM_USB_CFLAGS)))
 
 # The board build.
 SOCSIM_ULX3S_DIR := $(BUILD)/socsim-ulx3s-$(SOC_RAM_KIB)k

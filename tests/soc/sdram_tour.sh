@@ -50,13 +50,15 @@ frames=$((2 * ${#tour[@]}))
 run_to "$work/host.uart" 300 "$host" "${dram_host_frame[@]}" --frames "$work/host" "${keys[@]}"
 expect_status 0 "host build of the tour"
 expect_eq "$(png_count "$work/host")" "$frames" "the host build's frames (its FW_TOUR_FRAMES)"
-# The tour as the host build took it: each scene started, then its two frames, depth off and on.
+# The tour as a run took it (UART_LOG): each scene started, depth off and on, the frames.
+tour_lines() {
+    grep -E '^(scene [a-z]+:|depth buffer o|frame [0-9]+:)' "$1" | sed -E 's/^(scene [a-z]+):.*/\1/; s/^frame [0-9]+:.*/frame/'
+}
 want=""
 for s in "${tour[@]}"; do
     want+="scene $s;${want:+depth buffer off;}frame;depth buffer on;frame;"
 done
-got=$(grep -E '^(scene [a-z]+:|depth buffer o|frame [0-9]+:)' "$work/host.uart" |
-      sed -E 's/^(scene [a-z]+):.*/\1/; s/^frame [0-9]+:.*/frame/' | tr '\n' ';')
+got=$(tour_lines "$work/host.uart" | tr '\n' ';')
 [ "$got" = "$want" ] || fail "the host build's tour: got '$got', expected '$want' (scenes, depth off and on, frames)"
 
 run_to "$work/soc.out" 900 "$socsim" --boot "$boot" --stop-frames "$frames" --fw "$elf" --frames "$work/soc" \
@@ -72,9 +74,8 @@ same_pngs "$work/soc" "$work/host" "socsim's frames against the host build's"
 # strip it reaches), and the same tour.
 diff <(frame_lines "$work/soc.uart" | sed 's/ drawn .*//') <(frame_lines "$work/host.uart" | sed 's/ drawn .*//') >/dev/null ||
     fail "the firmware's triangle counts differ between socsim and the host build"
-tour_lines() { grep -E '^(scene [a-z]+:|depth buffer o)' "$1" | sed -E 's/:.*//'; }
 diff <(tour_lines "$work/soc.uart") <(tour_lines "$work/host.uart") >/dev/null ||
-    fail "the tour differs between socsim and the host build (scenes, depth off and on)"
+    fail "the tour differs between socsim and the host build (scenes, depth off and on, frames)"
 expect_eq "$(summary sdram_violations "$work/soc.summary")" 0 "SDRAM chip model violations"
 expect_eq "$(summary flash_violations "$work/soc.summary")" 0 "flash model violations"
 grep -q "^boot: image of [0-9]* bytes from flash .* starting at 0x40000000" "$work/soc.uart" ||
