@@ -564,6 +564,19 @@ struct render_faces_job {
     const int16_t *vnormal14;    /* Gouraud: the object's vertex normals; 0: flat */
 };
 
+/* Where render_grid_faces is in a grid mesh, and what its halves share. */
+struct render_grid_walk {
+    uint32_t i, j;       /* the quad's row and column */
+    uint32_t quad;       /* its number, i * cols + j: its normal's */
+    uint32_t mat;        /* its row's material (or the override) */
+    uint32_t level;      /* its light level, RENDER_LEVEL_UNKNOWN until a half is drawn */
+    bool general;        /* wireframe: every face through render_face_general */
+    bool shaded;         /* Gouraud */
+    uint32_t np_general; /* primitives the general path added */
+    uint32_t n_frustum;
+    uint32_t n_back;
+};
+
 /*
  * The face loop. `check` (a constant at every call, folded away) is false for an object whose
  * bounding sphere is inside the frustum: no face can be culled by outcodes or need clipping, so
@@ -573,7 +586,7 @@ struct render_faces_job {
  */
 static inline __attribute__((always_inline)) void render_faces(struct render_frame *f,
                                                                const struct render_faces_job *job,
-                                                               bool check, bool cached, bool grid)
+                                                               bool check, bool cached)
 {
     const struct mesh *mesh = job->mesh;
     const uint32_t nf = mesh->face_count;
@@ -593,24 +606,9 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     uint32_t np_general = 0;  /* primitives the general path added (not one per face) */
     uint32_t n_frustum = 0;
     uint32_t n_back = 0;
-    uint32_t gi = 0;  /* grid meshes: the face's row, column and half, walked in face order */
-    uint32_t gj = 0;
-    uint32_t gh = 0;
 
     for (uint32_t fi = 0; fi < nf; fi++) {
-        struct mesh_face gface;
-        const struct mesh_face *face = &gface;
-
-        if (!grid) {
-            face = &faces[fi];  /* (a grid mesh has no faces array) */
-        } else {
-            mesh_grid_face(&mesh->grid, gi, gj, gh, &gface);
-            gh ^= 1u;
-            if (gh == 0u && ++gj == mesh->grid.cols) {
-                gj = 0;
-                gi++;
-            }
-        }
+        const struct mesh_face *face = &faces[fi];
         const struct proj_vertex *a = &vert[face->v[0]];
         const struct proj_vertex *b = &vert[face->v[1]];
         const struct proj_vertex *c = &vert[face->v[2]];
@@ -656,8 +654,6 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
                 level = palette_light_level(job->light, normals[face->normal]);
                 levels[face->normal] = (uint8_t)level;
             }
-        } else if (grid) {
-            level = palette_light_level(job->light, mesh_normal(mesh, face->normal));
         } else {
             level = palette_light_level(job->light, normals[face->normal]);
         }
@@ -670,6 +666,112 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     f->stats.faces_frustum += n_frustum;
     f->stats.faces_back += n_back;
     f->stats.faces_emitted += (np - np_start) - np_general;  /* the fast path: one per face */
+}
+
+/*
+ * One half of a grid quad in render_grid_faces: the face (ia, i1, i2), half `half` of quad
+ * (w->i, w->j) (mesh_grid_face gives it whole when the general path needs it); np primitives so
+ * far, returned with this face's. w->level is the quad's light level once a half has worked it
+ * out: both halves share the quad's normal, so the second half drawn reuses it.
+ */
+static inline __attribute__((always_inline)) uint32_t
+render_grid_half(struct render_frame *f, const struct render_faces_job *job, bool check,
+                 struct render_grid_walk *w, uint32_t ia, uint32_t i1, uint32_t i2, uint32_t half,
+                 uint32_t np)
+{
+    const struct proj_vertex *vert = &f->vert[job->base];
+    const struct proj_vertex *a = &vert[ia];
+    const struct proj_vertex *b = &vert[i1];
+    const struct proj_vertex *c = &vert[i2];
+    struct render_prim *p;
+
+    if (check && (a->code & b->code & c->code & PROJ_CULL_BITS) != 0u) {
+        w->n_frustum++;
+        return np;
+    }
+    if ((check && ((a->code | b->code | c->code) & PROJ_CLIP_BITS) != 0u) || w->general) {
+        struct mesh_face face;
+        const uint32_t before = np;
+
+        mesh_grid_face(&job->mesh->grid, w->i, w->j, half, &face);
+        f->prim_count = np;
+        render_face_general(f, job->pass, job->mv, job->mesh, &face, job->base, job->light,
+                            job->material_override, job->vnormal14);
+        np = f->prim_count;
+        w->np_general += np - before;
+        return np;
+    }
+    if (check ? (proj_signed_area(a, b, c) <= 0) : (proj_signed_area_inside(a, b, c) <= 0)) {
+        w->n_back++;
+        return np;
+    }
+    if (np >= f->prim_cap) {
+        f->stats.dropped++;
+        return np;
+    }
+    p = &f->prim[np];
+    p->v[0] = (render_index)(job->base + ia);
+    p->v[1] = (render_index)(job->base + i1);
+    p->v[2] = (render_index)(job->base + i2);
+    if (w->shaded) {
+        p->color = PAL_INDEX(w->mat, 0u);
+        p->kind = (uint8_t)GPU_PRIM_KIND_TRI_GOURAUD;
+    } else {
+        if (w->level == RENDER_LEVEL_UNKNOWN) {
+            w->level = palette_light_level(job->light, mesh_normal(job->mesh, w->quad));
+        }
+        p->color = PAL_INDEX(w->mat, w->level);
+        p->kind = (uint8_t)GPU_PRIM_KIND_TRI;
+    }
+    /* A grid face is not MESH_FACE_QUAD (mesh_grid_face): its key is its three depths' sum. */
+    f->sort_item[np] = render_sort_item((uint32_t)a->depth + b->depth + c->depth, np);
+    return np + 1u;
+}
+
+/*
+ * The face loop of a grid mesh (mesh.h), quad by quad: faces 2q and 2q + 1 of quad q share its
+ * corners, its row's material and its normal, worked out once for both (the light level only when
+ * a half is drawn). The same primitives, in the same order and with the same counts, as
+ * render_faces over mesh_grid_face's faces. `check` as there: false for a mesh inside the frustum.
+ */
+static inline __attribute__((always_inline)) void render_grid_faces(struct render_frame *f,
+                                                                    const struct render_faces_job *job,
+                                                                    bool check)
+{
+    const struct mesh_grid *g = &job->mesh->grid;
+    const uint32_t rows = g->rows;
+    const uint32_t cols = g->cols;
+    const uint32_t np_start = f->prim_count;
+    uint32_t np = np_start;
+    struct render_grid_walk w;
+
+    w.general = FW_WITH_WIREFRAME && job->pass->wireframe;
+    w.shaded = FW_WITH_GOURAUD && job->vnormal14 != 0;
+    w.np_general = 0;
+    w.n_frustum = 0;
+    w.n_back = 0;
+    for (w.i = 0; w.i < rows; w.i++) {
+        const uint32_t row = w.i * cols;
+        const uint32_t row1 = (w.i + 1u == rows) ? 0u : row + cols;
+
+        w.mat = (job->material_override != 0u) ? job->material_override : g->material[w.i];
+        for (w.j = 0; w.j < cols; w.j++) {
+            const uint32_t j1 = (w.j + 1u == cols) ? 0u : w.j + 1u;
+            const uint32_t ia = row + w.j;   /* (i, j) */
+            const uint32_t ib = row1 + w.j;  /* (i + 1, j) */
+            const uint32_t ic = row1 + j1;   /* (i + 1, j + 1) */
+            const uint32_t id = row + j1;    /* (i, j + 1) */
+
+            w.quad = ia;
+            w.level = RENDER_LEVEL_UNKNOWN;
+            np = render_grid_half(f, job, check, &w, ia, g->flip ? id : ib, ic, 0u, np);
+            np = render_grid_half(f, job, check, &w, ia, ic, g->flip ? ib : id, 1u, np);
+        }
+    }
+    f->prim_count = np;
+    f->stats.faces_frustum += w.n_frustum;
+    f->stats.faces_back += w.n_back;
+    f->stats.faces_emitted += (np - np_start) - w.np_general;  /* the fast path: one per face */
 }
 
 void render_object(struct render_frame *f, const struct render_pass *pass,
@@ -732,21 +834,24 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
     job.vnormal14 = (FW_WITH_GOURAUD && pass->gouraud && !(FW_WITH_WIREFRAME && pass->wireframe))
                         ? obj->vnormal14 : 0;
     /* Four specialisations of the face loop, so that neither test costs a face anything; a grid
-     * mesh (implicit faces, mesh.h) takes a fifth, with every test on and no cache. */
+     * mesh (implicit faces, mesh.h; no cache) takes its own loop, with or without the tests. */
     if (mesh->grid.rows != 0u) {
-        job.levels = 0;
-        render_faces(f, &job, true, false, true);
+        if (where == RENDER_SPHERE_INSIDE) {
+            render_grid_faces(f, &job, false);
+        } else {
+            render_grid_faces(f, &job, true);
+        }
     } else if (where == RENDER_SPHERE_INSIDE) {
         if (job.levels != 0) {
-            render_faces(f, &job, false, true, false);
+            render_faces(f, &job, false, true);
         } else {
-            render_faces(f, &job, false, false, false);
+            render_faces(f, &job, false, false);
         }
     } else {
         if (job.levels != 0) {
-            render_faces(f, &job, true, true, false);
+            render_faces(f, &job, true, true);
         } else {
-            render_faces(f, &job, true, false, false);
+            render_faces(f, &job, true, false);
         }
     }
 #if FW_WITH_GOURAUD
