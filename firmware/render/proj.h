@@ -153,9 +153,15 @@ struct proj_vertex {
         };
         uint32_t zd;         /* the pair as one word (little-endian), for one store */
     };
-    uint8_t batch_stamp;   /* batch.c: the last batch this vertex was written to (0: none) */
-    uint8_t code;          /* enum proj_outcode bits */
-    uint16_t batch_slot;   /* batch.c: its index in that batch's vertex buffer (< GPU_VTX_CAP) */
+    union {
+        struct {
+            uint8_t batch_stamp;  /* batch.c: the last batch this vertex was written to (0: none) */
+            uint8_t code;         /* enum proj_outcode bits */
+            uint16_t batch_slot;  /* batch.c: its index in that batch's vertex buffer
+                                   * (< GPU_VTX_CAP; read only when batch_stamp is the batch's) */
+        };
+        uint32_t tail;            /* the three as one word, for one store (little-endian) */
+    };
 };
 /* 12 bytes a frame vertex (the frame's largest array with the primitives): the GPU's two words,
  * then an 8-bit batch stamp (batch.c clears the stamps when its counter wraps past 255, which
@@ -175,6 +181,17 @@ static inline void proj_vertex_store(struct proj_vertex *out, int32_t sx, int32_
     out->sy = (int16_t)sy;
     out->zbuf = (uint16_t)zbuf;
     out->depth = (uint16_t)depth;
+#endif
+}
+
+/* A new vertex's outcode, in no batch yet (stamp 0): one word store where little-endian. */
+static inline void proj_vertex_store_code(struct proj_vertex *out, uint32_t code)
+{
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    out->tail = code << 8;
+#else
+    out->batch_stamp = 0;
+    out->code = (uint8_t)code;
 #endif
 }
 
@@ -199,13 +216,9 @@ static inline __attribute__((always_inline)) void proj_point_impl(const struct p
     int32_t sy;
     uint8_t code = 0;
 
-    out->batch_stamp = 0;
     if (!inside && v.z < ps->near) {
-        out->sx = 0;
-        out->sy = 0;
-        out->zbuf = 0;
-        out->depth = 0;
-        out->code = PROJ_OUT_NEAR;
+        proj_vertex_store(out, 0, 0, 0, 0);
+        proj_vertex_store_code(out, PROJ_OUT_NEAR);
         return;
     }
 #if REAL_IS_FIXED
@@ -253,7 +266,7 @@ static inline __attribute__((always_inline)) void proj_point_impl(const struct p
     depth = (depth > PROJ_DEPTH_MAX) ? PROJ_DEPTH_MAX : depth;
     if (inside) {
         proj_vertex_store(out, ps->cx_q4 + off_x, ps->cy_q4 - off_y, zbuf, depth);
-        out->code = 0;
+        proj_vertex_store_code(out, 0u);
         return;
     }
     if (off_x > PROJ_GUARD_Q4 || off_x < -PROJ_GUARD_Q4 || off_y > PROJ_GUARD_Q4 ||
@@ -278,7 +291,7 @@ static inline __attribute__((always_inline)) void proj_point_impl(const struct p
         code |= PROJ_OUT_FAR;
     }
     proj_vertex_store(out, sx, sy, zbuf, depth);
-    out->code = code;
+    proj_vertex_store_code(out, code);
 }
 
 /* Project one view-space point (|x|, |y| < 4096, any z) into *out, with its outcode. Always

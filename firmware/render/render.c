@@ -4,6 +4,7 @@
 #include "render/render.h"
 
 #include "config/build_options.h"
+#include "config/hot_path.h"
 #include "gpu_regs.h"  /* the contract's primitive kinds (GPU_PRIM_KIND_*): no driver needed */
 #include "render/clip.h"
 #include "render/palette.h"
@@ -606,7 +607,12 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     uint32_t np_general = 0;  /* primitives the general path added (not one per face) */
     uint32_t n_frustum = 0;
     uint32_t n_back = 0;
+    /* Without a cache: the last light level worked out, and its normal's number (none yet). A
+     * quad's halves (mesh_add_quad) follow each other with one normal: the second reuses it. */
+    uint32_t last_normal = UINT32_MAX;
+    uint32_t last_level = 0;
 
+    FW_ONE_REGISTER(vert);  /* one add less per vertex of every face */
     for (uint32_t fi = 0; fi < nf; fi++) {
         const struct mesh_face *face = &faces[fi];
         const struct proj_vertex *a = &vert[face->v[0]];
@@ -655,7 +661,11 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
                 levels[face->normal] = (uint8_t)level;
             }
         } else {
-            level = palette_light_level(job->light, normals[face->normal]);
+            if (face->normal != last_normal) {
+                last_normal = face->normal;
+                last_level = palette_light_level(job->light, normals[last_normal]);
+            }
+            level = last_level;
         }
         p->color = PAL_INDEX(mat, level);
         p->kind = (uint8_t)GPU_PRIM_KIND_TRI;

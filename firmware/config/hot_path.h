@@ -1,0 +1,17 @@
+/*
+ * hot_path.h — compiler hints for the per-face and per-vertex loops, measured with `make bench-fw`
+ * and `make profile-fw` (docs/firmware.md). Each says what the code does anyway; none changes a
+ * result. GCC and Clang (every compiler of this firmware: rv32, MicroBlaze, the host) take them.
+ * Like build_options.h, it includes nothing and any layer may include it.
+ */
+#ifndef CONFIG_HOT_PATH_H
+#define CONFIG_HOT_PATH_H
+
+/* The condition is seldom true: its code goes out of the straight path. */
+#define FW_UNLIKELY(c) __builtin_expect(!!(c), 0)
+
+/* Keep pointer p in one register from here on: GCC would otherwise re-form addresses from its parts
+ * (the frame's vertex array and an object's first vertex) in every iteration of a loop. */
+#define FW_ONE_REGISTER(p) __asm__("" : "+r"(p))
+
+#endif /* CONFIG_HOT_PATH_H */
