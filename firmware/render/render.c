@@ -567,6 +567,7 @@ struct render_faces_job {
 
 /* Where render_grid_faces is in a grid mesh, and what its halves share. */
 struct render_grid_walk {
+    const struct render_faces_job *job;  /* the loop's job as given (the out-of-line path's) */
     uint32_t i, j;       /* the quad's row and column */
     uint32_t quad;       /* its number, i * cols + j: its normal's */
     uint32_t mat;        /* its row's material (or the override) */
@@ -678,6 +679,21 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     f->stats.faces_emitted += (np - np_start) - np_general;  /* the fast path: one per face */
 }
 
+/* render_grid_half's rare case, out of line (there are four copies of that): face `half` of quad
+ * (i, j) through render_face_general, after np primitives; returns the primitive count. */
+static uint32_t __attribute__((noinline))
+render_grid_face_general(struct render_frame *f, const struct render_faces_job *job, uint32_t i,
+                         uint32_t j, uint32_t half, uint32_t np)
+{
+    struct mesh_face face;
+
+    mesh_grid_face(&job->mesh->grid, i, j, half, &face);
+    f->prim_count = np;
+    render_face_general(f, job->pass, job->mv, job->mesh, &face, job->base, job->light,
+                        job->material_override, job->vnormal14);
+    return f->prim_count;
+}
+
 /*
  * One half of a grid quad in render_grid_faces: the face (ia, i1, i2), half `half` of quad
  * (w->i, w->j) (mesh_grid_face gives it whole when the general path needs it); np primitives so
@@ -700,16 +716,10 @@ render_grid_half(struct render_frame *f, const struct render_faces_job *job, boo
         return np;
     }
     if ((check && ((a->code | b->code | c->code) & PROJ_CLIP_BITS) != 0u) || w->general) {
-        struct mesh_face face;
-        const uint32_t before = np;
+        const uint32_t after = render_grid_face_general(f, w->job, w->i, w->j, half, np);
 
-        mesh_grid_face(&job->mesh->grid, w->i, w->j, half, &face);
-        f->prim_count = np;
-        render_face_general(f, job->pass, job->mv, job->mesh, &face, job->base, job->light,
-                            job->material_override, job->vnormal14);
-        np = f->prim_count;
-        w->np_general += np - before;
-        return np;
+        w->np_general += after - np;
+        return after;
     }
     if (check ? (proj_signed_area(a, b, c) <= 0) : (proj_signed_area_inside(a, b, c) <= 0)) {
         w->n_back++;
@@ -738,6 +748,17 @@ render_grid_half(struct render_frame *f, const struct render_faces_job *job, boo
     return np + 1u;
 }
 
+/* The half with every test, out of line: a mesh crossing the frustum's planes is the rare case,
+ * and one copy of this instead of two keeps a one-scene program of the knot within the SoC's
+ * 192 KiB. */
+static uint32_t __attribute__((noinline))
+render_grid_half_checked(struct render_frame *f, const struct render_faces_job *job,
+                         struct render_grid_walk *w, uint32_t ia, uint32_t i1, uint32_t i2,
+                         uint32_t half, uint32_t np)
+{
+    return render_grid_half(f, job, true, w, ia, i1, i2, half, np);
+}
+
 /*
  * The face loop of a grid mesh (mesh.h), quad by quad: faces 2q and 2q + 1 of quad q share its
  * corners, its row's material and its normal, worked out once for both (the light level only when
@@ -745,9 +766,12 @@ render_grid_half(struct render_frame *f, const struct render_faces_job *job, boo
  * render_faces over mesh_grid_face's faces. `check` as there: false for a mesh inside the frustum.
  */
 static inline __attribute__((always_inline)) void render_grid_faces(struct render_frame *f,
-                                                                    const struct render_faces_job *job,
+                                                                    const struct render_faces_job *job_in,
                                                                     bool check)
 {
+    /* A copy in locals: stores to the frame cannot change it, so the loop keeps it in registers. */
+    const struct render_faces_job job_copy = *job_in;
+    const struct render_faces_job *const job = &job_copy;
     const struct mesh_grid *g = &job->mesh->grid;
     const uint32_t rows = g->rows;
     const uint32_t cols = g->cols;
@@ -755,6 +779,7 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
     uint32_t np = np_start;
     struct render_grid_walk w;
 
+    w.job = job_in;
     w.general = FW_WITH_WIREFRAME && job->pass->wireframe;
     w.shaded = FW_WITH_GOURAUD && job->vnormal14 != 0;
     w.np_general = 0;
@@ -772,16 +797,55 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
             const uint32_t ic = row1 + j1;   /* (i + 1, j + 1) */
             const uint32_t id = row + j1;    /* (i, j + 1) */
 
+            const uint32_t second0 = g->flip ? id : ib;  /* half 0's second corner */
+            const uint32_t third1 = g->flip ? ib : id;   /* half 1's third */
+
             w.quad = ia;
             w.level = RENDER_LEVEL_UNKNOWN;
-            np = render_grid_half(f, job, check, &w, ia, g->flip ? id : ib, ic, 0u, np);
-            np = render_grid_half(f, job, check, &w, ia, ic, g->flip ? ib : id, 1u, np);
+            if (check) {
+                np = render_grid_half_checked(f, job, &w, ia, second0, ic, 0u, np);
+                np = render_grid_half_checked(f, job, &w, ia, ic, third1, 1u, np);
+            } else {
+                np = render_grid_half(f, job, false, &w, ia, second0, ic, 0u, np);
+                np = render_grid_half(f, job, false, &w, ia, ic, third1, 1u, np);
+            }
         }
     }
     f->prim_count = np;
     f->stats.faces_frustum += w.n_frustum;
     f->stats.faces_back += w.n_back;
     f->stats.faces_emitted += (np - np_start) - w.np_general;  /* the fast path: one per face */
+}
+
+void render_general_faces_loop(struct render_frame *f, const struct render_faces_job *job_in,
+                               bool inside)
+{
+    /* A copy in locals: stores to the frame cannot change it, so the loops keep it in registers.
+     * Four specialisations of the loop, so that neither test costs a face anything. */
+    const struct render_faces_job job = *job_in;
+
+    if (inside) {
+        if (job.levels != 0) {
+            render_faces(f, &job, false, true);
+        } else {
+            render_faces(f, &job, false, false);
+        }
+    } else {
+        if (job.levels != 0) {
+            render_faces(f, &job, true, true);
+        } else {
+            render_faces(f, &job, true, false);
+        }
+    }
+}
+
+void render_grid_faces_loop(struct render_frame *f, const struct render_faces_job *job, bool inside)
+{
+    if (inside) {
+        render_grid_faces(f, job, false);
+    } else {
+        render_grid_faces(f, job, true);
+    }
 }
 
 void render_object(struct render_frame *f, const struct render_pass *pass,
@@ -818,8 +882,8 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
         f->stats.faces_culled_object += nf;
         return;
     }
-    if (f->vert_count + nv > f->vert_cap) {
-        f->stats.dropped++;
+    if (f->vert_count + nv > f->vert_cap || obj->faces == 0) {
+        f->stats.dropped++;  /* (an object without a face loop: render_object.faces) */
         return;
     }
     job.base = f->vert_count;
@@ -843,27 +907,8 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
     job.material_override = render_material_override(pass, obj);
     job.vnormal14 = (FW_WITH_GOURAUD && pass->gouraud && !(FW_WITH_WIREFRAME && pass->wireframe))
                         ? obj->vnormal14 : 0;
-    /* Four specialisations of the face loop, so that neither test costs a face anything; a grid
-     * mesh (implicit faces, mesh.h; no cache) takes its own loop, with or without the tests. */
-    if (mesh->grid.rows != 0u) {
-        if (where == RENDER_SPHERE_INSIDE) {
-            render_grid_faces(f, &job, false);
-        } else {
-            render_grid_faces(f, &job, true);
-        }
-    } else if (where == RENDER_SPHERE_INSIDE) {
-        if (job.levels != 0) {
-            render_faces(f, &job, false, true);
-        } else {
-            render_faces(f, &job, false, false);
-        }
-    } else {
-        if (job.levels != 0) {
-            render_faces(f, &job, true, true);
-        } else {
-            render_faces(f, &job, true, false);
-        }
-    }
+    /* The face loop its mesh needs: render_general_faces_loop or render_grid_faces_loop. */
+    obj->faces(f, &job, where == RENDER_SPHERE_INSIDE);
 #if FW_WITH_GOURAUD
     /* Every face has its sort key: the object's vertices' depth half-words become their
      * intensities (VTX_I), which only its Gouraud triangles read. */

@@ -178,6 +178,12 @@ void render_level_cache_fill(const struct render_object *obj, const mat3 *scene_
                              uint32_t ambient);
 
 /* One instance of a mesh in the scene: p_scene = rot p_model + pos. */
+/* What an object's face loop is given (render.c's), and such a loop: inside says the object's
+ * bounding sphere is inside the frustum (no face to cull by outcodes or to clip). */
+struct render_faces_job;
+typedef void (*render_faces_fn)(struct render_frame *f, const struct render_faces_job *job,
+                                bool inside);
+
 struct render_object {
     const struct mesh *mesh;
     mat3 rot;
@@ -187,7 +193,19 @@ struct render_object {
     /* 0, or the mesh's per-vertex unit normals (3 Q1.14 values a vertex, mesh_q14_normal): the
      * object asks to be Gouraud shaded (where pass.gouraud; flat otherwise, and in wireframe). */
     const int16_t *vnormal14;
+    /* The loop its mesh's faces need: render_general_faces_loop, or a grid mesh's (mesh_set_grid)
+     * render_grid_faces_loop. The scene names it (scene_add_object, scene_add_grid_object), so
+     * that a program links only the loops its scenes use (3 KiB each: a one-scene build must fit
+     * the SoC's RAM). An object without one (0) is not drawn, and counts in stats.dropped. */
+    render_faces_fn faces;
 };
+
+/* The face loops, for render_object.faces: a mesh with a faces array (mesh.h), and a grid mesh
+ * (implicit faces). */
+void render_general_faces_loop(struct render_frame *f, const struct render_faces_job *job,
+                               bool inside);
+void render_grid_faces_loop(struct render_frame *f, const struct render_faces_job *job,
+                            bool inside);
 
 /* Compose a pass. light: unit vector towards the light in world space. */
 void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,

@@ -120,7 +120,7 @@ static void knot_init(struct scene *s)
     mesh_finish(m);
 
     k->spin = mat3_mul(&spin_y, &spin_x);
-    scene_add_object(s, m, &start, vec3_make(0, 0, 0), 0);
+    scene_add_grid_object(s, m, &start, vec3_make(0, 0, 0), 0);
     cfg.dist_min = REAL_C(3.0);
     cfg.dist_max = REAL_C(30.0);
     scene_set_camera(s, CAM_OBJECT, vec3_make(0, 0, 0), REAL_C(8.5), 0, 0, &cfg);

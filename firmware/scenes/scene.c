@@ -105,8 +105,9 @@ static real_t scene_world_coord(real_t v)
     return v;
 }
 
-void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
-                      uint8_t material)
+/* The next object, drawn with face loop `faces` (when the scene has room for it). */
+static void scene_new_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
+                             uint8_t material, render_faces_fn faces)
 {
     struct render_object *o;
 
@@ -122,6 +123,21 @@ void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, ve
     o->material = material;
     o->levels = 0;
     o->vnormal14 = 0;
+    o->faces = faces;
+}
+
+/* Two functions, each naming its own loop: a program links the loop only when a scene of its
+ * calls the function (render_object.faces). */
+void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
+                      uint8_t material)
+{
+    scene_new_object(s, m, rot, pos, material, render_general_faces_loop);
+}
+
+void scene_add_grid_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
+                           uint8_t material)
+{
+    scene_new_object(s, m, rot, pos, material, render_grid_faces_loop);
 }
 
 bool scene_start(struct scene *s, const struct scene_desc *desc)

@@ -197,6 +197,10 @@ void scene_set_camera(struct scene *s, enum cam_mode mode, vec3 target, real_t d
 struct cam_config scene_default_cam_config(void);
 void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
                       uint8_t material);
+/* The same for a grid mesh (mesh_set_grid): the object takes the grid's face loop
+ * (render_object.faces), which only a program with such a scene then links. */
+void scene_add_grid_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
+                           uint8_t material);
 /* The update of a scene that turns its one object: while the scene animates, the first object's
  * rotation becomes spin times it (renormalised); nothing without an object. */
 void scene_spin_first(struct scene *s, const mat3 *spin);

@@ -55,7 +55,7 @@ static void render_grid_into(struct render_frame *frame, int n, bool wireframe)
     struct render_pass pass;
     struct proj_setup ps;
     struct cam_view view;
-    struct render_object o;
+    struct render_object o = {0};
     const mat3 id = mat3_identity();
 
     build_grid(&m, v, f, nrm, n);
@@ -65,6 +65,7 @@ static void render_grid_into(struct render_frame *frame, int n, bool wireframe)
     render_pass_init(&pass, &ps, &view, &id, v3(0, 0, 0), u3(0, 0, -1), 4);
     pass.wireframe = wireframe;
     o.mesh = &m;
+    o.faces = render_general_faces_loop;
     o.rot = mat3_identity();
     o.pos = v3(0, 0, 0);
     o.material = 0;

@@ -61,9 +61,11 @@ static void tri_mesh_unit(struct tri_mesh *t, double z, uint8_t mat)
 
 static void draw(const struct render_pass *pass, const struct mesh *m, vec3 pos, uint8_t mat)
 {
-    struct render_object o;
+    struct render_object o = {0};
 
     o.mesh = m;
+
+    o.faces = render_general_faces_loop;
     o.rot = mat3_identity();
     o.pos = pos;
     o.material = mat;
@@ -136,7 +138,7 @@ void test_render_level_cache(void)
     struct render_level_cache cache;
     struct render_prim plain[8];
     struct render_pass pass;
-    struct render_object o;
+    struct render_object o = {0};
     uint32_t n;
 
     setup_pass(&pass);
@@ -152,6 +154,7 @@ void test_render_level_cache(void)
 
     render_level_cache_init(&cache, level, 32);
     o.mesh = &t.m;
+    o.faces = render_general_faces_loop;
     o.rot = mat3_identity();
     o.pos = v3(0, 0, 0);
     o.material = 0;

@@ -277,11 +277,12 @@ static void setup_pass(struct render_pass *pass, vec3 eye, fx_angle yaw, int32_t
 static void tri_render(struct tri_mesh *t, struct render_frame *f)
 {
     struct render_pass pass;
-    struct render_object o;
+    struct render_object o = {0};
 
     mesh_finish(&t->m);
     setup_pass(&pass, v3(0, 0, 0), 0, 0);
     o.mesh = &t->m;
+    o.faces = render_general_faces_loop;
     o.rot = mat3_identity();
     o.pos = v3(0, 0, 0);
     o.material = 0;
@@ -566,7 +567,7 @@ static bool case_world_1024(char *out)
 {
     static struct tri_mesh t;
     struct render_pass pass;
-    struct render_object o;
+    struct render_object o = {0};
     uint32_t prims = 0;
     uint32_t errors = 0;
 
@@ -603,6 +604,7 @@ static bool case_world_1024(char *out)
             pass.proj.far = to_real(4000.0);
         }
         o.mesh = &t.m;
+        o.faces = render_general_faces_loop;
         o.rot = mat3_identity();
         o.pos = v3(0, 0, 0);
         o.material = 0;
