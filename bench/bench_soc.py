@@ -20,6 +20,18 @@ Per scene, averaged over the frames after the first (frame 0 carries the boot: b
                   VGA frame, 840,000 clocks at 50 MHz, is the floor)
   fps 50 MHz      50e6 / frame cycles, measured
   SDRAM busy      (--boot) the share of those cycles with a request on the SDRAM's port
+
+and where the CPU's cycles go, per scene, from socsim's count of the clocks each of the core's
+buses spends in a cycle between swaps (the core waits through them):
+  I$ / D$ refill clocks   clocks of the instruction bus's cycles / of the data bus's line refills,
+                  and per refill
+  stores, store clocks    the stores (the data cache writes through: each is a bus cycle) and the
+                  clocks of their cycles, and per store
+  uncached load clocks    the clocks of loads outside the caches: the GPU's and the peripherals'
+                  registers, so also the polling of DONE_SEQ between batches
+  CPI without refills     (CPU cycles - both refills' clocks) / instructions: what the core's
+                  pipeline (load-use, branches, multiplies and divides, stores) costs by itself; an
+                  estimate, since a few refills fall outside the firmware's counted span
   fps 100 MHz     estimated: the CPU's and GPU's cycles take half the time, the UART's bytes
                   (115,200 baud) and the 60 Hz scan-out do not, and the swap waits for the next
                   vertical blank: 60 / ceil(60 * t), t = (ready - cpu - gpu) / 50e6 + (cpu + gpu) / 100e6
@@ -34,7 +46,9 @@ import time
 
 FW_LINE = re.compile(r"^frame (\d+): .*\| fw instr (\d+) \| gpu cycles (\d+) .*\| cpu cycles (\d+)")
 SIM_LINE = re.compile(r"^socsim: frame (\d+) -> .* \| swap at cycle (\d+), \+(\d+) \| ready \+(\d+) \| "
-                      r"instructions (\d+) \| refills I\$ (\d+) D\$ (\d+)(?: \| SDRAM busy (\d+))?")
+                      r"instructions (\d+) \| refills I\$ (\d+) D\$ (\d+) \| "
+                      r"bus clocks I\$ (\d+) D\$ (\d+) stores (\d+) \((\d+)\) loads (\d+)"
+                      r"(?: \| SDRAM busy (\d+))?")
 SPEED_LINE = re.compile(r"^socsim: (\d+) cycles .* in ([\d.]+) s: ([\d.]+) M cycles/s")
 CLK = 50e6
 
@@ -76,7 +90,7 @@ def main():
     ap.add_argument("runs", nargs="+", metavar="SCENE=ELF")
     a = ap.parse_args()
 
-    rows, total_cycles, total_wall = [], 0, 0.0
+    rows, stalls, total_cycles, total_wall = [], [], 0, 0.0
     for run in a.runs:
         scene, elf = run.split("=", 1)
         fw, sim, speed, wall = run_scene(a.socsim, a.boot, elf, os.path.join(a.out, scene))
@@ -94,11 +108,19 @@ def main():
         drefill = mean([sim[k][5] for k in keys])
         # SDRAM builds: the share of the cycles between captured frames with a request on the SDRAM
         # port (waiting or answered), against the same span's cycles (swap to swap).
-        busy = mean([sim[k][6] / sim[k][1] for k in keys]) if sim[keys[0]][6] is not None else None
+        busy = mean([sim[k][11] / sim[k][1] for k in keys]) if sim[keys[0]][11] is not None else None
+        iclk = mean([sim[k][6] for k in keys])
+        dclk = mean([sim[k][7] for k in keys])
+        sclk = mean([sim[k][8] for k in keys])
+        stores = mean([sim[k][9] for k in keys])
+        lclk = mean([sim[k][10] for k in keys])
         t100 = (ready - cpu - gpu) / CLK + (cpu + gpu) / (2 * CLK)
         fps100 = 60.0 / max(1, math.ceil(60.0 * t100 - 1e-9))
         rows.append((scene, len(keys), instr, cpu, cpu / instr, irefill, drefill, gpu, ready, frame,
                      CLK / frame, fps100, busy))
+        stalls.append((scene, instr, cpu, iclk, iclk / max(irefill, 1), dclk, dclk / max(drefill, 1),
+                       stores, sclk, sclk / max(stores, 1), lclk, cpu / instr,
+                       (cpu - iclk - dclk) / instr))
         if speed:
             total_cycles += speed[0]
             total_wall += speed[1]
@@ -112,6 +134,13 @@ def main():
         print(f"| {r[0]} | {r[1]} | {r[2]:,.0f} | {r[3]:,.0f} | {r[4]:.2f} | {r[5]:,.0f} | {r[6]:,.0f} | "
               f"{r[7]:,.0f} | {r[8]:,.0f} | {r[9]:,.0f} | {r[10]:.1f} | {r[11]:.1f} |"
               + (f" {100 * r[12]:.1f} % |" if sdram and r[12] is not None else ""))
+    print("\nWhere the CPU's cycles go (bus clocks between swaps, socsim's taps on the core's buses):\n")
+    print("| scene | instr/frame | CPU cycles/frame | I$ refill clocks | a refill | D$ refill clocks "
+          "| a refill | stores | store clocks | a store | uncached load clocks | CPI | CPI without refills |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for r in stalls:
+        print(f"| {r[0]} | {r[1]:,.0f} | {r[2]:,.0f} | {r[3]:,.0f} | {r[4]:.1f} | {r[5]:,.0f} | {r[6]:.1f} | "
+              f"{r[7]:,.0f} | {r[8]:,.0f} | {r[9]:.1f} | {r[10]:,.0f} | {r[11]:.2f} | {r[12]:.2f} |")
     if total_wall > 0:
         print(f"\nsocsim: {total_cycles:,} cycles simulated in {total_wall:.1f} s: "
               f"{total_cycles / total_wall / 1e6:.2f} M cycles/s")

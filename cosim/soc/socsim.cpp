@@ -141,6 +141,7 @@ extern "C" {
 #endif
 
 extern "C" long long socsim_read_instret();  // exported by socsim_cpu_tap
+extern "C" long long socsim_read_bus_clocks(unsigned which);  // likewise (SocRun::bus_clocks)
 
 namespace {
 
@@ -382,6 +383,9 @@ private:
     void vga_sample(int hsync_n, int vsync_n, int r, int g, int b);
     bool finish_frame(std::string *error, const char **kind);
     uint64_t instret() const;
+    // socsim_cpu_tap's bus counts: the clocks of 0 the instruction bus's cycles, 1 data-cache
+    // refills, 2 stores, 3 uncached loads; 4 the number of stores.
+    uint64_t bus_clocks(unsigned which) const;
     bool trace_open(std::string *error);
     void trace_close();
     void trace_dump(uint64_t time_ps)
@@ -470,6 +474,7 @@ private:
     uint64_t regs_checked_ = 0;   // register reads compared with the model
     std::string reg_error_;       // the first register that differed
     uint64_t icache_refills_ = 0, dcache_refills_ = 0, uart_reads_ = 0;
+    uint64_t bus_at_frame_[5] = {0, 0, 0, 0, 0};  // bus_clocks() at the last frame's report
     uint64_t vsyncs_ = 0;          // vertical sync pulses at the monitor: the scan-out runs
     bool vsync_n_ = true;
     UartReplies replies_;          // --reply: a copy, since it keeps what was received
@@ -596,6 +601,15 @@ uint64_t SocRun::instret() const
     }
     svSetScope(g_cpu_scope);
     return static_cast<uint64_t>(socsim_read_instret());
+}
+
+uint64_t SocRun::bus_clocks(unsigned which) const
+{
+    if (g_cpu_scope == nullptr) {
+        return 0;
+    }
+    svSetScope(g_cpu_scope);
+    return static_cast<uint64_t>(socsim_read_bus_clocks(which));
 }
 
 // The image goes in through soc_ram's own simulation hook, +ram_init=FILE ($readmemh at time 0),
@@ -829,7 +843,7 @@ bool SocRun::finish_frame(std::string *error, const char **kind)
     capture_pending_ = false;
     // swap: the cycle of the swap, since the previous one; ready: from the previous swap to the
     // doorbell of this frame's last batch (what the frame's work took before its swap waited).
-    char detail[256];
+    char detail[320];
     std::snprintf(detail, sizeof detail,
                   "swap at cycle %llu, +%llu | ready +%llu | instructions %llu | refills I$ %llu D$ %llu",
                   static_cast<unsigned long long>(swap_cycle_),
@@ -838,6 +852,20 @@ bool SocRun::finish_frame(std::string *error, const char **kind)
                   static_cast<unsigned long long>(instret()),
                   static_cast<unsigned long long>(icache_refills_ - icache_at_frame_),
                   static_cast<unsigned long long>(dcache_refills_ - dcache_at_frame_));
+    {
+        // Where the core's clocks went beyond one an instruction: its buses' cycles by kind.
+        uint64_t bus[5];
+        for (unsigned k = 0; k < 5u; k++) {
+            bus[k] = bus_clocks(k) - bus_at_frame_[k];
+            bus_at_frame_[k] += bus[k];
+        }
+        const size_t used = std::strlen(detail);
+        std::snprintf(detail + used, sizeof detail - used,
+                      " | bus clocks I$ %llu D$ %llu stores %llu (%llu) loads %llu",
+                      static_cast<unsigned long long>(bus[0]), static_cast<unsigned long long>(bus[1]),
+                      static_cast<unsigned long long>(bus[2]), static_cast<unsigned long long>(bus[4]),
+                      static_cast<unsigned long long>(bus[3]));
+    }
 #ifdef SOCSIM_SDRAM
     // The SDRAM's share of the frame's cycles: a request on its port, waiting or being answered.
     const size_t used = std::strlen(detail);

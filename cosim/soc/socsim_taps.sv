@@ -15,7 +15,8 @@
 //                                 of a cached address starts a cache-line refill: the misses), every
 //                                 acknowledged load of UART DATA (the firmware reading keys), every
 //                                 load of USB KEY that returns an event (VALID set: the firmware
-//                                 took a key of the USB keyboard), and the retired-instruction counter.
+//                                 took a key of the USB keyboard), the retired-instruction counter,
+//                                 and the clocks each bus spent in a cycle, by kind (below).
 `default_nettype none
 
 module socsim_gpu_tap (
@@ -106,7 +107,40 @@ module socsim_cpu_tap #(
 
     reg i_cyc_q = 1'b0;
     reg d_cyc_q = 1'b0;
+    // Clocks with a cycle open on the instruction bus (its refills), and on the data bus by kind: a
+    // line refill (a load of a cached address, below 0x8000_0000, as the harness counts refills), a
+    // store (write-through: every one is a bus cycle), or an uncached load (the GPU's and the
+    // peripherals' registers); and the stores' number. A cycle's kind is its first clock's. The core
+    // waits through most of them, so they are where its clocks go beyond one an instruction; the
+    // two buses may overlap.
+    reg        d_refill_q = 1'b0;
+    reg        d_store_q = 1'b0;
+    wire       d_start = d_cyc && !d_cyc_q;
+    wire       d_refill = d_start ? (!d_we && !d_adr[29]) : d_refill_q;
+    wire       d_store = d_start ? d_we : d_store_q;
+    reg [63:0] i_cycles = 64'd0;
+    reg [63:0] d_refill_cycles = 64'd0;
+    reg [63:0] d_store_cycles = 64'd0;
+    reg [63:0] d_load_cycles = 64'd0;
+    reg [63:0] d_stores = 64'd0;
     always @(posedge clk) begin
+        d_refill_q <= d_refill;
+        d_store_q <= d_store;
+        if (i_cyc) begin
+            i_cycles <= i_cycles + 64'd1;
+        end
+        if (d_cyc && d_refill) begin
+            d_refill_cycles <= d_refill_cycles + 64'd1;
+        end
+        if (d_cyc && d_store) begin
+            d_store_cycles <= d_store_cycles + 64'd1;
+        end
+        if (d_cyc && !d_refill && !d_store) begin
+            d_load_cycles <= d_load_cycles + 64'd1;
+        end
+        if (d_cyc && d_stb && d_ack && d_we) begin
+            d_stores <= d_stores + 64'd1;
+        end
         if (i_cyc && !i_cyc_q) begin
             socsim_bus_cycle(1, 0, 0);
         end
@@ -126,6 +160,18 @@ module socsim_cpu_tap #(
     export "DPI-C" function socsim_read_instret;
     function longint unsigned socsim_read_instret();
         return minstret;
+    endfunction
+    // The bus counts so far: which = 0 the instruction bus's clocks, 1 data refills', 2 stores',
+    // 3 uncached loads', 4 the stores acknowledged.
+    export "DPI-C" function socsim_read_bus_clocks;
+    function longint unsigned socsim_read_bus_clocks(input int unsigned which);
+        case (which)
+            0: return i_cycles;
+            1: return d_refill_cycles;
+            2: return d_store_cycles;
+            3: return d_load_cycles;
+            default: return d_stores;
+        endcase
     endfunction
 endmodule
 
