@@ -31,7 +31,7 @@
 SCENE(tetra,        320,     1,      32,    21,    140,     54)
 SCENE(cubes,        448,    64,     640,   512,   5376,   2432)
 SCENE(landscape,  72960,    16,    1536,  2304,  29120,  13824)
-SCENE(voxel,      65088,     8,    2048,  2048,  17024,   7808)
+SCENE(voxel,      65408,     8,    2048,  2048,  17024,   7808)
 SCENE(knot,       45312,     1,    2880,  2816,  36480,  16832)
 /* model's columns follow its build switches (FW_MODEL_MAX_*): scenes/model/model.h argues them. */
 SCENE(model, MODEL_STATE_COLUMN, 1, MODEL_FRAME_VERTS, MODEL_FRAME_PRIMS, MODEL_WIRE_VERTS, MODEL_WIRE_PRIMS)

@@ -22,6 +22,7 @@
 #include <stdint.h>
 
 #include "render/mesh.h"
+#include "render/render.h"
 #include "math/vec.h"
 
 #define VOXEL_NX 16
@@ -61,6 +62,10 @@ struct voxel_chunk {
     struct mesh mesh;
     uvec3 normals[6];
     vec3 origin;  /* world position of the chunk's corner */
+    /* The six normals' light levels, carried from frame to frame while the light stays (render.h):
+     * a face's level is then a look-up, not three multiplies. */
+    uint8_t level[6];
+    struct render_level_cache levels;
 };
 
 struct voxel_hit {
