@@ -23,6 +23,8 @@
 
 #include <stdint.h>
 
+#include "config/hot_path.h"
+
 typedef int32_t q16_16;
 typedef int32_t q2_30;
 typedef uint16_t fx_angle;
@@ -152,12 +154,13 @@ static inline uint32_t fx_mulhu(uint32_t a, uint32_t b)
 }
 
 /* Shift x (> 0) left until bit 31 is set; *shift receives the count (0..31). Five compare-and-
- * shift steps: rv32im has no count-leading-zeros instruction, and libgcc's __clzsi2 is a call. */
+ * shift steps: rv32im has no count-leading-zeros instruction, and libgcc's __clzsi2 is a call.
+ * The first step seldom shifts where it counts: a projected depth below one view unit. */
 static inline uint32_t fx_normalize32(uint32_t x, int32_t *shift)
 {
     int32_t s = 0;
 
-    if (x < 0x00010000u) {
+    if (FW_UNLIKELY(x < 0x00010000u)) {
         x <<= 16;
         s += 16;
     }
