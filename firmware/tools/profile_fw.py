@@ -16,7 +16,11 @@ so both are listed separately below the table.
 With --startup the table is the start-up's instead: everything before the first frame (the C
 runtime's start, the scene's building, the messages), counted once.
 
-Usage: profile_fw.py GPUSIM ELF [--top N] [--startup]
+With --lines N a second table follows: the N source lines whose instructions ran most (addr2line of
+each program counter; a line inlined into several functions sums all its copies), to find the hot
+statements inside a hot function.
+
+Usage: profile_fw.py GPUSIM ELF [--top N] [--startup] [--lines N]
 """
 import argparse
 import bisect
@@ -28,7 +32,9 @@ import tempfile
 import threading
 
 FRAME_MARK = "scene_update"
-NOT_PIPELINE = {"gpu_wait"}  # polling the GPU, not work
+# Waiting for the GPU, not work (the firmware's "fw instr" leaves the same span out): the polling
+# of DONE_SEQ (gpu_wait, inlined into gpu_wait_idle) and the UART draining done between polls.
+NOT_PIPELINE = {"gpu_wait", "gpu_wait_idle", "app_drain_uart"}
 
 
 def symbols(elf):
@@ -43,6 +49,28 @@ def symbols(elf):
     return syms
 
 
+def hot_lines(elf, measured, nf, work, n, waiting):
+    """The n source lines with the most instructions per frame (addr2line, innermost line), the
+    program counters for which waiting(pc) holds left out."""
+    per_pc = collections.Counter()
+    for frame in measured:
+        per_pc.update(frame)
+    per_pc = collections.Counter({pc: c for pc, c in per_pc.items() if not waiting(pc)})
+    pcs = sorted(per_pc)
+    a2l = os.environ.get("RV_ADDR2LINE", "riscv64-unknown-elf-addr2line")
+    out = subprocess.run([a2l, "-e", elf], input="".join(f"{pc:x}\n" for pc in pcs),
+                         capture_output=True, text=True, check=True).stdout.splitlines()
+    root = os.getcwd() + os.sep
+    by_line = collections.Counter()
+    for pc, where in zip(pcs, out):
+        where = where.split(" (discriminator")[0].replace(root, "")
+        by_line[where] += per_pc[pc]
+    print("| source line | instructions/frame | share |")
+    print("|---|---:|---:|")
+    for where, count in by_line.most_common(n):
+        print(f"| {where} | {count / nf:.0f} | {100.0 * count / max(work, 1):.1f}% |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("gpusim")
@@ -50,6 +78,8 @@ def main():
     ap.add_argument("--top", type=int, default=25)
     ap.add_argument("--startup", action="store_true",
                     help="profile the start-up (before the first frame) instead of the frames")
+    ap.add_argument("--lines", type=int, default=0,
+                    help="also list the N source lines that ran the most instructions")
     args = ap.parse_args()
 
     syms = symbols(args.elf)
@@ -110,11 +140,14 @@ def main():
     if not measured:
         sys.exit("profile-fw: fewer than two frames in the run; build with FRAMES >= 3")
 
+    def function_of(pc):
+        i = bisect.bisect_right(starts, pc) - 1
+        return syms[i][1] if i >= 0 else "?"
+
     by_fn = collections.Counter()
     for frame in measured:
         for pc, n in frame.items():
-            i = bisect.bisect_right(starts, pc) - 1
-            by_fn[syms[i][1] if i >= 0 else "?"] += n
+            by_fn[function_of(pc)] += n
     nf = len(measured)
     total = sum(by_fn.values())
     side = {k: by_fn.pop(k) for k in list(by_fn) if k in NOT_PIPELINE}
@@ -133,7 +166,10 @@ def main():
     print(f"| **total, polling excluded** | **{work / nf:.0f}** | 100% |")
     print()
     for name, n in side.items():
-        print(f"{name} (polling DONE_SEQ): {n / nf:.0f} instructions/frame, not counted above")
+        print(f"{name} (waiting for the GPU): {n / nf:.0f} instructions/frame, not counted above")
+    if args.lines > 0:
+        print()
+        hot_lines(args.elf, measured, nf, work, args.lines, lambda pc: function_of(pc) in NOT_PIPELINE)
     what = ("The start-up, before the first frame" if args.startup else
             f"Mean of {nf} frame(s) (frame 0 and the last skipped)")
     print(f"{what}; QEMU -icount, one line of the execution log per instruction.")
