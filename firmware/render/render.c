@@ -679,8 +679,8 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     f->stats.faces_emitted += (np - np_start) - np_general;  /* the fast path: one per face */
 }
 
-/* render_grid_half's rare case, out of line (there are four copies of that): face `half` of quad
- * (i, j) through render_face_general, after np primitives; returns the primitive count. */
+/* render_grid_half's rare case, out of line (render_grid_half is inlined three times): face `half`
+ * of quad (i, j) through render_face_general, after np primitives; returns the primitive count. */
 static uint32_t __attribute__((noinline))
 render_grid_face_general(struct render_frame *f, const struct render_faces_job *job, uint32_t i,
                          uint32_t j, uint32_t half, uint32_t np)
@@ -796,7 +796,6 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
             const uint32_t ib = row1 + w.j;  /* (i + 1, j) */
             const uint32_t ic = row1 + j1;   /* (i + 1, j + 1) */
             const uint32_t id = row + j1;    /* (i, j + 1) */
-
             const uint32_t second0 = g->flip ? id : ib;  /* half 0's second corner */
             const uint32_t third1 = g->flip ? ib : id;   /* half 1's third */
 
