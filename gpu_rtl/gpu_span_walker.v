@@ -93,6 +93,11 @@ module gpu_span_walker #(
     reg [1:0] state_q;
 
     reg [gpu_pkg::COLOR_W-1:0] color_q;
+    // Edge values biased by the top-left rule: E at a non-top-left edge, E - 1 at the others (set
+    // with the triangle, below), so that a pixel passes an edge exactly where its biased value is
+    // >= 0 — one sign bit, where E > 0 || (top-left && E == 0) took a 36-bit zero test beside the
+    // sign on the seek's path. The bias is an integer, the steps too: every lane's and row's value
+    // keeps it exactly, and the range argument's two bits of margin hold the one unit.
     reg signed [EDGE_W-1:0] e_q [0:2];       // edges at lane 0 of the current span
     reg signed [EDGE_W-1:0] efirst_q [0:2];  // edges at lane 0 of the row's starting span
     reg signed [STEP_W-1:0] sx_q [0:2];      // steps at their exact width (gpu_pkg::STEP_W)
@@ -101,14 +106,17 @@ module gpu_span_walker #(
     // (lane_e builds it as a chain of adds), since it decides the seek (left_rejected) and so sits on
     // the clock's longest path. Same value, mod 2^EDGE_W, as lane_e's.
     reg signed [EDGE_W-1:0] sx_last_q [0:2];
-    reg [2:0] tl_q;
     reg [COL_W-1:0] col_q, col_first_q, col_lo_q, col_hi_q;
     reg [ROW_W-1:0] row_q, row_hi_q;
     reg [WAW-1:0] row_addr_q;                // word address of (col 0, row_q)
 
     // ---- lane evaluation: edge k at lane l is e + l * step (l = -1 .. SPAN_W) ----
-    function automatic covered(input signed [EDGE_W-1:0] e, input tl);
-        covered = (e > 0) || (tl && (e == 0));
+    function automatic covered(input signed [EDGE_W-1:0] e_biased);
+        covered = !e_biased[EDGE_W-1];
+    endfunction
+    // An edge value as e_q holds it: the top-left rule's bias (above) applied.
+    function automatic signed [EDGE_W-1:0] biased(input signed [EDGE_W-1:0] e, input top_left);
+        biased = top_left ? e : e - EDGE_W'(1);
     endfunction
     // v * n for an elaboration-time constant n >= 0, as shifts and adds: a generic multiplier here
     // would cost an FPGA a DSP (or, on an iCE40, hundreds of LUTs) per lane for nothing. Computed at the
@@ -146,14 +154,14 @@ module gpu_span_walker #(
                     + edge_times(EDGE_W'(sx_q[k]), l - (l & (l - 1)));
             end
             for (l = 0; l < SPAN_W; l = l + 1) begin
-                if (!covered(lane_e[(k * (SPAN_W + 1) + l) * EDGE_W +: EDGE_W], tl_q[k])) begin
+                if (!covered(lane_e[(k * (SPAN_W + 1) + l) * EDGE_W +: EDGE_W])) begin
                     lane_cov[l] = 1'b0;
                 end
             end
-            pass_left[k]  = covered(e_q[k] - EDGE_W'(sx_q[k]), tl_q[k]);
-            pass_first[k] = covered(e_q[k], tl_q[k]);
-            pass_last[k]  = covered(e_q[k] + sx_last_q[k], tl_q[k]);
-            pass_next[k]  = covered(lane_e[(k * (SPAN_W + 1) + SPAN_W) * EDGE_W +: EDGE_W], tl_q[k]);
+            pass_left[k]  = covered(e_q[k] - EDGE_W'(sx_q[k]));
+            pass_first[k] = covered(e_q[k]);
+            pass_last[k]  = covered(e_q[k] + sx_last_q[k]);
+            pass_next[k]  = covered(lane_e[(k * (SPAN_W + 1) + SPAN_W) * EDGE_W +: EDGE_W]);
         end
     end
 
@@ -305,12 +313,12 @@ module gpu_span_walker #(
                         lerr_q <= in_desc.line_err;
                         state_q <= S_LINE;
                     end else begin
-                        e_q[0] <= in_desc.e0;
-                        e_q[1] <= in_desc.e1;
-                        e_q[2] <= in_desc.e2;
-                        efirst_q[0] <= in_desc.e0;
-                        efirst_q[1] <= in_desc.e1;
-                        efirst_q[2] <= in_desc.e2;
+                        e_q[0] <= biased(in_desc.e0, in_desc.top_left[0]);
+                        e_q[1] <= biased(in_desc.e1, in_desc.top_left[1]);
+                        e_q[2] <= biased(in_desc.e2, in_desc.top_left[2]);
+                        efirst_q[0] <= biased(in_desc.e0, in_desc.top_left[0]);
+                        efirst_q[1] <= biased(in_desc.e1, in_desc.top_left[1]);
+                        efirst_q[2] <= biased(in_desc.e2, in_desc.top_left[2]);
                         sx_q[0] <= in_desc.sx0;
                         sx_q[1] <= in_desc.sx1;
                         sx_q[2] <= in_desc.sx2;
@@ -320,7 +328,6 @@ module gpu_span_walker #(
                         sx_last_q[0] <= edge_times(EDGE_W'(in_desc.sx0), SPAN_W - 1);
                         sx_last_q[1] <= edge_times(EDGE_W'(in_desc.sx1), SPAN_W - 1);
                         sx_last_q[2] <= edge_times(EDGE_W'(in_desc.sx2), SPAN_W - 1);
-                        tl_q <= in_desc.top_left;
                         col_q <= COL_W'(in_desc.col_lo);
                         col_first_q <= COL_W'(in_desc.col_lo);
                         col_lo_q <= COL_W'(in_desc.col_lo);
