@@ -96,15 +96,23 @@ module soc_wb_decoder #(
     end endgenerate
 
     wire [31:0] byte_adr = {adr, 2'b00};
-    wire [31:0] ram_off  = byte_adr - RAM_BASE;
-    wire hit_ram  = (byte_adr >> RAM_WB) == (RAM_BASE >> RAM_WB) && ram_off < RAM_LIMIT;
-    wire [31:0] sdram_off = byte_adr - SDRAM_BASE;
+    // Inside its window a region's offset is the address's bits below the window (the base is
+    // aligned to the window's size): no 32-bit subtract before the compare, and none at all where
+    // the memory fills its window (these compares sit on the CPU's refill path to the SDRAM port).
+    wire ram_in_size;     // below RAM_BYTES
+    generate if (RAM_BYTES == soc_pkg::SOC_RAM_WINDOW_BYTES) begin : g_ram_whole
+        assign ram_in_size = 1'b1;
+    end else begin : g_ram_part
+        assign ram_in_size = byte_adr[RAM_WB-1:0] < RAM_LIMIT[RAM_WB-1:0];
+    end endgenerate
+    wire hit_ram  = (byte_adr >> RAM_WB) == (RAM_BASE >> RAM_WB) && ram_in_size;
     wire sdram_in_size;   // below SDRAM_BYTES (a build without SDRAM has no such address)
     generate if (SDRAM_BYTES == 0) begin : g_no_sdram
         assign sdram_in_size = 1'b0;
-        wire unused_sdram_off = &{1'b0, sdram_off};
+    end else if (SDRAM_BYTES == soc_pkg::SOC_SDRAM_WINDOW_BYTES) begin : g_sdram_whole
+        assign sdram_in_size = 1'b1;
     end else begin : g_sdram
-        assign sdram_in_size = sdram_off < SDRAM_LIMIT;
+        assign sdram_in_size = byte_adr[SDRAM_WB-1:0] < SDRAM_LIMIT[SDRAM_WB-1:0];
     end endgenerate
     wire hit_sdram = (byte_adr >> SDRAM_WB) == (SDRAM_BASE >> SDRAM_WB) && sdram_in_size;
     wire hit_sdram_ctrl = SDRAM_BYTES != 0 && (byte_adr >> SDRAM_CTRL_WB) == (SDRAM_CTRL_BASE >> SDRAM_CTRL_WB);
