@@ -20,7 +20,7 @@ With --lines N a second table follows: the N source lines whose instructions ran
 each program counter; a line inlined into several functions sums all its copies), to find the hot
 statements inside a hot function.
 
-Usage: profile_fw.py GPUSIM ELF [--top N] [--startup] [--lines N]
+Usage: profile_fw.py GPUSIM ELF [--top N] [--startup] [--lines N] [--uart-log FILE]
 """
 import argparse
 import bisect
@@ -80,6 +80,7 @@ def main():
                     help="profile the start-up (before the first frame) instead of the frames")
     ap.add_argument("--lines", type=int, default=0,
                     help="also list the N source lines that ran the most instructions")
+    ap.add_argument("--uart-log", help="keep the firmware's UART output (its frame lines) in this file")
     args = ap.parse_args()
 
     syms = symbols(args.elf)
@@ -99,7 +100,7 @@ def main():
 
     sim = subprocess.Popen([args.gpusim, "cosim", "--fw", args.elf, "--frames",
                             os.path.join(tmp, "frames"), "--no-model-check", "--qemu", wrapper,
-                            "--uart-log", os.path.join(tmp, "uart.log")],
+                            "--uart-log", args.uart_log or os.path.join(tmp, "uart.log")],
                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     err = []
     threading.Thread(target=lambda: err.append(sim.stderr.read()), daemon=True).start()
