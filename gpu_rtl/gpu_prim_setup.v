@@ -309,28 +309,64 @@ module gpu_prim_setup #(
         row_centre_y = 18'({py, 4'd8});
     endfunction
 
-    // The box's first pixel centres from stage A's corners (unclamped).
+    // Stage A's box of pixel centres, unclamped and clamped to the screen's columns and the strip's
+    // rows: px0 = max(0, raw), px1 = min(X_LAST, raw), py0 = max(y_first, raw), py1 = min(y_last,
+    // raw). Empty when px0 > px1 or py0 > py1, i.e. when the raw box is empty or lies wholly off one
+    // side of the screen or the strip. (row_first, row_last and rows_empty hold still for the
+    // batch, so clamping here is clamping where the descriptor is made.)
     wire signed [12:0] a_rpx0 = centre_pixel(min3(ax0_q, ax1_q, ax2_q), FIRST_CENTRE);
     wire signed [12:0] a_rpy0 = centre_pixel(min3(ay0_q, ay1_q, ay2_q), FIRST_CENTRE);
-    wire [X_W-1:0] a_px0 = X_W'(clamp(a_rpx0, 13'sd0, X_LAST));  // clamped as stage C clamps b_rpx0_q
+    wire signed [12:0] a_rpx1 = centre_pixel(max3(ax0_q, ax1_q, ax2_q), LAST_CENTRE);
+    wire signed [12:0] a_rpy1 = centre_pixel(max3(ay0_q, ay1_q, ay2_q), LAST_CENTRE);
+    wire [X_W-1:0] a_px0 = X_W'(clamp(a_rpx0, 13'sd0, X_LAST));
+    wire [X_W-1:0] a_px1 = X_W'(clamp(a_rpx1, 13'sd0, X_LAST));
     wire [ROW_W-1:0] a_py0 = ROW_W'(clamp(a_rpy0, y_first, y_last));
+    wire [ROW_W-1:0] a_py1 = ROW_W'(clamp(a_rpy1, y_first, y_last));
+    wire a_box_empty = a_rpx0 > a_rpx1 || a_rpy0 > a_rpy1 || a_rpx1 < 13'sd0
+                    || a_rpy1 < y_first || a_rpx0 > X_LAST || a_rpy0 > y_last || rows_empty;
+    // Centre, Q12.4, of lane 0 of the first span and of the first row.
+    wire signed [17:0] a_pcx = span_centre_x(a_px0);
+    wire signed [17:0] a_pcy = row_centre_y(a_py0);
     wire signed [16:0] d01x = 17'(ax1_q) - 17'(ax0_q);
     wire signed [16:0] d01y = 17'(ay1_q) - 17'(ay0_q);
     wire signed [16:0] d02x = 17'(ax2_q) - 17'(ax0_q);
     wire signed [16:0] d02y = 17'(ay2_q) - 17'(ay0_q);
     wire signed [34:0] area_w = d01x * d02y - d01y * d02x;  // operands widen to 35 bits first
+    wire a_area_nonzero = 35'(d01x) * 35'(d02y) != 35'(d01y) * 35'(d02x);  // beside the subtract
 
+    // Lines: endpoint pixels by arithmetic shift, their differences (Bresenham's set-up per the
+    // contract follows in stage C).
+    localparam integer PIX_W = gpu_pkg::PIX_W;  // a line endpoint pixel, signed
+    localparam integer PIXD_W = PIX_W + 1;      // a difference of two
+    wire signed [PIX_W-1:0] a_lx0 = PIX_W'(ax0_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
+    wire signed [PIX_W-1:0] a_ly0 = PIX_W'(ay0_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
+    wire signed [PIX_W-1:0] a_lx1 = PIX_W'(ax1_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
+    wire signed [PIX_W-1:0] a_ly1 = PIX_W'(ay1_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
+    wire signed [PIXD_W-1:0] a_ldx = PIXD_W'(a_lx1) - PIXD_W'(a_lx0);
+    wire signed [PIXD_W-1:0] a_ldy = PIXD_W'(a_ly1) - PIXD_W'(a_ly0);
+    wire a_line_empty = a_lx0 == a_lx1 && a_ly0 == a_ly1;   // no major step
+
+    // Stage B keeps what stage C's arithmetic starts from in registers: the clamped box, each
+    // corner's offset to lane 0 of the first span, each edge's differences, whether the primitive
+    // is drawn at all. (The clamp, the span's centre and the offsets in front of stage C's
+    // products held the board's system clock to 50 MHz; `drawable` fed ~500 clock enables.)
     reg b_valid_q;
     reg b_is_line_q;
     reg [gpu_pkg::COLOR_W-1:0] b_color_q;
     reg signed [15:0] bx0_q, by0_q, bx1_q, by1_q, bx2_q, by2_q;
     reg signed [34:0] b_area_q;
-    reg signed [12:0] b_rpx0_q, b_rpx1_q, b_rpy0_q, b_rpy1_q;  // box of pixel centres, unclamped
+    reg b_drawable_q;                  // a line with a major step, a triangle of non-zero area
+                                       // whose clamped box is not empty
+    reg [X_W-1:0] b_px0_q, b_px1_q;    // the clamped box
+    reg [ROW_W-1:0] b_py0_q, b_py1_q;
+    // Each corner minus lane 0 of the first span, Q12.4: the edge values' offsets and (corner 0)
+    // the planes' start offsets (g_z, g_i). -32759 .. 37896.
+    reg signed [17:0] b_ox0_q, b_oy0_q, b_ox1_q, b_oy1_q, b_ox2_q, b_oy2_q;
+    // Each edge's differences in the triangle's given winding: v1 - v0, v2 - v1, v0 - v2.
+    reg signed [17:0] b_dx01_q, b_dy01_q, b_dx12_q, b_dy12_q, b_dx20_q, b_dy20_q;
+    reg signed [PIX_W-1:0] b_lx0_q, b_ly0_q;
+    reg signed [PIXD_W-1:0] b_ldx_q, b_ldy_q;
     reg [15:0] bz0_q;                  // v0's depth: the depth plane's start (g_z)
-    // Lane 0 of the first span minus v0, Q12.4: the planes' start offsets (g_z, g_i), registered
-    // here so that stage C's products start from registers (the box, the clamp and the span
-    // in front of them held the Gouraud board build to 46.2 MHz against 50).
-    reg signed [17:0] b_off_x_q, b_off_y_q;
     reg b_shaded_q;
     reg [15:0] bi0_q;                  // v0's intensity: the intensity plane's start (g_i)
     wire c_free;
@@ -355,26 +391,33 @@ module gpu_prim_setup #(
                 bx2_q <= ax2_q;
                 by2_q <= ay2_q;
                 b_area_q <= area_w;
+                b_drawable_q <= a_is_line_q ? !a_line_empty : (a_area_nonzero && !a_box_empty);
                 bz0_q <= az0_q;
                 b_shaded_q <= a_shaded_q;
                 bi0_q <= ai0_q;
-                b_rpx0_q <= a_rpx0;
-                b_rpx1_q <= centre_pixel(max3(ax0_q, ax1_q, ax2_q), LAST_CENTRE);
-                b_rpy0_q <= a_rpy0;
-                b_rpy1_q <= centre_pixel(max3(ay0_q, ay1_q, ay2_q), LAST_CENTRE);
-                b_off_x_q <= span_centre_x(a_px0) - 18'(ax0_q);  // -32759 .. 37896
-                b_off_y_q <= row_centre_y(a_py0) - 18'(ay0_q);
+                b_px0_q <= a_px0;
+                b_px1_q <= a_px1;
+                b_py0_q <= a_py0;
+                b_py1_q <= a_py1;
+                b_ox0_q <= a_pcx - 18'(ax0_q);
+                b_oy0_q <= a_pcy - 18'(ay0_q);
+                b_ox1_q <= a_pcx - 18'(ax1_q);
+                b_oy1_q <= a_pcy - 18'(ay1_q);
+                b_ox2_q <= a_pcx - 18'(ax2_q);
+                b_oy2_q <= a_pcy - 18'(ay2_q);
+                b_dx01_q <= 18'(ax1_q) - 18'(ax0_q);
+                b_dy01_q <= 18'(ay1_q) - 18'(ay0_q);
+                b_dx12_q <= 18'(ax2_q) - 18'(ax1_q);
+                b_dy12_q <= 18'(ay2_q) - 18'(ay1_q);
+                b_dx20_q <= 18'(ax0_q) - 18'(ax2_q);
+                b_dy20_q <= 18'(ay0_q) - 18'(ay2_q);
+                b_lx0_q <= a_lx0;
+                b_ly0_q <= a_ly0;
+                b_ldx_q <= a_ldx;
+                b_ldy_q <= a_ldy;
             end
         end
     end
-
-    // Clamped to the screen's columns and the strip's rows: px0 = max(0, raw), px1 = min(X_LAST,
-    // raw), py0 = max(y_first, raw), py1 = min(y_last, raw). Empty when px0 > px1 or py0 > py1,
-    // i.e. when the raw box is empty or lies wholly off one side of the screen or the strip.
-    wire signed [12:0] b_px0 = clamp(b_rpx0_q, 13'sd0, X_LAST), b_px1 = clamp(b_rpx1_q, 13'sd0, X_LAST);
-    wire signed [12:0] b_py0 = clamp(b_rpy0_q, y_first, y_last), b_py1 = clamp(b_rpy1_q, y_first, y_last);
-    wire box_empty = b_rpx0_q > b_rpx1_q || b_rpy0_q > b_rpy1_q || b_rpx1_q < 13'sd0
-                  || b_rpy1_q < y_first || b_rpx0_q > X_LAST || b_rpy0_q > y_last || rows_empty;
 
     // ------------------------------------------------------------------ stage C: the descriptor
     // Winding: with area < 0, v1 and v2 trade places so that the interior is where every E > 0.
@@ -383,24 +426,30 @@ module gpu_prim_setup #(
     wire signed [15:0] tx1 = flip ? bx2_q : bx1_q, ty1 = flip ? by2_q : by1_q;
     wire signed [15:0] tx2 = flip ? bx1_q : bx2_q, ty2 = flip ? by1_q : by2_q;
 
-    wire [COL_W-1:0] col_lo = COL_W'(b_px0[X_W-1:0] / X_W'(SPAN_W));
-    wire [COL_W-1:0] col_hi = COL_W'(b_px1[X_W-1:0] / X_W'(SPAN_W));
-    // Centre of lane 0 of the first span, Q12.4: 16 * (col_lo * SPAN_W) + 8.
-    wire signed [17:0] pcx = span_centre_x(b_px0[X_W-1:0]);
-    wire signed [17:0] pcy = row_centre_y(b_py0[ROW_W-1:0]);
+    wire [COL_W-1:0] col_lo = COL_W'(b_px0_q / X_W'(SPAN_W));
+    wire [COL_W-1:0] col_hi = COL_W'(b_px1_q / X_W'(SPAN_W));
 
-    function automatic signed [EDGE_W-1:0] edge_at(input signed [15:0] ax, input signed [15:0] ay,
-                                                   input signed [15:0] bx, input signed [15:0] by,
-                                                   input signed [17:0] px, input signed [17:0] py);
-        reg signed [17:0] dx, dy, ox, oy;
+    // Edge values at lane 0 of the first span: E_ab = (xb - xa)(py - ya) - (yb - ya)(px - xa), the
+    // operands from stage B's registers. Flipped, the edges are v0v2, v2v1, v1v0, and E_ba = -E_ab
+    // exactly (the cross product of b - a with a - b is 0): e0 = -E20, e1 = -E12, e2 = -E01, which
+    // swaps the two products of the given winding's edge. Exact in EDGE_W bits either way.
+    function automatic signed [EDGE_W-1:0] edge_value(input flip_edge,
+                                                      input signed [17:0] dx, input signed [17:0] dy,
+                                                      input signed [17:0] ox, input signed [17:0] oy);
+        reg signed [17:0] p1, p2, q1, q2;
         begin
-            dx = 18'(bx) - 18'(ax);
-            dy = 18'(by) - 18'(ay);
-            ox = px - 18'(ax);
-            oy = py - 18'(ay);
-            edge_at = dx * oy - dy * ox;  // operands widen to EDGE_W bits first
+            p1 = flip_edge ? dy : dx;
+            p2 = flip_edge ? ox : oy;
+            q1 = flip_edge ? dx : dy;
+            q2 = flip_edge ? oy : ox;
+            edge_value = p1 * p2 - q1 * q2;  // operands widen to EDGE_W bits first
         end
     endfunction
+    wire signed [17:0] e0_dx = flip ? b_dx20_q : b_dx01_q, e0_dy = flip ? b_dy20_q : b_dy01_q;
+    wire signed [17:0] e0_ox = flip ? b_ox2_q : b_ox0_q, e0_oy = flip ? b_oy2_q : b_oy0_q;
+    wire signed [17:0] e2_dx = flip ? b_dx01_q : b_dx20_q, e2_dy = flip ? b_dy01_q : b_dy20_q;
+    wire signed [17:0] e2_ox = flip ? b_ox0_q : b_ox2_q, e2_oy = flip ? b_oy0_q : b_oy2_q;
+
     function automatic top_left(input signed [15:0] ax, input signed [15:0] ay,
                                 input signed [15:0] bx, input signed [15:0] by);
         top_left = (by < ay) || ((by == ay) && (bx > ax));
@@ -412,23 +461,14 @@ module gpu_prim_setup #(
         step_down = (STEP_W'(bx) - STEP_W'(ax)) <<< gpu_pkg::GPU_SUBPIXEL_BITS;
     endfunction
 
-    // Lines: endpoint pixels by arithmetic shift, Bresenham set-up per the contract.
-    localparam integer PIX_W = gpu_pkg::PIX_W;  // a line endpoint pixel, signed
-    localparam integer PIXD_W = PIX_W + 1;      // a difference of two
-    wire signed [PIX_W-1:0] lx0 = PIX_W'(bx0_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
-    wire signed [PIX_W-1:0] ly0 = PIX_W'(by0_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
-    wire signed [PIX_W-1:0] lx1 = PIX_W'(bx1_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
-    wire signed [PIX_W-1:0] ly1 = PIX_W'(by1_q >>> gpu_pkg::GPU_SUBPIXEL_BITS);
-    wire signed [PIXD_W-1:0] ldx = PIXD_W'(lx1) - PIXD_W'(lx0);
-    wire signed [PIXD_W-1:0] ldy = PIXD_W'(ly1) - PIXD_W'(ly0);
-    wire [PIX_W-1:0] lax = PIX_W'(ldx < 0 ? -ldx : ldx);
-    wire [PIX_W-1:0] lay = PIX_W'(ldy < 0 ? -ldy : ldy);
+    // Lines: Bresenham's set-up per the contract.
+    wire [PIX_W-1:0] lax = PIX_W'(b_ldx_q < 0 ? -b_ldx_q : b_ldx_q);
+    wire [PIX_W-1:0] lay = PIX_W'(b_ldy_q < 0 ? -b_ldy_q : b_ldy_q);
     wire lxmajor = lax >= lay;
     wire [PIX_W-1:0] lmaj = lxmajor ? lax : lay;
     wire [PIX_W-1:0] lmin = lxmajor ? lay : lax;
-    wire line_empty = (lmaj == {PIX_W{1'b0}});
 
-    wire b_drawable = b_is_line_q ? !line_empty : (b_area_q != 0 && !box_empty);
+    wire b_drawable = b_drawable_q;
     wire c_load_valid = b_valid_q && b_drawable && b_z_ready;
     wire b_leaves = b_valid_q && c_free && b_z_ready;   // stage B hands on (or drops) its primitive
     assign c_free = !out_valid || out_ready;
@@ -446,7 +486,7 @@ module gpu_prim_setup #(
                 .a_load(a_load), .a_v0(az0_q), .a_v1(az1_q), .a_v2(az2_q),
                 .a_d01x(d01x), .a_d01y(d01y), .a_d02x(d02x), .a_d02y(d02y),
                 .b_need(b_valid_q && !b_is_line_q && ctrl_ztest && b_drawable), .b_next(b_next),
-                .b_area(b_area_q), .b_v0(bz0_q), .b_off_x(b_off_x_q), .b_off_y(b_off_y_q),
+                .b_area(b_area_q), .b_v0(bz0_q), .b_off_x(b_ox0_q), .b_off_y(b_oy0_q),
                 .ready(z_ready), .start(z_start_w), .dx(z_dx_w), .dy(z_dy_w));
         end else begin : g_no_z
             assign z_ready = 1'b1;
@@ -467,7 +507,7 @@ module gpu_prim_setup #(
                 .a_load(a_load), .a_v0(ai0_q), .a_v1(ai1_q), .a_v2(ai2_q),
                 .a_d01x(d01x), .a_d01y(d01y), .a_d02x(d02x), .a_d02y(d02y),
                 .b_need(b_valid_q && !b_is_line_q && b_shaded_q && b_drawable), .b_next(b_next),
-                .b_area(b_area_q), .b_v0(bi0_q), .b_off_x(b_off_x_q), .b_off_y(b_off_y_q),
+                .b_area(b_area_q), .b_v0(bi0_q), .b_off_x(b_ox0_q), .b_off_y(b_oy0_q),
                 .ready(i_ready), .start(i_start_w), .dx(i_dx_w), .dy(i_dy_w));
         end else begin : g_no_i
             assign i_ready = 1'b1;
@@ -475,12 +515,12 @@ module gpu_prim_setup #(
             assign i_dx_w = {ISTEP_W{1'b0}};
             assign i_dy_w = {ISTEP_W{1'b0}};
             wire unused_i = (|vi_rd_data) | (|bi0_q) | (|ai1_q) | (|ai2_q) | b_shaded_q
-                          | (|b_off_x_q) | (|b_off_y_q) | a_load | b_next;  // the depth plane's too, if built
+                          | (|b_ox0_q) | (|b_oy0_q) | a_load | b_next;  // the depth plane's too, if built
         end
     endgenerate
 
-    wire [X_W:0] box_w = (X_W + 1)'(b_px1 - b_px0 + 13'sd1);   // 1 .. FB_WIDTH
-    wire [ROW_W:0] box_h = (ROW_W + 1)'(b_py1 - b_py0 + 13'sd1);  // 1 .. the frame's height
+    wire [X_W:0] box_w = (X_W + 1)'(b_px1_q) - (X_W + 1)'(b_px0_q) + 1'b1;      // 1 .. FB_WIDTH
+    wire [ROW_W:0] box_h = (ROW_W + 1)'(b_py1_q) - (ROW_W + 1)'(b_py0_q) + 1'b1;  // 1 .. its height
 
     always @(posedge clk) begin
         if (rst) begin
@@ -490,9 +530,9 @@ module gpu_prim_setup #(
             if (c_load_valid) begin
                 out_desc.is_line <= b_is_line_q;
                 out_desc.color <= b_color_q;
-                out_desc.e0 <= edge_at(tx0, ty0, tx1, ty1, pcx, pcy);
-                out_desc.e1 <= edge_at(tx1, ty1, tx2, ty2, pcx, pcy);
-                out_desc.e2 <= edge_at(tx2, ty2, tx0, ty0, pcx, pcy);
+                out_desc.e0 <= edge_value(flip, e0_dx, e0_dy, e0_ox, e0_oy);
+                out_desc.e1 <= edge_value(flip, b_dx12_q, b_dy12_q, b_ox1_q, b_oy1_q);
+                out_desc.e2 <= edge_value(flip, e2_dx, e2_dy, e2_ox, e2_oy);
                 out_desc.sx0 <= step_right(ty0, ty1);
                 out_desc.sx1 <= step_right(ty1, ty2);
                 out_desc.sx2 <= step_right(ty2, ty0);
@@ -503,14 +543,14 @@ module gpu_prim_setup #(
                                  top_left(tx0, ty0, tx1, ty1)};
                 out_desc.col_lo <= gpu_pkg::DESC_COL_W'(col_lo);
                 out_desc.col_hi <= gpu_pkg::DESC_COL_W'(col_hi);
-                out_desc.row_lo <= b_py0[gpu_pkg::ROW_W-1:0];
-                out_desc.row_hi <= b_py1[gpu_pkg::ROW_W-1:0];
-                out_desc.line_x <= lx0;
-                out_desc.line_y <= ly0;
+                out_desc.row_lo <= b_py0_q;
+                out_desc.row_hi <= b_py1_q;
+                out_desc.line_x <= b_lx0_q;
+                out_desc.line_y <= b_ly0_q;
                 out_desc.line_n <= lmaj;
                 out_desc.line_xmajor <= lxmajor;
-                out_desc.line_xneg <= ldx < 0;
-                out_desc.line_yneg <= ldy < 0;
+                out_desc.line_xneg <= b_ldx_q < 0;
+                out_desc.line_yneg <= b_ldy_q < 0;
                 out_desc.line_two_a_major <= {lmaj, 1'b0};
                 out_desc.line_two_a_minor <= {lmin, 1'b0};
                 out_desc.line_err <= gpu_pkg::LERR_W'({lmin, 1'b0}) - gpu_pkg::LERR_W'(lmaj);
