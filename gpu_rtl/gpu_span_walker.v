@@ -102,10 +102,17 @@ module gpu_span_walker #(
     reg signed [EDGE_W-1:0] efirst_q [0:2];  // edges at lane 0 of the row's starting span
     reg signed [STEP_W-1:0] sx_q [0:2];      // steps at their exact width (gpu_pkg::STEP_W)
     reg signed [STEP_W-1:0] sy_q [0:2];
-    // (SPAN_W - 1) * sx per edge, set with the triangle: the span's last lane in one add from registers
-    // (lane_e builds it as a chain of adds), since it decides the seek (left_rejected) and so sits on
-    // the clock's longest path. Same value, mod 2^EDGE_W, as lane_e's.
-    reg signed [EDGE_W-1:0] sx_last_q [0:2];
+    // The lanes that decide the walk, kept as registers stepped beside e_q (the same adds at the
+    // same places, so the same values mod 2^EDGE_W): the decision reads sign bits of registers, not
+    // of 36-bit adds from e_q (those adds, the decision and its fan-out to every register the walk
+    // steps were one loop, the board's longest path). Which lanes an edge needs follows from its
+    // step's sign, fixed per triangle: a left-bounding edge (sx > 0) lanes -1 and SPAN_W - 1, a
+    // right-bounding one (sx < 0) lane SPAN_W, a flat one lane 0 (e_q itself).
+    reg signed [EDGE_W-1:0] pa_q [0:2];      // lane -1 if sx > 0, else lane SPAN_W
+    reg signed [EDGE_W-1:0] pb_q [0:2];      // lane SPAN_W - 1
+    reg signed [EDGE_W-1:0] pafirst_q [0:2]; // the same at the row's starting span
+    reg signed [EDGE_W-1:0] pbfirst_q [0:2];
+    reg [2:0] sx_pos_q, sx_neg_q;            // per edge: sx > 0, sx < 0
     reg [COL_W-1:0] col_q, col_first_q, col_lo_q, col_hi_q;
     reg [ROW_W-1:0] row_q, row_hi_q;
     reg [WAW-1:0] row_addr_q;                // word address of (col 0, row_q)
@@ -139,29 +146,29 @@ module gpu_span_walker #(
 
     reg [SPAN_W-1:0] lane_cov;              // pixels of this span inside the triangle
     reg [2:0] pass_left, pass_last, pass_next, pass_first;  // per edge: at lane -1, SPAN_W-1, SPAN_W, 0
-    // Edge k at lane l (0 .. SPAN_W) in lane_e[(k * (SPAN_W + 1) + l) * EDGE_W +: EDGE_W]: lane l
+    // Edge k at lane l (0 .. SPAN_W - 1) in lane_e[(k * SPAN_W + l) * EDGE_W +: EDGE_W]: lane l
     // is lane (l with its lowest set bit cleared) plus that bit times the step, one two-operand add
     // each (the same sums, mod 2^EDGE_W, as e + l * step), so yosys builds each as one carry chain.
-    reg [3*(SPAN_W+1)*EDGE_W-1:0] lane_e;
+    reg [3*SPAN_W*EDGE_W-1:0] lane_e;
     integer k, l;
     always @(*) begin
         lane_cov = {SPAN_W{1'b1}};
         for (k = 0; k < 3; k = k + 1) begin
-            lane_e[(k * (SPAN_W + 1)) * EDGE_W +: EDGE_W] = e_q[k];
-            for (l = 1; l <= SPAN_W; l = l + 1) begin
-                lane_e[(k * (SPAN_W + 1) + l) * EDGE_W +: EDGE_W] =
-                    $signed(lane_e[(k * (SPAN_W + 1) + (l & (l - 1))) * EDGE_W +: EDGE_W])
+            lane_e[(k * SPAN_W) * EDGE_W +: EDGE_W] = e_q[k];
+            for (l = 1; l < SPAN_W; l = l + 1) begin
+                lane_e[(k * SPAN_W + l) * EDGE_W +: EDGE_W] =
+                    $signed(lane_e[(k * SPAN_W + (l & (l - 1))) * EDGE_W +: EDGE_W])
                     + edge_times(EDGE_W'(sx_q[k]), l - (l & (l - 1)));
             end
             for (l = 0; l < SPAN_W; l = l + 1) begin
-                if (!covered(lane_e[(k * (SPAN_W + 1) + l) * EDGE_W +: EDGE_W])) begin
+                if (!covered(lane_e[(k * SPAN_W + l) * EDGE_W +: EDGE_W])) begin
                     lane_cov[l] = 1'b0;
                 end
             end
-            pass_left[k]  = covered(e_q[k] - EDGE_W'(sx_q[k]));
+            pass_left[k]  = covered(pa_q[k]);   // meaningful where sx > 0
             pass_first[k] = covered(e_q[k]);
-            pass_last[k]  = covered(e_q[k] + sx_last_q[k]);
-            pass_next[k]  = covered(lane_e[(k * (SPAN_W + 1) + SPAN_W) * EDGE_W +: EDGE_W]);
+            pass_last[k]  = covered(pb_q[k]);
+            pass_next[k]  = covered(pa_q[k]);   // meaningful where sx < 0
         end
     end
 
@@ -172,14 +179,14 @@ module gpu_span_walker #(
         left_possible = col_q > col_lo_q;
         right_done = col_q == col_hi_q;
         for (k = 0; k < 3; k = k + 1) begin
-            if (sx_q[k] == 0 && !pass_first[k]) begin
+            if (!sx_pos_q[k] && !sx_neg_q[k] && !pass_first[k]) begin
                 flat_fail = 1'b1;
             end
-            if (sx_q[k] > 0) begin  // bounds the row on the left
+            if (sx_pos_q[k]) begin  // bounds the row on the left
                 if (!pass_last[k]) left_rejected = 1'b1;
                 if (!pass_left[k]) left_possible = 1'b0;
             end
-            if (sx_q[k] < 0 && !pass_next[k]) begin  // bounds it on the right
+            if (sx_neg_q[k] && !pass_next[k]) begin  // bounds it on the right
                 right_done = 1'b1;
             end
         end
@@ -262,6 +269,15 @@ module gpu_span_walker #(
             assign efirst_down[d] = efirst_q[d] + EDGE_W'(sy_q[d]);
         end
     endgenerate
+    wire signed [EDGE_W-1:0] pa_down [0:2], pafirst_down [0:2], pb_down [0:2], pbfirst_down [0:2];
+    generate
+        for (d = 0; d < 3; d = d + 1) begin : g_probe_down
+            assign pa_down[d] = pa_q[d] + EDGE_W'(sy_q[d]);
+            assign pafirst_down[d] = pafirst_q[d] + EDGE_W'(sy_q[d]);
+            assign pb_down[d] = pb_q[d] + EDGE_W'(sy_q[d]);
+            assign pbfirst_down[d] = pbfirst_q[d] + EDGE_W'(sy_q[d]);
+        end
+    endgenerate
     wire signed [Z_W-1:0] z_down = z_q + Z_W'(zdy_q);
     wire signed [Z_W-1:0] zfirst_down = zfirst_q + Z_W'(zdy_q);
 
@@ -274,6 +290,19 @@ module gpu_span_walker #(
     reg cand_shade_q;                    // a Gouraud triangle's span: colours from cand_lvl_q
     reg [SPAN_W*ILVL_W-1:0] cand_lvl_q;
     reg [1:0] cand_x_q, cand_y_q;        // the span's first pixel x & 3 and its row y & 3
+
+    // A triangle's edges as loaded (biased by the top-left rule) and its steps, and probe A's lane.
+    wire signed [EDGE_W-1:0] load_e [0:2];
+    wire signed [STEP_W-1:0] load_sx [0:2];
+    assign load_e[0] = biased(in_desc.e0, in_desc.top_left[0]);
+    assign load_e[1] = biased(in_desc.e1, in_desc.top_left[1]);
+    assign load_e[2] = biased(in_desc.e2, in_desc.top_left[2]);
+    assign load_sx[0] = in_desc.sx0;
+    assign load_sx[1] = in_desc.sx1;
+    assign load_sx[2] = in_desc.sx2;
+    function automatic signed [EDGE_W-1:0] probe_a(input signed [EDGE_W-1:0] e, input signed [STEP_W-1:0] sx);
+        probe_a = (sx > 0) ? e - EDGE_W'(sx) : e + edge_times(EDGE_W'(sx), SPAN_W);
+    endfunction
 
     assign in_ready = state_q == S_IDLE;
     assign idle = state_q == S_IDLE && !in_valid && !cand_valid_q && !late_busy;
@@ -313,21 +342,24 @@ module gpu_span_walker #(
                         lerr_q <= in_desc.line_err;
                         state_q <= S_LINE;
                     end else begin
-                        e_q[0] <= biased(in_desc.e0, in_desc.top_left[0]);
-                        e_q[1] <= biased(in_desc.e1, in_desc.top_left[1]);
-                        e_q[2] <= biased(in_desc.e2, in_desc.top_left[2]);
-                        efirst_q[0] <= biased(in_desc.e0, in_desc.top_left[0]);
-                        efirst_q[1] <= biased(in_desc.e1, in_desc.top_left[1]);
-                        efirst_q[2] <= biased(in_desc.e2, in_desc.top_left[2]);
+                        for (k = 0; k < 3; k = k + 1) begin
+                            e_q[k] <= load_e[k];
+                            efirst_q[k] <= load_e[k];
+                        end
                         sx_q[0] <= in_desc.sx0;
                         sx_q[1] <= in_desc.sx1;
                         sx_q[2] <= in_desc.sx2;
                         sy_q[0] <= in_desc.sy0;
                         sy_q[1] <= in_desc.sy1;
                         sy_q[2] <= in_desc.sy2;
-                        sx_last_q[0] <= edge_times(EDGE_W'(in_desc.sx0), SPAN_W - 1);
-                        sx_last_q[1] <= edge_times(EDGE_W'(in_desc.sx1), SPAN_W - 1);
-                        sx_last_q[2] <= edge_times(EDGE_W'(in_desc.sx2), SPAN_W - 1);
+                        for (k = 0; k < 3; k = k + 1) begin
+                            pa_q[k] <= probe_a(load_e[k], load_sx[k]);
+                            pafirst_q[k] <= probe_a(load_e[k], load_sx[k]);
+                            pb_q[k] <= load_e[k] + edge_times(EDGE_W'(load_sx[k]), SPAN_W - 1);
+                            pbfirst_q[k] <= load_e[k] + edge_times(EDGE_W'(load_sx[k]), SPAN_W - 1);
+                            sx_pos_q[k] <= load_sx[k] > 0;
+                            sx_neg_q[k] <= load_sx[k] < 0;
+                        end
                         col_q <= COL_W'(in_desc.col_lo);
                         col_first_q <= COL_W'(in_desc.col_lo);
                         col_lo_q <= COL_W'(in_desc.col_lo);
@@ -354,7 +386,11 @@ module gpu_span_walker #(
                     end
                     if (first_span) begin
                         col_first_q <= col_q;
-                        for (k = 0; k < 3; k = k + 1) efirst_q[k] <= e_q[k];
+                        for (k = 0; k < 3; k = k + 1) begin
+                            efirst_q[k] <= e_q[k];
+                            pafirst_q[k] <= pa_q[k];
+                            pbfirst_q[k] <= pb_q[k];
+                        end
                         zfirst_q <= z_q;
                         ifirst_q <= i_q;
                     end
@@ -369,6 +405,10 @@ module gpu_span_walker #(
                             for (k = 0; k < 3; k = k + 1) begin
                                 efirst_q[k] <= first_span ? e_down[k] : efirst_down[k];
                                 e_q[k] <= first_span ? e_down[k] : efirst_down[k];
+                                pafirst_q[k] <= first_span ? pa_down[k] : pafirst_down[k];
+                                pa_q[k] <= first_span ? pa_down[k] : pafirst_down[k];
+                                pbfirst_q[k] <= first_span ? pb_down[k] : pbfirst_down[k];
+                                pb_q[k] <= first_span ? pb_down[k] : pbfirst_down[k];
                             end
                             zfirst_q <= first_span ? z_down : zfirst_down;
                             z_q <= first_span ? z_down : zfirst_down;
@@ -378,12 +418,20 @@ module gpu_span_walker #(
                         end
                     end else if (go_left) begin
                         col_q <= col_q - 1'b1;
-                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] - edge_times(EDGE_W'(sx_q[k]), SPAN_W);
+                        for (k = 0; k < 3; k = k + 1) begin
+                            e_q[k] <= e_q[k] - edge_times(EDGE_W'(sx_q[k]), SPAN_W);
+                            pa_q[k] <= pa_q[k] - edge_times(EDGE_W'(sx_q[k]), SPAN_W);
+                            pb_q[k] <= pb_q[k] - edge_times(EDGE_W'(sx_q[k]), SPAN_W);
+                        end
                         z_q <= z_q - times(Z_W'(zdx_q), SPAN_W);
                         i_q <= i_q - I_W'(times(Z_W'(idx_q), SPAN_W));
                     end else begin  // seeking right past a rejected span, or the scan's next span
                         col_q <= col_q + 1'b1;
-                        for (k = 0; k < 3; k = k + 1) e_q[k] <= e_q[k] + edge_times(EDGE_W'(sx_q[k]), SPAN_W);
+                        for (k = 0; k < 3; k = k + 1) begin
+                            e_q[k] <= e_q[k] + edge_times(EDGE_W'(sx_q[k]), SPAN_W);
+                            pa_q[k] <= pa_q[k] + edge_times(EDGE_W'(sx_q[k]), SPAN_W);
+                            pb_q[k] <= pb_q[k] + edge_times(EDGE_W'(sx_q[k]), SPAN_W);
+                        end
                         z_q <= z_q + times(Z_W'(zdx_q), SPAN_W);
                         i_q <= i_q + I_W'(times(Z_W'(idx_q), SPAN_W));
                         if (draw_span) begin
