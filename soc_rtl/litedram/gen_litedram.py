@@ -35,12 +35,14 @@ import yaml
 import litedram.gen as litedram_gen
 from litedram import modules as litedram_modules
 from litedram import phy as litedram_phys
+from litedram.phy import dfi as litedram_dfi
 from litedram.gen import LiteDRAMCore
 from litex.build.generic_platform import Pins
 from litex.build.lattice import LatticePlatform
 from litex.gen import LiteXModule
 from litex.soc.integration.builder import Builder
 from migen import ClockDomain
+from migen.genlib.record import DIR_M_TO_S
 from migen.genlib.resetsync import AsyncResetSynchronizer
 
 TIMING_NAMES = ("tRP", "tRCD", "tWR", "tRAS", "tRFC", "tRRD", "tREFI")
@@ -120,10 +122,33 @@ class HalfRateCRG(LiteXModule):
                           AsyncResetSynchronizer(self.cd_sys2x, rst)]
 
 
+class RegisteredHalfRateGENSDRPHY(litedram_phys.HalfRateGENSDRPHY):
+    """HalfRateGENSDRPHY with the controller's DFI commands and write data registered in the system
+    clock before the PHY takes them. In the plain PHY they reach the pins' registers (clocked by
+    sys2x) through the controller's combinational command path — the DFI injector's CSR write
+    strobe, the multiplexer — and phase 0 gets one sys2x period for all of it: 11.6 ns against 10 in
+    a ULX3S build (docs/board-ulx3s.md). Registered, that path is a flop and the PHY's phase
+    multiplexer. Commands and write data move together (write latency unchanged); read data come
+    back a system clock later (read latency + 1)."""
+    def __init__(self, pads, sys_clk_freq=100e6, cl=None):
+        super().__init__(pads, sys_clk_freq, cl)
+        phy_dfi = self.dfi
+        p0 = phy_dfi.phases[0]
+        self.dfi = dfi = litedram_dfi.Interface(len(p0.address), len(p0.bank), len(p0.cs_n),
+                                                len(p0.wrdata), len(phy_dfi.phases))
+        for ctrl, phy in zip(dfi.phases, phy_dfi.phases):
+            for name, _, direction in ctrl.layout:
+                if direction == DIR_M_TO_S:
+                    self.sync += getattr(phy, name).eq(getattr(ctrl, name))
+                else:
+                    self.comb += getattr(ctrl, name).eq(getattr(phy, name))
+        self.settings.read_latency += 1
+
+
 # The SDR PHYs this script builds: the name in the configuration, the class, the rate.
 SDR_PHYS = {
     "GENSDRPHY": (litedram_phys.GENSDRPHY, "1:1"),
-    "HalfRateGENSDRPHY": (litedram_phys.HalfRateGENSDRPHY, "1:2"),
+    "HalfRateGENSDRPHY": (RegisteredHalfRateGENSDRPHY, "1:2"),
 }
 
 
@@ -131,10 +156,11 @@ def use_half_rate_phy():
     """LiteDRAMCore (2024.12) builds an SDR core only around GENSDRPHY, at rate "1:1", with a CRG
     of one clock (it fails on HalfRateGENSDRPHY: no CRG). HalfRateGENSDRPHY takes the same pads and
     arguments, so the core is built as for GENSDRPHY with the generator's names for that PHY and its
-    CRG pointing at the half-rate ones (the module's rate is module_class's)."""
+    CRG pointing at the half-rate ones (the module's rate is module_class's); the PHY is ours with
+    its DFI inputs registered (RegisteredHalfRateGENSDRPHY)."""
     litedram_gen.litedram_phys = types.SimpleNamespace(
         **{k: getattr(litedram_phys, k) for k in dir(litedram_phys) if not k.startswith("_")})
-    litedram_gen.litedram_phys.GENSDRPHY = litedram_phys.HalfRateGENSDRPHY
+    litedram_gen.litedram_phys.GENSDRPHY = RegisteredHalfRateGENSDRPHY
     litedram_gen.LiteDRAMGENSDRPHYCRG = HalfRateCRG
 
 
@@ -182,7 +208,7 @@ def main():
     if config["sdram_phy"] not in SDR_PHYS:
         sys.exit(f"gen_litedram: sdram_phy must be one of {', '.join(SDR_PHYS)} (the ULX3S's SDR SDRAM)")
     phy, rate = SDR_PHYS[config["sdram_phy"]]
-    if phy is litedram_phys.HalfRateGENSDRPHY:
+    if phy is RegisteredHalfRateGENSDRPHY:
         use_half_rate_phy()
     config["sdram_phy"] = phy
     config["sdram_module"] = module_class(config["sdram_module"], overrides, config["sys_clk_freq"], rate)
