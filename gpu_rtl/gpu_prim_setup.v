@@ -243,12 +243,19 @@ module gpu_prim_setup #(
     reg a_is_line_q;
     reg [gpu_pkg::COLOR_W-1:0] a_color_q;
     reg signed [15:0] ax0_q, ay0_q, ax1_q, ay1_q, ax2_q, ay2_q;
+    // The corners' differences from v0, Q12.4, registered with them: the area's and the planes'
+    // products start from registers (the subtract in front of the area's product and its zero test
+    // into b_drawable_q was the board's longest path).
+    reg signed [16:0] d01x, d01y, d02x, d02y;
     reg [15:0] az0_q, az1_q, az2_q;
     reg a_shaded_q;
     reg [15:0] ai0_q, ai1_q, ai2_q;
     wire b_free;
 
     assign stage_a_free = !a_valid_q || b_free;
+    // The third corner: vertex 2 as it leaves the RAM, or a line's end again.
+    wire signed [15:0] v2x = v2_is_line_q ? fx1_q : vx;
+    wire signed [15:0] v2y = v2_is_line_q ? fy1_q : vy;
 
     always @(posedge clk) begin
         if (rst) begin
@@ -262,8 +269,12 @@ module gpu_prim_setup #(
                 ay0_q <= fy0_q;
                 ax1_q <= fx1_q;
                 ay1_q <= fy1_q;
-                ax2_q <= v2_is_line_q ? fx1_q : vx;
-                ay2_q <= v2_is_line_q ? fy1_q : vy;
+                ax2_q <= v2x;
+                ay2_q <= v2y;
+                d01x <= 17'(fx1_q) - 17'(fx0_q);
+                d01y <= 17'(fy1_q) - 17'(fy0_q);
+                d02x <= 17'(v2x) - 17'(fx0_q);
+                d02y <= 17'(v2y) - 17'(fy0_q);
                 az0_q <= fz0_q;
                 az1_q <= fz1_q;
                 az2_q <= vz_rd_data;
@@ -327,10 +338,6 @@ module gpu_prim_setup #(
     // Centre, Q12.4, of lane 0 of the first span and of the first row.
     wire signed [17:0] a_pcx = span_centre_x(a_px0);
     wire signed [17:0] a_pcy = row_centre_y(a_py0);
-    wire signed [16:0] d01x = 17'(ax1_q) - 17'(ax0_q);
-    wire signed [16:0] d01y = 17'(ay1_q) - 17'(ay0_q);
-    wire signed [16:0] d02x = 17'(ax2_q) - 17'(ax0_q);
-    wire signed [16:0] d02y = 17'(ay2_q) - 17'(ay0_q);
     wire signed [34:0] area_w = d01x * d02y - d01y * d02x;  // operands widen to 35 bits first
     wire a_area_nonzero = 35'(d01x) * 35'(d02y) != 35'(d01y) * 35'(d02x);  // beside the subtract
 
