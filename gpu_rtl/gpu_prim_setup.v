@@ -475,8 +475,7 @@ module gpu_prim_setup #(
     wire [PIX_W-1:0] lmaj = lxmajor ? lax : lay;
     wire [PIX_W-1:0] lmin = lxmajor ? lay : lax;
 
-    wire b_drawable = b_drawable_q;
-    wire c_load_valid = b_valid_q && b_drawable && b_z_ready;
+    wire c_load_valid = b_valid_q && b_drawable_q && b_z_ready;
     wire b_leaves = b_valid_q && c_free && b_z_ready;   // stage B hands on (or drops) its primitive
     assign c_free = !out_valid || out_ready;
 
@@ -492,7 +491,7 @@ module gpu_prim_setup #(
                 .clk(clk), .rst(rst),
                 .a_load(a_load), .a_v0(az0_q), .a_v1(az1_q), .a_v2(az2_q),
                 .a_d01x(d01x), .a_d01y(d01y), .a_d02x(d02x), .a_d02y(d02y),
-                .b_need(b_valid_q && !b_is_line_q && ctrl_ztest && b_drawable), .b_next(b_next),
+                .b_need(b_valid_q && !b_is_line_q && ctrl_ztest && b_drawable_q), .b_next(b_next),
                 .b_area(b_area_q), .b_v0(bz0_q), .b_off_x(b_ox0_q), .b_off_y(b_oy0_q),
                 .ready(z_ready), .start(z_start_w), .dx(z_dx_w), .dy(z_dy_w));
         end else begin : g_no_z
@@ -513,7 +512,7 @@ module gpu_prim_setup #(
                 .clk(clk), .rst(rst),
                 .a_load(a_load), .a_v0(ai0_q), .a_v1(ai1_q), .a_v2(ai2_q),
                 .a_d01x(d01x), .a_d01y(d01y), .a_d02x(d02x), .a_d02y(d02y),
-                .b_need(b_valid_q && !b_is_line_q && b_shaded_q && b_drawable), .b_next(b_next),
+                .b_need(b_valid_q && !b_is_line_q && b_shaded_q && b_drawable_q), .b_next(b_next),
                 .b_area(b_area_q), .b_v0(bi0_q), .b_off_x(b_ox0_q), .b_off_y(b_oy0_q),
                 .ready(i_ready), .start(i_start_w), .dx(i_dx_w), .dy(i_dy_w));
         end else begin : g_no_i
@@ -578,7 +577,7 @@ module gpu_prim_setup #(
         ev_err_kind <= !rst && fetch_ev_reject && !d_kind_ok_q;
         ev_err_index <= !rst && fetch_ev_reject && d_kind_ok_q;
         ev_rejected <= (!rst && fetch_ev_reject ? 2'd1 : 2'd0)
-                     + (!rst && b_leaves && !b_drawable ? 2'd1 : 2'd0);
+                     + (!rst && b_leaves && !b_drawable_q ? 2'd1 : 2'd0);
         ev_drawn <= !rst && c_free && c_load_valid;
         ev_samples <= (!rst && c_free && c_load_valid)
                     ? (b_is_line_q ? SAMPLES_W'(lmaj) : SAMPLES_W'(box_w) * SAMPLES_W'(box_h)) : {SAMPLES_W{1'b0}};
