@@ -236,9 +236,10 @@ soc-smoke: $(SOCSIM) $(SOC_SMOKE_HEX)
 # The benchmark builds (firmware.mk's FW_BENCH_FRAMES frames) of every scene, each on socsim, one
 # table (bench/bench_soc.py).
 # SOC_MEM=sdram: the same from the SDRAM (the boot program first; its cycles are not the frames').
+# One make a scene: the program's boot scene decides the model scene's capacities (bsp/soc/bsp.mk).
 SOC_BENCH_DIR  := $(BUILD)/fw-bench-soc$(SOC_MEM_SUFFIX)
 SOC_BENCH_ELFS := $(foreach s,$(FW_SCENES),$(s)=$(SOC_BENCH_DIR)/$(s).elf)
 bench-soc: $(SOCSIM) $(SOCSIM_BOOT)
-	+@$(SOC_FW_MAKE) $(foreach s,$(FW_SCENES),$(SOC_BENCH_DIR)/$(s).elf)
+	+@$(foreach s,$(FW_SCENES),$(SOC_FW_MAKE) SCENE=$(s) $(SOC_BENCH_DIR)/$(s).elf &&) true
 	@$(PYTHON) bench/bench_soc.py --socsim $(SOCSIM) $(if $(SOCSIM_BOOT),--boot $(SOCSIM_BOOT)) \
 	  --out $(BUILD)/bench-soc$(SOC_MEM_SUFFIX) $(SOC_BENCH_ELFS)
