@@ -412,8 +412,8 @@ module gpu_prim_setup #(
                 b_oy1_q <= a_pcy - 18'(ay1_q);
                 b_ox2_q <= a_pcx - 18'(ax2_q);
                 b_oy2_q <= a_pcy - 18'(ay2_q);
-                b_dx01_q <= 18'(ax1_q) - 18'(ax0_q);
-                b_dy01_q <= 18'(ay1_q) - 18'(ay0_q);
+                b_dx01_q <= 18'(d01x);  // stage A's v1 - v0
+                b_dy01_q <= 18'(d01y);
                 b_dx12_q <= 18'(ax2_q) - 18'(ax1_q);
                 b_dy12_q <= 18'(ay2_q) - 18'(ay1_q);
                 b_dx20_q <= 18'(ax0_q) - 18'(ax2_q);
