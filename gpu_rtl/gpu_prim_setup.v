@@ -366,8 +366,9 @@ module gpu_prim_setup #(
                                        // whose clamped box is not empty
     reg [X_W-1:0] b_px0_q, b_px1_q;    // the clamped box
     reg [ROW_W-1:0] b_py0_q, b_py1_q;
-    // Each corner minus lane 0 of the first span, Q12.4: the edge values' offsets and (corner 0)
-    // the planes' start offsets (g_z, g_i). -32759 .. 37896.
+    // Lane 0 of the first span minus each corner, Q12.4: the edge values' offsets and (corner 0)
+    // the planes' start offsets (g_z, g_i); 17 bits by gpu_pkg's argument (-32775 .. 43016 at
+    // 640 x 480), 18 held. The edges' differences are 17 bits too.
     reg signed [17:0] b_ox0_q, b_oy0_q, b_ox1_q, b_oy1_q, b_ox2_q, b_oy2_q;
     // Each edge's differences in the triangle's given winding: v1 - v0, v2 - v1, v0 - v2.
     reg signed [17:0] b_dx01_q, b_dy01_q, b_dx12_q, b_dy12_q, b_dx20_q, b_dy20_q;
