@@ -32,12 +32,9 @@ buses spends in a cycle between swaps (the core waits through them):
   CPI without refills     (CPU cycles - both refills' clocks) / instructions: what the core's
                   pipeline (load-use, branches, multiplies and divides, stores) costs by itself; an
                   estimate, since a few refills fall outside the firmware's counted span
-  fps 100 MHz     estimated: the CPU's and GPU's cycles take half the time, the UART's bytes
-                  (115,200 baud) and the 60 Hz scan-out do not, and the swap waits for the next
-                  vertical blank: 60 / ceil(60 * t), t = (ready - cpu - gpu) / 50e6 + (cpu + gpu) / 100e6
+(No column estimates another clock: a rate is measured at the clock simulated, the board's.)
 """
 import argparse
-import math
 import os
 import re
 import subprocess
@@ -114,10 +111,8 @@ def main():
         sclk = mean([sim[k][8] for k in keys])
         stores = mean([sim[k][9] for k in keys])
         lclk = mean([sim[k][10] for k in keys])
-        t100 = (ready - cpu - gpu) / CLK + (cpu + gpu) / (2 * CLK)
-        fps100 = 60.0 / max(1, math.ceil(60.0 * t100 - 1e-9))
         rows.append((scene, len(keys), instr, cpu, cpu / instr, irefill, drefill, gpu, ready, frame,
-                     CLK / frame, fps100, busy))
+                     CLK / frame, busy))
         stalls.append((scene, instr, cpu, iclk, iclk / max(irefill, 1), dclk, dclk / max(drefill, 1),
                        stores, sclk, sclk / max(stores, 1), lclk, cpu / instr,
                        (cpu - iclk - dclk) / instr))
@@ -127,13 +122,13 @@ def main():
 
     sdram = a.boot is not None
     print("| scene | frames | instr/frame | CPU cycles/frame | CPI | I$ refills | D$ refills | GPU busy cycles "
-          "| ready (cycles) | frame cycles (swap to swap) | fps 50 MHz | fps 100 MHz (est.) |"
+          "| ready (cycles) | frame cycles (swap to swap) | fps 50 MHz |"
           + (" SDRAM busy |" if sdram else ""))
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|" + ("---:|" if sdram else ""))
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|" + ("---:|" if sdram else ""))
     for r in rows:
         print(f"| {r[0]} | {r[1]} | {r[2]:,.0f} | {r[3]:,.0f} | {r[4]:.2f} | {r[5]:,.0f} | {r[6]:,.0f} | "
-              f"{r[7]:,.0f} | {r[8]:,.0f} | {r[9]:,.0f} | {r[10]:.1f} | {r[11]:.1f} |"
-              + (f" {100 * r[12]:.1f} % |" if sdram and r[12] is not None else ""))
+              f"{r[7]:,.0f} | {r[8]:,.0f} | {r[9]:,.0f} | {r[10]:.1f} |"
+              + (f" {100 * r[11]:.1f} % |" if sdram and r[11] is not None else ""))
     print("\nWhere the CPU's cycles go (bus clocks between swaps, socsim's taps on the core's buses):\n")
     print("| scene | instr/frame | CPU cycles/frame | I$ refill clocks | a refill | D$ refill clocks "
           "| a refill | stores | store clocks | a store | uncached load clocks | CPI | CPI without refills |")
