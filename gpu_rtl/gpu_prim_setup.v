@@ -239,6 +239,24 @@ module gpu_prim_setup #(
     wire fetch_ev_reject = reject_now;
 
     // ------------------------------------------------------------------ stage A: three vertices
+    // The box of pixel centres (stage A registers it, unclamped).
+    function automatic signed [15:0] min3(input signed [15:0] a, input signed [15:0] b, input signed [15:0] c);
+        min3 = (a < b) ? ((a < c) ? a : c) : ((b < c) ? b : c);
+    endfunction
+    function automatic signed [15:0] max3(input signed [15:0] a, input signed [15:0] b, input signed [15:0] c);
+        max3 = (a > b) ? ((a > c) ? a : c) : ((b > c) ? b : c);
+    endfunction
+    // Pixels by their centres (16p + 8): with FIRST_CENTRE the first pixel whose centre is >= v,
+    // floor((v + 7) / 16); with LAST_CENTRE the last one whose centre is <= v, floor((v - 8) / 16).
+    localparam FIRST_CENTRE = 1'b1, LAST_CENTRE = 1'b0;
+    function automatic signed [12:0] centre_pixel(input signed [15:0] v, input first);
+        reg signed [16:0] t;
+        begin
+            t = first ? 17'(v) + 17'sd7 : 17'(v) - 17'sd8;
+            centre_pixel = 13'(t >>> 4);
+        end
+    endfunction
+
     reg a_valid_q;
     reg a_is_line_q;
     reg [gpu_pkg::COLOR_W-1:0] a_color_q;
@@ -247,6 +265,10 @@ module gpu_prim_setup #(
     // products start from registers (the subtract in front of the area's product and its zero test
     // into b_drawable_q was the board's longest path).
     reg signed [16:0] d01x, d01y, d02x, d02y;
+    // Its box of pixel centres, unclamped, also taken at the handoff: the minimum and maximum and
+    // their rounding come off stage B's path (the clamp, the first span's centre and the corners'
+    // offsets follow there).
+    reg signed [12:0] a_rpx0, a_rpy0, a_rpx1, a_rpy1;
     reg [15:0] az0_q, az1_q, az2_q;
     reg a_shaded_q;
     reg [15:0] ai0_q, ai1_q, ai2_q;
@@ -275,6 +297,10 @@ module gpu_prim_setup #(
                 d01y <= 17'(fy1_q) - 17'(fy0_q);
                 d02x <= 17'(v2x) - 17'(fx0_q);
                 d02y <= 17'(v2y) - 17'(fy0_q);
+                a_rpx0 <= centre_pixel(min3(fx0_q, fx1_q, v2x), FIRST_CENTRE);
+                a_rpy0 <= centre_pixel(min3(fy0_q, fy1_q, v2y), FIRST_CENTRE);
+                a_rpx1 <= centre_pixel(max3(fx0_q, fx1_q, v2x), LAST_CENTRE);
+                a_rpy1 <= centre_pixel(max3(fy0_q, fy1_q, v2y), LAST_CENTRE);
                 az0_q <= fz0_q;
                 az1_q <= fz1_q;
                 az2_q <= vz_rd_data;
@@ -287,22 +313,6 @@ module gpu_prim_setup #(
     end
 
     // ---------------------------------------- stage B: area, box, endpoints (and the planes' numerators)
-    function automatic signed [15:0] min3(input signed [15:0] a, input signed [15:0] b, input signed [15:0] c);
-        min3 = (a < b) ? ((a < c) ? a : c) : ((b < c) ? b : c);
-    endfunction
-    function automatic signed [15:0] max3(input signed [15:0] a, input signed [15:0] b, input signed [15:0] c);
-        max3 = (a > b) ? ((a > c) ? a : c) : ((b > c) ? b : c);
-    endfunction
-    // Pixels by their centres (16p + 8): with FIRST_CENTRE the first pixel whose centre is >= v,
-    // floor((v + 7) / 16); with LAST_CENTRE the last one whose centre is <= v, floor((v - 8) / 16).
-    localparam FIRST_CENTRE = 1'b1, LAST_CENTRE = 1'b0;
-    function automatic signed [12:0] centre_pixel(input signed [15:0] v, input first);
-        reg signed [16:0] t;
-        begin
-            t = first ? 17'(v) + 17'sd7 : 17'(v) - 17'sd8;
-            centre_pixel = 13'(t >>> 4);
-        end
-    endfunction
     function automatic signed [12:0] clamp(input signed [12:0] v, input signed [12:0] lo,
                                            input signed [12:0] hi);
         clamp = (v < lo) ? lo : ((v > hi) ? hi : v);
@@ -325,10 +335,6 @@ module gpu_prim_setup #(
     // raw). Empty when px0 > px1 or py0 > py1, i.e. when the raw box is empty or lies wholly off one
     // side of the screen or the strip. (row_first, row_last and rows_empty hold still for the
     // batch, so clamping here is clamping where the descriptor is made.)
-    wire signed [12:0] a_rpx0 = centre_pixel(min3(ax0_q, ax1_q, ax2_q), FIRST_CENTRE);
-    wire signed [12:0] a_rpy0 = centre_pixel(min3(ay0_q, ay1_q, ay2_q), FIRST_CENTRE);
-    wire signed [12:0] a_rpx1 = centre_pixel(max3(ax0_q, ax1_q, ax2_q), LAST_CENTRE);
-    wire signed [12:0] a_rpy1 = centre_pixel(max3(ay0_q, ay1_q, ay2_q), LAST_CENTRE);
     wire [X_W-1:0] a_px0 = X_W'(clamp(a_rpx0, 13'sd0, X_LAST));
     wire [X_W-1:0] a_px1 = X_W'(clamp(a_rpx1, 13'sd0, X_LAST));
     wire [ROW_W-1:0] a_py0 = ROW_W'(clamp(a_rpy0, y_first, y_last));
