@@ -105,6 +105,9 @@ FW_DIR       := $(BUILD)/firmware$(FW_PSUFFIX)$(SOC_MEM_SUFFIX)
 # it). A scene's sources are firmware/scenes/<name>.c, or every .c file of firmware/scenes/<name>/.
 FW_SCENE_TABLE := firmware/scenes/scene_list.h
 FW_SCENES   := $(shell sed -n 's/^SCENE(\([A-Za-z0-9_]*\)[,)].*/\1/p' $(FW_SCENE_TABLE))
+# The scenes of scene set $(1) with boot scene $(2): one (only its boot scene), all (every scene of
+# the table) or a list joined by + (mk/builds.toml's set = [...]).
+fw_set_scenes = $(if $(filter one,$(1)),$(2),$(if $(findstring +,$(1)),$(subst +, ,$(1)),$(FW_SCENES)))
 FW_BACKENDS := fixed float
 fw_scene_srcs = $(wildcard firmware/scenes/$(1).c firmware/scenes/$(1)/*.c)
 FW_ALL_SCENE_SRCS = $(foreach s,$(FW_SCENES),$(call fw_scene_srcs,$(s)))
@@ -164,6 +167,16 @@ FW_PNG_LIBS   := $(or $(shell pkg-config --libs libpng 2>/dev/null),-lpng)
 # to it where larger, then assembled into an object of its own (.incbin) that an ELF links where
 # its scene set has the model scene.
 MODEL              ?= /usr/share/assimp/models/OBJ/spider.obj
+# A platform whose model scene holds more (FW_MODEL_SDRAM_CAPS: bsp/soc/bsp.mk with SOC_MEM=sdram)
+# gives it the SDRAM's capacities where this make's scene set has the model scene. They size every
+# object's frame, and past 65,535 vertices or primitives its indices, primitives and sort items
+# double (config/build_options.h FW_RENDER_WIDE_INDEX), so a program without the model keeps the
+# defaults below and the narrow frame (the landscape from the SDRAM: 442,348 -> 435,467
+# instructions and 5,901 -> 4,938 data-cache refills a frame, docs/soc.md).
+ifneq ($(and $(FW_MODEL_SDRAM_CAPS),$(filter model,$(call fw_set_scenes,$(FW_SCENE_SET),$(SCENE)))),)
+FW_MODEL_MAX_VERTS ?= $(call fw_sdram_model_cap,verts)
+FW_MODEL_MAX_FACES ?= $(call fw_sdram_model_cap,faces)
+endif
 FW_MODEL_MAX_VERTS ?= 1024
 FW_MODEL_MAX_FACES ?= 1024
 FW_MODEL_DEFS      := -DFW_MODEL_MAX_VERTS=$(FW_MODEL_MAX_VERTS)u -DFW_MODEL_MAX_FACES=$(FW_MODEL_MAX_FACES)u
@@ -268,11 +281,9 @@ FW_DEP_FILES += $$(FW_OBJS_$(1):.o=.d) $$(FW_HOST_OBJS_$(1):.o=.d)
 endef
 
 # ---- per program: app.c with its settings, linked with a backend's objects ---------------------
-# The scene set of a program: one (only its boot scene), all (every scene of the table) or a list
-# joined by + (mk/builds.toml's set = [...]: those scenes, keys 1..N in the list's order).
-# fw_set_scenes = the scenes, fw_set_defs = app.c's -DFW_BUILT_SCENES (none: scene_set.h's default,
-# the whole table). $(1) = set, $(2) = boot scene.
-fw_set_scenes = $(if $(filter one,$(1)),$(2),$(if $(findstring +,$(1)),$(subst +, ,$(1)),$(FW_SCENES)))
+# A program's scene set (fw_set_scenes, above; a list's keys 1..N in its order): fw_set_defs =
+# app.c's -DFW_BUILT_SCENES (none: scene_set.h's default, the whole table). $(1) = set, $(2) = boot
+# scene.
 fw_set_defs   = $(if $(filter one,$(1)),-DFW_BUILT_SCENES='SCENE($(2))',$(if $(findstring +,$(1)),\
                 -DFW_BUILT_SCENES='$(foreach s,$(subst +, ,$(1)),SCENE($(s)))'))
 fw_set_objs   = $(patsubst %.c,$(3)/%.o,$(foreach s,$(call fw_set_scenes,$(1),$(2)),$(call fw_scene_srcs,$(s))))

@@ -344,8 +344,10 @@ module gpu_prim_setup #(
     // Centre, Q12.4, of lane 0 of the first span and of the first row.
     wire signed [17:0] a_pcx = span_centre_x(a_px0);
     wire signed [17:0] a_pcy = row_centre_y(a_py0);
-    wire signed [34:0] area_w = d01x * d02y - d01y * d02x;  // operands widen to 35 bits first
-    wire a_area_nonzero = 35'(d01x) * 35'(d02y) != 35'(d01y) * 35'(d02x);  // beside the subtract
+    // Twice the signed area, and whether it is 0 (the products compared beside the subtract).
+    wire signed [34:0] area_pa = 35'(d01x) * 35'(d02y), area_pb = 35'(d01y) * 35'(d02x);
+    wire signed [34:0] area_w = area_pa - area_pb;
+    wire a_area_nonzero = area_pa != area_pb;
 
     // Lines: endpoint pixels by arithmetic shift, their differences (Bresenham's set-up per the
     // contract follows in stage C).

@@ -43,17 +43,9 @@ endif
 # SOC_MEM=sdram (bsp/soc/soc_ram.mk): linked at the SDRAM's base, checked against its size, and
 # written as the boot image <elf>.img (bsp/soc/mkimage.py) for the flash instead of a RAM image.
 ifeq ($(SOC_MEM),sdram)
-# The model scene's capacities from the SDRAM (firmware.mk's fw_sdram_model_cap) where this make's
-# programs can hold the model scene: a scene set other than one, or the model as the boot scene.
-# They size every object's frame, and past 65,535 vertices or primitives its indices, primitives
-# and sort items double (config/build_options.h FW_RENDER_WIDE_INDEX), so a one-scene program of
-# another scene keeps firmware.mk's default capacities and the narrow frame (the landscape from the
-# SDRAM: 442,348 -> 435,467 instructions and 5,901 -> 4,938 data-cache refills a frame, docs/soc.md).
-FW_SOC_SDRAM_MODEL := $(if $(filter one,$(FW_SCENE_SET)),$(filter model,$(SCENE)),all)
-ifneq ($(FW_SOC_SDRAM_MODEL),)
-FW_MODEL_MAX_VERTS ?= $(call fw_sdram_model_cap,verts)
-FW_MODEL_MAX_FACES ?= $(call fw_sdram_model_cap,faces)
-endif
+# The model scene holds the SDRAM's capacities (firmware.mk's fw_sdram_model_cap) in a program that
+# has it; firmware.mk decides by the scene set.
+FW_MODEL_SDRAM_CAPS := 1
 FW_BSP_LDFLAGS += -Wl,--defsym=__ram=$(SOC_SDRAM_BASE)
 FW_POSTLINK   = $(or $(PYTHON),python3) bsp/soc/postlink.py --image --ram-bytes $(SOC_SDRAM_CPU_BYTES) \
                 --size $(patsubst %gcc,%size,$(RV_CC)) --nm $(patsubst %gcc,%nm,$(RV_CC))

@@ -18,8 +18,9 @@
 //           so one beat a clock at best. The first command goes out in the request's first clock;
 //           with LiteDRAM 2024.12's HalfRateGENSDRPHY at CL 2 (its inputs registered:
 //           gen_litedram.py) and a 32-bit port the first beat is acked in the request's 7th or 8th
-//           clock (row open), the rest one a clock: an 8-word line in 14-15 clocks (22-23 with the full-rate PHY and a 16-bit port, one beat every 2
-//           clocks; tests/sdram/litedram.sh measures it).
+//           clock (row open), the rest one a clock: an 8-word line in 14-15 clocks (22-23 with
+//           the full-rate PHY and a 16-bit port, one beat every 2 clocks; tests/sdram/litedram.sh
+//           measures it).
 //           The run ends when its last word is acked. It is abandoned — its outstanding reads
 //           drained (discarded) before any other request is served — when an acked beat says it is
 //           the last (wb_cti != 010) before the run's end, when a request asks for anything but
