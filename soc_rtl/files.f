@@ -7,6 +7,7 @@ soc_rtl/soc_wb_decoder.v
 soc_rtl/soc_ram.v
 soc_rtl/soc_uart.v
 soc_rtl/soc_sys.v
+soc_rtl/soc_wb_stage.v
 soc_rtl/soc_spiflash.v
 soc_rtl/usb/usb_pkg.sv
 soc_rtl/usb/usb_ls_tx.v

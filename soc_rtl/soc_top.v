@@ -14,9 +14,15 @@
 //
 //   VexRiscv iBus ─┐                      ┌─ soc_ram (RAM_BYTES, RAM_INIT)
 //                  ├─ soc_wb_arbiter ─ soc_wb_decoder ─┼─ gpu_wb_slave ─ gpu_top ─ VGA pins
-//   VexRiscv dBus ─┘   (round robin,      (regions,    ├─ soc_uart ─ uart_rx / uart_tx
-//                       per CYC)           err for     └─ soc_sys ─ leds, exit, timer, bus errors
-//                                          the rest)
+//   VexRiscv dBus ─┘   (round robin,      (regions,    ├─ (the SDRAM port)
+//                       per CYC)           err for     └─ soc_wb_stage ─┬─ soc_uart ─ uart_rx / uart_tx
+//                                          the rest)      (a clock)     ├─ soc_sys ─ leds, exit, timer, bus errors
+//                                                                       └─ flash, SDRAM registers, USB host
+//
+// The slow slaves (the UART, SYS, the flash, the SDRAM controller's registers, the USB host) take
+// their requests from soc_wb_stage's flops, a clock after the bus: the bus's paths from the CPU
+// end there instead of in their logic, some by the pins (issue #27); none of them is on a frame's
+// hot path (the RAM, the SDRAM and the GPU are reached directly).
 //
 // Reset: a power-on counter holds everything in reset for POR_CLKS clocks after configuration (the
 // FPGA's flops start at their initial values), and again after ext_rst (a button; two-flop
@@ -76,6 +82,7 @@ module soc_top #(
     input  wire [31:0]               sdram_dat_r,
     input  wire                      sdram_ack,
     input  wire                      sdram_err,
+    // the controller's registers: from soc_wb_stage's flops (cyc and stb together)
     output wire                      sdram_ctrl_cyc,
     output wire                      sdram_ctrl_stb,
     output wire                      sdram_ctrl_we,
@@ -237,6 +244,8 @@ module soc_top #(
     wire        flash_stb, flash_ack, flash_err;
     wire [31:0] flash_dat_r;
     wire        usb_stb, usb_ack, usb_err;
+    // the decoder's selects of the slow slaves (soc_wb_stage takes them; *_stb are its outputs)
+    wire        flash_req, sdram_ctrl_req, uart_req, sys_req, usb_req;
     wire [31:0] usb_dat_r;
 
     soc_wb_decoder #(
@@ -259,11 +268,11 @@ module soc_top #(
         .sdram_dat_r(sdram_dat_r),
         .sdram_ack  (sdram_ack),
         .sdram_err  (sdram_err),
-        .sdram_ctrl_stb  (sdram_ctrl_stb),
+        .sdram_ctrl_stb  (sdram_ctrl_req),
         .sdram_ctrl_dat_r(sdram_ctrl_dat_r),
         .sdram_ctrl_ack  (sdram_ctrl_ack),
         .sdram_ctrl_err  (sdram_ctrl_err),
-        .flash_stb  (flash_stb),
+        .flash_stb  (flash_req),
         .flash_dat_r(flash_dat_r),
         .flash_ack  (flash_ack),
         .flash_err  (flash_err),
@@ -271,15 +280,15 @@ module soc_top #(
         .gpu_dat_r  (gpu_dat_r),
         .gpu_ack    (gpu_ack),
         .gpu_err    (gpu_err),
-        .uart_stb   (uart_stb),
+        .uart_stb   (uart_req),
         .uart_dat_r (uart_dat_r),
         .uart_ack   (uart_ack),
         .uart_err   (uart_err),
-        .sys_stb    (sys_stb),
+        .sys_stb    (sys_req),
         .sys_dat_r  (sys_dat_r),
         .sys_ack    (sys_ack),
         .sys_err    (sys_err),
-        .usb_stb    (usb_stb),
+        .usb_stb    (usb_req),
         .usb_dat_r  (usb_dat_r),
         .usb_ack    (usb_ack),
         .usb_err    (usb_err)
@@ -293,13 +302,56 @@ module soc_top #(
     assign sdram_dat_w      = bus_dat_w;
     assign sdram_sel        = bus_sel;
     assign sdram_cti        = bus_cti;
-    assign sdram_ctrl_cyc   = bus_cyc;
-    assign sdram_ctrl_we    = bus_we;
-    assign sdram_ctrl_adr   = bus_adr[SDRAM_CTRL_AW-1:0];
-    assign sdram_ctrl_dat_w = bus_dat_w;
-    assign sdram_ctrl_sel   = bus_sel;
 
+    // ---- the slow slaves, behind one register stage: their requests from its flops ----
+    localparam integer SLOW_N = 5;
+    localparam integer SLOW_FLASH = 0, SLOW_SDRAM_CTRL = 1, SLOW_UART = 2, SLOW_SYS = 3, SLOW_USB = 4;
     localparam integer FLASH_AW = $clog2(soc_pkg::SOC_FLASH_WINDOW_BYTES / 4);
+    localparam integer UART_AW = $clog2(soc_pkg::SOC_UART_WINDOW_BYTES / 4);
+    localparam integer SYS_AW = $clog2(soc_pkg::SOC_SYS_WINDOW_BYTES / 4);
+    localparam integer USB_AW = $clog2(soc_pkg::SOC_USB_WINDOW_BYTES / 4);
+    // the word address bits the slowest-decoded of them needs: the widest window's
+    localparam integer SLOW_AW = max_of(max_of(FLASH_AW, SDRAM_CTRL_AW), max_of(max_of(UART_AW, SYS_AW), USB_AW));
+    function automatic integer max_of(input integer a, input integer b);
+        max_of = a > b ? a : b;
+    endfunction
+    wire [SLOW_N-1:0] slow_stb;
+    wire        slow_cyc, slow_we;
+    wire [SLOW_AW-1:0] slow_adr;
+    wire [31:0] slow_dat_w;
+    wire [3:0]  slow_sel;
+    soc_wb_stage #(
+        .N  (SLOW_N),
+        .AW (SLOW_AW)
+    ) u_slow (
+        .clk      (clk),
+        .rst      (rst),
+        .cyc      (bus_cyc),
+        .m_stb    ({usb_req, sys_req, uart_req, sdram_ctrl_req, flash_req}),
+        .we       (bus_we),
+        .adr      (bus_adr[SLOW_AW-1:0]),
+        .dat_w    (bus_dat_w),
+        .sel      (bus_sel),
+        .s_cyc    (slow_cyc),
+        .s_stb    (slow_stb),
+        .s_we     (slow_we),
+        .s_adr    (slow_adr),
+        .s_dat_w  (slow_dat_w),
+        .s_sel    (slow_sel),
+        .s_answer ({usb_ack || usb_err, sys_ack || sys_err, uart_ack || uart_err,
+                    sdram_ctrl_ack || sdram_ctrl_err, flash_ack || flash_err})
+    );
+    assign flash_stb        = slow_stb[SLOW_FLASH];
+    assign uart_stb         = slow_stb[SLOW_UART];
+    assign sys_stb          = slow_stb[SLOW_SYS];
+    assign usb_stb          = slow_stb[SLOW_USB];
+    assign sdram_ctrl_cyc   = slow_cyc;
+    assign sdram_ctrl_stb   = slow_stb[SLOW_SDRAM_CTRL];
+    assign sdram_ctrl_we    = slow_we;
+    assign sdram_ctrl_adr   = slow_adr[SDRAM_CTRL_AW-1:0];
+    assign sdram_ctrl_dat_w = slow_dat_w;
+    assign sdram_ctrl_sel   = slow_sel;
+
     generate if (SDRAM_BYTES != 0) begin : g_flash
         soc_spiflash #(
             .CLK_HZ    (CLK_HZ),
@@ -307,12 +359,12 @@ module soc_top #(
         ) u_flash (
             .clk        (clk),
             .rst        (rst),
-            .wb_cyc     (bus_cyc),
+            .wb_cyc     (slow_cyc),
             .wb_stb     (flash_stb),
-            .wb_we      (bus_we),
-            .wb_adr     (bus_adr[FLASH_AW-1:0]),
-            .wb_sel     (bus_sel),
-            .wb_dat_w   (bus_dat_w),
+            .wb_we      (slow_we),
+            .wb_adr     (slow_adr[FLASH_AW-1:0]),
+            .wb_sel     (slow_sel),
+            .wb_dat_w   (slow_dat_w),
             .wb_dat_r   (flash_dat_r),
             .wb_ack     (flash_ack),
             .wb_err     (flash_err),
@@ -329,7 +381,7 @@ module soc_top #(
         assign flash_cs_n  = 1'b1;
         assign flash_sck   = 1'b0;
         assign flash_mosi  = 1'b0;
-        wire unused_flash = &{1'b0, flash_stb, flash_miso};
+        wire unused_flash = &{1'b0, flash_stb, flash_miso, slow_adr};  // (the flash's address bits)
     end endgenerate
 
     soc_ram #(
@@ -421,11 +473,11 @@ module soc_top #(
     ) u_uart (
         .clk           (clk),
         .rst           (rst),
-        .wb_cyc        (bus_cyc),
+        .wb_cyc        (slow_cyc),
         .wb_stb        (uart_stb),
-        .wb_we         (bus_we),
-        .wb_adr        (bus_adr[5:0]),
-        .wb_dat_w      (bus_dat_w[7:0]),
+        .wb_we         (slow_we),
+        .wb_adr        (slow_adr[UART_AW-1:0]),
+        .wb_dat_w      (slow_dat_w[7:0]),
         .wb_dat_r      (uart_dat_r),
         .wb_ack        (uart_ack),
         .wb_err        (uart_err),
@@ -433,19 +485,18 @@ module soc_top #(
         .uart_tx       (uart_tx)
     );
 
-    localparam integer USB_AW = $clog2(soc_pkg::SOC_USB_WINDOW_BYTES);
     generate if (USB_HOST != 0) begin : g_usb
         soc_usb #(
             .SYS_HZ (CLK_HZ)
         ) u_usb (
             .clk        (clk),
             .rst        (rst),
-            .wb_cyc     (bus_cyc),
+            .wb_cyc     (slow_cyc),
             .wb_stb     (usb_stb),
-            .wb_we      (bus_we),
-            .wb_adr     (bus_adr[USB_AW-3:0]),
-            .wb_dat_w   (bus_dat_w),
-            .wb_sel     (bus_sel),
+            .wb_we      (slow_we),
+            .wb_adr     (slow_adr[USB_AW-1:0]),
+            .wb_dat_w   (slow_dat_w),
+            .wb_sel     (slow_sel),
             .wb_dat_r   (usb_dat_r),
             .wb_ack     (usb_ack),
             .wb_err     (usb_err),
@@ -478,12 +529,12 @@ module soc_top #(
     ) u_sys (
         .clk          (clk),
         .rst          (rst),
-        .wb_cyc       (bus_cyc),
+        .wb_cyc       (slow_cyc),
         .wb_stb       (sys_stb),
-        .wb_we        (bus_we),
-        .wb_adr       (bus_adr[5:0]),
-        .wb_dat_w     (bus_dat_w),
-        .wb_sel       (bus_sel),
+        .wb_we        (slow_we),
+        .wb_adr       (slow_adr[SYS_AW-1:0]),
+        .wb_dat_w     (slow_dat_w),
+        .wb_sel       (slow_sel),
         .wb_dat_r     (sys_dat_r),
         .wb_ack       (sys_ack),
         .wb_err       (sys_err),
