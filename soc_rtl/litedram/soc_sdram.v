@@ -91,8 +91,10 @@ module soc_sdram #(
 
     // The CPU's port: Wishbone onto LiteDRAM's native port (user port "cpu" of ulx3s_sdram.yml).
     localparam integer NAW = CORE_AW + $clog2(32 / NATIVE_DW);
-    wire                 cmd_valid, cmd_ready, cmd_we;
+    wire                 cmd_valid, cmd_ready, cmd_we;       // sdram_wb_burst's commands
     wire [NAW-1:0]       cmd_addr;
+    wire                 core_cmd_valid, core_cmd_ready, core_cmd_we;   // ... into LiteDRAM
+    wire [NAW-1:0]       core_cmd_addr;
     wire                 wdata_valid, wdata_ready;
     wire [NATIVE_DW-1:0] wdata_data;
     wire [NATIVE_DW/8-1:0] wdata_we;
@@ -129,6 +131,22 @@ module soc_sdram #(
         .native_rdata_data  (rdata_data)
     );
 
+    // LiteDRAM's cmd_ready is combinational through its crossbar: a register slice keeps it out of
+    // sdram_wb_burst's (and so the CPU bus's) clock. One clock more per command's start, none per
+    // command of a line's stream (issue #27; docs/sdram.md).
+    soc_stream_slice #(
+        .W (NAW + 1)
+    ) u_cmd_slice (
+        .clk       (clk),
+        .rst       (rst),
+        .in_valid  (cmd_valid),
+        .in_ready  (cmd_ready),
+        .in_data   ({cmd_we, cmd_addr}),
+        .out_valid (core_cmd_valid),
+        .out_ready (core_cmd_ready),
+        .out_data  ({core_cmd_we, core_cmd_addr})
+    );
+
     wire unused_adr = &{1'b0, sdram_adr[AW-1:CORE_AW],     // above SDRAM_BYTES: the decoder refuses it
                         gpu_mem_cmd_addr[GPU_MEM_AW-1:NAW]};  // soc_top places the frames below it
     wire unused_clk, unused_rst, unused_init_error;
@@ -152,10 +170,10 @@ module soc_sdram #(
         .sdram_cke            (pin_cke),
         .sdram_dm             (pin_dqm),
         .sdram_dq             (pin_dq),
-        .user_port_cpu_cmd_valid   (cmd_valid),
-        .user_port_cpu_cmd_ready   (cmd_ready),
-        .user_port_cpu_cmd_we      (cmd_we),
-        .user_port_cpu_cmd_addr    (cmd_addr),
+        .user_port_cpu_cmd_valid   (core_cmd_valid),
+        .user_port_cpu_cmd_ready   (core_cmd_ready),
+        .user_port_cpu_cmd_we      (core_cmd_we),
+        .user_port_cpu_cmd_addr    (core_cmd_addr),
         .user_port_cpu_wdata_valid (wdata_valid),
         .user_port_cpu_wdata_ready (wdata_ready),
         .user_port_cpu_wdata_data  (wdata_data),

@@ -38,7 +38,7 @@ build() {
     done
     run_to "$work/$name/verilator.log" 600 verilator --cc --exe --build -j 2 -O2 -Wno-fatal -Wno-lint -Wno-style \
         --top-module litedram_tb_top --Mdir "$work/$name/obj" -o litedram_tb \
-        --timescale 1ns/1ps -I"$PWD" soc_rtl/soc_pkg.sv soc_rtl/litedram/sdram_wb_burst.v soc_rtl/litedram/soc_sdram.v \
+        --timescale 1ns/1ps -I"$PWD" soc_rtl/soc_pkg.sv soc_rtl/soc_stream_slice.v soc_rtl/litedram/sdram_wb_burst.v soc_rtl/litedram/soc_sdram.v \
         tests/sdram/litedram_tb_top.sv \
         "$work/$name/gen/litedram_core.v" cosim/sdram/ecp5/*.v \
         "$PWD/tests/sdram/litedram_tb.cpp" "$PWD/cosim/sdram/sdram_chip.cpp" \
