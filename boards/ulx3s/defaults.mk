@@ -9,7 +9,7 @@
 # Each default follows the one before it, unless given: SOC_MEM=ram (the on-chip build, netlist-sim's
 # and crossings') leaves the frames on chip at 320x240 without a depth buffer, as before;
 # SOC_MEM=sdram FRAME_DRAM=0 the firmware alone in the SDRAM.
-ULX3S_DEFAULT_GOALS := bitstream synth-board ulx3s-dir flash load board-fw
+ULX3S_DEFAULT_GOALS := bitstream synth-board ulx3s-dir flash load board-fw timing-groups
 ifeq ($(or $(BOARD),ulx3s),ulx3s)
 ifneq ($(filter $(ULX3S_DEFAULT_GOALS),$(MAKECMDGOALS)),)
 SOC_MEM    ?= sdram
