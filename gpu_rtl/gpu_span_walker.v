@@ -377,19 +377,24 @@ module gpu_span_walker #(
                     end
                 end
                 S_SEEK, S_SCAN: begin
+                    // The candidate's fields are taken in every clock, valid or not: only its
+                    // valid flag depends on the coverage (which waits for the edges' adds), so
+                    // the coverage drives a few flops' inputs, not the enables of all of them
+                    // (issue #27: that enable was the board's walker path, 16.8 ns). A candidate
+                    // lives one clock; nothing reads its fields without its valid flag.
                     if (draw_span && lane_cov != {SPAN_W{1'b0}}) begin
                         cand_valid_q <= 1'b1;
-                        cand_depth_q <= ztest_q;
-                        cand_addr_q <= row_addr_q + WAW'(col_q);
-                        cand_data_q <= {SPAN_W{color_q}};
-                        cand_mask_q <= lane_cov;
-                        cand_z_q <= lane_z;
-                        cand_shade_q <= shade_q;
-                        cand_lvl_q <= lane_lvl;
-                        cand_x_q <= 2'(32'(col_q) * SPAN_W);
-                        cand_y_q <= row_q[1:0];
                         ev_span_written <= 1'b1;
                     end
+                    cand_depth_q <= ztest_q;
+                    cand_addr_q <= row_addr_q + WAW'(col_q);
+                    cand_data_q <= {SPAN_W{color_q}};
+                    cand_mask_q <= lane_cov;
+                    cand_z_q <= lane_z;
+                    cand_shade_q <= shade_q;
+                    cand_lvl_q <= lane_lvl;
+                    cand_x_q <= 2'(32'(col_q) * SPAN_W);
+                    cand_y_q <= row_q[1:0];
                     if (first_span) begin
                         col_first_q <= col_q;
                         for (k = 0; k < 3; k = k + 1) begin
@@ -446,14 +451,12 @@ module gpu_span_walker #(
                     end
                 end
                 S_LINE: begin
-                    if (line_on_screen) begin
-                        cand_valid_q <= 1'b1;
-                        cand_depth_q <= 1'b0;
-                        cand_shade_q <= 1'b0;
-                        cand_addr_q <= line_addr;
-                        cand_data_q <= {SPAN_W{color_q}};
-                        cand_mask_q <= SPAN_W'(1) << line_lane;
-                    end
+                    cand_valid_q <= line_on_screen;   // the fields as for spans: every clock
+                    cand_depth_q <= 1'b0;
+                    cand_shade_q <= 1'b0;
+                    cand_addr_q <= line_addr;
+                    cand_data_q <= {SPAN_W{color_q}};
+                    cand_mask_q <= SPAN_W'(1) << line_lane;
                     // Bresenham: step the minor axis when the error is positive, then the major one.
                     if (lerr_q > 0) begin
                         if (lxmajor_q) begin
