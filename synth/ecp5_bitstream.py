@@ -19,7 +19,8 @@ The source lists are files.f files (one path a line, `//` comments), read in the
 --crossings: right after synthesis, synth/crossings.py checks the netlist's clock-domain crossings
 against that file (the table to DIR/crossings.md) and the flow stops (status 1) on one it does not
 declare, or on an entry that matches none.
---related FROM:TO: clocks FROM and TO (names as the fmax table gives them) come from one PLL, one
+--related FROM:TO: clocks FROM and TO (names as the fmax table gives them, or INSTANCE/PORT: the
+cell output that drives the clock, a PLL's) come from one PLL, one
 a whole multiple of the other with their rising edges aligned (LiteDRAM's half-rate PHY: the system
 clock and twice it), so a path between them has the faster one's period from its launching edge to
 the first capturing one. nextpnr-ecp5 times each clock alone and only reports the paths between
@@ -119,11 +120,33 @@ def clock_name(net):
     return net.replace("$glbnet$", "").replace("$TRELLIS_IO_IN", "")
 
 
-def related_path(rep, spec):
+def clock_of_port(json_path, top, ref, clocks):
+    """The clock (a name of nextpnr's report, among CLOCKS) driven by cell port REF = INSTANCE/PORT
+    of the synthesised netlist (a PLL's output): nextpnr names a clock after one of its net's names,
+    whichever the netlist kept, so a clock is found by its source, not by a net name that the next
+    change of the RTL may drop (the system clock was u_sdram.u_core.sys_clk, then
+    u_sdram.u_cmd_slice.clk)."""
+    inst, port = ref.rsplit("/", 1)
+    with open(json_path) as f:
+        mod = json.load(f)["modules"][top]
+    cell = mod["cells"].get(inst)
+    if cell is None or port not in cell["connections"]:
+        sys.exit(f"ecp5_bitstream: --related: no cell port {ref} in {json_path}")
+    bits = cell["connections"][port]
+    names = [n for n, v in mod["netnames"].items() if v["bits"] == bits and n in clocks]
+    if len(names) != 1:
+        sys.exit(f"ecp5_bitstream: --related: {ref} drives {len(names)} of the report's clocks "
+                 f"({', '.join(sorted(clocks))})")
+    return names[0]
+
+
+def related_path(rep, spec, json_path, top):
     """--related FROM:TO against nextpnr's report REP: (FROM, TO, the faster clock's period in ns,
-    the longest FROM -> TO path in ns)."""
-    src, dst = spec.split(":")
+    the longest FROM -> TO path in ns). A clock is named as the report names it, or as the cell port
+    that drives it, INSTANCE/PORT (clock_of_port)."""
     mhz = {clock_name(net): v["constraint"] for net, v in rep["fmax"].items()}
+    src, dst = (clock_of_port(json_path, top, name, mhz) if "/" in name else name
+                for name in spec.split(":"))
     for name in (src, dst):
         if name not in mhz:
             sys.exit(f"ecp5_bitstream: --related {spec}: no clock {name} (clocks: {', '.join(sorted(mhz))})")
@@ -246,7 +269,7 @@ def main():
         if v["achieved"] < v["constraint"]:
             failed.append(name)
     for spec in a.related:
-        src, dst, budget, worst = related_path(rep, spec)
+        src, dst, budget, worst = related_path(rep, spec, json_path, a.top)
         print(f"| {src} -> {dst} | {budget:.2f} ns | {worst:.2f} ns | {budget - worst:+.2f} ns |")
         if worst > budget:
             failed.append(f"{src} -> {dst}")

@@ -129,9 +129,10 @@ ULX3S_FLOW  += $(if $(SOC_MEM_SUFFIX),,--crossings $(ULX3S_CROSSINGS))
 # rising edges aligned): LiteDRAM's half-rate PHY moves each system clock's commands and data to
 # the pins' registers and the read beats back with one clk2x period for each path (the earliest
 # capturing edge after the launching one), which nextpnr does not constrain: checked after place and
-# route (synth/ecp5_bitstream.py --related).
-ULX3S_FLOW  += $(if $(SOC_MEM_SUFFIX),--related u_sdram.u_core.sys_clk:u_sdram.clk2x \
-                 --related u_sdram.clk2x:u_sdram.u_core.sys_clk)
+# route (synth/ecp5_bitstream.py --related). Named by the PLL's outputs (CLKOS the system clock,
+# CLKOP twice it): nextpnr names a clock after whichever of its net's names the netlist kept.
+ULX3S_FLOW  += $(if $(SOC_MEM_SUFFIX),--related u_sdram_pll.u_pll/CLKOS:u_sdram_pll.u_pll/CLKOP \
+                 --related u_sdram_pll.u_pll/CLKOP:u_sdram_pll.u_pll/CLKOS)
 # YoWASP's tools see the working directory only: the core's path relative to it (in .venv/).
 SOC_CPU_V_REL = $(patsubst $(CURDIR)/%,%,$(SOC_CPU_V))
 

@@ -226,7 +226,10 @@ module sdram_wb_burst #(
     assign native_rdata_ready = 1'b1;
 
     // ---- the write queue's pointers ----
-    wire wq_cmd_fire = cmd_fire && wq_cmds;
+    // A queued write's command goes whenever the port is ready (the command is valid whenever writes
+    // wait): written without cmd_fire, which also holds a new read's request from the bus, so that
+    // no path runs from the bus's request into the queue's pointers (the USB build's, 19.4 ns).
+    wire wq_cmd_fire = wq_cmds && native_cmd_ready;
     wire wq_dat_fire = native_wdata_ready && native_wdata_valid;
     wire [QW-1:0] wq_di = wq_dat_q[QW-1:0];
     always @(posedge clk) begin
