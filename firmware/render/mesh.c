@@ -30,6 +30,8 @@ void mesh_clear(struct mesh *m)
     m->radius = 0;
     m->full = false;
     m->box = false;
+    m->lattice_diag = 0;
+    m->lattice_cols = 0;
 }
 
 uint16_t mesh_add_vertex(struct mesh *m, vec3 p)
@@ -200,6 +202,37 @@ void mesh_set_grid(struct mesh *m, uint32_t rows, uint32_t cols, bool flip,
     m->grid.normal14 = normal14;
     m->normal_count = rows * cols;
     m->face_count = 2u * rows * cols;
+}
+
+bool mesh_set_lattice(struct mesh *m, uint32_t rows, uint32_t cols, uint32_t diag0)
+{
+    const uint32_t w = cols + 1u;  /* vertices per row */
+    const struct mesh_face *face = m->faces;
+
+    if (m->grid.rows != 0u || m->full || rows == 0u || cols == 0u || rows > 65535u ||
+        cols > 65534u || m->vert_count != (rows + 1u) * w || m->face_count != 2u * rows * cols) {
+        return false;
+    }
+    for (uint32_t r = 0; r < rows; r++) {
+        for (uint32_t c = 0; c < cols; c++, face += 2) {
+            const uint32_t a = r * w + c;
+            const uint32_t b = a + w;
+            const uint32_t cc = b + 1u;
+            const uint32_t d = a + 1u;
+            const bool bd = ((r + c + diag0) & 1u) != 0u;
+            const uint32_t want[2][3] = {{a, b, bd ? d : cc}, {bd ? b : a, cc, d}};
+
+            for (uint32_t h = 0; h < 2u; h++) {
+                if (face[h].v[0] != want[h][0] || face[h].v[1] != want[h][1] ||
+                    face[h].v[2] != want[h][2] || (face[h].flags & MESH_FACE_QUAD) != 0u) {
+                    return false;
+                }
+            }
+        }
+    }
+    m->lattice_diag = (uint8_t)(diag0 & 1u);
+    m->lattice_cols = (uint16_t)w;
+    return true;
 }
 
 const struct mesh_face *mesh_face_at(const struct mesh *m, uint32_t fi, struct mesh_face *tmp)

@@ -61,6 +61,11 @@ struct mesh {
     vec3 box_lo;
     vec3 box_hi;
     bool full;      /* an add did not fit its array: the mesh is incomplete */
+    /* A lattice mesh (mesh_set_lattice; in the padding after `full`, so a mesh stays its size):
+     * faces stored, each with the corners a lattice of quads gives it, which a face loop can then
+     * walk instead of reading them. */
+    uint8_t lattice_diag;   /* quad (0, 0)'s diagonal: 0 = a-c, 1 = b-d (it alternates) */
+    uint16_t lattice_cols;  /* vertices per lattice row; 0: not a lattice mesh */
     /* A grid mesh (mesh_set_grid): faces implicit, not stored; faces is then unused. */
     struct mesh_grid {
         uint16_t rows;           /* 0: not a grid mesh */
@@ -131,6 +136,21 @@ static inline void mesh_grid_face(const struct mesh_grid *g, uint32_t i, uint32_
     /* The quad's diagonal a-c: half 0's edge 2 (c -> a), half 1's edge 0 (a -> c). */
     out->flags = (uint8_t)MESH_FACE_EDGE_HIDDEN((half == 0u) ? 2u : 0u);
 }
+
+/*
+ * A lattice mesh: (rows + 1) x (cols + 1) vertices, vertex (r, c) at r * (cols + 1) + c, and faces
+ * 2q, 2q + 1 the halves of quad q = r * cols + c, whose corners are a = (r, c), b = (r + 1, c),
+ * c' = (r + 1, c + 1), d = (r, c + 1): split along a-c' as (a, b, c') and (a, c', d), or along b-d
+ * as (a, b, d) and (b, c', d); quad (0, 0) along diag0's diagonal (0: a-c', 1: b-d), and the
+ * diagonal alternating from quad to quad along rows and columns (a height field's checkerboard:
+ * the landscape's tiles). Unlike a grid mesh the faces are stored, with their own materials,
+ * normals and flags; mesh_set_lattice only checks that the built faces are exactly that, none
+ * flagged MESH_FACE_QUAD, and then marks the mesh, so that render.c's lattice face loop may form
+ * a face's corners from its place instead of reading them. Returns whether it did (else the mesh
+ * is left unmarked, and any face loop draws it). The faces must not change while it is marked
+ * (mesh_clear unmarks).
+ */
+bool mesh_set_lattice(struct mesh *m, uint32_t rows, uint32_t cols, uint32_t diag0);
 
 /* Per-vertex normals (a render_object's vnormal14, render.h): 3 Q1.14 values a vertex, as a grid
  * mesh's normal14 holds per quad. Normal i widened as mesh_normal widens a grid's. */

@@ -816,6 +816,282 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
     f->stats.faces_emitted += (np - np_start) - w.np_general;  /* the fast path: one per face */
 }
 
+/* A frame primitive's fields, written as its two words where render_prim has them (a narrow
+ * frame on a little-endian CPU, render.h): i0, i1, i2 are frame vertex numbers, below
+ * RENDER_INDEX_LIMIT = 2^16 there, so no field needs masking; color and kind are bytes. */
+static inline void render_prim_put(struct render_prim *p, uint32_t i0, uint32_t i1, uint32_t i2,
+                                   uint32_t color, uint32_t kind)
+{
+#if !FW_RENDER_WIDE_INDEX && defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    p->w[0] = i0 | (i1 << 16);
+    p->w[1] = i2 | (color << 16) | (kind << 24);
+#else
+    p->v[0] = (render_index)i0;
+    p->v[1] = (render_index)i1;
+    p->v[2] = (render_index)i2;
+    p->color = (uint8_t)color;
+    p->kind = (uint8_t)kind;
+#endif
+}
+
+/* One corner of a lattice quad, read once for both of the quad's faces (the stores of the first
+ * face's primitive could otherwise, for all the compiler knows, change the vertices). */
+struct render_lattice_corner {
+    int32_t x, y;    /* Q12.4 */
+    uint32_t depth;  /* sort depth */
+};
+
+static inline __attribute__((always_inline)) struct render_lattice_corner
+render_lattice_corner(const struct proj_vertex *v)
+{
+    struct render_lattice_corner k;
+
+    k.x = v->sx;
+    k.y = v->sy;
+    k.depth = v->depth;
+    return k;
+}
+
+/* What render_lattice_faces' faces share, and what they count: the next primitive and sort item
+ * as pointers, and the next item's payload with the largest draw key above it, from which a
+ * face's item is one subtraction (render_lattice_face). */
+struct render_lattice_walk {
+    struct render_prim *prim;       /* the frame's primitives */
+    struct render_prim *p;          /* the next one: prim + np */
+    struct render_prim *p_end;      /* prim + prim_cap */
+    sort_item_t *item;              /* sort_item + np */
+    sort_item_t key_np;             /* sort_item_make(0xFFFF, np) */
+    uint8_t *levels;     /* the object's level cache (render_lattice_faces_loop requires one) */
+    uint32_t n_back;
+};
+
+/* The walk's pointers and key for np primitives. */
+static inline void render_lattice_at(struct render_lattice_walk *w, sort_item_t *sort_item,
+                                     uint32_t np)
+{
+    w->p = w->prim + np;
+    w->item = sort_item + np;
+    w->key_np = sort_item_make(0xFFFFu, np);
+}
+
+/* A level cache's miss, out of line (once per normal while the light stays): the level of normal
+ * `normal`, entered in the cache. */
+static uint32_t __attribute__((noinline))
+render_level_fill(uint8_t *levels, const struct palette_light *light, const struct mesh *mesh,
+                  uint32_t normal)
+{
+    const uint32_t level = palette_light_level(light, mesh->normals[normal]);
+
+    levels[normal] = (uint8_t)level;
+    return level;
+}
+
+/* What render_face_any counts besides the primitives. */
+struct render_face_counts {
+    uint32_t np_general; /* primitives the general path added */
+    uint32_t n_frustum;
+    uint32_t n_back;
+};
+
+/*
+ * One face of any mesh with a faces array, exactly as render_faces treats it (its tests in its
+ * order, the same primitive, key and counts), every option a run-time one: one copy for the
+ * lattice loop's other cases (a quad with a corner off the screen; wireframe, Gouraud, an eye
+ * material, a mesh that is not a lattice), so a program with only lattice meshes does not link
+ * render_faces' four loops (the landscape's one-scene image must fit the SoC's 192 KiB). np
+ * primitives so far; returns the count with this face's.
+ */
+static uint32_t __attribute__((noinline))
+render_face_any(struct render_frame *f, const struct render_faces_job *job, bool check,
+                const struct mesh_face *face, uint32_t np, struct render_face_counts *n)
+{
+    const struct mesh *mesh = job->mesh;
+    const struct proj_vertex *vert = &f->vert[job->base];
+    const struct proj_vertex *a = &vert[face->v[0]];
+    const struct proj_vertex *b = &vert[face->v[1]];
+    const struct proj_vertex *c = &vert[face->v[2]];
+    const uint32_t base = job->base;
+    uint32_t mat;
+    uint32_t level;
+
+    if (check && (a->code & b->code & c->code & PROJ_CULL_BITS) != 0u) {
+        n->n_frustum++;
+        return np;
+    }
+    if ((check && ((a->code | b->code | c->code) & PROJ_CLIP_BITS) != 0u) ||
+        (FW_WITH_WIREFRAME && job->pass->wireframe)) {
+        f->prim_count = np;
+        render_face_general(f, job->pass, job->mv, mesh, face, base, job->light,
+                            job->material_override, job->vnormal14);
+        n->np_general += f->prim_count - np;
+        return f->prim_count;
+    }
+    if (check ? (proj_signed_area(a, b, c) <= 0) : (proj_signed_area_inside(a, b, c) <= 0)) {
+        n->n_back++;
+        return np;
+    }
+    if (np >= f->prim_cap) {
+        f->stats.dropped++;
+        return np;
+    }
+    mat = (job->material_override != 0u) ? job->material_override : face->material;
+    if (FW_WITH_GOURAUD && job->vnormal14 != 0) {
+        render_prim_put(&f->prim[np], base + face->v[0], base + face->v[1], base + face->v[2],
+                        PAL_INDEX(mat, 0u), GPU_PRIM_KIND_TRI_GOURAUD);
+    } else {
+        if (job->levels != 0) {
+            level = job->levels[face->normal];
+            if (level == RENDER_LEVEL_UNKNOWN) {
+                level = render_level_fill(job->levels, job->light, mesh, face->normal);
+            }
+        } else {
+            level = palette_light_level(job->light, mesh->normals[face->normal]);
+        }
+        render_prim_put(&f->prim[np], base + face->v[0], base + face->v[1], base + face->v[2],
+                        PAL_INDEX(mat, level), GPU_PRIM_KIND_TRI);
+    }
+    f->sort_item[np] = render_sort_item(render_face_key(face, a, b, c), np);
+    return np + 1u;
+}
+
+/*
+ * One face of a lattice mesh in render_lattice_faces whose quad has all four corners on the screen
+ * (outcode 0, or an object inside the frustum): `face` with corners a, b, c, frame vertices ia, ib,
+ * ic (its v[0..2] plus the object's base: mesh_set_lattice checked that they are). What
+ * render_faces does with such a face, filled, flat, with its own material and cached levels (the
+ * only case render_lattice_faces_loop brings here): no outcode can cull or clip it, and its area
+ * is the 32-bit one (proj_signed_area_inside: corners on the frame keep every difference below
+ * 2^14, so it equals proj_signed_area); a lattice face is never MESH_FACE_QUAD, so its key is its
+ * three depths' sum.
+ */
+static inline __attribute__((always_inline)) void
+render_lattice_face(struct render_frame *f, const struct render_faces_job *job,
+                    struct render_lattice_walk *w, struct render_lattice_corner a,
+                    struct render_lattice_corner b, struct render_lattice_corner c, uint32_t ia,
+                    uint32_t ib, uint32_t ic, const struct mesh_face *face)
+{
+    uint32_t level;
+    uint32_t normal;
+
+    if ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) <= 0) {
+        w->n_back++;
+        return;
+    }
+    if (w->p >= w->p_end) {
+        f->stats.dropped++;
+        return;
+    }
+    normal = face->normal;
+    level = w->levels[normal];
+    if (FW_UNLIKELY(level == RENDER_LEVEL_UNKNOWN)) {
+        level = render_level_fill(w->levels, job->light, job->mesh, normal);
+    }
+    render_prim_put(w->p, ia, ib, ic, PAL_INDEX(face->material, level), GPU_PRIM_KIND_TRI);
+    /* render_sort_item(key, np) with key = the depths' sum <= 3 PROJ_DEPTH_MAX = 65535:
+     * (65535 - key) << shift | np = ((65535 << shift) | np) - (key << shift), no borrow. */
+    *w->item = w->key_np - ((sort_item_t)(a.depth + b.depth + c.depth) << SORT_KEY_SHIFT);
+    w->p++;
+    w->item++;
+    w->key_np++;
+}
+
+/*
+ * The face loop of a lattice mesh (mesh_set_lattice), quad by quad: a quad's corners come from its
+ * place in the lattice (the next quad's are the next vertices) and are read once for both its
+ * faces, so no face's vertex numbers are read or turned into addresses; material and normal still
+ * come from the stored face. A quad with a corner off the screen (only where `check`, as in
+ * render_faces: the object crosses the frustum) has both faces done by render_face_any. The same
+ * primitives, in the same order and with the same counts, as render_faces over the same faces.
+ */
+static void render_lattice_faces(struct render_frame *f, const struct render_faces_job *job_in,
+                                 bool check)
+{
+    /* A copy in locals: stores to the frame cannot change it, so the loop keeps it in registers. */
+    const struct render_faces_job job_copy = *job_in;
+    const struct render_faces_job *const job = &job_copy;
+    const struct mesh *mesh = job->mesh;
+    const uint32_t w_verts = mesh->lattice_cols;  /* vertices per row */
+    const uint32_t cols = w_verts - 1u;           /* quads per row */
+    const uint32_t rows = mesh->face_count / (2u * cols);
+    const struct mesh_face *face = mesh->faces;
+    const struct proj_vertex *row_v = &f->vert[job->base];
+    uint32_t row_i = job->base;
+    const uint32_t np_start = f->prim_count;
+    uint32_t np;
+    struct render_lattice_walk w;
+    struct render_face_counts slow = {0, 0, 0};  /* render_face_any's */
+
+    w.prim = f->prim;
+    w.p_end = f->prim + f->prim_cap;
+    w.levels = job->levels;
+    w.n_back = 0;
+    render_lattice_at(&w, f->sort_item, np_start);
+    for (uint32_t r = 0; r < rows; r++, row_v += w_verts, row_i += w_verts) {
+        const struct proj_vertex *v = row_v;  /* corner a of quad (r, c) */
+        uint32_t ia = row_i;                  /* its frame vertex number */
+        uint32_t bd = (r + mesh->lattice_diag) & 1u;  /* 1: this quad splits along b-d */
+
+        for (const struct mesh_face *row_end = face + 2u * cols; face != row_end;
+             face += 2, v++, ia++, bd ^= 1u) {
+            struct render_lattice_corner ka;
+            struct render_lattice_corner kb;
+            struct render_lattice_corner kc;
+            struct render_lattice_corner kd;
+            uint32_t ib;
+
+            if (check && (v->code | v[w_verts].code | v[w_verts + 1u].code | v[1].code) != 0u) {
+                np = (uint32_t)(w.p - w.prim);
+                np = render_face_any(f, job, true, &face[0], np, &slow);
+                np = render_face_any(f, job, true, &face[1], np, &slow);
+                render_lattice_at(&w, f->sort_item, np);
+                continue;
+            }
+            ka = render_lattice_corner(v);
+            kb = render_lattice_corner(v + w_verts);
+            kc = render_lattice_corner(v + w_verts + 1);
+            kd = render_lattice_corner(v + 1);
+            ib = ia + w_verts;
+            if (bd != 0u) {  /* (a, b, d), (b, c', d) */
+                render_lattice_face(f, job, &w, ka, kb, kd, ia, ib, ia + 1u, &face[0]);
+                render_lattice_face(f, job, &w, kb, kc, kd, ib, ib + 1u, ia + 1u, &face[1]);
+            } else {         /* (a, b, c'), (a, c', d) */
+                render_lattice_face(f, job, &w, ka, kb, kc, ia, ib, ib + 1u, &face[0]);
+                render_lattice_face(f, job, &w, ka, kc, kd, ia, ib + 1u, ia + 1u, &face[1]);
+            }
+        }
+    }
+    np = (uint32_t)(w.p - w.prim);
+    f->prim_count = np;
+    f->stats.faces_frustum += slow.n_frustum;
+    f->stats.faces_back += w.n_back + slow.n_back;
+    f->stats.faces_emitted += (np - np_start) - slow.np_general;  /* all but the general path's */
+}
+
+void render_lattice_faces_loop(struct render_frame *f, const struct render_faces_job *job,
+                               bool inside)
+{
+    /* The lattice loop is the filled, flat pass of a lattice mesh with its own materials and a
+     * level cache; anything else (wireframe, Gouraud, anaglyph's eye material, another mesh)
+     * takes render_face_any face by face. */
+    if (job->mesh->lattice_cols == 0u || job->levels == 0 || job->material_override != 0u ||
+        (FW_WITH_GOURAUD && job->vnormal14 != 0) || (FW_WITH_WIREFRAME && job->pass->wireframe)) {
+        const uint32_t nf = job->mesh->face_count;
+        const uint32_t np_start = f->prim_count;
+        uint32_t np = np_start;
+        struct render_face_counts n = {0, 0, 0};
+
+        for (uint32_t fi = 0; fi < nf; fi++) {
+            np = render_face_any(f, job, !inside, &job->mesh->faces[fi], np, &n);
+        }
+        f->prim_count = np;
+        f->stats.faces_frustum += n.n_frustum;
+        f->stats.faces_back += n.n_back;
+        f->stats.faces_emitted += (np - np_start) - n.np_general;
+    } else {
+        render_lattice_faces(f, job, !inside);
+    }
+}
+
 void render_general_faces_loop(struct render_frame *f, const struct render_faces_job *job_in,
                                bool inside)
 {

@@ -206,6 +206,10 @@ void render_general_faces_loop(struct render_frame *f, const struct render_faces
                                bool inside);
 void render_grid_faces_loop(struct render_frame *f, const struct render_faces_job *job,
                             bool inside);
+/* A lattice mesh's (mesh_set_lattice; with a level cache, render_object.levels): the general loop's
+ * primitives, its faces' corners walked instead of read. Any other mesh goes to the general loop. */
+void render_lattice_faces_loop(struct render_frame *f, const struct render_faces_job *job,
+                               bool inside);
 
 /* Compose a pass. light: unit vector towards the light in world space. */
 void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,

@@ -179,6 +179,9 @@ static void land_build_tile(struct landscape_tile *t, int32_t ti, int32_t tj)
         }
     }
     mesh_finish(m);
+    /* Built as a lattice (mesh.h): rows j, columns i, quad (0, 0) split along a-c' where the
+     * terrain's cell (ti n, tj n) is ((gi + gj) even above): the face loop walks its corners. */
+    (void)mesh_set_lattice(m, (uint32_t)n, (uint32_t)n, (uint32_t)((ti * n + tj * n) & 1));
 }
 
 static void land_init(struct scene *s)
@@ -192,7 +195,7 @@ static void land_init(struct scene *s)
             struct landscape_tile *t = &l->tile[tj * LANDSCAPE_TILES + ti];
 
             land_build_tile(t, ti, tj);
-            scene_add_object(s, &t->mesh, &id, vec3_make(0, 0, 0), 0);
+            scene_add_lattice_object(s, &t->mesh, &id, vec3_make(0, 0, 0), 0);
             render_level_cache_init(&t->levels, t->level, LANDSCAPE_TILE_FACES);
             s->object[s->object_count - 1u].levels = &t->levels;
 #if FW_WITH_GOURAUD

@@ -140,6 +140,12 @@ void scene_add_grid_object(struct scene *s, const struct mesh *m, const mat3 *ro
     scene_new_object(s, m, rot, pos, material, render_grid_faces_loop);
 }
 
+void scene_add_lattice_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
+                              uint8_t material)
+{
+    scene_new_object(s, m, rot, pos, material, render_lattice_faces_loop);
+}
+
 bool scene_start(struct scene *s, const struct scene_desc *desc)
 {
     if (desc->state_bytes > s->state_cap || desc->max_objects > s->object_cap) {
