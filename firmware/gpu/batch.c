@@ -192,6 +192,31 @@ static inline __attribute__((always_inline)) void batch_fill_from(struct batch_c
      * than three primitive slots. */
     end = list ? RENDER_NO_POSITION : ((total - first > tri_cap) ? first + tri_cap : total);
     vtx_room = vtx_cap - 3u;
+    if (!list && f->outline_count == 0u) {
+        /* No outline in the frame: every primitive is one GPU primitive, so the n-th written is
+         * draw position first + n, and end (at most first + tri_cap) bounds both; the loop below
+         * without its outline tests and primitive count. */
+        const sort_item_t *o = &order[first];
+        const sort_item_t *const o_end = &order[end];
+        uint32_t *pw = prim_words;
+
+        while (o != o_end && nv <= vtx_room) {
+            const struct batch_prim_fields r = batch_prim_read(&prim[sort_item_payload(*o)]);
+            const uint32_t s0 = batch_vertex(&vert[r.v0], stamp, vtx, &nv);
+            const uint32_t s1 = batch_vertex(&vert[r.v1], stamp, vtx, &nv);
+            const uint32_t s2 = batch_vertex(&vert[r.v2], stamp, vtx, &nv);
+
+            pw[0] = s0 | (s1 << 16);
+            pw[1] = s2 | r.hi;
+            pw += GPU_PRIM_WORDS;
+            o++;
+        }
+        np = (uint32_t)(o - &order[first]);
+        out->vtx_count = nv;
+        out->prim_count = np;
+        cur->next = first + np;
+        return;
+    }
     while (i != end && nv <= vtx_room) {
         const struct batch_prim_fields r = batch_prim_read(&prim[sort_item_payload(order[i])]);
         const bool outline = ((r.hi >> GPU_PRIM_KIND_LSB) & RENDER_PRIM_OUTLINE) != 0u;
