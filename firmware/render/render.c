@@ -600,11 +600,15 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     const uint32_t material_override = job->material_override;
     const bool general = FW_WITH_WIREFRAME && job->pass->wireframe;
     const bool shaded = FW_WITH_GOURAUD && job->vnormal14 != 0;  /* 0 in wireframe (render_object) */
-    struct render_prim *prim = f->prim;
-    sort_item_t *sort_item = f->sort_item;
-    const uint32_t prim_cap = f->prim_cap;
+    struct render_prim *const prim = f->prim;
+    struct render_prim *const p_end = prim + f->prim_cap;
     const uint32_t np_start = f->prim_count;
-    uint32_t np = np_start;
+    /* The next primitive and sort item as pointers, and the next item's payload with the largest
+     * draw key above it (a face's item is then one subtraction, below). */
+    struct render_prim *p = prim + np_start;
+    sort_item_t *item = f->sort_item + np_start;
+    sort_item_t key_np = sort_item_make(0xFFFFu, np_start);
+    uint32_t np;
     uint32_t np_general = 0;  /* primitives the general path added (not one per face) */
     uint32_t n_frustum = 0;
     uint32_t n_back = 0;
@@ -621,29 +625,31 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
         const struct proj_vertex *c = &vert[face->v[2]];
         uint32_t mat;
         uint32_t level;
-        struct render_prim *p;
 
         if (check && (a->code & b->code & c->code & PROJ_CULL_BITS) != 0u) {
             n_frustum++;
             continue;
         }
         if ((check && ((a->code | b->code | c->code) & PROJ_CLIP_BITS) != 0u) || general) {
+            np = (uint32_t)(p - prim);
             f->prim_count = np;
             render_face_general(f, job->pass, job->mv, mesh, face, base, job->light,
                                 material_override, job->vnormal14);
             np_general += f->prim_count - np;
             np = f->prim_count;
+            p = prim + np;
+            item = f->sort_item + np;
+            key_np = sort_item_make(0xFFFFu, np);
             continue;
         }
         if (check ? (proj_signed_area(a, b, c) <= 0) : (proj_signed_area_inside(a, b, c) <= 0)) {
             n_back++;
             continue;
         }
-        if (np >= prim_cap) {
+        if (p >= p_end) {
             f->stats.dropped++;
             continue;
         }
-        p = &prim[np];
         p->v[0] = (render_index)(base + face->v[0]);
         p->v[1] = (render_index)(base + face->v[1]);
         p->v[2] = (render_index)(base + face->v[2]);
@@ -651,8 +657,10 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
         if (shaded) {
             p->color = PAL_INDEX(mat, 0u);
             p->kind = (uint8_t)GPU_PRIM_KIND_TRI_GOURAUD;
-            sort_item[np] = render_sort_item(render_face_key(face, a, b, c), np);
-            np++;
+            *item = key_np - ((sort_item_t)render_face_key(face, a, b, c) << SORT_KEY_SHIFT);
+            p++;
+            item++;
+            key_np++;
             continue;
         }
         if (cached) {
@@ -670,9 +678,14 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
         }
         p->color = PAL_INDEX(mat, level);
         p->kind = (uint8_t)GPU_PRIM_KIND_TRI;
-        sort_item[np] = render_sort_item(render_face_key(face, a, b, c), np);
-        np++;
+        /* render_sort_item(key, np): key <= 65535 (render_face_key), so
+         * (65535 - key) << shift | np = ((65535 << shift) | np) - (key << shift), no borrow. */
+        *item = key_np - ((sort_item_t)render_face_key(face, a, b, c) << SORT_KEY_SHIFT);
+        p++;
+        item++;
+        key_np++;
     }
+    np = (uint32_t)(p - prim);
     f->prim_count = np;
     f->stats.faces_frustum += n_frustum;
     f->stats.faces_back += n_back;
