@@ -2,7 +2,8 @@
  * test_render.c — the frame pipeline per object: back-face culling, frustum culling per triangle
  * and per object (bounding sphere), near-plane clipping that neither drops nor mirrors, the
  * painter's order (far first, stable), wireframe with and without GPU lines, flat lighting,
- * anaglyph colours, the overlay, and running out of room.
+ * anaglyph colours, the overlay, and running out of room; the lattice face loop against the
+ * general one.
  */
 #include <stdint.h>
 #include <string.h>
@@ -566,4 +567,171 @@ void test_render_mesh_model_range(void)
     mesh_finish(&t.m);
     CHECK_EQ(fx_overflow_count(), 2);
     fx_overflow_clear();
+}
+
+/* ---- the lattice face loop -------------------------------------------------------------- */
+
+/* A lattice mesh (mesh.h) of LAT_R x LAT_C quads over random heights, built face by face as the
+ * landscape builds its tiles: quad (r, c) split along a-c' when (r + c + diag0) is even. */
+#define LAT_R 5
+#define LAT_C 6
+#define LAT_VERTS ((LAT_R + 1) * (LAT_C + 1))
+#define LAT_FACES (2 * LAT_R * LAT_C)
+
+struct lat_mesh {
+    struct mesh m;
+    vec3 v[LAT_VERTS];
+    struct mesh_face f[LAT_FACES];
+    uvec3 n[LAT_FACES];
+    int16_t vnormal[3 * LAT_VERTS];
+};
+
+static void lat_mesh_build(struct lat_mesh *t, uint32_t diag0)
+{
+    const uint16_t w = LAT_C + 1;
+
+    mesh_init(&t->m, t->v, LAT_VERTS, t->f, LAT_FACES, t->n, LAT_FACES);
+    for (int r = 0; r <= LAT_R; r++) {
+        for (int c = 0; c <= LAT_C; c++) {
+            mesh_add_vertex(&t->m, v3(2.0 * c - LAT_C, (double)(unit_rand() % 2001u) / 1000.0 - 1.0,
+                                      2.0 * r - LAT_R));
+            mesh_normal_to_q14(u3(0, 1, 0), &t->vnormal[3 * (r * w + c)]);
+        }
+    }
+    for (uint16_t r = 0; r < LAT_R; r++) {
+        for (uint16_t c = 0; c < LAT_C; c++) {
+            const uint16_t a = (uint16_t)(r * w + c);
+            const uint16_t b = (uint16_t)(a + w);
+            const uint16_t cc = (uint16_t)(b + 1u);
+            const uint16_t d = (uint16_t)(a + 1u);
+            const uint8_t mat = (uint8_t)(MAT_RED + unit_rand() % 4u);
+
+            if (((r + c + diag0) & 1u) == 0u) {
+                mesh_add_face(&t->m, a, b, cc, mat);
+                mesh_add_face(&t->m, a, cc, d, (uint8_t)(mat + 1u));
+            } else {
+                mesh_add_face(&t->m, a, b, d, mat);
+                mesh_add_face(&t->m, b, cc, d, (uint8_t)(mat + 1u));
+            }
+        }
+    }
+    mesh_finish(&t->m);
+}
+
+/* What one object left in the test frame. */
+struct lat_result {
+    uint32_t vert_count, prim_count, outline_count;
+    struct render_stats stats;
+    uint32_t prim[64 * LAT_FACES][5];
+    sort_item_t item[64 * LAT_FACES];
+    uint32_t vert[64 * LAT_FACES][3];
+};
+
+static void lat_capture(struct lat_result *r)
+{
+    r->vert_count = test_frame.vert_count;
+    r->prim_count = test_frame.prim_count;
+    r->outline_count = test_frame.outline_count;
+    r->stats = test_frame.stats;
+    for (uint32_t i = 0; i < r->prim_count && i < 64u * LAT_FACES; i++) {
+        const struct render_prim *p = &test_frame.prim[i];
+
+        r->prim[i][0] = p->v[0];
+        r->prim[i][1] = p->v[1];
+        r->prim[i][2] = p->v[2];
+        r->prim[i][3] = p->color;
+        r->prim[i][4] = p->kind;
+        r->item[i] = test_frame.sort_item[i];
+    }
+    for (uint32_t i = 0; i < r->vert_count && i < 64u * LAT_FACES; i++) {
+        r->vert[i][0] = test_frame.vert[i].sxy;
+        r->vert[i][1] = test_frame.vert[i].zd;
+        r->vert[i][2] = test_frame.vert[i].code;
+    }
+}
+
+static int lat_same(const struct lat_result *a, const struct lat_result *b)
+{
+    if (a->vert_count != b->vert_count || a->prim_count != b->prim_count ||
+        a->outline_count != b->outline_count || memcmp(&a->stats, &b->stats, sizeof a->stats) != 0) {
+        return 0;
+    }
+    for (uint32_t i = 0; i < a->prim_count && i < 64u * LAT_FACES; i++) {
+        if (memcmp(a->prim[i], b->prim[i], sizeof a->prim[i]) != 0 || a->item[i] != b->item[i]) {
+            return 0;
+        }
+    }
+    for (uint32_t i = 0; i < a->vert_count && i < 64u * LAT_FACES; i++) {
+        if (memcmp(a->vert[i], b->vert[i], sizeof a->vert[i]) != 0) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* The lattice loop draws exactly what the general loop draws, for random views (inside the
+ * frustum, crossing its planes, the near plane and the guard band), in every mode: filled flat
+ * with and without a level cache, Gouraud, an eye material, wireframe with and without GPU lines,
+ * and with the frame running out of room. mesh_set_lattice accepts only a lattice. */
+void test_render_lattice_loop(void)
+{
+    static struct lat_mesh t;
+    static struct lat_result general;
+    static struct lat_result lattice;
+    static uint8_t cache_storage[2][LAT_FACES];
+    struct render_level_cache cache[2];
+    const uint32_t prim_cap = test_frame.prim_cap;
+    uint32_t cases = 0;
+    uint32_t clipped = 0;
+
+    unit_srand(2718u);
+    lat_mesh_build(&t, 1u);
+    t.f[7].v[2] = t.f[7].v[1];  /* not a lattice any more */
+    CHECK(!mesh_set_lattice(&t.m, LAT_R, LAT_C, 1u));
+    CHECK_EQ(t.m.lattice_cols, 0);
+    for (uint32_t diag0 = 0; diag0 < 2u; diag0++) {
+        lat_mesh_build(&t, diag0);
+        CHECK(!mesh_set_lattice(&t.m, LAT_R, LAT_C, diag0 ^ 1u));
+        CHECK(mesh_set_lattice(&t.m, LAT_R, LAT_C, diag0));
+        CHECK_EQ(t.m.lattice_cols, LAT_C + 1);
+        for (uint32_t view = 0; view < 1000u; view++) {
+            struct render_pass pass;
+            struct proj_setup ps;
+            struct cam_view cam;
+            const mat3 id = mat3_identity();
+            const uint32_t mode = view % 7u;
+            const uint32_t cap = (mode == 6u) ? 1u + unit_rand() % 40u : prim_cap;
+            struct render_object o = {0};
+
+            proj_setup_init(&ps, 200, to_real(40.0), GPU_FB_WIDTH, GPU_FB_HEIGHT);
+            cam.rot = mat3_from_yaw_pitch((fx_angle)unit_rand(),  /* pitch within +-110 degrees */
+                                           (fx_angle)(65536u - 20000u + unit_rand() % 40001u));
+            cam.eye = v3((double)(unit_rand() % 4001u) / 100.0 - 20.0,
+                         (double)(unit_rand() % 1001u) / 100.0 - 2.0,
+                         (double)(unit_rand() % 4001u) / 100.0 - 20.0);
+            render_pass_init(&pass, &ps, &cam, &id, v3(0, 0, 0), u3(0.3, 0.8, -0.5), 3);
+            pass.wireframe = (mode == 4u || mode == 5u);
+            pass.gpu_lines = (mode != 5u);
+            pass.gouraud = (mode == 2u);
+            pass.eye_material = (mode == 3u) ? MAT_ANAGLYPH_LEFT : 0u;
+            o.mesh = &t.m;
+            o.rot = mat3_identity();
+            o.vnormal14 = t.vnormal;
+            for (uint32_t k = 0; k < 2u; k++) {
+                render_level_cache_init(&cache[k], cache_storage[k], LAT_FACES);
+                o.levels = (mode == 1u) ? 0 : &cache[k];
+                o.faces = (k == 0u) ? render_general_faces_loop : render_lattice_faces_loop;
+                test_frame.prim_cap = cap;
+                begin();
+                render_object(&test_frame, &pass, &o);
+                lat_capture((k == 0u) ? &general : &lattice);
+                test_frame.prim_cap = prim_cap;
+            }
+            CHECK(lat_same(&general, &lattice));
+            cases += (general.prim_count != 0u) ? 1u : 0u;
+            clipped += (general.stats.faces_clipped != 0u) ? 1u : 0u;
+        }
+    }
+    CHECK(cases > 300u);    /* about a sixth of the 2000 random views see the mesh (355) */
+    CHECK(clipped > 100u);  /* many of those across the near plane or the guard band (260) */
 }
