@@ -1164,7 +1164,12 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
     mv.t = xf_apply(&pass->focus_to_view, vec3_make(obj->pos.x - pass->focus.x,
                                                     obj->pos.y - pass->focus.y,
                                                     obj->pos.z - pass->focus.z));
-    where = render_sphere_classify(&pass->proj, xf_apply(&mv, mesh->center), mesh->radius);
+    /* The sphere's centre in view space; a mesh centred on its own origin (the cubes') has it at
+     * mv.t, which is what xf_apply gives for the origin (every product of a zero coordinate is 0). */
+    where = render_sphere_classify(&pass->proj,
+                                   (mesh->center.x == 0 && mesh->center.y == 0 &&
+                                    mesh->center.z == 0) ? mv.t : xf_apply(&mv, mesh->center),
+                                   mesh->radius);
     if (where == RENDER_SPHERE_OUTSIDE) {
         f->stats.objects_culled++;
         f->stats.faces_culled_object += nf;
