@@ -522,6 +522,16 @@ render_project_box(const struct proj_setup *ps, const xf_affine *mv, const struc
     }
 }
 
+void render_project_boxed(const struct proj_setup *ps, const xf_affine *mv, const struct mesh *mesh,
+                          struct proj_vertex *out, bool inside)
+{
+    if (mesh->box) {
+        render_project_box(ps, mv, mesh, out, inside);
+    } else {
+        render_project_vertices(ps, mv, mesh->verts, mesh->vert_count, out, inside);
+    }
+}
+
 /* The face loop's rare cases, out of line: a face that crosses the near plane or the guard band
  * (clip.c), and every face in wireframe mode. Emits through f->prim_count. */
 static void __attribute__((noinline))
@@ -1180,9 +1190,8 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
         return;
     }
     job.base = f->vert_count;
-    if (mesh->box) {
-        render_project_box(&pass->proj, &mv, mesh, &f->vert[job.base],
-                           where == RENDER_SPHERE_INSIDE);
+    if (obj->project != 0) {
+        obj->project(&pass->proj, &mv, mesh, &f->vert[job.base], where == RENDER_SPHERE_INSIDE);
     } else {
         render_project_vertices(&pass->proj, &mv, mesh->verts, nv, &f->vert[job.base],
                                 where == RENDER_SPHERE_INSIDE);

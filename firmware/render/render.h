@@ -183,6 +183,9 @@ void render_level_cache_fill(const struct render_object *obj, const mat3 *scene_
 struct render_faces_job;
 typedef void (*render_faces_fn)(struct render_frame *f, const struct render_faces_job *job,
                                 bool inside);
+/* A projection of an object's vertices into the frame's (render_object.project). */
+typedef void (*render_project_fn)(const struct proj_setup *ps, const xf_affine *mv,
+                                  const struct mesh *mesh, struct proj_vertex *out, bool inside);
 
 struct render_object {
     const struct mesh *mesh;
@@ -198,7 +201,15 @@ struct render_object {
      * that a program links only the loops its scenes use (3 KiB each: a one-scene build must fit
      * the SoC's RAM). An object without one (0) is not drawn, and counts in stats.dropped. */
     render_faces_fn faces;
+    /* 0: every vertex through the model-view transform; render_project_boxed (scene_add_object's)
+     * takes a box mesh's eight corners the cheaper way (xf_apply_box: the same view points), so
+     * that only a program whose scenes may hold boxes links that code. */
+    render_project_fn project;
 };
+
+/* For render_object.project: a box mesh (mesh.box) by its corners, any other by its vertices. */
+void render_project_boxed(const struct proj_setup *ps, const xf_affine *mv, const struct mesh *mesh,
+                          struct proj_vertex *out, bool inside);
 
 /* The face loops, for render_object.faces: a mesh with a faces array (mesh.h), and a grid mesh
  * (implicit faces). */

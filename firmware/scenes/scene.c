@@ -105,9 +105,10 @@ static real_t scene_world_coord(real_t v)
     return v;
 }
 
-/* The next object, drawn with face loop `faces` (when the scene has room for it). */
+/* The next object, projected by `project` and drawn with face loop `faces` (when the scene has
+ * room for it). */
 static void scene_new_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
-                             uint8_t material, render_faces_fn faces)
+                             uint8_t material, render_faces_fn faces, render_project_fn project)
 {
     struct render_object *o;
 
@@ -124,26 +125,28 @@ static void scene_new_object(struct scene *s, const struct mesh *m, const mat3 *
     o->levels = 0;
     o->vnormal14 = 0;
     o->faces = faces;
+    o->project = project;
 }
 
-/* Two functions, each naming its own loop: a program links the loop only when a scene of its
- * calls the function (render_object.faces). */
+/* Three functions, each naming its own loop (and the general one the box projection: a grid or
+ * lattice mesh is never a box): a program links the loop only when a scene of its calls the
+ * function (render_object.faces, .project). */
 void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
                       uint8_t material)
 {
-    scene_new_object(s, m, rot, pos, material, render_general_faces_loop);
+    scene_new_object(s, m, rot, pos, material, render_general_faces_loop, render_project_boxed);
 }
 
 void scene_add_grid_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
                            uint8_t material)
 {
-    scene_new_object(s, m, rot, pos, material, render_grid_faces_loop);
+    scene_new_object(s, m, rot, pos, material, render_grid_faces_loop, 0);
 }
 
 void scene_add_lattice_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
                               uint8_t material)
 {
-    scene_new_object(s, m, rot, pos, material, render_lattice_faces_loop);
+    scene_new_object(s, m, rot, pos, material, render_lattice_faces_loop, 0);
 }
 
 bool scene_start(struct scene *s, const struct scene_desc *desc)
