@@ -13,17 +13,19 @@
 // RAM's read enable in one clock (the path that limited fmax on the ECP5). In the steady state that
 // clock is F_V2's, so it costs nothing; the first primitive of a batch and the one after a rejected
 // primitive wait one clock for it (F_DECODE).
-// Latency from a primitive's index read to its descriptor: 6 clocks. Rejected primitives take 2-3.
+// Latency from a primitive's index read to its descriptor: 7 clocks (the vertices pass a hand-off
+// register before stage A). Rejected primitives take 2-3.
 // A depth-tested triangle (ENABLE_ZBUF, CTRL.ZTEST) holds stage B for the depth-plane division:
 // ceil(31 / DIV_QBITS) + 4 clocks (20; gpu_plane_setup), its throughput then; the fetch of the next primitives and
 // the walk of the previous ones go on meanwhile, so large triangles hide it completely.
 // A Gouraud triangle (ENABLE_GOURAUD, PRIM_KIND_TRI_GOURAUD) holds it the same way for the intensity
 // plane's two divisions; they run beside the depth ones, so a triangle that is both waits once.
 //
-// Pipeline: fetch FSM -> stage A (vertices) -> stage B (area, box, line endpoints) -> stage C
-// (the descriptor: edge values at the first span, steps, line Bresenham state, depth and intensity
-// at the first span and their steps). A stage loads when it
-// is empty or the stage after it moves; a full descriptor with out_ready low stalls everything behind.
+// Pipeline: fetch FSM -> hand-off (the vertices as read) -> stage A (vertices, box of pixel
+// centres, differences) -> stage B (area, clamped box, line endpoints) -> stage C (the descriptor:
+// edge values at the first span, steps, line Bresenham state, depth and intensity at the first span
+// and their steps). A stage loads when it is empty or the stage after it moves; a full descriptor
+// with out_ready low stalls everything behind.
 //
 // Widths: the descriptor is a gpu_pkg::desc_t; the range arguments of its fields (edge values need
 // EDGE_NEED_W = 34 bits, EDGE_W = 36; the depth accumulator Z_W, the intensity one I_W) are in
@@ -143,9 +145,9 @@ module gpu_prim_setup #(
         end
     end
 
-    wire stage_a_free;                 // stage A can take the pending vertex set this cycle
-    wire check_stall = (fstate_q == F_CHECK || fstate_q == F_DRAIN) && v2_pending_q && !stage_a_free;
-    wire handoff = v2_pending_q && stage_a_free && (fstate_q == F_CHECK || fstate_q == F_DRAIN);
+    wire stage_h_free;                 // the hand-off registers can take the pending vertex set
+    wire check_stall = (fstate_q == F_CHECK || fstate_q == F_DRAIN) && v2_pending_q && !stage_h_free;
+    wire handoff = v2_pending_q && stage_h_free && (fstate_q == F_CHECK || fstate_q == F_DRAIN);
     wire decode = (fstate_q == F_CHECK) && !check_stall;
     wire reject_now = decode && !(d_kind_ok_q && d_index_ok_q);
 
@@ -257,6 +259,19 @@ module gpu_prim_setup #(
         end
     endfunction
 
+    // The hand-off: the three vertices as they are, vertex 2 straight from the RAM (an EBR's clock
+    // to out alone is 5.8 ns on the ECP5) into these flops; stage A forms the box and the
+    // differences from them a clock later (issue #27: the RAM's output through the box's minimum,
+    // maximum and rounding was the board's set-up path, 16.8-18.3 ns). A primitive's latency grows
+    // by a clock, its rate not: the fetch hands off one every three clocks at best, and these
+    // registers free whenever stage A takes their set.
+    reg h_valid_q;
+    reg h_is_line_q, h_shaded_q;
+    reg [gpu_pkg::COLOR_W-1:0] h_color_q;
+    reg signed [15:0] hx0_q, hy0_q, hx1_q, hy1_q, hx2_q, hy2_q;
+    reg [15:0] hz0_q, hz1_q, hz2_q;
+    reg [15:0] hi0_q, hi1_q, hi2_q;
+
     reg a_valid_q;
     reg a_is_line_q;
     reg [gpu_pkg::COLOR_W-1:0] a_color_q;
@@ -274,40 +289,63 @@ module gpu_prim_setup #(
     reg [15:0] ai0_q, ai1_q, ai2_q;
     wire b_free;
 
-    assign stage_a_free = !a_valid_q || b_free;
-    // The third corner: vertex 2 as it leaves the RAM, or a line's end again.
-    wire signed [15:0] v2x = v2_is_line_q ? fx1_q : vx;
-    wire signed [15:0] v2y = v2_is_line_q ? fy1_q : vy;
+    wire stage_a_free = !a_valid_q || b_free;   // stage A can take the hand-off's set
+    assign stage_h_free = !h_valid_q || stage_a_free;
+
+    always @(posedge clk) begin
+        if (rst) begin
+            h_valid_q <= 1'b0;
+        end else if (stage_h_free) begin
+            h_valid_q <= handoff;
+            if (handoff) begin
+                h_is_line_q <= v2_is_line_q;
+                h_color_q <= color_q;
+                hx0_q <= fx0_q;
+                hy0_q <= fy0_q;
+                hx1_q <= fx1_q;
+                hy1_q <= fy1_q;
+                hx2_q <= v2_is_line_q ? fx1_q : vx;   // the third corner: a line's end again
+                hy2_q <= v2_is_line_q ? fy1_q : vy;
+                hz0_q <= fz0_q;
+                hz1_q <= fz1_q;
+                hz2_q <= vz_rd_data;
+                h_shaded_q <= shade_q;
+                hi0_q <= fi0_q;
+                hi1_q <= fi1_q;
+                hi2_q <= vi_rd_data;
+            end
+        end
+    end
 
     always @(posedge clk) begin
         if (rst) begin
             a_valid_q <= 1'b0;
         end else if (stage_a_free) begin
-            a_valid_q <= handoff;
-            if (handoff) begin
-                a_is_line_q <= v2_is_line_q;
-                a_color_q <= color_q;
-                ax0_q <= fx0_q;
-                ay0_q <= fy0_q;
-                ax1_q <= fx1_q;
-                ay1_q <= fy1_q;
-                ax2_q <= v2x;
-                ay2_q <= v2y;
-                d01x <= 17'(fx1_q) - 17'(fx0_q);
-                d01y <= 17'(fy1_q) - 17'(fy0_q);
-                d02x <= 17'(v2x) - 17'(fx0_q);
-                d02y <= 17'(v2y) - 17'(fy0_q);
-                a_rpx0 <= centre_pixel(min3(fx0_q, fx1_q, v2x), FIRST_CENTRE);
-                a_rpy0 <= centre_pixel(min3(fy0_q, fy1_q, v2y), FIRST_CENTRE);
-                a_rpx1 <= centre_pixel(max3(fx0_q, fx1_q, v2x), LAST_CENTRE);
-                a_rpy1 <= centre_pixel(max3(fy0_q, fy1_q, v2y), LAST_CENTRE);
-                az0_q <= fz0_q;
-                az1_q <= fz1_q;
-                az2_q <= vz_rd_data;
-                a_shaded_q <= shade_q;
-                ai0_q <= fi0_q;
-                ai1_q <= fi1_q;
-                ai2_q <= vi_rd_data;
+            a_valid_q <= h_valid_q;
+            if (h_valid_q) begin
+                a_is_line_q <= h_is_line_q;
+                a_color_q <= h_color_q;
+                ax0_q <= hx0_q;
+                ay0_q <= hy0_q;
+                ax1_q <= hx1_q;
+                ay1_q <= hy1_q;
+                ax2_q <= hx2_q;
+                ay2_q <= hy2_q;
+                d01x <= 17'(hx1_q) - 17'(hx0_q);
+                d01y <= 17'(hy1_q) - 17'(hy0_q);
+                d02x <= 17'(hx2_q) - 17'(hx0_q);
+                d02y <= 17'(hy2_q) - 17'(hy0_q);
+                a_rpx0 <= centre_pixel(min3(hx0_q, hx1_q, hx2_q), FIRST_CENTRE);
+                a_rpy0 <= centre_pixel(min3(hy0_q, hy1_q, hy2_q), FIRST_CENTRE);
+                a_rpx1 <= centre_pixel(max3(hx0_q, hx1_q, hx2_q), LAST_CENTRE);
+                a_rpy1 <= centre_pixel(max3(hy0_q, hy1_q, hy2_q), LAST_CENTRE);
+                az0_q <= hz0_q;
+                az1_q <= hz1_q;
+                az2_q <= hz2_q;
+                a_shaded_q <= h_shaded_q;
+                ai0_q <= hi0_q;
+                ai1_q <= hi1_q;
+                ai2_q <= hi2_q;
             end
         end
     end
@@ -592,7 +630,7 @@ module gpu_prim_setup #(
                     ? (b_is_line_q ? SAMPLES_W'(lmaj) : SAMPLES_W'(box_w) * SAMPLES_W'(box_h)) : {SAMPLES_W{1'b0}};
     end
 
-    assign idle = (fstate_q == F_IDLE) && !a_valid_q && !b_valid_q && !out_valid;
+    assign idle = (fstate_q == F_IDLE) && !h_valid_q && !a_valid_q && !b_valid_q && !out_valid;
 endmodule
 
 `default_nettype wire
