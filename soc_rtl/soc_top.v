@@ -310,7 +310,7 @@ module soc_top #(
     localparam integer UART_AW = $clog2(soc_pkg::SOC_UART_WINDOW_BYTES / 4);
     localparam integer SYS_AW = $clog2(soc_pkg::SOC_SYS_WINDOW_BYTES / 4);
     localparam integer USB_AW = $clog2(soc_pkg::SOC_USB_WINDOW_BYTES / 4);
-    // the word address bits the slowest-decoded of them needs: the widest window's
+    // the word address bits they need: their widest window's
     localparam integer SLOW_AW = max_of(max_of(FLASH_AW, SDRAM_CTRL_AW), max_of(max_of(UART_AW, SYS_AW), USB_AW));
     function automatic integer max_of(input integer a, input integer b);
         max_of = a > b ? a : b;
