@@ -981,8 +981,8 @@ render_face_any(struct render_frame *f, const struct render_faces_job *job, bool
  * One face of a lattice mesh in render_lattice_faces whose quad has all four corners on the screen
  * (outcode 0, or an object inside the frustum): `face` with corners a, b, c, frame vertices ia, ib,
  * ic (its v[0..2] plus the object's base: mesh_set_lattice checked that they are). What
- * render_faces does with such a face, filled, flat, with its own material and cached levels (the
- * only case render_lattice_faces_loop brings here): no outcode can cull or clip it, and its area
+ * render_faces does with such a face, filled, with its own material, flat with cached levels or
+ * Gouraud (the cases render_lattice_faces_loop brings here): no outcode can cull or clip it, and its area
  * is the 32-bit one (proj_signed_area_inside: corners on the frame keep every difference below
  * 2^14, so it equals proj_signed_area); a lattice face is never MESH_FACE_QUAD, so its key is its
  * three depths' sum.
@@ -991,7 +991,7 @@ static inline __attribute__((always_inline)) void
 render_lattice_face(struct render_frame *f, const struct render_faces_job *job,
                     struct render_lattice_walk *w, struct render_lattice_corner a,
                     struct render_lattice_corner b, struct render_lattice_corner c, uint32_t ia,
-                    uint32_t ib, uint32_t ic, const struct mesh_face *face)
+                    uint32_t ib, uint32_t ic, const struct mesh_face *face, bool shaded)
 {
     uint32_t level;
     uint32_t normal;
@@ -1004,12 +1004,16 @@ render_lattice_face(struct render_frame *f, const struct render_faces_job *job,
         f->stats.dropped++;
         return;
     }
-    normal = face->normal;
-    level = w->levels[normal];
-    if (FW_UNLIKELY(level == RENDER_LEVEL_UNKNOWN)) {
-        level = render_level_fill(w->levels, job->light, job->mesh, normal);
+    if (FW_WITH_GOURAUD && shaded) {  /* the material's base colour: the GPU shades it */
+        render_prim_put(w->p, ia, ib, ic, PAL_INDEX(face->material, 0u), GPU_PRIM_KIND_TRI_GOURAUD);
+    } else {
+        normal = face->normal;
+        level = w->levels[normal];
+        if (FW_UNLIKELY(level == RENDER_LEVEL_UNKNOWN)) {
+            level = render_level_fill(w->levels, job->light, job->mesh, normal);
+        }
+        render_prim_put(w->p, ia, ib, ic, PAL_INDEX(face->material, level), GPU_PRIM_KIND_TRI);
     }
-    render_prim_put(w->p, ia, ib, ic, PAL_INDEX(face->material, level), GPU_PRIM_KIND_TRI);
     /* render_sort_item(key, np) with key = the depths' sum <= 3 PROJ_DEPTH_MAX = 65535:
      * (65535 - key) << shift | np = ((65535 << shift) | np) - (key << shift), no borrow. */
     *w->item = w->key_np - ((sort_item_t)(a.depth + b.depth + c.depth) << SORT_KEY_SHIFT);
@@ -1043,6 +1047,9 @@ static void render_lattice_faces(struct render_frame *f, const struct render_fac
     uint32_t np;
     struct render_lattice_walk w;
     struct render_face_counts slow = {0, 0, 0};  /* render_face_any's */
+    /* Gouraud: each face its material's base colour (one test a face; a copy of the loop for
+     * each case would not fit the landscape's program in the SoC's 192 KiB). */
+    const bool shaded = FW_WITH_GOURAUD && job->vnormal14 != 0;
 
     w.prim = f->prim;
     w.p_end = f->prim + f->prim_cap;
@@ -1075,11 +1082,11 @@ static void render_lattice_faces(struct render_frame *f, const struct render_fac
             kd = render_lattice_corner(v + 1);
             ib = ia + w_verts;
             if (bd != 0u) {  /* (a, b, d), (b, c', d) */
-                render_lattice_face(f, job, &w, ka, kb, kd, ia, ib, ia + 1u, &face[0]);
-                render_lattice_face(f, job, &w, kb, kc, kd, ib, ib + 1u, ia + 1u, &face[1]);
+                render_lattice_face(f, job, &w, ka, kb, kd, ia, ib, ia + 1u, &face[0], shaded);
+                render_lattice_face(f, job, &w, kb, kc, kd, ib, ib + 1u, ia + 1u, &face[1], shaded);
             } else {         /* (a, b, c'), (a, c', d) */
-                render_lattice_face(f, job, &w, ka, kb, kc, ia, ib, ib + 1u, &face[0]);
-                render_lattice_face(f, job, &w, ka, kc, kd, ia, ib + 1u, ia + 1u, &face[1]);
+                render_lattice_face(f, job, &w, ka, kb, kc, ia, ib, ib + 1u, &face[0], shaded);
+                render_lattice_face(f, job, &w, ka, kc, kd, ia, ib + 1u, ia + 1u, &face[1], shaded);
             }
         }
     }
@@ -1093,11 +1100,11 @@ static void render_lattice_faces(struct render_frame *f, const struct render_fac
 void render_lattice_faces_loop(struct render_frame *f, const struct render_faces_job *job,
                                bool inside)
 {
-    /* The lattice loop is the filled, flat pass of a lattice mesh with its own materials and a
-     * level cache; anything else (wireframe, Gouraud, anaglyph's eye material, another mesh)
+    /* The lattice loop is the filled pass of a lattice mesh with its own materials and a level
+     * cache, flat or Gouraud; anything else (wireframe, anaglyph's eye material, another mesh)
      * takes render_face_any face by face. */
     if (job->mesh->lattice_cols == 0u || job->levels == 0 || job->material_override != 0u ||
-        (FW_WITH_GOURAUD && job->vnormal14 != 0) || (FW_WITH_WIREFRAME && job->pass->wireframe)) {
+        (FW_WITH_WIREFRAME && job->pass->wireframe)) {
         const uint32_t nf = job->mesh->face_count;
         const uint32_t np_start = f->prim_count;
         uint32_t np = np_start;

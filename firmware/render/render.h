@@ -218,7 +218,8 @@ void render_general_faces_loop(struct render_frame *f, const struct render_faces
 void render_grid_faces_loop(struct render_frame *f, const struct render_faces_job *job,
                             bool inside);
 /* A lattice mesh's (mesh_set_lattice; with a level cache, render_object.levels): the general loop's
- * primitives, its faces' corners walked instead of read. Any other mesh goes to the general loop. */
+ * primitives, its faces' corners walked instead of read, flat or Gouraud. Anything else (another
+ * mesh, wireframe, an eye material) goes face by face through one copy of the general loop's code. */
 void render_lattice_faces_loop(struct render_frame *f, const struct render_faces_job *job,
                                bool inside);
 
