@@ -1070,6 +1070,13 @@ static void render_lattice_faces(struct render_frame *f, const struct render_fac
             uint32_t ib;
 
             if (check && (v->code | v[w_verts].code | v[w_verts + 1u].code | v[1].code) != 0u) {
+                /* All four corners beyond one plane: both faces frustum-culled, as render_faces
+                 * would find each (most of a crossing tile's off-screen quads). */
+                if ((v->code & v[w_verts].code & v[w_verts + 1u].code & v[1].code &
+                     PROJ_CULL_BITS) != 0u) {
+                    slow.n_frustum += 2u;
+                    continue;
+                }
                 np = (uint32_t)(w.p - w.prim);
                 np = render_face_any(f, job, true, &face[0], np, &slow);
                 np = render_face_any(f, job, true, &face[1], np, &slow);
