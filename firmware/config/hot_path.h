@@ -14,4 +14,9 @@
  * (the frame's vertex array and an object's first vertex) in every iteration of a loop. */
 #define FW_ONE_REGISTER(p) __asm__("" : "+r"(p))
 
+/* The compiler no longer knows v's value, so a product by v stays one multiply: GCC turns a
+ * constant factor such as 12 into four shifts and adds, where rv32im's mul (pipelined on VexRiscv)
+ * is one instruction. */
+#define FW_AS_MULTIPLIER(v) __asm__("" : "+r"(v))
+
 #endif /* CONFIG_HOT_PATH_H */

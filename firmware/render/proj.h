@@ -135,7 +135,7 @@ struct proj_setup {
                            * the screen's left, right, top and bottom edges */
 };
 
-/* One projected vertex: 16 bytes, so indexing is a shift. The batch fields belong to batch.c.
+/* One projected vertex (12 bytes: see the assertion below). The batch fields belong to batch.c.
  * sx and sy come first and in this order: on a little-endian CPU the pair, read as one 32-bit
  * word, is already the GPU's first vertex word (batch.c uses that). */
 struct proj_vertex {
@@ -167,6 +167,15 @@ struct proj_vertex {
  * then an 8-bit batch stamp (batch.c clears the stamps when its counter wraps past 255, which
  * takes 255 batches of one frame), the outcode, and the slot. */
 _Static_assert(sizeof(struct proj_vertex) == 12u, "proj_vertex: 12 bytes");
+
+/* &vert[i] as a multiply and an add, for the loops that look vertices up by index: `size` is
+ * sizeof(struct proj_vertex) made opaque with FW_AS_MULTIPLIER (config/hot_path.h) once, before
+ * the loop. */
+static inline const struct proj_vertex *proj_vertex_at(const struct proj_vertex *vert, uint32_t i,
+                                                       uint32_t size)
+{
+    return (const struct proj_vertex *)(const void *)((const uint8_t *)vert + i * size);
+}
 
 /* Position and depths of a vertex as two word stores (little-endian: the two halfword pairs;
  * elsewhere field by field). sx, sy within int16; zbuf, depth within uint16. */

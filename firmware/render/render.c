@@ -627,12 +627,15 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     uint32_t last_normal = UINT32_MAX;
     uint32_t last_level = 0;
 
+    uint32_t vsize = sizeof(struct proj_vertex);
+
     FW_ONE_REGISTER(vert);  /* one add less per vertex of every face */
+    FW_AS_MULTIPLIER(vsize);
     for (uint32_t fi = 0; fi < nf; fi++) {
         const struct mesh_face *face = &faces[fi];
-        const struct proj_vertex *a = &vert[face->v[0]];
-        const struct proj_vertex *b = &vert[face->v[1]];
-        const struct proj_vertex *c = &vert[face->v[2]];
+        const struct proj_vertex *a = proj_vertex_at(vert, face->v[0], vsize);
+        const struct proj_vertex *b = proj_vertex_at(vert, face->v[1], vsize);
+        const struct proj_vertex *c = proj_vertex_at(vert, face->v[2], vsize);
         uint32_t mat;
         uint32_t level;
 
@@ -726,12 +729,12 @@ render_grid_face_general(struct render_frame *f, const struct render_faces_job *
 static inline __attribute__((always_inline)) uint32_t
 render_grid_half(struct render_frame *f, const struct render_faces_job *job, bool check,
                  struct render_grid_walk *w, uint32_t ia, uint32_t i1, uint32_t i2, uint32_t half,
-                 uint32_t np)
+                 uint32_t np, uint32_t vsize)
 {
     const struct proj_vertex *vert = &f->vert[job->base];
-    const struct proj_vertex *a = &vert[ia];
-    const struct proj_vertex *b = &vert[i1];
-    const struct proj_vertex *c = &vert[i2];
+    const struct proj_vertex *a = proj_vertex_at(vert, ia, vsize);
+    const struct proj_vertex *b = proj_vertex_at(vert, i1, vsize);
+    const struct proj_vertex *c = proj_vertex_at(vert, i2, vsize);
     struct render_prim *p;
 
     if (check && (a->code & b->code & c->code & PROJ_CULL_BITS) != 0u) {
@@ -779,7 +782,7 @@ render_grid_half_checked(struct render_frame *f, const struct render_faces_job *
                          struct render_grid_walk *w, uint32_t ia, uint32_t i1, uint32_t i2,
                          uint32_t half, uint32_t np)
 {
-    return render_grid_half(f, job, true, w, ia, i1, i2, half, np);
+    return render_grid_half(f, job, true, w, ia, i1, i2, half, np, sizeof(struct proj_vertex));
 }
 
 /*
@@ -801,7 +804,9 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
     const uint32_t np_start = f->prim_count;
     uint32_t np = np_start;
     struct render_grid_walk w;
+    uint32_t vsize = sizeof(struct proj_vertex);
 
+    FW_AS_MULTIPLIER(vsize);
     w.job = job_in;
     w.general = FW_WITH_WIREFRAME && job->pass->wireframe;
     w.shaded = FW_WITH_GOURAUD && job->vnormal14 != 0;
@@ -828,8 +833,8 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
                 np = render_grid_half_checked(f, job, &w, ia, second0, ic, 0u, np);
                 np = render_grid_half_checked(f, job, &w, ia, ic, third1, 1u, np);
             } else {
-                np = render_grid_half(f, job, false, &w, ia, second0, ic, 0u, np);
-                np = render_grid_half(f, job, false, &w, ia, ic, third1, 1u, np);
+                np = render_grid_half(f, job, false, &w, ia, second0, ic, 0u, np, vsize);
+                np = render_grid_half(f, job, false, &w, ia, ic, third1, 1u, np, vsize);
             }
         }
     }
