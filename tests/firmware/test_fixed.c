@@ -269,13 +269,31 @@ void test_fx_recip_mantissa(void)
     if (worst > 1100) {
         unit_fail(__FILE__, __LINE__, "reciprocal off by %lld units (bound 1100)", worst);
     }
-    /* Normalisation: the shift brings the top bit to 31 and is reported. */
+    /* Normalisation: the shift brings the top bit to 31 and is reported, and no bit is lost:
+     * every top-bit position with its lowest bit set and with random bits below it. */
     for (uint32_t s = 0; s < 32u; s++) {
         int32_t shift;
         const uint32_t m = fx_normalize32(0x80000000u >> s | 1u, &shift);
 
         CHECK(m >= 0x80000000u);
         CHECK_EQ(shift, s);
+        for (int i = 0; i < 64; i++) {
+            const uint32_t top = 0x80000000u >> s;
+            const uint32_t x = top | ((uint32_t)rand() * 2654435761u & (top - 1u));
+            const uint32_t n = fx_normalize32(x, &shift);
+
+            CHECK_EQ(shift, s);
+            CHECK_EQ(n, x << s);
+        }
+    }
+    /* Its table: the leading zeros of every byte. */
+    for (uint32_t v = 0; v < 256u; v++) {
+        uint32_t z = 8;
+
+        for (uint32_t b = v; b != 0u; b >>= 1) {
+            z--;
+        }
+        CHECK_EQ(fx_clz8[v], z);
     }
 }
 
