@@ -563,6 +563,24 @@ render_face_general(struct render_frame *f, const struct render_pass *pass, cons
     }
 }
 
+/* A frame primitive's fields, written as its two words where render_prim has them (a narrow
+ * frame on a little-endian CPU, render.h): i0, i1, i2 are frame vertex numbers, below
+ * RENDER_INDEX_LIMIT = 2^16 there, so no field needs masking; color and kind are bytes. */
+static inline void render_prim_put(struct render_prim *p, uint32_t i0, uint32_t i1, uint32_t i2,
+                                   uint32_t color, uint32_t kind)
+{
+#if !FW_RENDER_WIDE_INDEX && defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    p->w[0] = i0 | (i1 << 16);
+    p->w[1] = i2 | (color << 16) | (kind << 24);
+#else
+    p->v[0] = (render_index)i0;
+    p->v[1] = (render_index)i1;
+    p->v[2] = (render_index)i2;
+    p->color = (uint8_t)color;
+    p->kind = (uint8_t)kind;
+#endif
+}
+
 /* What the face loop needs about one object. */
 struct render_faces_job {
     const struct render_pass *pass;
@@ -587,6 +605,12 @@ struct render_grid_walk {
     uint32_t np_general; /* primitives the general path added */
     uint32_t n_frustum;
     uint32_t n_aside;    /* faces through the general path, or dropped (no room) */
+    /* The frame's arrays, read once: the face's stores into them could otherwise (for all the
+     * compiler knows) change the frame's pointers, which it would then read again a face. */
+    const struct proj_vertex *vert;  /* the object's first vertex */
+    struct render_prim *prim;
+    sort_item_t *sort_item;
+    uint32_t prim_cap;
 };
 
 /*
@@ -734,11 +758,11 @@ render_grid_half(struct render_frame *f, const struct render_faces_job *job, boo
                  struct render_grid_walk *w, uint32_t ia, uint32_t i1, uint32_t i2, uint32_t half,
                  uint32_t np, uint32_t vsize)
 {
-    const struct proj_vertex *vert = &f->vert[job->base];
-    const struct proj_vertex *a = proj_vertex_at(vert, ia, vsize);
-    const struct proj_vertex *b = proj_vertex_at(vert, i1, vsize);
-    const struct proj_vertex *c = proj_vertex_at(vert, i2, vsize);
-    struct render_prim *p;
+    const struct proj_vertex *a = proj_vertex_at(w->vert, ia, vsize);
+    const struct proj_vertex *b = proj_vertex_at(w->vert, i1, vsize);
+    const struct proj_vertex *c = proj_vertex_at(w->vert, i2, vsize);
+    uint32_t color;
+    uint32_t kind;
 
     if (check && (a->code & b->code & c->code & PROJ_CULL_BITS) != 0u) {
         w->n_frustum++;
@@ -755,27 +779,24 @@ render_grid_half(struct render_frame *f, const struct render_faces_job *job, boo
     if (check ? (proj_signed_area(a, b, c) <= 0) : (proj_signed_area_inside(a, b, c) <= 0)) {
         return np;
     }
-    if (np >= f->prim_cap) {
+    if (np >= w->prim_cap) {
         f->stats.dropped++;
         w->n_aside++;
         return np;
     }
-    p = &f->prim[np];
-    p->v[0] = (render_index)(job->base + ia);
-    p->v[1] = (render_index)(job->base + i1);
-    p->v[2] = (render_index)(job->base + i2);
     if (w->shaded) {
-        p->color = PAL_INDEX(w->mat, 0u);
-        p->kind = (uint8_t)GPU_PRIM_KIND_TRI_GOURAUD;
+        color = PAL_INDEX(w->mat, 0u);
+        kind = GPU_PRIM_KIND_TRI_GOURAUD;
     } else {
         if (w->level == RENDER_LEVEL_UNKNOWN) {
             w->level = palette_light_level(job->light, mesh_normal(job->mesh, w->quad));
         }
-        p->color = PAL_INDEX(w->mat, w->level);
-        p->kind = (uint8_t)GPU_PRIM_KIND_TRI;
+        color = PAL_INDEX(w->mat, w->level);
+        kind = GPU_PRIM_KIND_TRI;
     }
+    render_prim_put(&w->prim[np], job->base + ia, job->base + i1, job->base + i2, color, kind);
     /* A grid face is not MESH_FACE_QUAD (mesh_grid_face): its key is its three depths' sum. */
-    f->sort_item[np] = render_sort_item((uint32_t)a->depth + b->depth + c->depth, np);
+    w->sort_item[np] = render_sort_item((uint32_t)a->depth + b->depth + c->depth, np);
     return np + 1u;
 }
 
@@ -818,6 +839,10 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
     w.np_general = 0;
     w.n_frustum = 0;
     w.n_aside = 0;
+    w.vert = &f->vert[job->base];
+    w.prim = f->prim;
+    w.sort_item = f->sort_item;
+    w.prim_cap = f->prim_cap;
     for (w.i = 0; w.i < rows; w.i++) {
         const uint32_t row = w.i * cols;
         const uint32_t row1 = (w.i + 1u == rows) ? 0u : row + cols;
@@ -854,24 +879,6 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
          * knot 5 instructions a back face). */
         f->stats.faces_back += 2u * rows * cols - w.n_frustum - w.n_aside - fast;
     }
-}
-
-/* A frame primitive's fields, written as its two words where render_prim has them (a narrow
- * frame on a little-endian CPU, render.h): i0, i1, i2 are frame vertex numbers, below
- * RENDER_INDEX_LIMIT = 2^16 there, so no field needs masking; color and kind are bytes. */
-static inline void render_prim_put(struct render_prim *p, uint32_t i0, uint32_t i1, uint32_t i2,
-                                   uint32_t color, uint32_t kind)
-{
-#if !FW_RENDER_WIDE_INDEX && defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-    p->w[0] = i0 | (i1 << 16);
-    p->w[1] = i2 | (color << 16) | (kind << 24);
-#else
-    p->v[0] = (render_index)i0;
-    p->v[1] = (render_index)i1;
-    p->v[2] = (render_index)i2;
-    p->color = (uint8_t)color;
-    p->kind = (uint8_t)kind;
-#endif
 }
 
 /* One corner of a lattice quad, read once for both of the quad's faces (the stores of the first
