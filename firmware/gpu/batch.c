@@ -70,14 +70,6 @@ static inline void batch_put_vertex(uint32_t *w, const struct proj_vertex *v)
     w[1] = FW_WITH_GOURAUD ? v->zd : v->zbuf;
 }
 
-/* &vert[i] as a multiply and an add (proj_vertex_at's, for the vertex this loop updates): size is
- * sizeof(struct proj_vertex) made opaque with FW_AS_MULTIPLIER. */
-static inline struct proj_vertex *batch_vertex_at(struct proj_vertex *vert, uint32_t i,
-                                                  uint32_t size)
-{
-    return (struct proj_vertex *)(void *)((uint8_t *)vert + i * size);
-}
-
 /* The vertex's slot in the current batch, writing it there first if the batch lacks it.
  * *nv counts the batch's vertices so far. */
 static inline uint32_t batch_vertex(struct proj_vertex *v, uint8_t stamp, uint32_t *vtx,
@@ -212,9 +204,9 @@ static inline __attribute__((always_inline)) void batch_fill_from(struct batch_c
 
         while (o != o_end && nv <= vtx_room) {
             const struct batch_prim_fields r = batch_prim_read(&prim[sort_item_payload(*o)]);
-            const uint32_t s0 = batch_vertex(batch_vertex_at(vert, r.v0, vsize), stamp, vtx, &nv);
-            const uint32_t s1 = batch_vertex(batch_vertex_at(vert, r.v1, vsize), stamp, vtx, &nv);
-            const uint32_t s2 = batch_vertex(batch_vertex_at(vert, r.v2, vsize), stamp, vtx, &nv);
+            const uint32_t s0 = batch_vertex(proj_vertex_at_mut(vert, r.v0, vsize), stamp, vtx, &nv);
+            const uint32_t s1 = batch_vertex(proj_vertex_at_mut(vert, r.v1, vsize), stamp, vtx, &nv);
+            const uint32_t s2 = batch_vertex(proj_vertex_at_mut(vert, r.v2, vsize), stamp, vtx, &nv);
 
             pw[0] = s0 | (s1 << 16);
             pw[1] = s2 | r.hi;
@@ -236,9 +228,9 @@ static inline __attribute__((always_inline)) void batch_fill_from(struct batch_c
             break;
         }
         {
-            const uint32_t s0 = batch_vertex(batch_vertex_at(vert, r.v0, vsize), stamp, vtx, &nv);
-            const uint32_t s1 = batch_vertex(batch_vertex_at(vert, r.v1, vsize), stamp, vtx, &nv);
-            const uint32_t s2 = batch_vertex(batch_vertex_at(vert, r.v2, vsize), stamp, vtx, &nv);
+            const uint32_t s0 = batch_vertex(proj_vertex_at_mut(vert, r.v0, vsize), stamp, vtx, &nv);
+            const uint32_t s1 = batch_vertex(proj_vertex_at_mut(vert, r.v1, vsize), stamp, vtx, &nv);
+            const uint32_t s2 = batch_vertex(proj_vertex_at_mut(vert, r.v2, vsize), stamp, vtx, &nv);
 
             if (outline) {
                 const uint32_t s[3] = {s0, s1, s2};

@@ -238,7 +238,7 @@ const q16_16 fx_sin_table[FX_SIN_ENTRIES + 1u] = {
 #endif
 
 /* fx_clz8[v]: the leading zeros of v as an 8-bit value, 8 for 0. Generated with:
- *   [8] + [7 - v.bit_length() + 1 for v in range(1, 256)]
+ *   [8 - v.bit_length() for v in range(256)]
  * The unit test checks every entry against a loop. */
 const uint8_t fx_clz8[256] = {
     8, 7, 6, 6, 5, 5, 5, 5, 4, 4, 4, 4, 4, 4, 4, 4,

@@ -177,6 +177,13 @@ static inline const struct proj_vertex *proj_vertex_at(const struct proj_vertex 
     return (const struct proj_vertex *)(const void *)((const uint8_t *)vert + i * size);
 }
 
+/* The same for a loop that updates the vertex (batch.c's stamp and slot). */
+static inline struct proj_vertex *proj_vertex_at_mut(struct proj_vertex *vert, uint32_t i,
+                                                     uint32_t size)
+{
+    return (struct proj_vertex *)proj_vertex_at(vert, i, size);
+}
+
 /* Position and depths of a vertex as two word stores (little-endian: the two halfword pairs;
  * elsewhere field by field). sx, sy within int16; zbuf, depth within uint16. */
 static inline void proj_vertex_store(struct proj_vertex *out, int32_t sx, int32_t sy,

@@ -581,6 +581,20 @@ static inline void render_prim_put(struct render_prim *p, uint32_t i0, uint32_t 
 #endif
 }
 
+/*
+ * A face loop's counts into the frame's statistics: of `faces` faces, n_frustum were culled by the
+ * frustum, n_aside went through the general path or found no room, `fast` were emitted one
+ * primitive each, and the rest were back faces (the loops do not count those as they cull them:
+ * a counter kept in memory cost the knot's grid loop 5 instructions a back face).
+ */
+static inline void render_face_stats(struct render_frame *f, uint32_t faces, uint32_t n_frustum,
+                                     uint32_t n_aside, uint32_t fast)
+{
+    f->stats.faces_frustum += n_frustum;
+    f->stats.faces_emitted += fast;
+    f->stats.faces_back += faces - n_frustum - n_aside - fast;
+}
+
 /* What the face loop needs about one object. */
 struct render_faces_job {
     const struct render_pass *pass;
@@ -650,7 +664,6 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
      * quad's halves (mesh_add_quad) follow each other with one normal: the second reuses it. */
     uint32_t last_normal = UINT32_MAX;
     uint32_t last_level = 0;
-
     uint32_t vsize = sizeof(struct proj_vertex);
 
     FW_ONE_REGISTER(vert);  /* one add less per vertex of every face */
@@ -680,7 +693,7 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
             n_aside++;
             continue;
         }
-        /* A back face (not counted here: the count is worked out below). */
+        /* A back face (not counted here: render_face_stats works the count out). */
         if (check ? (proj_signed_area(a, b, c) <= 0) : (proj_signed_area_inside(a, b, c) <= 0)) {
             continue;
         }
@@ -726,10 +739,7 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     }
     np = (uint32_t)(p - prim);
     f->prim_count = np;
-    f->stats.faces_frustum += n_frustum;
-    f->stats.faces_emitted += (np - np_start) - np_general;  /* the fast path: one per face */
-    /* Every face took one way out; the back-face test's is what the others leave. */
-    f->stats.faces_back += nf - n_frustum - n_aside - ((np - np_start) - np_general);
+    render_face_stats(f, nf, n_frustum, n_aside, (np - np_start) - np_general);
 }
 
 /* render_grid_half's rare case, out of line (render_grid_half is inlined three times): face `half`
@@ -775,7 +785,7 @@ render_grid_half(struct render_frame *f, const struct render_faces_job *job, boo
         w->n_aside++;
         return after;
     }
-    /* A back face (not counted here: render_grid_faces works the count out at its end). */
+    /* A back face (not counted here: render_face_stats works the count out). */
     if (check ? (proj_signed_area(a, b, c) <= 0) : (proj_signed_area_inside(a, b, c) <= 0)) {
         return np;
     }
@@ -868,17 +878,8 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
             }
         }
     }
-    {
-        const uint32_t fast = (np - np_start) - w.np_general;  /* the fast path: one per face */
-
-        f->prim_count = np;
-        f->stats.faces_frustum += w.n_frustum;
-        f->stats.faces_emitted += fast;
-        /* Every face took one way out: the frustum, the general path or no room, the fast path,
-         * or the back-face test, which does not count its own (a counter kept in memory cost the
-         * knot 5 instructions a back face). */
-        f->stats.faces_back += 2u * rows * cols - w.n_frustum - w.n_aside - fast;
-    }
+    f->prim_count = np;
+    render_face_stats(f, 2u * rows * cols, w.n_frustum, w.n_aside, (np - np_start) - w.np_general);
 }
 
 /* One corner of a lattice quad, read once for both of the quad's faces (the stores of the first
