@@ -31,6 +31,7 @@ void mesh_clear(struct mesh *m)
     m->full = false;
     m->box = false;
     m->lattice_diag = 0;
+    m->lattice_axes = 0;
     m->lattice_cols = 0;
 }
 
@@ -231,6 +232,14 @@ bool mesh_set_lattice(struct mesh *m, uint32_t rows, uint32_t cols, uint32_t dia
         }
     }
     m->lattice_diag = (uint8_t)(diag0 & 1u);
+    m->lattice_axes = 1;
+    for (uint32_t r = 0; r <= rows; r++) {
+        for (uint32_t c = 0; c < w; c++) {
+            if (m->verts[r * w + c].x != m->verts[c].x || m->verts[r * w + c].z != m->verts[r * w].z) {
+                m->lattice_axes = 0;
+            }
+        }
+    }
     m->lattice_cols = (uint16_t)w;
     return true;
 }

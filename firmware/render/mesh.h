@@ -64,7 +64,11 @@ struct mesh {
     /* A lattice mesh (mesh_set_lattice; in the padding after `full`, so a mesh stays its size):
      * faces stored, each with the corners a lattice of quads gives it, which a face loop can then
      * walk instead of reading them. */
-    uint8_t lattice_diag;   /* quad (0, 0)'s diagonal: 0 = a-c, 1 = b-d (it alternates) */
+    uint8_t lattice_diag : 1;  /* quad (0, 0)'s diagonal: 0 = a-c, 1 = b-d (it alternates) */
+    /* Every vertex's x is its column's and its z its row's (a height field over a regular
+     * x-z lattice: the landscape's tiles), so render.c projects it with a column's and a row's
+     * products formed once (render_project_lattice). */
+    uint8_t lattice_axes : 1;
     uint16_t lattice_cols;  /* vertices per lattice row; 0: not a lattice mesh */
     /* A grid mesh (mesh_set_grid): faces implicit, not stored; faces is then unused. */
     struct mesh_grid {
@@ -147,8 +151,9 @@ static inline void mesh_grid_face(const struct mesh_grid *g, uint32_t i, uint32_
  * normals and flags; mesh_set_lattice only checks that the built faces are exactly that, none
  * flagged MESH_FACE_QUAD, and then marks the mesh, so that render.c's lattice face loop may form
  * a face's corners from its place instead of reading them. Returns whether it did (else the mesh
- * is left unmarked, and any face loop draws it). The faces must not change while it is marked
- * (mesh_clear unmarks).
+ * is left unmarked, and any face loop draws it). It also notes whether vertex (r, c) has column
+ * c's x (row 0's) and row r's z (column 0's) for every r and c (lattice_axes). Neither the faces
+ * nor the vertices may change while it is marked (mesh_clear unmarks).
  */
 bool mesh_set_lattice(struct mesh *m, uint32_t rows, uint32_t cols, uint32_t diag0);
 

@@ -532,6 +532,70 @@ void render_project_boxed(const struct proj_setup *ps, const xf_affine *mv, cons
     }
 }
 
+/* Columns a lattice mesh may have for render_project_lattice_inside: its column products live on
+ * the stack (12 bytes a column; the landscape's tiles have 9). A wider lattice takes the general
+ * loop. */
+#define RENDER_LATTICE_AXES_MAX_COLS 33u
+
+#if REAL_IS_FIXED
+/*
+ * A lattice mesh with lattice_axes (mesh.h) inside the frustum: vertex (r, c) is (x_c, y, z_r).
+ * xf_apply's x row is mulh(m00, 4 x) + mulh(m01, 4 y) + mulh(m02, 4 z) + t.x, each product
+ * floored on its own: the x term is column c's and the z term (with t) row r's, formed once here,
+ * so a vertex takes three products instead of nine. The sum is the same integer in any order (no
+ * partial sum overflows: each is within xf_apply's |p| + |t| < 2^30.2 bound), so the view points,
+ * and everything after, are exactly xf_apply's. Only the inside case: a second copy of the
+ * projection, for the tiles that cross the frustum, would not fit the landscape's 192 KiB image.
+ * Float keeps xf_apply (its sums round in order).
+ */
+static void __attribute__((noinline))
+render_project_lattice_inside(const struct proj_setup *ps, const xf_affine *mv,
+                              const struct mesh *mesh, struct proj_vertex *out)
+{
+    const uint32_t w = mesh->lattice_cols;
+    const uint32_t rows = mesh->vert_count / w;
+    const vec3 *verts = mesh->verts;
+    const unit_t(*m)[3] = mv->r.m;
+    const int32_t m01 = m[0][1];
+    const int32_t m11 = m[1][1];
+    const int32_t m21 = m[2][1];
+    vec3 col[RENDER_LATTICE_AXES_MAX_COLS];  /* column c's x products */
+
+    for (uint32_t c = 0; c < w; c++) {
+        const int32_t x4 = verts[c].x * 4;
+
+        col[c] = vec3_make(fx_mulh(m[0][0], x4), fx_mulh(m[1][0], x4), fx_mulh(m[2][0], x4));
+    }
+    for (uint32_t r = 0; r < rows; r++, verts += w, out += w) {
+        const int32_t z4 = verts[0].z * 4;
+        const vec3 row = vec3_make(fx_mulh(m[0][2], z4) + mv->t.x, fx_mulh(m[1][2], z4) + mv->t.y,
+                                   fx_mulh(m[2][2], z4) + mv->t.z);
+
+        for (uint32_t c = 0; c < w; c++) {
+            const int32_t y4 = verts[c].y * 4;
+
+            proj_point_inside(ps,
+                              vec3_make(col[c].x + fx_mulh(m01, y4) + row.x,
+                                        col[c].y + fx_mulh(m11, y4) + row.y,
+                                        col[c].z + fx_mulh(m21, y4) + row.z),
+                              &out[c]);
+        }
+    }
+}
+#endif
+
+void render_project_lattice(const struct proj_setup *ps, const xf_affine *mv,
+                            const struct mesh *mesh, struct proj_vertex *out, bool inside)
+{
+#if REAL_IS_FIXED
+    if (inside && mesh->lattice_axes && mesh->lattice_cols <= RENDER_LATTICE_AXES_MAX_COLS) {
+        render_project_lattice_inside(ps, mv, mesh, out);
+        return;
+    }
+#endif
+    render_project_vertices(ps, mv, mesh->verts, mesh->vert_count, out, inside);
+}
+
 /* The face loop's rare cases, out of line: a face that crosses the near plane or the guard band
  * (clip.c), and every face in wireframe mode. Emits through f->prim_count. */
 static void __attribute__((noinline))

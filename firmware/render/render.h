@@ -211,6 +211,12 @@ struct render_object {
 void render_project_boxed(const struct proj_setup *ps, const xf_affine *mv, const struct mesh *mesh,
                           struct proj_vertex *out, bool inside);
 
+/* For render_object.project: a lattice mesh (mesh_set_lattice) inside the frustum whose vertices
+ * lie on its rows' and columns' axes (mesh.lattice_axes) with three products a vertex, any other
+ * vertex by vertex: the same projected vertices either way. */
+void render_project_lattice(const struct proj_setup *ps, const xf_affine *mv,
+                            const struct mesh *mesh, struct proj_vertex *out, bool inside);
+
 /* The face loops, for render_object.faces: a mesh with a faces array (mesh.h), and a grid mesh
  * (implicit faces). */
 void render_general_faces_loop(struct render_frame *f, const struct render_faces_job *job,

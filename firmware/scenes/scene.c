@@ -128,9 +128,9 @@ static void scene_new_object(struct scene *s, const struct mesh *m, const mat3 *
     o->project = project;
 }
 
-/* Three functions, each naming its own loop (and the general one the box projection: a grid or
- * lattice mesh is never a box): a program links the loop only when a scene of its calls the
- * function (render_object.faces, .project). */
+/* Three functions, each naming its own loop (the general one the box projection too: a grid or
+ * lattice mesh is never a box; the lattice one the lattice projection): a program links the loop
+ * only when a scene of its calls the function (render_object.faces, .project). */
 void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
                       uint8_t material)
 {
@@ -146,7 +146,7 @@ void scene_add_grid_object(struct scene *s, const struct mesh *m, const mat3 *ro
 void scene_add_lattice_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
                               uint8_t material)
 {
-    scene_new_object(s, m, rot, pos, material, render_lattice_faces_loop, 0);
+    scene_new_object(s, m, rot, pos, material, render_lattice_faces_loop, render_project_lattice);
 }
 
 bool scene_start(struct scene *s, const struct scene_desc *desc)

@@ -669,10 +669,12 @@ static int lat_same(const struct lat_result *a, const struct lat_result *b)
     return 1;
 }
 
-/* The lattice loop draws exactly what the general loop draws, for random views (inside the
- * frustum, crossing its planes, the near plane and the guard band), in every mode: filled flat
- * with and without a level cache, Gouraud, an eye material, wireframe with and without GPU lines,
- * and with the frame running out of room. mesh_set_lattice accepts only a lattice. */
+/* The lattice loop and projection draw exactly what the general loop and projection draw, for
+ * random views (inside the frustum, crossing its planes, the near plane and the guard band), in
+ * every mode: filled flat with and without a level cache, Gouraud, an eye material, wireframe
+ * with and without GPU lines, and with the frame running out of room; with the vertices on the
+ * lattice's axes (a row's and a column's products) and one vertex off them (vertex by vertex).
+ * mesh_set_lattice accepts only a lattice. */
 void test_render_lattice_loop(void)
 {
     static struct lat_mesh t;
@@ -691,9 +693,13 @@ void test_render_lattice_loop(void)
     CHECK_EQ(t.m.lattice_cols, 0);
     for (uint32_t diag0 = 0; diag0 < 2u; diag0++) {
         lat_mesh_build(&t, diag0);
+        if (diag0 == 1u) {
+            t.v[2 * (LAT_C + 1) + 3].x += 1;  /* off its column: projected vertex by vertex */
+        }
         CHECK(!mesh_set_lattice(&t.m, LAT_R, LAT_C, diag0 ^ 1u));
         CHECK(mesh_set_lattice(&t.m, LAT_R, LAT_C, diag0));
         CHECK_EQ(t.m.lattice_cols, LAT_C + 1);
+        CHECK_EQ(t.m.lattice_axes, (diag0 == 0u) ? 1 : 0);
         for (uint32_t view = 0; view < 1000u; view++) {
             struct render_pass pass;
             struct proj_setup ps;
@@ -721,6 +727,7 @@ void test_render_lattice_loop(void)
                 render_level_cache_init(&cache[k], cache_storage[k], LAT_FACES);
                 o.levels = (mode == 1u) ? 0 : &cache[k];
                 o.faces = (k == 0u) ? render_general_faces_loop : render_lattice_faces_loop;
+                o.project = (k == 0u) ? 0 : render_project_lattice;
                 test_frame.prim_cap = cap;
                 begin();
                 render_object(&test_frame, &pass, &o);
@@ -734,4 +741,47 @@ void test_render_lattice_loop(void)
     }
     CHECK(cases > 300u);    /* about a sixth of the 2000 random views see the mesh (355) */
     CHECK(clipped > 100u);  /* many of those across the near plane or the guard band (260) */
+}
+
+/* The projection alone (the views above seldom hold the whole mesh inside the frustum, the
+ * case render_project_lattice has its own loop for): the same vertices as render_project_boxed's
+ * (a lattice is no box: every vertex through xf_apply), inside or not, for random model-view
+ * transforms that put the mesh in front of the eye, on the lattice's axes and off them. */
+void test_render_lattice_projection(void)
+{
+    static struct lat_mesh t;
+    static struct proj_vertex by_lattice[LAT_VERTS];
+    static struct proj_vertex by_vertex[LAT_VERTS];
+    struct proj_setup ps;
+    uint32_t inside_views = 0;
+
+    unit_srand(3141u);
+    proj_setup_init(&ps, 200, to_real(40.0), GPU_FB_WIDTH, GPU_FB_HEIGHT);
+    for (uint32_t view = 0; view < 1000u; view++) {
+        xf_affine mv;
+
+        lat_mesh_build(&t, view & 1u);
+        if ((view & 2u) != 0u) {
+            t.v[unit_rand() % LAT_VERTS].z += 1;  /* off its row */
+        }
+        CHECK(mesh_set_lattice(&t.m, LAT_R, LAT_C, view & 1u));
+        CHECK_EQ(t.m.lattice_axes, ((view & 2u) != 0u) ? 0 : 1);
+        mv.r = mat3_from_yaw_pitch((fx_angle)unit_rand(), (fx_angle)unit_rand());
+        mv.t = v3((double)(unit_rand() % 4001u) / 1000.0 - 2.0,
+                  (double)(unit_rand() % 4001u) / 1000.0 - 2.0,
+                  (double)(unit_rand() % 30001u) / 1000.0 + 12.0);
+        for (uint32_t inside = 0; inside < 2u; inside++) {
+            if (inside != 0u && render_sphere_classify(&ps, xf_apply(&mv, t.m.center),
+                                                       t.m.radius) != RENDER_SPHERE_INSIDE) {
+                continue;
+            }
+            memset(by_lattice, 0xA5, sizeof by_lattice);
+            memset(by_vertex, 0x5A, sizeof by_vertex);
+            render_project_lattice(&ps, &mv, &t.m, by_lattice, inside != 0u);
+            render_project_boxed(&ps, &mv, &t.m, by_vertex, inside != 0u);
+            CHECK(memcmp(by_lattice, by_vertex, sizeof by_lattice) == 0);
+            inside_views += inside;
+        }
+    }
+    CHECK(inside_views > 400u);  /* 501: half of them on the lattice's axes */
 }
