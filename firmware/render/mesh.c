@@ -32,6 +32,7 @@ void mesh_clear(struct mesh *m)
     m->box = false;
     m->lattice_diag = 0;
     m->lattice_axes = 0;
+    m->quads = 0;
     m->lattice_cols = 0;
 }
 
@@ -241,6 +242,26 @@ bool mesh_set_lattice(struct mesh *m, uint32_t rows, uint32_t cols, uint32_t dia
         }
     }
     m->lattice_cols = (uint16_t)w;
+    return true;
+}
+
+bool mesh_set_quads(struct mesh *m)
+{
+    m->quads = 0;
+    if (m->face_count == 0u || (m->face_count & 1u) != 0u || m->grid.rows != 0u || m->full) {
+        return false;
+    }
+    for (uint32_t q = 0; q < m->face_count; q += 2u) {
+        const struct mesh_face *h0 = &m->faces[q];
+        const struct mesh_face *h1 = &m->faces[q + 1u];
+
+        if ((h0->flags & MESH_FACE_QUAD) == 0u || (h1->flags & MESH_FACE_QUAD) == 0u ||
+            h1->v[0] != h0->v[2] || h1->v[2] != h0->v[0] || h1->normal != h0->normal ||
+            h1->material != h0->material) {
+            return false;
+        }
+    }
+    m->quads = 1;
     return true;
 }
 

@@ -69,6 +69,7 @@ struct mesh {
      * x-z lattice: the landscape's tiles), so render.c projects it with a column's and a row's
      * products formed once (render_project_lattice). */
     uint8_t lattice_axes : 1;
+    uint8_t quads : 1;      /* mesh_set_quads: the faces are quads' halves in pairs */
     uint16_t lattice_cols;  /* vertices per lattice row; 0: not a lattice mesh */
     /* A grid mesh (mesh_set_grid): faces implicit, not stored; faces is then unused. */
     struct mesh_grid {
@@ -156,6 +157,16 @@ static inline void mesh_grid_face(const struct mesh_grid *g, uint32_t i, uint32_
  * nor the vertices may change while it is marked (mesh_clear unmarks).
  */
 bool mesh_set_lattice(struct mesh *m, uint32_t rows, uint32_t cols, uint32_t diag0);
+
+/*
+ * A quad mesh: faces 2q and 2q + 1 are quad q's halves as mesh_add_quad adds them, (a, b, c) and
+ * (c, d, a), both MESH_FACE_QUAD, with one normal and one material (the cubes, the voxel chunks).
+ * mesh_set_quads checks that every face is, and then marks the mesh (quads), so that render.c's
+ * quad face loop may read a quad's corners, key and colour once for both halves. Returns whether
+ * it did (else the mesh is left unmarked, and the quad loop draws it face by face). The faces must
+ * not change while it is marked (mesh_clear unmarks).
+ */
+bool mesh_set_quads(struct mesh *m);
 
 /* Per-vertex normals (a render_object's vnormal14, render.h): 3 Q1.14 values a vertex, as a grid
  * mesh's normal14 holds per quad. Normal i widened as mesh_normal widens a grid's. */

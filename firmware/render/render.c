@@ -1067,6 +1067,128 @@ render_face_any(struct render_frame *f, const struct render_faces_job *job, bool
 }
 
 /*
+ * The face loop of a quad mesh (mesh.quads), filled and flat: quad q's halves (a, b, c) and
+ * (c, d, a) have their four corners read once and, being halves of one quad (one normal, one
+ * material, MESH_FACE_QUAD: both keys are the diagonal a-c's), one colour and one key formed for
+ * both, when a half is drawn. A quad with a corner off the screen (only where `check`, as in
+ * render_faces: the object crosses the frustum) has both halves done by render_face_any; else
+ * every corner is on the frame and the 32-bit area is exact (proj_signed_area_inside). The same
+ * primitives, in the same order and with the same counts, as render_faces over the same faces.
+ * One copy for every case (`check` and a level cache are run-time tests, a predicted branch a
+ * quad): the voxel's one-scene image has no room for four.
+ */
+static void render_quad_faces(struct render_frame *f, const struct render_faces_job *job_in,
+                              bool check)
+{
+    /* A copy in locals: stores to the frame cannot change it, so the loop keeps it in registers. */
+    const struct render_faces_job job_copy = *job_in;
+    const struct render_faces_job *const job = &job_copy;
+    const struct mesh *mesh = job->mesh;
+    const struct mesh_face *face = mesh->faces;
+    const struct mesh_face *const face_end = face + mesh->face_count;
+    uint8_t *const levels = job->levels;
+    const uint32_t base = job->base;
+    const struct proj_vertex *vert = &f->vert[base];
+    struct render_prim *const prim = f->prim;
+    struct render_prim *const p_end = prim + f->prim_cap;
+    sort_item_t *const sort_item = f->sort_item;
+    const uint32_t np_start = f->prim_count;
+    /* As in render_faces: the next primitive and item, and the next item's payload under the
+     * largest key. */
+    struct render_prim *p = prim + np_start;
+    sort_item_t *item = sort_item + np_start;
+    sort_item_t key_np = sort_item_make(0xFFFFu, np_start);
+    struct render_face_counts slow = {0, 0, 0};  /* render_face_any's */
+    uint32_t n_back = 0;
+    uint32_t np;
+    uint32_t vsize = sizeof(struct proj_vertex);
+
+    FW_ONE_REGISTER(vert);
+    FW_AS_MULTIPLIER(vsize);
+    for (; face != face_end; face += 2) {
+        const uint32_t ia = face[0].v[0];
+        const uint32_t ib = face[0].v[1];
+        const uint32_t ic = face[0].v[2];
+        const uint32_t id = face[1].v[1];
+        const struct proj_vertex *a = proj_vertex_at(vert, ia, vsize);
+        const struct proj_vertex *b = proj_vertex_at(vert, ib, vsize);
+        const struct proj_vertex *c = proj_vertex_at(vert, ic, vsize);
+        const struct proj_vertex *d = proj_vertex_at(vert, id, vsize);
+        bool front0;
+        bool front1;
+        uint32_t level;
+        uint32_t color;
+        sort_item_t key;
+
+        if (check && (a->code | b->code | c->code | d->code) != 0u) {
+            /* All four corners beyond one plane: both halves frustum-culled, as render_faces
+             * would find each. */
+            if ((a->code & b->code & c->code & d->code & PROJ_CULL_BITS) != 0u) {
+                slow.n_frustum += 2u;
+                continue;
+            }
+            np = (uint32_t)(p - prim);
+            np = render_face_any(f, job, true, &face[0], np, &slow);
+            np = render_face_any(f, job, true, &face[1], np, &slow);
+            p = prim + np;
+            item = sort_item + np;
+            key_np = sort_item_make(0xFFFFu, np);
+            continue;
+        }
+        front0 = proj_signed_area_inside(a, b, c) > 0;
+        front1 = proj_signed_area_inside(c, d, a) > 0;
+        if (!front0 && !front1) {
+            n_back += 2u;
+            continue;
+        }
+        if (p >= p_end) {  /* no room: no light level looked up either, as in render_faces */
+            n_back += (front0 ? 0u : 1u) + (front1 ? 0u : 1u);
+            f->stats.dropped += (front0 ? 1u : 0u) + (front1 ? 1u : 0u);
+            continue;
+        }
+        if (levels != 0) {
+            level = levels[face->normal];
+            if (FW_UNLIKELY(level == RENDER_LEVEL_UNKNOWN)) {
+                level = render_level_fill(levels, job->light, mesh, face->normal);
+            }
+        } else {
+            level = palette_light_level(job->light, mesh->normals[face->normal]);
+        }
+        color = PAL_INDEX((job->material_override != 0u) ? job->material_override : face->material,
+                          level);
+        /* render_face_key of a MESH_FACE_QUAD half; <= 65535, so no borrow (render_faces). */
+        key = (sort_item_t)((((uint32_t)a->depth + c->depth) * 3u) >> 1) << SORT_KEY_SHIFT;
+        if (!front0) {
+            n_back++;
+        } else if (p >= p_end) {
+            f->stats.dropped++;
+        } else {
+            render_prim_put(p, base + ia, base + ib, base + ic, color, GPU_PRIM_KIND_TRI);
+            *item = key_np - key;
+            p++;
+            item++;
+            key_np++;
+        }
+        if (!front1) {
+            n_back++;
+        } else if (p >= p_end) {
+            f->stats.dropped++;
+        } else {
+            render_prim_put(p, base + ic, base + id, base + ia, color, GPU_PRIM_KIND_TRI);
+            *item = key_np - key;
+            p++;
+            item++;
+            key_np++;
+        }
+    }
+    np = (uint32_t)(p - prim);
+    f->prim_count = np;
+    f->stats.faces_frustum += slow.n_frustum;
+    f->stats.faces_back += n_back + slow.n_back;
+    f->stats.faces_emitted += (np - np_start) - slow.np_general;  /* all but the general path's */
+}
+
+/*
  * One face of a lattice mesh in render_lattice_faces whose quad has all four corners on the screen
  * (outcode 0, or an object inside the frustum): `face` with corners a, b, c, frame vertices ia, ib,
  * ic (its v[0..2] plus the object's base: mesh_set_lattice checked that they are). What
@@ -1193,6 +1315,26 @@ static void render_lattice_faces(struct render_frame *f, const struct render_fac
     f->stats.faces_emitted += (np - np_start) - slow.np_general;  /* all but the general path's */
 }
 
+/* Every face of the mesh through render_face_any: the lattice and quad loops' other cases (inlined
+ * in each: a program links one of the two, and a shared copy would cost the landscape's image the
+ * call's bytes). */
+static inline __attribute__((always_inline)) void
+render_faces_one_by_one(struct render_frame *f, const struct render_faces_job *job, bool check)
+{
+    const uint32_t nf = job->mesh->face_count;
+    const uint32_t np_start = f->prim_count;
+    uint32_t np = np_start;
+    struct render_face_counts n = {0, 0, 0};
+
+    for (uint32_t fi = 0; fi < nf; fi++) {
+        np = render_face_any(f, job, check, &job->mesh->faces[fi], np, &n);
+    }
+    f->prim_count = np;
+    f->stats.faces_frustum += n.n_frustum;
+    f->stats.faces_back += n.n_back;
+    f->stats.faces_emitted += (np - np_start) - n.np_general;
+}
+
 void render_lattice_faces_loop(struct render_frame *f, const struct render_faces_job *job,
                                bool inside)
 {
@@ -1201,18 +1343,7 @@ void render_lattice_faces_loop(struct render_frame *f, const struct render_faces
      * takes render_face_any face by face. */
     if (job->mesh->lattice_cols == 0u || job->levels == 0 || job->material_override != 0u ||
         (FW_WITH_WIREFRAME && job->pass->wireframe)) {
-        const uint32_t nf = job->mesh->face_count;
-        const uint32_t np_start = f->prim_count;
-        uint32_t np = np_start;
-        struct render_face_counts n = {0, 0, 0};
-
-        for (uint32_t fi = 0; fi < nf; fi++) {
-            np = render_face_any(f, job, !inside, &job->mesh->faces[fi], np, &n);
-        }
-        f->prim_count = np;
-        f->stats.faces_frustum += n.n_frustum;
-        f->stats.faces_back += n.n_back;
-        f->stats.faces_emitted += (np - np_start) - n.np_general;
+        render_faces_one_by_one(f, job, !inside);
     } else {
         render_lattice_faces(f, job, !inside);
     }
@@ -1237,6 +1368,18 @@ void render_general_faces_loop(struct render_frame *f, const struct render_faces
         } else {
             render_faces(f, &job, true, false);
         }
+    }
+}
+
+void render_quad_faces_loop(struct render_frame *f, const struct render_faces_job *job, bool inside)
+{
+    /* The quad loop is the filled, flat pass of a quad mesh; anything else (wireframe, Gouraud, a
+     * mesh that is not marked) takes render_face_any face by face. */
+    if (!job->mesh->quads || (FW_WITH_WIREFRAME && job->pass->wireframe) ||
+        (FW_WITH_GOURAUD && job->vnormal14 != 0)) {
+        render_faces_one_by_one(f, job, !inside);
+    } else {
+        render_quad_faces(f, job, !inside);
     }
 }
 

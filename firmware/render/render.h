@@ -223,6 +223,11 @@ void render_general_faces_loop(struct render_frame *f, const struct render_faces
                                bool inside);
 void render_grid_faces_loop(struct render_frame *f, const struct render_faces_job *job,
                             bool inside);
+/* A quad mesh's (mesh_set_quads): the general loop's primitives, each quad's corners, key and
+ * colour read once for both halves, filled and flat; anything else (wireframe, Gouraud, a mesh not
+ * marked) goes face by face through one copy of the general loop's code. */
+void render_quad_faces_loop(struct render_frame *f, const struct render_faces_job *job,
+                            bool inside);
 /* A lattice mesh's (mesh_set_lattice; with a level cache, render_object.levels): the general loop's
  * primitives, its faces' corners walked instead of read, flat or Gouraud. Anything else (another
  * mesh, wireframe, an eye material) goes face by face through one copy of the general loop's code. */

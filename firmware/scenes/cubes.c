@@ -42,6 +42,7 @@ static void cubes_init(struct scene *s)
         mesh_add_quad(m, q[0], q[1], q[2], q[3], mesh_add_normal(m, mesh_cube_face_normal(d)), 0);
     }
     mesh_finish(m);
+    (void)mesh_set_quads(m);
 
     for (int32_t z = 0; z < CUBES_PER_SIDE; z++) {
         for (int32_t y = 0; y < CUBES_PER_SIDE; y++) {
@@ -51,7 +52,7 @@ static void cubes_init(struct scene *s)
                                            CUBES_SPACING * (2 * y - 3) / 2,
                                            CUBES_SPACING * (2 * z - 3) / 2);
 
-                scene_add_object(s, m, &id, pos, (uint8_t)(MAT_RED + n % 8u));
+                scene_add_quad_object(s, m, &id, pos, (uint8_t)(MAT_RED + n % 8u));
                 n++;
             }
         }

@@ -128,13 +128,19 @@ static void scene_new_object(struct scene *s, const struct mesh *m, const mat3 *
     o->project = project;
 }
 
-/* Three functions, each naming its own loop (the general one the box projection too: a grid or
- * lattice mesh is never a box; the lattice one the lattice projection): a program links the loop
- * only when a scene of its calls the function (render_object.faces, .project). */
+/* Four functions, each naming its own loop (the general and quad ones the box projection too: a
+ * grid or lattice mesh is never a box; the lattice one the lattice projection): a program links
+ * the loop only when a scene of its calls the function (render_object.faces, .project). */
 void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
                       uint8_t material)
 {
     scene_new_object(s, m, rot, pos, material, render_general_faces_loop, render_project_boxed);
+}
+
+void scene_add_quad_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
+                           uint8_t material)
+{
+    scene_new_object(s, m, rot, pos, material, render_quad_faces_loop, render_project_boxed);
 }
 
 void scene_add_grid_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,

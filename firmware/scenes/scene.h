@@ -201,6 +201,10 @@ void scene_add_object(struct scene *s, const struct mesh *m, const mat3 *rot, ve
  * (render_object.faces), which only a program with such a scene then links. */
 void scene_add_grid_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
                            uint8_t material);
+/* The same for a quad mesh (mesh_set_quads): the quad face loop, which draws any other mesh, and
+ * a wireframe pass, face by face. */
+void scene_add_quad_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
+                           uint8_t material);
 /* The same for a lattice mesh (mesh_set_lattice) with a level cache: the lattice's face loop, which
  * draws any other mesh through the general one. */
 void scene_add_lattice_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,

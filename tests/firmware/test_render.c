@@ -743,6 +743,122 @@ void test_render_lattice_loop(void)
     CHECK(clipped > 100u);  /* many of those across the near plane or the guard band (260) */
 }
 
+/* A quad mesh (mesh_set_quads) over the lattice's random heights: each cell one quad (a, b, c', d)
+ * through mesh_add_quad, with one of four normals and a random material. */
+static void quad_mesh_build(struct lat_mesh *t)
+{
+    const uint16_t w = LAT_C + 1;
+
+    mesh_init(&t->m, t->v, LAT_VERTS, t->f, LAT_FACES, t->n, LAT_FACES);
+    for (int r = 0; r <= LAT_R; r++) {
+        for (int c = 0; c <= LAT_C; c++) {
+            mesh_add_vertex(&t->m, v3(2.0 * c - LAT_C, (double)(unit_rand() % 2001u) / 1000.0 - 1.0,
+                                      2.0 * r - LAT_R));
+            mesh_normal_to_q14(u3(0, 1, 0), &t->vnormal[3 * (r * w + c)]);
+        }
+    }
+    mesh_add_normal(&t->m, u3(0, 1, 0));
+    mesh_add_normal(&t->m, u3(0.6, 0.8, 0));
+    mesh_add_normal(&t->m, u3(0, 0.8, -0.6));
+    mesh_add_normal(&t->m, u3(-0.48, 0.6, 0.64));
+    for (uint16_t r = 0; r < LAT_R; r++) {
+        for (uint16_t c = 0; c < LAT_C; c++) {
+            const uint16_t a = (uint16_t)(r * w + c);
+
+            mesh_add_quad(&t->m, a, (uint16_t)(a + w), (uint16_t)(a + w + 1u), (uint16_t)(a + 1u),
+                          (uint16_t)(unit_rand() % 4u), (uint8_t)(MAT_RED + unit_rand() % 4u));
+        }
+    }
+    mesh_finish(&t->m);
+}
+
+/* The quad loop draws exactly what the general loop draws, for random views (inside the frustum,
+ * crossing its planes, the near plane and the guard band), in every mode: filled flat with and
+ * without a level cache, Gouraud, an eye material, wireframe with and without GPU lines, and with
+ * the frame running out of room. mesh_set_quads accepts only quads' halves. */
+void test_render_quad_loop(void)
+{
+    static struct lat_mesh t;
+    static struct lat_result general;
+    static struct lat_result quads;
+    static uint8_t cache_storage[2][LAT_FACES];
+    struct render_level_cache cache[2];
+    const uint32_t prim_cap = test_frame.prim_cap;
+    uint32_t cases = 0;
+    uint32_t clipped = 0;
+    uint32_t dropped = 0;
+    uint32_t inside = 0;
+
+    unit_srand(1618u);
+    lat_mesh_build(&t, 0u);  /* triangles, not quads */
+    CHECK(!mesh_set_quads(&t.m));
+    quad_mesh_build(&t);
+    t.f[9].material ^= 1u;  /* halves of one quad with two materials */
+    CHECK(!mesh_set_quads(&t.m));
+    CHECK_EQ(t.m.quads, 0);
+    quad_mesh_build(&t);
+    t.f[4].v[0] = t.f[5].v[1];  /* a half that is not the quad's */
+    CHECK(!mesh_set_quads(&t.m));
+    quad_mesh_build(&t);
+    CHECK(mesh_set_quads(&t.m));
+    CHECK_EQ(t.m.quads, 1);
+    for (uint32_t view = 0; view < 2000u; view++) {
+        struct render_pass pass;
+        struct proj_setup ps;
+        struct cam_view cam;
+        const mat3 id = mat3_identity();
+        const uint32_t mode = view % 7u;
+        const uint32_t cap = (mode == 6u) ? 1u + unit_rand() % 40u : prim_cap;
+        struct render_object o = {0};
+
+        proj_setup_init(&ps, 200, to_real(40.0), GPU_FB_WIDTH, GPU_FB_HEIGHT);
+        cam.rot = mat3_from_yaw_pitch((fx_angle)unit_rand(),  /* pitch within +-110 degrees */
+                                       (fx_angle)(65536u - 20000u + unit_rand() % 40001u));
+        cam.eye = v3((double)(unit_rand() % 4001u) / 100.0 - 20.0,
+                     (double)(unit_rand() % 1001u) / 100.0 - 2.0,
+                     (double)(unit_rand() % 4001u) / 100.0 - 20.0);
+        if (view % 4u == 3u) {
+            /* Looking at the mesh from 25 units (view = rot (p - eye) puts its centre at z = 25):
+             * the whole mesh inside the frustum, the loops' inside case. */
+            const real_t back = to_real(-25.0);
+
+            cam.eye = vec3_make(real_mul(back, real_from_unit(cam.rot.m[2][0])),
+                                real_mul(back, real_from_unit(cam.rot.m[2][1])),
+                                real_mul(back, real_from_unit(cam.rot.m[2][2])));
+        }
+        render_pass_init(&pass, &ps, &cam, &id, v3(0, 0, 0), u3(0.3, 0.8, -0.5), 3);
+        pass.wireframe = (mode == 4u || mode == 5u);
+        pass.gpu_lines = (mode != 5u);
+        pass.gouraud = (mode == 2u);
+        pass.eye_material = (mode == 3u) ? MAT_ANAGLYPH_LEFT : 0u;
+        o.mesh = &t.m;
+        o.rot = mat3_identity();
+        o.vnormal14 = (mode == 2u) ? t.vnormal : 0;
+        o.material = (view % 5u == 0u) ? (uint8_t)MAT_GREEN : 0u;
+        for (uint32_t k = 0; k < 2u; k++) {
+            render_level_cache_init(&cache[k], cache_storage[k], LAT_FACES);
+            o.levels = (view % 3u == 0u) ? 0 : &cache[k];
+            o.faces = (k == 0u) ? render_general_faces_loop : render_quad_faces_loop;
+            test_frame.prim_cap = cap;
+            begin();
+            render_object(&test_frame, &pass, &o);
+            lat_capture((k == 0u) ? &general : &quads);
+            test_frame.prim_cap = prim_cap;
+        }
+        CHECK(lat_same(&general, &quads));
+        CHECK(memcmp(cache_storage[0], cache_storage[1], sizeof cache_storage[0]) == 0);
+        cases += (general.prim_count != 0u) ? 1u : 0u;
+        clipped += (general.stats.faces_clipped != 0u) ? 1u : 0u;
+        dropped += (general.stats.dropped != 0u) ? 1u : 0u;
+        inside += (general.stats.faces_frustum == 0u && general.stats.faces_clipped == 0u &&
+                   general.prim_count != 0u && view % 4u == 3u) ? 1u : 0u;
+    }
+    CHECK(cases > 500u);    /* views that see the mesh (612) */
+    CHECK(clipped > 120u);  /* across the near plane or the guard band (183) */
+    CHECK(dropped > 40u);   /* out of room part-way (63) */
+    CHECK(inside > 250u);   /* the whole mesh on the screen (345) */
+}
+
 /* The projection alone (the views above seldom hold the whole mesh inside the frustum, the
  * case render_project_lattice has its own loop for): the same vertices as render_project_boxed's
  * (a lattice is no box: every vertex through xf_apply), inside or not, for random model-view

@@ -113,6 +113,7 @@ void unit_srand(uint32_t seed);
     X(test_render_inside_shortcut)    \
     X(test_render_lattice_loop)       \
     X(test_render_lattice_projection) \
+    X(test_render_quad_loop)          \
     X(test_batch_split_and_renumber)  \
     X(test_batch_shares_vertices)     \
     X(test_batch_outlines)            \

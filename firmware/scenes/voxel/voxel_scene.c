@@ -84,7 +84,7 @@ static void voxel_scene_init(struct scene *s)
                 struct voxel_chunk *c = &v->chunk[voxel_chunk_index(cx, cy, cz)];
 
                 voxel_chunk_init(c, cx, cy, cz);
-                scene_add_object(s, &c->mesh, &id, c->origin, 0);
+                scene_add_quad_object(s, &c->mesh, &id, c->origin, 0);
                 render_level_cache_init(&c->levels, c->level, 6u);
                 s->object[s->object_count - 1u].levels = &c->levels;
             }

@@ -180,6 +180,7 @@ void voxel_build_chunk(const struct voxel_world *w, int32_t cx, int32_t cy, int3
         }
     }
     mesh_finish(m);
+    (void)mesh_set_quads(m);  /* every face a quad's half (mesh_add_quad): the quad face loop's */
 }
 
 bool voxel_raycast(const struct voxel_world *w, vec3 origin, uvec3 dir, real_t max_dist,
