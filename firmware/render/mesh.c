@@ -3,6 +3,8 @@
  */
 #include "render/mesh.h"
 
+#include "config/hot_path.h"
+
 void mesh_init(struct mesh *m, vec3 *verts, uint32_t vert_cap, struct mesh_face *faces,
                uint32_t face_cap, uvec3 *normals, uint32_t normal_cap)
 {
@@ -99,7 +101,7 @@ static bool mesh_in_model_range(vec3 p)
            p.y < MESH_MODEL_LIMIT && p.z > -MESH_MODEL_LIMIT && p.z < MESH_MODEL_LIMIT;
 }
 
-void mesh_finish(struct mesh *m)
+FW_BUILD_ONCE void mesh_finish(struct mesh *m)
 {
     vec3 lo;
     vec3 hi;
@@ -206,7 +208,7 @@ void mesh_set_grid(struct mesh *m, uint32_t rows, uint32_t cols, bool flip,
     m->face_count = 2u * rows * cols;
 }
 
-bool mesh_set_lattice(struct mesh *m, uint32_t rows, uint32_t cols, uint32_t diag0)
+FW_BUILD_ONCE bool mesh_set_lattice(struct mesh *m, uint32_t rows, uint32_t cols, uint32_t diag0)
 {
     const uint32_t w = cols + 1u;  /* vertices per row */
     const struct mesh_face *face = m->faces;
@@ -245,7 +247,7 @@ bool mesh_set_lattice(struct mesh *m, uint32_t rows, uint32_t cols, uint32_t dia
     return true;
 }
 
-bool mesh_set_quads(struct mesh *m)
+FW_BUILD_ONCE bool mesh_set_quads(struct mesh *m)
 {
     m->quads = 0;
     if (m->face_count == 0u || (m->face_count & 1u) != 0u || m->grid.rows != 0u || m->full) {

@@ -9,6 +9,7 @@
  * get the same normal on either side and the shading has no seams; the GPU then interpolates the
  * light across each face where it can (CAPS_GOURAUD), and the scene stays flat where it cannot.
  */
+#include "config/hot_path.h"
 #include "render/palette.h"
 #include "scenes/scene.h"
 
@@ -41,7 +42,7 @@ SCENE_STATE_FITS(landscape, struct landscape_state);
 
 /* Height at grid point (i, j), q16_16, sea level .. ~6.5: a sum of three sines of amplitude
  * 2.2, 1.6 and 1.1 plus 1.6 (each term < 2^18 raw, the sum < 2^19: no overflow). */
-static q16_16 land_height(int32_t i, int32_t j)
+static FW_BUILD_ONCE q16_16 land_height(int32_t i, int32_t j)
 {
     const q16_16 a = fx_sin((fx_angle)(i * 1500 + j * 700));
     const q16_16 b = fx_cos((fx_angle)(j * 1900 - i * 600));
@@ -51,7 +52,7 @@ static q16_16 land_height(int32_t i, int32_t j)
     return (h < LAND_SEA_Q16) ? LAND_SEA_Q16 : h;
 }
 
-static uint8_t land_material(q16_16 mean_height)
+static FW_BUILD_ONCE uint8_t land_material(q16_16 mean_height)
 {
     if (mean_height <= LAND_SEA_Q16 + FX_CONST(0.01)) {
         return MAT_WATER;
@@ -69,7 +70,7 @@ static uint8_t land_material(q16_16 mean_height)
 }
 
 /* Grid point (gi, gj) of the terrain, model space: the vertex land_build_tile makes for it. */
-static vec3 land_point(int32_t gi, int32_t gj)
+static FW_BUILD_ONCE vec3 land_point(int32_t gi, int32_t gj)
 {
     return vec3_make(real_from_int((gi - LAND_CELLS / 2) * LAND_CELL_SIZE),
                      real_from_q16(land_height(gi, gj) * 3 / 2),
@@ -79,7 +80,7 @@ static vec3 land_point(int32_t gi, int32_t gj)
 #if FW_WITH_GOURAUD
 /* The normal of face h (0 or 1) of terrain cell (ci, cj): the one mesh_add_face computed for it in
  * its tile (land_build_tile adds a tile's cells row by row, two faces each). */
-static uvec3 land_face_normal(const struct landscape_state *l, int32_t ci, int32_t cj, uint32_t h)
+static FW_BUILD_ONCE uvec3 land_face_normal(const struct landscape_state *l, int32_t ci, int32_t cj, uint32_t h)
 {
     const int32_t n = LANDSCAPE_TILE_CELLS;
     const struct landscape_tile *t = &l->tile[(cj / n) * LANDSCAPE_TILES + ci / n];
@@ -91,7 +92,7 @@ static uvec3 land_face_normal(const struct landscape_state *l, int32_t ci, int32
  * of the whole terrain that has it as a corner (the cells (gi-1 .. gi, gj-1 .. gj) that exist,
  * each split along the diagonal land_build_tile chooses; 1 .. 8 faces), read from the tiles once
  * every tile is built: each face's normal is computed once, not once per corner. */
-static uvec3 land_vertex_normal(const struct landscape_state *l, int32_t gi, int32_t gj)
+static FW_BUILD_ONCE uvec3 land_vertex_normal(const struct landscape_state *l, int32_t gi, int32_t gj)
 {
     uvec3 n[8];
     uint32_t count = 0;
@@ -125,7 +126,7 @@ static uvec3 land_vertex_normal(const struct landscape_state *l, int32_t gi, int
 }
 
 /* Tile (ti, tj)'s vertex normals, from the faces of every tile (all built). */
-static void land_tile_vertex_normals(const struct landscape_state *l, struct landscape_tile *t,
+static FW_BUILD_ONCE void land_tile_vertex_normals(const struct landscape_state *l, struct landscape_tile *t,
                                      int32_t ti, int32_t tj)
 {
     const int32_t n = LANDSCAPE_TILE_CELLS;
@@ -139,7 +140,7 @@ static void land_tile_vertex_normals(const struct landscape_state *l, struct lan
 }
 #endif
 
-static void land_build_tile(struct landscape_tile *t, int32_t ti, int32_t tj)
+static FW_BUILD_ONCE void land_build_tile(struct landscape_tile *t, int32_t ti, int32_t tj)
 {
     struct mesh *m = &t->mesh;
     const int32_t n = LANDSCAPE_TILE_CELLS;
@@ -184,7 +185,7 @@ static void land_build_tile(struct landscape_tile *t, int32_t ti, int32_t tj)
     (void)mesh_set_lattice(m, (uint32_t)n, (uint32_t)n, (uint32_t)((ti * n + tj * n) & 1));
 }
 
-static void land_init(struct scene *s)
+static FW_BUILD_ONCE void land_init(struct scene *s)
 {
     struct landscape_state *l = SCENE_STATE(s, struct landscape_state);
     struct cam_config cfg = scene_default_cam_config();
