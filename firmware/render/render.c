@@ -964,21 +964,21 @@ render_lattice_corner(const struct proj_vertex *v)
     return k;
 }
 
-/* What render_lattice_faces' faces share, and what they count: the next primitive and sort item
- * as pointers, and the next item's payload with the largest draw key above it, from which a
- * face's item is one subtraction (render_lattice_face). */
-struct render_lattice_walk {
+/* What the faces of render_lattice_faces and render_quad_faces share, and what they count: the
+ * next primitive and sort item as pointers, and the next item's payload with the largest draw key
+ * above it, from which a face's item is one subtraction (render_lattice_face, render_quad_half). */
+struct render_emit_walk {
     struct render_prim *prim;       /* the frame's primitives */
     struct render_prim *p;          /* the next one: prim + np */
     struct render_prim *p_end;      /* prim + prim_cap */
     sort_item_t *item;              /* sort_item + np */
     sort_item_t key_np;             /* sort_item_make(0xFFFF, np) */
-    uint8_t *levels;     /* the object's level cache (render_lattice_faces_loop requires one) */
+    uint8_t *levels;     /* the object's level cache (render_lattice_faces_loop requires one) or 0 */
     uint32_t n_back;
 };
 
 /* The walk's pointers and key for np primitives. */
-static inline void render_lattice_at(struct render_lattice_walk *w, sort_item_t *sort_item,
+static inline void render_emit_at(struct render_emit_walk *w, sort_item_t *sort_item,
                                      uint32_t np)
 {
     w->p = w->prim + np;
@@ -1066,6 +1066,25 @@ render_face_any(struct render_frame *f, const struct render_faces_job *job, bool
     return np + 1u;
 }
 
+/* A half of render_quad_faces' quad, with frame vertices i0, i1, i2, the quad's colour and its key
+ * (shifted into place): a back face counted, a front one dropped for want of room or emitted. */
+static inline __attribute__((always_inline)) void
+render_quad_half(struct render_frame *f, struct render_emit_walk *w, bool front, uint32_t i0,
+                 uint32_t i1, uint32_t i2, uint32_t color, sort_item_t key)
+{
+    if (!front) {
+        w->n_back++;
+    } else if (w->p >= w->p_end) {
+        f->stats.dropped++;
+    } else {
+        render_prim_put(w->p, i0, i1, i2, color, GPU_PRIM_KIND_TRI);
+        *w->item = w->key_np - key;
+        w->p++;
+        w->item++;
+        w->key_np++;
+    }
+}
+
 /*
  * The face loop of a quad mesh (mesh.quads), filled and flat: quad q's halves (a, b, c) and
  * (c, d, a) have their four corners read once and, being halves of one quad (one normal, one
@@ -1086,23 +1105,20 @@ static void render_quad_faces(struct render_frame *f, const struct render_faces_
     const struct mesh *mesh = job->mesh;
     const struct mesh_face *face = mesh->faces;
     const struct mesh_face *const face_end = face + mesh->face_count;
-    uint8_t *const levels = job->levels;
     const uint32_t base = job->base;
     const struct proj_vertex *vert = &f->vert[base];
-    struct render_prim *const prim = f->prim;
-    struct render_prim *const p_end = prim + f->prim_cap;
     sort_item_t *const sort_item = f->sort_item;
     const uint32_t np_start = f->prim_count;
-    /* As in render_faces: the next primitive and item, and the next item's payload under the
-     * largest key. */
-    struct render_prim *p = prim + np_start;
-    sort_item_t *item = sort_item + np_start;
-    sort_item_t key_np = sort_item_make(0xFFFFu, np_start);
+    struct render_emit_walk w;
     struct render_face_counts slow = {0, 0, 0};  /* render_face_any's */
-    uint32_t n_back = 0;
     uint32_t np;
     uint32_t vsize = sizeof(struct proj_vertex);
 
+    w.prim = f->prim;
+    w.p_end = f->prim + f->prim_cap;
+    w.levels = job->levels;
+    w.n_back = 0;
+    render_emit_at(&w, sort_item, np_start);
     FW_ONE_REGISTER(vert);
     FW_AS_MULTIPLIER(vsize);
     for (; face != face_end; face += 2) {
@@ -1127,29 +1143,27 @@ static void render_quad_faces(struct render_frame *f, const struct render_faces_
                 slow.n_frustum += 2u;
                 continue;
             }
-            np = (uint32_t)(p - prim);
+            np = (uint32_t)(w.p - w.prim);
             np = render_face_any(f, job, true, &face[0], np, &slow);
             np = render_face_any(f, job, true, &face[1], np, &slow);
-            p = prim + np;
-            item = sort_item + np;
-            key_np = sort_item_make(0xFFFFu, np);
+            render_emit_at(&w, sort_item, np);
             continue;
         }
         front0 = proj_signed_area_inside(a, b, c) > 0;
         front1 = proj_signed_area_inside(c, d, a) > 0;
         if (!front0 && !front1) {
-            n_back += 2u;
+            w.n_back += 2u;
             continue;
         }
-        if (p >= p_end) {  /* no room: no light level looked up either, as in render_faces */
-            n_back += (front0 ? 0u : 1u) + (front1 ? 0u : 1u);
+        if (w.p >= w.p_end) {  /* no room: no light level looked up either, as in render_faces */
+            w.n_back += (front0 ? 0u : 1u) + (front1 ? 0u : 1u);
             f->stats.dropped += (front0 ? 1u : 0u) + (front1 ? 1u : 0u);
             continue;
         }
-        if (levels != 0) {
-            level = levels[face->normal];
+        if (w.levels != 0) {
+            level = w.levels[face->normal];
             if (FW_UNLIKELY(level == RENDER_LEVEL_UNKNOWN)) {
-                level = render_level_fill(levels, job->light, mesh, face->normal);
+                level = render_level_fill(w.levels, job->light, mesh, face->normal);
             }
         } else {
             level = palette_light_level(job->light, mesh->normals[face->normal]);
@@ -1158,33 +1172,13 @@ static void render_quad_faces(struct render_frame *f, const struct render_faces_
                           level);
         /* render_face_key of a MESH_FACE_QUAD half; <= 65535, so no borrow (render_faces). */
         key = (sort_item_t)((((uint32_t)a->depth + c->depth) * 3u) >> 1) << SORT_KEY_SHIFT;
-        if (!front0) {
-            n_back++;
-        } else if (p >= p_end) {
-            f->stats.dropped++;
-        } else {
-            render_prim_put(p, base + ia, base + ib, base + ic, color, GPU_PRIM_KIND_TRI);
-            *item = key_np - key;
-            p++;
-            item++;
-            key_np++;
-        }
-        if (!front1) {
-            n_back++;
-        } else if (p >= p_end) {
-            f->stats.dropped++;
-        } else {
-            render_prim_put(p, base + ic, base + id, base + ia, color, GPU_PRIM_KIND_TRI);
-            *item = key_np - key;
-            p++;
-            item++;
-            key_np++;
-        }
+        render_quad_half(f, &w, front0, base + ia, base + ib, base + ic, color, key);
+        render_quad_half(f, &w, front1, base + ic, base + id, base + ia, color, key);
     }
-    np = (uint32_t)(p - prim);
+    np = (uint32_t)(w.p - w.prim);
     f->prim_count = np;
     f->stats.faces_frustum += slow.n_frustum;
-    f->stats.faces_back += n_back + slow.n_back;
+    f->stats.faces_back += w.n_back + slow.n_back;
     f->stats.faces_emitted += (np - np_start) - slow.np_general;  /* all but the general path's */
 }
 
@@ -1200,7 +1194,7 @@ static void render_quad_faces(struct render_frame *f, const struct render_faces_
  */
 static inline __attribute__((always_inline)) void
 render_lattice_face(struct render_frame *f, const struct render_faces_job *job,
-                    struct render_lattice_walk *w, struct render_lattice_corner a,
+                    struct render_emit_walk *w, struct render_lattice_corner a,
                     struct render_lattice_corner b, struct render_lattice_corner c, uint32_t ia,
                     uint32_t ib, uint32_t ic, const struct mesh_face *face, bool shaded)
 {
@@ -1256,7 +1250,7 @@ static void render_lattice_faces(struct render_frame *f, const struct render_fac
     uint32_t row_i = job->base;
     const uint32_t np_start = f->prim_count;
     uint32_t np;
-    struct render_lattice_walk w;
+    struct render_emit_walk w;
     struct render_face_counts slow = {0, 0, 0};  /* render_face_any's */
     /* Gouraud: each face its material's base colour (one test a face; a copy of the loop for
      * each case would not fit the landscape's program in the SoC's 192 KiB). */
@@ -1266,7 +1260,7 @@ static void render_lattice_faces(struct render_frame *f, const struct render_fac
     w.p_end = f->prim + f->prim_cap;
     w.levels = job->levels;
     w.n_back = 0;
-    render_lattice_at(&w, f->sort_item, np_start);
+    render_emit_at(&w, f->sort_item, np_start);
     for (uint32_t r = 0; r < rows; r++, row_v += w_verts, row_i += w_verts) {
         const struct proj_vertex *v = row_v;  /* corner a of quad (r, c) */
         uint32_t ia = row_i;                  /* its frame vertex number */
@@ -1291,7 +1285,7 @@ static void render_lattice_faces(struct render_frame *f, const struct render_fac
                 np = (uint32_t)(w.p - w.prim);
                 np = render_face_any(f, job, true, &face[0], np, &slow);
                 np = render_face_any(f, job, true, &face[1], np, &slow);
-                render_lattice_at(&w, f->sort_item, np);
+                render_emit_at(&w, f->sort_item, np);
                 continue;
             }
             ka = render_lattice_corner(v);

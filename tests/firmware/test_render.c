@@ -669,6 +669,36 @@ static int lat_same(const struct lat_result *a, const struct lat_result *b)
     return 1;
 }
 
+/* A pass for the face loops' comparisons: a random eye (pitch within +-110 degrees) or, when
+ * `look_at`, the same rotation looking at the origin from 25 units (view = rot (p - eye) puts it at
+ * z = 25: a small mesh there is inside the frustum); `mode` 0..6: filled flat (0, 1), Gouraud (2),
+ * an eye material (3), wireframe with GPU lines (4) and without (5), filled (6). */
+static void loop_test_pass(struct render_pass *pass, struct proj_setup *ps, uint32_t mode,
+                           bool look_at)
+{
+    struct cam_view cam;
+    const mat3 id = mat3_identity();
+
+    proj_setup_init(ps, 200, to_real(40.0), GPU_FB_WIDTH, GPU_FB_HEIGHT);
+    cam.rot = mat3_from_yaw_pitch((fx_angle)unit_rand(),
+                                   (fx_angle)(65536u - 20000u + unit_rand() % 40001u));
+    cam.eye = v3((double)(unit_rand() % 4001u) / 100.0 - 20.0,
+                 (double)(unit_rand() % 1001u) / 100.0 - 2.0,
+                 (double)(unit_rand() % 4001u) / 100.0 - 20.0);
+    if (look_at) {
+        const real_t back = to_real(-25.0);
+
+        cam.eye = vec3_make(real_mul(back, real_from_unit(cam.rot.m[2][0])),
+                            real_mul(back, real_from_unit(cam.rot.m[2][1])),
+                            real_mul(back, real_from_unit(cam.rot.m[2][2])));
+    }
+    render_pass_init(pass, ps, &cam, &id, v3(0, 0, 0), u3(0.3, 0.8, -0.5), 3);
+    pass->wireframe = (mode == 4u || mode == 5u);
+    pass->gpu_lines = (mode != 5u);
+    pass->gouraud = (mode == 2u);
+    pass->eye_material = (mode == 3u) ? MAT_ANAGLYPH_LEFT : 0u;
+}
+
 /* The lattice loop and projection draw exactly what the general loop and projection draw, for
  * random views (inside the frustum, crossing its planes, the near plane and the guard band), in
  * every mode: filled flat with and without a level cache, Gouraud, an eye material, wireframe
@@ -703,23 +733,11 @@ void test_render_lattice_loop(void)
         for (uint32_t view = 0; view < 1000u; view++) {
             struct render_pass pass;
             struct proj_setup ps;
-            struct cam_view cam;
-            const mat3 id = mat3_identity();
             const uint32_t mode = view % 7u;
             const uint32_t cap = (mode == 6u) ? 1u + unit_rand() % 40u : prim_cap;
             struct render_object o = {0};
 
-            proj_setup_init(&ps, 200, to_real(40.0), GPU_FB_WIDTH, GPU_FB_HEIGHT);
-            cam.rot = mat3_from_yaw_pitch((fx_angle)unit_rand(),  /* pitch within +-110 degrees */
-                                           (fx_angle)(65536u - 20000u + unit_rand() % 40001u));
-            cam.eye = v3((double)(unit_rand() % 4001u) / 100.0 - 20.0,
-                         (double)(unit_rand() % 1001u) / 100.0 - 2.0,
-                         (double)(unit_rand() % 4001u) / 100.0 - 20.0);
-            render_pass_init(&pass, &ps, &cam, &id, v3(0, 0, 0), u3(0.3, 0.8, -0.5), 3);
-            pass.wireframe = (mode == 4u || mode == 5u);
-            pass.gpu_lines = (mode != 5u);
-            pass.gouraud = (mode == 2u);
-            pass.eye_material = (mode == 3u) ? MAT_ANAGLYPH_LEFT : 0u;
+            loop_test_pass(&pass, &ps, mode, false);
             o.mesh = &t.m;
             o.rot = mat3_identity();
             o.vnormal14 = t.vnormal;
@@ -805,32 +823,11 @@ void test_render_quad_loop(void)
     for (uint32_t view = 0; view < 2000u; view++) {
         struct render_pass pass;
         struct proj_setup ps;
-        struct cam_view cam;
-        const mat3 id = mat3_identity();
         const uint32_t mode = view % 7u;
         const uint32_t cap = (mode == 6u) ? 1u + unit_rand() % 40u : prim_cap;
         struct render_object o = {0};
 
-        proj_setup_init(&ps, 200, to_real(40.0), GPU_FB_WIDTH, GPU_FB_HEIGHT);
-        cam.rot = mat3_from_yaw_pitch((fx_angle)unit_rand(),  /* pitch within +-110 degrees */
-                                       (fx_angle)(65536u - 20000u + unit_rand() % 40001u));
-        cam.eye = v3((double)(unit_rand() % 4001u) / 100.0 - 20.0,
-                     (double)(unit_rand() % 1001u) / 100.0 - 2.0,
-                     (double)(unit_rand() % 4001u) / 100.0 - 20.0);
-        if (view % 4u == 3u) {
-            /* Looking at the mesh from 25 units (view = rot (p - eye) puts its centre at z = 25):
-             * the whole mesh inside the frustum, the loops' inside case. */
-            const real_t back = to_real(-25.0);
-
-            cam.eye = vec3_make(real_mul(back, real_from_unit(cam.rot.m[2][0])),
-                                real_mul(back, real_from_unit(cam.rot.m[2][1])),
-                                real_mul(back, real_from_unit(cam.rot.m[2][2])));
-        }
-        render_pass_init(&pass, &ps, &cam, &id, v3(0, 0, 0), u3(0.3, 0.8, -0.5), 3);
-        pass.wireframe = (mode == 4u || mode == 5u);
-        pass.gpu_lines = (mode != 5u);
-        pass.gouraud = (mode == 2u);
-        pass.eye_material = (mode == 3u) ? MAT_ANAGLYPH_LEFT : 0u;
+        loop_test_pass(&pass, &ps, mode, view % 4u == 3u);  /* a quarter inside the frustum */
         o.mesh = &t.m;
         o.rot = mat3_identity();
         o.vnormal14 = (mode == 2u) ? t.vnormal : 0;
