@@ -1309,9 +1309,10 @@ static void render_lattice_faces(struct render_frame *f, const struct render_fac
     f->stats.faces_emitted += (np - np_start) - slow.np_general;  /* all but the general path's */
 }
 
-/* Every face of the mesh through render_face_any: the lattice and quad loops' other cases (inlined
- * in each: a program links one of the two, and a shared copy would cost the landscape's image the
- * call's bytes). */
+/* Every face of the mesh one by one, as render_faces treats it: the lattice and quad loops' other
+ * cases (inlined in each: a program links one of the two, and a shared copy would cost the
+ * landscape's image the call's bytes). A wireframe pass sends each face the frustum leaves to the
+ * general path; anything else goes through render_face_any. */
 static inline __attribute__((always_inline)) void
 render_faces_one_by_one(struct render_frame *f, const struct render_faces_job *job, bool check)
 {
@@ -1355,7 +1356,7 @@ void render_lattice_faces_loop(struct render_frame *f, const struct render_faces
 {
     /* The lattice loop is the filled pass of a lattice mesh with its own materials and a level
      * cache, flat or Gouraud; anything else (wireframe, anaglyph's eye material, another mesh)
-     * takes render_face_any face by face. */
+     * goes face by face (render_faces_one_by_one). */
     if (job->mesh->lattice_cols == 0u || job->levels == 0 || job->material_override != 0u ||
         (FW_WITH_WIREFRAME && job->pass->wireframe)) {
         render_faces_one_by_one(f, job, !inside);
@@ -1389,7 +1390,7 @@ void render_general_faces_loop(struct render_frame *f, const struct render_faces
 void render_quad_faces_loop(struct render_frame *f, const struct render_faces_job *job, bool inside)
 {
     /* The quad loop is the filled, flat pass of a quad mesh; anything else (wireframe, Gouraud, a
-     * mesh that is not marked) takes render_face_any face by face. */
+     * mesh that is not marked) goes face by face (render_faces_one_by_one). */
     if (!job->mesh->quads || (FW_WITH_WIREFRAME && job->pass->wireframe) ||
         (FW_WITH_GOURAUD && job->vnormal14 != 0)) {
         render_faces_one_by_one(f, job, !inside);
