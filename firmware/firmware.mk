@@ -56,7 +56,7 @@
 # Convenience targets: fw, fw-all (every scene, both backends), fw-host, fw-unit, fw-smoke,
 # bench-fw (the instruction-count table of every scene and backend, measured in co-simulation),
 # profile-fw (one scene's instructions per function and frame; PROFILE_LINES=N: and its N hottest
-# source lines).
+# source lines; PROFILE_HAZARDS=1: and the pipeline's hazards, weighted with make bench-cpu's charges).
 #
 # Objects are shared by every program of the same variant and flags (mk/builds.toml's
 # [fw_variant]; $(BUILD)/fw-obj[-<p>|-host]/<variant>-<checksum of the flags>/); only app.c, which
@@ -469,7 +469,8 @@ bench-fw: $(FW_BENCH_ELFS) $(GPUSIM)
 
 # Instructions per function and frame of one scene's benchmark build (SCENE, FW_BACKEND).
 profile-fw: $(FW_BENCH_DIR)/$(call fw_name,$(SCENE),$(FW_BACKEND)).elf $(GPUSIM)
-	@$(or $(PYTHON),python3) firmware/tools/profile_fw.py $(GPUSIM) $< $(if $(PROFILE_LINES),--lines $(PROFILE_LINES))
+	@$(or $(PYTHON),python3) firmware/tools/profile_fw.py $(GPUSIM) $< $(if $(PROFILE_LINES),--lines $(PROFILE_LINES)) \
+	  $(if $(filter 1,$(PROFILE_HAZARDS)),--hazards)
 
 fw-force:
 

@@ -193,7 +193,7 @@ socsim_rules_unless_listed = $(if $(filter $(notdir $(1)),$(SOCSIM_IDS)),,$(eval
 $(call socsim_rules_unless_listed,$(SOCSIM_DIR),SOCSIM_CMD,$(SOCSIM_PREREQS_$(SOCSIM_SYSTEM)))
 $(call socsim_rules_unless_listed,$(SOCSIM_ULX3S_DIR),SOCSIM_ULX3S_CMD,$(SOCSIM_PREREQS_ulx3s))
 
-.PHONY: socsim socsim-ulx3s run-soc soc-fw soc-test-deps soc-sdram-test-deps bench-soc soc-smoke
+.PHONY: socsim socsim-ulx3s run-soc soc-fw soc-test-deps soc-sdram-test-deps bench-soc bench-cpu soc-smoke
 soc-fw:
 	+@$(SOC_FW_MAKE) SCENE=$(SCENE) FRAMES=$(FRAMES) FW_BACKEND=$(FW_BACKEND) $(SOC_FW_ELF)
 
@@ -232,6 +232,12 @@ soc-sdram-test-deps:
 # rtl-soc-smoke).
 soc-smoke: $(SOCSIM) $(SOC_SMOKE_HEX)
 	@BUILD=$(BUILD) SOCSIM=$(SOCSIM) SOC_SMOKE_HEX=$(SOC_SMOKE_HEX) bash tests/soc/smoke.sh
+
+# What the core's pipeline charges for each hazard (bench/bench_cpu.py, tests/soc/pipeline_cycles.c):
+# the weights of `make profile-fw PROFILE_HAZARDS=1`.
+bench-cpu: $(SOCSIM)
+	+@$(SOC_FW_MAKE) $(BUILD)/fw-test-soc/pipeline_cycles.elf
+	@$(PYTHON) bench/bench_cpu.py $(SOCSIM) $(BUILD)/fw-test-soc/pipeline_cycles.elf
 
 # The benchmark builds (firmware.mk's FW_BENCH_FRAMES frames) of every scene, each on socsim, one
 # table (bench/bench_soc.py).

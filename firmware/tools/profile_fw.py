@@ -20,12 +20,19 @@ With --lines N a second table follows: the N source lines whose instructions ran
 each program counter; a line inlined into several functions sums all its copies), to find the hot
 statements inside a hot function.
 
-Usage: profile_fw.py GPUSIM ELF [--top N] [--startup] [--lines N] [--uart-log FILE]
+With --hazards a third table follows: the pipeline hazards of VexRiscv_Full the frames' instruction
+sequence meets (a load's or a multiply's result used one or two instructions later, branches
+against the core's static prediction, jumps, back-to-back stores), each counted from the trace and
+weighted with the extra cycles `make bench-cpu` measures for it on the SoC (PIPELINE_CHARGES): an
+estimate of the cycles the pipeline waits, beside the caches' refills, which bench-soc counts.
+
+Usage: profile_fw.py GPUSIM ELF [--top N] [--startup] [--lines N] [--hazards] [--uart-log FILE]
 """
 import argparse
 import bisect
 import collections
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -35,6 +42,80 @@ FRAME_MARK = "scene_update"
 # Waiting for the GPU, not work (the firmware's "fw instr" leaves the same span out): the polling
 # of DONE_SEQ (gpu_wait, inlined into gpu_wait_idle) and the UART draining done between polls.
 NOT_PIPELINE = {"gpu_wait", "gpu_wait_idle", "app_drain_uart"}
+
+# VexRiscv_Full's extra cycles for each hazard, as `make bench-cpu` measures them on socsim
+# (tests/soc/pipeline_cycles.c; suite soc-pipeline-cycles fails when they differ from this table).
+PIPELINE_CHARGES = {
+    "load_use_next": 2,             # a load's result read by the next instruction
+    "load_use_after_one": 1,        # ... by the one after
+    "mul_use_next": 2,              # a multiply's (mul, mulh, mulhu, mulhsu)
+    "mul_use_after_one": 1,
+    "branch_forward_taken": 3,      # static prediction: forward not taken, backward taken
+    "branch_backward_not_taken": 3,
+    "branch_backward_taken": 1,
+    "jump": 1,                      # jal (j, call)
+    "return": 3,                    # jalr (ret, an indirect call): call_return minus a jump
+    "stores": 2,                    # a store right after a store (write-through bus cycles)
+}
+LOADS = {"lw", "lh", "lhu", "lb", "lbu"}
+MULS = {"mul", "mulh", "mulhu", "mulhsu"}
+STORES = {"sw", "sh", "sb"}
+BRANCHES = {"beq", "bne", "blt", "bge", "bltu", "bgeu"}
+REGISTER = re.compile(r"\b(zero|ra|sp|gp|tp|t[0-6]|s1[01]|s[0-9]|a[0-7])\b")
+
+
+def decode(elf):
+    """pc -> (mnemonic, destination register or None, source registers, branch target or None)."""
+    objdump = os.environ.get("RV_OBJDUMP", "riscv64-unknown-elf-objdump")
+    out = subprocess.run([objdump, "-d", "--no-show-raw-insn", "-M", "no-aliases", elf],
+                         capture_output=True, text=True, check=True).stdout
+    table = {}
+    for line in out.splitlines():
+        m = re.match(r"\s*([0-9a-f]+):\s+(\S+)\s*(.*)", line)
+        if not m:
+            continue
+        mnemonic, operands = m.group(2), m.group(3)
+        target = re.search(r"\b([0-9a-f]+) <", operands)
+        regs = REGISTER.findall(operands.split("#")[0])
+        if mnemonic in STORES or mnemonic in BRANCHES:
+            dest, sources = None, regs
+        else:
+            dest, sources = (regs[0], regs[1:]) if regs else (None, [])
+        table[int(m.group(1), 16)] = (mnemonic, None if dest == "zero" else dest, sources,
+                                      int(target.group(1), 16) if target else None)
+    return table
+
+
+def hazards_of(prev2, prev, pc, cur):
+    """The hazards instruction cur (at pc) meets after prev and prev2 ((pc, decoded) or None)."""
+    found = []
+    if prev is not None:
+        ppc, (pm, pdest, psrc, ptarget) = prev
+        if pdest is not None and pdest in cur[2]:
+            if pm in LOADS:
+                found.append("load_use_next")
+            elif pm in MULS:
+                found.append("mul_use_next")
+        if pm in BRANCHES and ptarget is not None:
+            if pc != ppc + 4:
+                found.append("branch_backward_taken" if ptarget < ppc else "branch_forward_taken")
+            elif ptarget < ppc:
+                found.append("branch_backward_not_taken")
+        elif pm == "jal":
+            found.append("jump")
+        elif pm == "jalr":
+            found.append("return")
+        if pm in STORES and cur[0] in STORES:
+            found.append("stores")
+        if prev2 is not None:
+            qm, qdest, _, _ = prev2[1]
+            # the load two back, its result not waited for already by prev
+            if (qdest is not None and qdest in cur[2] and qdest not in psrc and qdest != pdest):
+                if qm in LOADS:
+                    found.append("load_use_after_one")
+                elif qm in MULS:
+                    found.append("mul_use_after_one")
+    return found
 
 
 def symbols(elf):
@@ -71,6 +152,25 @@ def hot_lines(elf, measured, nf, work, n, waiting):
         print(f"| {where} | {count / nf:.0f} | {100.0 * count / max(work, 1):.1f}% |")
 
 
+def hazard_table(measured, nf, work, waiting):
+    """The hazards a frame meets (their program counters for which waiting(pc) holds left out),
+    each with its charge: the pipeline's estimated waits."""
+    count = collections.Counter()
+    for frame in measured:
+        for (pc, h), n in frame.items():
+            if not waiting(pc):
+                count[h] += n
+    print("| hazard | per frame | extra cycles each | cycles/frame |")
+    print("|---|---:|---:|---:|")
+    total = 0
+    for h, charge in PIPELINE_CHARGES.items():
+        cycles = count[h] * charge
+        total += cycles
+        print(f"| {h} | {count[h] / nf:.0f} | {charge} | {cycles / nf:.0f} |")
+    print(f"| **the pipeline's waits, estimated** | | | **{total / nf:.0f}** "
+          f"({total / work:.2f} a polled-out instruction) |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("gpusim")
@@ -80,8 +180,11 @@ def main():
                     help="profile the start-up (before the first frame) instead of the frames")
     ap.add_argument("--lines", type=int, default=0,
                     help="also list the N source lines that ran the most instructions")
+    ap.add_argument("--hazards", action="store_true",
+                    help="also estimate the pipeline's waits from the instruction sequence")
     ap.add_argument("--uart-log", help="keep the firmware's UART output (its frame lines) in this file")
     args = ap.parse_args()
+    code = decode(args.elf) if args.hazards else {}
 
     syms = symbols(args.elf)
     starts = [a for a, _ in syms]
@@ -107,6 +210,9 @@ def main():
 
     per_frame = []           # one Counter of pc -> count per frame
     pcs = collections.Counter()
+    hazard_frames = []       # with --hazards: one Counter of (pc, hazard) -> count per frame
+    hz = collections.Counter()
+    prev = prev2 = None
     startup = collections.Counter()  # everything before the first frame
     frames_seen = -1         # entries into FRAME_MARK so far, minus one
     lines = 0
@@ -119,18 +225,27 @@ def main():
             if pc == mark:
                 if frames_seen >= 0:
                     per_frame.append(pcs)
+                    hazard_frames.append(hz)
                 else:
                     startup = pcs
                 pcs = collections.Counter()
+                hz = collections.Counter()
                 frames_seen += 1
                 print(f"profile-fw: frame {frames_seen} starts after {lines} instructions",
                       file=sys.stderr)
             pcs[pc] += 1
+            if code:
+                cur = code.get(pc)
+                if cur is not None:
+                    for h in hazards_of(prev2, prev, pc, cur):
+                        hz[(pc, h)] += 1
+                    prev2, prev = prev, (pc, cur)
     status = sim.wait()
     if status != 0:
         sys.exit(f"profile-fw: co-simulation failed ({status}): {''.join(err)[-400:]}")
     if pcs and frames_seen >= 0:
         per_frame.append(pcs)  # the last frame runs until the firmware exits
+        hazard_frames.append(hz)
     if args.startup:
         if frames_seen < 0:
             sys.exit("profile-fw: the firmware never reached its first frame")
@@ -138,6 +253,7 @@ def main():
     else:
         # per_frame[0] is frame 0 (warm-up): skip it; the last one also holds the exit path.
         measured = per_frame[1:-1] if len(per_frame) > 2 else per_frame[1:]
+        hazard_measured = hazard_frames[1:-1] if len(per_frame) > 2 else hazard_frames[1:]
     if not measured:
         sys.exit("profile-fw: fewer than two frames in the run; build with FRAMES >= 3")
 
@@ -171,6 +287,9 @@ def main():
     if args.lines > 0:
         print()
         hot_lines(args.elf, measured, nf, work, args.lines, lambda pc: function_of(pc) in NOT_PIPELINE)
+    if args.hazards and not args.startup:
+        print()
+        hazard_table(hazard_measured, nf, work, lambda pc: function_of(pc) in NOT_PIPELINE)
     what = ("The start-up, before the first frame" if args.startup else
             f"Mean of {nf} frame(s) (frame 0 and the last skipped)")
     print(f"{what}; QEMU -icount, one line of the execution log per instruction.")

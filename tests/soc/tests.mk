@@ -8,6 +8,7 @@
 #                                   SOC_MEM=sdram fw.soc-tour's program too
 #   $(SOC_TEST_DIR)/bus_error.elf   tests/soc/bus_error.c with the soc BSP
 #   $(SOC_TEST_DIR)/poll_cycles.elf tests/soc/poll_cycles.c with the GPU driver and the BSP
+#   $(SOC_TEST_DIR)/pipeline_cycles.elf tests/soc/pipeline_cycles.c with the BSP (`make bench-cpu`)
 SOC_TEST_DIR   := $(FW_TEST_DIR)
 
 SOC_BSP_OBJS := $(patsubst %.c,$(FW_OBJ_DIR_fixed)/%.o,$(FW_BSP_SRCS))
@@ -27,8 +28,10 @@ $(SOC_TEST_DIR)/$(1).elf: $(SOC_TEST_DIR)/$(1).o $(2) $(SOC_BSP_OBJS) $(FW_LDSCR
 endef
 $(eval $(call SOC_TEST_PROGRAM,bus_error,))
 $(eval $(call SOC_TEST_PROGRAM,poll_cycles,$(SOC_DRIVER_OBJ)))
+$(eval $(call SOC_TEST_PROGRAM,pipeline_cycles,))
 
 .PHONY: soc-test-elfs
 # Every scene's one-scene build fits the default 192 KiB (`make fw-size`, suite fw-fit).
 soc-test-elfs: $(foreach s,$(FW_SCENES),$(SOC_TEST_DIR)/$(s).elf) $(SOC_TEST) \
-               $(SOC_TEST_DIR)/bus_error.elf $(SOC_TEST_DIR)/poll_cycles.elf
+               $(SOC_TEST_DIR)/bus_error.elf $(SOC_TEST_DIR)/poll_cycles.elf \
+               $(SOC_TEST_DIR)/pipeline_cycles.elf
