@@ -152,14 +152,16 @@ def hot_lines(elf, measured, nf, work, n, waiting):
         print(f"| {where} | {count / nf:.0f} | {100.0 * count / max(work, 1):.1f}% |")
 
 
-def hazard_table(measured, nf, work, waiting):
+def hazard_table(measured, nf, work, waiting, function_of, top=8):
     """The hazards a frame meets (their program counters for which waiting(pc) holds left out),
-    each with its charge: the pipeline's estimated waits."""
+    each with its charge: the pipeline's estimated waits; then the functions that wait most."""
     count = collections.Counter()
+    by_fn = collections.defaultdict(collections.Counter)
     for frame in measured:
         for (pc, h), n in frame.items():
             if not waiting(pc):
                 count[h] += n
+                by_fn[function_of(pc)][h] += n
     print("| hazard | per frame | extra cycles each | cycles/frame |")
     print("|---|---:|---:|---:|")
     total = 0
@@ -169,6 +171,18 @@ def hazard_table(measured, nf, work, waiting):
         print(f"| {h} | {count[h] / nf:.0f} | {charge} | {cycles / nf:.0f} |")
     print(f"| **the pipeline's waits, estimated** | | | **{total / nf:.0f}** "
           f"({total / work:.2f} a polled-out instruction) |")
+    print()
+    short = {"load_use_next": "load", "load_use_after_one": "load", "mul_use_next": "mul",
+             "mul_use_after_one": "mul", "stores": "stores"}
+    groups = ["load", "mul", "branch", "jump", "stores"]
+    print("| function | " + " | ".join(f"{g} waits" for g in groups) + " | cycles/frame |")
+    print("|---|" + "---:|" * (len(groups) + 1))
+    cost = {f: sum(n * PIPELINE_CHARGES[h] for h, n in c.items()) for f, c in by_fn.items()}
+    for f in sorted(cost, key=cost.get, reverse=True)[:top]:
+        g = collections.Counter()
+        for h, n in by_fn[f].items():
+            g[short.get(h, "branch" if h.startswith("branch") else "jump")] += n * PIPELINE_CHARGES[h]
+        print(f"| {f} | " + " | ".join(f"{g[x] / nf:.0f}" for x in groups) + f" | {cost[f] / nf:.0f} |")
 
 
 def main():
@@ -289,7 +303,8 @@ def main():
         hot_lines(args.elf, measured, nf, work, args.lines, lambda pc: function_of(pc) in NOT_PIPELINE)
     if args.hazards and not args.startup:
         print()
-        hazard_table(hazard_measured, nf, work, lambda pc: function_of(pc) in NOT_PIPELINE)
+        hazard_table(hazard_measured, nf, work, lambda pc: function_of(pc) in NOT_PIPELINE,
+                     function_of)
     what = ("The start-up, before the first frame" if args.startup else
             f"Mean of {nf} frame(s) (frame 0 and the last skipped)")
     print(f"{what}; QEMU -icount, one line of the execution log per instruction.")
