@@ -238,8 +238,10 @@ FW_BUILD_ONCE bool mesh_set_lattice(struct mesh *m, uint32_t rows, uint32_t cols
     m->lattice_axes = 1;
     for (uint32_t r = 0; r <= rows; r++) {
         for (uint32_t c = 0; c < w; c++) {
-            if (m->verts[r * w + c].x != m->verts[c].x || m->verts[r * w + c].z != m->verts[r * w].z) {
-                m->lattice_axes = 0;
+            const vec3 p = m->verts[r * w + c];
+
+            if (p.x != m->verts[c].x || p.z != m->verts[r * w].z) {
+                m->lattice_axes = 0;  /* not on its column's x and its row's z */
             }
         }
     }

@@ -973,7 +973,7 @@ struct render_emit_walk {
     struct render_prim *p_end;      /* prim + prim_cap */
     sort_item_t *item;              /* sort_item + np */
     sort_item_t key_np;             /* sort_item_make(0xFFFF, np) */
-    uint8_t *levels;     /* the object's level cache (render_lattice_faces_loop requires one) or 0 */
+    uint8_t *levels;     /* the object's level cache, or 0 (render_lattice_faces_loop needs one) */
     uint32_t n_back;
 };
 

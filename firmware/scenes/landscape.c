@@ -80,7 +80,8 @@ static FW_BUILD_ONCE vec3 land_point(int32_t gi, int32_t gj)
 #if FW_WITH_GOURAUD
 /* The normal of face h (0 or 1) of terrain cell (ci, cj): the one mesh_add_face computed for it in
  * its tile (land_build_tile adds a tile's cells row by row, two faces each). */
-static FW_BUILD_ONCE uvec3 land_face_normal(const struct landscape_state *l, int32_t ci, int32_t cj, uint32_t h)
+static FW_BUILD_ONCE uvec3 land_face_normal(const struct landscape_state *l, int32_t ci,
+                                            int32_t cj, uint32_t h)
 {
     const int32_t n = LANDSCAPE_TILE_CELLS;
     const struct landscape_tile *t = &l->tile[(cj / n) * LANDSCAPE_TILES + ci / n];
@@ -92,7 +93,8 @@ static FW_BUILD_ONCE uvec3 land_face_normal(const struct landscape_state *l, int
  * of the whole terrain that has it as a corner (the cells (gi-1 .. gi, gj-1 .. gj) that exist,
  * each split along the diagonal land_build_tile chooses; 1 .. 8 faces), read from the tiles once
  * every tile is built: each face's normal is computed once, not once per corner. */
-static FW_BUILD_ONCE uvec3 land_vertex_normal(const struct landscape_state *l, int32_t gi, int32_t gj)
+static FW_BUILD_ONCE uvec3 land_vertex_normal(const struct landscape_state *l, int32_t gi,
+                                              int32_t gj)
 {
     uvec3 n[8];
     uint32_t count = 0;
@@ -126,8 +128,9 @@ static FW_BUILD_ONCE uvec3 land_vertex_normal(const struct landscape_state *l, i
 }
 
 /* Tile (ti, tj)'s vertex normals, from the faces of every tile (all built). */
-static FW_BUILD_ONCE void land_tile_vertex_normals(const struct landscape_state *l, struct landscape_tile *t,
-                                     int32_t ti, int32_t tj)
+static FW_BUILD_ONCE void land_tile_vertex_normals(const struct landscape_state *l,
+                                                   struct landscape_tile *t, int32_t ti,
+                                                   int32_t tj)
 {
     const int32_t n = LANDSCAPE_TILE_CELLS;
 
