@@ -586,7 +586,9 @@ struct lat_mesh {
     int16_t vnormal[3 * LAT_VERTS];
 };
 
-static void lat_mesh_build(struct lat_mesh *t, uint32_t diag0)
+/* The mesh's (LAT_R + 1) x (LAT_C + 1) vertices: a regular x-z lattice at random heights, each
+ * with an upward vertex normal. */
+static void lat_mesh_vertices(struct lat_mesh *t)
 {
     const uint16_t w = LAT_C + 1;
 
@@ -598,6 +600,13 @@ static void lat_mesh_build(struct lat_mesh *t, uint32_t diag0)
             mesh_normal_to_q14(u3(0, 1, 0), &t->vnormal[3 * (r * w + c)]);
         }
     }
+}
+
+static void lat_mesh_build(struct lat_mesh *t, uint32_t diag0)
+{
+    const uint16_t w = LAT_C + 1;
+
+    lat_mesh_vertices(t);
     for (uint16_t r = 0; r < LAT_R; r++) {
         for (uint16_t c = 0; c < LAT_C; c++) {
             const uint16_t a = (uint16_t)(r * w + c);
@@ -767,14 +776,7 @@ static void quad_mesh_build(struct lat_mesh *t)
 {
     const uint16_t w = LAT_C + 1;
 
-    mesh_init(&t->m, t->v, LAT_VERTS, t->f, LAT_FACES, t->n, LAT_FACES);
-    for (int r = 0; r <= LAT_R; r++) {
-        for (int c = 0; c <= LAT_C; c++) {
-            mesh_add_vertex(&t->m, v3(2.0 * c - LAT_C, (double)(unit_rand() % 2001u) / 1000.0 - 1.0,
-                                      2.0 * r - LAT_R));
-            mesh_normal_to_q14(u3(0, 1, 0), &t->vnormal[3 * (r * w + c)]);
-        }
-    }
+    lat_mesh_vertices(t);
     mesh_add_normal(&t->m, u3(0, 1, 0));
     mesh_add_normal(&t->m, u3(0.6, 0.8, 0));
     mesh_add_normal(&t->m, u3(0, 0.8, -0.6));
