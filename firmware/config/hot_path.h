@@ -19,9 +19,9 @@
  * is one instruction. */
 #define FW_AS_MULTIPLIER(v) __asm__("" : "+r"(v))
 
-/* Code that runs once, when a scene is built (its meshes, normals, levels): optimised for size,
- * out of the hot code's way (GCC's and Clang's `cold`). A one-scene image must fit the SoC's
- * 192 KiB, and no frame runs this code. */
+/* Code that builds meshes (a scene's start, a voxel edit, a model upload) rather than draws them:
+ * optimised for size, out of the hot code's way (GCC's and Clang's `cold`). A one-scene image
+ * must fit the SoC's 192 KiB, and no frame's drawing runs this code. */
 #define FW_BUILD_ONCE __attribute__((cold))
 
 #endif /* CONFIG_HOT_PATH_H */

@@ -978,12 +978,22 @@ struct render_emit_walk {
 };
 
 /* The walk's pointers and key for np primitives. */
-static inline void render_emit_at(struct render_emit_walk *w, sort_item_t *sort_item,
-                                     uint32_t np)
+static inline void render_emit_at(struct render_emit_walk *w, sort_item_t *sort_item, uint32_t np)
 {
     w->p = w->prim + np;
     w->item = sort_item + np;
     w->key_np = sort_item_make(0xFFFFu, np);
+}
+
+/* The primitive just written at w->p done: its sort item from its depth key (<= 65535, shifted
+ * into place: (65535 - key) << shift | np = ((65535 << shift) | np) - (key << shift), no borrow),
+ * and the walk on to the next. */
+static inline void render_emit_next(struct render_emit_walk *w, sort_item_t key_shifted)
+{
+    *w->item = w->key_np - key_shifted;
+    w->p++;
+    w->item++;
+    w->key_np++;
 }
 
 /* A level cache's miss, out of line (once per normal while the light stays): the level of normal
@@ -1078,10 +1088,7 @@ render_quad_half(struct render_frame *f, struct render_emit_walk *w, bool front,
         f->stats.dropped++;
     } else {
         render_prim_put(w->p, i0, i1, i2, color, GPU_PRIM_KIND_TRI);
-        *w->item = w->key_np - key;
-        w->p++;
-        w->item++;
-        w->key_np++;
+        render_emit_next(w, key);
     }
 }
 
@@ -1219,12 +1226,8 @@ render_lattice_face(struct render_frame *f, const struct render_faces_job *job,
         }
         render_prim_put(w->p, ia, ib, ic, PAL_INDEX(face->material, level), GPU_PRIM_KIND_TRI);
     }
-    /* render_sort_item(key, np) with key = the depths' sum <= 3 PROJ_DEPTH_MAX = 65535:
-     * (65535 - key) << shift | np = ((65535 << shift) | np) - (key << shift), no borrow. */
-    *w->item = w->key_np - ((sort_item_t)(a.depth + b.depth + c.depth) << SORT_KEY_SHIFT);
-    w->p++;
-    w->item++;
-    w->key_np++;
+    /* The key: the depths' sum, <= 3 PROJ_DEPTH_MAX = 65535. */
+    render_emit_next(w, (sort_item_t)(a.depth + b.depth + c.depth) << SORT_KEY_SHIFT);
 }
 
 /*
