@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""make bench-cpu — what VexRiscv_Full's pipeline charges for each hazard, measured on socsim.
+"""make bench-cpu — what VexRiscv_FullCfu's pipeline charges for each hazard, measured on socsim.
 
 Runs tests/soc/pipeline_cycles.c's program (each case a group of instructions repeated, timed with
 mcycle against as many plain adds) and prints its extra cycles a group as a Markdown table: the
@@ -62,7 +62,7 @@ def main():
     print()
     print(f"Extra cycles a group of the case against as many plain adds ({reference}: one cycle "
           "an add); the group repeated 64 times in a row, its second run timed with mcycle on "
-          "socsim (VexRiscv_Full, the data in the data cache).")
+          "socsim (VexRiscv_FullCfu, the data in the data cache).")
 
 
 if __name__ == "__main__":

@@ -33,7 +33,7 @@ Costs, counted (never timed):
                     over the frame's batches)
   SoC CPU cycles    with --socsim: the firmware's per-frame `cpu cycles` (mcycle, DONE_SEQ polls
                     excluded) of the same configuration built for the SoC (bsp/soc: one scene, no
-                    line emulation) on socsim, the whole SoC Verilated (VexRiscv_Full, its caches,
+                    line emulation) on socsim, the whole SoC Verilated (VexRiscv_FullCfu, its caches,
                     bus, RAM, GPU) - see "CPU cycles on the SoC" below
 
 With --path VIEWS (`make bench-error-path`, and the second half of `make bench-error`): the same
@@ -545,7 +545,7 @@ def soc_measure(build, socsims, scenes, keys, views, span_scenes, jobs):
 
 def soc_notes(soc, scenes, views):
     """The table's SoC lines: what was measured, and the span-width check."""
-    lines = ["- SoC CPU cycles: the same configuration built for the SoC on socsim (VexRiscv_Full, 50 MHz "
+    lines = ["- SoC CPU cycles: the same configuration built for the SoC on socsim (VexRiscv_FullCfu, 50 MHz "
              "model), mcycle per frame without the DONE_SEQ polls, on %s of the scene's camera path "
              "(frame 0: cold caches), measured once and shown in both tables; its frames equal the host "
              "build's on those views; span widths, depth bits and sine tables: R's number (\"as R\", see SOC_AS_R_KEYS)" % (

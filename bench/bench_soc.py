@@ -13,7 +13,7 @@ Per scene, averaged over the frames after the first (frame 0 carries the boot: b
   CPU cycles      the firmware's "cpu cycles" (mcycle over the same span)
   CPI             CPU cycles / instructions
   I$ / D$ refills cache-line refills per frame, counted by socsim on the core's Wishbone buses
-                  (VexRiscv_Full has no miss counters of its own)
+                  (VexRiscv_FullCfu has no miss counters of its own)
   GPU busy        the GPU's PERF_BUSY_CYCLES summed over the frame's batches
   ready           cycles from the previous swap to the doorbell of the frame's last batch
   frame cycles    cycles from swap to swap (the GPU swaps at vertical blank: a multiple of the

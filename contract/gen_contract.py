@@ -294,6 +294,10 @@ def soc_load(gpu):
         if used.get(key, 0) & bits:
             sys.exit(f"soc map: field {f['name']} overlaps another field of {f['reg']}")
         used[key] = used.get(key, 0) | bits
+    for key, field, limit in (("pu_op", "funct3", 8), ("pu_reg", "index", 32), ("pu_out", "bit", 8)):
+        values = [e[field] for e in m[key]]
+        if len(set(values)) != len(values) or not all(0 <= v < limit for v in values):
+            sys.exit(f"soc map: {key}: each {field} once, each below {limit}")
     return m
 
 
@@ -321,6 +325,7 @@ def soc_gen_c(m):
     define("SOC_IRQ_BUS_ERROR", f"{s['irq_bus_error']}u", "bit of VexRiscv's external interrupt lines and of its mask CSR 0xBC0")
     define("SOC_CSR_IRQ_MASK", "0xBC0u", "VexRiscv's machine external interrupt mask CSR (0xFC0: pending)")
     define("SOC_CSR_IRQ_PENDING", "0xFC0u")
+    define("SOC_CSR_CFU_ENABLE", "0x80000000u", "in SOC_CSR_IRQ_MASK: VexRiscv's CfuPlugin takes custom instructions (the projection unit)")
     b = m["boot"]
     define("SOC_BOOT_FLASH_IMAGE_OFFSET", f"0x{b['flash_image_offset']:08X}u", "the firmware image's byte offset in FLASH (docs/boot.md)")
     define("SOC_BOOT_IMAGE_MAGIC", f"0x{b['image_magic']:08X}u", "the image header's first word")
@@ -350,6 +355,15 @@ def soc_gen_c(m):
         define(f"{soc_field_name(f)}_MASK", f"0x{mask:08X}u")
         if f["width"] == 1:
             define(soc_field_name(f), f"0x{mask:08X}u")
+    out += ["", "/* The projection unit's custom instructions (custom-0, funct7 0): funct3 of each op, SET's",
+            " * configuration registers, the outcode bits it answers. */"]
+    define("SOC_PU_OPCODE", "0x0Bu", "custom-0")
+    for e in m["pu_op"]:
+        define(f"SOC_PU_OP_{e['name']}", f"{e['funct3']}u", e["doc"])
+    for e in m["pu_reg"]:
+        define(f"SOC_PU_REG_{e['name']}", f"{e['index']}u", e["doc"])
+    for e in m["pu_out"]:
+        define(f"SOC_PU_OUT_{e['name']}", f"0x{1 << e['bit']:02X}u")
     out += ["", "#endif /* SOC_MAP_H */", ""]
     return "\n".join(out)
 
@@ -385,6 +399,12 @@ def soc_gen_v(m):
     for f in m["field"]:
         out.append(f"localparam integer {(soc_field_name(f) + '_LSB'):<32} = {f['lsb']};")
         out.append(f"localparam integer {(soc_field_name(f) + '_WIDTH'):<32} = {f['width']};")
+    for e in m["pu_op"]:
+        lp(f"SOC_PU_OP_{e['name']}", 3, e["funct3"], "projection unit: funct3")
+    for e in m["pu_reg"]:
+        lp(f"SOC_PU_REG_{e['name']}", 5, e["index"], "projection unit: SET's register")
+    for e in m["pu_out"]:
+        lpi(f"SOC_PU_OUT_{e['name']}", e["bit"], "projection unit: outcode bit")
     out += ["/* verilator lint_on UNUSEDPARAM */", ""]
     return "\n".join(out)
 
@@ -424,6 +444,15 @@ def soc_gen_md(m):
         hi = f["lsb"] + f["width"] - 1
         bits = f"{f['lsb']}" if f["width"] == 1 else f"{hi}:{f['lsb']}"
         out.append(f"| {soc_field_name(f)} | {f['region']} {f['reg']} | {bits} | {f['doc']} |")
+    out += ["", "## The projection unit's instructions", "",
+            "Custom-0 (opcode 0x0B), funct7 0, through VexRiscv's custom-function port (soc_rtl/soc_proj_unit.v).", "",
+            "| op | funct3 | meaning |", "|---|---|---|"]
+    for e in m["pu_op"]:
+        out.append(f"| SOC_PU_OP_{e['name']} | {e['funct3']} | {e['doc']} |")
+    out += ["", "| SET register | index | meaning |", "|---|---|---|"]
+    for e in m["pu_reg"]:
+        out.append(f"| SOC_PU_REG_{e['name']} | {e['index']} | {e['doc']} |")
+    out += ["", "Outcode bits (CODE): " + ", ".join(f"{e['name']} {e['bit']}" for e in m["pu_out"]) + "."]
     out += ["", "## Constants", "", "| name | value |", "|---|---|",
             f"| SOC_CLK_HZ_DEFAULT | {s['clk_hz_default']} |", f"| SOC_UART_BAUD | {s['uart_baud']} (8N1) |",
             f"| SOC_SYS_ID_VALUE | 0x{s['sys_id']:08X} |", f"| SOC_UART_RX_FIFO_DEPTH | {s['uart_rx_fifo_depth']} |",

@@ -17,6 +17,7 @@
 #define SOC_IRQ_BUS_ERROR                0u  /* bit of VexRiscv's external interrupt lines and of its mask CSR 0xBC0 */
 #define SOC_CSR_IRQ_MASK                 0xBC0u  /* VexRiscv's machine external interrupt mask CSR (0xFC0: pending) */
 #define SOC_CSR_IRQ_PENDING              0xFC0u
+#define SOC_CSR_CFU_ENABLE               0x80000000u  /* in SOC_CSR_IRQ_MASK: VexRiscv's CfuPlugin takes custom instructions (the projection unit) */
 #define SOC_BOOT_FLASH_IMAGE_OFFSET      0x00400000u  /* the firmware image's byte offset in FLASH (docs/boot.md) */
 #define SOC_BOOT_IMAGE_MAGIC             0x46434F53u  /* the image header's first word */
 #define SOC_BOOT_IMAGE_HEADER_BYTES      32u
@@ -157,5 +158,30 @@
 #define SOC_USB_REENUMS_COUNT_MASK       0x0000FFFFu
 #define SOC_USB_ROLLOVERS_COUNT_LSB      0u  /* in USB ROLLOVERS: usb_ls_host cnt_rollover, saturating at 0xFFFF. */
 #define SOC_USB_ROLLOVERS_COUNT_MASK     0x0000FFFFu
+
+/* The projection unit's custom instructions (custom-0, funct7 0): funct3 of each op, SET's
+ * configuration registers, the outcode bits it answers. */
+#define SOC_PU_OPCODE                    0x0Bu  /* custom-0 */
+#define SOC_PU_OP_SET                    0u  /* Configuration: register rs2 (pu_reg below) takes rs1. Answers 0. */
+#define SOC_PU_OP_XY                     1u  /* A model-space vertex's x (rs1) and y (rs2), q16_16. Answers 0. */
+#define SOC_PU_OP_Z                      2u  /* Its z (rs1, q16_16) and the mode (rs2 bit 0: inside the frustum, no near test and no outcodes): projects it and answers the first vertex word, sx [15:0] and sy [31:16] (Q12.4). */
+#define SOC_PU_OP_ZD                     3u  /* The last vertex's second word: zbuf [15:0] (0 unless ZBUF is set), the sort depth [31:16]. */
+#define SOC_PU_OP_CODE                   4u  /* The last vertex's outcode bits (pu_out below; 0 in the inside mode). */
+#define SOC_PU_REG_M00                   0u  /* The rotation's entries, q2_30, row-major: M00 .. M22 at 0 .. 8. */
+#define SOC_PU_REG_TX                    9u  /* The translation, q16_16: TX, TY, TZ at 9, 10, 11. */
+#define SOC_PU_REG_FOCAL_HI              12u  /* proj_setup focal_hi: the focal length in Q12.4 shifted left by k (18 or 19). */
+#define SOC_PU_REG_OFF_SHIFT             13u  /* proj_setup off_shift (k + 2), plus the sub-pixel drop (4 - FW_SUBPIXEL_BITS) in bits [15:8]. */
+#define SOC_PU_REG_CENTRE                14u  /* The frame's centre in Q12.4: cx [15:0], cy [31:16]. */
+#define SOC_PU_REG_LAST                  15u  /* The last pixel centres in Q12.4: x_last [15:0], y_last [31:16]. */
+#define SOC_PU_REG_NEAR                  16u  /* The near plane, q16_16, at least 2^14 (proj.h). */
+#define SOC_PU_REG_FAR                   17u  /* The far distance, q16_16. */
+#define SOC_PU_REG_LIMITS                18u  /* The guard band's half-width in Q12.4 [15:0], the sort depth's cap [30:16], bit 31: compute zbuf (proj_setup zbuf). */
+#define SOC_PU_OUT_LEFT                  0x01u
+#define SOC_PU_OUT_RIGHT                 0x02u
+#define SOC_PU_OUT_TOP                   0x04u
+#define SOC_PU_OUT_BOTTOM                0x08u
+#define SOC_PU_OUT_FAR                   0x10u
+#define SOC_PU_OUT_NEAR                  0x20u
+#define SOC_PU_OUT_GUARD                 0x40u
 
 #endif /* SOC_MAP_H */

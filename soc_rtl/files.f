@@ -9,6 +9,7 @@ soc_rtl/soc_uart.v
 soc_rtl/soc_sys.v
 soc_rtl/soc_wb_stage.v
 soc_rtl/soc_stream_slice.v
+soc_rtl/soc_proj_unit.v
 soc_rtl/soc_spiflash.v
 soc_rtl/usb/usb_pkg.sv
 soc_rtl/usb/usb_ls_tx.v

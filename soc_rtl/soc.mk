@@ -2,11 +2,11 @@
 # Included by the top-level Makefile. Targets: lint-soc, synth-soc; the smoke program's image
 # $(SOC_SMOKE_HEX), which `make soc-smoke` runs on socsim (cosim/soc/socsim.mk).
 
-# The core: VexRiscv_Full.v of the pinned pythondata-cpu-vexriscv (tools/requirements.txt), found
+# The core: VexRiscv_FullCfu.v of the pinned pythondata-cpu-vexriscv (tools/requirements.txt), found
 # through the package in .venv/ (tools/setup.sh makes it). Deferred (=): evaluated in the recipes,
 # after $(SOC_VENV) has been brought up to date.
 SOC_VENV      := .venv/.requirements.sha256
-SOC_CPU_V      = $(shell .venv/bin/python -c 'import os, pythondata_cpu_vexriscv as p; print(os.path.join(p.data_location, "VexRiscv_Full.v"))')
+SOC_CPU_V      = $(shell .venv/bin/python -c 'import os, pythondata_cpu_vexriscv as p; print(os.path.join(p.data_location, "VexRiscv_FullCfu.v"))')
 SOC_FILES     := soc_rtl/files.f
 SOC_RTL_V     := $(shell sed -e 's://.*::' $(SOC_FILES))
 # The headers its systems include (the SDRAM's and the GPU frames' port bundles, the no-SDRAM ties).

@@ -1,4 +1,5 @@
-// soc_top: the whole SoC on its system clock — VexRiscv (RV32IM, 4 KiB I$ and D$), on-chip RAM, the GPU,
+// soc_top: the whole SoC on its system clock — VexRiscv (RV32IM, 4 KiB I$ and D$, its custom-function
+// port to the projection unit soc_proj_unit), on-chip RAM, the GPU,
 // a UART and the system registers, on one Wishbone bus. Memory map: contract/soc-memory-map.md.
 // With SDRAM_BYTES > 0 the SDRAM region and its controller's registers leave soc_top as two Wishbone
 // master ports (sdram_*, sdram_ctrl_*): the controller (LiteDRAM, generated at build time, and the
@@ -156,6 +157,9 @@ module soc_top #(
     wire [2:0]  dbus_cti;
     wire [1:0]  dbus_bte;
     wire        timer_irq, buserr_irq;
+    wire        cfu_cmd_valid, cfu_cmd_ready, cfu_rsp_valid, cfu_rsp_ready;
+    wire [9:0]  cfu_function_id;
+    wire [31:0] cfu_in0, cfu_in1, cfu_out;
 
     localparam [31:0] RESET_VECTOR = soc_pkg::SOC_RAM_BASE;
     wire [31:0] ext_irqs = {31'd0, buserr_irq} << soc_pkg::SOC_IRQ_BUS_ERROR;
@@ -188,7 +192,29 @@ module soc_top #(
         .dBusWishbone_SEL       (dbus_sel),
         .dBusWishbone_ERR       (1'b0),
         .dBusWishbone_CTI       (dbus_cti),
-        .dBusWishbone_BTE       (dbus_bte)
+        .dBusWishbone_BTE       (dbus_bte),
+        .CfuPlugin_bus_cmd_valid              (cfu_cmd_valid),
+        .CfuPlugin_bus_cmd_ready              (cfu_cmd_ready),
+        .CfuPlugin_bus_cmd_payload_function_id(cfu_function_id),
+        .CfuPlugin_bus_cmd_payload_inputs_0   (cfu_in0),
+        .CfuPlugin_bus_cmd_payload_inputs_1   (cfu_in1),
+        .CfuPlugin_bus_rsp_valid              (cfu_rsp_valid),
+        .CfuPlugin_bus_rsp_ready              (cfu_rsp_ready),
+        .CfuPlugin_bus_rsp_payload_outputs_0  (cfu_out)
+    );
+
+    // ---- the projection unit on the core's custom-function port (custom-0 instructions) ----
+    soc_proj_unit u_proj_unit (
+        .clk             (clk),
+        .rst             (rst),
+        .cmd_valid       (cfu_cmd_valid),
+        .cmd_ready       (cfu_cmd_ready),
+        .cmd_function_id (cfu_function_id),
+        .cmd_in0         (cfu_in0),
+        .cmd_in1         (cfu_in1),
+        .rsp_valid       (cfu_rsp_valid),
+        .rsp_ready       (cfu_rsp_ready),
+        .rsp_out         (cfu_out)
     );
 
     // ---- the bus: arbiter, decoder ----

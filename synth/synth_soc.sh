@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# `make synth-soc`: yosys synth_ecp5 of soc_top (VexRiscv_Full + RAM + GPU + UART + SYS), default
+# `make synth-soc`: yosys synth_ecp5 of soc_top (VexRiscv_FullCfu + the projection unit + RAM + GPU + UART + SYS), default
 # parameters (192 KiB RAM, SPAN_W 8, lines, no depth buffer), no place and route (Debian has no
 # nextpnr-ecp5). Prints a Markdown table: LUT4, flip-flops, carry cells, LUT RAM, DP16KD (EBR) per
 # memory and in total, MULT18X18D; checks the RAM's EBR count against RAM_BYTES / 2 KiB.
-# Usage: [ZBUF=1 [ZBUF_BITS=B]] SOC_CPU_V=path/VexRiscv_Full.v synth_soc.sh BUILD_DIR (ZBUF=1: the GPU
+# Usage: [ZBUF=1 [ZBUF_BITS=B]] SOC_CPU_V=path/VexRiscv_FullCfu.v synth_soc.sh BUILD_DIR (ZBUF=1: the GPU
 # with its depth buffer, keeping ZBUF_BITS bits, default 16). Logs in BUILD_DIR/synth-soc[-zB]/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,7 +11,7 @@ zbuf=${ZBUF:-0}
 zbits=${ZBUF_BITS:-16}
 out="${1:-build}/synth-soc$([ "$zbuf" = 1 ] && echo "-z$zbits")"
 mkdir -p "$out"
-: "${SOC_CPU_V:?SOC_CPU_V must name VexRiscv_Full.v (soc_rtl/soc.mk sets it)}"
+: "${SOC_CPU_V:?SOC_CPU_V must name VexRiscv_FullCfu.v (soc_rtl/soc.mk sets it)}"
 # The sources in compilation order, from the lists (`//` starts a comment) and the packaged core.
 rtl="$(sed -e 's://.*::' gpu_rtl/files.f | tr '\n' ' ') $SOC_CPU_V $(sed -e 's://.*::' soc_rtl/files.f | tr '\n' ' ')"
 ram_bytes=$(sed -n 's/^#define SOC_RAM_DEFAULT_BYTES *\(0x[0-9A-Fa-f]*\)u.*/\1/p' contract/soc_map.h)

@@ -25,7 +25,7 @@ esac
 top="${board}_top"
 mkdir -p "$out"
 venv="${VENV:-.venv}"
-cpu_v="$("$venv/bin/python" -c 'import os, pythondata_cpu_vexriscv as p; print(os.path.join(p.data_location, "VexRiscv_Full.v"))')"
+cpu_v="$("$venv/bin/python" -c 'import os, pythondata_cpu_vexriscv as p; print(os.path.join(p.data_location, "VexRiscv_FullCfu.v"))')"
 # The sources in compilation order, from the lists (`//` starts a comment) and the packaged core.
 lst() { sed -e 's://.*::' "$1" | tr '\n' ' '; }
 rtl="$(lst gpu_rtl/files.f) $cpu_v $(lst soc_rtl/files.f) $(lst boards/digilent/files.f) boards/$board/$top.v"

@@ -1,7 +1,7 @@
 # build.tcl: Vivado non-project flow for a Digilent board top — NOT run in this repository (no Vivado
 # here); a standard sequence, to be checked by the first user who has Vivado.
 # Usage, from the repository root, BOARD basys3 or nexys_a7:
-#   SOC_CPU_V=$(.venv/bin/python -c 'import os, pythondata_cpu_vexriscv as p; print(os.path.join(p.data_location, "VexRiscv_Full.v"))') \
+#   SOC_CPU_V=$(.venv/bin/python -c 'import os, pythondata_cpu_vexriscv as p; print(os.path.join(p.data_location, "VexRiscv_FullCfu.v"))') \
 #   vivado -mode batch -source boards/digilent/build.tcl -tclargs BOARD [firmware.hex [RAM_BYTES]]
 # Output in build/vivado-BOARD/: BOARD_top.bit, the timing and utilisation reports.
 set parts [dict create basys3 xc7a35tcpg236-1 nexys_a7 xc7a100tcsg324-1]

@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 venv="${VENV:-.venv}"
-cpu_v="$("$venv/bin/python" -c 'import os, pythondata_cpu_vexriscv as p; print(os.path.join(p.data_location, "VexRiscv_Full.v"))')"
+cpu_v="$("$venv/bin/python" -c 'import os, pythondata_cpu_vexriscv as p; print(os.path.join(p.data_location, "VexRiscv_FullCfu.v"))')"
 for board in "${@:-basys3 nexys_a7}"; do
     for b in $board; do
         verilator --lint-only -Wall --top-module "${b}_top" gpu_rtl/lint.vlt soc_rtl/lint.vlt soc_rtl/usb/lint.vlt \

@@ -11,10 +11,17 @@
 #include "bsp.h"
 #include "bsp_internal.h"
 
+/* VexRiscv's CfuPlugin refuses custom instructions (illegal instruction) until bit 31 of CSR 0xBC0,
+ * which it shares with the external-interrupt mask (line 31: none in soc_top), is set. */
+_Static_assert(SOC_CSR_IRQ_MASK == 0xBC0u && SOC_CSR_CFU_ENABLE == 0x80000000u,
+               "bsp_init enables the custom-function port as bit 31 of CSR 0xBC0");
+
 void bsp_init(void)
 {
     bsp_trap_install();
     bsp_uart_init();
+    /* the projection unit (firmware/render/proj_unit.h) */
+    __asm__ volatile("csrs 0xBC0, %0" ::"r"(SOC_CSR_CFU_ENABLE));
 }
 
 void bsp_exit(int code)

@@ -1,5 +1,5 @@
 # bsp/soc/bsp.mk — what firmware/firmware.mk needs to build for the FPGA SoC (soc_rtl/soc_top:
-# VexRiscv_Full, rv32im, on-chip RAM at 0). Set on the command line:
+# VexRiscv_FullCfu with the projection unit, rv32im, on-chip RAM at 0). Set on the command line:
 #   SOC_RAM_KIB   on-chip RAM in KiB (default: contract/soc_map.h SOC_RAM_DEFAULT_BYTES, or the
 #                 image's own need in a scene's manifest build, mk/manifest.mk). The link does
 #                 not depend on it (linker/soc.ld: the stack sits above .bss); postlink refuses an
@@ -19,6 +19,12 @@ ifneq ($(SOC_MEM),sdram)
 ifeq ($(findstring FW_WITH_STRIPS,$(FW_DEFS)),)
 FW_DEFS += -DFW_WITH_STRIPS=0
 endif
+endif
+
+# The core's projection unit (soc_rtl/soc_proj_unit.v, firmware/render/proj_unit.h): every
+# vertex through it, unless FW_DEFS says -DFW_PROJ_UNIT=0.
+ifeq ($(findstring FW_PROJ_UNIT,$(FW_DEFS)),)
+FW_DEFS += -DFW_PROJ_UNIT=1
 endif
 
 FW_CC         = $(RV_CC)

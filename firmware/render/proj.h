@@ -64,6 +64,7 @@
 
 #include "config/build_options.h"
 #include "gpu_regs.h"
+#include "soc_map.h"
 #include "math/vec.h"
 
 #define PROJ_NEAR_Q16    16384            /* 0.25 view units: the fixed path relies on 2^14 */
@@ -104,14 +105,15 @@ _Static_assert(PROJ_GUARD_FITS(GPU_FB_MAX_WIDTH, GPU_FB_MAX_HEIGHT),
 _Static_assert(16 * PROJ_FOCAL_MAX_PX * (int32_t)GPU_FB_MAX_HEIGHT / PROJ_FOCAL_REF_LINES < 8192,
                "the focal length at the largest frame needs another multiplier shift");
 
+/* The bits are the contract's (soc_map.toml [[pu_out]]): the SoC's projection unit answers them. */
 enum proj_outcode {
-    PROJ_OUT_LEFT = 0x01,
-    PROJ_OUT_RIGHT = 0x02,
-    PROJ_OUT_TOP = 0x04,
-    PROJ_OUT_BOTTOM = 0x08,
-    PROJ_OUT_FAR = 0x10,
-    PROJ_OUT_NEAR = 0x20,   /* z < near: not projected */
-    PROJ_OUT_GUARD = 0x40,  /* beyond the guard band: sx/sy not usable */
+    PROJ_OUT_LEFT = SOC_PU_OUT_LEFT,
+    PROJ_OUT_RIGHT = SOC_PU_OUT_RIGHT,
+    PROJ_OUT_TOP = SOC_PU_OUT_TOP,
+    PROJ_OUT_BOTTOM = SOC_PU_OUT_BOTTOM,
+    PROJ_OUT_FAR = SOC_PU_OUT_FAR,
+    PROJ_OUT_NEAR = SOC_PU_OUT_NEAR,    /* z < near: not projected */
+    PROJ_OUT_GUARD = SOC_PU_OUT_GUARD,  /* beyond the guard band: sx/sy not usable */
 };
 #define PROJ_CULL_BITS (PROJ_OUT_LEFT | PROJ_OUT_RIGHT | PROJ_OUT_TOP | PROJ_OUT_BOTTOM | \
                         PROJ_OUT_FAR | PROJ_OUT_NEAR)

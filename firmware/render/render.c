@@ -8,6 +8,7 @@
 #include "gpu_regs.h"  /* the contract's primitive kinds (GPU_PRIM_KIND_*): no driver needed */
 #include "render/clip.h"
 #include "render/palette.h"
+#include "render/proj_unit.h"
 
 /* The light in the rotated scene's frame, O^T l, and in an object's model space, R^T (O^T l):
  * one place for both, so a cache filled ahead (render_level_cache_fill) matches render_object. */
@@ -489,6 +490,15 @@ static void __attribute__((noinline))
 render_project_vertices(const struct proj_setup *ps, const xf_affine *mv, const vec3 *verts,
                         uint32_t n, struct proj_vertex *out, bool inside)
 {
+#if PROJ_UNIT_USED
+    /* The SoC's projection unit (render/proj_unit.h): the same vertices. */
+    proj_unit_load(ps, mv);
+    if (inside) {
+        proj_unit_points(verts, n, out, true);
+    } else {
+        proj_unit_points(verts, n, out, false);
+    }
+#else
     const xf_affine m = *mv;  /* a local copy: the stores to out cannot alias it */
 
     if (inside) {
@@ -500,8 +510,10 @@ render_project_vertices(const struct proj_setup *ps, const xf_affine *mv, const 
             proj_point(ps, xf_apply(&m, verts[i]), &out[i]);
         }
     }
+#endif
 }
 
+#if !PROJ_UNIT_USED
 /* The same for a box mesh (mesh.box): its eight corners through xf_apply_box, which gives the
  * same view points as xf_apply (cubes: 184 instructions for the eight instead of about 256). */
 static void __attribute__((noinline))
@@ -522,14 +534,20 @@ render_project_box(const struct proj_setup *ps, const xf_affine *mv, const struc
     }
 }
 
+#endif
+
+/* With the projection unit every mesh takes it, vertex by vertex: the unit is faster than the box's
+ * and the lattice's shortcuts, and leaving them out leaves room in the SoC's image. */
 void render_project_boxed(const struct proj_setup *ps, const xf_affine *mv, const struct mesh *mesh,
                           struct proj_vertex *out, bool inside)
 {
+#if !PROJ_UNIT_USED
     if (mesh->box) {
         render_project_box(ps, mv, mesh, out, inside);
-    } else {
-        render_project_vertices(ps, mv, mesh->verts, mesh->vert_count, out, inside);
+        return;
     }
+#endif
+    render_project_vertices(ps, mv, mesh->verts, mesh->vert_count, out, inside);
 }
 
 /* Columns a lattice mesh may have for render_project_lattice_inside: its column products live on
@@ -537,7 +555,7 @@ void render_project_boxed(const struct proj_setup *ps, const xf_affine *mv, cons
  * loop. */
 #define RENDER_LATTICE_AXES_MAX_COLS 33u
 
-#if REAL_IS_FIXED
+#if REAL_IS_FIXED && !PROJ_UNIT_USED
 /*
  * A lattice mesh with lattice_axes (mesh.h) inside the frustum: vertex (r, c) is (x_c, y, z_r).
  * xf_apply's x row is mulh(m00, 4 x) + mulh(m01, 4 y) + mulh(m02, 4 z) + t.x, each product
@@ -587,7 +605,7 @@ render_project_lattice_inside(const struct proj_setup *ps, const xf_affine *mv,
 void render_project_lattice(const struct proj_setup *ps, const xf_affine *mv,
                             const struct mesh *mesh, struct proj_vertex *out, bool inside)
 {
-#if REAL_IS_FIXED
+#if REAL_IS_FIXED && !PROJ_UNIT_USED
     if (inside && mesh->lattice_axes && mesh->lattice_cols <= RENDER_LATTICE_AXES_MAX_COLS) {
         render_project_lattice_inside(ps, mv, mesh, out);
         return;

@@ -20,7 +20,7 @@ With --lines N a second table follows: the N source lines whose instructions ran
 each program counter; a line inlined into several functions sums all its copies), to find the hot
 statements inside a hot function.
 
-With --hazards a third table follows: the pipeline hazards of VexRiscv_Full the frames' instruction
+With --hazards a third table follows: the pipeline hazards of VexRiscv_FullCfu the frames' instruction
 sequence meets (a load's or a multiply's result used one or two instructions later, branches
 against the core's static prediction, jumps, back-to-back stores), each counted from the trace and
 weighted with the extra cycles `make bench-cpu` measures for it on the SoC (PIPELINE_CHARGES): an
@@ -43,18 +43,18 @@ FRAME_MARK = "scene_update"
 # of DONE_SEQ (gpu_wait, inlined into gpu_wait_idle) and the UART draining done between polls.
 NOT_PIPELINE = {"gpu_wait", "gpu_wait_idle", "app_drain_uart"}
 
-# VexRiscv_Full's extra cycles for each hazard, as `make bench-cpu` measures them on socsim
+# VexRiscv_FullCfu's extra cycles for each hazard, as `make bench-cpu` measures them on socsim
 # (tests/soc/pipeline_cycles.c; suite soc-pipeline-cycles fails when they differ from this table).
 PIPELINE_CHARGES = {
     "load_use_next": 2,             # a load's result read by the next instruction
     "load_use_after_one": 1,        # ... by the one after
     "mul_use_next": 2,              # a multiply's (mul, mulh, mulhu, mulhsu)
     "mul_use_after_one": 1,
-    "branch_forward_taken": 3,      # static prediction: forward not taken, backward taken
-    "branch_backward_not_taken": 3,
+    "branch_forward_taken": 2,      # static prediction: forward not taken, backward taken
+    "branch_backward_not_taken": 2,
     "branch_backward_taken": 1,
     "jump": 1,                      # jal (j, call)
-    "return": 3,                    # jalr (ret, an indirect call): call_return minus a jump
+    "return": 2,                    # jalr (ret, an indirect call): call_return minus a jump
     "stores": 2,                    # a store right after a store (write-through bus cycles)
 }
 LOADS = {"lw", "lh", "lhu", "lb", "lbu"}

@@ -1,5 +1,5 @@
 /*
- * pipeline_cycles.c — what VexRiscv_Full's pipeline charges for the hazards the firmware's hot
+ * pipeline_cycles.c — what VexRiscv_FullCfu's pipeline charges for the hazards the firmware's hot
  * loops meet (docs/soc.md, issue #27's CPI). Each case is a pair or short group of instructions
  * repeated PIPE_REPEAT times in a row (`.rept`), timed with mcycle (its second run: the
  * instruction cache warm), less the same count of plain adds: over the repeats, the case's extra

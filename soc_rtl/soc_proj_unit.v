@@ -1,0 +1,242 @@
+// soc_proj_unit: the firmware's per-vertex model-view transform and perspective projection in
+// hardware, on the core's custom-function port (VexRiscv_FullCfu's CfuPlugin bus). Issue #27: the
+// knot's projection took 82 instructions and about 98 clocks a vertex on the core; here a vertex
+// takes five custom instructions and the unit's 19 clocks.
+//
+// Contract (instructions, registers and outcode bits: contract/soc_map.toml [[pu_op]], [[pu_reg]],
+// [[pu_out]]; the firmware's side: firmware/render/proj_unit.h):
+//   result   bit-exact with the firmware's fixed-point path: xf_apply (math/vec.h: each of the nine
+//            products floor(m * 4v / 2^32) on its own, summed with the translation in 32 bits),
+//            then proj_point_impl (render/proj.h) with one Newton step of fx_recip_mantissa
+//            (math/fixed.h) from a seed table computed here from its defining formula, the
+//            sub-pixel drop, the guard band, the outcodes and the depths. The RTL shares no code
+//            with the firmware; tests/soc/proj_unit_tb.cpp checks it against the firmware's C.
+//   handshake one command at a time: cmd_ready is high when the unit is idle and holds no answer;
+//            every command is answered exactly once, in order (rsp_valid until rsp_ready). SET,
+//            XY, ZD and CODE answer the clock after they are taken, Z after the projection
+//            (19 clocks). An unknown function (funct7 not 0, funct3 above CODE) answers 0
+//            and changes nothing.
+//   range    the firmware's: |model coordinates| < 8192, |view x, y| < 4096 units, |translation|
+//            < 4096, z >= the near plane for a vertex given as in_frustum (proj.h, vec.h). Outside it
+//            the unit computes what the firmware's int32 arithmetic does (two's-complement wrap).
+//
+// Datapath: one 33 x 33 signed multiplier (operands registered, the product registered: a result
+// two clocks after its operands), shared by the 14 products of a vertex on a fixed schedule (the
+// step counter below); the seed table is one 1024 x 16 ROM.
+`default_nettype none
+
+module soc_proj_unit (
+    input  wire        clk,
+    input  wire        rst,                 // synchronous, active high: idle, no answer pending
+    // ---- command: from the core's execute stage
+    input  wire        cmd_valid,
+    output wire        cmd_ready,
+    input  wire [9:0]  cmd_function_id,     // {funct7, funct3}
+    input  wire [31:0] cmd_in0,             // rs1
+    input  wire [31:0] cmd_in1,             // rs2
+    // ---- answer: to the core's memory stage
+    output reg         rsp_valid,
+    input  wire        rsp_ready,
+    output reg  [31:0] rsp_out              // rd
+);
+    localparam signed [31:0] PIX_FIRST_Q4 = 32'sd8;  // the first pixel centre, Q12.4 (the GPU contract)
+
+    // ---- configuration (SET) ----
+    reg signed [31:0] m [0:8];              // rotation, q2_30, row-major
+    reg signed [31:0] t [0:2];              // translation, q16_16
+    reg        [31:0] focal_hi;
+    reg        [5:0]  off_shift;            // k + 2
+    reg        [5:0]  subpix_drop;          // 4 - FW_SUBPIXEL_BITS
+    reg        [15:0] cx, cy, x_last, y_last;
+    reg signed [31:0] near_z, far_z;
+    reg        [15:0] guard;
+    reg        [14:0] depth_max;
+    reg               zbuf_on;
+
+    // ---- the vertex ----
+    reg signed [31:0] vx, vy, vz;           // model space, q16_16
+    reg               in_frustum;         // Z's mode: the firmware's proj_point_inside
+    reg signed [31:0] view_x, view_y, view_z;  // view space, q16_16 (xf_apply)
+    reg        [4:0]  lead;                 // leading zeros of view_z: fx_normalize32's s
+    reg        [31:0] mant;                 // view_z << lead
+    reg        [31:0] y0;                   // the seed, Q1.31
+    reg        [31:0] recip;                // fx_recip_mantissa: ~2^63 / mant
+    reg signed [31:0] q_r;
+    reg        [5:0]  shift;                // off_shift + drop - lead: 3 .. 24
+    reg signed [31:0] off_x, off_y;
+    reg        [31:0] zd_r;
+    reg        [7:0]  code_r;
+
+    reg               busy;
+    reg        [4:0]  step;
+
+    wire [2:0] funct3 = cmd_function_id[2:0];
+    wire       known = cmd_function_id[9:3] == 7'd0;
+    assign cmd_ready = !busy && !rsp_valid;
+    wire take = cmd_valid && cmd_ready;
+    wire [4:0] set_m = cmd_in1[4:0] - soc_pkg::SOC_PU_REG_M00;   // SET's entry of m, of t
+    wire [4:0] set_t = cmd_in1[4:0] - soc_pkg::SOC_PU_REG_TX;
+
+    // ---- the multiplier: floor(a b / 2^32) of 32-bit operands, signed (mulh) or unsigned (mulhu)
+    reg signed [32:0] mul_a, mul_b;
+    wire signed [65:0] mul_p = mul_a * mul_b;   // bits 31:0 and 65:64 unused (lint.vlt)
+    reg        [31:0] hi;
+    always @(posedge clk) hi <= mul_p[63:32];
+
+    function automatic [32:0] sgn(input [31:0] v);
+        sgn = {v[31], v};
+    endfunction
+    function automatic [32:0] uns(input [31:0] v);
+        uns = {1'b0, v};
+    endfunction
+
+    // ---- the seed table: min(65535, round(32768 / (0.5 + (i + 0.5) / 2048))) = round(2^27 / b),
+    // b = 2049 + 2 i, formed as floor((2^28 + b) / 2b)
+    reg [15:0] seed_rom [0:1023];
+    reg [15:0] seed_q;
+    integer i;
+    reg [63:0] seed_i;
+    initial begin
+        for (i = 0; i < 1024; i = i + 1) begin
+            seed_i = ((64'd1 << 28) + 64'd2049 + 64'd2 * i) / (64'd4098 + 64'd4 * i);
+            seed_rom[i] = (seed_i > 64'd65535) ? 16'hFFFF : seed_i[15:0];
+        end
+    end
+    always @(posedge clk) seed_q <= seed_rom[mant[30:21]];
+
+    // ---- leading zeros of view_z (a vertex nearer than 2^-16 units has no use for more than 31)
+    function automatic [4:0] clz32(input [31:0] v);
+        integer b;
+        clz32 = 5'd31;
+        for (b = 0; b < 31; b = b + 1)
+            if (v[b]) clz32 = ~b[4:0];          // 31 - b
+    endfunction
+
+    // ---- rounding the offsets: ((p + 2^(sh-1)) >> sh) << drop, arithmetic
+    wire signed [31:0] half = 32'sd1 <<< (shift - 6'd1);
+    wire signed [31:0] rounded = ($signed(hi) + half) >>> shift;
+    wire signed [31:0] offset = rounded <<< subpix_drop;
+
+    // ---- the answer words from the offsets
+    wire signed [31:0] g = {16'd0, guard};
+    wire        out_guard = off_x > g || off_x < -g || off_y > g || off_y < -g;
+    wire signed [31:0] cl_x = in_frustum ? off_x : (off_x > g ? g : (off_x < -g ? -g : off_x));
+    wire signed [31:0] cl_y = in_frustum ? off_y : (off_y > g ? g : (off_y < -g ? -g : off_y));
+    wire signed [31:0] sx = $signed({16'd0, cx}) + cl_x;
+    wire signed [31:0] sy = $signed({16'd0, cy}) - cl_y;
+    // one unsigned range check an axis, as the firmware's
+    wire [31:0] col_from_first = sx - PIX_FIRST_Q4;
+    wire [31:0] row_from_first = sy - PIX_FIRST_Q4;
+    wire        off_cols = col_from_first > {16'd0, x_last} - 32'd8;
+    wire        off_rows = row_from_first > {16'd0, y_last} - 32'd8;
+    reg  [7:0]  code;
+    always @(*) begin
+        code = 8'd0;
+        if (!in_frustum) begin
+            code[soc_pkg::SOC_PU_OUT_GUARD] = out_guard;
+            code[soc_pkg::SOC_PU_OUT_LEFT] = off_cols && sx < PIX_FIRST_Q4;
+            code[soc_pkg::SOC_PU_OUT_RIGHT] = off_cols && !(sx < PIX_FIRST_Q4);
+            code[soc_pkg::SOC_PU_OUT_TOP] = off_rows && sy < PIX_FIRST_Q4;
+            code[soc_pkg::SOC_PU_OUT_BOTTOM] = off_rows && !(sy < PIX_FIRST_Q4);
+            code[soc_pkg::SOC_PU_OUT_FAR] = view_z > far_z;
+        end
+    end
+    wire [5:0]  zsh = 6'd33 - {1'b0, lead};                  // near / z = recip 2^(s - 33)
+    wire [31:0] zratio = (zsh >= 6'd32) ? 32'd0 : recip >> zsh;
+    wire [15:0] zbuf = !zbuf_on ? 16'd0 : ((zratio >= 32'd65535) ? 16'd0 : 16'hFFFF - zratio[15:0]);
+    wire [31:0] depth_raw = view_z >> 9;                      // q16_16 to 1/128 units, unsigned
+    wire [15:0] depth = (depth_raw > {17'd0, depth_max}) ? {1'b0, depth_max} : depth_raw[15:0];
+
+    wire near_cut = !in_frustum && view_z < near_z;
+
+    always @(posedge clk) begin
+        if (rst) begin
+            busy <= 1'b0;
+            rsp_valid <= 1'b0;
+        end else begin
+            if (rsp_valid && rsp_ready) rsp_valid <= 1'b0;
+            if (take) begin
+                if (known && funct3 == soc_pkg::SOC_PU_OP_Z) begin
+                    busy <= 1'b1;
+                    step <= 5'd0;
+                    vz <= cmd_in0;
+                    in_frustum <= cmd_in1[0];
+                end else begin
+                    rsp_valid <= 1'b1;
+                    rsp_out <= !known                              ? 32'd0 :
+                               (funct3 == soc_pkg::SOC_PU_OP_ZD)   ? zd_r :
+                               (funct3 == soc_pkg::SOC_PU_OP_CODE) ? {24'd0, code_r} : 32'd0;
+                end
+                if (known && funct3 == soc_pkg::SOC_PU_OP_XY) begin
+                    vx <= cmd_in0;
+                    vy <= cmd_in1;
+                end
+                if (known && funct3 == soc_pkg::SOC_PU_OP_SET) begin
+                    if (set_m < 5'd9) m[set_m[3:0]] <= cmd_in0;
+                    if (set_t < 5'd3) t[set_t[1:0]] <= cmd_in0;
+                    case (cmd_in1[4:0])
+                        soc_pkg::SOC_PU_REG_FOCAL_HI:  focal_hi <= cmd_in0;
+                        soc_pkg::SOC_PU_REG_OFF_SHIFT: begin off_shift <= cmd_in0[5:0]; subpix_drop <= cmd_in0[13:8]; end
+                        soc_pkg::SOC_PU_REG_CENTRE:    {cy, cx} <= cmd_in0;
+                        soc_pkg::SOC_PU_REG_LAST:      {y_last, x_last} <= cmd_in0;
+                        soc_pkg::SOC_PU_REG_NEAR:      near_z <= cmd_in0;
+                        soc_pkg::SOC_PU_REG_FAR:       far_z <= cmd_in0;
+                        soc_pkg::SOC_PU_REG_LIMITS:    {zbuf_on, depth_max, guard} <= cmd_in0;
+                        default: ;
+                    endcase
+                end
+            end
+            if (busy) begin
+                step <= step + 5'd1;
+                // The schedule: a product issued at step s is `hi` at step s + 2.
+                case (step)
+                    5'd0:  begin mul_a <= sgn(m[6]); mul_b <= sgn(vx << 2); end
+                    5'd1:  begin mul_a <= sgn(m[7]); mul_b <= sgn(vy << 2); end
+                    5'd2:  begin mul_a <= sgn(m[8]); mul_b <= sgn(vz << 2); view_z <= t[2] + hi; end
+                    5'd3:  begin mul_a <= sgn(m[0]); mul_b <= sgn(vx << 2); view_z <= view_z + hi; end
+                    5'd4:  begin mul_a <= sgn(m[1]); mul_b <= sgn(vy << 2); view_z <= view_z + hi; end
+                    5'd5:  begin
+                        mul_a <= sgn(m[2]); mul_b <= sgn(vz << 2); view_x <= t[0] + hi;
+                        lead <= clz32(view_z);
+                        if (near_cut) begin         // not projected: the firmware's NEAR vertex
+                            busy <= 1'b0;
+                            rsp_valid <= 1'b1;
+                            rsp_out <= 32'd0;
+                            zd_r <= 32'd0;
+                            code_r <= 8'd0;
+                            code_r[soc_pkg::SOC_PU_OUT_NEAR] <= 1'b1;
+                        end
+                    end
+                    5'd6:  begin
+                        mul_a <= sgn(m[3]); mul_b <= sgn(vx << 2); view_x <= view_x + hi;
+                        mant <= view_z << lead;
+                        shift <= off_shift + subpix_drop - {1'b0, lead};
+                    end
+                    5'd7:  begin mul_a <= sgn(m[4]); mul_b <= sgn(vy << 2); view_x <= view_x + hi; end
+                    5'd8:  begin
+                        mul_a <= uns(mant); mul_b <= uns({seed_q, 16'd0}); y0 <= {seed_q, 16'd0};
+                        view_y <= t[1] + hi;
+                    end
+                    5'd9:  begin mul_a <= sgn(m[5]); mul_b <= sgn(vz << 2); view_y <= view_y + hi; end
+                    5'd10: begin mul_a <= uns(y0); mul_b <= uns(32'd0 - hi); end          // y (2 - mu y)
+                    5'd11: view_y <= view_y + hi;
+                    5'd12: begin mul_a <= uns({hi[30:0], 1'b0}); mul_b <= uns(focal_hi); recip <= {hi[30:0], 1'b0}; end
+                    5'd14: begin mul_a <= sgn(view_x << 3); mul_b <= sgn(hi); q_r <= hi; end
+                    5'd15: begin mul_a <= sgn(view_y << 3); mul_b <= sgn(q_r); end
+                    5'd16: off_x <= offset;
+                    5'd17: off_y <= offset;
+                    5'd18: begin
+                        busy <= 1'b0;
+                        rsp_valid <= 1'b1;
+                        rsp_out <= {sy[15:0], sx[15:0]};
+                        zd_r <= {depth, zbuf};
+                        code_r <= code;
+                    end
+                    default: ;
+                endcase
+            end
+        end
+    end
+endmodule
+
+`default_nettype wire
