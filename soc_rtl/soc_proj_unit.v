@@ -42,8 +42,9 @@ module soc_proj_unit (
     localparam signed [31:0] PIX_FIRST_Q4 = 32'sd8;  // the first pixel centre, Q12.4 (the GPU contract)
 
     // ---- configuration (SET) ----
-    reg signed [31:0] m [0:8];              // rotation, q2_30, row-major
-    reg signed [31:0] t [0:2];              // translation, q16_16
+    // the transform at SET's indices (rotation M00 .. M22 q2_30 row-major, then TX .. TZ q16_16):
+    // distributed RAM, read by the schedule
+    reg        [31:0] xf [0:15];
     reg        [31:0] focal_hi;
     reg        [5:0]  off_shift;            // k + 2
     reg        [5:0]  subpix_drop;          // 4 - FW_SUBPIXEL_BITS
@@ -57,10 +58,12 @@ module soc_proj_unit (
     reg signed [31:0] vx, vy, vz;           // model space, q16_16
     reg               in_frustum;         // Z's mode: the firmware's proj_point_inside
     reg signed [31:0] view_x, view_y, view_z;  // view space, q16_16 (xf_apply)
+    reg        [31:0] view_acc;             // the sum being formed
     reg        [4:0]  lead;                 // leading zeros of view_z: fx_normalize32's s
     reg        [31:0] mant;                 // view_z << lead
     reg        [31:0] y0;                   // the seed, Q1.31
     reg        [31:0] recip;                // fx_recip_mantissa: ~2^63 / mant
+    reg        [31:0] zratio;               // near / z in 0.16: recip >> (33 - lead)
     reg signed [31:0] q_r;
     reg        [5:0]  shift;                // off_shift + drop - lead: 3 .. 24
     reg signed [31:0] off_x, off_y;
@@ -74,8 +77,7 @@ module soc_proj_unit (
     wire       known = cmd_function_id[9:3] == 7'd0;
     assign cmd_ready = !busy && !rsp_valid;
     wire take = cmd_valid && cmd_ready;
-    wire [4:0] set_m = cmd_in1[4:0] - soc_pkg::SOC_PU_REG_M00;   // SET's entry of m, of t
-    wire [4:0] set_t = cmd_in1[4:0] - soc_pkg::SOC_PU_REG_TX;
+    localparam [4:0] XF_LAST = soc_pkg::SOC_PU_REG_TX + 5'd2;    // the transform's last register
 
     // ---- the multiplier: floor(a b / 2^32) of 32-bit operands, signed (mulh) or unsigned (mulhu)
     reg signed [32:0] mul_a, mul_b;
@@ -113,9 +115,32 @@ module soc_proj_unit (
     endfunction
 
     // ---- rounding the offsets: ((p + 2^(sh-1)) >> sh) << drop, arithmetic
+    // one shifter for both: step 13 the depth buffer's near / z (logical), steps 16 and 17 the offsets
     wire signed [31:0] half = 32'sd1 <<< (shift - 6'd1);
-    wire signed [31:0] rounded = ($signed(hi) + half) >>> shift;
-    wire signed [31:0] offset = rounded <<< subpix_drop;
+    wire        [5:0]  zsh = 6'd33 - {1'b0, lead};            // near / z = recip 2^(s - 33)
+    wire               sh_offsets = step[4];                  // steps 16, 17
+    wire        [31:0] sh_in = sh_offsets ? hi + half : recip;
+    wire        [5:0]  sh_amt = sh_offsets ? shift : zsh;
+    wire        [31:0] sh_fill = {32{sh_offsets && sh_in[31]}};      // arithmetic for the offsets
+    wire        [63:0] sh_wide = {sh_fill, sh_in} >> sh_amt;
+    wire        [31:0] shifted = sh_wide[31:0];
+    wire signed [31:0] offset = $signed(shifted) <<< subpix_drop;
+
+    // ---- the transform's sums: each row's first product with its translation, then the others
+    wire        [3:0]  xf_term_at = (step == 5'd9) ? 4'd5 :                  // the nine products:
+                                    (step <= 5'd2) ? 4'd6 + step[3:0] :      // z row, then x, then y
+                                    step[3:0] - 4'd3;
+    wire        [31:0] xf_term = xf[xf_term_at];
+    wire        [31:0] model_term = (step == 5'd0 || step == 5'd3 || step == 5'd6) ? vx :
+                                    (step == 5'd1 || step == 5'd4 || step == 5'd7) ? vy : vz;
+    wire               sum_first = step == 5'd2 || step == 5'd5 || step == 5'd8;
+    wire        [3:0]  xf_t_at = (step == 5'd2) ? 4'd11 : (step == 5'd5) ? 4'd9 : 4'd10;  // TZ, TX, TY
+    wire        [31:0] xf_t = xf[xf_t_at];
+    wire        [31:0] view_sum = (sum_first ? xf_t : view_acc) + hi;
+
+    always @(posedge clk)   // SET of a transform register (no reset: distributed RAM)
+        if (take && known && funct3 == soc_pkg::SOC_PU_OP_SET && cmd_in1[4:0] <= XF_LAST)
+            xf[cmd_in1[3:0]] <= cmd_in0;
 
     // ---- the answer words from the offsets
     wire signed [31:0] g = {16'd0, guard};
@@ -141,8 +166,6 @@ module soc_proj_unit (
             code[soc_pkg::SOC_PU_OUT_FAR] = view_z > far_z;
         end
     end
-    wire [5:0]  zsh = 6'd33 - {1'b0, lead};                  // near / z = recip 2^(s - 33)
-    wire [31:0] zratio = (zsh >= 6'd32) ? 32'd0 : recip >> zsh;
     wire [15:0] zbuf = !zbuf_on ? 16'd0 : ((zratio >= 32'd65535) ? 16'd0 : 16'hFFFF - zratio[15:0]);
     wire [31:0] depth_raw = view_z >> 9;                      // q16_16 to 1/128 units, unsigned
     wire [15:0] depth = (depth_raw > {17'd0, depth_max}) ? {1'b0, depth_max} : depth_raw[15:0];
@@ -172,8 +195,6 @@ module soc_proj_unit (
                     vy <= cmd_in1;
                 end
                 if (known && funct3 == soc_pkg::SOC_PU_OP_SET) begin
-                    if (set_m < 5'd9) m[set_m[3:0]] <= cmd_in0;
-                    if (set_t < 5'd3) t[set_t[1:0]] <= cmd_in0;
                     case (cmd_in1[4:0])
                         soc_pkg::SOC_PU_REG_FOCAL_HI:  focal_hi <= cmd_in0;
                         soc_pkg::SOC_PU_REG_OFF_SHIFT: begin off_shift <= cmd_in0[5:0]; subpix_drop <= cmd_in0[13:8]; end
@@ -188,15 +209,18 @@ module soc_proj_unit (
             end
             if (busy) begin
                 step <= step + 5'd1;
-                // The schedule: a product issued at step s is `hi` at step s + 2.
+                // The schedule: a product issued at step s is `hi` at step s + 2; the sums of the
+                // view's z (steps 2-4), x (5-7) and y (8, 9, 11) in `view_sum`.
+                if (step == 5'd4) view_z <= view_sum;
+                if (step == 5'd7) view_x <= view_sum;
+                if (step == 5'd11) view_y <= view_sum;
+                if (step <= 5'd9 || step == 5'd11) view_acc <= view_sum;
+                if (step <= 5'd7 || step == 5'd9) begin   // the nine products of the transform
+                    mul_a <= sgn(xf_term);
+                    mul_b <= sgn(model_term << 2);
+                end
                 case (step)
-                    5'd0:  begin mul_a <= sgn(m[6]); mul_b <= sgn(vx << 2); end
-                    5'd1:  begin mul_a <= sgn(m[7]); mul_b <= sgn(vy << 2); end
-                    5'd2:  begin mul_a <= sgn(m[8]); mul_b <= sgn(vz << 2); view_z <= t[2] + hi; end
-                    5'd3:  begin mul_a <= sgn(m[0]); mul_b <= sgn(vx << 2); view_z <= view_z + hi; end
-                    5'd4:  begin mul_a <= sgn(m[1]); mul_b <= sgn(vy << 2); view_z <= view_z + hi; end
                     5'd5:  begin
-                        mul_a <= sgn(m[2]); mul_b <= sgn(vz << 2); view_x <= t[0] + hi;
                         lead <= clz32(view_z);
                         if (near_cut) begin         // not projected: the firmware's NEAR vertex
                             busy <= 1'b0;
@@ -208,19 +232,13 @@ module soc_proj_unit (
                         end
                     end
                     5'd6:  begin
-                        mul_a <= sgn(m[3]); mul_b <= sgn(vx << 2); view_x <= view_x + hi;
                         mant <= view_z << lead;
                         shift <= off_shift + subpix_drop - {1'b0, lead};
                     end
-                    5'd7:  begin mul_a <= sgn(m[4]); mul_b <= sgn(vy << 2); view_x <= view_x + hi; end
-                    5'd8:  begin
-                        mul_a <= uns(mant); mul_b <= uns({seed_q, 16'd0}); y0 <= {seed_q, 16'd0};
-                        view_y <= t[1] + hi;
-                    end
-                    5'd9:  begin mul_a <= sgn(m[5]); mul_b <= sgn(vz << 2); view_y <= view_y + hi; end
+                    5'd8:  begin mul_a <= uns(mant); mul_b <= uns({seed_q, 16'd0}); y0 <= {seed_q, 16'd0}; end
                     5'd10: begin mul_a <= uns(y0); mul_b <= uns(32'd0 - hi); end          // y (2 - mu y)
-                    5'd11: view_y <= view_y + hi;
                     5'd12: begin mul_a <= uns({hi[30:0], 1'b0}); mul_b <= uns(focal_hi); recip <= {hi[30:0], 1'b0}; end
+                    5'd13: zratio <= shifted;
                     5'd14: begin mul_a <= sgn(view_x << 3); mul_b <= sgn(hi); q_r <= hi; end
                     5'd15: begin mul_a <= sgn(view_y << 3); mul_b <= sgn(q_r); end
                     5'd16: off_x <= offset;
