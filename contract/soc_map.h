@@ -163,8 +163,9 @@
  * configuration registers, the outcode bits it answers. */
 #define SOC_PU_OPCODE                    0x0Bu  /* custom-0 */
 #define SOC_PU_OP_SET                    0u  /* Configuration: register rs2 (pu_reg below) takes rs1. Answers 0. */
-#define SOC_PU_OP_XY                     1u  /* A model-space vertex's x (rs1) and y (rs2), q16_16. Answers 0. */
-#define SOC_PU_OP_Z                      2u  /* Its z (rs1, q16_16) and the mode (rs2 bit 0: inside the frustum, no near test and no outcodes): projects it and answers the first vertex word, sx [15:0] and sy [31:16] (Q12.4). */
+#define SOC_PU_OP_XY                     1u  /* The next vertex's model-space x (rs1) and y (rs2), q16_16, taken even while a vertex is in progress. Answers 0. */
+#define SOC_PU_OP_Z                      2u  /* Its z (rs1, q16_16) and the mode (rs2 bit 0: inside the frustum, no near test and no outcodes): starts projecting it. Answers 0. */
+#define SOC_PU_OP_SXY                    5u  /* The last vertex's first word, sx [15:0] and sy [31:16] (Q12.4), once it is projected. */
 #define SOC_PU_OP_ZD                     3u  /* The last vertex's second word: zbuf [15:0] (0 unless ZBUF is set), the sort depth [31:16]. */
 #define SOC_PU_OP_CODE                   4u  /* The last vertex's outcode bits (pu_out below; 0 in the inside mode). */
 #define SOC_PU_REG_M00                   0u  /* The rotation's entries, q2_30, row-major: M00 .. M22 at 0 .. 8. */

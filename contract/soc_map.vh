@@ -129,6 +129,7 @@ localparam integer SOC_USB_ROLLOVERS_COUNT_WIDTH    = 16;
 localparam [2:0] SOC_PU_OP_SET                    = 3'h0;  // projection unit: funct3
 localparam [2:0] SOC_PU_OP_XY                     = 3'h1;  // projection unit: funct3
 localparam [2:0] SOC_PU_OP_Z                      = 3'h2;  // projection unit: funct3
+localparam [2:0] SOC_PU_OP_SXY                    = 3'h5;  // projection unit: funct3
 localparam [2:0] SOC_PU_OP_ZD                     = 3'h3;  // projection unit: funct3
 localparam [2:0] SOC_PU_OP_CODE                   = 3'h4;  // projection unit: funct3
 localparam [4:0] SOC_PU_REG_M00                   = 5'h0;  // projection unit: SET's register

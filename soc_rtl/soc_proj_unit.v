@@ -1,7 +1,8 @@
 // soc_proj_unit: the firmware's per-vertex model-view transform and perspective projection in
 // hardware, on the core's custom-function port (VexRiscv_FullCfu's CfuPlugin bus). Issue #27: the
 // knot's projection took 82 instructions and about 98 clocks a vertex on the core; here a vertex
-// takes five custom instructions and the unit's 19 clocks.
+// takes five custom instructions and the unit's 20 clocks, during which the core stores the last
+// vertex's words and loads the next one's.
 //
 // Contract (instructions, registers and outcode bits: contract/soc_map.toml [[pu_op]], [[pu_reg]],
 // [[pu_out]]; the firmware's side: firmware/render/proj_unit.h):
@@ -11,18 +12,21 @@
 //            (math/fixed.h) from a seed table computed here from its defining formula, the
 //            sub-pixel drop, the guard band, the outcodes and the depths. The RTL shares no code
 //            with the firmware; tests/soc/proj_unit_tb.cpp checks it against the firmware's C.
-//   handshake one command at a time: cmd_ready is high when the unit is idle and holds no answer;
-//            every command is answered exactly once, in order (rsp_valid until rsp_ready). SET,
-//            XY, ZD and CODE answer the clock after they are taken, Z after the projection
-//            (19 clocks). An unknown function (funct7 not 0, funct3 above CODE) answers 0
-//            and changes nothing.
+//   handshake every command is answered exactly once, in order (rsp_valid until rsp_ready), one
+//            at a time: cmd_ready is high when no answer waits and no command is held. XY acts
+//            at once (into next_x, next_y), also while a vertex is in progress; any other command
+//            acts at once when the unit is idle, else is held until the vertex is done (20 clocks
+//            after its Z). A command answers the clock after it acts: Z starts the vertex (its
+//            XY's x and y) and answers 0, SXY, ZD and CODE answer the last vertex's words. An
+//            unknown function (funct7 not 0, funct3 not an op) answers 0 and changes nothing.
 //   range    the firmware's: |model coordinates| < 8192, |view x, y| < 4096 units, |translation|
 //            < 4096, z >= the near plane for a vertex given as in_frustum (proj.h, vec.h). Outside it
 //            the unit computes what the firmware's int32 arithmetic does (two's-complement wrap).
 //
 // Datapath: one 33 x 33 signed multiplier (operands registered, the product registered: a result
 // two clocks after its operands), shared by the 14 products of a vertex on a fixed schedule (the
-// step counter below); the seed table is one 1024 x 16 ROM.
+// step counter below, 20 steps: the last three place the offsets on the screen and form the
+// outcodes, no adder or compare chained to another in a clock); the seed table is one 1024 x 16 ROM.
 `default_nettype none
 
 module soc_proj_unit (
@@ -55,7 +59,8 @@ module soc_proj_unit (
     reg               zbuf_on;
 
     // ---- the vertex ----
-    reg signed [31:0] vx, vy, vz;           // model space, q16_16
+    reg signed [31:0] next_x, next_y;       // XY's: the next vertex's, q16_16 (taken while busy)
+    reg signed [31:0] vx, vy, vz;           // the vertex in progress, model space
     reg               in_frustum;         // Z's mode: the firmware's proj_point_inside
     reg signed [31:0] view_x, view_y, view_z;  // view space, q16_16 (xf_apply)
     reg        [31:0] view_acc;             // the sum being formed
@@ -67,16 +72,12 @@ module soc_proj_unit (
     reg signed [31:0] q_r;
     reg        [5:0]  shift;                // off_shift + drop - lead: 3 .. 24
     reg signed [31:0] off_x, off_y;
-    reg        [31:0] zd_r;
+    reg        [31:0] sxy_r, zd_r;
     reg        [7:0]  code_r;
 
     reg               busy;
     reg        [4:0]  step;
 
-    wire [2:0] funct3 = cmd_function_id[2:0];
-    wire       known = cmd_function_id[9:3] == 7'd0;
-    assign cmd_ready = !busy && !rsp_valid;
-    wire take = cmd_valid && cmd_ready;
     localparam [4:0] XF_LAST = soc_pkg::SOC_PU_REG_TX + 5'd2;    // the transform's last register
 
     // ---- the multiplier: floor(a b / 2^32) of 32-bit operands, signed (mulh) or unsigned (mulhu)
@@ -118,7 +119,7 @@ module soc_proj_unit (
     // one shifter for both: step 13 the depth buffer's near / z (logical), steps 16 and 17 the offsets
     wire signed [31:0] half = 32'sd1 <<< (shift - 6'd1);
     wire        [5:0]  zsh = 6'd33 - {1'b0, lead};            // near / z = recip 2^(s - 33)
-    wire               sh_offsets = step[4];                  // steps 16, 17
+    wire               sh_offsets = step[4];                  // steps 16, 17 (and after)
     wire        [31:0] sh_in = sh_offsets ? hi + half : recip;
     wire        [5:0]  sh_amt = sh_offsets ? shift : zsh;
     wire        [31:0] sh_fill = {32{sh_offsets && sh_in[31]}};      // arithmetic for the offsets
@@ -138,17 +139,18 @@ module soc_proj_unit (
     wire        [31:0] xf_t = xf[xf_t_at];
     wire        [31:0] view_sum = (sum_first ? xf_t : view_acc) + hi;
 
-    always @(posedge clk)   // SET of a transform register (no reset: distributed RAM)
-        if (take && known && funct3 == soc_pkg::SOC_PU_OP_SET && cmd_in1[4:0] <= XF_LAST)
-            xf[cmd_in1[3:0]] <= cmd_in0;
 
-    // ---- the answer words from the offsets
+
+    // ---- the answer words from the offsets: step 17 the x offset (off_x) clamped to the guard
+    // band and placed on the screen, step 18 the y offset, step 19 the outcodes from those registers
+    wire               y_turn = step == 5'd18;
+    wire signed [31:0] off_now = y_turn ? off_y : off_x;
     wire signed [31:0] g = {16'd0, guard};
-    wire        out_guard = off_x > g || off_x < -g || off_y > g || off_y < -g;
-    wire signed [31:0] cl_x = in_frustum ? off_x : (off_x > g ? g : (off_x < -g ? -g : off_x));
-    wire signed [31:0] cl_y = in_frustum ? off_y : (off_y > g ? g : (off_y < -g ? -g : off_y));
-    wire signed [31:0] sx = $signed({16'd0, cx}) + cl_x;
-    wire signed [31:0] sy = $signed({16'd0, cy}) - cl_y;
+    wire               out_band = off_now > g || off_now < -g;
+    wire signed [31:0] clamped = in_frustum ? off_now : (off_now > g ? g : (off_now < -g ? -g : off_now));
+    wire signed [31:0] screen = y_turn ? $signed({16'd0, cy}) - clamped : $signed({16'd0, cx}) + clamped;
+    reg  signed [31:0] sx, sy;
+    reg                out_guard;
     // one unsigned range check an axis, as the firmware's
     wire [31:0] col_from_first = sx - PIX_FIRST_Q4;
     wire [31:0] row_from_first = sy - PIX_FIRST_Q4;
@@ -172,37 +174,66 @@ module soc_proj_unit (
 
     wire near_cut = !in_frustum && view_z < near_z;
 
+    // ---- commands: taken at once when the unit can act on them (XY always; the others when it is
+    // idle), else held until the vertex in progress is done
+    reg        held;
+    reg [9:0]  held_id;
+    reg [31:0] held_in0, held_in1;
+    assign cmd_ready = !held && !rsp_valid;
+    wire       take = cmd_valid && cmd_ready;
+    wire [9:0] op_id  = held ? held_id : cmd_function_id;
+    wire [31:0] op_in0 = held ? held_in0 : cmd_in0;
+    wire [31:0] op_in1 = held ? held_in1 : cmd_in1;
+    wire [2:0] funct3 = op_id[2:0];
+    wire       known = op_id[9:3] == 7'd0;
+    wire       op_xy = known && funct3 == soc_pkg::SOC_PU_OP_XY;
+    wire       act = (held || take) && (op_xy || !busy);     // the command acts in this clock
+
+    always @(posedge clk)   // SET of a transform register (no reset: distributed RAM)
+        if (act && known && funct3 == soc_pkg::SOC_PU_OP_SET && op_in1[4:0] <= XF_LAST)
+            xf[op_in1[3:0]] <= op_in0;
+
     always @(posedge clk) begin
         if (rst) begin
             busy <= 1'b0;
+            held <= 1'b0;
             rsp_valid <= 1'b0;
         end else begin
             if (rsp_valid && rsp_ready) rsp_valid <= 1'b0;
-            if (take) begin
+            if (take && !act) begin
+                held <= 1'b1;
+                held_id <= cmd_function_id;
+                held_in0 <= cmd_in0;
+                held_in1 <= cmd_in1;
+            end
+            if (act) begin
+                held <= 1'b0;
+                rsp_valid <= 1'b1;
+                rsp_out <= !known                              ? 32'd0 :
+                           (funct3 == soc_pkg::SOC_PU_OP_SXY)  ? sxy_r :
+                           (funct3 == soc_pkg::SOC_PU_OP_ZD)   ? zd_r :
+                           (funct3 == soc_pkg::SOC_PU_OP_CODE) ? {24'd0, code_r} : 32'd0;
+                if (op_xy) begin
+                    next_x <= op_in0;
+                    next_y <= op_in1;
+                end
                 if (known && funct3 == soc_pkg::SOC_PU_OP_Z) begin
                     busy <= 1'b1;
                     step <= 5'd0;
-                    vz <= cmd_in0;
-                    in_frustum <= cmd_in1[0];
-                end else begin
-                    rsp_valid <= 1'b1;
-                    rsp_out <= !known                              ? 32'd0 :
-                               (funct3 == soc_pkg::SOC_PU_OP_ZD)   ? zd_r :
-                               (funct3 == soc_pkg::SOC_PU_OP_CODE) ? {24'd0, code_r} : 32'd0;
-                end
-                if (known && funct3 == soc_pkg::SOC_PU_OP_XY) begin
-                    vx <= cmd_in0;
-                    vy <= cmd_in1;
+                    vx <= next_x;
+                    vy <= next_y;
+                    vz <= op_in0;
+                    in_frustum <= op_in1[0];
                 end
                 if (known && funct3 == soc_pkg::SOC_PU_OP_SET) begin
-                    case (cmd_in1[4:0])
-                        soc_pkg::SOC_PU_REG_FOCAL_HI:  focal_hi <= cmd_in0;
-                        soc_pkg::SOC_PU_REG_OFF_SHIFT: begin off_shift <= cmd_in0[5:0]; subpix_drop <= cmd_in0[13:8]; end
-                        soc_pkg::SOC_PU_REG_CENTRE:    {cy, cx} <= cmd_in0;
-                        soc_pkg::SOC_PU_REG_LAST:      {y_last, x_last} <= cmd_in0;
-                        soc_pkg::SOC_PU_REG_NEAR:      near_z <= cmd_in0;
-                        soc_pkg::SOC_PU_REG_FAR:       far_z <= cmd_in0;
-                        soc_pkg::SOC_PU_REG_LIMITS:    {zbuf_on, depth_max, guard} <= cmd_in0;
+                    case (op_in1[4:0])
+                        soc_pkg::SOC_PU_REG_FOCAL_HI:  focal_hi <= op_in0;
+                        soc_pkg::SOC_PU_REG_OFF_SHIFT: begin off_shift <= op_in0[5:0]; subpix_drop <= op_in0[13:8]; end
+                        soc_pkg::SOC_PU_REG_CENTRE:    {cy, cx} <= op_in0;
+                        soc_pkg::SOC_PU_REG_LAST:      {y_last, x_last} <= op_in0;
+                        soc_pkg::SOC_PU_REG_NEAR:      near_z <= op_in0;
+                        soc_pkg::SOC_PU_REG_FAR:       far_z <= op_in0;
+                        soc_pkg::SOC_PU_REG_LIMITS:    {zbuf_on, depth_max, guard} <= op_in0;
                         default: ;
                     endcase
                 end
@@ -224,8 +255,7 @@ module soc_proj_unit (
                         lead <= clz32(view_z);
                         if (near_cut) begin         // not projected: the firmware's NEAR vertex
                             busy <= 1'b0;
-                            rsp_valid <= 1'b1;
-                            rsp_out <= 32'd0;
+                            sxy_r <= 32'd0;
                             zd_r <= 32'd0;
                             code_r <= 8'd0;
                             code_r[soc_pkg::SOC_PU_OUT_NEAR] <= 1'b1;
@@ -242,11 +272,11 @@ module soc_proj_unit (
                     5'd14: begin mul_a <= sgn(view_x << 3); mul_b <= sgn(hi); q_r <= hi; end
                     5'd15: begin mul_a <= sgn(view_y << 3); mul_b <= sgn(q_r); end
                     5'd16: off_x <= offset;
-                    5'd17: off_y <= offset;
-                    5'd18: begin
+                    5'd17: begin off_y <= offset; sx <= screen; out_guard <= out_band; end
+                    5'd18: begin sy <= screen; out_guard <= out_guard || out_band; end
+                    5'd19: begin
                         busy <= 1'b0;
-                        rsp_valid <= 1'b1;
-                        rsp_out <= {sy[15:0], sx[15:0]};
+                        sxy_r <= {sy[15:0], sx[15:0]};
                         zd_r <= {depth, zbuf};
                         code_r <= code;
                     end

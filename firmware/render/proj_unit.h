@@ -1,7 +1,8 @@
 /*
  * proj_unit.h — the SoC's projection unit (soc_rtl/soc_proj_unit.v): xf_apply and
  * proj_point_impl of one vertex as five custom instructions (custom-0 on VexRiscv_FullCfu's
- * custom-function port) instead of about 82 instructions. Its answers are the fixed-point path's to
+ * custom-function port) instead of about 82 instructions, the unit working on one vertex while the
+ * core stores the last one's words and reads the next one's. Its answers are the fixed-point path's to
  * the bit (tests/rtl/proj_unit.sh checks the RTL against this firmware's C), so a frame is the
  * same with the unit or without it.
  *
@@ -96,17 +97,34 @@ static inline void proj_unit_load(const struct proj_setup *ps, const xf_affine *
     }
 }
 
-/* n model-space vertices through the loaded transform into out: proj_point (or, inside,
- * proj_point_inside) of xf_apply of each, to the bit. */
+/* n (>= 1) model-space vertices through the loaded transform into out: proj_point (or, inside,
+ * proj_point_inside) of xf_apply of each, to the bit. The unit takes the next vertex's XY while it
+ * projects one, so the loop gives it before asking for the answers, and stores a vertex's words
+ * while the unit projects the next. */
 static inline __attribute__((always_inline)) void proj_unit_points(const vec3 *verts, uint32_t n,
                                                                    struct proj_vertex *out,
                                                                    bool inside)
 {
+    (void)PROJ_UNIT_INSN(SOC_PU_OP_XY, verts[0].x, verts[0].y);
+    (void)PROJ_UNIT_INSN(SOC_PU_OP_Z, verts[0].z, inside);
     for (uint32_t i = 0; i < n; i++) {
-        (void)PROJ_UNIT_INSN(SOC_PU_OP_XY, verts[i].x, verts[i].y);
-        out[i].sxy = PROJ_UNIT_INSN(SOC_PU_OP_Z, verts[i].z, inside);
-        out[i].zd = PROJ_UNIT_INSN(SOC_PU_OP_ZD, 0, 0);
-        out[i].tail = inside ? 0u : PROJ_UNIT_INSN(SOC_PU_OP_CODE, 0, 0) << 8;
+        const bool more = i + 1u < n;
+        uint32_t sxy;
+        uint32_t zd;
+        uint32_t tail;
+
+        if (more) {
+            (void)PROJ_UNIT_INSN(SOC_PU_OP_XY, verts[i + 1u].x, verts[i + 1u].y);
+        }
+        sxy = PROJ_UNIT_INSN(SOC_PU_OP_SXY, 0, 0);
+        zd = PROJ_UNIT_INSN(SOC_PU_OP_ZD, 0, 0);
+        tail = inside ? 0u : PROJ_UNIT_INSN(SOC_PU_OP_CODE, 0, 0) << 8;
+        if (more) {
+            (void)PROJ_UNIT_INSN(SOC_PU_OP_Z, verts[i + 1u].z, inside);
+        }
+        out[i].sxy = sxy;
+        out[i].zd = zd;
+        out[i].tail = tail;
     }
 }
 #endif /* PROJ_UNIT_USED */

@@ -492,6 +492,9 @@ render_project_vertices(const struct proj_setup *ps, const xf_affine *mv, const 
 {
 #if PROJ_UNIT_USED
     /* The SoC's projection unit (render/proj_unit.h): the same vertices. */
+    if (n == 0u) {
+        return;
+    }
     proj_unit_load(ps, mv);
     if (inside) {
         proj_unit_points(verts, n, out, true);

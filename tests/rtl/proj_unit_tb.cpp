@@ -4,9 +4,10 @@
 // depth buffer on and off), random transforms, and vertices inside the frustum, beyond its sides,
 // beyond the guard band, behind the near plane, on it, beyond far, at every normalisation shift;
 // both modes (inside only where the view z allows it, as the firmware does); the seed table entry
-// by entry against the firmware's. The handshake: answers
-// held while the core is not ready, one answer a command, none early, cmd_ready low while busy,
-// Z's latency; an unknown function answers 0 and changes nothing.
+// by entry against the firmware's. The handshake: answers held while the core is not ready, one
+// answer a command, none early; the next vertex's XY taken while one is in progress, a SET or a
+// second vertex's Z held until it is done; the projection's latency; an unknown function answers
+// 0 and changes nothing.
 //     proj_unit_tb [VERTEX_COUNT]     (built by tests/rtl/proj_unit.sh)
 #include <cstdint>
 #include <cstdio>
@@ -46,7 +47,8 @@ static void fail(const char *what)
 
 // One command: wait for cmd_ready, hand it over, wait for the one answer (the core's side holds
 // rsp_ready low for a random number of clocks first, as a stalled memory stage would).
-static uint32_t command(unsigned funct7, unsigned funct3, uint32_t a, uint32_t b, int *clocks = nullptr)
+static uint32_t command(unsigned funct7, unsigned funct3, uint32_t a, uint32_t b, int *clocks = nullptr,
+                        bool stall = true)
 {
     int waited = 0;
     while (!dut->cmd_ready) {
@@ -70,7 +72,7 @@ static uint32_t command(unsigned funct7, unsigned funct3, uint32_t a, uint32_t b
         if (++n > 100) fail("no answer");
     }
     if (clocks) *clocks = n;
-    for (int hold = int(rng() % 4); hold > 0; hold--) {  // a stalled core: the answer must stay
+    for (int hold = stall ? int(rng() % 4) : 0; hold > 0; hold--) {  // a stalled core: the answer must stay
         const uint32_t out = dut->rsp_out;
         tick();
         if (!dut->rsp_valid || dut->rsp_out != out) fail("the answer changed before rsp_ready");
@@ -80,6 +82,11 @@ static uint32_t command(unsigned funct7, unsigned funct3, uint32_t a, uint32_t b
     tick();
     if (dut->rsp_valid) fail("a second answer to one command");
     return answer;
+}
+
+static int32_t uniform(int64_t lo, int64_t hi)  // [lo, hi]
+{
+    return int32_t(lo + int64_t(rng() % uint64_t(hi - lo + 1)));
 }
 
 struct setup {
@@ -102,9 +109,27 @@ static void check_vertex(const setup &s, const int32_t v[3], int inside)
 {
     uint32_t want[3];
     proj_ref_point(s.focal_px, s.far_q16, s.width, s.height, s.zbuf, s.m, s.t, v, inside, want);
+    const int order = int(rng() % 4);
+    if (order == 3) {  // another vertex first, then this one's Z given while that one is in progress
+        const int32_t other[3] = {uniform(-(1 << 20), 1 << 20), uniform(-(1 << 20), 1 << 20), uniform(1 << 16, 1 << 22)};
+        command(0, SOC_PU_OP_XY, uint32_t(other[0]), uint32_t(other[1]));
+        command(0, SOC_PU_OP_Z, uint32_t(other[2]), 0);
+    }
     if (command(0, SOC_PU_OP_XY, uint32_t(v[0]), uint32_t(v[1])) != 0) fail("XY answers not 0");
+    int z_clocks;  // order 0: SXY right after Z, Z's answer taken at once: the whole projection
+    if (command(0, SOC_PU_OP_Z, uint32_t(v[2]), uint32_t(inside), &z_clocks, order != 0) != 0)
+        fail("Z answers not 0");
+    if (order == 1) {  // the next vertex's XY while this one is in progress: taken, no effect on it
+        if (command(0, SOC_PU_OP_XY, uint32_t(rng()), uint32_t(rng())) != 0) fail("XY answers not 0");
+    } else if (order == 2) {  // a SET while in progress: held until the vertex is done
+        uint32_t regs[PROJ_REF_REGS];
+        proj_ref_regs(s.focal_px, s.far_q16, s.width, s.height, s.zbuf, s.m, s.t, regs);
+        const uint32_t r = uint32_t(rng() % PROJ_REF_REGS);
+        command(0, SOC_PU_OP_SET, regs[r] ^ 0x5A5A5A5Au, r);   // a wrong value ...
+        command(0, SOC_PU_OP_SET, regs[r], r);                 // ... and the right one again
+    }
     int clocks;
-    const uint32_t sxy = command(0, SOC_PU_OP_Z, uint32_t(v[2]), uint32_t(inside), &clocks);
+    const uint32_t sxy = command(0, SOC_PU_OP_SXY, 0, 0, &clocks);
     const uint32_t zd = command(0, SOC_PU_OP_ZD, 0, 0);
     const uint32_t code = command(0, SOC_PU_OP_CODE, 0, 0);
     vertices++;
@@ -112,8 +137,11 @@ static void check_vertex(const setup &s, const int32_t v[3], int inside)
     if (want[2] & SOC_PU_OUT_NEAR) {
         near_cuts++;
     } else {
-        if (z_latency < 0) z_latency = clocks;
-        if (clocks != z_latency) fail("Z's latency varies");
+        if (order == 0) {  // SXY right after Z: it waits for the rest of the projection
+            clocks += z_clocks + 1;  // from Z's command to SXY's answer
+            if (z_latency < 0) z_latency = clocks;
+            if (clocks != z_latency) fail("the projection's latency varies");
+        }
         int lead = 0;
         while (lead < 31 && !(vz & (0x80000000u >> lead))) lead++;
         shifts_seen |= 1u << lead;
@@ -128,11 +156,6 @@ static void check_vertex(const setup &s, const int32_t v[3], int inside)
                         sxy, zd, code, want[0], want[1], want[2]);
         }
     }
-}
-
-static int32_t uniform(int64_t lo, int64_t hi)  // [lo, hi]
-{
-    return int32_t(lo + int64_t(rng() % uint64_t(hi - lo + 1)));
 }
 
 static setup random_setup()
@@ -234,7 +257,7 @@ int main(int argc, char **argv)
         }
         if (k % 997 == 0) {  // unknown functions: answer 0, change nothing
             if (command(1 + unsigned(rng() % 127), SOC_PU_OP_SET, uint32_t(rng()), uint32_t(rng() % 19)) != 0 ||
-                command(0, 5 + unsigned(rng() % 3), uint32_t(rng()), uint32_t(rng())) != 0)
+                command(0, 6 + unsigned(rng() % 2), uint32_t(rng()), uint32_t(rng())) != 0)
                 fail("an unknown function answers not 0");
         }
         int32_t v[3];
@@ -251,7 +274,7 @@ int main(int argc, char **argv)
         }
     }
     std::printf("%llu vertices (%llu near, %llu inside), every outcode bit %s, shifts seen 0x%x, "
-                "Z answers after %d clocks: %llu mismatches\n",
+                "SXY answers %d clocks after Z is given: %llu mismatches\n",
                 (unsigned long long)vertices, (unsigned long long)near_cuts, (unsigned long long)insides,
                 outcode_bits == 0x7F ? "met" : "NOT met", shifts_seen, z_latency,
                 (unsigned long long)failures);
