@@ -135,13 +135,13 @@ def gpusims(table):
 
 # ---- SoC simulators ------------------------------------------------------------------------------
 def socsims(table):
-    """id -> (system, RAM KiB, GPU -G flags, trace, UART baud or None, USB host)."""
+    """id -> (system, RAM KiB, GPU -G flags, trace, UART baud or None, USB host, projection unit)."""
     defaults = contract_params()
     ram = [r for r in load(SOC_MAP)["region"] if r["name"] == "RAM"][0]
     out = {}
     for family, spec in table.get("socsim", {}).items():
         where = f"{BUILDS}: socsim.{family}"
-        unknown = set(spec) - {"system", "ram", "params", "trace", "uart_baud", "usb"}
+        unknown = set(spec) - {"system", "ram", "params", "trace", "uart_baud", "usb", "proj_unit"}
         if unknown:
             raise TableError(f"{where}: unknown key {sorted(unknown)[0]}")
         system = spec.get("system", "soc")
@@ -165,15 +165,18 @@ def socsims(table):
         usb = spec.get("usb", False)
         if not isinstance(usb, bool):
             raise TableError(f"{where}: usb = {usb!r}: true or false")
-        out[ident] = (system, ram_kib, flags, bool(spec.get("trace", False)), baud, usb)
+        proj_unit = spec.get("proj_unit", True)
+        if not isinstance(proj_unit, bool):
+            raise TableError(f"{where}: proj_unit = {proj_unit!r}: true or false")
+        out[ident] = (system, ram_kib, flags, bool(spec.get("trace", False)), baud, usb, proj_unit)
     return out
 
 
 def socsim_mk(socs):
     lines = [HEADER, "# socsim_cmd, SOCSIM_BUILD_RULES and SOCSIM_SYSTEM_*: cosim/soc/socsim.mk's.", ""]
-    for ident, (system, ram_kib, flags, trace, baud, usb) in socs.items():
+    for ident, (system, ram_kib, flags, trace, baud, usb, proj_unit) in socs.items():
         top = (f"$(SOCSIM_SYSTEM_{system})" + (" --trace-fst" if trace else "") + (f" -GBAUD={baud}" if baud else "")
-               + (" $(SOCSIM_USB_PARAMS)" if usb else ""))
+               + (" $(SOCSIM_USB_PARAMS)" if usb else "") + ("" if proj_unit else " -GPROJ_UNIT=0"))
         cflags = (f"$(SOCSIM_CFLAGS_{system})" + (" -DSOCSIM_TRACE=1" if trace else "")
                   + (f" -DSOCSIM_UART_BAUD={baud}" if baud else "") + (" $(SOCSIM_USB_CFLAGS)" if usb else ""))
         lines.append(f"SOCSIM_CMD_{ident} = $(call socsim_cmd,$(BUILD)/{ident},{top},{ram_kib * 1024},{flags},"

@@ -1,7 +1,7 @@
 // soc_proj_unit: the firmware's per-vertex model-view transform and perspective projection in
 // hardware, on the core's custom-function port (VexRiscv_FullCfu's CfuPlugin bus). Issue #27: the
 // knot's projection took 82 instructions and about 98 clocks a vertex on the core; here a vertex
-// takes five custom instructions and the unit's 20 clocks, during which the core stores the last
+// takes five custom instructions and the unit's 21 clocks, during which the core stores the last
 // vertex's words and loads the next one's.
 //
 // Contract (instructions, registers and outcode bits: contract/soc_map.toml [[pu_op]], [[pu_reg]],
@@ -11,22 +11,23 @@
 //            then proj_point_impl (render/proj.h) with one Newton step of fx_recip_mantissa
 //            (math/fixed.h) from a seed table computed here from its defining formula, the
 //            sub-pixel drop, the guard band, the outcodes and the depths. The RTL shares no code
-//            with the firmware; tests/soc/proj_unit_tb.cpp checks it against the firmware's C.
+//            with the firmware; tests/rtl/proj_unit_tb.cpp checks it against the firmware's C.
 //   handshake every command is answered exactly once, in order (rsp_valid until rsp_ready), one
 //            at a time: cmd_ready is high when no answer waits and no command is held. XY acts
 //            at once (into next_x, next_y), also while a vertex is in progress; any other command
-//            acts at once when the unit is idle, else is held until the vertex is done (20 clocks
+//            acts at once when the unit is idle, else is held until the vertex is done (21 clocks
 //            after its Z). A command answers the clock after it acts: Z starts the vertex (its
 //            XY's x and y) and answers 0, SXY, ZD and CODE answer the last vertex's words. An
 //            unknown function (funct7 not 0, funct3 not an op) answers 0 and changes nothing.
 //   range    the firmware's: |model coordinates| < 8192, |view x, y| < 4096 units, |translation|
-//            < 4096, z >= the near plane for a vertex given as in_frustum (proj.h, vec.h). Outside it
-//            the unit computes what the firmware's int32 arithmetic does (two's-complement wrap).
+//            < 4096, z >= the near plane for a vertex given as inside the frustum (proj.h,
+//            vec.h). Outside it the unit computes what the firmware's int32 arithmetic does
+//            (two's-complement wrap).
 //
 // Datapath: one 33 x 33 signed multiplier (operands registered, the product registered: a result
 // two clocks after its operands), shared by the 14 products of a vertex on a fixed schedule (the
-// step counter below, 20 steps: the last three place the offsets on the screen and form the
-// outcodes, no adder or compare chained to another in a clock); the seed table is one 1024 x 16 ROM.
+// step counter below, 21 steps: the last five round and shift the offsets, place them on the
+// screen and form the outcodes, no adder or compare chained to another in a clock); the seed table is one 1024 x 16 ROM.
 `default_nettype none
 
 module soc_proj_unit (
@@ -78,7 +79,10 @@ module soc_proj_unit (
     reg               busy;
     reg        [4:0]  step;
 
-    localparam [4:0] XF_LAST = soc_pkg::SOC_PU_REG_TX + 5'd2;    // the transform's last register
+    // the transform's registers: M00 .. M22 then TX .. TZ, in xf at their SET indices (below 16)
+    localparam [3:0] XF_M = soc_pkg::SOC_PU_REG_M00[3:0];
+    localparam [3:0] XF_T = soc_pkg::SOC_PU_REG_TX[3:0];
+    localparam [4:0] XF_LAST = soc_pkg::SOC_PU_REG_TX + 5'd2;
 
     // ---- the multiplier: floor(a b / 2^32) of 32-bit operands, signed (mulh) or unsigned (mulhu)
     reg signed [32:0] mul_a, mul_b;
@@ -116,11 +120,12 @@ module soc_proj_unit (
     endfunction
 
     // ---- rounding the offsets: ((p + 2^(sh-1)) >> sh) << drop, arithmetic
-    // one shifter for both: step 13 the depth buffer's near / z (logical), steps 16 and 17 the offsets
-    wire signed [31:0] half = 32'sd1 <<< (shift - 6'd1);
+    // one shifter for both: step 13 the depth buffer's near / z (logical), steps 17 and 18 the offsets
+    reg  signed [31:0] half;                                  // 2^(shift - 1): rounds to nearest
+    reg         [31:0] rounding;                              // an offset's product + half
     wire        [5:0]  zsh = 6'd33 - {1'b0, lead};            // near / z = recip 2^(s - 33)
-    wire               sh_offsets = step[4];                  // steps 16, 17 (and after)
-    wire        [31:0] sh_in = sh_offsets ? hi + half : recip;
+    wire               sh_offsets = step[4];                  // steps 17, 18 (and after)
+    wire        [31:0] sh_in = sh_offsets ? rounding : recip;
     wire        [5:0]  sh_amt = sh_offsets ? shift : zsh;
     wire        [31:0] sh_fill = {32{sh_offsets && sh_in[31]}};      // arithmetic for the offsets
     wire        [63:0] sh_wide = {sh_fill, sh_in} >> sh_amt;
@@ -128,22 +133,22 @@ module soc_proj_unit (
     wire signed [31:0] offset = $signed(shifted) <<< subpix_drop;
 
     // ---- the transform's sums: each row's first product with its translation, then the others
-    wire        [3:0]  xf_term_at = (step == 5'd9) ? 4'd5 :                  // the nine products:
-                                    (step <= 5'd2) ? 4'd6 + step[3:0] :      // z row, then x, then y
-                                    step[3:0] - 4'd3;
+    wire        [3:0]  xf_term_at = XF_M + ((step == 5'd9) ? 4'd5 :          // the nine products:
+                                             (step <= 5'd2) ? 4'd6 + step[3:0] :  // z row, x, y
+                                             step[3:0] - 4'd3);
     wire        [31:0] xf_term = xf[xf_term_at];
     wire        [31:0] model_term = (step == 5'd0 || step == 5'd3 || step == 5'd6) ? vx :
                                     (step == 5'd1 || step == 5'd4 || step == 5'd7) ? vy : vz;
     wire               sum_first = step == 5'd2 || step == 5'd5 || step == 5'd8;
-    wire        [3:0]  xf_t_at = (step == 5'd2) ? 4'd11 : (step == 5'd5) ? 4'd9 : 4'd10;  // TZ, TX, TY
+    wire        [3:0]  xf_t_at = XF_T + ((step == 5'd2) ? 4'd2 : (step == 5'd5) ? 4'd0 : 4'd1);  // TZ, TX, TY
     wire        [31:0] xf_t = xf[xf_t_at];
     wire        [31:0] view_sum = (sum_first ? xf_t : view_acc) + hi;
 
 
 
-    // ---- the answer words from the offsets: step 17 the x offset (off_x) clamped to the guard
-    // band and placed on the screen, step 18 the y offset, step 19 the outcodes from those registers
-    wire               y_turn = step == 5'd18;
+    // ---- the answer words from the offsets: step 18 the x offset (off_x) clamped to the guard
+    // band and placed on the screen, step 19 the y offset, step 20 the outcodes from those registers
+    wire               y_turn = step == 5'd19;
     wire signed [31:0] off_now = y_turn ? off_y : off_x;
     wire signed [31:0] g = {16'd0, guard};
     wire               out_band = off_now > g || off_now < -g;
@@ -265,16 +270,18 @@ module soc_proj_unit (
                         mant <= view_z << lead;
                         shift <= off_shift + subpix_drop - {1'b0, lead};
                     end
+                    5'd7:  half <= 32'sd1 <<< (shift - 6'd1);
                     5'd8:  begin mul_a <= uns(mant); mul_b <= uns({seed_q, 16'd0}); y0 <= {seed_q, 16'd0}; end
                     5'd10: begin mul_a <= uns(y0); mul_b <= uns(32'd0 - hi); end          // y (2 - mu y)
                     5'd12: begin mul_a <= uns({hi[30:0], 1'b0}); mul_b <= uns(focal_hi); recip <= {hi[30:0], 1'b0}; end
                     5'd13: zratio <= shifted;
                     5'd14: begin mul_a <= sgn(view_x << 3); mul_b <= sgn(hi); q_r <= hi; end
                     5'd15: begin mul_a <= sgn(view_y << 3); mul_b <= sgn(q_r); end
-                    5'd16: off_x <= offset;
-                    5'd17: begin off_y <= offset; sx <= screen; out_guard <= out_band; end
-                    5'd18: begin sy <= screen; out_guard <= out_guard || out_band; end
-                    5'd19: begin
+                    5'd16: rounding <= hi + half;                           // x's product
+                    5'd17: begin off_x <= offset; rounding <= hi + half; end  // y's product
+                    5'd18: begin off_y <= offset; sx <= screen; out_guard <= out_band; end
+                    5'd19: begin sy <= screen; out_guard <= out_guard || out_band; end
+                    5'd20: begin
                         busy <= 1'b0;
                         sxy_r <= {sy[15:0], sx[15:0]};
                         zd_r <= {depth, zbuf};

@@ -48,6 +48,7 @@ module soc_top #(
     parameter integer PIX_CLK_HZ = 25000000,   // clk_pix's frequency: 25 MHz, or CLK_HZ when tied to clk
     parameter integer BAUD = soc_pkg::SOC_UART_BAUD,         // UART bits per second
     parameter integer USB_HOST = 0,            // 1: the USB keyboard host (soc_usb); 0: none
+    parameter integer PROJ_UNIT = 1,           // 1: the projection unit (soc_proj_unit); 0: none
     `GPU_BUILD_PARAMS,                         // the GPU's (gpu_top), passed through
     localparam integer PIX_HZ = 25000000,      // VGA 640x480@60 pixel rate
     localparam integer PIX_DIV = PIX_CLK_HZ / PIX_HZ,
@@ -204,18 +205,33 @@ module soc_top #(
     );
 
     // ---- the projection unit on the core's custom-function port (custom-0 instructions) ----
-    soc_proj_unit u_proj_unit (
-        .clk             (clk),
-        .rst             (rst),
-        .cmd_valid       (cfu_cmd_valid),
-        .cmd_ready       (cfu_cmd_ready),
-        .cmd_function_id (cfu_function_id),
-        .cmd_in0         (cfu_in0),
-        .cmd_in1         (cfu_in1),
-        .rsp_valid       (cfu_rsp_valid),
-        .rsp_ready       (cfu_rsp_ready),
-        .rsp_out         (cfu_out)
-    );
+    // Without it (PROJ_UNIT = 0: a small part's build) the port answers every instruction with
+    // all ones, which no command of the unit answers to the firmware's probe (a SET of no
+    // register: 0), so a program built for the unit stops with an error instead of drawing wrong.
+    generate
+        if (PROJ_UNIT != 0) begin : g_proj_unit
+            soc_proj_unit u_proj_unit (
+                .clk             (clk),
+                .rst             (rst),
+                .cmd_valid       (cfu_cmd_valid),
+                .cmd_ready       (cfu_cmd_ready),
+                .cmd_function_id (cfu_function_id),
+                .cmd_in0         (cfu_in0),
+                .cmd_in1         (cfu_in1),
+                .rsp_valid       (cfu_rsp_valid),
+                .rsp_ready       (cfu_rsp_ready),
+                .rsp_out         (cfu_out)
+            );
+        end else begin : g_no_proj_unit
+            reg answered;                       // an answer offered, not yet taken
+            always @(posedge clk)
+                if (rst) answered <= 1'b0;
+                else     answered <= answered ? !cfu_rsp_ready : cfu_cmd_valid;
+            assign cfu_cmd_ready = !answered;
+            assign cfu_rsp_valid = answered;
+            assign cfu_out = 32'hFFFF_FFFF;
+        end
+    endgenerate
 
     // ---- the bus: arbiter, decoder ----
     wire        bus_cyc, bus_stb, bus_we, bus_ack, bus_err;

@@ -57,12 +57,17 @@
 #   SEED      nextpnr's seed (1); ZBUF, WMASK, SPAN_W, SOC_RAM_KIB: the GPU's and the RAM's, as above
 #   USB       1: a USB keyboard on US2 (docs/usb.md): soc_top's keyboard host (USB_HOST) in ulx3s_sdram_top
 #             (SOC_MEM=sdram) and the firmware built with FW_USB_KEYBOARD; 0 by default
+#   PROJ_UNIT 1: the projection unit on the CPU's custom-function port (soc_top PROJ_UNIT,
+#             docs/soc.md); 0: without it, the firmware built with FW_PROJ_UNIT=0 (its C path).
+#             1 by default on the 85F and 45F; 0 on the 25F and 12F, whose LUTs it would fill (the
+#             25F's default build placed 24,206 of its 24,288 LUT halves with it)
 #   FRAME_DRAM 1 (the default with SOC_MEM=sdram): the GPU's two frames in the SDRAM too (the contract's
 #             "Frames in external memory"): it draws in strips of STRIP_ROWS rows (16) on chip, colour
 #             and depth, at the frame size FB (640x480 shown 1:1 by default; 320x240 shown 2x2)
 SYS_MHZ     ?= 50
 SEED        ?= 1
 FPGA        ?= 85F
+PROJ_UNIT   ?= $(if $(filter 12F 25F,$(FPGA)),0,1)
 FRAME_DRAM  ?= 0
 STRIP_ROWS  ?= 16
 USB         ?= 0
@@ -80,7 +85,7 @@ ULX3S_DEVICE  = $(FPGA:F=k)
 # FRAME_DRAM=1: the frame's parameters (FB's, unless a scene's manifest gives them) and the strips'.
 ULX3S_FRAME_PARAMS = $(if $(filter 1,$(FRAME_DRAM)),--param FRAME_DRAM=1 --param STRIP_ROWS=$(STRIP_ROWS) \
   $(if $(filter --param FB_WIDTH=%,$(ULX3S_GPU_PARAMS)),,$(patsubst -G%,--param %,$(FB_GFLAGS))))
-ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)$(if $(ULX3S_WMASK),$(if $(filter 0,$(WMASK)),-nomask))$(SOC_MEM_SUFFIX)$(if $(filter 1,$(FRAME_DRAM)),-dram-s$(STRIP_ROWS)$(if $(and $(FB_TAG),$(if $(LEAN_SCENE),,1)),-$(FB_TAG)))$(if $(filter-out 85F,$(FPGA)),-$(FPGA:F=f))$(if $(filter 1,$(USB)),-usb)
+ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)$(if $(ULX3S_WMASK),$(if $(filter 0,$(WMASK)),-nomask))$(SOC_MEM_SUFFIX)$(if $(filter 1,$(FRAME_DRAM)),-dram-s$(STRIP_ROWS)$(if $(and $(FB_TAG),$(if $(LEAN_SCENE),,1)),-$(FB_TAG)))$(if $(filter-out 85F,$(FPGA)),-$(FPGA:F=f))$(if $(filter 1,$(USB)),-usb)$(if $(filter 0,$(PROJ_UNIT)),-nopu)
 ULX3S_DIR    = $(BUILD)/board-ulx3s/$(ULX3S_NAME)
 # The top: ulx3s_top (the firmware in on-chip RAM) or ulx3s_sdram_top (SOC_MEM=sdram); files named by it.
 ULX3S_TOP    = $(if $(SOC_MEM_SUFFIX),ulx3s_sdram_top,ulx3s_top)
@@ -90,8 +95,9 @@ ULX3S_BIT    = $(ULX3S_DIR)/$(ULX3S_TOP).bit
 # <elf>.img for the flash. A scene's manifest build names its own (mk/manifest.mk), one for either
 # memory: the SDRAM's in a folder of its own, as its FW_DIR is.
 # USB=1: the firmware with the keyboard (FW_USB_KEYBOARD), an ELF of its own.
-ULX3S_FW_USB = $(if $(filter 1,$(USB)),-usb)
-ULX3S_FW_ELF = $(if $(SOC_MEM_SUFFIX),$(BUILD)/board-fw$(SOC_MEM_SUFFIX)/$(SCENE)$(ULX3S_FW_USB).elf,$(BUILD)/board-fw/$(SCENE)-$(SOC_RAM_KIB)k.elf)
+# PROJ_UNIT=0: the firmware without the projection unit, an ELF of its own too.
+ULX3S_FW_USB = $(if $(filter 1,$(USB)),-usb)$(if $(filter 0,$(PROJ_UNIT)),-nopu)
+ULX3S_FW_ELF = $(if $(SOC_MEM_SUFFIX),$(BUILD)/board-fw$(SOC_MEM_SUFFIX)/$(SCENE)$(ULX3S_FW_USB).elf,$(BUILD)/board-fw/$(SCENE)-$(SOC_RAM_KIB)k$(ULX3S_FW_USB).elf)
 ifneq ($(and $(LEAN_SCENE),$(SOC_MEM_SUFFIX)),)
 override ULX3S_FW_ELF = $(LEAN_DIR)/board-fw$(SOC_MEM_SUFFIX)/$(SCENE)$(ULX3S_FW_USB).elf
 endif
@@ -118,7 +124,8 @@ ULX3S_FLOW   = $(PYTHON) synth/ecp5_bitstream.py --top $(ULX3S_TOP) --lpf $(ULX3
   --files $(RTL_FILES) --extra $(SOC_CPU_V_REL) --files $(SOC_FILES) --files boards/ulx3s/files.f \
   --files $(ULX3S_TOP_F) --param SYS_MHZ=$(SYS_MHZ) --param RAM_BYTES=$(SOC_RAM_BYTES) \
   $(ULX3S_MEM_FLOW) --param SPAN_W=$(SPAN_W) --param ENABLE_ZBUF=$(ZBUF) \
-  $(ULX3S_WMASK) $(ULX3S_GPU_PARAMS) $(ULX3S_FRAME_PARAMS) $(if $(filter 1,$(USB)),--param USB_HOST=1)
+  $(ULX3S_WMASK) $(ULX3S_GPU_PARAMS) $(ULX3S_FRAME_PARAMS) $(if $(filter 1,$(USB)),--param USB_HOST=1) \
+  --param PROJ_UNIT=$(PROJ_UNIT)
 # Every clock-domain crossing declared, with its reason: checked after synthesis (synth/crossings.py).
 # Not yet for SOC_MEM=sdram: its netlist holds LiteDRAM's DQ buffers (TRELLIS_IO) and the flash's
 # USRMCLK, cell types synth/crossings.py does not model (it stops on them); that build's crossings
@@ -160,7 +167,7 @@ lint-board: $(SOC_VENV) $(LITEDRAM_SIM_V)
 
 board-fw: $(SOC_VENV)
 	+@$(SOC_FW_MAKE) SCENE=$(SCENE) BOARD_FW_ELF=$(ULX3S_FW_ELF) $(if $(filter 1,$(USB)),BOARD_FW_DEFS=-DFW_USB_KEYBOARD=1) \
-	  -f Makefile -f boards/ulx3s/fw.mk ulx3s-fw-elf
+	  $(if $(filter 0,$(PROJ_UNIT)),FW_DEFS=-DFW_PROJ_UNIT=0) -f Makefile -f boards/ulx3s/fw.mk ulx3s-fw-elf
 
 ifeq ($(BOARD),ulx3s)
 ifeq ($(SOC_RAM_KIB),auto)

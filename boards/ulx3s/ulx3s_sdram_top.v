@@ -35,6 +35,7 @@ module ulx3s_sdram_top #(
     parameter integer SDRAM_BYTES = soc_pkg::SOC_SDRAM_DEFAULT_BYTES, // the generated controller's chip
     parameter RAM_INIT = "",                                          // the boot program's RAM image
     parameter integer USB_HOST = 0,                                   // 1: the keyboard host on US2
+    parameter integer PROJ_UNIT = 1,                                  // soc_top's: the projection unit
     `GPU_BUILD_PARAMS                                                 // the GPU's (ulx3s_system)
 ) (
     input  wire        clk_25mhz,      // G2
@@ -105,6 +106,7 @@ module ulx3s_sdram_top #(
         .SDRAM_BYTES  (SDRAM_BYTES),
         .RAM_INIT     (RAM_INIT),
         .USB_HOST     (USB_HOST),
+        .PROJ_UNIT    (PROJ_UNIT),
         `GPU_BUILD_PARAMS_PASS
     ) u_system (
         .clk_sys          (clk_sys),

@@ -28,6 +28,7 @@ module ulx3s_system #(
     parameter RAM_INIT = "",                                       // the firmware image (soc_top)
     parameter integer BAUD = soc_pkg::SOC_UART_BAUD,               // the UART's bits per second (soc_top)
     parameter integer USB_HOST = 0,                                // soc_top's: 1 = the keyboard host on US2
+    parameter integer PROJ_UNIT = 1,                               // soc_top's: 1 = the projection unit
     `GPU_BUILD_PARAMS,                                             // the GPU's (soc_top)
     localparam integer SDRAM_AW = $clog2(soc_pkg::SOC_SDRAM_WINDOW_BYTES / 4),      // soc_top's
     localparam integer SDRAM_CTRL_AW = $clog2(soc_pkg::SOC_SDRAM_CTRL_WINDOW_BYTES / 4),
@@ -144,6 +145,7 @@ module ulx3s_system #(
         .PIX_CLK_HZ   (25000000),
         .BAUD         (BAUD),
         .USB_HOST     (USB_HOST),
+        .PROJ_UNIT    (PROJ_UNIT),
         `GPU_BUILD_PARAMS_PASS
     ) u_soc (
         .clk               (clk_sys),

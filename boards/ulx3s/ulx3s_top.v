@@ -19,6 +19,7 @@ module ulx3s_top #(
     parameter integer SYS_MHZ = 50,                                // a divisor of 750 (ulx3s_pll)
     parameter integer RAM_BYTES = soc_pkg::SOC_RAM_DEFAULT_BYTES,  // the firmware's SOC_RAM_KIB
     parameter RAM_INIT = "",                                       // the firmware's RAM image
+    parameter integer PROJ_UNIT = 1,                               // soc_top's: 1 = the projection unit
     `GPU_BUILD_PARAMS                                              // the GPU's (ulx3s_system)
 ) (
     input  wire       clk_25mhz,      // G2
@@ -54,6 +55,7 @@ module ulx3s_top #(
         .SYS_HZ       (SYS_MHZ * 1000000),
         .RAM_BYTES    (RAM_BYTES),
         .RAM_INIT     (RAM_INIT),
+        .PROJ_UNIT    (PROJ_UNIT),
         `GPU_BUILD_PARAMS_PASS
     ) u_system (
         .clk_sys    (clk_sys),

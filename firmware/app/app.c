@@ -61,6 +61,7 @@
 #include "input/usb_keys.h"
 #include "render/palette.h"
 #include "render/proj.h"
+#include "render/proj_unit.h"
 #include "math/real.h"
 #include "render/render.h"
 #include "render/strips.h"
@@ -1160,6 +1161,13 @@ static void app_boot(struct app *app)
         app_report_init_error(rc, &app->gpu.info);
         app_fail(FW_EXIT_GPU_INIT);
     }
+#if PROJ_UNIT_USED
+    if (!proj_unit_present()) {
+        printf("error: this program projects its vertices with the SoC's projection unit, and this "
+               "SoC has none (soc_top PROJ_UNIT = 0): build it with FW_DEFS=-DFW_PROJ_UNIT=0\n");
+        app_fail(FW_EXIT_CONFIG);
+    }
+#endif
 #if FW_WITH_STRIPS  /* (without, gpu_init refuses a GPU with strips) */
     app->strip_rows = app_gpu_strips(app) ? app->gpu.info.strip_rows : FW_STRIP_ROWS;
     if (app_gpu_strips(app)) {

@@ -136,7 +136,8 @@
 
 /* Exit statuses (the QEMU process exits with these). */
 #define FW_EXIT_OK          0
-#define FW_EXIT_CONFIG      1   /* unknown scene built in, or one its storage cannot hold */
+#define FW_EXIT_CONFIG      1   /* unknown scene built in, or one its storage cannot hold, or a
+                                 * projection unit the program was built for is missing */
 #define FW_EXIT_GPU_INIT    2   /* no GPU, wrong version, geometry or capacities */
 #define FW_EXIT_GPU_SUBMIT  3   /* batch rejected by the driver */
 #define FW_EXIT_GPU_TIMEOUT 4   /* the GPU stayed hung through FW_WATCHDOG_GIVE_UP resets */

@@ -86,6 +86,13 @@ _Static_assert(PROJ_DEPTH_MAX < 32768u && PROJ_GUARD_Q4 < 65536,
         answer_;                                                                          \
     })
 
+/* Whether the core has the unit: a SET of no register changes nothing and answers 0; a SoC built
+ * without the unit (soc_top PROJ_UNIT = 0) answers all ones. */
+static inline bool proj_unit_present(void)
+{
+    return PROJ_UNIT_INSN(SOC_PU_OP_SET, 0, PROJ_UNIT_REG_COUNT) == 0u;
+}
+
 /* Load the unit's configuration: the projection and the object's model-view transform. */
 static inline void proj_unit_load(const struct proj_setup *ps, const xf_affine *mv)
 {
