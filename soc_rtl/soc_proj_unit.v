@@ -62,7 +62,7 @@ module soc_proj_unit (
     // ---- the vertex ----
     reg signed [31:0] next_x, next_y;       // XY's: the next vertex's, q16_16 (taken while busy)
     reg signed [31:0] vx, vy, vz;           // the vertex in progress, model space
-    reg               in_frustum;         // Z's mode: the firmware's proj_point_inside
+    reg               in_frustum;           // Z's mode: the firmware's proj_point_inside
     reg signed [31:0] view_x, view_y, view_z;  // view space, q16_16 (xf_apply)
     reg        [31:0] view_acc;             // the sum being formed
     reg        [4:0]  lead;                 // leading zeros of view_z: fx_normalize32's s
@@ -70,7 +70,7 @@ module soc_proj_unit (
     reg        [31:0] y0;                   // the seed, Q1.31
     reg        [31:0] recip;                // fx_recip_mantissa: ~2^63 / mant
     reg        [31:0] zratio;               // near / z in 0.16: recip >> (33 - lead)
-    reg signed [31:0] q_r;
+    reg signed [31:0] q_r;                  // Q = mulhu(recip, focal_hi): f / z, for the y offset
     reg        [5:0]  shift;                // off_shift + drop - lead: 3 .. 24
     reg signed [31:0] off_x, off_y;
     reg        [31:0] sxy_r, zd_r;
@@ -124,7 +124,7 @@ module soc_proj_unit (
     reg  signed [31:0] half;                                  // 2^(shift - 1): rounds to nearest
     reg         [31:0] rounding;                              // an offset's product + half
     wire        [5:0]  zsh = 6'd33 - {1'b0, lead};            // near / z = recip 2^(s - 33)
-    wire               sh_offsets = step[4];                  // steps 17, 18 (and after)
+    wire               sh_offsets = step[4];                  // steps 16 and after
     wire        [31:0] sh_in = sh_offsets ? rounding : recip;
     wire        [5:0]  sh_amt = sh_offsets ? shift : zsh;
     wire        [31:0] sh_fill = {32{sh_offsets && sh_in[31]}};      // arithmetic for the offsets
