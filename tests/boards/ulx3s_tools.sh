@@ -60,7 +60,11 @@ ulx3s_dir fb640 SOC_MEM=sdram FRAME_DRAM=0 FB=640x480
 expect_line "FB=640x480 on the board: .*FRAME_DRAM=1 SOC_MEM=sdram" "$work/fb640.out"
 ulx3s_dir part SOC_MEM=sdram FRAME_DRAM=1 FB=640x480 ZBUF=1 FPGA=12F
 expect_status 0 "make ulx3s-dir with the frames in the SDRAM"
-expect_line "/board-ulx3s/tetra-16k-50mhz-z-sdram-dram-s16-f640-12f$" "$work/part.out"
+# (the 12F leaves the projection unit out by default: PROJ_UNIT=0)
+expect_line "/board-ulx3s/tetra-16k-50mhz-z-sdram-dram-s16-f640-12f-nopu$" "$work/part.out"
+ulx3s_dir part-pu SOC_MEM=sdram FRAME_DRAM=1 FB=640x480 ZBUF=1 FPGA=12F PROJ_UNIT=1
+expect_status 0 "make ulx3s-dir on the 12F with the projection unit"
+expect_line "/board-ulx3s/tetra-16k-50mhz-z-sdram-dram-s16-f640-12f$" "$work/part-pu.out"
 ulx3s_dir default
 expect_status 0 "make ulx3s-dir (the default build)"
 expect_line "/board-ulx3s/tetra-16k-50mhz-z-sdram-dram-s16-f640$" "$work/default.out"
