@@ -1,8 +1,8 @@
 // soc_proj_unit: the firmware's per-vertex model-view transform and perspective projection in
 // hardware, on the core's custom-function port (VexRiscv_FullCfu's CfuPlugin bus). Issue #27: the
-// knot's projection took 82 instructions and about 98 clocks a vertex on the core; here a vertex
-// takes five custom instructions and the unit's 21 clocks, during which the core stores the last
-// vertex's words and loads the next one's.
+// knot's projection took 82 instructions a vertex on the core (about 97 clocks by profile-fw's
+// hazard estimate); here a vertex takes five custom instructions and the unit's 21 clocks, during
+// which the core stores the last vertex's words and loads the next one's.
 //
 // Contract (instructions, registers and outcode bits: contract/soc_map.toml [[pu_op]], [[pu_reg]],
 // [[pu_out]]; the firmware's side: firmware/render/proj_unit.h):

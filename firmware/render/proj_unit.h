@@ -12,8 +12,9 @@
  * FW_SUBPIXEL_BITS); a build with other knobs keeps the C path (PROJ_UNIT_USED = 0), so
  * `make bench-error` measures its knobs on the SoC as before.
  *
- * proj_unit_regs is pure (host-testable): what SET writes into the unit's configuration registers
- * (contract/soc_map.toml [[pu_reg]]) for a projection set-up and a model-view transform.
+ * proj_unit_regs is pure (host-testable; fixed point only, as the unit): what SET writes into the
+ * unit's configuration registers (contract/soc_map.toml [[pu_reg]]) for a projection set-up and a
+ * model-view transform.
  */
 #ifndef PROJ_UNIT_H
 #define PROJ_UNIT_H
@@ -34,11 +35,11 @@
 
 #define PROJ_UNIT_REG_COUNT (SOC_PU_REG_LIMITS + 1u)
 
+#if REAL_IS_FIXED
 /* The unit's configuration for set-up ps and transform mv: regs[i] is what SET writes to register i. */
 static inline void proj_unit_regs(const struct proj_setup *ps, const xf_affine *mv,
                                   uint32_t regs[PROJ_UNIT_REG_COUNT])
 {
-#if REAL_IS_FIXED
     for (uint32_t r = 0; r < 3u; r++) {
         for (uint32_t c = 0; c < 3u; c++) {
             regs[SOC_PU_REG_M00 + 3u * r + c] = (uint32_t)mv->r.m[r][c];
@@ -55,14 +56,8 @@ static inline void proj_unit_regs(const struct proj_setup *ps, const xf_affine *
     regs[SOC_PU_REG_FAR] = (uint32_t)ps->far;
     regs[SOC_PU_REG_LIMITS] = (uint32_t)PROJ_GUARD_Q4 | (PROJ_DEPTH_MAX << 16) |
                               ((FW_WITH_DEPTH && ps->zbuf) ? 0x80000000u : 0u);
-#else
-    (void)ps;
-    (void)mv;
-    for (uint32_t i = 0; i < PROJ_UNIT_REG_COUNT; i++) {
-        regs[i] = 0;
-    }
-#endif
 }
+#endif
 /* The fields above fit their registers: the frame's centre and last centres in 16 bits, the
  * depth cap in 15, the guard band in 16. */
 _Static_assert(16 * GPU_FB_MAX_WIDTH < 65536 && 16 * GPU_FB_MAX_HEIGHT < 65536,

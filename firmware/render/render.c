@@ -539,8 +539,9 @@ render_project_box(const struct proj_setup *ps, const xf_affine *mv, const struc
 
 #endif
 
-/* With the projection unit every mesh takes it, vertex by vertex: the unit is faster than the box's
- * and the lattice's shortcuts, and leaving them out leaves room in the SoC's image. */
+/* With the projection unit every mesh takes it, vertex by vertex: 14-16 instructions a vertex,
+ * against the box's 85 a corner (the cubes' profile: xf_apply_box and the projection) and the
+ * lattice's 77 (the landscape's inside tiles); leaving those out leaves room in the SoC's image. */
 void render_project_boxed(const struct proj_setup *ps, const xf_affine *mv, const struct mesh *mesh,
                           struct proj_vertex *out, bool inside)
 {
