@@ -262,6 +262,8 @@ def soc_load(gpu):
             sys.exit(f"soc map: region {r['name']}: the CPU caches exactly the addresses with bit 31 clear")
         if max(r.get("default_bytes", 0), r.get("boot_bytes", 0)) > w:
             sys.exit(f"soc map: region {r['name']} default size exceeds its window")
+        if "boot_image_bytes" in r and not (0 < r["boot_image_bytes"] < r["boot_bytes"] and r["boot_image_bytes"] % 8 == 0):
+            sys.exit(f"soc map: region {r['name']} boot_image_bytes: a multiple of 8 below boot_bytes")
     sd = regions["SDRAM"]
     frames = 2 * gpu["limits"]["fb_max_width"] * gpu["limits"]["fb_max_height"]  # bytes, 8 bits a pixel
     if sd["gpu_frames_offset"] % 4 or sd["gpu_frames_offset"] + frames > sd["default_bytes"]:
@@ -338,6 +340,9 @@ def soc_gen_c(m):
             define(f"SOC_{r['name']}_DEFAULT_BYTES", f"0x{r['default_bytes']:08X}u", f"default build (SYS {r['name']}_BYTES reads a build's own)")
         if "boot_bytes" in r:
             define(f"SOC_{r['name']}_BOOT_BYTES", f"0x{r['boot_bytes']:08X}u", "a build whose firmware runs from the SDRAM: the boot program's")
+        if "boot_image_bytes" in r:
+            define(f"SOC_{r['name']}_BOOT_IMAGE_BYTES", f"0x{r['boot_image_bytes']:08X}u",
+                   "the boot program's image at most; above it the firmware's fast RAM (linker/soc.ld .fast, the stack)")
         if "gpu_frames_offset" in r:
             define(f"SOC_{r['name']}_GPU_FRAMES_OFFSET", f"0x{r['gpu_frames_offset']:08X}u",
                    "the GPU's two frames (FRAME_DRAM): the firmware stays below")
@@ -392,6 +397,8 @@ def soc_gen_v(m):
             lpi(f"SOC_{r['name']}_DEFAULT_BYTES", r["default_bytes"])
         if "boot_bytes" in r:
             lpi(f"SOC_{r['name']}_BOOT_BYTES", r["boot_bytes"])
+        if "boot_image_bytes" in r:
+            lpi(f"SOC_{r['name']}_BOOT_IMAGE_BYTES", r["boot_image_bytes"])
         if "gpu_frames_offset" in r:
             lpi(f"SOC_{r['name']}_GPU_FRAMES_OFFSET", r["gpu_frames_offset"], "the GPU's frames (FRAME_DRAM)")
     for r in m["reg"]:
@@ -429,6 +436,8 @@ def soc_gen_md(m):
             size += f" (default 0x{r['default_bytes']:08X})"
         if "boot_bytes" in r:
             size += f" (booting from the SDRAM 0x{r['boot_bytes']:08X})"
+        if "boot_image_bytes" in r:
+            size += f" (the boot program's image at most 0x{r['boot_image_bytes']:08X}, the firmware's fast RAM above it)"
         if "gpu_frames_offset" in r:
             size += f" (the GPU's frames from offset 0x{r['gpu_frames_offset']:08X})"
         out.append(f"| {r['name']} | 0x{r['base']:08X} | {size} | {'yes' if r['cached'] else 'no'} | {r['doc']} |")

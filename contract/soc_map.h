@@ -27,6 +27,7 @@
 #define SOC_RAM_WINDOW_BYTES             0x00040000u
 #define SOC_RAM_DEFAULT_BYTES            0x00030000u  /* default build (SYS RAM_BYTES reads a build's own) */
 #define SOC_RAM_BOOT_BYTES               0x00004000u  /* a build whose firmware runs from the SDRAM: the boot program's */
+#define SOC_RAM_BOOT_IMAGE_BYTES         0x00002800u  /* the boot program's image at most; above it the firmware's fast RAM (linker/soc.ld .fast, the stack) */
 #define SOC_SDRAM_BASE                   0x40000000u  /* cached: The board's SDRAM through LiteDRAM (soc_rtl/litedram), a build option (soc_top SDRAM_BYTES, 0 = none). Addresses from the SDRAM's size to the window's end, and the whole window in a build without SDRAM, answer ERR. */
 #define SOC_SDRAM_WINDOW_BYTES           0x04000000u
 #define SOC_SDRAM_DEFAULT_BYTES          0x02000000u  /* default build (SYS SDRAM_BYTES reads a build's own) */

@@ -13,6 +13,7 @@ localparam [31:0] SOC_RAM_BASE                     = 32'h0;  // cached
 localparam integer SOC_RAM_WINDOW_BYTES             = 262144;
 localparam integer SOC_RAM_DEFAULT_BYTES            = 196608;
 localparam integer SOC_RAM_BOOT_BYTES               = 16384;
+localparam integer SOC_RAM_BOOT_IMAGE_BYTES         = 10240;
 localparam [31:0] SOC_SDRAM_BASE                   = 32'h40000000;  // cached
 localparam integer SOC_SDRAM_WINDOW_BYTES           = 67108864;
 localparam integer SOC_SDRAM_DEFAULT_BYTES          = 33554432;

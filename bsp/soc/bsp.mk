@@ -53,6 +53,12 @@ ifeq ($(SOC_MEM),sdram)
 # has it; firmware.mk decides by the scene set.
 FW_MODEL_SDRAM_CAPS := 1
 FW_BSP_LDFLAGS += -Wl,--defsym=__ram=$(SOC_SDRAM_BASE)
+# The on-chip RAM above the boot program's image is the firmware's once it runs (linker/soc.ld's
+# .fast): the stack at its top, the FW_FAST_DATA objects at its bottom; postlink checks they fit.
+SOC_FAST_BASE := $(shell echo $$(( $(call soc_map_value,SOC_RAM_BASE) + $(call soc_map_value,SOC_RAM_BOOT_IMAGE_BYTES) )))
+SOC_FAST_TOP  := $(shell echo $$(( $(call soc_map_value,SOC_RAM_BASE) + $(call soc_map_value,SOC_RAM_BOOT_BYTES) )))
+FW_BSP_LDFLAGS += -Wl,--defsym=__fast=$(SOC_FAST_BASE) -Wl,--defsym=__stack=$(SOC_FAST_TOP)
+FW_DEFS += -DFW_FAST_RAM=1
 FW_POSTLINK   = $(or $(PYTHON),python3) bsp/soc/postlink.py --image --ram-bytes $(SOC_SDRAM_CPU_BYTES) \
                 --size $(patsubst %gcc,%size,$(RV_CC)) --nm $(patsubst %gcc,%nm,$(RV_CC))
 endif

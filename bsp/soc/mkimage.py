@@ -49,7 +49,9 @@ def main():
     base = soc_map_value("SOC_SDRAM_BASE") if a.mem_base is None else a.mem_base
     size = soc_map_value("SOC_SDRAM_DEFAULT_BYTES") if a.mem_bytes is None else a.mem_bytes
 
-    segs = load_segments(a.elf)
+    # Segments without file bytes (linker/soc.ld's .fast: the stack and scratch in the on-chip RAM,
+    # which postlink checks) have nothing to copy.
+    segs = [seg for seg in load_segments(a.elf) if len(seg[1]) > 0]
     lo = min(addr for addr, _, _ in segs)
     mem_end = max(addr + memsz for addr, _, memsz in segs)
     if lo < base or mem_end > base + size:

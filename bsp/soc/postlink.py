@@ -15,7 +15,9 @@ is 1.
 
 With --image (a build whose firmware runs from the SDRAM, bsp/soc/bsp.mk SOC_MEM=sdram) the program
 is linked at the SDRAM's base, --ram-bytes is the SDRAM's size, and the output is ELF.img, the boot
-image the boot program copies from the flash (bsp/soc/mkimage.py), instead of the RAM's hex.
+image the boot program copies from the flash (bsp/soc/mkimage.py), instead of the RAM's hex. Such a
+link gives __fast: its stack and its FW_FAST_DATA objects are in the on-chip RAM above the boot
+program (linker/soc.ld's .fast), checked against that room instead of the SDRAM.
 
 usage: postlink.py --ram-bytes N [--image] [--size S] [--nm N] FILE.elf
 """
@@ -65,6 +67,19 @@ def main():
     ram_base = sym.get("__ram", 0)
     stack = sym["__stack_size"]
     needed = sym["__stack"] - ram_base  # the stack's top: image, bss, the stack's alignment, the stack
+    if "__fast" in sym:
+        # The stack and the FW_FAST_DATA objects are in the on-chip RAM above the boot program
+        # (linker/soc.ld's .fast, __stack its top): the SDRAM holds the image and .bss only.
+        needed = sym["__bss_end"] - ram_base
+        fast_used = sym["__fast_end"] - sym["__fast"]
+        fast_room = sym["__stack"] - sym["__fast"]
+        if fast_used + stack > fast_room:
+            os.remove(a.elf)
+            sys.stderr.write(
+                f"error: {os.path.basename(a.elf)}: its fast data ({fast_used} bytes, FW_FAST_DATA) and stack "
+                f"({stack} bytes) do not fit the {fast_room} bytes of on-chip RAM above the boot program "
+                f"(0x{sym['__fast']:08X}..0x{sym['__stack']:08X}): {fast_used + stack - fast_room} bytes over.\n")
+            return 1
     if needed > a.ram_bytes:
         os.remove(a.elf)
         memory = "SDRAM" if a.image else "RAM"
@@ -80,8 +95,10 @@ def main():
     if a.image:
         subprocess.run([sys.executable, os.path.join(here, "mkimage.py"), a.elf, a.elf + ".img", "--mem-base",
                         str(ram_base), "--mem-bytes", str(a.ram_bytes)], check=True, stdout=subprocess.DEVNULL)
+        where = (f"; on chip: fast data {sym['__fast_end'] - sym['__fast']} + stack {stack} of "
+                 f"{sym['__stack'] - sym['__fast']} bytes" if "__fast" in sym else f", stack {stack}")
         print(f"postlink: {a.elf}.img: SDRAM use {needed} of {a.ram_bytes} bytes "
-              f"(text {text}, data {data}, bss {bss}, stack {stack})")
+              f"(text {text}, data {data}, bss {bss}{where})")
         return 0
     # The image itself: bsp/soc/elf_to_hex.py, the SoC's one ELF -> RAM_INIT converter.
     tool = os.path.join(here, "elf_to_hex.py")

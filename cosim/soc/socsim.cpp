@@ -18,6 +18,7 @@
 //   socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]
 //          [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--stop-frames N]
 //          [--no-model-check] [--uart-pty LINK] [--window] [--window-fps N] [--trace FILE.fst [--trace-frame N]]
+//          [--profile FILE --profile-mark ADDR]
 //
 // The program: RAM_INIT's format (one 32-bit hex word per line from address 0; --fw FILE.elf reads
 // FILE.elf.hex, the soc platform's post-link output), loaded at time 0 through soc_ram's
@@ -114,6 +115,7 @@ using SocModel = Vsoc_top;
 #include "verilated_fst_c.h"
 #endif
 
+#include "cpu_profile.h"
 #include "gpu_build.h"
 #include "harness.h"
 #include "model_check.h"
@@ -159,6 +161,8 @@ struct Options {
     KeysAt usb_keys_at;           // --usb-keys-at N:TEXT
     bool usb_unplugged = false;                                 // --usb-unplugged
     bool usb_window = false;      // --usb-window: the window's keys on the USB keyboard, not the UART
+    std::string profile;          // --profile FILE: the clocks of every instruction (cpu_profile.h)
+    uint32_t profile_mark = 0;    // --profile-mark ADDR: the address that starts a frame
 };
 
 int usage()
@@ -167,13 +171,16 @@ int usage()
         "usage: socsim --fw FILE.elf | --hex FILE [--frames DIR] [--uart-log FILE] [--summary FILE]\n"
         "              [--keys-at N:TEXT]... [--reply PROMPT=TEXT]... [--max-cycles N] [--stop-frames N]\n"
         "              [--no-model-check] [--uart-divider N] [--uart-pty LINK] [--window] [--window-fps N]\n"
-        "              [--trace FILE.fst [--trace-frame N]]\n"
+        "              [--trace FILE.fst [--trace-frame N]] [--profile FILE --profile-mark ADDR]\n"
         "  --fw FILE.elf      run FILE.elf.hex (the soc build's RAM image); -kernel FILE.elf is the same\n"
         "  --hex FILE         run FILE, a RAM image (one 32-bit hex word per line from address 0)\n"
         "  --reply PROMPT=TEXT  send TEXT on uart_rx each time the text from uart_tx ends with PROMPT\n"
         "                     (\\n a newline, \\f a frame with a low stop bit)\n"
         "  --max-cycles N     give up after N clocks (default 3e9: 60 s at 50 MHz)\n"
         "  --stop-frames N    end with status 0 once N frames were captured (a firmware that runs until Q)\n"
+        "  --profile FILE     at the firmware's exit, write each instruction address's clocks, retirements\n"
+        "                     and cache refills, summed over the frames between the first and the last\n"
+        "                     (a frame starts where ADDR of --profile-mark retires: make profile-soc)\n"
 #ifdef SOCSIM_SDRAM
         "  --sdram-fault-a N  the SDRAM chip's address pin A<N> stuck low (0..12): a broken board\n"
         "  --boot FILE.hex    the RAM's image is the boot program FILE.hex (bsp/soc/boot), and the\n"
@@ -200,6 +207,10 @@ bool parse(int argc, char **argv, Options &o)
             o.hex = argv[++*i];
         } else if (a == "--max-cycles" && has_value) {
             o.max_cycles = static_cast<uint64_t>(std::strtod(argv[++*i], nullptr));
+        } else if (a == "--profile" && has_value) {
+            o.profile = argv[++*i];
+        } else if (a == "--profile-mark" && has_value) {
+            o.profile_mark = static_cast<uint32_t>(std::strtoul(argv[++*i], nullptr, 0));
         } else if (a == "--stop-frames" && has_value) {
             o.stop_frames = static_cast<uint32_t>(std::strtoul(argv[++*i], nullptr, 0));
 #ifdef SOCSIM_SDRAM
@@ -247,6 +258,10 @@ bool parse(int argc, char **argv, Options &o)
     }
     if (o.usb_unplugged && (!o.usb_keys_at.empty() || o.usb_window)) {
         std::fprintf(stderr, "socsim: --usb-keys-at and --usb-window type on the keyboard, which --usb-unplugged leaves out\n");
+        return false;
+    }
+    if (o.profile.empty() != (o.profile_mark == 0)) {
+        std::fprintf(stderr, "socsim: --profile and --profile-mark go together\n");
         return false;
     }
     if (!o.boot.empty()) {
@@ -320,6 +335,7 @@ std::string usb_text_from_terminal(const std::string &bytes)
 
 class SocRun;
 SocRun *g_run = nullptr;  // the DPI callbacks' target (one run per process)
+bool g_profiling = false;  // --profile: the CPU tap reports every retirement (socsim_profiling)
 svScope g_cpu_scope = nullptr;
 
 class SocRun : public Harness {
@@ -330,6 +346,10 @@ public:
     {
         g_run = this;
         vga_monitor_reset(&monitor_);
+        if (!o.profile.empty()) {
+            profile_.reset(new CpuProfile(o.profile_mark));
+            g_profiling = true;
+        }
     }
     ~SocRun() override
     {
@@ -354,6 +374,10 @@ public:
     }
     void on_row_fetch(uint32_t clocks) { worst_row_fetch_ = clocks; }
     void on_bus_cycle(bool ibus, uint32_t word_addr, bool write);
+    void on_retire(uint32_t pc)  // only while profiling
+    {
+        profile_->on_retire(pc, cycles_, [this] { return instret(); });
+    }
     void on_uart_data_read();
     void on_usb_key_read(uint32_t value);
 
@@ -479,6 +503,7 @@ private:
     bool vsync_n_ = true;
     UartReplies replies_;          // --reply: a copy, since it keeps what was received
     uint32_t swaps_ = 0;
+    std::unique_ptr<CpuProfile> profile_;  // --profile
 #if SOCSIM_TRACE
     std::unique_ptr<VerilatedFstC> fst_;  // open while frame trace_frame is traced
 #endif
@@ -564,6 +589,11 @@ void SocRun::on_bus_cycle(bool ibus, uint32_t word_addr, bool write)
         icache_refills_++;
     } else if (!write && (word_addr << 2) < 0x80000000u) {
         dcache_refills_++;
+    } else {
+        return;
+    }
+    if (profile_) {
+        profile_->on_refill(ibus);
     }
 }
 
@@ -1105,6 +1135,15 @@ int SocRun::run()
                 }
             }
             uart_.finish();
+            if (profile_) {
+                if (profile_->frames() == 0) {
+                    return fail("profile", "no whole frame between the first and the last at --profile-mark 0x%08x "
+                                "(it needs three entries; FRAMES >= 3)", opt_.profile_mark);
+                }
+                if (!profile_->write(opt_.profile.c_str())) {
+                    return fail("profile", "cannot write %s", opt_.profile.c_str());
+                }
+            }
             std::printf("socsim: firmware exited with status %d: %u doorbells, %u frames, %llu cycles, %llu "
                         "instructions\n",
                         firmware_status_, doorbells_, frames(), static_cast<unsigned long long>(cycles_),
@@ -1194,6 +1233,18 @@ extern "C" void socsim_bus_cycle(unsigned ibus, unsigned word_addr, unsigned wri
 {
     if (g_run != nullptr) {
         g_run->on_bus_cycle(ibus != 0, word_addr, write != 0);
+    }
+}
+
+extern "C" unsigned socsim_profiling()
+{
+    return g_profiling ? 1u : 0u;
+}
+
+extern "C" void socsim_retire(unsigned pc)
+{
+    if (g_run != nullptr) {
+        g_run->on_retire(pc);
     }
 }
 

@@ -16,6 +16,7 @@
 #                  --usb-keys-at 1:TEXT: {UP} {DOWN} {LEFT} {RIGHT} {ESC}... name keys, docs/usb.md)
 #   soc-fw         that firmware only; soc-fw-test: the FW_TEST_FRAMES builds of every scene
 #   bench-soc      per scene: instructions, cycles, CPI, refills, GPU cycles, fps (bench/bench_soc.py)
+#   profile-soc    one scene's clocks by function on socsim (firmware/tools/profile_soc.py)
 #   soc-smoke      the bare-metal smoke program (tests/soc/smoke.c, soc_rtl/soc.mk) on socsim
 #
 # The RTL's sources and flags come from soc_rtl/soc.mk (SOC_VFLAGS: gpu_rtl/files.f, the core from
@@ -118,7 +119,10 @@ $(call litedram_dir,%)/litedram_core.v: soc_rtl/litedram/gen_litedram.py soc_rtl
 # ($(LITEDRAM_SIM_DIR)/include: the register offsets of the power-up sequence; HZ given: the
 # controller generated for that system clock) and laid out in the on-chip RAM by linker/soc.ld (the
 # stack above .bss): $(call SOC_SDRAM_PROGRAM,ELF,SOURCES[,FLAGS[,HZ]]).
-# postlink checks each against the boot build's RAM (SOC_RAM_BOOT_BYTES) and writes ELF.hex.
+# postlink checks each against the boot build's RAM (SOC_RAM_BOOT_BYTES) and writes ELF.hex; the
+# link, that its image ends within SOC_RAM_BOOT_IMAGE_BYTES (above is the firmware's fast RAM once it
+# runs: a reset finds the boot program whole).
+SOC_RAM_BOOT_IMAGE_BYTES := $(call soc_map_value,SOC_RAM_BOOT_IMAGE_BYTES)
 SOC_SDRAM_PROGRAM_SRC := bsp/soc/boot/say.c bsp/soc/sdram/sdram_init.c bsp/soc/sdram/memtest.c
 SOC_SDRAM_PROGRAM_HDRS = $(wildcard bsp/soc/boot/*.h bsp/soc/sdram/*.h bsp/soc/sdram/include/*.h bsp/soc/sdram/include/hw/*.h)
 define SOC_SDRAM_PROGRAM
@@ -126,7 +130,8 @@ $(1): $(2) $(SOC_SDRAM_PROGRAM_SRC) $$(SOC_SDRAM_PROGRAM_HDRS) linker/soc.ld con
 	@mkdir -p $$(dir $$@)
 	$$(Q)$$(call say,LD,$$@)$(RV_CC) $(SOC_RV_FLAGS) --specs=picolibc.specs -Os -g -std=c11 -ffreestanding -nostartfiles \
 	  -Wall -Wextra -Werror -Icontract -Ifirmware -Ibsp/soc/boot -Ibsp/soc/sdram -Ibsp/soc/sdram/include \
-	  -I$(call litedram_dir,$(or $(4),$(SOC_SIM_CLK_HZ)))/include -T linker/soc.ld -Wl,--defsym=__stack_size=2048 -Wl,--gc-sections \
+	  -I$(call litedram_dir,$(or $(4),$(SOC_SIM_CLK_HZ)))/include -T linker/soc.ld -Wl,--defsym=__stack_size=2048 \
+	  -Wl,--defsym=__image_limit=$(SOC_RAM_BOOT_IMAGE_BYTES) -Wl,--gc-sections \
 	  -Wl,--no-warn-rwx-segments $(3) $(2) $(SOC_SDRAM_PROGRAM_SRC) -lgcc -o $$@
 	$$(Q)$$(PYTHON) bsp/soc/postlink.py --ram-bytes $$$$(( $(SOC_RAM_BOOT_KIB) * 1024 )) \
 	  --size $(patsubst %gcc,%size,$(RV_CC)) --nm $(patsubst %gcc,%nm,$(RV_CC)) $$@ >/dev/null
@@ -193,7 +198,8 @@ socsim_rules_unless_listed = $(if $(filter $(notdir $(1)),$(SOCSIM_IDS)),,$(eval
 $(call socsim_rules_unless_listed,$(SOCSIM_DIR),SOCSIM_CMD,$(SOCSIM_PREREQS_$(SOCSIM_SYSTEM)))
 $(call socsim_rules_unless_listed,$(SOCSIM_ULX3S_DIR),SOCSIM_ULX3S_CMD,$(SOCSIM_PREREQS_ulx3s))
 
-.PHONY: socsim socsim-ulx3s run-soc soc-fw soc-test-deps soc-sdram-test-deps bench-soc bench-cpu soc-smoke
+.PHONY: socsim socsim-ulx3s run-soc soc-fw soc-test-deps soc-sdram-test-deps bench-soc profile-soc bench-cpu \
+        soc-smoke
 soc-fw:
 	+@$(SOC_FW_MAKE) SCENE=$(SCENE) FRAMES=$(FRAMES) FW_BACKEND=$(FW_BACKEND) $(SOC_FW_ELF)
 
@@ -249,3 +255,10 @@ bench-soc: $(SOCSIM) $(SOCSIM_BOOT)
 	+@$(foreach s,$(FW_SCENES),$(SOC_FW_MAKE) SCENE=$(s) $(SOC_BENCH_DIR)/$(s).elf &&) true
 	@$(PYTHON) bench/bench_soc.py --socsim $(SOCSIM) $(if $(SOCSIM_BOOT),--boot $(SOCSIM_BOOT)) \
 	  --out $(BUILD)/bench-soc$(SOC_MEM_SUFFIX) $(SOC_BENCH_ELFS)
+
+# One scene's benchmark build on socsim, its clocks, instructions and refills by function (and with
+# PROFILE_LINES=N by source line): firmware/tools/profile_soc.py, socsim's --profile.
+profile-soc: $(SOCSIM) $(SOCSIM_BOOT)
+	+@$(SOC_FW_MAKE) SCENE=$(SCENE) $(SOC_BENCH_DIR)/$(SCENE).elf
+	@$(PYTHON) firmware/tools/profile_soc.py $(SOCSIM) $(SOC_BENCH_DIR)/$(SCENE).elf \
+	  $(if $(SOCSIM_BOOT),--boot $(SOCSIM_BOOT)) $(if $(PROFILE_LINES),--lines $(PROFILE_LINES))

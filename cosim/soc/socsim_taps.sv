@@ -16,7 +16,9 @@
 //                                 acknowledged load of UART DATA (the firmware reading keys), every
 //                                 load of USB KEY that returns an event (VALID set: the firmware
 //                                 took a key of the USB keyboard), the retired-instruction counter,
-//                                 and the clocks each bus spent in a cycle, by kind (below).
+//                                 the clocks each bus spent in a cycle, by kind (below), and, when
+//                                 socsim profiles (--profile), the address of every instruction
+//                                 that retires.
 `default_nettype none
 
 module socsim_gpu_tap (
@@ -94,7 +96,9 @@ module socsim_cpu_tap #(
     input wire        d_we,
     input wire [29:0] d_adr,
     input wire [31:0] d_dat_r,      // the load's data, with d_ack
-    input wire [63:0] minstret      // CsrPlugin_minstret
+    input wire [63:0] minstret,     // CsrPlugin_minstret
+    input wire        retire,       // lastStageIsFiring: an instruction leaves the pipeline
+    input wire [31:0] retire_pc     // lastStagePc: its address
 );
     import "DPI-C" function void socsim_bus_cycle(input int unsigned ibus, input int unsigned word_addr,
                                                   input int unsigned write);
@@ -104,6 +108,12 @@ module socsim_cpu_tap #(
     // (svGetScope in a context import), wherever soc_top put the core.
     import "DPI-C" context function void socsim_cpu_scope();
     initial socsim_cpu_scope();
+    // --profile: one call a retired instruction (socsim charges it the clocks since the last one);
+    // without it none, so that the runs that do not profile pay nothing for it.
+    import "DPI-C" function int unsigned socsim_profiling();
+    import "DPI-C" function void socsim_retire(input int unsigned pc);
+    reg profiling = 1'b0;
+    initial profiling = socsim_profiling() != 0;
 
     reg i_cyc_q = 1'b0;
     reg d_cyc_q = 1'b0;
@@ -147,6 +157,9 @@ module socsim_cpu_tap #(
         if (d_cyc && !d_cyc_q) begin
             socsim_bus_cycle(0, {2'b00, d_adr}, {31'd0, d_we});
         end
+        if (profiling && retire) begin
+            socsim_retire(retire_pc);
+        end
         if (d_cyc && d_stb && d_ack && !d_we && {d_adr, 2'b00} == UART_DATA_ADDR) begin
             socsim_uart_data_read();
         end
@@ -188,5 +201,6 @@ bind gpu_frame_dram socsim_frame_tap u_socsim_frame_tap (
 bind VexRiscv socsim_cpu_tap u_socsim_cpu_tap (
     .clk(clk), .i_cyc(iBusWishbone_CYC), .d_cyc(dBusWishbone_CYC), .d_stb(dBusWishbone_STB),
     .d_ack(dBusWishbone_ACK), .d_we(dBusWishbone_WE), .d_adr(dBusWishbone_ADR),
-    .d_dat_r(dBusWishbone_DAT_MISO), .minstret(CsrPlugin_minstret)
+    .d_dat_r(dBusWishbone_DAT_MISO), .minstret(CsrPlugin_minstret), .retire(lastStageIsFiring),
+    .retire_pc(lastStagePc)
 );

@@ -843,6 +843,102 @@ render_grid_face_general(struct render_frame *f, const struct render_faces_job *
     return f->prim_count;
 }
 
+/* One corner of a grid or lattice quad, read once for both of the quad's faces (the stores of the
+ * first face's primitive could otherwise, for all the compiler knows, change the vertices), and in
+ * a grid row once for both quads that share it. */
+struct render_lattice_corner {
+    int32_t x, y;    /* Q12.4 */
+    uint32_t depth;  /* sort depth */
+};
+
+static inline __attribute__((always_inline)) struct render_lattice_corner
+render_lattice_corner(const struct proj_vertex *v)
+{
+    struct render_lattice_corner k;
+
+    k.x = v->sx;
+    k.y = v->sy;
+    k.depth = v->depth;
+    return k;
+}
+
+/*
+ * One half of a grid quad of an object inside the frustum, from its corners as read by
+ * render_grid_row_inside: what render_grid_half does with `check` false and no wireframe (no
+ * outcode can cull or clip it; its area is the 32-bit one), the same primitive, key and counts.
+ */
+static inline __attribute__((always_inline)) uint32_t
+render_grid_half_inside(const struct render_faces_job *job, struct render_grid_walk *w,
+                        struct render_lattice_corner a, struct render_lattice_corner b,
+                        struct render_lattice_corner c, uint32_t ia, uint32_t i1, uint32_t i2,
+                        uint32_t np, uint32_t *dropped)
+{
+    uint32_t color;
+    uint32_t kind;
+
+    if ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) <= 0) {
+        return np;  /* a back face (render_face_stats works the count out) */
+    }
+    if (np >= w->prim_cap) {
+        (*dropped)++;
+        w->n_aside++;
+        return np;
+    }
+    if (w->shaded) {
+        color = PAL_INDEX(w->mat, 0u);
+        kind = GPU_PRIM_KIND_TRI_GOURAUD;
+    } else {
+        if (w->level == RENDER_LEVEL_UNKNOWN) {
+            w->level = palette_light_level(job->light, mesh_normal(job->mesh, w->quad));
+        }
+        color = PAL_INDEX(w->mat, w->level);
+        kind = GPU_PRIM_KIND_TRI;
+    }
+    render_prim_put(&w->prim[np], job->base + ia, job->base + i1, job->base + i2, color, kind);
+    w->sort_item[np] = render_sort_item(a.depth + b.depth + c.depth, np);
+    return np + 1u;
+}
+
+/*
+ * Row w->i of a grid mesh inside the frustum (no wireframe): quads (i, 0 .. cols-1), each corner
+ * read once — quad j's right corners are quad j+1's left ones, carried over —, the halves as
+ * render_grid_faces orders them. row and row1: the first vertex numbers of rows i and i + 1 (0 for
+ * the last row: the grid wraps). Returns the primitive count with this row's.
+ */
+static inline __attribute__((always_inline)) uint32_t
+render_grid_row_inside(struct render_frame *f, const struct render_faces_job *job,
+                       struct render_grid_walk *w, uint32_t row, uint32_t row1, uint32_t cols,
+                       bool flip, uint32_t np, uint32_t vsize)
+{
+    struct render_lattice_corner ka = render_lattice_corner(proj_vertex_at(w->vert, row, vsize));
+    struct render_lattice_corner kb = render_lattice_corner(proj_vertex_at(w->vert, row1, vsize));
+    uint32_t dropped = 0;
+
+    for (uint32_t j = 0; j < cols; j++) {
+        const uint32_t j1 = (j + 1u == cols) ? 0u : j + 1u;
+        const uint32_t ia = row + j;    /* (i, j) */
+        const uint32_t ib = row1 + j;   /* (i + 1, j) */
+        const uint32_t ic = row1 + j1;  /* (i + 1, j + 1) */
+        const uint32_t id = row + j1;   /* (i, j + 1) */
+        const struct render_lattice_corner kc = render_lattice_corner(proj_vertex_at(w->vert, ic, vsize));
+        const struct render_lattice_corner kd = render_lattice_corner(proj_vertex_at(w->vert, id, vsize));
+
+        w->quad = ia;
+        w->level = RENDER_LEVEL_UNKNOWN;
+        if (flip) {  /* (a, d, c), (a, c, b) */
+            np = render_grid_half_inside(job, w, ka, kd, kc, ia, id, ic, np, &dropped);
+            np = render_grid_half_inside(job, w, ka, kc, kb, ia, ic, ib, np, &dropped);
+        } else {     /* (a, b, c), (a, c, d) */
+            np = render_grid_half_inside(job, w, ka, kb, kc, ia, ib, ic, np, &dropped);
+            np = render_grid_half_inside(job, w, ka, kc, kd, ia, ic, id, np, &dropped);
+        }
+        ka = kd;
+        kb = kc;
+    }
+    f->stats.dropped += dropped;
+    return np;
+}
+
 /*
  * One half of a grid quad in render_grid_faces: the face (ia, i1, i2), half `half` of quad
  * (w->i, w->j) (mesh_grid_face gives it whole when the general path needs it); np primitives so
@@ -944,6 +1040,10 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
         const uint32_t row1 = (w.i + 1u == rows) ? 0u : row + cols;
 
         w.mat = (job->material_override != 0u) ? job->material_override : g->material[w.i];
+        if (!check && !w.general) {
+            np = render_grid_row_inside(f, job, &w, row, row1, cols, g->flip, np, vsize);
+            continue;
+        }
         for (w.j = 0; w.j < cols; w.j++) {
             const uint32_t j1 = (w.j + 1u == cols) ? 0u : w.j + 1u;
             const uint32_t ia = row + w.j;   /* (i, j) */
@@ -966,24 +1066,6 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
     }
     f->prim_count = np;
     render_face_stats(f, 2u * rows * cols, w.n_frustum, w.n_aside, (np - np_start) - w.np_general);
-}
-
-/* One corner of a lattice quad, read once for both of the quad's faces (the stores of the first
- * face's primitive could otherwise, for all the compiler knows, change the vertices). */
-struct render_lattice_corner {
-    int32_t x, y;    /* Q12.4 */
-    uint32_t depth;  /* sort depth */
-};
-
-static inline __attribute__((always_inline)) struct render_lattice_corner
-render_lattice_corner(const struct proj_vertex *v)
-{
-    struct render_lattice_corner k;
-
-    k.x = v->sx;
-    k.y = v->sy;
-    k.depth = v->depth;
-    return k;
 }
 
 /* What the faces of render_lattice_faces and render_quad_faces share, and what they count: the

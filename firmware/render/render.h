@@ -41,6 +41,7 @@
 
 #include "camera/camera.h"
 #include "config/build_options.h"
+#include "config/hot_path.h"
 #include "render/mesh.h"
 #include "render/proj.h"
 #include "render/sort.h"
@@ -255,7 +256,7 @@ void render_frame_init(struct render_frame *f, struct proj_vertex *vert, uint32_
     static struct render_prim id##_prim[np]; \
     static sort_item_t id##_sort_item[np]; \
     static sort_item_t id##_sort_tmp[np]; \
-    static struct sort_scratch id##_sort_scratch[((np) >= SORT_SMALL_N) ? 1 : 0]
+    static FW_FAST_DATA struct sort_scratch id##_sort_scratch[((np) >= SORT_SMALL_N) ? 1 : 0]
 #define RENDER_FRAME_ATTACH(f, id) \
     render_frame_init((f), id##_vert, (uint32_t)(sizeof id##_vert / sizeof id##_vert[0]), \
                       id##_prim, id##_sort_item, id##_sort_tmp, \

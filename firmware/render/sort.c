@@ -3,6 +3,8 @@
  */
 #include "render/sort.h"
 
+#include "config/hot_path.h"
+
 /* Work counter for the unit tests, which build this file with SORT_COUNT_WORK (firmware.mk,
  * FW_UNIT_CFLAGS): every item read or moved counts one, every histogram slot cleared or scanned
  * one. The firmware's builds leave it out (SORT_WORK is then nothing). */
@@ -32,7 +34,7 @@ static void sort_insertion(sort_item_t *item, uint32_t n)
 }
 
 /* A pass can be skipped when one digit value holds every item. */
-static int sort_pass_needed(const uint32_t hist[256], uint32_t n)
+static int sort_pass_needed(const uintptr_t hist[256], uint32_t n)
 {
     for (uint32_t d = 0; d < 256u; d++) {
         SORT_WORK(1);
@@ -45,48 +47,65 @@ static int sort_pass_needed(const uint32_t hist[256], uint32_t n)
 
 /* One stable counting pass on the item byte at `shift` (SORT_KEY_SHIFT: the key's low byte, + 8:
  * its high byte).
- * hist holds the digit counts; next receives each digit's write position (a pointer, so placing an
+ * slot holds the digit counts and becomes each digit's write position (a pointer, so placing an
  * item is one load, two stores and an increment). Always inlined with a constant shift, so the
  * digit costs two instructions (shift, mask) and the loop nine per item. */
 static inline __attribute__((always_inline)) void sort_pass(const sort_item_t *in,
                                                             sort_item_t *out, uint32_t n,
-                                                            const uint32_t hist[256],
-                                                            sort_item_t *next[256], uint32_t shift)
+                                                            uintptr_t slot[256], uint32_t shift)
 {
-    sort_item_t *start = out;
+    uintptr_t start = (uintptr_t)out;
     const sort_item_t *const in_end = in + n;
 
+    /* The high digit's slots are the low digit's + 1 KiB: without this, GCC adds that offset to
+     * every item's slot address (an instruction an item) instead of to the base once. */
+    FW_ONE_REGISTER(slot);
+
     for (uint32_t d = 0; d < 256u; d += 4u) {  /* by four: a fixed cost of every sort */
-        next[d] = start;
-        start += hist[d];
-        next[d + 1u] = start;
-        start += hist[d + 1u];
-        next[d + 2u] = start;
-        start += hist[d + 2u];
-        next[d + 3u] = start;
-        start += hist[d + 3u];
+        const uintptr_t c0 = slot[d];
+        const uintptr_t c1 = slot[d + 1u];
+        const uintptr_t c2 = slot[d + 2u];
+        const uintptr_t c3 = slot[d + 3u];
+
+        slot[d] = start;
+        start += c0 * sizeof(sort_item_t);
+        slot[d + 1u] = start;
+        start += c1 * sizeof(sort_item_t);
+        slot[d + 2u] = start;
+        start += c2 * sizeof(sort_item_t);
+        slot[d + 3u] = start;
+        start += c3 * sizeof(sort_item_t);
         SORT_WORK(4);
     }
     /* Two items an iteration (one loop test for both), the first placed first: stable. */
     for (const sort_item_t *p = in; p != in_end - (n & 1u); p += 2) {
         const sort_item_t x0 = p[0];
         const sort_item_t x1 = p[1];
+        uintptr_t *const s0 = &slot[(uint32_t)(x0 >> shift) & 0xFFu];
 
-        *next[(uint32_t)(x0 >> shift) & 0xFFu]++ = x0;
-        *next[(uint32_t)(x1 >> shift) & 0xFFu]++ = x1;
+        *(sort_item_t *)*s0 = x0;
+        *s0 += sizeof(sort_item_t);
+        {
+            uintptr_t *const s1 = &slot[(uint32_t)(x1 >> shift) & 0xFFu];
+
+            *(sort_item_t *)*s1 = x1;
+            *s1 += sizeof(sort_item_t);
+        }
         SORT_WORK(2);
     }
     if ((n & 1u) != 0u) {
         const sort_item_t x = in_end[-1];
+        uintptr_t *const s = &slot[(uint32_t)(x >> shift) & 0xFFu];
 
-        *next[(uint32_t)(x >> shift) & 0xFFu]++ = x;
+        *(sort_item_t *)*s = x;
+        *s += sizeof(sort_item_t);
         SORT_WORK(1);
     }
 }
 
 void sort_items(sort_item_t *item, sort_item_t *tmp, uint32_t n, struct sort_scratch *scratch)
 {
-    uint32_t(*hist)[256];
+    uintptr_t(*hist)[256];
     sort_item_t *src = item;
     sort_item_t *dst = tmp;
 
@@ -95,8 +114,8 @@ void sort_items(sort_item_t *item, sort_item_t *tmp, uint32_t n, struct sort_scr
         return;
     }
     /* Only now: a frame too small for the radix sort has no scratch (NULL), and even forming
-     * &scratch->hist from a null pointer is undefined behaviour. */
-    hist = scratch->hist;
+     * &scratch->slot from a null pointer is undefined behaviour. */
+    hist = scratch->slot;
     for (uint32_t d = 0; d < 256u; d += 2u) {
         hist[0][d] = 0;
         hist[0][d + 1u] = 0;
@@ -124,12 +143,12 @@ void sort_items(sort_item_t *item, sort_item_t *tmp, uint32_t n, struct sort_scr
     }
     /* Low digit, then high digit; a skipped pass leaves the items where they are. */
     if (sort_pass_needed(hist[0], n)) {
-        sort_pass(src, dst, n, hist[0], scratch->next, SORT_KEY_SHIFT);
+        sort_pass(src, dst, n, hist[0], SORT_KEY_SHIFT);
         src = tmp;
         dst = item;
     }
     if (sort_pass_needed(hist[1], n)) {
-        sort_pass(src, dst, n, hist[1], scratch->next, SORT_KEY_SHIFT + 8u);
+        sort_pass(src, dst, n, hist[1], SORT_KEY_SHIFT + 8u);
         src = dst;
     }
     if (src != item) {

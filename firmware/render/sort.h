@@ -52,9 +52,11 @@ static inline uint32_t sort_item_payload(sort_item_t x)
 /* Below this many items a stable insertion sort is cheaper than the two bucket passes. */
 #define SORT_SMALL_N 32u
 
+/* Each digit's slot holds its count, then, during its pass, where the digit's next item goes (a
+ * pointer as an integer: the same word on the SoC), so one array serves both: 2 KiB, small enough
+ * for the SoC's on-chip RAM beside the stack in a build that runs from the SDRAM (FW_FAST_DATA). */
 struct sort_scratch {
-    uint32_t hist[2][256];
-    sort_item_t *next[256];  /* during a pass: where the next item of each digit goes */
+    uintptr_t slot[2][256];  /* [0]: the low digit's, [1]: the high digit's */
 };
 
 /* Sort item[0 .. n-1] ascending by item >> SORT_KEY_SHIFT, stable; tmp must hold n items. scratch
