@@ -249,16 +249,28 @@ bench-cpu: $(SOCSIM)
 # table (bench/bench_soc.py).
 # SOC_MEM=sdram: the same from the SDRAM (the boot program first; its cycles are not the frames').
 # One make a scene: the program's boot scene decides the model scene's capacities (bsp/soc/bsp.mk).
+# FRAME_DRAM=1 (with SOC_MEM=sdram): the board's default memory system, the GPU's 640x480 frames in
+# the SDRAM too, drawn in strips of 16 rows with the firmware's binning (mk/builds.toml's
+# socsim-sdram-dram; the same programs, which read the GPU's frame and strips at start-up).
 SOC_BENCH_DIR  := $(BUILD)/fw-bench-soc$(SOC_MEM_SUFFIX)
 SOC_BENCH_ELFS := $(foreach s,$(FW_SCENES),$(s)=$(SOC_BENCH_DIR)/$(s).elf)
-bench-soc: $(SOCSIM) $(SOCSIM_BOOT)
+ifeq ($(FRAME_DRAM),1)
+ifneq ($(SOC_MEM),sdram)
+bench-soc profile-soc: SOC_BENCH_SOCSIM = $(error FRAME_DRAM=1 is the system with SDRAM's: add SOC_MEM=sdram)
+else
+SOC_BENCH_SOCSIM := $(BUILD)/socsim-sdram-dram-$(SOC_RAM_KIB)k/socsim
+endif
+else
+SOC_BENCH_SOCSIM := $(SOCSIM)
+endif
+bench-soc: $(SOC_BENCH_SOCSIM) $(SOCSIM_BOOT)
 	+@$(foreach s,$(FW_SCENES),$(SOC_FW_MAKE) SCENE=$(s) $(SOC_BENCH_DIR)/$(s).elf &&) true
-	@$(PYTHON) bench/bench_soc.py --socsim $(SOCSIM) $(if $(SOCSIM_BOOT),--boot $(SOCSIM_BOOT)) \
-	  --out $(BUILD)/bench-soc$(SOC_MEM_SUFFIX) $(SOC_BENCH_ELFS)
+	@$(PYTHON) bench/bench_soc.py --socsim $(SOC_BENCH_SOCSIM) $(if $(SOCSIM_BOOT),--boot $(SOCSIM_BOOT)) \
+	  --out $(BUILD)/bench-soc$(SOC_MEM_SUFFIX)$(if $(filter 1,$(FRAME_DRAM)),-dram) $(SOC_BENCH_ELFS)
 
 # One scene's benchmark build on socsim, its clocks, instructions and refills by function (and with
 # PROFILE_LINES=N by source line): firmware/tools/profile_soc.py, socsim's --profile.
-profile-soc: $(SOCSIM) $(SOCSIM_BOOT)
+profile-soc: $(SOC_BENCH_SOCSIM) $(SOCSIM_BOOT)
 	+@$(SOC_FW_MAKE) SCENE=$(SCENE) $(SOC_BENCH_DIR)/$(SCENE).elf
-	@$(PYTHON) firmware/tools/profile_soc.py $(SOCSIM) $(SOC_BENCH_DIR)/$(SCENE).elf \
+	@$(PYTHON) firmware/tools/profile_soc.py $(SOC_BENCH_SOCSIM) $(SOC_BENCH_DIR)/$(SCENE).elf \
 	  $(if $(SOCSIM_BOOT),--boot $(SOCSIM_BOOT)) $(if $(PROFILE_LINES),--lines $(PROFILE_LINES))
