@@ -3,8 +3,8 @@
  *
  * Exit writes the status to SYS EXIT: in simulation (socsim) the run ends with that status, as
  * QEMU's does through sifive_test; on a board the SYS block latches it (LEDs) and the core waits
- * here. picolibc's exit() lands in _exit() below, so exit(n) and a return from main() (crt0
- * "hosted") both end the run with status n.
+ * here. picolibc's exit() lands in _exit() below, so exit(n) and a return from main() (crt0.c
+ * calls exit(main())) both end the run with status n.
  */
 #include <stdint.h>
 #include <string.h>

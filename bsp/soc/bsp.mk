@@ -33,8 +33,9 @@ FW_ARCH_FLAGS = -march=rv32im -misa-spec=2.2 -mabi=ilp32 -mcmodel=medlow --specs
                 -DPICOLIBC_INTEGER_PRINTF_SCANF
 FW_BSP_SRCS   = $(wildcard bsp/soc/*.c) $(wildcard bsp/rv32/*.c)
 FW_LDSCRIPT   = linker/soc.ld
-# crt0 "hosted" calls exit(main()); the BSP's _exit() writes SYS EXIT.
-FW_BSP_LDFLAGS = --crt0=hosted -Wl,--no-warn-rwx-segments -Wl,--defsym=__stack_size=$(FW_STACK_BYTES)
+# The start is the BSP's own (crt0.c: picolibc's crt0 "hosted" in its steps, without its relaxed load of
+# an absolute symbol); it calls exit(main()), and the BSP's _exit() writes SYS EXIT.
+FW_BSP_LDFLAGS = -nostartfiles -Wl,--no-warn-rwx-segments -Wl,--defsym=__stack_size=$(FW_STACK_BYTES)
 # After linking: <elf>.hex (RAM_INIT, one 32-bit word per line) and <elf>.ramkib (the RAM it needs),
 # or a build error with the sizes when the image, its bss and the stack do not fit the RAM the build
 # checks against (SOC_FW_RAM_BYTES, bsp/soc/soc_ram.mk; the ELF is then deleted).

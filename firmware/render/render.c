@@ -705,6 +705,7 @@ struct render_grid_walk {
     uint32_t np_general; /* primitives the general path added */
     uint32_t n_frustum;
     uint32_t n_aside;    /* faces through the general path, or dropped (no room) */
+    uint32_t n_dropped;  /* dropped (no room): the frame's stats.dropped gets them at the end */
     /* The frame's arrays, read once: the face's stores into them could otherwise (for all the
      * compiler knows) change the frame's pointers, which it would then read again a face. */
     const struct proj_vertex *vert;  /* the object's first vertex */
@@ -862,25 +863,30 @@ render_lattice_corner(const struct proj_vertex *v)
     return k;
 }
 
+/* The signed area of the corners' triangle in 32 bits: exact when every corner is on the frame
+ * (proj_signed_area_inside's argument), as in an object inside the frustum. */
+static inline int32_t render_corner_area(struct render_lattice_corner a, struct render_lattice_corner b,
+                                         struct render_lattice_corner c)
+{
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
 /*
- * One half of a grid quad of an object inside the frustum, from its corners as read by
- * render_grid_row_inside: what render_grid_half does with `check` false and no wireframe (no
- * outcode can cull or clip it; its area is the 32-bit one), the same primitive, key and counts.
+ * A front half (ia, i1, i2) of grid quad w->quad: dropped for want of room, or its primitive and
+ * sort item (a grid face is not MESH_FACE_QUAD, mesh_grid_face: its key is its three depths' sum,
+ * depth_sum). w->level is the quad's light level once a half
+ * has worked it out: both halves share the quad's normal, so the second half drawn reuses it. np
+ * primitives so far, returned with this face's.
  */
 static inline __attribute__((always_inline)) uint32_t
-render_grid_half_inside(const struct render_faces_job *job, struct render_grid_walk *w,
-                        struct render_lattice_corner a, struct render_lattice_corner b,
-                        struct render_lattice_corner c, uint32_t ia, uint32_t i1, uint32_t i2,
-                        uint32_t np, uint32_t *dropped)
+render_grid_emit(const struct render_faces_job *job, struct render_grid_walk *w, uint32_t ia,
+                 uint32_t i1, uint32_t i2, uint32_t depth_sum, uint32_t np)
 {
     uint32_t color;
     uint32_t kind;
 
-    if ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) <= 0) {
-        return np;  /* a back face (render_face_stats works the count out) */
-    }
     if (np >= w->prim_cap) {
-        (*dropped)++;
+        w->n_dropped++;
         w->n_aside++;
         return np;
     }
@@ -895,8 +901,23 @@ render_grid_half_inside(const struct render_faces_job *job, struct render_grid_w
         kind = GPU_PRIM_KIND_TRI;
     }
     render_prim_put(&w->prim[np], job->base + ia, job->base + i1, job->base + i2, color, kind);
-    w->sort_item[np] = render_sort_item(a.depth + b.depth + c.depth, np);
+    w->sort_item[np] = render_sort_item(depth_sum, np);
     return np + 1u;
+}
+
+/* One half of a grid quad of an object inside the frustum, from its corners as
+ * render_grid_row_inside reads them: what render_grid_half does with `check` false and no
+ * wireframe (no outcode can cull or clip it). */
+static inline __attribute__((always_inline)) uint32_t
+render_grid_half_inside(const struct render_faces_job *job, struct render_grid_walk *w,
+                        struct render_lattice_corner a, struct render_lattice_corner b,
+                        struct render_lattice_corner c, uint32_t ia, uint32_t i1, uint32_t i2,
+                        uint32_t np)
+{
+    if (render_corner_area(a, b, c) <= 0) {
+        return np;  /* a back face (render_face_stats works the count out) */
+    }
+    return render_grid_emit(job, w, ia, i1, i2, a.depth + b.depth + c.depth, np);
 }
 
 /*
@@ -906,13 +927,12 @@ render_grid_half_inside(const struct render_faces_job *job, struct render_grid_w
  * the last row: the grid wraps). Returns the primitive count with this row's.
  */
 static inline __attribute__((always_inline)) uint32_t
-render_grid_row_inside(struct render_frame *f, const struct render_faces_job *job,
-                       struct render_grid_walk *w, uint32_t row, uint32_t row1, uint32_t cols,
-                       bool flip, uint32_t np, uint32_t vsize)
+render_grid_row_inside(const struct render_faces_job *job, struct render_grid_walk *w,
+                       uint32_t row, uint32_t row1, uint32_t cols, bool flip, uint32_t np,
+                       uint32_t vsize)
 {
     struct render_lattice_corner ka = render_lattice_corner(proj_vertex_at(w->vert, row, vsize));
     struct render_lattice_corner kb = render_lattice_corner(proj_vertex_at(w->vert, row1, vsize));
-    uint32_t dropped = 0;
 
     for (uint32_t j = 0; j < cols; j++) {
         const uint32_t j1 = (j + 1u == cols) ? 0u : j + 1u;
@@ -926,24 +946,22 @@ render_grid_row_inside(struct render_frame *f, const struct render_faces_job *jo
         w->quad = ia;
         w->level = RENDER_LEVEL_UNKNOWN;
         if (flip) {  /* (a, d, c), (a, c, b) */
-            np = render_grid_half_inside(job, w, ka, kd, kc, ia, id, ic, np, &dropped);
-            np = render_grid_half_inside(job, w, ka, kc, kb, ia, ic, ib, np, &dropped);
+            np = render_grid_half_inside(job, w, ka, kd, kc, ia, id, ic, np);
+            np = render_grid_half_inside(job, w, ka, kc, kb, ia, ic, ib, np);
         } else {     /* (a, b, c), (a, c, d) */
-            np = render_grid_half_inside(job, w, ka, kb, kc, ia, ib, ic, np, &dropped);
-            np = render_grid_half_inside(job, w, ka, kc, kd, ia, ic, id, np, &dropped);
+            np = render_grid_half_inside(job, w, ka, kb, kc, ia, ib, ic, np);
+            np = render_grid_half_inside(job, w, ka, kc, kd, ia, ic, id, np);
         }
         ka = kd;
         kb = kc;
     }
-    f->stats.dropped += dropped;
     return np;
 }
 
 /*
  * One half of a grid quad in render_grid_faces: the face (ia, i1, i2), half `half` of quad
  * (w->i, w->j) (mesh_grid_face gives it whole when the general path needs it); np primitives so
- * far, returned with this face's. w->level is the quad's light level once a half has worked it
- * out: both halves share the quad's normal, so the second half drawn reuses it.
+ * far, returned with this face's (render_grid_emit).
  */
 static inline __attribute__((always_inline)) uint32_t
 render_grid_half(struct render_frame *f, const struct render_faces_job *job, bool check,
@@ -953,8 +971,6 @@ render_grid_half(struct render_frame *f, const struct render_faces_job *job, boo
     const struct proj_vertex *a = proj_vertex_at(w->vert, ia, vsize);
     const struct proj_vertex *b = proj_vertex_at(w->vert, i1, vsize);
     const struct proj_vertex *c = proj_vertex_at(w->vert, i2, vsize);
-    uint32_t color;
-    uint32_t kind;
 
     if (check && (a->code & b->code & c->code & PROJ_CULL_BITS) != 0u) {
         w->n_frustum++;
@@ -971,25 +987,7 @@ render_grid_half(struct render_frame *f, const struct render_faces_job *job, boo
     if (check ? (proj_signed_area(a, b, c) <= 0) : (proj_signed_area_inside(a, b, c) <= 0)) {
         return np;
     }
-    if (np >= w->prim_cap) {
-        f->stats.dropped++;
-        w->n_aside++;
-        return np;
-    }
-    if (w->shaded) {
-        color = PAL_INDEX(w->mat, 0u);
-        kind = GPU_PRIM_KIND_TRI_GOURAUD;
-    } else {
-        if (w->level == RENDER_LEVEL_UNKNOWN) {
-            w->level = palette_light_level(job->light, mesh_normal(job->mesh, w->quad));
-        }
-        color = PAL_INDEX(w->mat, w->level);
-        kind = GPU_PRIM_KIND_TRI;
-    }
-    render_prim_put(&w->prim[np], job->base + ia, job->base + i1, job->base + i2, color, kind);
-    /* A grid face is not MESH_FACE_QUAD (mesh_grid_face): its key is its three depths' sum. */
-    w->sort_item[np] = render_sort_item((uint32_t)a->depth + b->depth + c->depth, np);
-    return np + 1u;
+    return render_grid_emit(job, w, ia, i1, i2, (uint32_t)a->depth + b->depth + c->depth, np);
 }
 
 /* The half with every test, out of line: a mesh crossing the frustum's planes is the rare case,
@@ -1031,6 +1029,7 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
     w.np_general = 0;
     w.n_frustum = 0;
     w.n_aside = 0;
+    w.n_dropped = 0;
     w.vert = &f->vert[job->base];
     w.prim = f->prim;
     w.sort_item = f->sort_item;
@@ -1041,7 +1040,7 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
 
         w.mat = (job->material_override != 0u) ? job->material_override : g->material[w.i];
         if (!check && !w.general) {
-            np = render_grid_row_inside(f, job, &w, row, row1, cols, g->flip, np, vsize);
+            np = render_grid_row_inside(job, &w, row, row1, cols, g->flip, np, vsize);
             continue;
         }
         for (w.j = 0; w.j < cols; w.j++) {
@@ -1065,6 +1064,7 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
         }
     }
     f->prim_count = np;
+    f->stats.dropped += w.n_dropped;
     render_face_stats(f, 2u * rows * cols, w.n_frustum, w.n_aside, (np - np_start) - w.np_general);
 }
 
@@ -1312,7 +1312,7 @@ render_lattice_face(struct render_frame *f, const struct render_faces_job *job,
     uint32_t level;
     uint32_t normal;
 
-    if ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) <= 0) {
+    if (render_corner_area(a, b, c) <= 0) {
         w->n_back++;
         return;
     }
