@@ -7,7 +7,6 @@
  * calls exit(main())) both end the run with status n.
  */
 #include <stdint.h>
-#include <string.h>
 
 #include "bsp.h"
 #include "bsp_internal.h"
@@ -17,13 +16,8 @@
 _Static_assert(SOC_CSR_IRQ_MASK == 0xBC0u && SOC_CSR_CFU_ENABLE == 0x80000000u,
                "bsp_init enables the custom-function port as bit 31 of CSR 0xBC0");
 
-/* linker/soc.ld's .fast: the FW_FAST_DATA objects (firmware/config/hot_path.h) in the on-chip RAM
- * of a build that runs from the SDRAM, outside what the C start-up clears (empty elsewhere). */
-extern char __fast_start[], __fast_end[];
-
 void bsp_init(void)
 {
-    memset(__fast_start, 0, (size_t)(__fast_end - __fast_start));
     bsp_trap_install();
     bsp_uart_init();
     /* the projection unit (firmware/render/proj_unit.h) */

@@ -14,13 +14,14 @@
  * relaxed.
  *
  * .data needs no copy: linker/soc.ld links it where it is loaded (the RAM's image, or the SDRAM's
- * image the boot program copies).
+ * image the boot program copies). The fast RAM's objects (linker/soc.ld's .fast, FW_FAST_DATA: a
+ * build that runs from the SDRAM; empty in any other) are cleared with .bss.
  */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-extern char __bss_start[], __bss_end[], __tls_base[];
+extern char __bss_start[], __bss_end[], __fast_start[], __fast_end[], __tls_base[];
 extern void __libc_init_array(void);
 extern void _set_tls(void *tls);  /* picolibc's (picotls.h declares it only where PICOLIBC_TLS is) */
 extern int main(int argc, char **argv);
@@ -40,6 +41,7 @@ __asm__("    .section .text.init.enter, \"ax\", @progbits\n"
 void bsp_cstart(void)
 {
     memset(__bss_start, 0, (size_t)(__bss_end - __bss_start));
+    memset(__fast_start, 0, (size_t)(__fast_end - __fast_start));
     _set_tls(__tls_base);
     __libc_init_array();
     exit(main(0, NULL));

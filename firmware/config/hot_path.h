@@ -27,8 +27,8 @@
 /* A zero-initialised object the frame loop works hard (the sort's digit slots): in a SoC build whose
  * firmware runs from the SDRAM (bsp/soc/bsp.mk sets FW_FAST_RAM), it goes to the on-chip RAM above
  * the boot program (linker/soc.ld's .fast, beside the stack), where a store takes a clock or two
- * instead of an SDRAM write's many; everywhere else it is ordinary .bss. There it is zeroed by
- * bsp_init, not by the C start-up, so nothing may use it before. */
+ * instead of an SDRAM write's many; everywhere else it is ordinary .bss. The start-up zeroes it with
+ * .bss (bsp/soc/crt0.c). */
 #if defined(FW_FAST_RAM) && FW_FAST_RAM
 #define FW_FAST_DATA __attribute__((section(".fast.bss")))
 #else

@@ -829,8 +829,9 @@ static inline __attribute__((always_inline)) void render_faces(struct render_fra
     render_face_stats(f, nf, n_frustum, n_aside, (np - np_start) - np_general);
 }
 
-/* render_grid_half's rare case, out of line (render_grid_half is inlined three times): face `half`
- * of quad (i, j) through render_face_general, after np primitives; returns the primitive count. */
+/* A grid face through the general path, out of line (render_grid_half_aside is inlined three
+ * times): face `half` of quad (i, j) through render_face_general, after np primitives; returns
+ * the primitive count. */
 static uint32_t __attribute__((noinline))
 render_grid_face_general(struct render_frame *f, const struct render_faces_job *job, uint32_t i,
                          uint32_t j, uint32_t half, uint32_t np)
@@ -906,8 +907,8 @@ render_grid_emit(const struct render_faces_job *job, struct render_grid_walk *w,
 }
 
 /* One half of a grid quad of an object inside the frustum, from its corners as
- * render_grid_row_inside reads them: what render_grid_half does with `check` false and no
- * wireframe (no outcode can cull or clip it). */
+ * render_grid_row_inside reads them: no outcode can cull or clip it, and its area is the 32-bit
+ * one (every corner on the frame). */
 static inline __attribute__((always_inline)) uint32_t
 render_grid_half_inside(const struct render_faces_job *job, struct render_grid_walk *w,
                         struct render_lattice_corner a, struct render_lattice_corner b,
@@ -958,47 +959,46 @@ render_grid_row_inside(const struct render_faces_job *job, struct render_grid_wa
     return np;
 }
 
-/*
- * One half of a grid quad in render_grid_faces: the face (ia, i1, i2), half `half` of quad
- * (w->i, w->j) (mesh_grid_face gives it whole when the general path needs it); np primitives so
- * far, returned with this face's (render_grid_emit).
- */
+/* Half `half` of grid quad (w->i, w->j) through the general path (render_face_general:
+ * clipping, wireframe), its primitives counted aside; np so far, returned with its own. */
 static inline __attribute__((always_inline)) uint32_t
-render_grid_half(struct render_frame *f, const struct render_faces_job *job, bool check,
-                 struct render_grid_walk *w, uint32_t ia, uint32_t i1, uint32_t i2, uint32_t half,
-                 uint32_t np, uint32_t vsize)
+render_grid_half_aside(struct render_frame *f, struct render_grid_walk *w, uint32_t half,
+                       uint32_t np)
 {
-    const struct proj_vertex *a = proj_vertex_at(w->vert, ia, vsize);
-    const struct proj_vertex *b = proj_vertex_at(w->vert, i1, vsize);
-    const struct proj_vertex *c = proj_vertex_at(w->vert, i2, vsize);
+    const uint32_t after = render_grid_face_general(f, w->job, w->i, w->j, half, np);
 
-    if (check && (a->code & b->code & c->code & PROJ_CULL_BITS) != 0u) {
-        w->n_frustum++;
-        return np;
-    }
-    if ((check && ((a->code | b->code | c->code) & PROJ_CLIP_BITS) != 0u) || w->general) {
-        const uint32_t after = render_grid_face_general(f, w->job, w->i, w->j, half, np);
-
-        w->np_general += after - np;
-        w->n_aside++;
-        return after;
-    }
-    /* A back face (not counted here: render_face_stats works the count out). */
-    if (check ? (proj_signed_area(a, b, c) <= 0) : (proj_signed_area_inside(a, b, c) <= 0)) {
-        return np;
-    }
-    return render_grid_emit(job, w, ia, i1, i2, (uint32_t)a->depth + b->depth + c->depth, np);
+    w->np_general += after - np;
+    w->n_aside++;
+    return after;
 }
 
-/* The half with every test, out of line: a mesh crossing the frustum's planes is the rare case,
- * and one copy of this instead of two keeps a one-scene program of the knot within the SoC's
- * 192 KiB. */
+/*
+ * One half of a grid quad of a mesh crossing the frustum's planes, with every test: the face
+ * (ia, i1, i2), half `half` of quad (w->i, w->j) (mesh_grid_face gives it whole when the general
+ * path needs it); np primitives so far, returned with this face's (render_grid_emit). Out of line:
+ * the rare case, and one copy keeps a one-scene program of the knot within the SoC's 192 KiB.
+ */
 static uint32_t __attribute__((noinline))
 render_grid_half_checked(struct render_frame *f, const struct render_faces_job *job,
                          struct render_grid_walk *w, uint32_t ia, uint32_t i1, uint32_t i2,
                          uint32_t half, uint32_t np)
 {
-    return render_grid_half(f, job, true, w, ia, i1, i2, half, np, sizeof(struct proj_vertex));
+    const struct proj_vertex *a = &w->vert[ia];
+    const struct proj_vertex *b = &w->vert[i1];
+    const struct proj_vertex *c = &w->vert[i2];
+
+    if ((a->code & b->code & c->code & PROJ_CULL_BITS) != 0u) {
+        w->n_frustum++;
+        return np;
+    }
+    if (((a->code | b->code | c->code) & PROJ_CLIP_BITS) != 0u || w->general) {
+        return render_grid_half_aside(f, w, half, np);
+    }
+    /* A back face (not counted here: render_face_stats works the count out). */
+    if (proj_signed_area(a, b, c) <= 0) {
+        return np;
+    }
+    return render_grid_emit(job, w, ia, i1, i2, (uint32_t)a->depth + b->depth + c->depth, np);
 }
 
 /*
@@ -1057,9 +1057,9 @@ static inline __attribute__((always_inline)) void render_grid_faces(struct rende
             if (check) {
                 np = render_grid_half_checked(f, job, &w, ia, second0, ic, 0u, np);
                 np = render_grid_half_checked(f, job, &w, ia, ic, third1, 1u, np);
-            } else {
-                np = render_grid_half(f, job, false, &w, ia, second0, ic, 0u, np, vsize);
-                np = render_grid_half(f, job, false, &w, ia, ic, third1, 1u, np, vsize);
+            } else {  /* wireframe inside the frustum: every face to the general path */
+                np = render_grid_half_aside(f, &w, 0u, np);
+                np = render_grid_half_aside(f, &w, 1u, np);
             }
         }
     }

@@ -130,6 +130,26 @@ def symbols(elf):
     return syms
 
 
+def function_finder(syms):
+    """pc -> the name of the function that contains it (syms: symbols(), in address order)."""
+    starts = [a for a, _ in syms]
+
+    def function_of(pc):
+        i = bisect.bisect_right(starts, pc) - 1
+        return syms[i][1] if i >= 0 else "?"
+    return function_of
+
+
+def source_lines(elf, pcs):
+    """Each of pcs' innermost source line ("file:line", relative to the working directory:
+    addr2line), in the same order."""
+    a2l = os.environ.get("RV_ADDR2LINE", "riscv64-unknown-elf-addr2line")
+    out = subprocess.run([a2l, "-e", elf], input="".join(f"{pc:x}\n" for pc in pcs),
+                         capture_output=True, text=True, check=True).stdout.splitlines()
+    root = os.getcwd() + os.sep
+    return [where.split(" (discriminator")[0].replace(root, "") for where in out]
+
+
 def hot_lines(elf, measured, nf, work, n, waiting):
     """The n source lines with the most instructions per frame (addr2line, innermost line), the
     program counters for which waiting(pc) holds left out."""
@@ -138,13 +158,8 @@ def hot_lines(elf, measured, nf, work, n, waiting):
         per_pc.update(frame)
     per_pc = collections.Counter({pc: c for pc, c in per_pc.items() if not waiting(pc)})
     pcs = sorted(per_pc)
-    a2l = os.environ.get("RV_ADDR2LINE", "riscv64-unknown-elf-addr2line")
-    out = subprocess.run([a2l, "-e", elf], input="".join(f"{pc:x}\n" for pc in pcs),
-                         capture_output=True, text=True, check=True).stdout.splitlines()
-    root = os.getcwd() + os.sep
     by_line = collections.Counter()
-    for pc, where in zip(pcs, out):
-        where = where.split(" (discriminator")[0].replace(root, "")
+    for pc, where in zip(pcs, source_lines(elf, pcs)):
         by_line[where] += per_pc[pc]
     print("| source line | instructions/frame | share |")
     print("|---|---:|---:|")
@@ -201,7 +216,7 @@ def main():
     code = decode(args.elf) if args.hazards else {}
 
     syms = symbols(args.elf)
-    starts = [a for a, _ in syms]
+    function_of = function_finder(syms)
     mark = next((a for a, n in syms if n == FRAME_MARK), None)
     if mark is None:
         sys.exit(f"profile-fw: {args.elf} has no {FRAME_MARK} symbol")
@@ -270,10 +285,6 @@ def main():
         hazard_measured = hazard_frames[1:-1] if len(per_frame) > 2 else hazard_frames[1:]
     if not measured:
         sys.exit("profile-fw: fewer than two frames in the run; build with FRAMES >= 3")
-
-    def function_of(pc):
-        i = bisect.bisect_right(starts, pc) - 1
-        return syms[i][1] if i >= 0 else "?"
 
     by_fn = collections.Counter()
     for frame in measured:

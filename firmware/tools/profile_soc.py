@@ -14,7 +14,6 @@ instructions (the projection unit).
 Usage: profile_soc.py SOCSIM ELF [--boot HEX] [--top N] [--lines N] [--raw FILE]
 """
 import argparse
-import bisect
 import collections
 import os
 import shutil
@@ -23,7 +22,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from profile_fw import FRAME_MARK, NOT_PIPELINE, symbols  # noqa: E402
+from profile_fw import FRAME_MARK, NOT_PIPELINE, function_finder, source_lines, symbols  # noqa: E402
 
 
 def run_profile(socsim, elf, boot, mark, raw):
@@ -75,14 +74,10 @@ def main():
     args = ap.parse_args()
 
     syms = symbols(args.elf)
-    starts = [a for a, _ in syms]
+    function_of = function_finder(syms)
     mark = next((a for a, n in syms if n == FRAME_MARK), None)
     if mark is None:
         sys.exit(f"profile-soc: {args.elf} has no {FRAME_MARK} symbol")
-
-    def function_of(pc):
-        i = bisect.bisect_right(starts, pc) - 1
-        return syms[i][1] if i >= 0 else "?"
 
     nf, counts = run_profile(args.socsim, args.elf, args.boot, mark, args.raw)
     if nf == 0:
@@ -109,13 +104,9 @@ def main():
 
     if args.lines > 0:
         pcs = sorted(pc for pc in counts if function_of(pc) not in NOT_PIPELINE)
-        a2l = os.environ.get("RV_ADDR2LINE", "riscv64-unknown-elf-addr2line")
-        where = subprocess.run([a2l, "-e", args.elf], input="".join(f"{pc:x}\n" for pc in pcs),
-                               capture_output=True, text=True, check=True).stdout.splitlines()
-        root = os.getcwd() + os.sep
         by_line = collections.defaultdict(lambda: [0, 0, 0, 0])
-        for pc, w in zip(pcs, where):
-            acc = by_line[w.split(" (discriminator")[0].replace(root, "")]
+        for pc, where in zip(pcs, source_lines(args.elf, pcs)):
+            acc = by_line[where]
             for k in range(4):
                 acc[k] += counts[pc][k]
         print()
