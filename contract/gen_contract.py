@@ -64,6 +64,19 @@ def fb_pixels(c):
     return c["limits"]["fb_width"] * c["limits"]["fb_height"]
 
 
+def cap_max(c):
+    """The largest buffer capacities a build may have: as many entries as the buffers' bus windows
+    hold (VTX_CAP and TRI_CAP default to the limits, which must not exceed these)."""
+    win = {w["name"]: w["bytes"] for w in c["window"]}
+    words = c["constants"]
+    caps = {"VTX_CAP": win["VTX"] // (4 * words["VTX_WORDS"]),
+            "TRI_CAP": win["IDX"] // (4 * words["PRIM_WORDS"])}
+    for name, cap in caps.items():
+        if c["limits"][name.lower()] > cap:
+            sys.exit(f"contract: {name.lower()} is above what its window holds ({cap})")
+    return caps
+
+
 def read_only_regs(c):
     """Registers with access "ro", in offset order."""
     return sorted((r for r in c["reg"] if r["access"] == "ro"), key=lambda r: r["offset"])
@@ -99,6 +112,8 @@ def gen_c(c):
     for k, v in lim.items():
         define(f"GPU_{k.upper()}", f"{v}u")
     define("GPU_FB_PIXELS", f"{fb_pixels(c)}u", "GPU_FB_WIDTH * GPU_FB_HEIGHT: the frame size")
+    for name, cap in cap_max(c).items():
+        define(f"GPU_{name}_MAX", f"{cap}u", f"the largest {name} a build may have: what its window holds")
     out.append("")
     out.append("/* Build-option defaults (the RTL's parameter defaults; CAPS reports a build's own). */")
     for name, b in c["build"].items():
@@ -156,6 +171,8 @@ def gen_v(c):
     for k, v in lim.items():
         lpi(f"GPU_{k.upper()}", v)
     lpi("GPU_FB_PIXELS", fb_pixels(c), "GPU_FB_WIDTH * GPU_FB_HEIGHT: the frame size")
+    for name, cap in cap_max(c).items():
+        lpi(f"GPU_{name}_MAX", cap, f"the largest {name} a build may have: what its window holds")
     for name, b in c["build"].items():
         lpi(f"GPU_DEFAULT_{name}", b["default"], "build-option default")
     for w in c["window"]:

@@ -3,7 +3,7 @@
 #define GPU_REGS_H
 
 #define GPU_ID_VALUE                 0x47505530u
-#define GPU_VERSION_VALUE            0x00010004u
+#define GPU_VERSION_VALUE            0x00010005u
 #define GPU_APERTURE_BYTES           0x20000u
 
 #define GPU_VTX_CAP                  1024u
@@ -15,6 +15,8 @@
 #define GPU_PALETTE_ENTRIES          256u
 #define GPU_SUBPIXEL_BITS            4u
 #define GPU_FB_PIXELS                76800u  /* GPU_FB_WIDTH * GPU_FB_HEIGHT: the frame size */
+#define GPU_VTX_CAP_MAX              4096u  /* the largest VTX_CAP a build may have: what its window holds */
+#define GPU_TRI_CAP_MAX              4096u  /* the largest TRI_CAP a build may have: what its window holds */
 
 /* Build-option defaults (the RTL's parameter defaults; CAPS reports a build's own). */
 #define GPU_DEFAULT_SPAN_W           8u  /* Pixels rasterized per clock: 1, 4, 8 or 16 (CAPS_SPAN_W). */
@@ -105,6 +107,8 @@
 #define GPU_CTRL_ZCLEAR_MASK         0x00000008u
 #define GPU_CTRL_DITHER_LSB          4u  /* in CTRL: Gouraud triangles pick between adjacent ramp levels by the 4x4 ordered-dither threshold; without, the level is rounded down (stored with any build; acts only with CAPS_GOURAUD). */
 #define GPU_CTRL_DITHER_MASK         0x00000010u
+#define GPU_CTRL_WALK_LSB            5u  /* in CTRL: With a strip buffer (STRIP_ROWS > 0): the batch is drawn again for every strip of the frame after its STRIP rows' one, in order, as if rung again with STRIP set to that strip's rows; a requested swap after the last (see The strip buffer). Stored with any build; ignored without a strip buffer. */
+#define GPU_CTRL_WALK_MASK           0x00000020u
 #define GPU_STATUS_BUSY_LSB          0u  /* in STATUS: A batch is running (drawing or waiting for vsync). */
 #define GPU_STATUS_BUSY_MASK         0x00000001u
 #define GPU_STATUS_FRONT_LSB         1u  /* in STATUS: Which framebuffer (0/1) is scanned out. */

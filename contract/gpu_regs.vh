@@ -3,7 +3,7 @@
 // gpu_pkg::GPU_*. Not every build uses every constant:
 /* verilator lint_off UNUSEDPARAM */
 localparam [31:0] GPU_ID_VALUE                 = 32'h47505530;
-localparam [31:0] GPU_VERSION_VALUE            = 32'h10004;
+localparam [31:0] GPU_VERSION_VALUE            = 32'h10005;
 localparam integer GPU_VTX_CAP                  = 1024;
 localparam integer GPU_TRI_CAP                  = 512;
 localparam integer GPU_FB_WIDTH                 = 320;
@@ -13,6 +13,8 @@ localparam integer GPU_FB_MAX_HEIGHT            = 480;
 localparam integer GPU_PALETTE_ENTRIES          = 256;
 localparam integer GPU_SUBPIXEL_BITS            = 4;
 localparam integer GPU_FB_PIXELS                = 76800;  // GPU_FB_WIDTH * GPU_FB_HEIGHT: the frame size
+localparam integer GPU_VTX_CAP_MAX              = 4096;  // the largest VTX_CAP a build may have: what its window holds
+localparam integer GPU_TRI_CAP_MAX              = 4096;  // the largest TRI_CAP a build may have: what its window holds
 localparam integer GPU_DEFAULT_SPAN_W           = 8;  // build-option default
 localparam integer GPU_DEFAULT_ENABLE_LINES     = 1;  // build-option default
 localparam integer GPU_DEFAULT_ENABLE_ZBUF      = 0;  // build-option default
@@ -70,6 +72,8 @@ localparam integer GPU_CTRL_ZCLEAR_LSB          = 3;  // in CTRL
 localparam integer GPU_CTRL_ZCLEAR_WIDTH        = 1;
 localparam integer GPU_CTRL_DITHER_LSB          = 4;  // in CTRL
 localparam integer GPU_CTRL_DITHER_WIDTH        = 1;
+localparam integer GPU_CTRL_WALK_LSB            = 5;  // in CTRL
+localparam integer GPU_CTRL_WALK_WIDTH          = 1;
 localparam integer GPU_STATUS_BUSY_LSB          = 0;  // in STATUS
 localparam integer GPU_STATUS_BUSY_WIDTH        = 1;
 localparam integer GPU_STATUS_FRONT_LSB         = 1;  // in STATUS

@@ -146,7 +146,7 @@ int rtl_check_main(int argc, char **argv)
     Writer write{sim, model};
     const bool wmask = (sim.read(GPU_REG_CAPS) & GPU_CAPS_WMASK_MASK) != 0;
     uint64_t tris = 0, pixels = 0, frames = 0, resets = 0, back_checks = 0, overflows = 0, index_errors = 0;
-    uint64_t masked = 0, strips = 0;
+    uint64_t masked = 0, strips = 0, walks = 0;
     // STRIP draws from a stream of its own, so that the other draws of a seed stay as they were.
     Rng rs{seed ^ 0x5354524950ull};
     const Frame fb{static_cast<int32_t>(cfg.fb_width), static_cast<int32_t>(cfg.fb_height)};
@@ -269,6 +269,9 @@ int rtl_check_main(int argc, char **argv)
         bool ztest = r.chance(60);  // depth test (a no-op without CAPS_ZBUF: the bits are then ignored)
         bool zclear = r.chance(30) || b == 0 || clear_forced;  // a reset may also leave the depths half done
         const bool dither = r.chance(50);  // ordered dithering of Gouraud triangles (ignored without CAPS_GOURAUD)
+        // CTRL.WALK: on a strip build, some batches that open a strip draw it and every strip
+        // after it; elsewhere now and then set, and ignored.
+        bool walk = strip_rows == 0 && rs.chance(5);
         if (strip_rows != 0) {
             // A strip build: the band, the clear, the planes and the depth test by the strip
             // buffer's rules (contract "The strip buffer"), from the model's open strip; now and
@@ -286,6 +289,7 @@ int rtl_check_main(int argc, char **argv)
                 planes = 3;
                 zclear = zclear || rs.chance(70);
                 last = (last == static_cast<uint32_t>(fb.h) - 1 && rs.chance(30)) ? 0xFFFFu : last;
+                walk = !clear_forced && !reset_probe && rs.chance(20);
             } else if (rs.chance(70)) {
                 first = k_first + rs.below(k_rows);
                 last = first + rs.below(k_first + k_rows - first);
@@ -317,7 +321,8 @@ int rtl_check_main(int argc, char **argv)
         write(GPU_WIN_REGS + GPU_REG_STRIP, strip);
         const uint32_t ctrl = (clear ? GPU_CTRL_CLEAR_MASK : 0) | (swap ? GPU_CTRL_SWAP_MASK : 0)
                             | (ztest ? GPU_CTRL_ZTEST_MASK : 0) | (zclear ? GPU_CTRL_ZCLEAR_MASK : 0)
-                            | (dither ? GPU_CTRL_DITHER_MASK : 0);
+                            | (dither ? GPU_CTRL_DITHER_MASK : 0) | (walk ? GPU_CTRL_WALK_MASK : 0);
+        walks += walk && strip_rows != 0;
         write(GPU_WIN_REGS + GPU_REG_CTRL, ctrl);
         const uint32_t tag = static_cast<uint32_t>(b + 1);
         write(GPU_WIN_REGS + GPU_REG_DOORBELL, tag);
@@ -407,8 +412,9 @@ int rtl_check_main(int argc, char **argv)
                     static_cast<unsigned long long>(sim.memory_words_read()));
     }
     if (strip_rows != 0) {
-        std::printf("random: strips of %u rows, %llu batches refused (ERR_STRIP), the frame refusing %u %% of the clocks\n",
-                    strip_rows, static_cast<unsigned long long>(strip_refusals), throttle);
+        std::printf("random: strips of %u rows, %llu batches refused (ERR_STRIP), %llu walking the strips after theirs (CTRL.WALK), the frame refusing %u %% of the clocks\n",
+                    strip_rows, static_cast<unsigned long long>(strip_refusals),
+                    static_cast<unsigned long long>(walks), throttle);
     }
     std::printf("random: seed %llu: VTX_CAP %u TRI_CAP %u FB %ux%u, %d batches (%llu over the capacities, %llu with bad "
                 "indices, %llu plane-masked, %llu in strips), %llu primitives (%llu of kind Gouraud), %llu pixels, %llu back buffers, %llu frames, %llu resets: "

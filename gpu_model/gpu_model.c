@@ -533,26 +533,11 @@ static bool strip_rules_hold(const gpu_model *m, uint32_t ctrl, bool ztest,
     return !ztest || *zclear_after;
 }
 
-/* A batch, contract "A batch, and the frame handshake" steps 1-6, run to
- * completion (the model has no time, so BUSY is never observable). */
-static void run_batch(gpu_model *m, uint32_t tag)
+/* Steps 2-4 of a batch for rows row0 .. row1 (m->row0, m->row1, the last
+ * clamped to the frame). Returns false when the batch broke the count or the
+ * strip rules (its error set, nothing cleared or drawn). */
+static bool run_rows(gpu_model *m, uint32_t ctrl, bool ztest, bool zclear, bool dither)
 {
-    uint32_t ctrl = m->regs.ctrl; /* CTRL is sampled at the doorbell */
-    /* CTRL_ZTEST / CTRL_ZCLEAR only do something on a GPU built with the
-     * depth buffer; otherwise they are ignored. */
-    bool ztest = m->cfg.zbuf && (ctrl & GPU_CTRL_ZTEST_MASK) != 0;
-    bool zclear = m->cfg.zbuf && (ctrl & GPU_CTRL_ZCLEAR_MASK) != 0;
-    bool dither = m->cfg.gouraud && (ctrl & GPU_CTRL_DITHER_MASK) != 0;
-
-    /* 1. Clear ERRORS and the PERF_* counters. STRIP is sampled too: its
-     *    rows, the last clamped to the frame. */
-    m->errors = 0;
-    memset(&m->perf, 0, sizeof m->perf);
-    m->row0 = (int64_t)(m->regs.strip & GPU_STRIP_FIRST_MASK) >> GPU_STRIP_FIRST_LSB;
-    m->row1 = (int64_t)((m->regs.strip & GPU_STRIP_LAST_MASK) >> GPU_STRIP_LAST_LSB);
-    if (m->row1 > (int64_t)m->cfg.fb_height - 1) {
-        m->row1 = (int64_t)m->cfg.fb_height - 1;
-    }
     /* The strip's pixels: rows row0 .. row1 (none when row0 > row1). */
     const size_t strip_first = (size_t)m->row0 * m->cfg.fb_width;
     const size_t strip_end = (m->row0 > m->row1) ? strip_first
@@ -571,46 +556,85 @@ static void run_batch(gpu_model *m, uint32_t tag)
     if (count_bad || strip_bad) {
         /* skip clear and draw; the open strip stays as it was */
         m->errors |= (count_bad ? GPU_ERR_COUNT_MASK : 0u) | (strip_bad ? GPU_ERR_STRIP_MASK : 0u);
-    } else {
-        if (opens_strip) {
-            m->open_strip = m->row0 / m->cfg.strip_rows;
-        }
-        m->open_strip_zclear = strip_zclear;
-        /* 3. Clear the back buffer to CLEAR_COLOR[7:0]; and, independently,
-         *    the depth buffer to 0xFFFF. */
-        if (ctrl & GPU_CTRL_CLEAR_MASK) {
-            /* Through the write mask, like every pixel a batch writes. */
-            uint8_t *fb = back_buffer(m);
-            const uint8_t color = (uint8_t)(m->regs.clear_color & 0xFFu);
-            if (written_bits(m) == 0xFFu) {
-                /* the usual, unmasked clear: fast */
-                memset(fb + strip_first, color, strip_end - strip_first);
-                if (m->shade_probe != NULL) {
-                    memset(probe_word(m, fb, strip_first), 0,
-                           (strip_end - strip_first) * sizeof(uint32_t));
-                }
-            } else {
-                for (size_t i = strip_first; i < strip_end; i++) {
-                    put_pixel(m, fb, i, color);
-                }
+        return false;
+    }
+    if (opens_strip) {
+        m->open_strip = m->row0 / m->cfg.strip_rows;
+    }
+    m->open_strip_zclear = strip_zclear;
+    /* 3. Clear the back buffer to CLEAR_COLOR[7:0]; and, independently,
+     *    the depth buffer to 0xFFFF. */
+    if (ctrl & GPU_CTRL_CLEAR_MASK) {
+        /* Through the write mask, like every pixel a batch writes. */
+        uint8_t *fb = back_buffer(m);
+        const uint8_t color = (uint8_t)(m->regs.clear_color & 0xFFu);
+        if (written_bits(m) == 0xFFu) {
+            /* the usual, unmasked clear: fast */
+            memset(fb + strip_first, color, strip_end - strip_first);
+            if (m->shade_probe != NULL) {
+                memset(probe_word(m, fb, strip_first), 0,
+                       (strip_end - strip_first) * sizeof(uint32_t));
             }
-        }
-        if (zclear) {
-            const uint16_t far = (uint16_t)((1u << m->cfg.zbuf_bits) - 1u);
+        } else {
             for (size_t i = strip_first; i < strip_end; i++) {
-                m->zbuf[i] = far;
+                put_pixel(m, fb, i, color);
             }
         }
-        /* 4. Primitives in order; later ones overwrite earlier ones. */
-        for (uint32_t i = 0; i < m->regs.tri_count; i++) {
-            m->perf.tris_in++;
-            if (run_primitive(m, m->regs.tri_base + i, ztest, dither) ==
-                PRIM_DRAWN) {
-                m->perf.tris_drawn++;
-            } else {
-                m->perf.tris_rejected++;
-            }
+    }
+    if (zclear) {
+        const uint16_t far = (uint16_t)((1u << m->cfg.zbuf_bits) - 1u);
+        for (size_t i = strip_first; i < strip_end; i++) {
+            m->zbuf[i] = far;
         }
+    }
+    /* 4. Primitives in order; later ones overwrite earlier ones. */
+    for (uint32_t i = 0; i < m->regs.tri_count; i++) {
+        m->perf.tris_in++;
+        if (run_primitive(m, m->regs.tri_base + i, ztest, dither) ==
+            PRIM_DRAWN) {
+            m->perf.tris_drawn++;
+        } else {
+            m->perf.tris_rejected++;
+        }
+    }
+    return true;
+}
+
+/* A batch, contract "A batch, and the frame handshake" steps 1-6, run to
+ * completion (the model has no time, so BUSY is never observable). */
+static void run_batch(gpu_model *m, uint32_t tag)
+{
+    uint32_t ctrl = m->regs.ctrl; /* CTRL is sampled at the doorbell */
+    /* CTRL_ZTEST / CTRL_ZCLEAR only do something on a GPU built with the
+     * depth buffer; otherwise they are ignored. */
+    bool ztest = m->cfg.zbuf && (ctrl & GPU_CTRL_ZTEST_MASK) != 0;
+    bool zclear = m->cfg.zbuf && (ctrl & GPU_CTRL_ZCLEAR_MASK) != 0;
+    bool dither = m->cfg.gouraud && (ctrl & GPU_CTRL_DITHER_MASK) != 0;
+    /* CTRL_WALK acts on a strip build only. */
+    const bool walk = m->cfg.strip_rows != 0u && (ctrl & GPU_CTRL_WALK_MASK) != 0;
+    const int64_t last_row = (int64_t)m->cfg.fb_height - 1;
+
+    /* 1. Clear ERRORS and the PERF_* counters. STRIP is sampled too: its
+     *    rows, the last clamped to the frame. */
+    m->errors = 0;
+    memset(&m->perf, 0, sizeof m->perf);
+    m->row0 = (int64_t)(m->regs.strip & GPU_STRIP_FIRST_MASK) >> GPU_STRIP_FIRST_LSB;
+    m->row1 = (int64_t)((m->regs.strip & GPU_STRIP_LAST_MASK) >> GPU_STRIP_LAST_LSB);
+    if (m->row1 > last_row) {
+        m->row1 = last_row;
+    }
+
+    /* 2-4, and with CTRL_WALK again for each strip after the last row's
+     * (contract "The strip buffer"), until one breaks the rules. */
+    while (run_rows(m, ctrl, ztest, zclear, dither) && walk && m->row0 <= m->row1) {
+        const int64_t rows = m->cfg.strip_rows;
+        const int64_t next = (m->row1 / rows + 1) * rows; /* the next strip's first row */
+
+        if (next > last_row) {
+            break;
+        }
+        m->row0 = next;
+        m->row1 = (next + rows - 1 < last_row) ? next + rows - 1 : last_row;
     }
 
     /* 5. Swap, also after ERR_COUNT ("a requested swap still happens").
@@ -683,10 +707,10 @@ const char *gpu_model_config_error(const gpu_model_config *cfg)
         return "zbuf_bits is not 1 .. 16";
     }
     if (cfg->vtx_cap != 0u && !cap_supported(cfg->vtx_cap, GPU_MODEL_MAX_VTX_CAP)) {
-        return "vtx_cap is above the contract's VTX_CAP, the most the model holds";
+        return "vtx_cap is above the contract's VTX_CAP_MAX, what the vertex window holds";
     }
     if (cfg->tri_cap != 0u && !cap_supported(cfg->tri_cap, GPU_MODEL_MAX_TRI_CAP)) {
-        return "tri_cap is above the contract's TRI_CAP, the most the model holds";
+        return "tri_cap is above the contract's TRI_CAP_MAX, what the index window holds";
     }
     if ((cfg->fb_width != 0u || cfg->fb_height != 0u) && !fb_supported(cfg->fb_width, cfg->fb_height)) {
         return "fb_width x fb_height is neither the contract's frame nor its largest";
@@ -700,8 +724,8 @@ const char *gpu_model_config_error(const gpu_model_config *cfg)
 void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
 {
     gpu_model_config c = { GPU_MODEL_DEFAULT_SPAN_W, GPU_MODEL_DEFAULT_LINES,
-                           GPU_MODEL_DEFAULT_ZBUF, GPU_MODEL_MAX_VTX_CAP,
-                           GPU_MODEL_MAX_TRI_CAP, GPU_MODEL_DEFAULT_ZBUF_BITS,
+                           GPU_MODEL_DEFAULT_ZBUF, GPU_MODEL_DEFAULT_VTX_CAP,
+                           GPU_MODEL_DEFAULT_TRI_CAP, GPU_MODEL_DEFAULT_ZBUF_BITS,
                            GPU_MODEL_DEFAULT_WMASK, GPU_MODEL_DEFAULT_GOURAUD,
                            GPU_FB_WIDTH, GPU_FB_HEIGHT, GPU_DEFAULT_STRIP_ROWS };
     if (cfg != NULL) {
@@ -713,10 +737,10 @@ void gpu_model_reset_config(gpu_model *m, const gpu_model_config *cfg)
             c.zbuf_bits = GPU_MODEL_DEFAULT_ZBUF_BITS;
         }
         if (!cap_supported(c.vtx_cap, GPU_MODEL_MAX_VTX_CAP)) {
-            c.vtx_cap = GPU_MODEL_MAX_VTX_CAP; /* 0: the default; else refused */
+            c.vtx_cap = GPU_MODEL_DEFAULT_VTX_CAP; /* 0: the default; else refused */
         }
         if (!cap_supported(c.tri_cap, GPU_MODEL_MAX_TRI_CAP)) {
-            c.tri_cap = GPU_MODEL_MAX_TRI_CAP;
+            c.tri_cap = GPU_MODEL_DEFAULT_TRI_CAP;
         }
         if (!fb_supported(c.fb_width, c.fb_height)) {
             c.fb_width = GPU_FB_WIDTH; /* 0 x 0: the default; else refused */

@@ -53,16 +53,20 @@
 #define GPU_MODEL_DEFAULT_ZBUF_BITS GPU_DEFAULT_ZBUF_BITS
 #define GPU_MODEL_DEFAULT_GOURAUD (GPU_DEFAULT_ENABLE_GOURAUD != 0u)
 
-/* The largest capacities the model holds: the contract's limits, also the
- * RTL's parameter defaults.  A GPU may be built with smaller buffers. */
-#define GPU_MODEL_MAX_VTX_CAP GPU_VTX_CAP
-#define GPU_MODEL_MAX_TRI_CAP GPU_TRI_CAP
+/* The largest capacities the model holds: what the buffers' windows hold
+ * (the contract's VTX_CAP_MAX, TRI_CAP_MAX); by default it has the contract's
+ * limits, the RTL's parameter defaults.  A GPU may be built with either
+ * smaller or larger buffers. */
+#define GPU_MODEL_MAX_VTX_CAP GPU_VTX_CAP_MAX
+#define GPU_MODEL_MAX_TRI_CAP GPU_TRI_CAP_MAX
+#define GPU_MODEL_DEFAULT_VTX_CAP GPU_VTX_CAP
+#define GPU_MODEL_DEFAULT_TRI_CAP GPU_TRI_CAP
 
 /* The bits of CTRL the contract defines; CTRL keeps (and reads back) only
  * these, whatever the build options. */
 #define GPU_MODEL_CTRL_BITS \
     (GPU_CTRL_CLEAR_MASK | GPU_CTRL_SWAP_MASK | GPU_CTRL_ZTEST_MASK | \
-     GPU_CTRL_ZCLEAR_MASK | GPU_CTRL_DITHER_MASK)
+     GPU_CTRL_ZCLEAR_MASK | GPU_CTRL_DITHER_MASK | GPU_CTRL_WALK_MASK)
 
 /*
  * The build options the modelled GPU was "built" with; CAPS reports them.
@@ -77,7 +81,7 @@
  *           before the option existed ({span_w, lines, zbuf}) leaves it false.
  *   vtx_cap, tri_cap: VTX_CAP and TRI_CAP, the buffers' capacities in
  *           vertices and primitives, 1 ... GPU_MODEL_MAX_*_CAP; 0 means the
- *           contract's (so a config written before these fields, or zeroed,
+ *           contract's limits (so a config written before these fields, or zeroed,
  *           is the default GPU); any other value is replaced by the
  *           contract's, like span_w (gpu_model_config_error says why).  They
  *           decide the VTX_CAP / TRI_CAP registers, the ERR_COUNT check

@@ -90,7 +90,7 @@ module gpu_core #(
                            | (32'(ENABLE_GOURAUD != 0) << gpu_pkg::GPU_CAPS_GOURAUD_LSB);
 
     // Batch description and status between the register block and the rasterizer.
-    wire        ctrl_clear, ctrl_swap, ctrl_ztest, ctrl_zclear, ctrl_dither, start, soft_reset;
+    wire        ctrl_clear, ctrl_swap, ctrl_ztest, ctrl_zclear, ctrl_dither, ctrl_walk, start, soft_reset;
     wire        busy, front, swap;
     wire [31:0] vtx_base, vtx_count, tri_base, tri_count, doorbell_tag, done_seq, frame_count;
     wire [31:0] strip;                    // STRIP: the batch's rows
@@ -126,7 +126,7 @@ module gpu_core #(
         .bus_valid(bus_valid), .bus_write(bus_write), .bus_addr(bus_addr), .bus_wdata(bus_wdata),
         .bus_rdata(bus_rdata), .bus_rvalid(bus_rvalid),
         .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .ctrl_ztest(ctrl_ztest),
-        .ctrl_zclear(ctrl_zclear), .ctrl_dither(ctrl_dither), .vtx_base(vtx_base), .vtx_count(vtx_count),
+        .ctrl_zclear(ctrl_zclear), .ctrl_dither(ctrl_dither), .ctrl_walk(ctrl_walk), .vtx_base(vtx_base), .vtx_count(vtx_count),
         .tri_base(tri_base), .tri_count(tri_count), .clear_color(clear_color), .fb_wmask(fb_wmask),
         .strip(strip), .doorbell_tag(doorbell_tag), .start(start), .soft_reset(soft_reset),
         .vtx_wr_en(vtx_wr_en), .vtx_wr_addr(vtx_wr_addr), .idx_wr_en(idx_wr_en),
@@ -247,7 +247,7 @@ module gpu_core #(
                  .ENABLE_GOURAUD(ENABLE_GOURAUD), .STRIP_ROWS(STRIP_ROWS), .Z_EPOCH_BITS(Z_EPOCH_BITS)) u_raster (
         .clk(clk), .rst(rst), .soft_reset(soft_reset),
         .start(start), .ctrl_clear(ctrl_clear), .ctrl_swap(ctrl_swap), .ctrl_ztest(ctrl_ztest),
-        .ctrl_zclear(ctrl_zclear), .ctrl_dither(ctrl_dither), .vtx_base(vtx_base), .vtx_count(vtx_count),
+        .ctrl_zclear(ctrl_zclear), .ctrl_dither(ctrl_dither), .ctrl_walk(ctrl_walk), .vtx_base(vtx_base), .vtx_count(vtx_count),
         .tri_base(tri_base), .tri_count(tri_count),
         .clear_color(clear_color), .strip(strip), .planes_all(fb_wmask == 2'b11),
         .doorbell_tag(doorbell_tag),

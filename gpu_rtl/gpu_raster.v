@@ -12,7 +12,10 @@
 // cleared) and checks each batch against the rules in S_CHECK. A batch that opens a strip waits in
 // S_OPEN until the other bank's flush is over, then flushes the open strip's bank and draws into the
 // other; CTRL.SWAP closes the open strip in S_CLOSE and waits there until no flush runs. The frame
-// addresses it puts out stay the frame's: gpu_core takes strip_base off them.
+// addresses it puts out stay the frame's: gpu_core takes strip_base off them. A batch with
+// CTRL.WALK goes from S_DRAIN back to S_CHECK on the next strip's rows while the frame has one, so
+// one doorbell draws a frame of strips (the setup fetches every primitive again for each; counters
+// and errors add up; a strip that breaks a rule ends the walk as an error ends a batch).
 // The clear off the drawing's path: each flush leaves its bank filled with CLEAR_COLOR as it is
 // then (flush_colour), and the raster remembers, per bank, that colour and the spans it covers. A
 // batch that opens a strip in a bank so filled, clearing it to the same colour, draws at once: its
@@ -65,6 +68,7 @@ module gpu_raster #(
     input  wire                ctrl_ztest,
     input  wire                ctrl_zclear,
     input  wire                ctrl_dither,
+    input  wire                ctrl_walk,    // draw the batch again for each strip after its rows'
     input  wire [31:0]         vtx_base,
     input  wire [31:0]         vtx_count,
     input  wire [31:0]         tri_base,
@@ -138,6 +142,14 @@ module gpu_raster #(
     reg [ROW_W-1:0] row_first_q, row_last_q;
     reg rows_empty_q;
     reg [WAW-1:0] clear_last_q;
+    // CTRL.WALK (strip builds): after the batch's rows, the next strip's rows, while the frame has
+    // one; the batch runs again from S_CHECK on them.
+    wire [ROW_W:0] walk_first = (ROW_W + 1)'(({1'b0, row_last_q} >> STRIP_L) + 1'b1) << STRIP_L;
+    wire [ROW_W:0] walk_end = walk_first + (ROW_W + 1)'(STRIP_ROWS - 1);
+    wire [ROW_W-1:0] walk_last = (walk_end > (ROW_W + 1)'(FB_HEIGHT - 1)) ? ROW_W'(FB_HEIGHT - 1)
+                                                                         : walk_end[ROW_W-1:0];
+    wire walk_next = STRIP_ROWS > 0 && ctrl_walk && !rows_empty_q
+                  && walk_first <= (ROW_W + 1)'(FB_HEIGHT - 1);
 
     // ---- the strip buffer's state and rules (STRIP_ROWS > 0; contract "The strip buffer") ----
     reg open_q;                     // a strip is open: its index, bank, first span, spans
@@ -373,7 +385,15 @@ module gpu_raster #(
                 S_DRAW: state_q <= S_DRAIN;  // from here the walker takes descriptors; S_DRAIN waits
                                              // for setup and walker to be idle (the setup started in S_CHECK)
                 S_DRAIN: if (pipeline_empty) begin
-                    state_q <= ctrl_swap ? S_SWAP : S_FINISH;
+                    if (walk_next) begin
+                        row_first_q <= walk_first[ROW_W-1:0];
+                        row_last_q <= walk_last;
+                        clear_addr_q <= WAW'(32'(walk_first[ROW_W-1:0]) * COLS);
+                        clear_last_q <= WAW'(32'(walk_last) * COLS + (COLS - 1));
+                        state_q <= S_CHECK;
+                    end else begin
+                        state_q <= ctrl_swap ? S_SWAP : S_FINISH;
+                    end
                 end
                 S_CLOSE: begin  // the swap's wait for the strips (none without a strip buffer)
                     if (close_now) begin

@@ -35,6 +35,7 @@ module gpu_regs #(
     output reg               ctrl_ztest,
     output reg               ctrl_zclear,
     output reg               ctrl_dither,
+    output reg               ctrl_walk,
     output reg  [31:0]       vtx_base,
     output reg  [31:0]       vtx_count,
     output reg  [31:0]       tri_base,
@@ -98,6 +99,7 @@ module gpu_regs #(
             ctrl_ztest <= 1'b0;
             ctrl_zclear <= 1'b0;
             ctrl_dither <= 1'b0;
+            ctrl_walk <= 1'b0;
             soft_reset <= 1'b0;
             reset_value_q <= 32'd0;
             vtx_base <= 32'd0;
@@ -126,6 +128,7 @@ module gpu_regs #(
                         ctrl_ztest <= bus_wdata[gpu_pkg::GPU_CTRL_ZTEST_LSB];
                         ctrl_zclear <= bus_wdata[gpu_pkg::GPU_CTRL_ZCLEAR_LSB];
                         ctrl_dither <= bus_wdata[gpu_pkg::GPU_CTRL_DITHER_LSB];
+                        ctrl_walk <= bus_wdata[gpu_pkg::GPU_CTRL_WALK_LSB];
                     end
                     gpu_pkg::GPU_REG_VTX_BASE:    vtx_base <= bus_wdata;
                     gpu_pkg::GPU_REG_VTX_COUNT:   vtx_count <= bus_wdata;
@@ -159,7 +162,8 @@ module gpu_regs #(
                            | (32'(ctrl_swap) << gpu_pkg::GPU_CTRL_SWAP_LSB)
                            | (32'(ctrl_ztest) << gpu_pkg::GPU_CTRL_ZTEST_LSB)
                            | (32'(ctrl_zclear) << gpu_pkg::GPU_CTRL_ZCLEAR_LSB)
-                           | (32'(ctrl_dither) << gpu_pkg::GPU_CTRL_DITHER_LSB);
+                           | (32'(ctrl_dither) << gpu_pkg::GPU_CTRL_DITHER_LSB)
+                           | (32'(ctrl_walk) << gpu_pkg::GPU_CTRL_WALK_LSB);
     wire [31:0] status_value = (32'(busy) << gpu_pkg::GPU_STATUS_BUSY_LSB)
                              | (32'(front) << gpu_pkg::GPU_STATUS_FRONT_LSB);
     wire [31:0] errors_value = (32'(raster_errors[0]) << gpu_pkg::GPU_ERR_VTX_INDEX_LSB)

@@ -72,36 +72,6 @@
  * their memory, sized for the largest of them: app.c is the one file of the program that says. */
 #include "scenes/scene_set.h"
 
-/* Everything the loop owns. One instance, static, handed to the pure code by pointer; the frame's
- * arrays and the scene's state are this program's storage (scene_set.h), sized per build. */
-struct app {
-    struct gpu_dev gpu;
-    struct scene scene;
-    struct render_frame frame;
-    struct batch_words words;
-    struct input_decoder decoder;
-    uint16_t palette[PAL_ENTRIES];
-    bool wireframe;
-    bool anaglyph;
-    bool depth_test;
-    uint32_t write_mask;     /* FB_WRITE_MASK as last written; APP_WRITE_MASK_UNKNOWN at first */
-    uint32_t lost_in_a_row;  /* consecutive frames dropped by the watchdog */
-#if FW_WITH_UPLOAD
-    struct upload_rx upload;
-    bool model_from_upload;  /* the model scene's source is the staging buffer */
-#endif
-#if FW_USB_KEYBOARD
-    struct usb_keys usb;     /* the USB keyboard's own decoder, Shift and held key */
-    int usb_state;           /* bsp_usb_state() as last reported */
-#endif
-#if FW_WITH_STRIPS
-    uint32_t strip_rows;       /* lines per strip a frame is sent in; 0: whole */
-    struct strip_bins strips;  /* the pass's primitives binned into strips (render/strips.h) */
-#endif
-};
-
-/* ---- the frame's counters: one struct, changed only by these functions ----------------------- */
-
 /* What one frame sent and what the GPU reported, summed over its batches and passes, and where
  * its instructions went. */
 struct frame_stats {
@@ -130,6 +100,42 @@ struct frame_span {
     uint64_t instr;
     uint64_t cycles;
 };
+
+/* Everything the loop owns. One instance, static, handed to the pure code by pointer; the frame's
+ * arrays and the scene's state are this program's storage (scene_set.h), sized per build. */
+struct app {
+    struct gpu_dev gpu;
+    struct scene scene;
+    struct render_frame frame;
+    struct batch_words words;
+    struct input_decoder decoder;
+    uint16_t palette[PAL_ENTRIES];
+    bool wireframe;
+    bool anaglyph;
+    bool depth_test;
+    uint32_t write_mask;     /* FB_WRITE_MASK as last written; APP_WRITE_MASK_UNKNOWN at first */
+    uint32_t lost_in_a_row;  /* consecutive frames dropped by the watchdog */
+    /* The frame whose last batch the GPU may still be drawing (its swap waits for vertical
+     * blank) while the CPU computes the next: its number, tag and statistics (app_settle). */
+    bool pending;
+    unsigned pending_frame;
+    uint32_t pending_tag;
+    struct frame_stats pending_st;
+#if FW_WITH_UPLOAD
+    struct upload_rx upload;
+    bool model_from_upload;  /* the model scene's source is the staging buffer */
+#endif
+#if FW_USB_KEYBOARD
+    struct usb_keys usb;     /* the USB keyboard's own decoder, Shift and held key */
+    int usb_state;           /* bsp_usb_state() as last reported */
+#endif
+#if FW_WITH_STRIPS
+    uint32_t strip_rows;       /* lines per strip a frame is sent in; 0: whole */
+    struct strip_bins strips;  /* the pass's primitives binned into strips (render/strips.h) */
+#endif
+};
+
+/* ---- the frame's counters: one struct, changed only by these functions ----------------------- */
 
 static void frame_stats_begin(struct frame_stats *st)
 {
@@ -385,15 +391,19 @@ static bool app_eye_planes(const struct app *app)
     return FW_WITH_ANAGLYPH && gpu_caps_wmask(app->gpu.info.caps);
 }
 
+static void app_settle(struct app *app, struct frame_stats *now);
+
 /* The palette for the view the anaglyph toggle just chose: the anaglyph's two planes
- * (palette_build_anaglyph) or the materials. Between frames: no batch is pending. */
-static void app_anaglyph_palette(struct app *app)
+ * (palette_build_anaglyph) or the materials, once the last frame's batch is done (st: the frame
+ * being counted). */
+static void app_anaglyph_palette(struct app *app, struct frame_stats *st)
 {
     int rc;
 
     if (!app_eye_planes(app)) {
         return;  /* without the mask the eyes use the material palette's red and cyan ramps */
     }
+    app_settle(app, st);
     if (app->anaglyph) {
         palette_build_anaglyph(app->palette);
     } else {
@@ -677,6 +687,8 @@ static void app_attach_words(struct app *app)
 {
     app->words.vtx = gpu_buffer_words(GPU_WIN_VTX);
     app->words.prim = gpu_buffer_words(GPU_WIN_IDX);
+    app->words.vtx_room = GPU_VTX_CAP_MAX;  /* the windows: a batch takes what the GPU holds */
+    app->words.prim_room = GPU_TRI_CAP_MAX;
 }
 
 /* After the boot banner: a platform that promised mapped buffers must have them. */
@@ -696,11 +708,14 @@ static uint32_t app_prim_staging[GPU_TRI_CAP * GPU_PRIM_WORDS];
 
 static void app_attach_words(struct app *app)
 {
+    static const struct batch_words staged = BATCH_WORDS_ON(app_vtx_staging, app_prim_staging);
+
     app->words.vtx = gpu_buffer_words(GPU_WIN_VTX);
     app->words.prim = gpu_buffer_words(GPU_WIN_IDX);
+    app->words.vtx_room = GPU_VTX_CAP_MAX;
+    app->words.prim_room = GPU_TRI_CAP_MAX;
     if (app->words.vtx == NULL || app->words.prim == NULL) {
-        app->words.vtx = app_vtx_staging;
-        app->words.prim = app_prim_staging;
+        app->words = staged;  /* the contract's default capacities: larger GPUs get batches of that size */
     }
 }
 
@@ -804,7 +819,7 @@ static void app_read_uart(struct app *app, struct input_counts *keys)
 
 /* Keys that belong to the loop rather than the scene. Returns false to quit. */
 static bool app_global_keys(struct app *app, const struct input_counts *keys,
-                            struct app_notes *notes)
+                            struct app_notes *notes, struct frame_stats *st)
 {
     notes->help = keys->n[KEY_HELP] != 0u;
     notes->msg_count = 0;
@@ -836,7 +851,7 @@ static bool app_global_keys(struct app *app, const struct input_counts *keys,
                             "passes would draw each strip twice");
         } else if (FW_WITH_ANAGLYPH) {
             app->anaglyph = !app->anaglyph;
-            app_anaglyph_palette(app);
+            app_anaglyph_palette(app, st);
             app_note(notes, app->anaglyph ? "anaglyph on (left eye red, right eye cyan)"
                                           : "anaglyph off");
         } else {
@@ -872,23 +887,35 @@ static uint32_t app_batch_ctrl(const struct app *app, bool first, bool clear, bo
     return ctrl;
 }
 
-/* What a group of batches sends: the pass's primitives in draw order, a strip's list
- * (render/strips.h), or no primitives at all: the batch last sent, rung again for another strip
- * (the GPU's binning, FW_STRIP_WALK). */
-enum app_group { APP_GROUP_PASS, APP_GROUP_LIST, APP_GROUP_AGAIN };
+/* What a group of batches sends: the pass's primitives in draw order, or a strip's list
+ * (render/strips.h). */
+enum app_group { APP_GROUP_PASS, APP_GROUP_LIST };
+
+/* The GPU did not finish a batch: reset it (the frame is abandoned). */
+static void app_watchdog_fired(struct app *app, unsigned frame_no, uint32_t batch, uint32_t tag)
+{
+    printf("watchdog: frame %u batch %lu: GPU did not finish (DONE_SEQ=0x%08lx, expected "
+           "tag 0x%08lx after %lu polls): resetting it, dropping the frame\n",
+           frame_no, (unsigned long)batch, (unsigned long)app->gpu.last_done_seq,
+           (unsigned long)tag, (unsigned long)FW_GPU_MAX_POLLS);
+    gpu_reset(&app->gpu);
+}
 
 /*
  * Send a group of batches: the primitives of the cursor (`what`: the pass's draw order, or a
- * strip's list; or the last batch again, one batch, cur unused), drawing rows `strip`; its first
- * batch clears (app_batch_ctrl), and when `final` (the frame's last group) its last batch swaps.
- * Returns false when the watchdog fired (the GPU has been reset and the frame is abandoned).
- * Inlined into each caller, so that each keeps its own path (`what` a constant): out of line, with
- * the strips' caller beside the whole frame's, it cost the whole frame 153 instructions (tetra,
- * make bench-strips).
+ * strip's list), drawing rows `strip`; its first batch clears (app_batch_ctrl), and when `final`
+ * (the frame's last group) its last batch swaps. `walk` (0 or GPU_CTRL_WALK_MASK) goes into every
+ * batch's CTRL. The frame's last batch is not waited for: it is left pending (app->pending), and
+ * the CPU goes on with the next frame while the GPU draws and waits for vertical blank
+ * (app_settle). Returns false when the watchdog fired (the GPU has been reset and the frame is
+ * abandoned). Inlined into each caller, so that each keeps its own path (`what` a constant): out
+ * of line, with the strips' caller beside the whole frame's, it cost the whole frame 153
+ * instructions (tetra, make bench-strips).
  */
 static inline __attribute__((always_inline)) bool
 app_send_group(struct app *app, unsigned frame_no, struct batch_cursor *cur, enum app_group what,
-               bool clear, bool final, uint32_t strip, uint8_t clear_color, struct frame_stats *tot)
+               bool clear, bool final, uint32_t strip, uint32_t walk, uint8_t clear_color,
+               struct frame_stats *tot)
 {
     bool first = true;
     bool done;
@@ -903,42 +930,38 @@ app_send_group(struct app *app, unsigned frame_no, struct batch_cursor *cur, enu
         int rc;
 
         t0 = frame_stats_mark();
-        if (what == APP_GROUP_AGAIN) {
-            done = true;
-            t1 = frame_stats_batch_filled(tot, t0);
-            rc = gpu_ring_again(&app->gpu, app_batch_ctrl(app, true, clear, final), strip, &tag);
-            batch.prim_count = 0;  /* none sent */
+        if (what == APP_GROUP_LIST) {
+            batch_fill_list(cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap,
+                            &app->words);
+            done = batch_list_done(cur);
         } else {
-            if (what == APP_GROUP_LIST) {
-                batch_fill_list(cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap,
-                                &app->words);
-                done = batch_list_done(cur);
-            } else {
-                batch_fill(cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap,
-                           &app->words);
-                done = batch_done(cur, &app->frame);
-            }
-            t1 = frame_stats_batch_filled(tot, t0);
-            batch = batch_descriptor(&app->words, app_batch_ctrl(app, first, clear, final && done),
-                                     clear_color);
-            batch.strip = strip;
-            rc = gpu_submit_batch(&app->gpu, &batch, &tag);
+            batch_fill(cur, &app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap,
+                       &app->words);
+            done = batch_done(cur, &app->frame);
         }
+        t1 = frame_stats_batch_filled(tot, t0);
+        batch = batch_descriptor(&app->words,
+                                 app_batch_ctrl(app, first, clear, final && done) | walk,
+                                 clear_color);
+        batch.strip = strip;
+        rc = gpu_submit_batch(&app->gpu, &batch, &tag);
         if (rc != GPU_OK) {
             printf("error: frame %u: batch not submitted: %s\n", frame_no, gpu_strerror(rc));
             app_fail(FW_EXIT_GPU_SUBMIT);
         }
         frame_stats_add_batch(tot, batch.prim_count);
+        if (final && done) {
+            frame_stats_submitted(tot, t1);
+            app->pending = true;
+            app->pending_tag = tag;
+            return true;
+        }
 
         wait = frame_stats_wait_begin(tot, t1);
         rc = app_wait_batch(app, tag);
         t0 = frame_stats_wait_end(tot, wait);
         if (rc != GPU_OK) {
-            printf("watchdog: frame %u batch %lu: GPU did not finish (DONE_SEQ=0x%08lx, expected "
-                   "tag 0x%08lx after %lu polls): resetting it, dropping the frame\n",
-                   frame_no, (unsigned long)tot->batches, (unsigned long)app->gpu.last_done_seq,
-                   (unsigned long)tag, (unsigned long)FW_GPU_MAX_POLLS);
-            gpu_reset(&app->gpu);
+            app_watchdog_fired(app, frame_no, tot->batches, tag);
             return false;
         }
         gpu_read_stats(&app->gpu, &stats);
@@ -949,46 +972,50 @@ app_send_group(struct app *app, unsigned frame_no, struct batch_cursor *cur, enu
     return true;
 }
 
-#if FW_STRIP_WALK
 /*
- * The GPU's binning (FW_STRIP_WALK) on a GPU with a strip buffer: the pass whole for the first
- * strip; when it was one batch, that batch rung again for every other strip (the GPU fetches and
- * sets up all its primitives each time and draws what reaches the strip), else the pass sent again
- * whole for each. Each strip's first batch clears it, the frame's last swaps.
+ * The frame left pending (app_send_group), finished: its last batch waited for, its GPU counters
+ * added, its statistics printed (app_statistics). Called before anything the GPU must not be busy
+ * for (buffers, batch registers, the palette) and at the end; the wait and the printing are left
+ * out of the frame `now`'s counts (NULL: none is being counted).
  */
-static bool app_submit_walk(struct app *app, unsigned frame_no, bool clear, bool last_pass,
-                            uint8_t clear_color, struct frame_stats *tot)
+static void app_statistics(struct app *app, unsigned frame, bool completed,
+                           const struct frame_stats *st);
+
+static void app_settle(struct app *app, struct frame_stats *now)
 {
-    const uint32_t rows = app->strip_rows;
-    const uint32_t height = gpu_fb_height(&app->gpu.info);
-    bool one_batch = false;
+    const struct frame_span span = frame_span_begin();
+    struct gpu_stats stats;
+    bool completed = true;
 
-    for (uint32_t first = 0; first < height; first += rows) {
-        const uint32_t last = (height - first > rows) ? first + rows - 1u : height - 1u;
-        const bool final = last_pass && last == height - 1u;
-        const uint32_t batches = tot->batches;
-        struct batch_cursor cur;
-
-        batch_begin(&cur);
-        if (!app_send_group(app, frame_no, &cur, one_batch ? APP_GROUP_AGAIN : APP_GROUP_PASS,
-                            clear, final, gpu_strip(first, last), clear_color, tot)) {
-            return false;
-        }
-        one_batch = tot->batches == batches + 1u;
+    if (!app->pending) {
+        return;
     }
-    return true;
+    app->pending = false;
+    if (app_wait_batch(app, app->pending_tag) != GPU_OK) {
+        app_watchdog_fired(app, app->pending_frame, app->pending_st.batches, app->pending_tag);
+        completed = false;
+    } else {
+        gpu_read_stats(&app->gpu, &stats);
+        frame_stats_add_gpu(&app->pending_st, &stats);
+    }
+    app_statistics(app, app->pending_frame, completed, &app->pending_st);
+    if (now != NULL) {
+        frame_stats_exclude(now, span);
+    }
 }
-#endif
 
 #if FW_WITH_STRIPS
 /*
- * The pass in strips of app->strip_rows lines: each strip's batches carry the primitives that
- * reach it, in draw order, and draw its rows only. On a GPU that draws into its frame, a strip no
- * primitive reaches is cleared with the next one that is drawn (their rows as one band: the
- * band's primitives reach none of the empty strip's rows), and after the last strip drawn the rows
- * left are cleared by one more batch where the pass clears. A GPU with a strip buffer is sent
- * every strip, each with its own rows, its first batch clearing it (the contract's rules for
- * opening a strip). The frame's last batch swaps.
+ * The pass in strips of app->strip_rows lines. On a GPU with a strip buffer, a pass that fits one
+ * batch (FW_STRIP_WALK) is sent once, with CTRL.WALK: the GPU draws it for the first strip and
+ * then for every other, fetching all its primitives each time and drawing what reaches the strip
+ * (the GPU's binning: no work of the firmware's). Otherwise each strip's batches carry the
+ * primitives that reach it, in draw order, and draw its rows only (the firmware's binning). On a
+ * GPU that draws into its frame, a strip no primitive reaches is cleared with the next one that is
+ * drawn (their rows as one band: the band's primitives reach none of the empty strip's rows), and
+ * after the last strip drawn the rows left are cleared by one more batch where the pass clears. A
+ * GPU with a strip buffer is sent every strip, each with its own rows, its first batch clearing it
+ * (the contract's rules for opening a strip). The frame's last batch swaps.
  */
 static bool app_submit_strips(struct app *app, unsigned frame_no, bool clear, bool last_pass,
                               uint8_t clear_color, struct frame_stats *tot)
@@ -996,17 +1023,19 @@ static bool app_submit_strips(struct app *app, unsigned frame_no, bool clear, bo
     struct strip_bins *b = &app->strips;
     const bool every_strip = app_gpu_strips(app);
     uint32_t band_first = 0;  /* the first row not yet drawn or cleared */
+    struct batch_cursor cur;
 
-#if FW_STRIP_WALK
-    if (every_strip) {
-        return app_submit_walk(app, frame_no, clear, last_pass, clear_color, tot);
+    if (FW_STRIP_WALK && every_strip &&
+        batch_whole_fits(&app->frame, app->gpu.info.vtx_cap, app->gpu.info.tri_cap, &app->words)) {
+        batch_begin(&cur);
+        return app_send_group(app, frame_no, &cur, APP_GROUP_PASS, clear, last_pass,
+                              gpu_strip(0, app->strip_rows - 1u), GPU_CTRL_WALK_MASK, clear_color,
+                              tot);
     }
-#endif
     strips_bin(b, &app->frame, app->strip_rows, gpu_fb_height(&app->gpu.info));
     for (uint32_t s = 0; s < b->count; s++) {
         const uint32_t pos = strips_take(b, &app->frame, s);
         const bool final = last_pass && s + 1u == b->count;
-        struct batch_cursor cur;
 
         if (pos == RENDER_NO_POSITION && s + 1u < b->count && !every_strip) {
             continue;
@@ -1016,7 +1045,7 @@ static bool app_submit_strips(struct app *app, unsigned frame_no, bool clear, bo
         }
         batch_begin_list(&cur, pos);
         if (!app_send_group(app, frame_no, &cur, APP_GROUP_LIST, clear, final,
-                            gpu_strip(band_first, strips_last_row(b, s)), clear_color, tot)) {
+                            gpu_strip(band_first, strips_last_row(b, s)), 0, clear_color, tot)) {
             return false;
         }
         band_first = strips_last_row(b, s) + 1u;
@@ -1044,7 +1073,7 @@ static bool app_submit(struct app *app, unsigned frame_no, bool clear, bool last
     }
 #endif
     batch_begin(&cur);
-    return app_send_group(app, frame_no, &cur, APP_GROUP_PASS, clear, last_pass, GPU_STRIP_WHOLE,
+    return app_send_group(app, frame_no, &cur, APP_GROUP_PASS, clear, last_pass, GPU_STRIP_WHOLE, 0,
                           clear_color, tot);
 }
 
@@ -1214,7 +1243,7 @@ static bool app_input(struct app *app, struct input_counts *keys, struct app_not
     app_read_usb(app, keys);
     app_print_upload(app, st);
     app_print_usb(app, st);
-    return app_global_keys(app, keys, notes);
+    return app_global_keys(app, keys, notes, st);
 }
 
 /* Update: the scene's camera keys, animation and own keys (or the measurement's camera). */
@@ -1238,6 +1267,7 @@ static bool app_draw(struct app *app, unsigned frame, struct frame_stats *st)
         const int eye = app->anaglyph ? ((p == 0) ? -1 : 1) : 0;
 
         app_render_pass(app, eye, st);
+        app_settle(app, st);  /* the last frame's batch: done before this one's are written */
         app_set_write_mask(app, eye);
         completed = app_submit(app, frame, p == 0 || app_eye_planes(app), p == passes - 1, st);
         frame_stats_add_pass(st, &app->frame.stats);
@@ -1296,6 +1326,7 @@ int app_run(void)
 
         frame_stats_begin(&st);
         if (!app_input(app, &keys, &notes, &st)) {
+            app_settle(app, NULL);
             printf("quit at frame %u\n", frame);
             break;
         }
@@ -1303,8 +1334,14 @@ int app_run(void)
         completed = app_draw(app, frame, &st);
         frame_stats_end(&st);
         app_print_notes(app, &notes, mode_before, &ev);
-        app_statistics(app, frame, completed, &st);
+        if (completed && app->pending) {
+            app->pending_frame = frame;  /* its statistics once its last batch is done */
+            app->pending_st = st;
+        } else {
+            app_statistics(app, frame, completed, &st);
+        }
     }
+    app_settle(app, NULL);
     if (app->gpu.resets != 0u) {
         printf("watchdog: %lu GPU reset(s) in this run\n", (unsigned long)app->gpu.resets);
     }

@@ -44,13 +44,13 @@
 #error "FW_STRIP_ROWS needs FW_WITH_STRIPS"
 #endif
 
-/* The GPU's binning instead of the firmware's, on a GPU with a strip buffer (a measurement: make
- * bench-strips, docs/strips.md): 1 sends a pass that fits one batch once and rings it again for
- * every other strip, the GPU walking all its primitives each time and keeping what reaches the
- * strip; a pass of several batches is sent again whole for each strip. 0, the default: the
- * firmware bins (render/strips.c). */
+/* The GPU's binning, on a GPU with a strip buffer: 1 (the default where the binning is built in) sends a pass that fits one
+ * batch once with CTRL.WALK, the GPU drawing it for every strip (fetching all its primitives each
+ * time and keeping what reaches the strip); a pass of several batches is binned by the firmware
+ * (render/strips.c). 0: the firmware always bins (a measurement: make bench-strips,
+ * docs/strips.md). */
 #ifndef FW_STRIP_WALK
-#define FW_STRIP_WALK 0
+#define FW_STRIP_WALK FW_WITH_STRIPS
 #endif
 #if FW_STRIP_WALK && !FW_WITH_STRIPS
 #error "FW_STRIP_WALK needs FW_WITH_STRIPS"

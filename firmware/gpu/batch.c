@@ -106,7 +106,7 @@ static void batch_fill_whole(struct render_frame *f, struct batch_words *out)
     for (uint32_t i = 0; i < np; i++) {
         const struct render_prim *p = &prim[render_draw_index(f, i)];
 
-        /* nv <= vtx_cap <= GPU_VTX_CAP: every vertex number fits its 16-bit field (a narrow
+        /* nv <= vtx_cap <= GPU_VTX_CAP_MAX: every vertex number fits its 16-bit field (a narrow
          * primitive's words come back as they were: the compiler folds the unpacking away). */
         const struct batch_prim_fields r = batch_prim_read(p);
 
@@ -138,6 +138,36 @@ static inline uint32_t batch_put_outline(uint32_t *pw, const uint32_t s[3], uint
     return n;
 }
 
+/* The capacities a batch takes: the GPU's, clamped to out's room and to a minimum of 3 vertices
+ * and 1 primitive (3 with outlines: an outline's three lines always fit an empty batch). */
+static inline void batch_clamp_caps(const struct render_frame *f, const struct batch_words *out,
+                                    uint32_t *vtx_cap, uint32_t *tri_cap)
+{
+    uint32_t v = *vtx_cap;
+    uint32_t t = *tri_cap;
+
+    v = (v > out->vtx_room) ? out->vtx_room : v;
+    t = (t > out->prim_room) ? out->prim_room : t;
+    v = (v < 3u) ? 3u : v;
+    t = (t < 1u) ? 1u : t;
+    t = (t < 3u && f->outline_count != 0u) ? 3u : t;
+    *vtx_cap = v;
+    *tri_cap = t;
+}
+
+static inline bool batch_whole_fits_clamped(const struct render_frame *f, uint32_t vtx_cap,
+                                            uint32_t tri_cap)
+{
+    return f->outline_count == 0u && f->vert_count <= vtx_cap && f->prim_count <= tri_cap;
+}
+
+bool batch_whole_fits(const struct render_frame *f, uint32_t vtx_cap, uint32_t tri_cap,
+                      const struct batch_words *out)
+{
+    batch_clamp_caps(f, out, &vtx_cap, &tri_cap);
+    return batch_whole_fits_clamped(f, vtx_cap, tri_cap);
+}
+
 /* batch_fill and batch_fill_list: the next primitives from the draw order, or from a list linked
  * through sort_tmp (render/strips.h), a constant at each call. */
 static inline __attribute__((always_inline)) void batch_fill_from(struct batch_cursor *cur,
@@ -163,15 +193,9 @@ static inline __attribute__((always_inline)) void batch_fill_from(struct batch_c
     uint32_t vsize = sizeof(struct proj_vertex);
 
     FW_AS_MULTIPLIER(vsize);
-    vtx_cap = (vtx_cap > GPU_VTX_CAP) ? GPU_VTX_CAP : vtx_cap;
-    tri_cap = (tri_cap > GPU_TRI_CAP) ? GPU_TRI_CAP : tri_cap;
-    vtx_cap = (vtx_cap < 3u) ? 3u : vtx_cap;
-    tri_cap = (tri_cap < 1u) ? 1u : tri_cap;
-    /* With outlines, at least 3: an outline's three lines always fit an empty batch. */
-    tri_cap = (tri_cap < 3u && f->outline_count != 0u) ? 3u : tri_cap;
+    batch_clamp_caps(f, out, &vtx_cap, &tri_cap);
 
-    if (!list && first == 0u && f->outline_count == 0u && f->vert_count <= vtx_cap &&
-        total <= tri_cap) {
+    if (!list && first == 0u && batch_whole_fits_clamped(f, vtx_cap, tri_cap)) {
         batch_fill_whole(f, out);
         cur->next = total;
         return;

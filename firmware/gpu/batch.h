@@ -30,14 +30,25 @@
 #include "gpu/gpu.h"
 #include "render/render.h"
 
-/* Where batch_fill writes: room for GPU_VTX_CAP vertices and GPU_TRI_CAP primitives each, either
- * staging arrays the driver copies from or the GPU's own buffers (gpu_buffer_words). */
+/* Where batch_fill writes: staging arrays the driver copies from or the GPU's own buffers
+ * (gpu_buffer_words), with room for vtx_room vertices and prim_room primitives (a batch never
+ * takes more, whatever the GPU's capacities say). */
 struct batch_words {
     uint32_t *vtx;
     uint32_t *prim;
+    uint32_t vtx_room;
+    uint32_t prim_room;
     uint32_t vtx_count;
     uint32_t prim_count;
 };
+
+/* A batch_words on two word arrays (not pointers: their sizes give the room). */
+#define BATCH_WORDS_ON(vtx_array, prim_array)                                                  \
+    {                                                                                          \
+        .vtx = (vtx_array), .prim = (prim_array),                                              \
+        .vtx_room = (uint32_t)(sizeof(vtx_array) / (sizeof((vtx_array)[0]) * GPU_VTX_WORDS)),  \
+        .prim_room = (uint32_t)(sizeof(prim_array) / (sizeof((prim_array)[0]) * GPU_PRIM_WORDS)), \
+    }
 
 struct batch_cursor {
     uint32_t next;    /* position in the frame's draw order */
@@ -46,10 +57,16 @@ struct batch_cursor {
 void batch_begin(struct batch_cursor *cur);
 
 /* Fill one batch from the frame's draw list (render_draw_index order). vtx_cap/tri_cap are the
- * GPU's reported capacities, clamped to the header's (the size of batch_words) and to a minimum of
+ * GPU's reported capacities, clamped to out's room and to a minimum of
  * 3 vertices and 1 primitive (3 in a frame with outlines: an outline's lines). Writes the frame's per-vertex stamps. */
 void batch_fill(struct batch_cursor *cur, struct render_frame *f, uint32_t vtx_cap,
                 uint32_t tri_cap, struct batch_words *out);
+
+/* True when batch_fill, called first, puts the whole frame in one batch (no outlines, its
+ * vertices and primitives within the capacities as batch_fill clamps them): the frame's vertex
+ * numbers unchanged, every primitive in draw order from buffer offset 0. */
+bool batch_whole_fits(const struct render_frame *f, uint32_t vtx_cap, uint32_t tri_cap,
+                      const struct batch_words *out);
 
 /* True when every primitive of the frame has been put in a batch. */
 static inline bool batch_done(const struct batch_cursor *cur, const struct render_frame *f)

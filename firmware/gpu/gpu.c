@@ -143,17 +143,6 @@ int gpu_submit_batch(struct gpu_dev *dev, const struct gpu_batch *batch, uint32_
     return GPU_OK;
 }
 
-int gpu_ring_again(struct gpu_dev *dev, uint32_t ctrl, uint32_t strip, uint32_t *tag)
-{
-    if (dev->pending) {
-        return GPU_E_PENDING;
-    }
-    gpu_write(GPU_REG_CTRL, ctrl);
-    gpu_write(GPU_REG_STRIP, strip);
-    *tag = gpu_ring(dev);
-    return GPU_OK;
-}
-
 int gpu_set_write_mask(struct gpu_dev *dev, uint32_t planes)
 {
     if (dev->pending) {

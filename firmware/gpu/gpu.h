@@ -44,10 +44,9 @@ enum gpu_result {
     GPU_E_BUFFERS = -8,    /* VTX_CAP / TRI_CAP beyond their bus windows, or below one triangle */
 };
 
-/* The most vertices and primitives the contract's bus windows can hold: a device reporting more
- * is not the contract's, and trusting it would send buffer words past their window. */
-#define GPU_VTX_CAP_MAX (GPU_WIN_VTX_BYTES / (4u * GPU_VTX_WORDS))
-#define GPU_TRI_CAP_MAX (GPU_WIN_IDX_BYTES / (4u * GPU_PRIM_WORDS))
+/* GPU_VTX_CAP_MAX, GPU_TRI_CAP_MAX (gpu_regs.h): the most vertices and primitives the contract's
+ * bus windows can hold: a device reporting more is not the contract's, and trusting it would send
+ * buffer words past their window. */
 
 /* Capability fields of CAPS. */
 static inline bool gpu_caps_lines(uint32_t caps)
@@ -155,12 +154,6 @@ int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n);
  * Words already in place (vtx_words / prim_words pointing where gpu_buffer_words says the buffer
  * at that base is) are not copied. */
 int gpu_submit_batch(struct gpu_dev *dev, const struct gpu_batch *batch, uint32_t *tag);
-
-/* Ring the batch last submitted again with another CTRL and STRIP: its buffers and its other batch
- * registers stay as gpu_submit_batch left them, so a GPU with a strip buffer walks the same
- * primitives for another strip (docs/strips.md, "the GPU's binning"). A fresh tag in *tag, as
- * gpu_submit_batch gives; GPU_E_PENDING while a batch is in flight. */
-int gpu_ring_again(struct gpu_dev *dev, uint32_t ctrl, uint32_t strip, uint32_t *tag);
 
 /* The GPU's vertex buffer (GPU_WIN_VTX) or index buffer (GPU_WIN_IDX) as CPU memory to build
  * batches in place, when the platform maps the window (bsp_gpu_buffer); NULL otherwise. Write it

@@ -160,7 +160,7 @@ struct proj_vertex {
             uint8_t batch_stamp;  /* batch.c: the last batch this vertex was written to (0: none) */
             uint8_t code;         /* enum proj_outcode bits */
             uint16_t batch_slot;  /* batch.c: its index in that batch's vertex buffer
-                                   * (< GPU_VTX_CAP; read only when batch_stamp is the batch's) */
+                                   * (< GPU_VTX_CAP_MAX; read only when batch_stamp is the batch's) */
         };
         uint32_t tail;            /* the three as one word, for one store (little-endian) */
     };

@@ -16,7 +16,7 @@
 
 static uint32_t vtx_words[GPU_VTX_CAP * GPU_VTX_WORDS];
 static uint32_t prim_words[GPU_TRI_CAP * GPU_PRIM_WORDS];
-static struct batch_words words = {vtx_words, prim_words, 0, 0};
+static struct batch_words words = BATCH_WORDS_ON(vtx_words, prim_words);
 
 /* A grid of n x n quads facing the eye at z = 5 (two triangles each, shared vertices). */
 static void build_grid(struct mesh *m, vec3 *v, struct mesh_face *f, uvec3 *nrm, int n)

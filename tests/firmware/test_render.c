@@ -369,7 +369,7 @@ static uint32_t wire_lines(uint32_t lines[][2], uint32_t max)
 {
     static uint32_t vtx[GPU_VTX_CAP * GPU_VTX_WORDS];
     static uint32_t prim[GPU_TRI_CAP * GPU_PRIM_WORDS];
-    struct batch_words w = {vtx, prim, 0, 0};
+    struct batch_words w = BATCH_WORDS_ON(vtx, prim);
     struct batch_cursor cur;
     uint32_t n = 0;
 

@@ -14,7 +14,7 @@
 
 static uint32_t vtx_words[GPU_VTX_CAP * GPU_VTX_WORDS];
 static uint32_t prim_words[GPU_TRI_CAP * GPU_PRIM_WORDS];
-static struct batch_words words = {vtx_words, prim_words, 0, 0};
+static struct batch_words words = BATCH_WORDS_ON(vtx_words, prim_words);
 static struct strip_bins bins;
 
 /* A frame of n primitives over nv vertices, their rows anywhere from far above the frame to far

@@ -58,7 +58,7 @@ static bool started_valid[SCENE_COUNT];
 static struct render_frame frame;
 static uint32_t batch_vtx[GPU_VTX_CAP * GPU_VTX_WORDS];
 static uint32_t batch_prim[GPU_TRI_CAP * GPU_PRIM_WORDS];
-static struct batch_words words = {batch_vtx, batch_prim, 0, 0};
+static struct batch_words words = BATCH_WORDS_ON(batch_vtx, batch_prim);
 
 static double unit_d(unit_t u)
 {

@@ -99,14 +99,15 @@ static void test_caps(void)
 
 static void test_ctrl(void)
 {
-    /* CTRL keeps CLEAR [0], SWAP [1], ZTEST [2], ZCLEAR [3], DITHER [4];
-     * other bits are not stored.  Same with and without the depth buffer
+    /* CTRL keeps CLEAR [0], SWAP [1], ZTEST [2], ZCLEAR [3], DITHER [4],
+     * WALK [5]; other bits are not stored.  Same with and without the depth buffer
      * (without it ZTEST/ZCLEAR are stored but ignored, see test_depth.c). */
     static const uint32_t written_read[][2] = {
-        { 0xFFFFFFFFu, 0x1F },
+        { 0xFFFFFFFFu, 0x3F },
         { GPU_CTRL_ZTEST_MASK, 0x4 },
-        { GPU_CTRL_ZCLEAR_MASK | 0x20u, 0x8 },
-        { 0xFFFFFFE0u, 0 },
+        { GPU_CTRL_ZCLEAR_MASK | 0x40u, 0x8 },
+        { GPU_CTRL_WALK_MASK | 0x80u, 0x20 },
+        { 0xFFFFFFC0u, 0 },
         { 0x5u, 0x5 },
     };
     for (int z = 0; z < 2; z++) {
@@ -440,21 +441,28 @@ static void test_capacities(void)
     test_batch(m, 0, 0, 3, 1, 1, 0, 5);
     CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_VTX_INDEX_MASK);
 
-    /* 0: the contract's; above the contract's limit: refused by
-     * gpu_model_config_error, replaced by the limit by reset_config. */
+    /* 0: the contract's limits; above what the window holds (VTX_CAP_MAX):
+     * refused by gpu_model_config_error, replaced by the contract's limit by
+     * reset_config; up to it, taken (larger than the limit too). */
     gpu_model_config zero = { 8, true, false, 0, 0, 0, false, false, 0, 0, 0 };
     CHECK(gpu_model_config_error(&zero) == NULL);
     gpu_model_reset_config(m, &zero);
     CHECK_EQ(m->cfg.vtx_cap, GPU_VTX_CAP);
     CHECK_EQ(m->cfg.tri_cap, GPU_TRI_CAP);
-    gpu_model_config big = { 8, true, false, GPU_VTX_CAP + 1u, 16, 0, false, false, 0, 0, 0 };
+    gpu_model_config big = { 8, true, false, GPU_VTX_CAP_MAX + 1u, 16, 0, false, false, 0, 0, 0 };
     CHECK(gpu_model_config_error(&big) != NULL);
     gpu_model_reset_config(m, &big);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP);
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), 16);
     big.vtx_cap = 32;
-    big.tri_cap = GPU_TRI_CAP * 2u;
+    big.tri_cap = GPU_TRI_CAP_MAX * 2u;
     CHECK(gpu_model_config_error(&big) != NULL);
+    big.vtx_cap = GPU_VTX_CAP_MAX;
+    big.tri_cap = GPU_TRI_CAP_MAX;
+    CHECK(gpu_model_config_error(&big) == NULL);
+    gpu_model_reset_config(m, &big);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), GPU_VTX_CAP_MAX);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), GPU_TRI_CAP_MAX);
     free(m);
 }
 

@@ -237,7 +237,7 @@ void test_bus(void)
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), GPU_TRI_CAP);
     CHECK_EQ(gpu_model_read(m, GPU_REG_TRI_CAP), 512);
     CHECK_EQ(gpu_model_read(m, GPU_REG_VTX_CAP), 1024);
-    CHECK_EQ(gpu_model_read(m, GPU_REG_VERSION), 0x00010004u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_VERSION), 0x00010005u);
     CHECK_EQ(gpu_model_read(m, GPU_REG_SCANOUT_UNDERFLOWS), 0u);  /* no display to fall behind */
     CHECK_EQ(gpu_model_read(m, GPU_REG_FB_SIZE), 320u | (240u << 16));
 
@@ -880,6 +880,43 @@ static void test_strip_buffer(void)
     gpu_model_write(whole, GPU_REG_STRIP, 0u | ((h - 1u) << GPU_STRIP_LAST_LSB));
     test_batch(whole, GPU_CTRL_ZTEST_MASK | GPU_CTRL_DITHER_MASK, 0, 64, 0, 120, 0x21, 44);
     CHECK(memcmp(gpu_model_back(whole), gpu_model_back(m), px) == 0);
+
+    /* CTRL.WALK: one batch from the first strip draws every strip (the frame equals the same
+     * scene drawn whole), its counters adding up over the 8 strips, STRIP kept as written; the
+     * swap after the last strip. */
+    strip_scene(whole, 6, 64, 120);
+    strip_scene(m, 6, 64, 120);
+    strip_batch(whole, 64, 120, 0, h - 1u, 50);
+    memset((uint8_t *)gpu_model_back(m), 0x5A, px);
+    gpu_model_write(m, GPU_REG_STRIP, 0u | (63u << GPU_STRIP_LAST_LSB));
+    test_batch(m, clear_z | GPU_CTRL_ZTEST_MASK | GPU_CTRL_DITHER_MASK | GPU_CTRL_WALK_MASK, 0, 64,
+               0, 120, 0x21, 51);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
+    CHECK(memcmp(gpu_model_back(whole), gpu_model_back(m), px) == 0);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_TRIS_IN), 8u * 120u);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_PIXELS), gpu_model_read(whole, GPU_REG_PERF_PIXELS));
+    CHECK_EQ(gpu_model_read(m, GPU_REG_STRIP), 0u | (63u << GPU_STRIP_LAST_LSB));
+    CHECK_EQ(m->open_strip, 7);
+    /* From a later strip: that strip and the ones after it only; the rows above keep theirs. */
+    memset((uint8_t *)gpu_model_back(m), 0x5A, px);
+    gpu_model_write(m, GPU_REG_STRIP, 320u | (383u << GPU_STRIP_LAST_LSB));
+    test_batch(m, clear_z | GPU_CTRL_ZTEST_MASK | GPU_CTRL_DITHER_MASK | GPU_CTRL_WALK_MASK |
+                  GPU_CTRL_SWAP_MASK, 0, 64, 0, 120, 0x21, 52);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), 0);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_TRIS_IN), 3u * 120u);
+    CHECK_EQ(m->open_strip, -1);  /* swapped: closed */
+    CHECK_EQ(count_n(gpu_model_front(m), 320u * w, 0x5A), 320u * w);
+    CHECK(memcmp(gpu_model_back(whole) + 320u * w, gpu_model_front(m) + 320u * w,
+                 px - 320u * w) == 0);
+    /* A walk that breaks a rule in its first strip (part of it, no clear) draws nothing. */
+    gpu_model_write(m, GPU_REG_STRIP, 1u | (63u << GPU_STRIP_LAST_LSB));
+    test_batch(m, clear_z | GPU_CTRL_WALK_MASK, 0, 64, 0, 120, 0x21, 53);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_ERRORS), GPU_ERR_STRIP_MASK);
+    CHECK_EQ(gpu_model_read(m, GPU_REG_PERF_TRIS_IN), 0);
+    /* On a GPU without a strip buffer WALK does nothing: one run of the rows. */
+    gpu_model_write(whole, GPU_REG_STRIP, 0u | (63u << GPU_STRIP_LAST_LSB));
+    test_batch(whole, GPU_CTRL_CLEAR_MASK | GPU_CTRL_WALK_MASK, 0, 64, 0, 120, 0x21, 54);
+    CHECK_EQ(gpu_model_read(whole, GPU_REG_PERF_TRIS_IN), 120u);
     free(whole);
     free(m);
 }

@@ -103,7 +103,7 @@ struct frame_result {
 static void gpu_frame(struct render_frame *f, struct frame_result *r)
 {
     struct batch_cursor cur;
-    struct batch_words words = {stress_vtx_words, stress_prim_words, 0, 0};
+    struct batch_words words = BATCH_WORDS_ON(stress_vtx_words, stress_prim_words);
     bool first = true;
 
     memset(r, 0, sizeof *r);
