@@ -270,8 +270,9 @@ int rtl_check_main(int argc, char **argv)
         bool zclear = r.chance(30) || b == 0 || clear_forced;  // a reset may also leave the depths half done
         const bool dither = r.chance(50);  // ordered dithering of Gouraud triangles (ignored without CAPS_GOURAUD)
         // CTRL.WALK: on a strip build, some batches that open a strip draw it and every strip
-        // after it; elsewhere now and then set, and ignored.
-        bool walk = strip_rows == 0 && rs.chance(5);
+        // after it; elsewhere set on every 20th batch, and ignored (not drawn from a stream, so
+        // that a seed's batches stay as they were).
+        bool walk = strip_rows == 0 && b % 20 == 7;
         if (strip_rows != 0) {
             // A strip build: the band, the clear, the planes and the depth test by the strip
             // buffer's rules (contract "The strip buffer"), from the model's open strip; now and

@@ -64,6 +64,27 @@ def contract_params():
     return params
 
 
+def cap_maxima():
+    """The largest buffer capacities (VTX_CAP, TRI_CAP): what their windows hold, as
+    contract/gen_contract.py computes them."""
+    sys.path.insert(0, os.path.join(ROOT, "contract"))
+    from gen_contract import cap_max
+    return cap_max(load(CONTRACT))
+
+
+def resolve_max(params, where):
+    """A capacity given as "max" is its window's (cap_maxima); nothing else may be a word."""
+    maxima = cap_maxima()
+    out = {}
+    for k, v in params.items():
+        if v == "max":
+            if k not in maxima:
+                raise TableError(f"{where}: {k} = \"max\": only {' and '.join(maxima)} have a maximum")
+            v = maxima[k]
+        out[k] = v
+    return out
+
+
 def expand(pattern, lists):
     """Every combination of the list-valued keys of `lists`, with the pattern filled in."""
     keys = [k for k, v in lists.items() if isinstance(v, list)]
@@ -87,7 +108,7 @@ def gpusims(table):
         if ident in out:
             raise TableError(f"{where}: simulator {ident} named twice")
         # SPAN_W always (the harness's gpu_build.h needs it), the others where they differ.
-        params = dict({"SPAN_W": defaults["SPAN_W"]}, **params)
+        params = resolve_max(dict({"SPAN_W": defaults["SPAN_W"]}, **params), where)
         flags = " ".join(f"-G{k}={v}" for k, v in params.items() if v != defaults[k] or k == "SPAN_W")
         out[ident] = (flags + (" --trace-fst" if trace else ""), display, trace)
 
@@ -151,7 +172,7 @@ def socsims(table):
         if size not in ("default", "window", "boot"):
             raise TableError(f"{where}: ram = {size!r}: default, window or boot (sizes are the contract's)")
         ram_kib = ram[f"{size}_bytes"] // 1024
-        params = dict({"SPAN_W": defaults["SPAN_W"]}, **spec.get("params", {}))
+        params = resolve_max(dict({"SPAN_W": defaults["SPAN_W"]}, **spec.get("params", {})), where)
         for name in params:
             if name not in defaults:
                 raise TableError(f"{where}: {name} is not a build parameter of {CONTRACT}")
@@ -291,6 +312,8 @@ def builds_mk(table, sims, socs):
     lines.append("# The contract's frames, WxH: its default and its largest (make's FB=, make stress).")
     lines.append(f"CONTRACT_FB := {lim['fb_width']}x{lim['fb_height']}")
     lines.append(f"CONTRACT_FB_MAX := {lim['fb_max_width']}x{lim['fb_max_height']}")
+    lines.append("# The largest buffer capacities: what the vertex and index windows hold.")
+    lines += [f"CONTRACT_{k}_MAX := {v}" for k, v in cap_maxima().items()]
     lines.append(f"GPUSIM_IDS := {' '.join(sims)}")
     lines.append(f"SOCSIM_IDS := {' '.join(socs)}")
     lines += [f"SOCSIM_RAM_KIB_{i} := {ram}" for i, (_, ram, *_) in socs.items()]

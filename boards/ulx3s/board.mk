@@ -64,12 +64,18 @@
 #   FRAME_DRAM 1 (the default with SOC_MEM=sdram): the GPU's two frames in the SDRAM too (the contract's
 #             "Frames in external memory"): it draws in strips of STRIP_ROWS rows (16) on chip, colour
 #             and depth, at the frame size FB (640x480 shown 1:1 by default; 320x240 shown 2x2)
+#   WIDE_BUF  1: the GPU's vertex and index buffers as large as their windows (VTX_CAP_MAX and
+#             TRI_CAP_MAX, 4,096 each, about 26 EBR more than the contract's 1,024 and 512), so that a
+#             pass of up to that many is one batch the GPU walks over every strip (CTRL.WALK) and the
+#             firmware bins nothing (docs/strips.md). The default with FRAME_DRAM on the 85F and 45F;
+#             0 on the 25F and 12F, which have no EBR to spare
 SYS_MHZ     ?= 50
 SEED        ?= 1
 FPGA        ?= 85F
 PROJ_UNIT   ?= $(if $(filter 12F 25F,$(FPGA)),0,1)
 FRAME_DRAM  ?= 0
 STRIP_ROWS  ?= 16
+WIDE_BUF    ?= $(if $(and $(filter 1,$(FRAME_DRAM)),$(filter 45F 85F,$(FPGA))),1,0)
 USB         ?= 0
 # The framebuffer write mask (ENABLE_WMASK, the anaglyph's planes) costs 4 EBR: on by default, off
 # beside a depth buffer of frame size, which leaves too few (with it, the smallest such build needs
@@ -84,8 +90,9 @@ ULX3S_PARTS  := 12F 25F 45F 85F
 ULX3S_DEVICE  = $(FPGA:F=k)
 # FRAME_DRAM=1: the frame's parameters (FB's, unless a scene's manifest gives them) and the strips'.
 ULX3S_FRAME_PARAMS = $(if $(filter 1,$(FRAME_DRAM)),--param FRAME_DRAM=1 --param STRIP_ROWS=$(STRIP_ROWS) \
-  $(if $(filter --param FB_WIDTH=%,$(ULX3S_GPU_PARAMS)),,$(patsubst -G%,--param %,$(FB_GFLAGS))))
-ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)$(if $(ULX3S_WMASK),$(if $(filter 0,$(WMASK)),-nomask))$(SOC_MEM_SUFFIX)$(if $(filter 1,$(FRAME_DRAM)),-dram-s$(STRIP_ROWS)$(if $(and $(FB_TAG),$(if $(LEAN_SCENE),,1)),-$(FB_TAG)))$(if $(filter-out 85F,$(FPGA)),-$(FPGA:F=f))$(if $(filter 1,$(USB)),-usb)$(if $(filter 0,$(PROJ_UNIT)),-nopu)
+  $(if $(filter --param FB_WIDTH=%,$(ULX3S_GPU_PARAMS)),,$(patsubst -G%,--param %,$(FB_GFLAGS)))) \
+  $(if $(filter 1,$(WIDE_BUF)),--param VTX_CAP=$(CONTRACT_VTX_CAP_MAX) --param TRI_CAP=$(CONTRACT_TRI_CAP_MAX))
+ULX3S_NAME   = $(SCENE)-$(SOC_RAM_KIB)k-$(SYS_MHZ)mhz$(if $(filter-out 8,$(SPAN_W)),-w$(SPAN_W))$(if $(filter 1,$(ZBUF)),-z)$(if $(ULX3S_WMASK),$(if $(filter 0,$(WMASK)),-nomask))$(SOC_MEM_SUFFIX)$(if $(filter 1,$(FRAME_DRAM)),-dram-s$(STRIP_ROWS)$(if $(and $(FB_TAG),$(if $(LEAN_SCENE),,1)),-$(FB_TAG)))$(if $(filter 1,$(WIDE_BUF)),-wide)$(if $(filter-out 85F,$(FPGA)),-$(FPGA:F=f))$(if $(filter 1,$(USB)),-usb)$(if $(filter 0,$(PROJ_UNIT)),-nopu)
 ULX3S_DIR    = $(BUILD)/board-ulx3s/$(ULX3S_NAME)
 # The top: ulx3s_top (the firmware in on-chip RAM) or ulx3s_sdram_top (SOC_MEM=sdram); files named by it.
 ULX3S_TOP    = $(if $(SOC_MEM_SUFFIX),ulx3s_sdram_top,ulx3s_top)
