@@ -7,9 +7,10 @@
 # frame checked against the golden model) against the host build's whole frames; then the
 # whole-frame ELFs on GPUs with a strip buffer (contract "The strip buffer": STRIP_ROWS 16 for
 # landscape and knot, 1, 4 and 64 for cubes, with depth and Gouraud; the firmware reads STRIP_ROWS
-# and sends every strip; cubes and knot also with the GPU's binning, FW_STRIP_WALK: a pass of one
-# batch rung again per strip, one of several sent again), each frame equal to the model and to the
-# host's whole frames.
+# and sends every strip: a pass that fits one batch once, which the GPU walks over the strips
+# (CTRL.WALK: cubes; the knot on a GPU with buffers as large as their windows), the others binned
+# by the firmware (landscape and knot on the contract's buffers; cubes built with FW_STRIP_WALK=0),
+# each frame equal to the model and to the host's whole frames.
 # Keys go in before the first doorbell (--keys-at 1:...): a frame in strips rings more doorbells,
 # so a later doorbell would fall into another frame than in the whole build.
 source "$(dirname "$0")/../lib.sh"
@@ -54,12 +55,17 @@ for scene in landscape knot; do
 done
 # A GPU that draws in strips on chip: the firmware built for whole frames sends it its strips.
 strip_gpu_runs=0
-for run in landscape:16 knot:16 cubes:1 cubes:4 cubes:64 cubes-walk:16 knot-walk:16; do
-    elf=${run%%:*} rows=${run#*:}
-    scene=${elf%-walk}
-    gpu="$BUILD/sim-fast-s$rows-f640-w8/gpusim"
+walked=0
+# ELF:GPU:HOW, GPU sim-fast-s<rows>-f640-w8[-wide]; HOW bin (a batch or more a strip, the firmware's
+# binning) or walk (the frame's pass one batch, CTRL.WALK).
+for run in landscape:16:bin knot:16:bin cubes:1:walk cubes:4:walk cubes:64:walk cubes-bin:16:bin \
+           knot:16-wide:walk; do
+    IFS=: read -r elf gpu_tag how <<<"$run"
+    rows=${gpu_tag%-wide}
+    scene=${elf%-bin}
+    gpu="$BUILD/sim-fast-s$rows-f640-w8${gpu_tag#"$rows"}/gpusim"
     need_file "$gpu" "$dir/$elf.elf"
-    out="$work/$elf-gpu$rows"
+    out="$work/$elf-gpu$gpu_tag"
     run_to "$out.out" 300 "$gpu" cosim --fw "$dir/$elf.elf" --frames "$out" --uart-log "$out.uart" \
         --summary "$out.summary" --keys-at 1:z
     [ "$status" -eq 0 ] || { tail -n 5 "$out.out"; fail "$scene: co-simulation on a GPU with strips of $rows failed (status $status)"; }
@@ -71,8 +77,13 @@ for run in landscape:16 knot:16 cubes:1 cubes:4 cubes:64 cubes-walk:16 knot-walk
             >"$work/$scene-zg640-whole.log" || fail "$scene: the host build with depth and Gouraud failed"
     same_pngs "$out" "$work/$scene-zg640-whole" "$scene: a GPU drawing strips of $rows rows against the host's whole frames"
     batches=$(sed -nE 's/^frame 1: .*batches ([0-9]+).*/\1/p' "$out.uart")
-    [ "${batches:-0}" -ge $(( (480 + rows - 1) / rows )) ] ||
-        fail "$elf: frame 1 in ${batches:-no} batches on a GPU with $(( (480 + rows - 1) / rows )) strips"
+    if [ "$how" = walk ]; then
+        expect_eq "${batches:-none}" 1 "$elf on strips of $rows ($gpu_tag): frame 1's batches, the GPU walking the strips"
+        walked=$((walked + 1))
+    else
+        [ "${batches:-0}" -ge $(( (480 + rows - 1) / rows )) ] ||
+            fail "$elf: frame 1 in ${batches:-no} batches on a GPU with $(( (480 + rows - 1) / rows )) strips"
+    fi
     strip_gpu_runs=$((strip_gpu_runs + 1))
 done
-pass "strips: ${#scenes[@]} scenes, $compared frames in strips of 16 and 1 lines equal to the whole frames (320x240 painter's and wireframe anaglyph, 640x480 depth-tested); landscape and knot in strips co-simulated at 640x480, RTL = model = host; $strip_gpu_runs runs on GPUs with a strip buffer (strips of 1, 4, 16, 64 rows) = model = host"
+pass "strips: ${#scenes[@]} scenes, $compared frames in strips of 16 and 1 lines equal to the whole frames (320x240 painter's and wireframe anaglyph, 640x480 depth-tested); landscape and knot in strips co-simulated at 640x480, RTL = model = host; $strip_gpu_runs runs on GPUs with a strip buffer (strips of 1, 4, 16, 64 rows; $walked of them one batch the GPU walked) = model = host"
