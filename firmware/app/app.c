@@ -13,11 +13,13 @@
  * Per frame:
  *   0. a model uploaded over the UART and committed in the last frame is swapped in: the model
  *      scene starts from it (model/upload.h; FW_WITH_UPLOAD);
- *   1. read at most INPUT_MAX_BYTES_PER_FRAME bytes from the UART (FW_UART_BYTES_PER_FRAME where
- *      uploads are built in; never blocks, the rest waits for the next frame); the upload's
- *      receiver takes its frames, the rest is decoded into key counts; with FW_USB_KEYBOARD, then
- *      at most FW_USB_EVENTS_PER_FRAME events of the USB keyboard, into the same counts
- *      (input/usb_keys.h: each key acts as its terminal bytes do on the UART);
+ *   1. the keys the last frame collected before its first batch went out (app_collect_input; the
+ *      first frame reads its own): at most INPUT_MAX_BYTES_PER_FRAME bytes from the UART
+ *      (FW_UART_BYTES_PER_FRAME where uploads are built in; never blocks, the rest waits for the
+ *      next frame); the upload's receiver takes its frames, the rest is decoded into key counts;
+ *      with FW_USB_KEYBOARD, then at most FW_USB_EVENTS_PER_FRAME events of the USB keyboard, into
+ *      the same counts (input/usb_keys.h: each key acts as its terminal bytes do on the UART). So
+ *      keys typed at any doorbell of frame F act from frame F + 2;
  *   2. global keys (quit, scene, wireframe, anaglyph, depth buffer, help), then scene_update
  *      (camera keys, animation, scene keys);
  *   3. per pass (two for anaglyph: left eye red, right eye cyan): render the scene into the
@@ -28,13 +30,21 @@
  *      framebuffer (the left eye the high nibble, the right eye the low one: FB_WRITE_MASK), each
  *      clearing it first, through the anaglyph palette (palette.h), so a pixel both eyes cover
  *      shows both; without it the right eye's pass draws over the left eye's.
+ *      On a GPU with a strip buffer the pass goes out in strips: one batch the GPU walks over
+ *      every strip (CTRL.WALK) where the pass fits one, else the firmware's binning (strips.h).
  *   4. after each doorbell, wait for DONE_SEQ with a bounded poll — the watchdog. A batch that
  *      never finishes is reported, the GPU is reset (RESET register), the rest of the frame is
  *      dropped and the loop goes on with the next frame; after FW_WATCHDOG_GIVE_UP consecutive
  *      lost frames the firmware stops with FW_EXIT_GPU_TIMEOUT.
+ *   5. but the frame's last batch (the one that swaps) is left pending: the CPU goes on with the
+ *      next frame's steps 0-3 while the GPU draws it and waits for vertical blank, and waits for
+ *      it (step 4, app_settle) only before it writes the GPU again — the next frame's buffers, a
+ *      palette — or stops. So a frame's CPU work and the last frame's GPU work overlap: a frame
+ *      takes the longer of the two, not their sum.
  *
  * Output: the upload's responses to what the frame read ("@up ...", one per protocol frame
- * received, printed before the frame is drawn), then one line per frame:
+ * received, printed before the frame is drawn), then one line per frame, once its last batch is
+ * done (so after the next frame's upload responses):
  *   frame N: tris submitted S drawn D | fw instr I | gpu cycles C | errors 0xE | prims P batches B
  *     | culled object O frustum F back K clipped L
  *     | cpu cycles Y
@@ -121,6 +131,9 @@ struct app {
     unsigned pending_frame;
     uint32_t pending_tag;
     struct frame_stats pending_st;
+    /* The next frame's keys, collected before this frame's first batch went out (app_collect_input). */
+    struct input_counts keys_next;
+    bool keys_collected;
 #if FW_WITH_UPLOAD
     struct upload_rx upload;
     bool model_from_upload;  /* the model scene's source is the staging buffer */
@@ -817,6 +830,21 @@ static void app_read_uart(struct app *app, struct input_counts *keys)
     app_upload_frame_end(app);
 }
 
+/*
+ * The next frame's input: the UART's bytes (the upload's frames, then keys) and the USB keyboard's
+ * events, read before this frame's first batch goes out. With the frame's last batch left pending
+ * (app_send_group) the next frame starts right after its doorbell; keys read then would be those
+ * that happened to arrive by then. Read here, whatever is typed at any of a frame's doorbells —
+ * where a co-simulation or a test types them — reaches the frame after next, on every platform
+ * however long the bytes take on the wire.
+ */
+static void app_collect_input(struct app *app)
+{
+    app_read_uart(app, &app->keys_next);
+    app_read_usb(app, &app->keys_next);
+    app->keys_collected = true;
+}
+
 /* Keys that belong to the loop rather than the scene. Returns false to quit. */
 static bool app_global_keys(struct app *app, const struct input_counts *keys,
                             struct app_notes *notes, struct frame_stats *st)
@@ -1232,15 +1260,18 @@ static void app_boot(struct app *app)
 }
 
 /* Input: a model committed in the last frame swapped in, this frame's UART bytes (the upload's
- * frames, then keys), the USB keyboard's keys, the upload's answers, the USB port's news, the
- * global keys. Returns false to quit. */
+ * frames, then keys) and USB keyboard's keys as the last frame collected them, the upload's
+ * answers, the USB port's news, the global keys. Returns false to quit. */
 static bool app_input(struct app *app, struct input_counts *keys, struct app_notes *notes,
                       struct frame_stats *st)
 {
     notes->scene_changed = false;
     app_swap_upload(app, notes);
-    app_read_uart(app, keys);
-    app_read_usb(app, keys);
+    if (!app->keys_collected) {
+        app_collect_input(app);  /* the first frame */
+    }
+    *keys = app->keys_next;
+    app->keys_collected = false;
     app_print_upload(app, st);
     app_print_usb(app, st);
     return app_global_keys(app, keys, notes, st);
@@ -1268,6 +1299,9 @@ static bool app_draw(struct app *app, unsigned frame, struct frame_stats *st)
 
         app_render_pass(app, eye, st);
         app_settle(app, st);  /* the last frame's batch: done before this one's are written */
+        if (p == 0) {
+            app_collect_input(app);
+        }
         app_set_write_mask(app, eye);
         completed = app_submit(app, frame, p == 0 || app_eye_planes(app), p == passes - 1, st);
         frame_stats_add_pass(st, &app->frame.stats);

@@ -67,7 +67,11 @@ expect_status 0 "make ulx3s-dir on the 12F with the projection unit"
 expect_line "/board-ulx3s/tetra-16k-50mhz-z-sdram-dram-s16-f640-12f$" "$work/part-pu.out"
 ulx3s_dir default
 expect_status 0 "make ulx3s-dir (the default build)"
-expect_line "/board-ulx3s/tetra-16k-50mhz-z-sdram-dram-s16-f640$" "$work/default.out"
+# (the 85F's buffers as large as their windows by default: WIDE_BUF=1)
+expect_line "/board-ulx3s/tetra-16k-50mhz-z-sdram-dram-s16-f640-wide$" "$work/default.out"
+ulx3s_dir narrow WIDE_BUF=0
+expect_status 0 "make ulx3s-dir WIDE_BUF=0"
+expect_line "/board-ulx3s/tetra-16k-50mhz-z-sdram-dram-s16-f640$" "$work/narrow.out"
 ulx3s_dir on-chip SOC_MEM=ram
 expect_status 0 "make ulx3s-dir SOC_MEM=ram"
 expect_line "/board-ulx3s/tetra-192k-50mhz$" "$work/on-chip.out"

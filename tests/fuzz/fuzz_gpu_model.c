@@ -90,7 +90,8 @@ static uint32_t expected_errors(const gpu_model *m, uint32_t *flagged)
         const uint32_t i2 = (w[GPU_PRIM_I2_WORD] >> GPU_PRIM_I2_LSB) & GPU_PRIM_I2_MASK;
         const bool line = kind == GPU_PRIM_KIND_LINE;
 
-        if (!(kind == GPU_PRIM_KIND_TRI || (line && m->cfg.lines))) {
+        if (!(kind == GPU_PRIM_KIND_TRI || (line && m->cfg.lines) ||
+              (kind == GPU_PRIM_KIND_TRI_GOURAUD && m->cfg.gouraud))) {
             errors |= GPU_ERR_KIND_MASK;
             (*flagged)++;
         } else if (i0 >= m->regs.vtx_count || i1 >= m->regs.vtx_count ||

@@ -5,8 +5,9 @@
 # frame with the depth buffer (mk/builds.toml's sim-f640-w8), each frame from the VGA pins and
 # checked against the golden model by the harness; the host build with the model at that frame
 # (--frame 640x480 --zbuf) gives byte-identical frames. Z at the doorbell that starts frame 1
-# (--keys-at f1:z, whatever its batches) turns the depth test on from frame 2: frames 0 and 1 in
-# painter's order, the rest depth-tested.
+# (--keys-at f1:z, whatever its batches) turns the depth test on from frame 3 (keys typed at a
+# frame's doorbells act from the frame after next: app.c): frames 0 to 2 in painter's order, the rest
+# depth-tested.
 source "$(dirname "$0")/../lib.sh"
 need BUILD
 dir="$BUILD/fw-test"
@@ -24,8 +25,8 @@ for scene in "${scenes[@]}"; do
     [ "$status" -eq 0 ] || { tail -n 5 "$work/$scene-host.uart"; fail "$scene: host build at 640x480 failed (status $status)"; }
     expect_line 'fb 640x480' "$work/$scene-cosim.uart"
     expect_line '^depth buffer on' "$work/$scene-cosim.uart"
-    [ "$(grep -B1 '^depth buffer on' "$work/$scene-cosim.uart" | head -n 1 | cut -d: -f1)" = "frame 1" ] ||
-        fail "$scene: the depth test did not start after frame 1 ($work/$scene-cosim.uart)"
+    [ "$(grep -B1 '^depth buffer on' "$work/$scene-cosim.uart" | head -n 1 | cut -d: -f1)" = "frame 2" ] ||
+        fail "$scene: the depth test did not start after frame 2 ($work/$scene-cosim.uart)"
     frames=$(summary frames "$work/$scene.summary")
     [ "$frames" -ge 4 ] || fail "$scene: only $frames frames"
     expect_eq "$(summary frames_model_checked "$work/$scene.summary")" "$frames" "$scene: frames checked against the model"
