@@ -15,7 +15,9 @@ Per scene, averaged over the frames after the first (frame 0 carries the boot: b
   I$ / D$ refills cache-line refills per frame, counted by socsim on the core's Wishbone buses
                   (VexRiscv_FullCfu has no miss counters of its own)
   GPU busy        the GPU's PERF_BUSY_CYCLES summed over the frame's batches
-  ready           cycles from the previous swap to the doorbell of the frame's last batch
+  ready           cycles from the previous swap to the doorbell of the frame's last batch (the
+                  firmware computes a frame while the GPU still draws the last one, app.c, so
+                  what follows that swap: the frame's buffers filled, its doorbells, its strips)
   frame cycles    cycles from swap to swap (the GPU swaps at vertical blank: a multiple of the
                   VGA frame, 840,000 clocks at 50 MHz, is the floor)
   fps 50 MHz      50e6 / frame cycles, measured

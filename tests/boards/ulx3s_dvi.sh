@@ -12,7 +12,7 @@
 # LiteDRAM, the chip and flash models on ulx3s_system's ports; the GPU's two 640x480 frames in the
 # SDRAM, strips of 16 rows, depth buffer): the boot program loads the firmware from the flash, and
 # the frames decoded from the DVI pins at 640x480, 1:1, painter's order and then depth-tested (Z at
-# doorbell 1), must equal the model and the host build's at 640x480, byte for byte, with no SDRAM
+# doorbell 1, read by the third frame), must equal the model and the host build's at 640x480, byte for byte, with no SDRAM
 # or flash violation and no scan-out underflow. tetra (BOARD_DRAM_SCENES adds others: the rest of
 # the scenes run from the SDRAM on soc_top's VGA pins in soc-sdram-scenes).
 source "$(dirname "$0")/../lib.sh"
@@ -56,25 +56,25 @@ check_tmds() {
 }
 
 dram_scene() {
-    local s="$1" elf="$BUILD/fw-test-soc-sdram/$1-2f.elf" host="$BUILD/fw-test/host-$1" f sum
+    local s="$1" elf="$BUILD/fw-test-soc-sdram/$1-3f.elf" host="$BUILD/fw-test/host-$1" f sum
     sum="$work/$s.dram.summary"
     need_file "$elf.img" "$host"
     run_to "$work/$s.dram-host.uart" 300 "$host" "${dram_host_frame[@]}" --keys-at 1:z --frames "$work/$s-dram-host"
     expect_status 0 "host build of $s at 640x480"
-    run_to "$work/$s.dram.out" 600 "$dram_sim" --boot "$boot" --stop-frames 2 --fw "$elf" --frames "$work/$s-dram" \
+    run_to "$work/$s.dram.out" 600 "$dram_sim" --boot "$boot" --stop-frames 3 --fw "$elf" --frames "$work/$s-dram" \
         --uart-log "$work/$s.dram.uart" --keys-at 1:z --summary "$sum"
     expect_status 0 "socsim (ULX3S, SDRAM, DVI) of $s (log: $work/$s.dram.out)"
-    expect_eq "$(summary frames "$sum")" 2 "$s: frames decoded from the DVI pins at 640x480"
-    expect_eq "$(summary frames_model_checked "$sum")" 2 "$s: those frames equal to the model"
+    expect_eq "$(summary frames "$sum")" 3 "$s: frames decoded from the DVI pins at 640x480"
+    expect_eq "$(summary frames_model_checked "$sum")" 3 "$s: those frames equal to the model"
     expect_eq "$(summary sdram_violations "$sum")" 0 "$s: SDRAM chip model violations"
     expect_eq "$(summary flash_violations "$sum")" 0 "$s: flash model violations"
     expect_eq "$(summary scanout_underflows "$sum")" 0 "$s: SCANOUT_UNDERFLOWS"
     expect_line '^depth buffer on' "$work/$s.dram.uart"
-    for f in "$work/$s-dram"/*.png; do   # the host build runs more frames: the first two are compared
+    for f in "$work/$s-dram"/*.png; do   # the host build runs more frames: the first three are compared
         cmp -s "$f" "$work/$s-dram-host/$(basename "$f")" || fail "$s: $(basename "$f") from the DVI pins differs from the host build's"
     done
     check_tmds "$s" "$sum"
-    echo "$s: 2 frames at 640x480 from the DVI pins, frames in the SDRAM, equal to the model and to the host build;" \
+    echo "$s: 3 frames at 640x480 from the DVI pins, frames in the SDRAM, equal to the model and to the host build;" \
         "the slowest row fetch $(summary scanout_worst_row_clocks "$sum") clocks"
 }
 

@@ -10,7 +10,7 @@ source "$(dirname "$0")/../soc/soc_lib.sh"
 need GPUSIM FW_ELF BUILD
 socsim_usb=${1:?usage: keys_at_bad.sh SOCSIM_USB}
 host="$BUILD/fw-test/host-tetra"
-soc_elf="$soc_test_dir/tetra-2f.elf"
+soc_elf="$soc_test_dir/tetra-3f.elf"
 need_file "$GPUSIM" "$FW_ELF" "$host" "$socsim_usb" "$soc_elf.hex"
 work=$(fresh_dir cosim-keys-at-bad)
 

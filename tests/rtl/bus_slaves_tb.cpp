@@ -79,7 +79,7 @@ struct Model {
         switch (addr) {
         case GPU_REG_CTRL:
             return GPU_CTRL_CLEAR_MASK | GPU_CTRL_SWAP_MASK | GPU_CTRL_ZTEST_MASK | GPU_CTRL_ZCLEAR_MASK |
-                   GPU_CTRL_DITHER_MASK;
+                   GPU_CTRL_DITHER_MASK | GPU_CTRL_WALK_MASK;
         case GPU_REG_CLEAR_COLOR: return 0xffu;
         case GPU_REG_FB_WRITE_MASK: return GPU_DEFAULT_ENABLE_WMASK ? GPU_WMASK_LO_MASK | GPU_WMASK_HI_MASK : 0u;
         case GPU_REG_VTX_BASE: case GPU_REG_VTX_COUNT: case GPU_REG_TRI_BASE: case GPU_REG_TRI_COUNT:

@@ -14,7 +14,7 @@ source "$(dirname "$0")/../lib.sh"
 need BUILD
 socsim=${1:?usage: boot_faults.sh SOCSIM_SDRAM}
 boot="$BUILD/soc/boot.elf.hex"
-elf="$BUILD/fw-test-soc-sdram/tetra-2f.elf"
+elf="$BUILD/fw-test-soc-sdram/tetra-3f.elf"
 need_file "$socsim" "$boot" "$elf.img"
 work=$(fresh_dir soc-boot-faults)
 

@@ -8,10 +8,12 @@
 # contract's "Frames in external memory"), on LiteDRAM's second port, the chip model serving the
 # CPU's cache lines, the strips' flushes and the scan-out's rows.
 #
-# Two frames a scene, painter's order then depth-tested: Z typed at the doorbell that starts each
-# scene's first frame (read at its second), Z and the next scene's key at the one that starts its
-# second (--keys-at fF:TEXT: by frame, since a frame takes more batches on the SoC's GPU than on the
-# model's). The host build (fw-test host-tour: the golden model as the GPU, at 640x480 with its
+# Two frames a scene, painter's order then depth-tested, after one more painter's frame of the first
+# scene: keys typed at a frame's doorbell act from the frame after next (the firmware collects the
+# next frame's keys before a frame's first doorbell, app.c), so Z typed at the doorbell that starts
+# frame 2i is read at frame 2i + 2, scene i's second, and Z and the next scene's key at the one that
+# starts frame 2i + 1 (--keys-at fF:TEXT: by frame, since a frame takes more batches on the SoC's
+# GPU than on the model's). The host build (fw-test host-tour: the golden model as the GPU, at 640x480 with its
 # depth buffer) gets the same keys at the same frames. Its frames must be the tour asked for (each
 # scene's name, then depth off and on), socsim's the same bytes, all equal to the model, with no
 # SDRAM or flash violation, no scan-out underflow, every row fetched within its display line, the
@@ -45,7 +47,7 @@ for i in "${!tour[@]}"; do
         done
     fi
 done
-frames=$((2 * ${#tour[@]}))
+frames=$((2 * ${#tour[@]} + 1))
 
 run_to "$work/host.uart" 300 "$host" "${dram_host_frame[@]}" --frames "$work/host" "${keys[@]}"
 expect_status 0 "host build of the tour"
@@ -56,7 +58,11 @@ tour_lines() {
 }
 want=""
 for s in "${tour[@]}"; do
-    want+="scene $s;${want:+depth buffer off;}frame;depth buffer on;frame;"
+    if [ -z "$want" ]; then
+        want="scene $s;frame;frame;depth buffer on;frame;"  # the extra painter's frame first
+    else
+        want+="scene $s;depth buffer off;frame;depth buffer on;frame;"
+    fi
 done
 got=$(tour_lines "$work/host.uart" | tr '\n' ';')
 [ "$got" = "$want" ] || fail "the host build's tour: got '$got', expected '$want' (scenes, depth off and on, frames)"

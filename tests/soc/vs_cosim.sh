@@ -11,9 +11,9 @@
 # Every scene: their one-scene chip builds fit the SoC's 192 KiB (`make fw-size`, suite fw-fit).
 # The host side runs make test's FW_TEST_FRAMES (4) builds (all scenes in one image, line emulation
 # compiled in: neither changes a frame, as no scene or wireframe key is pressed); on socsim every
-# scene runs its 2-frame build (tests/soc/tests.mk): a SoC frame is seconds of simulation (the
+# scene runs its 3-frame build (mk/builds.toml fw.soc-test): a SoC frame is seconds of simulation (the
 # start-up of landscape, voxel and knot alone is millions of cycles: terrain, chunk meshes, the
-# knot's grid), and frames 0-1 already cover the keys (read at frame 1). Two scenes run at a time.
+# knot's grid), and frames 0-2 already cover the keys (read at frame 2). Two scenes run at a time.
 # On chip three scenes run, one per camera mode (voxel fly, cubes orbit, tetra object): the knot's
 # and the landscape's start-ups are most of a run's cycles, and every scene runs on socsim from the
 # SDRAM in soc-sdram-scenes (tests/soc/sdram_tour.sh; their on-chip images' fit, stack included, is
@@ -22,7 +22,8 @@ source "$(dirname "$0")/../lib.sh"
 source "$(dirname "$0")/soc_lib.sh"
 need BUILD
 # J J J W at doorbell 1 (frame 0's first batch): look or swing left three times and move forward or
-# zoom in, in every camera mode; the firmware reads them at frame 1 in both worlds. No scene key.
+# zoom in, in every camera mode; the firmware reads them at frame 2 in both worlds (keys typed at a
+# frame's doorbells act from the frame after next, app.c). No scene key.
 keys='1:jjjw'
 need_file "$socsim"
 work=$(fresh_dir soc-vs-cosim)
@@ -30,7 +31,7 @@ scenes=${SOC_SCENES:-voxel cubes tetra}
 
 one_scene() {
     local s="$1" host="$BUILD/fw-test/host-$1" soc_elf frames printed f
-    soc_elf="$soc_test_dir/$s-2f.elf"
+    soc_elf="$soc_test_dir/$s-3f.elf"
     need_file "$host" "$soc_elf.hex"
     run_to "$work/$s.host.uart" 300 "$host" --frames "$work/$s-host" --keys-at "$keys"
     expect_status 0 "host build of $s"
@@ -38,7 +39,7 @@ one_scene() {
         --uart-log "$work/$s.soc.uart" --keys-at "$keys" --summary "$work/$s.soc.summary"
     expect_status 0 "socsim of $s (log: $work/$s.soc.out)"
     frames=$(summary frames "$work/$s.soc.summary")
-    [ "$frames" -ge 2 ] || fail "$s: only $frames frames on socsim"
+    [ "$frames" -ge 3 ] || fail "$s: only $frames frames on socsim"
     expect_eq "$(png_count "$work/$s-soc")" "$frames" "$s: PNG files written by socsim"
     expect_eq "$(summary frames_model_checked "$work/$s.soc.summary")" "$frames" "$s: socsim frames equal to the model"
     expect_eq "$(summary keys_late "$work/$s.soc.summary")" 0 "$s: keys still on the line when read"
