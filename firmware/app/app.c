@@ -82,6 +82,8 @@
  * their memory, sized for the largest of them: app.c is the one file of the program that says. */
 #include "scenes/scene_set.h"
 
+/* ---- the frame's counters: one struct, changed only by these functions ----------------------- */
+
 /* What one frame sent and what the GPU reported, summed over its batches and passes, and where
  * its instructions went. */
 struct frame_stats {
@@ -147,8 +149,6 @@ struct app {
     struct strip_bins strips;  /* the pass's primitives binned into strips (render/strips.h) */
 #endif
 };
-
-/* ---- the frame's counters: one struct, changed only by these functions ----------------------- */
 
 static void frame_stats_begin(struct frame_stats *st)
 {
