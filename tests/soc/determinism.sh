@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# socsim is deterministic: two runs of one scene (tetra's 2-frame test build, with keys) give
+# socsim is deterministic: two runs of one scene (tetra's 3-frame test build, with keys) give
 # byte-identical PNG files, UART logs and summaries (every count the harness keeps: cycles, retired
 # instructions, cache refills). The two runs go at the same time, on two cores: a run must depend on
 # nothing but its inputs.
 source "$(dirname "$0")/../lib.sh"
 source "$(dirname "$0")/soc_lib.sh"
 need BUILD
-soc_test tetra-2f soc-determinism
+soc_test tetra-3f soc-determinism
 
 one_run() {
     run_to "$work/$1.out" 120 "$socsim" --fw "$elf" --frames "$work/$1" --uart-log "$work/$1.uart" \
