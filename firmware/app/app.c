@@ -1011,13 +1011,14 @@ static void app_statistics(struct app *app, unsigned frame, bool completed,
 
 static void app_settle(struct app *app, struct frame_stats *now)
 {
-    const struct frame_span span = frame_span_begin();
+    struct frame_span span;
     struct gpu_stats stats;
     bool completed = true;
 
     if (!app->pending) {
         return;
     }
+    span = frame_span_begin();
     app->pending = false;
     if (app_wait_batch(app, app->pending_tag) != GPU_OK) {
         app_watchdog_fired(app, app->pending_frame, app->pending_st.batches, app->pending_tag);
