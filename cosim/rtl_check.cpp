@@ -290,7 +290,8 @@ int rtl_check_main(int argc, char **argv)
                 planes = 3;
                 zclear = zclear || rs.chance(70);
                 last = (last == static_cast<uint32_t>(fb.h) - 1 && rs.chance(30)) ? 0xFFFFu : last;
-                walk = !clear_forced && !reset_probe && rs.chance(20);
+                // (a walk sets up every primitive once a strip: on strips of 1 row, 480 times)
+                walk = !clear_forced && !reset_probe && rs.chance(strip_rows >= 4 ? 20 : 4);
             } else if (rs.chance(70)) {
                 first = k_first + rs.below(k_rows);
                 last = first + rs.below(k_first + k_rows - first);
