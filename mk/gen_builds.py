@@ -18,6 +18,7 @@ the manifests (mk/manifest.py's tags). An error names the file and the key.
 """
 import argparse
 import fnmatch
+import functools
 import itertools
 import os
 import re
@@ -32,6 +33,8 @@ SOC_MAP = os.path.join(ROOT, "contract/soc_map.toml")
 SCENE_TABLE = os.path.join(ROOT, "firmware/scenes/scene_list.h")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import manifest  # noqa: E402  (mk/manifest.py: the manifests' GPU tags)
+sys.path.insert(0, os.path.join(ROOT, "contract"))
+import gen_contract  # noqa: E402  (contract/gen_contract.py: LIMIT_PARAMS, cap_max)
 
 GPU_KEYS = {"params", "display", "trace", "list"}
 FW_ROW_KEYS = {"scene", "variant", "elf", "host", "frames", "polls", "defs", "set", "list"}
@@ -56,24 +59,22 @@ def contract_params():
     """The GPU's build parameters and their defaults: the limits that are parameters (the
     capacities and the frame), then the [build] table, as contract/gen_contract.py declares them
     (its LIMIT_PARAMS, read from it)."""
-    sys.path.insert(0, os.path.join(ROOT, "contract"))
-    from gen_contract import LIMIT_PARAMS
     c = load(CONTRACT)
-    params = {name: c["limits"][key] for name, (key, _) in LIMIT_PARAMS.items()}
+    params = {name: c["limits"][key] for name, (key, _) in gen_contract.LIMIT_PARAMS.items()}
     params.update({k: v["default"] for k, v in c["build"].items()})
     return params
 
 
+@functools.cache
 def cap_maxima():
     """The largest buffer capacities (VTX_CAP, TRI_CAP): what their windows hold, as
-    contract/gen_contract.py computes them."""
-    sys.path.insert(0, os.path.join(ROOT, "contract"))
-    from gen_contract import cap_max
-    return cap_max(load(CONTRACT))
+    contract/gen_contract.py computes them (read once)."""
+    return gen_contract.cap_max(load(CONTRACT))
 
 
 def resolve_max(params, where):
-    """A capacity given as "max" is its window's (cap_maxima); nothing else may be a word."""
+    """A capacity given as "max" becomes its window's (cap_maxima); "max" for any other
+    parameter is an error."""
     maxima = cap_maxima()
     out = {}
     for k, v in params.items():

@@ -65,7 +65,8 @@
 #             "Frames in external memory"): it draws in strips of STRIP_ROWS rows (16) on chip, colour
 #             and depth, at the frame size FB (640x480 shown 1:1 by default; 320x240 shown 2x2)
 #   WIDE_BUF  1: the GPU's vertex and index buffers as large as their windows (VTX_CAP_MAX and
-#             TRI_CAP_MAX, 4,096 each, about 26 EBR more than the contract's 1,024 and 512), so that a
+#             TRI_CAP_MAX, 4,096 each: 79 EBR for the default build on the 85F against 56 with the
+#             contract's 1,024 and 512), so that a
 #             pass of up to that many is one batch the GPU walks over every strip (CTRL.WALK) and the
 #             firmware bins nothing (docs/strips.md). The default with FRAME_DRAM on the 85F and 45F;
 #             0 on the 25F and 12F, which have no EBR to spare

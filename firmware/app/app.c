@@ -128,10 +128,9 @@ struct app {
     uint32_t write_mask;     /* FB_WRITE_MASK as last written; APP_WRITE_MASK_UNKNOWN at first */
     uint32_t lost_in_a_row;  /* consecutive frames dropped by the watchdog */
     /* The frame whose last batch the GPU may still be drawing (its swap waits for vertical
-     * blank) while the CPU computes the next: its number, tag and statistics (app_settle). */
-    bool pending;
+     * blank; the driver's gpu.pending, gpu.pending_tag) while the CPU computes the next: its
+     * number and statistics (app_settle). */
     unsigned pending_frame;
-    uint32_t pending_tag;
     struct frame_stats pending_st;
     /* The next frame's keys, collected before this frame's first batch went out (app_collect_input). */
     struct input_counts keys_next;
@@ -695,13 +694,18 @@ static inline void app_print_usb(struct app *app, struct frame_stats *st)
 #endif
 
 /* Where batches are built: in the GPU's own buffers where the platform maps them, else staged. */
-#if BSP_GPU_BUFFERS_MAPPED
-static void app_attach_words(struct app *app)
+static void app_attach_mapped_words(struct app *app)
 {
     app->words.vtx = gpu_buffer_words(GPU_WIN_VTX);
     app->words.prim = gpu_buffer_words(GPU_WIN_IDX);
     app->words.vtx_room = GPU_VTX_CAP_MAX;  /* the windows: a batch takes what the GPU holds */
     app->words.prim_room = GPU_TRI_CAP_MAX;
+}
+
+#if BSP_GPU_BUFFERS_MAPPED
+static void app_attach_words(struct app *app)
+{
+    app_attach_mapped_words(app);
 }
 
 /* After the boot banner: a platform that promised mapped buffers must have them. */
@@ -723,10 +727,7 @@ static void app_attach_words(struct app *app)
 {
     static const struct batch_words staged = BATCH_WORDS_ON(app_vtx_staging, app_prim_staging);
 
-    app->words.vtx = gpu_buffer_words(GPU_WIN_VTX);
-    app->words.prim = gpu_buffer_words(GPU_WIN_IDX);
-    app->words.vtx_room = GPU_VTX_CAP_MAX;
-    app->words.prim_room = GPU_TRI_CAP_MAX;
+    app_attach_mapped_words(app);
     if (app->words.vtx == NULL || app->words.prim == NULL) {
         app->words = staged;  /* the contract's default capacities: larger GPUs get batches of that size */
     }
@@ -933,7 +934,7 @@ static void app_watchdog_fired(struct app *app, unsigned frame_no, uint32_t batc
  * Send a group of batches: the primitives of the cursor (`what`: the pass's draw order, or a
  * strip's list), drawing rows `strip`; its first batch clears (app_batch_ctrl), and when `final`
  * (the frame's last group) its last batch swaps. `walk` (0 or GPU_CTRL_WALK_MASK) goes into every
- * batch's CTRL. The frame's last batch is not waited for: it is left pending (app->pending), and
+ * batch's CTRL. The frame's last batch is not waited for: it is left pending (the driver's gpu.pending), and
  * the CPU goes on with the next frame while the GPU draws and waits for vertical blank
  * (app_settle). Returns false when the watchdog fired (the GPU has been reset and the frame is
  * abandoned). Inlined into each caller, so that each keeps its own path (`what` a constant): out
@@ -980,9 +981,7 @@ app_send_group(struct app *app, unsigned frame_no, struct batch_cursor *cur, enu
         frame_stats_add_batch(tot, batch.prim_count);
         if (final && done) {
             frame_stats_submitted(tot, t1);
-            app->pending = true;
-            app->pending_tag = tag;
-            return true;
+            return true;  /* left pending (the driver's gpu.pending) */
         }
 
         wait = frame_stats_wait_begin(tot, t1);
@@ -1015,13 +1014,12 @@ static void app_settle(struct app *app, struct frame_stats *now)
     struct gpu_stats stats;
     bool completed = true;
 
-    if (!app->pending) {
+    if (!app->gpu.pending) {
         return;
     }
     span = frame_span_begin();
-    app->pending = false;
-    if (app_wait_batch(app, app->pending_tag) != GPU_OK) {
-        app_watchdog_fired(app, app->pending_frame, app->pending_st.batches, app->pending_tag);
+    if (app_wait_batch(app, app->gpu.pending_tag) != GPU_OK) {
+        app_watchdog_fired(app, app->pending_frame, app->pending_st.batches, app->gpu.pending_tag);
         completed = false;
     } else {
         gpu_read_stats(&app->gpu, &stats);
@@ -1369,7 +1367,7 @@ int app_run(void)
         completed = app_draw(app, frame, &st);
         frame_stats_end(&st);
         app_print_notes(app, &notes, mode_before, &ev);
-        if (completed && app->pending) {
+        if (completed && app->gpu.pending) {
             app->pending_frame = frame;  /* its statistics once its last batch is done */
             app->pending_st = st;
         } else {

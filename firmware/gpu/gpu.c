@@ -104,6 +104,7 @@ static inline __attribute__((always_inline)) uint32_t gpu_ring(struct gpu_dev *d
     gpu_write(GPU_REG_DOORBELL, t);
     dev->next_tag = gpu_next_tag(t);
     dev->pending = true;
+    dev->pending_tag = t;
     return t;
 }
 

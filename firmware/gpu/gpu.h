@@ -44,10 +44,6 @@ enum gpu_result {
     GPU_E_BUFFERS = -8,    /* VTX_CAP / TRI_CAP beyond their bus windows, or below one triangle */
 };
 
-/* GPU_VTX_CAP_MAX, GPU_TRI_CAP_MAX (gpu_regs.h): the most vertices and primitives the contract's
- * bus windows can hold: a device reporting more is not the contract's, and trusting it would send
- * buffer words past their window. */
-
 /* Capability fields of CAPS. */
 static inline bool gpu_caps_lines(uint32_t caps)
 {
@@ -101,6 +97,7 @@ struct gpu_dev {
     struct gpu_info info;
     uint32_t next_tag;  /* tag of the next doorbell: never 0, +1 per batch (skipping 0) */
     bool pending;       /* a batch is in flight: submitted, not yet seen done */
+    uint32_t pending_tag;  /* its tag, while pending */
     uint32_t last_done_seq;  /* DONE_SEQ at the last gpu_wait return (for error messages) */
     uint32_t resets;    /* gpu_reset calls since gpu_init */
 };
@@ -143,7 +140,9 @@ struct gpu_stats {
 
 /* Read ID/VERSION/CAPS/capacities into dev->info (always, so a caller can report them), then
  * check them: GPU_E_NOT_FOUND, GPU_E_VERSION or GPU_E_GEOMETRY on a mismatch, GPU_E_BUFFERS when
- * VTX_CAP is not in 3 .. GPU_VTX_CAP_MAX or TRI_CAP not in 1 .. GPU_TRI_CAP_MAX. On success load
+ * VTX_CAP is not in 3 .. GPU_VTX_CAP_MAX or TRI_CAP not in 1 .. GPU_TRI_CAP_MAX (gpu_regs.h: what
+ * the bus windows hold; a device reporting more is not the contract's, and trusting it would send
+ * buffer words past their window). On success load
  * palette[0 .. n-1] (RGB444 words) into the palette window and pick a first tag that differs from
  * the current DOORBELL and DONE_SEQ values. */
 int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n);

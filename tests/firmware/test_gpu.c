@@ -200,6 +200,7 @@ void test_gpu_submit(void)
     CHECK_EQ(gpu_submit_batch(&dev, &b, &tag), GPU_OK);
     CHECK_EQ(tag, 42u);
     CHECK(dev.pending);
+    CHECK_EQ(dev.pending_tag, tag);  /* what a caller that left it pending waits for */
 
     for (unsigned i = 0; i < 3u * GPU_VTX_WORDS; i++) {
         CHECK_EQ(REG(GPU_WIN_VTX + 4u * i), vtx[i]);
