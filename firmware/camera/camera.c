@@ -3,6 +3,8 @@
  */
 #include "camera/camera.h"
 
+#include "config/hot_path.h"
+
 static real_t cam_clamp(real_t v, real_t lo, real_t hi)
 {
     return (v < lo) ? lo : ((v > hi) ? hi : v);
@@ -70,7 +72,7 @@ static void cam_update_eye(struct camera *cam)
     }
 }
 
-void cam_init(struct camera *cam, const struct cam_config *cfg, enum cam_mode mode, vec3 target,
+FW_BUILD_ONCE void cam_init(struct camera *cam, const struct cam_config *cfg, enum cam_mode mode, vec3 target,
               real_t distance, fx_angle yaw, int32_t pitch)
 {
     cam->cfg = *cfg;
@@ -84,7 +86,7 @@ void cam_init(struct camera *cam, const struct cam_config *cfg, enum cam_mode mo
     cam->mode = mode;
 }
 
-void cam_set_mode(struct camera *cam, enum cam_mode mode)
+FW_BUILD_ONCE void cam_set_mode(struct camera *cam, enum cam_mode mode)
 {
     if (mode == cam->mode) {
         return;

@@ -61,6 +61,14 @@
 #define FW_WITH_STRIPS 1
 #endif
 
+/* The painter's order by construction (1, the default): a scene whose objects lie in the cells of
+ * a grid (scene_set_grid) draws them far to near from the eye, a regular lattice's quads are
+ * walked far to near (render.c), and a pass drawn only so is not sorted. Exact where the sort's
+ * depth keys are not, and cheaper; 0 sorts every pass (what `make bench-fw` compares against). */
+#ifndef FW_SCENE_ORDER
+#define FW_SCENE_ORDER 1
+#endif
+
 /* Whether a frame is sized by the scenes' wireframe columns (an outline emulated with triangles
  * needs more vertices and primitives than the filled faces) or their filled ones (scene_list.h). */
 #define FW_FRAME_WIRE_COLUMNS (FW_WITH_WIREFRAME && FW_WITH_LINE_EMULATION)

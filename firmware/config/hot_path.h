@@ -24,6 +24,11 @@
  * must fit the SoC's 192 KiB, and no frame's drawing runs this code. */
 #define FW_BUILD_ONCE __attribute__((cold))
 
+/* Code a frame runs once or not at all (the camera's move, a rotation's renormalisation): optimised
+ * for size as FW_BUILD_ONCE is, for the same reason; its few instructions more a frame are
+ * nothing next to the per-vertex and per-face loops (`make bench-fw` measures them). */
+#define FW_ONCE_A_FRAME __attribute__((cold))
+
 /* A zero-initialised object the frame loop works hard (the sort's digit slots): in a SoC build whose
  * firmware runs from the SDRAM (bsp/soc/bsp.mk sets FW_FAST_RAM), it goes to the on-chip RAM above
  * the boot program (linker/soc.ld's .fast, beside the stack), where a store takes a clock or two

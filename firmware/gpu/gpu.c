@@ -8,6 +8,8 @@
 #include <stdint.h>
 
 #include "bsp.h"
+
+#include "config/hot_path.h"
 #include "gpu/gpu.h"
 
 #include "config/build_options.h"
@@ -29,7 +31,7 @@ static uint32_t gpu_next_tag(uint32_t tag)
     return (tag == 0u) ? 1u : tag;  /* 0 never names a batch */
 }
 
-int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n)
+FW_BUILD_ONCE int gpu_init(struct gpu_dev *dev, const uint16_t *palette, uint32_t n)
 {
     struct gpu_info *info = &dev->info;
     uint32_t doorbell;

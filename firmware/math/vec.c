@@ -3,6 +3,8 @@
  */
 #include "math/vec.h"
 
+#include "config/hot_path.h"
+
 #if !REAL_IS_FIXED
 #include <math.h>
 #endif
@@ -87,7 +89,7 @@ static int32_t vec_bit_length64(uint64_t m)
  * magnitude they run while floor(M / 2^j) >= 2^30, i.e. k = bit length of M - 30 times (looped,
  * up to 30 iterations of three 64-bit divisions on rv32: this function took 0.88 M of the
  * landscape's start-up instructions, 0.47 M now). */
-static uvec3 vec_direction64(int64_t x, int64_t y, int64_t z)
+static FW_BUILD_ONCE uvec3 vec_direction64(int64_t x, int64_t y, int64_t z)
 {
     uvec3 u = {0, 0, 0};
     uint64_t len;
@@ -113,7 +115,7 @@ static uvec3 vec_direction64(int64_t x, int64_t y, int64_t z)
 }
 #endif
 
-uvec3 vec3_direction(vec3 v)
+FW_BUILD_ONCE uvec3 vec3_direction(vec3 v)
 {
 #if REAL_IS_FIXED
     return vec_direction64(v.x, v.y, v.z);
@@ -130,7 +132,7 @@ uvec3 vec3_direction(vec3 v)
 #endif
 }
 
-uvec3 uvec3_normalize(uvec3 u)
+FW_BUILD_ONCE uvec3 uvec3_normalize(uvec3 u)
 {
 #if REAL_IS_FIXED
     return vec_direction64(u.x, u.y, u.z);
@@ -139,7 +141,7 @@ uvec3 uvec3_normalize(uvec3 u)
 #endif
 }
 
-uvec3 uvec3_mean_direction(const uvec3 *u, uint32_t n)
+FW_BUILD_ONCE uvec3 uvec3_mean_direction(const uvec3 *u, uint32_t n)
 {
 #if REAL_IS_FIXED
     /* n <= 64 unit vectors of |u_i| <= 2^30 (q2_30, a little over 1 at most): sums below 2^37. */
@@ -165,7 +167,7 @@ uvec3 uvec3_mean_direction(const uvec3 *u, uint32_t n)
 #endif
 }
 
-uvec3 vec3_triangle_normal(vec3 a, vec3 b, vec3 c)
+FW_BUILD_ONCE uvec3 vec3_triangle_normal(vec3 a, vec3 b, vec3 c)
 {
 #if REAL_IS_FIXED
     const int64_t e1x = (int64_t)b.x - a.x;
@@ -338,7 +340,7 @@ mat3 mat3_from_yaw_pitch(fx_angle yaw, fx_angle pitch)
 }
 
 /* v * (3 - v.v) / 2: one Newton step towards unit length. */
-static uvec3 vec_renorm_length(uvec3 v)
+static FW_ONCE_A_FRAME uvec3 vec_renorm_length(uvec3 v)
 {
     const unit_t k = unit_sub(UNIT_C(1.5), unit_mul(UNIT_C(0.5), uvec3_dot(v, v)));
     uvec3 r = {unit_mul(v.x, k), unit_mul(v.y, k), unit_mul(v.z, k)};
@@ -346,7 +348,7 @@ static uvec3 vec_renorm_length(uvec3 v)
     return r;
 }
 
-void mat3_renormalize(mat3 *m)
+FW_ONCE_A_FRAME void mat3_renormalize(mat3 *m)
 {
     const uvec3 x = mat3_row(m, 0);
     const uvec3 y = mat3_row(m, 1);
@@ -374,6 +376,27 @@ void mat3_renormalize(mat3 *m)
     m->m[2][0] = zo.x;
     m->m[2][1] = zo.y;
     m->m[2][2] = zo.z;
+}
+
+vec3 xf_eye(const xf_affine *xf)
+{
+    const unit_t(*m)[3] = xf->r.m;
+    const vec3 t = xf->t;
+#if REAL_IS_FIXED
+    /* Column j of r times t, as vec3_dot_unit_fast forms a dot product: |t_i| < 4096, so 4 t_i
+     * fits int32, and each term is floored (the sum low by less than 3 units of 2^-16). */
+    const int32_t x4 = t.x * 4;
+    const int32_t y4 = t.y * 4;
+    const int32_t z4 = t.z * 4;
+
+    return vec3_make(-(fx_mulh(m[0][0], x4) + fx_mulh(m[1][0], y4) + fx_mulh(m[2][0], z4)),
+                     -(fx_mulh(m[0][1], x4) + fx_mulh(m[1][1], y4) + fx_mulh(m[2][1], z4)),
+                     -(fx_mulh(m[0][2], x4) + fx_mulh(m[1][2], y4) + fx_mulh(m[2][2], z4)));
+#else
+    return vec3_make(-(m[0][0] * t.x + m[1][0] * t.y + m[2][0] * t.z),
+                     -(m[0][1] * t.x + m[1][1] * t.y + m[2][1] * t.z),
+                     -(m[0][2] * t.x + m[1][2] * t.y + m[2][2] * t.z));
+#endif
 }
 
 /* One output coordinate (row m of the transform, offset t) of the eight corners, written to

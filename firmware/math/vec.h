@@ -205,6 +205,11 @@ static inline vec3 xf_apply(const xf_affine *xf, vec3 p)
     return out;
 }
 
+/* The point xf takes to the origin, for a rotation r: -r^T t (a model-to-view transform's eye, in
+ * model space). |t_i| < 4096 as for xf_apply; fixed point within 3 units of 2^-16 (1/20000 of a
+ * unit: what the painter's walks place by it, render.c and scene.c, see no difference). */
+vec3 xf_eye(const xf_affine *xf);
+
 /* a * b for per-frame composition (view times object rotation), where a result is used once and
  * never accumulated: fixed point takes each product's high word (mulh, floored) instead of the
  * exact int64 sum, so an entry is low by less than 3 * 2^-28 (~1e-8) — invisible, and 5x cheaper.

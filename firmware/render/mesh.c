@@ -34,6 +34,7 @@ void mesh_clear(struct mesh *m)
     m->box = false;
     m->lattice_diag = 0;
     m->lattice_axes = 0;
+    m->lattice_regular = 0;
     m->quads = 0;
     m->lattice_cols = 0;
 }
@@ -58,7 +59,7 @@ uint16_t mesh_add_normal(struct mesh *m, uvec3 n)
     return (uint16_t)m->normal_count++;
 }
 
-void mesh_add_face_normal(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint16_t normal,
+FW_BUILD_ONCE void mesh_add_face_normal(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint16_t normal,
                           uint8_t material)
 {
     struct mesh_face *f;
@@ -76,7 +77,7 @@ void mesh_add_face_normal(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, ui
     f->flags = 0;
 }
 
-void mesh_add_face(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint8_t material)
+FW_BUILD_ONCE void mesh_add_face(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint8_t material)
 {
     const uvec3 n = vec3_triangle_normal(m->verts[a], m->verts[b], m->verts[c]);
 
@@ -236,12 +237,18 @@ FW_BUILD_ONCE bool mesh_set_lattice(struct mesh *m, uint32_t rows, uint32_t cols
     }
     m->lattice_diag = (uint8_t)(diag0 & 1u);
     m->lattice_axes = 1;
+    /* Regular as well while column c's x is x_0 + c dx and row r's z is z_0 + r dz, dx, dz > 0. */
+    m->lattice_regular = m->verts[1].x > m->verts[0].x && m->verts[w].z > m->verts[0].z;
     for (uint32_t r = 0; r <= rows; r++) {
         for (uint32_t c = 0; c < w; c++) {
             const vec3 p = m->verts[r * w + c];
 
             if (p.x != m->verts[c].x || p.z != m->verts[r * w].z) {
                 m->lattice_axes = 0;  /* not on its column's x and its row's z */
+            }
+            if (p.x != m->verts[0].x + (real_t)c * (m->verts[1].x - m->verts[0].x) ||
+                p.z != m->verts[0].z + (real_t)r * (m->verts[w].z - m->verts[0].z)) {
+                m->lattice_regular = 0;
             }
         }
     }

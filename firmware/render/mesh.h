@@ -69,6 +69,10 @@ struct mesh {
      * x-z lattice: the landscape's tiles), so render.c projects it with a column's and a row's
      * products formed once (render_project_lattice). */
     uint8_t lattice_axes : 1;
+    /* ... and regular: column c's x is x_0 + c dx, row r's z is z_0 + r dz, dx and dz > 0, so
+     * render.c's lattice loop can walk its quads far to near from any eye (the painter's order of a
+     * height field, render_lattice_faces). */
+    uint8_t lattice_regular : 1;
     uint8_t quads : 1;      /* mesh_set_quads: the faces are quads' halves in pairs */
     uint16_t lattice_cols;  /* vertices per lattice row; 0: not a lattice mesh */
     /* A grid mesh (mesh_set_grid): faces implicit, not stored; faces is then unused. */
@@ -153,7 +157,8 @@ static inline void mesh_grid_face(const struct mesh_grid *g, uint32_t i, uint32_
  * flagged MESH_FACE_QUAD, and then marks the mesh, so that render.c's lattice face loop may form
  * a face's corners from its place instead of reading them. Returns whether it did (else the mesh
  * is left unmarked, and any face loop draws it). It also notes whether vertex (r, c) has column
- * c's x (row 0's) and row r's z (column 0's) for every r and c (lattice_axes). Neither the faces
+ * c's x (row 0's) and row r's z (column 0's) for every r and c (lattice_axes), and whether those
+ * are evenly spaced and increasing (lattice_regular). Neither the faces
  * nor the vertices may change while it is marked (mesh_clear unmarks).
  */
 bool mesh_set_lattice(struct mesh *m, uint32_t rows, uint32_t cols, uint32_t diag0);

@@ -3,6 +3,8 @@
  */
 #include "render/palette.h"
 
+#include "config/hot_path.h"
+
 /* Full-light colour of each material, RGB 0..15 per channel. */
 static const uint8_t pal_material_rgb[PAL_MATERIALS][3] = {
     {0, 0, 0},     /* 0: fixed colours, see palette_build */
@@ -23,7 +25,7 @@ static const uint8_t pal_material_rgb[PAL_MATERIALS][3] = {
     {0, 15, 15},   /* anaglyph right: cyan */
 };
 
-void palette_build(uint16_t pal[PAL_ENTRIES])
+FW_BUILD_ONCE void palette_build(uint16_t pal[PAL_ENTRIES])
 {
     for (uint32_t m = 0; m < PAL_MATERIALS; m++) {
         for (uint32_t s = 0; s < PAL_SHADES; s++) {
@@ -44,7 +46,7 @@ void palette_build(uint16_t pal[PAL_ENTRIES])
     pal[PAL_NIGHT] = (uint16_t)PAL_RGB444(0x0, 0x0, 0x0);
 }
 
-void palette_build_anaglyph(uint16_t pal[PAL_ENTRIES])
+FW_BUILD_ONCE void palette_build_anaglyph(uint16_t pal[PAL_ENTRIES])
 {
     for (uint32_t i = 0; i < PAL_ENTRIES; i++) {
         const uint32_t left = i >> 4;

@@ -43,7 +43,7 @@ void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,
     pass->gouraud = false;
 }
 
-void render_level_cache_init(struct render_level_cache *c, uint8_t *storage, uint32_t cap)
+FW_BUILD_ONCE void render_level_cache_init(struct render_level_cache *c, uint8_t *storage, uint32_t cap)
 {
     c->level = storage;
     c->cap = cap;
@@ -74,8 +74,8 @@ static uint8_t *render_level_cache_for(struct render_level_cache *c, const struc
     return c->level;
 }
 
-void render_level_cache_fill(const struct render_object *obj, const mat3 *scene_rot, uvec3 light,
-                             uint32_t ambient)
+FW_BUILD_ONCE void render_level_cache_fill(const struct render_object *obj, const mat3 *scene_rot,
+                                           uvec3 light, uint32_t ambient)
 {
     const struct mesh *mesh = obj->mesh;
     const uvec3 light_model = render_light_model(&obj->rot, render_light_scene(scene_rot, light));
@@ -97,7 +97,7 @@ void render_stats_clear(struct render_stats *s)
     *s = (struct render_stats){0};  /* every counter, a new one included */
 }
 
-void render_frame_init(struct render_frame *f, struct proj_vertex *vert, uint32_t vert_cap,
+FW_BUILD_ONCE void render_frame_init(struct render_frame *f, struct proj_vertex *vert, uint32_t vert_cap,
                        struct render_prim *prim, sort_item_t *sort_item, sort_item_t *sort_tmp,
                        uint32_t prim_cap, struct sort_scratch *scratch)
 {
@@ -129,6 +129,7 @@ void render_frame_begin(struct render_frame *f)
     f->prim_count = 0;
     f->sorted_count = 0;
     f->outline_count = 0;
+    f->painter_ordered = false;
     f->batch_stamp = 0;  /* every vertex made from now on starts with stamp 0 */
     f->edge_used = f->edge_cap + 1u;  /* the set is cleared when a wireframe first needs it */
 }
@@ -1307,7 +1308,7 @@ static inline __attribute__((always_inline)) void
 render_lattice_face(struct render_frame *f, const struct render_faces_job *job,
                     struct render_emit_walk *w, struct render_lattice_corner a,
                     struct render_lattice_corner b, struct render_lattice_corner c, uint32_t ia,
-                    uint32_t ib, uint32_t ic, const struct mesh_face *face, bool shaded)
+                    uint32_t ib, uint32_t ic, const struct mesh_face *face, bool shaded, bool keyed)
 {
     uint32_t level;
     uint32_t normal;
@@ -1331,7 +1332,48 @@ render_lattice_face(struct render_frame *f, const struct render_faces_job *job,
         render_prim_put(w->p, ia, ib, ic, PAL_INDEX(face->material, level), GPU_PRIM_KIND_TRI);
     }
     /* The key: the depths' sum, <= 3 PROJ_DEPTH_MAX = 65535. */
-    render_emit_next(w, (sort_item_t)(a.depth + b.depth + c.depth) << SORT_KEY_SHIFT);
+    render_emit_next(w, keyed ? (sort_item_t)(a.depth + b.depth + c.depth) << SORT_KEY_SHIFT : 0u);
+}
+
+/*
+ * The painter's order of a height field. Over a regular lattice (mesh.lattice_regular) a quad can
+ * hide another from the eye only if it lies between them: the segment from the eye to a point
+ * seen, projected onto the x-z plane, crosses the quads between the eye's column and row and the
+ * point's, and no others, each no farther from the eye's quad in columns and in rows than the
+ * next. So drawing the quads in order of their row's distance from the eye's row falling, and
+ * within a row of their column's distance, draws whatever hides a quad after that quad: rows
+ * before the eye's ascending, rows after it descending, the eye's row last, and the same for the
+ * columns of each row. A quad's two halves need no order: front faces sharing an edge lie on
+ * either side of it on the screen, and the GPU's fill rule gives each pixel of the edge to one of
+ * them (contract: top-left). The walk is exact for any eye, inside the lattice or out, and needs
+ * no depth key; render_sort then leaves the frame as it is (render_frame.painter_ordered).
+ */
+
+/* The quad (column or row) the eye is over, floored (any int32; far outside the lattice too). */
+static int32_t render_lattice_eye_index(real_t eye, real_t origin, real_t step)
+{
+    const real_t d = real_sub(eye, origin);
+#if REAL_IS_FIXED
+    /* Raw quotient of two q16_16 values, truncated, then floored: step > 0. */
+    const int32_t q = d / step;
+
+    return (q * step > d) ? q - 1 : q;
+#else
+    return real_floor_int(d / step);
+#endif
+}
+
+/* Draw order of the items [first, end) reversed. */
+static void render_reverse_items(sort_item_t *first, sort_item_t *end)
+{
+    while (end - first > 1) {
+        const sort_item_t x = *first;
+
+        end--;
+        *first = *end;
+        *end = x;
+        first++;
+    }
 }
 
 /*
@@ -1340,7 +1382,9 @@ render_lattice_face(struct render_frame *f, const struct render_faces_job *job,
  * faces, so no face's vertex numbers are read or turned into addresses; material and normal still
  * come from the stored face. A quad with a corner off the screen (only where `check`, as in
  * render_faces: the object crosses the frustum) has both faces done by render_face_any. The same
- * primitives, in the same order and with the same counts, as render_faces over the same faces.
+ * primitives, with the same counts, as render_faces over the same faces: in the painter's walk
+ * above where the frame keeps a painter's order and the lattice is regular, else in the faces'
+ * order (and the frame is sorted).
  */
 static void render_lattice_faces(struct render_frame *f, const struct render_faces_job *job_in,
                                  bool check)
@@ -1352,61 +1396,90 @@ static void render_lattice_faces(struct render_frame *f, const struct render_fac
     const uint32_t w_verts = mesh->lattice_cols;  /* vertices per row */
     const uint32_t cols = w_verts - 1u;           /* quads per row */
     const uint32_t rows = mesh->face_count / (2u * cols);
-    const struct mesh_face *face = mesh->faces;
-    const struct proj_vertex *row_v = &f->vert[job->base];
-    uint32_t row_i = job->base;
     const uint32_t np_start = f->prim_count;
     uint32_t np;
     struct render_emit_walk w;
     struct render_face_counts slow = {0, 0, 0};  /* render_face_any's */
+    /* Rows 0 .. split_r - 1 up, then rows - 1 down to split_r; in a row, quads 0 .. split_c - 1
+     * up, then cols - 1 down to split_c (emitted up, then reversed): the walk far to near from
+     * the eye's row and column, clamped to 0 .. rows and 0 .. cols. */
+    uint32_t split_r = rows;
+    uint32_t split_c = cols;
     /* Gouraud: each face its material's base colour (one test a face; a copy of the loop for
      * each case would not fit the landscape's program in the SoC's 192 KiB). */
     const bool shaded = FW_WITH_GOURAUD && job->vnormal14 != 0;
+    bool keyed;  /* depth keys for the sort: not in the painter's walk */
 
+    f->painter_ordered = f->painter_ordered && mesh->lattice_regular;
+    keyed = !f->painter_ordered;
+    if (f->painter_ordered) {
+        const vec3 eye = xf_eye(job->mv);  /* model space */
+        const vec3 *p = mesh->verts;
+        const int32_t er = render_lattice_eye_index(eye.z, p[0].z, real_sub(p[w_verts].z, p[0].z));
+        const int32_t ec = render_lattice_eye_index(eye.x, p[0].x, real_sub(p[1].x, p[0].x));
+
+        split_r = (er < 0) ? 0u : (((uint32_t)er > rows) ? rows : (uint32_t)er);
+        split_c = (ec < 0) ? 0u : (((uint32_t)ec > cols) ? cols : (uint32_t)ec);
+    }
     w.prim = f->prim;
     w.p_end = f->prim + f->prim_cap;
     w.levels = job->levels;
     w.n_back = 0;
     render_emit_at(&w, f->sort_item, np_start);
-    for (uint32_t r = 0; r < rows; r++, row_v += w_verts, row_i += w_verts) {
-        const struct proj_vertex *v = row_v;  /* corner a of quad (r, c) */
-        uint32_t ia = row_i;                  /* its frame vertex number */
+    for (uint32_t k = 0; k < rows; k++) {
+        const uint32_t r = (k < split_r) ? k : rows - 1u + split_r - k;
+
+        /* Row r: corner a of its quad c at vertex (r, c), faces 2 (r cols + c) and the next. */
+        const struct proj_vertex *v = &f->vert[job->base + r * w_verts];
+        uint32_t ia = job->base + r * w_verts;
+        const struct mesh_face *face = &mesh->faces[2u * r * cols];
+        const struct mesh_face *const row_end = face + 2u * cols;
+        const struct mesh_face *const split = face + 2u * split_c;  /* the first quad walked down */
         uint32_t bd = (r + mesh->lattice_diag) & 1u;  /* 1: this quad splits along b-d */
+        sort_item_t *down_from = 0;  /* where the quads walked down start, once reached */
 
-        for (const struct mesh_face *row_end = face + 2u * cols; face != row_end;
-             face += 2, v++, ia++, bd ^= 1u) {
-            struct render_lattice_corner ka;
-            struct render_lattice_corner kb;
-            struct render_lattice_corner kc;
-            struct render_lattice_corner kd;
-            uint32_t ib;
+        {
+            for (; face != row_end; face += 2, v++, ia++, bd ^= 1u) {
+                struct render_lattice_corner ka;
+                struct render_lattice_corner kb;
+                struct render_lattice_corner kc;
+                struct render_lattice_corner kd;
+                uint32_t ib;
 
-            if (check && (v->code | v[w_verts].code | v[w_verts + 1u].code | v[1].code) != 0u) {
-                /* All four corners beyond one plane: both faces frustum-culled, as render_faces
-                 * would find each (most of a crossing tile's off-screen quads). */
-                if ((v->code & v[w_verts].code & v[w_verts + 1u].code & v[1].code &
-                     PROJ_CULL_BITS) != 0u) {
-                    slow.n_frustum += 2u;
+                if (face == split) {
+                    down_from = w.item;
+                }
+                if (check && (v->code | v[w_verts].code | v[w_verts + 1u].code | v[1].code) != 0u) {
+                    /* All four corners beyond one plane: both faces frustum-culled, as
+                     * render_faces would find each (most of a crossing tile's off-screen
+                     * quads). */
+                    if ((v->code & v[w_verts].code & v[w_verts + 1u].code & v[1].code &
+                         PROJ_CULL_BITS) != 0u) {
+                        slow.n_frustum += 2u;
+                        continue;
+                    }
+                    np = (uint32_t)(w.p - w.prim);
+                    np = render_face_any(f, job, true, &face[0], np, &slow);
+                    np = render_face_any(f, job, true, &face[1], np, &slow);
+                    render_emit_at(&w, f->sort_item, np);
                     continue;
                 }
-                np = (uint32_t)(w.p - w.prim);
-                np = render_face_any(f, job, true, &face[0], np, &slow);
-                np = render_face_any(f, job, true, &face[1], np, &slow);
-                render_emit_at(&w, f->sort_item, np);
-                continue;
+                ka = render_lattice_corner(v);
+                kb = render_lattice_corner(v + w_verts);
+                kc = render_lattice_corner(v + w_verts + 1);
+                kd = render_lattice_corner(v + 1);
+                ib = ia + w_verts;
+                if (bd != 0u) {  /* (a, b, d), (b, c', d) */
+                    render_lattice_face(f, job, &w, ka, kb, kd, ia, ib, ia + 1u, &face[0], shaded, keyed);
+                    render_lattice_face(f, job, &w, kb, kc, kd, ib, ib + 1u, ia + 1u, &face[1], shaded, keyed);
+                } else {         /* (a, b, c'), (a, c', d) */
+                    render_lattice_face(f, job, &w, ka, kb, kc, ia, ib, ib + 1u, &face[0], shaded, keyed);
+                    render_lattice_face(f, job, &w, ka, kc, kd, ia, ib + 1u, ia + 1u, &face[1], shaded, keyed);
+                }
             }
-            ka = render_lattice_corner(v);
-            kb = render_lattice_corner(v + w_verts);
-            kc = render_lattice_corner(v + w_verts + 1);
-            kd = render_lattice_corner(v + 1);
-            ib = ia + w_verts;
-            if (bd != 0u) {  /* (a, b, d), (b, c', d) */
-                render_lattice_face(f, job, &w, ka, kb, kd, ia, ib, ia + 1u, &face[0], shaded);
-                render_lattice_face(f, job, &w, kb, kc, kd, ib, ib + 1u, ia + 1u, &face[1], shaded);
-            } else {         /* (a, b, c'), (a, c', d) */
-                render_lattice_face(f, job, &w, ka, kb, kc, ia, ib, ib + 1u, &face[0], shaded);
-                render_lattice_face(f, job, &w, ka, kc, kd, ia, ib + 1u, ia + 1u, &face[1], shaded);
-            }
+        }
+        if (down_from != 0) {
+            render_reverse_items(down_from, w.item);  /* a quad's halves need no order */
         }
     }
     np = (uint32_t)(w.p - w.prim);
@@ -1466,10 +1539,21 @@ void render_lattice_faces_loop(struct render_frame *f, const struct render_faces
      * goes face by face (render_faces_one_by_one). */
     if (job->mesh->lattice_cols == 0u || job->levels == 0 || job->material_override != 0u ||
         (FW_WITH_WIREFRAME && job->pass->wireframe)) {
+        f->painter_ordered = false;  /* faces in their stored order */
         render_faces_one_by_one(f, job, !inside);
     } else {
         render_lattice_faces(f, job, !inside);
     }
+}
+
+/* The front faces of a convex mesh (a box: mesh.box) never cover one another, so filled, in any
+ * order, they keep the frame's painter's order (render_frame.painter_ordered); any other mesh's
+ * faces, in the order stored, need the sort. */
+static inline void render_order_by_convexity(struct render_frame *f,
+                                             const struct render_faces_job *job)
+{
+    f->painter_ordered = f->painter_ordered && job->mesh->box &&
+                         !(FW_WITH_WIREFRAME && job->pass->wireframe);
 }
 
 void render_general_faces_loop(struct render_frame *f, const struct render_faces_job *job_in,
@@ -1479,6 +1563,7 @@ void render_general_faces_loop(struct render_frame *f, const struct render_faces
      * Four specialisations of the loop, so that neither test costs a face anything. */
     const struct render_faces_job job = *job_in;
 
+    render_order_by_convexity(f, &job);
     if (inside) {
         if (job.levels != 0) {
             render_faces(f, &job, false, true);
@@ -1498,6 +1583,7 @@ void render_quad_faces_loop(struct render_frame *f, const struct render_faces_jo
 {
     /* The quad loop is the filled, flat pass of a quad mesh; anything else (wireframe, Gouraud, a
      * mesh that is not marked) goes face by face (render_faces_one_by_one). */
+    render_order_by_convexity(f, job);
     if (!job->mesh->quads || (FW_WITH_WIREFRAME && job->pass->wireframe) ||
         (FW_WITH_GOURAUD && job->vnormal14 != 0)) {
         render_faces_one_by_one(f, job, !inside);
@@ -1508,6 +1594,7 @@ void render_quad_faces_loop(struct render_frame *f, const struct render_faces_jo
 
 void render_grid_faces_loop(struct render_frame *f, const struct render_faces_job *job, bool inside)
 {
+    f->painter_ordered = false;  /* a grid mesh's faces in their stored order */
     if (inside) {
         render_grid_faces(f, job, false);
     } else {
@@ -1595,7 +1682,9 @@ void render_object(struct render_frame *f, const struct render_pass *pass,
 
 void render_sort(struct render_frame *f)
 {
-    sort_items(f->sort_item, f->sort_tmp, f->prim_count, f->sort);
+    if (!f->painter_ordered) {
+        sort_items(f->sort_item, f->sort_tmp, f->prim_count, f->sort);
+    }
     f->sorted_count = f->prim_count;
 }
 

@@ -123,6 +123,11 @@ struct render_frame {
     uint32_t prim_count;
     uint32_t sorted_count;  /* primitives covered by render_sort; later ones are overlay */
     uint32_t outline_count; /* RENDER_PRIM_OUTLINE primitives among them (batch.c expands them) */
+    /* The primitives so far are already far to near, so render_sort leaves them in emission order:
+     * set by a scene that draws its objects in a painter's order (scene_set_grid), kept by the
+     * face loops that keep one within an object (a convex mesh's, a regular lattice's walk) and
+     * cleared by every other; false from render_frame_begin. */
+    bool painter_ordered;
     uint8_t batch_stamp;    /* batch.c: stamp of the last batch filled from these vertices */
     /* A wireframe pass draws an edge two front faces share once (render.c): the edges drawn so
      * far, as (lower vertex << SORT_KEY_SHIFT | higher vertex) keys (0 = empty slot), open

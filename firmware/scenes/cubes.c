@@ -16,6 +16,15 @@ SCENE_STATE_FITS(cubes, struct cubes_state);
 #define CUBES_PER_SIDE 4
 #define CUBES_SPACING REAL_C(2.5)
 
+/* The cubes, x fastest, fill a grid's cells, each turning inside its own (its sphere, radius 0.87,
+ * within the 2.5 cell): drawn far to near, unsorted. */
+#define CUBES_CORNER (-CUBES_SPACING * CUBES_PER_SIDE / 2)
+static const struct scene_grid_layout cubes_grid = {
+    {CUBES_CORNER, CUBES_CORNER, CUBES_CORNER},
+    {CUBES_SPACING, CUBES_SPACING, CUBES_SPACING},
+    {CUBES_PER_SIDE, CUBES_PER_SIDE, CUBES_PER_SIDE},
+};
+
 static void cubes_init(struct scene *s)
 {
     struct cubes_state *c = SCENE_STATE(s, struct cubes_state);
@@ -57,6 +66,7 @@ static void cubes_init(struct scene *s)
             }
         }
     }
+    (void)scene_set_grid(s, &cubes_grid);
     cfg.dist_max = REAL_C(50.0);
     scene_set_camera(s, CAM_ORBIT, vec3_make(0, 0, 0), REAL_C(16.0), FX_ANGLE_DEG(30),
                      -(int32_t)(25 * 65536 / 360), &cfg);

@@ -188,6 +188,15 @@ static FW_BUILD_ONCE void land_build_tile(struct landscape_tile *t, int32_t ti, 
     (void)mesh_set_lattice(m, (uint32_t)n, (uint32_t)n, (uint32_t)((ti * n + tj * n) & 1));
 }
 
+/* The tiles, row by row, fill the cells of an x-z grid: drawn far to near, unsorted. */
+#define LAND_CORNER (-(LAND_CELLS / 2) * LAND_CELL_SIZE)
+#define LAND_TILE_SIZE (LANDSCAPE_TILE_CELLS * LAND_CELL_SIZE)
+static const struct scene_grid_layout land_tile_grid = {
+    {REAL_C(LAND_CORNER), 0, REAL_C(LAND_CORNER)},
+    {REAL_C(LAND_TILE_SIZE), 0, REAL_C(LAND_TILE_SIZE)},
+    {LANDSCAPE_TILES, 1, LANDSCAPE_TILES},
+};
+
 static FW_BUILD_ONCE void land_init(struct scene *s)
 {
     struct landscape_state *l = SCENE_STATE(s, struct landscape_state);
@@ -214,6 +223,7 @@ static FW_BUILD_ONCE void land_init(struct scene *s)
         }
     }
 #endif
+    (void)scene_set_grid(s, &land_tile_grid);
     cfg.box_min = vec3_make(REAL_C(-96), REAL_C(-8), REAL_C(-96));
     cfg.box_max = vec3_make(REAL_C(96), REAL_C(60), REAL_C(96));
     cfg.move_step = REAL_C(0.5);

@@ -3,6 +3,8 @@
  */
 #include "scenes/scene.h"
 
+#include "config/hot_path.h"
+
 #include "render/palette.h"
 
 /* The table itself, scene_built[], is the program's: scenes/scene_set.h, included by one file of
@@ -107,7 +109,7 @@ static real_t scene_world_coord(real_t v)
 
 /* The next object, projected by `project` and drawn with face loop `faces` (when the scene has
  * room for it). */
-static void scene_new_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
+static FW_BUILD_ONCE void scene_new_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
                              uint8_t material, render_faces_fn faces, render_project_fn project)
 {
     struct render_object *o;
@@ -155,7 +157,7 @@ void scene_add_lattice_object(struct scene *s, const struct mesh *m, const mat3 
     scene_new_object(s, m, rot, pos, material, render_lattice_faces_loop, render_project_lattice);
 }
 
-bool scene_start(struct scene *s, const struct scene_desc *desc)
+FW_BUILD_ONCE bool scene_start(struct scene *s, const struct scene_desc *desc)
 {
     if (desc->state_bytes > s->state_cap || desc->max_objects > s->object_cap) {
         return false;  /* this program's storage was not sized for it: *s is left as it was */
@@ -172,6 +174,7 @@ bool scene_start(struct scene *s, const struct scene_desc *desc)
     s->light = vec3_direction(vec3_make(REAL_C(-0.45), REAL_C(0.8), REAL_C(-0.4)));
     s->ambient = 4;
     s->eye_separation = REAL_C(0.15);
+    s->grid.on = false;
     desc->init(s);
     proj_setup_init(&s->proj, s->focal_px, s->far, s->frame_width, s->frame_height);
     for (uint32_t i = 0; i < s->object_count; i++) {
@@ -209,8 +212,70 @@ void scene_spin_first(struct scene *s, const mat3 *spin)
     }
 }
 
+/* ---- the grid's painter's order (scene_set_grid) ------------------------------------------ */
+
+FW_BUILD_ONCE bool scene_set_grid(struct scene *s, const struct scene_grid_layout *layout)
+{
+    struct scene_grid *g = &s->grid;
+    const uint8_t *n = layout->count;
+
+    g->layout = *layout;
+    g->on = FW_SCENE_ORDER && s->object_count == (uint32_t)n[0] * n[1] * n[2];
+    for (int k = 0; k < 3; k++) {
+        g->on = g->on && layout->cell[k] >= 0 && n[k] != 0u && (layout->cell[k] != 0 || n[k] == 1u);
+    }
+    return g->on;
+}
+
+/* Place k of the walk over 0 .. n-1 far to near from `split` (the eye's place, clamped to 0 .. n):
+ * 0 .. split-1 up, then n-1 down to split. */
+static inline uint32_t scene_walk(uint32_t k, uint32_t n, uint32_t split)
+{
+    return (k < split) ? k : n - 1u + split - k;
+}
+
+/* The objects of a grid far to near (scene_set_grid): a few instructions an object, so built for
+ * size; render_object is the work. */
+static FW_ONCE_A_FRAME __attribute__((noinline)) void
+scene_draw_grid(const struct scene *s, struct render_frame *f, const struct render_pass *pass)
+{
+    const struct scene_grid_layout *g = &s->grid.layout;
+    /* The eye in the scene's frame: the point the pass's transform takes to the view's origin. */
+    const vec3 eye = vec3_add(pass->focus, xf_eye(&pass->focus_to_view));
+    const real_t e[3] = {eye.x, eye.y, eye.z};
+    uint32_t split[3];
+
+    /* The eye's cell on each axis, clamped to 0 .. count: the cells wholly below the eye (an axis
+     * not divided has one cell, walked the same from 0 or 1). */
+    for (int k = 0; k < 3; k++) {
+        real_t top = real_add(g->origin[k], g->cell[k]);
+        uint32_t n = 0;
+
+        while (n < g->count[k] && top <= e[k]) {
+            n++;
+            top = real_add(top, g->cell[k]);
+        }
+        split[k] = n;
+    }
+    f->painter_ordered = true;  /* the face loops keep it or drop it */
+    for (uint32_t z = 0; z < g->count[2]; z++) {
+        for (uint32_t y = 0; y < g->count[1]; y++) {
+            const uint32_t row = (scene_walk(z, g->count[2], split[2]) * g->count[1] +
+                                  scene_walk(y, g->count[1], split[1])) * g->count[0];
+
+            for (uint32_t x = 0; x < g->count[0]; x++) {
+                render_object(f, pass, &s->object[row + scene_walk(x, g->count[0], split[0])]);
+            }
+        }
+    }
+}
+
 void scene_draw(const struct scene *s, struct render_frame *f, const struct render_pass *pass)
 {
+    if (s->grid.on) {
+        scene_draw_grid(s, f, pass);
+        return;
+    }
     for (uint32_t i = 0; i < s->object_count; i++) {
         render_object(f, pass, &s->object[i]);
     }

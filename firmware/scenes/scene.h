@@ -112,6 +112,18 @@ struct scene_event {
 
 struct scene_desc;
 
+/* Objects in the cells of a grid (scene_set_grid): its layout, constant in a scene's code. */
+struct scene_grid_layout {
+    real_t origin[3];  /* the corner of cell (0, 0, 0) */
+    real_t cell[3];    /* each axis's cell size; 0: an axis not divided (count 1) */
+    uint8_t count[3];  /* cells per axis, x, y, z */
+};
+
+struct scene_grid {
+    bool on;
+    struct scene_grid_layout layout;
+};
+
 struct scene {
     const struct scene_desc *desc;
     struct camera cam;
@@ -139,6 +151,7 @@ struct scene {
     uint32_t frame_width;          /* the GPU's frame (scene_set_frame; the contract's default */
     uint32_t frame_height;         /* frame until then) */
     struct proj_setup proj;  /* the projection of focal_px and far, set by scene_start */
+    struct scene_grid grid;  /* scene_set_grid's; off after scene_start until the init sets it */
 };
 
 struct scene_desc {
@@ -184,6 +197,24 @@ void scene_update(struct scene *s, const struct input_counts *keys, struct scene
 /* Emit every object into the frame (the frame loop then sorts, and adds the crosshair when
  * s->crosshair). */
 void scene_draw(const struct scene *s, struct render_frame *f, const struct render_pass *pass);
+
+/*
+ * The scene's objects fill the cells of a grid, one each, in order: object i in cell (i mod nx,
+ * i / nx mod ny, i / (nx ny)), cell (x, y, z) being origin + [x, x+1] cell[0] by [y, y+1] cell[1]
+ * by [z, z+1] cell[2] (an axis of size 0, with count 1, is not divided), and no object reaches out of
+ * its cell, however it turns, as long as it does not move. Then an object can hide another only if
+ * its cell lies between the eye's and the other's: the segment from the eye to a point seen
+ * crosses cells each no farther from the eye's cell, on every axis, than the point's. So
+ * scene_draw walks the cells far to near, each axis as render.c walks a lattice's rows (cells
+ * before the eye's up, then from the last down to the eye's), z, then y, then x, and draws them
+ * with no depth sort between objects (render_frame.painter_ordered; the face loops keep it or
+ * drop it within each object). Called at the end of a scene's init. That each object stays in its
+ * cell, every vertex of it in every frame the scene's update makes, is the scene's promise, which
+ * tests/firmware/test_scene.c checks for every scene that makes it (a property of the scene's
+ * code, not of its input). Returns whether the grid is on: not when FW_SCENE_ORDER is 0, when
+ * the counts do not multiply to the objects', or a size is negative (or 0 with a count above 1).
+ */
+bool scene_set_grid(struct scene *s, const struct scene_grid_layout *layout);
 
 /* Triangles of all objects (what "triangles submitted" counts). */
 uint32_t scene_triangle_count(const struct scene *s);

@@ -6,6 +6,7 @@
  * general one.
  */
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "gpu/batch.h"
@@ -768,6 +769,160 @@ void test_render_lattice_loop(void)
     }
     CHECK(cases > 300u);    /* about a sixth of the 2000 random views see the mesh (355) */
     CHECK(clipped > 100u);  /* many of those across the near plane or the guard band (260) */
+}
+
+/* Whether two results hold the same primitives on the mesh's own vertices, in any order (a
+ * clipper's primitives name vertices numbered in emission order: only counted). */
+static int lat_prim_cmp(const void *a, const void *b)
+{
+    return memcmp(a, b, 5 * sizeof(uint32_t));
+}
+
+static int lat_same_unclipped(const struct lat_result *a, const struct lat_result *b)
+{
+    static uint32_t pa[64 * LAT_FACES][5];
+    static uint32_t pb[64 * LAT_FACES][5];
+    uint32_t na = 0;
+    uint32_t nb = 0;
+
+    for (uint32_t i = 0; i < a->prim_count; i++) {
+        if (a->prim[i][0] < LAT_VERTS && a->prim[i][1] < LAT_VERTS && a->prim[i][2] < LAT_VERTS) {
+            memcpy(pa[na++], a->prim[i], sizeof pa[0]);
+        }
+    }
+    for (uint32_t i = 0; i < b->prim_count; i++) {
+        if (b->prim[i][0] < LAT_VERTS && b->prim[i][1] < LAT_VERTS && b->prim[i][2] < LAT_VERTS) {
+            memcpy(pb[nb++], b->prim[i], sizeof pb[0]);
+        }
+    }
+    qsort(pa, na, sizeof pa[0], lat_prim_cmp);
+    qsort(pb, nb, sizeof pb[0], lat_prim_cmp);
+    return na == nb && memcmp(pa, pb, na * sizeof pa[0]) == 0;
+}
+
+/* The painter's walk of a regular lattice (render.c): from random eyes, inside the lattice's
+ * extent and outside it, above and below, in every mode the lattice loop walks (flat with a level
+ * cache, Gouraud), the frame keeps its painter's order (render_sort leaves it), it holds exactly
+ * the primitives the stored order gives, and no quad is drawn before one it lies between the eye
+ * and: the quad of a later primitive is never farther from the eye's quad, in rows and in columns
+ * on the same side, than an earlier one's, unless it is the same quad. A lattice off its axes is
+ * not walked (the frame is sorted). */
+void test_render_lattice_walk(void)
+{
+    static struct lat_mesh t;
+    static struct lat_result stored;
+    static struct lat_result walked;
+    static uint8_t cache_storage[LAT_FACES];
+    struct render_level_cache cache;
+    const int32_t w = LAT_C + 1;
+    uint32_t checked = 0;
+    uint32_t reversed = 0;
+
+    unit_srand(1414u);
+    for (uint32_t diag0 = 0; diag0 < 2u; diag0++) {
+        lat_mesh_build(&t, diag0);
+        CHECK(mesh_set_lattice(&t.m, LAT_R, LAT_C, diag0));
+        CHECK(t.m.lattice_regular);
+        for (uint32_t view = 0; view < 1500u; view++) {
+            struct render_pass pass;
+            struct proj_setup ps;
+            const uint32_t mode = (view % 3u == 2u) ? 2u : 0u;  /* flat, flat, Gouraud */
+            struct render_object o = {0};
+            vec3 eye;
+            int32_t er;
+            int32_t ec;
+
+            loop_test_pass(&pass, &ps, mode, view % 2u == 0u);
+            eye = xf_eye(&pass.focus_to_view);
+            /* The eye's quad, floored: vertex (r, c) at x = 2c - LAT_C, z = 2r - LAT_R. */
+            er = (int32_t)floor((rd(eye.z) + LAT_R) / 2.0);
+            ec = (int32_t)floor((rd(eye.x) + LAT_C) / 2.0);
+            o.mesh = &t.m;
+            o.rot = mat3_identity();
+            o.vnormal14 = t.vnormal;
+            o.faces = render_lattice_faces_loop;
+            o.project = render_project_lattice;
+            for (uint32_t k = 0; k < 2u; k++) {
+                render_level_cache_init(&cache, cache_storage, LAT_FACES);
+                o.levels = &cache;
+                begin();
+                test_frame.painter_ordered = (k == 1u);
+                render_object(&test_frame, &pass, &o);
+                CHECK_EQ(test_frame.painter_ordered, k == 1u);
+                render_sort(&test_frame);
+                lat_capture((k == 0u) ? &stored : &walked);
+            }
+            CHECK_EQ(walked.prim_count, stored.prim_count);
+            CHECK_EQ(walked.vert_count, stored.vert_count);
+            CHECK(memcmp(&walked.stats, &stored.stats, sizeof walked.stats) == 0);
+            CHECK(lat_same_unclipped(&walked, &stored));
+            for (uint32_t i = 0; i < walked.prim_count; i++) {
+                const uint32_t *pi = walked.prim[sort_item_payload(walked.item[i])];
+
+                if (sort_item_payload(walked.item[i]) != i) {
+                    reversed++;
+                }
+                for (uint32_t j = i + 1u; j < walked.prim_count; j++) {
+                    const uint32_t *pj = walked.prim[sort_item_payload(walked.item[j])];
+                    int32_t q[2][2];  /* row, column of the quads of i and j */
+                    bool clipped = false;
+
+                    for (uint32_t n = 0; n < 2u; n++) {
+                        const uint32_t *p = (n == 0u) ? pi : pj;
+
+                        q[n][0] = LAT_R;
+                        q[n][1] = LAT_C;
+                        for (uint32_t v = 0; v < 3u; v++) {
+                            clipped = clipped || p[v] >= (uint32_t)LAT_VERTS;
+                            q[n][0] = ((int32_t)p[v] / w < q[n][0]) ? (int32_t)p[v] / w : q[n][0];
+                            q[n][1] = ((int32_t)p[v] % w < q[n][1]) ? (int32_t)p[v] % w : q[n][1];
+                        }
+                    }
+                    if (clipped || (q[0][0] == q[1][0] && q[0][1] == q[1][1])) {
+                        continue;  /* a clipper's vertex, or the two halves of one quad */
+                    }
+                    {
+                        const int32_t ri = q[0][0] - er;
+                        const int32_t ci = q[0][1] - ec;
+                        const int32_t rj = q[1][0] - er;
+                        const int32_t cj = q[1][1] - ec;
+                        /* i lies between the eye and j: on j's side (or the eye's row, column)
+                         * and no farther on either axis. */
+                        const bool between = (ri == 0 || (ri < 0) == (rj < 0)) &&
+                                             (ci == 0 || (ci < 0) == (cj < 0)) &&
+                                             abs(ri) <= abs(rj) && abs(ci) <= abs(cj);
+
+                        CHECK(!between);
+                        checked++;
+                    }
+                }
+            }
+        }
+    }
+    CHECK(checked > 100000u);
+    CHECK(reversed > 1000u);  /* the walk went down rows and columns, not only up */
+    /* Off its axes: not regular, so the frame keeps no painter's order. */
+    lat_mesh_build(&t, 0u);
+    t.v[LAT_C + 1].z += 1;
+    CHECK(mesh_set_lattice(&t.m, LAT_R, LAT_C, 0u));
+    CHECK(!t.m.lattice_regular);
+    {
+        struct render_pass pass;
+        struct proj_setup ps;
+        struct render_object o = {0};
+
+        loop_test_pass(&pass, &ps, 0u, true);
+        render_level_cache_init(&cache, cache_storage, LAT_FACES);
+        o.mesh = &t.m;
+        o.rot = mat3_identity();
+        o.levels = &cache;
+        o.faces = render_lattice_faces_loop;
+        o.project = render_project_lattice;
+        begin();
+        test_frame.painter_ordered = true;
+        render_object(&test_frame, &pass, &o);
+        CHECK(!test_frame.painter_ordered);
+    }
 }
 
 /* A quad mesh (mesh_set_quads) over the lattice's random heights: each cell one quad (a, b, c', d)

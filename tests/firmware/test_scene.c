@@ -591,6 +591,51 @@ void test_scene_voxel_pool(void)
     CHECK_EQ(faces, VOXEL_POOL_GEN_FACES);
 }
 
+/* A scene's grid (scene_set_grid) is its promise that object i = x + nx (y + ny z) stays in cell
+ * (x, y, z): every vertex of it, turned and placed as render_object places it, in every frame of
+ * its animation. The cubes' and the landscape's grids are on (FW_SCENE_ORDER), and hold. */
+void test_scene_grid_cells(void)
+{
+    uint32_t grids = 0;
+
+    for (uint32_t k = 0; k < SCENE_COUNT; k++) {
+        const struct scene_grid_layout *g = &scene.grid.layout;
+
+        CHECK(scene_start(&scene, scene_at(k)));
+        if (!scene.grid.on) {
+            continue;
+        }
+        grids++;
+        for (uint32_t fr = 0; fr < 120u; fr++) {
+            struct input_counts c;
+            struct scene_event ev;
+
+            input_counts_clear(&c);
+            scene_update(&scene, &c, &ev);
+            for (uint32_t i = 0; i < scene.object_count; i++) {
+                const struct render_object *o = &scene.object[i];
+                const uint32_t cell[3] = {i % g->count[0], (i / g->count[0]) % g->count[1],
+                                          i / (g->count[0] * g->count[1])};
+
+                for (uint32_t v = 0; v < o->mesh->vert_count; v++) {
+                    const vec3 p = vec3_add(o->pos, mat3_apply(&o->rot, o->mesh->verts[v]));
+                    const double q[3] = {rd(p.x), rd(p.y), rd(p.z)};
+
+                    for (int a = 0; a < 3; a++) {
+                        const double lo = rd(g->origin[a]) + cell[a] * rd(g->cell[a]);
+
+                        if (rd(g->cell[a]) != 0.0) {
+                            CHECK(q[a] >= lo && q[a] <= lo + rd(g->cell[a]));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    CHECK(!FW_SCENE_ORDER || grids >= 2u);
+    CHECK(FW_SCENE_ORDER || grids == 0u);
+}
+
 /* The landscape asks for Gouraud shading: every tile carries vertex normals, unit length and
  * facing up (a height field), and a grid point shared by two tiles has the same normal in both
  * (averaged over the whole terrain's faces: no seam in the shading at a tile border). */

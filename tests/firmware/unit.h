@@ -100,6 +100,7 @@ void unit_srand(uint32_t seed);
     X(test_palette_light_intensity)   \
     X(test_vertex_normal_average)     \
     X(test_scene_landscape_normals)   \
+    X(test_scene_grid_cells)          \
     X(test_render_backface)           \
     X(test_render_mesh_model_range)   \
     X(test_render_level_cache)        \
@@ -112,6 +113,7 @@ void unit_srand(uint32_t seed);
     X(test_render_capacity)           \
     X(test_render_inside_shortcut)    \
     X(test_render_lattice_loop)       \
+    X(test_render_lattice_walk)       \
     X(test_render_lattice_projection) \
     X(test_render_quad_loop)          \
     X(test_batch_split_and_renumber)  \
