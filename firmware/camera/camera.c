@@ -72,8 +72,8 @@ static void cam_update_eye(struct camera *cam)
     }
 }
 
-FW_BUILD_ONCE void cam_init(struct camera *cam, const struct cam_config *cfg, enum cam_mode mode, vec3 target,
-              real_t distance, fx_angle yaw, int32_t pitch)
+FW_BUILD_ONCE void cam_init(struct camera *cam, const struct cam_config *cfg, enum cam_mode mode,
+                            vec3 target, real_t distance, fx_angle yaw, int32_t pitch)
 {
     cam->cfg = *cfg;
     cam->mode = CAM_ORBIT;

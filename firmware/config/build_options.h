@@ -64,7 +64,8 @@
 /* The painter's order by construction (1, the default): a scene whose objects lie in the cells of
  * a grid (scene_set_grid) draws them far to near from the eye, a regular lattice's quads are
  * walked far to near (render.c), and a pass drawn only so is not sorted. Exact where the sort's
- * depth keys are not, and cheaper; 0 sorts every pass (what `make bench-fw` compares against). */
+ * depth keys are not, and cheaper; 0 sorts every pass, as before (for comparison:
+ * make bench-fw FW_DEFS=-DFW_SCENE_ORDER=0). */
 #ifndef FW_SCENE_ORDER
 #define FW_SCENE_ORDER 1
 #endif

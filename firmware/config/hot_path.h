@@ -24,9 +24,10 @@
  * must fit the SoC's 192 KiB, and no frame's drawing runs this code. */
 #define FW_BUILD_ONCE __attribute__((cold))
 
-/* Code a frame runs once or not at all (the camera's move, a rotation's renormalisation): optimised
- * for size as FW_BUILD_ONCE is, for the same reason; its few instructions more a frame are
- * nothing next to the per-vertex and per-face loops (`make bench-fw` measures them). */
+/* Code a frame runs once or not at all (a spinning object's renormalisation, the walk over a
+ * grid's objects): optimised for size as FW_BUILD_ONCE is, for the same reason. It costs a few
+ * hundred instructions a frame (`make bench-fw`: the renormalisation 590-760), nothing next to
+ * the per-vertex and per-face loops; code a frame runs per object or more stays fast. */
 #define FW_ONCE_A_FRAME __attribute__((cold))
 
 /* A zero-initialised object the frame loop works hard (the sort's digit slots): in a SoC build whose

@@ -59,8 +59,8 @@ uint16_t mesh_add_normal(struct mesh *m, uvec3 n)
     return (uint16_t)m->normal_count++;
 }
 
-FW_BUILD_ONCE void mesh_add_face_normal(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint16_t normal,
-                          uint8_t material)
+FW_BUILD_ONCE void mesh_add_face_normal(struct mesh *m, uint16_t a, uint16_t b, uint16_t c,
+                                        uint16_t normal, uint8_t material)
 {
     struct mesh_face *f;
 
@@ -77,7 +77,8 @@ FW_BUILD_ONCE void mesh_add_face_normal(struct mesh *m, uint16_t a, uint16_t b, 
     f->flags = 0;
 }
 
-FW_BUILD_ONCE void mesh_add_face(struct mesh *m, uint16_t a, uint16_t b, uint16_t c, uint8_t material)
+FW_BUILD_ONCE void mesh_add_face(struct mesh *m, uint16_t a, uint16_t b, uint16_t c,
+                                 uint8_t material)
 {
     const uvec3 n = vec3_triangle_normal(m->verts[a], m->verts[b], m->verts[c]);
 
@@ -246,8 +247,9 @@ FW_BUILD_ONCE bool mesh_set_lattice(struct mesh *m, uint32_t rows, uint32_t cols
             if (p.x != m->verts[c].x || p.z != m->verts[r * w].z) {
                 m->lattice_axes = 0;  /* not on its column's x and its row's z */
             }
-            if (p.x != m->verts[0].x + (real_t)c * (m->verts[1].x - m->verts[0].x) ||
-                p.z != m->verts[0].z + (real_t)r * (m->verts[w].z - m->verts[0].z)) {
+            /* Each step from the vertex before (coordinates within +-8192: no overflow). */
+            if ((c > 0u && p.x - m->verts[r * w + c - 1u].x != m->verts[1].x - m->verts[0].x) ||
+                (r > 0u && p.z - m->verts[(r - 1u) * w + c].z != m->verts[w].z - m->verts[0].z)) {
                 m->lattice_regular = 0;
             }
         }

@@ -5,8 +5,8 @@
 
 #include "config/hot_path.h"
 
-FW_BUILD_ONCE void proj_setup_init(struct proj_setup *ps, int32_t focal_px, real_t far, uint32_t width,
-                     uint32_t height)
+FW_BUILD_ONCE void proj_setup_init(struct proj_setup *ps, int32_t focal_px, real_t far,
+                                   uint32_t width, uint32_t height)
 {
     const int32_t w_px = (int32_t)width;
     const int32_t h_px = (int32_t)height;

@@ -43,7 +43,8 @@ void render_pass_init(struct render_pass *pass, const struct proj_setup *ps,
     pass->gouraud = false;
 }
 
-FW_BUILD_ONCE void render_level_cache_init(struct render_level_cache *c, uint8_t *storage, uint32_t cap)
+FW_BUILD_ONCE void render_level_cache_init(struct render_level_cache *c, uint8_t *storage,
+                                           uint32_t cap)
 {
     c->level = storage;
     c->cap = cap;
@@ -97,9 +98,10 @@ void render_stats_clear(struct render_stats *s)
     *s = (struct render_stats){0};  /* every counter, a new one included */
 }
 
-FW_BUILD_ONCE void render_frame_init(struct render_frame *f, struct proj_vertex *vert, uint32_t vert_cap,
-                       struct render_prim *prim, sort_item_t *sort_item, sort_item_t *sort_tmp,
-                       uint32_t prim_cap, struct sort_scratch *scratch)
+FW_BUILD_ONCE void render_frame_init(struct render_frame *f, struct proj_vertex *vert,
+                                     uint32_t vert_cap, struct render_prim *prim,
+                                     sort_item_t *sort_item, sort_item_t *sort_tmp,
+                                     uint32_t prim_cap, struct sort_scratch *scratch)
 {
     f->vert = vert;
     f->prim = prim;
@@ -1308,7 +1310,8 @@ static inline __attribute__((always_inline)) void
 render_lattice_face(struct render_frame *f, const struct render_faces_job *job,
                     struct render_emit_walk *w, struct render_lattice_corner a,
                     struct render_lattice_corner b, struct render_lattice_corner c, uint32_t ia,
-                    uint32_t ib, uint32_t ic, const struct mesh_face *face, bool shaded, bool keyed)
+                    uint32_t ib, uint32_t ic, const struct mesh_face *face, bool shaded,
+                    bool keyed)
 {
     uint32_t level;
     uint32_t normal;
@@ -1438,44 +1441,46 @@ static void render_lattice_faces(struct render_frame *f, const struct render_fac
         uint32_t bd = (r + mesh->lattice_diag) & 1u;  /* 1: this quad splits along b-d */
         sort_item_t *down_from = 0;  /* where the quads walked down start, once reached */
 
-        {
-            for (; face != row_end; face += 2, v++, ia++, bd ^= 1u) {
-                struct render_lattice_corner ka;
-                struct render_lattice_corner kb;
-                struct render_lattice_corner kc;
-                struct render_lattice_corner kd;
-                uint32_t ib;
+        for (; face != row_end; face += 2, v++, ia++, bd ^= 1u) {
+            struct render_lattice_corner ka;
+            struct render_lattice_corner kb;
+            struct render_lattice_corner kc;
+            struct render_lattice_corner kd;
+            uint32_t ib;
 
-                if (face == split) {
-                    down_from = w.item;
-                }
-                if (check && (v->code | v[w_verts].code | v[w_verts + 1u].code | v[1].code) != 0u) {
-                    /* All four corners beyond one plane: both faces frustum-culled, as
-                     * render_faces would find each (most of a crossing tile's off-screen
-                     * quads). */
-                    if ((v->code & v[w_verts].code & v[w_verts + 1u].code & v[1].code &
-                         PROJ_CULL_BITS) != 0u) {
-                        slow.n_frustum += 2u;
-                        continue;
-                    }
-                    np = (uint32_t)(w.p - w.prim);
-                    np = render_face_any(f, job, true, &face[0], np, &slow);
-                    np = render_face_any(f, job, true, &face[1], np, &slow);
-                    render_emit_at(&w, f->sort_item, np);
+            if (face == split) {
+                down_from = w.item;
+            }
+            if (check && (v->code | v[w_verts].code | v[w_verts + 1u].code | v[1].code) != 0u) {
+                /* All four corners beyond one plane: both faces frustum-culled, as
+                 * render_faces would find each (most of a crossing tile's off-screen
+                 * quads). */
+                if ((v->code & v[w_verts].code & v[w_verts + 1u].code & v[1].code &
+                     PROJ_CULL_BITS) != 0u) {
+                    slow.n_frustum += 2u;
                     continue;
                 }
-                ka = render_lattice_corner(v);
-                kb = render_lattice_corner(v + w_verts);
-                kc = render_lattice_corner(v + w_verts + 1);
-                kd = render_lattice_corner(v + 1);
-                ib = ia + w_verts;
-                if (bd != 0u) {  /* (a, b, d), (b, c', d) */
-                    render_lattice_face(f, job, &w, ka, kb, kd, ia, ib, ia + 1u, &face[0], shaded, keyed);
-                    render_lattice_face(f, job, &w, kb, kc, kd, ib, ib + 1u, ia + 1u, &face[1], shaded, keyed);
-                } else {         /* (a, b, c'), (a, c', d) */
-                    render_lattice_face(f, job, &w, ka, kb, kc, ia, ib, ib + 1u, &face[0], shaded, keyed);
-                    render_lattice_face(f, job, &w, ka, kc, kd, ia, ib + 1u, ia + 1u, &face[1], shaded, keyed);
-                }
+                np = (uint32_t)(w.p - w.prim);
+                np = render_face_any(f, job, true, &face[0], np, &slow);
+                np = render_face_any(f, job, true, &face[1], np, &slow);
+                render_emit_at(&w, f->sort_item, np);
+                continue;
+            }
+            ka = render_lattice_corner(v);
+            kb = render_lattice_corner(v + w_verts);
+            kc = render_lattice_corner(v + w_verts + 1);
+            kd = render_lattice_corner(v + 1);
+            ib = ia + w_verts;
+            if (bd != 0u) {  /* (a, b, d), (b, c', d) */
+                render_lattice_face(f, job, &w, ka, kb, kd, ia, ib, ia + 1u, &face[0], shaded,
+                                    keyed);
+                render_lattice_face(f, job, &w, kb, kc, kd, ib, ib + 1u, ia + 1u, &face[1], shaded,
+                                    keyed);
+            } else {         /* (a, b, c'), (a, c', d) */
+                render_lattice_face(f, job, &w, ka, kb, kc, ia, ib, ib + 1u, &face[0], shaded,
+                                    keyed);
+                render_lattice_face(f, job, &w, ka, kc, kd, ia, ib + 1u, ia + 1u, &face[1], shaded,
+                                    keyed);
             }
         }
         if (down_from != 0) {

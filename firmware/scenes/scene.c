@@ -109,8 +109,9 @@ static real_t scene_world_coord(real_t v)
 
 /* The next object, projected by `project` and drawn with face loop `faces` (when the scene has
  * room for it). */
-static FW_BUILD_ONCE void scene_new_object(struct scene *s, const struct mesh *m, const mat3 *rot, vec3 pos,
-                             uint8_t material, render_faces_fn faces, render_project_fn project)
+static FW_BUILD_ONCE void scene_new_object(struct scene *s, const struct mesh *m, const mat3 *rot,
+                                           vec3 pos, uint8_t material, render_faces_fn faces,
+                                           render_project_fn project)
 {
     struct render_object *o;
 
@@ -221,9 +222,6 @@ FW_BUILD_ONCE bool scene_set_grid(struct scene *s, const struct scene_grid_layou
 
     g->layout = *layout;
     g->on = FW_SCENE_ORDER && s->object_count == (uint32_t)n[0] * n[1] * n[2];
-    for (int k = 0; k < 3; k++) {
-        g->on = g->on && layout->cell[k] >= 0 && n[k] != 0u && (layout->cell[k] != 0 || n[k] == 1u);
-    }
     return g->on;
 }
 

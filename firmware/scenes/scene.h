@@ -200,19 +200,20 @@ void scene_draw(const struct scene *s, struct render_frame *f, const struct rend
 
 /*
  * The scene's objects fill the cells of a grid, one each, in order: object i in cell (i mod nx,
- * i / nx mod ny, i / (nx ny)), cell (x, y, z) being origin + [x, x+1] cell[0] by [y, y+1] cell[1]
- * by [z, z+1] cell[2] (an axis of size 0, with count 1, is not divided), and no object reaches out of
- * its cell, however it turns, as long as it does not move. Then an object can hide another only if
- * its cell lies between the eye's and the other's: the segment from the eye to a point seen
- * crosses cells each no farther from the eye's cell, on every axis, than the point's. So
+ * i / nx mod ny, i / (nx ny)), cell (x, y, z) being origin + [x, x+1] cell[0] by [y, y+1]
+ * cell[1] by [z, z+1] cell[2] (an axis of size 0, with count 1, is not divided), and no object
+ * reaches out of its cell, however it turns, as long as it does not move. Then an object can hide
+ * another only if its cell lies between the eye's and the other's: the segment from the eye to a
+ * point seen crosses cells each no farther from the eye's cell, on every axis, than the point's. So
  * scene_draw walks the cells far to near, each axis as render.c walks a lattice's rows (cells
  * before the eye's up, then from the last down to the eye's), z, then y, then x, and draws them
  * with no depth sort between objects (render_frame.painter_ordered; the face loops keep it or
  * drop it within each object). Called at the end of a scene's init. That each object stays in its
  * cell, every vertex of it in every frame the scene's update makes, is the scene's promise, which
  * tests/firmware/test_scene.c checks for every scene that makes it (a property of the scene's
- * code, not of its input). Returns whether the grid is on: not when FW_SCENE_ORDER is 0, when
- * the counts do not multiply to the objects', or a size is negative (or 0 with a count above 1).
+ * code, not of its input), as are its sizes (each positive, or 0 with a count of 1). Returns
+ * whether the grid is on: not when FW_SCENE_ORDER is 0 or the counts do not multiply to the
+ * objects'.
  */
 bool scene_set_grid(struct scene *s, const struct scene_grid_layout *layout);
 

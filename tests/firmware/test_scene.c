@@ -593,7 +593,8 @@ void test_scene_voxel_pool(void)
 
 /* A scene's grid (scene_set_grid) is its promise that object i = x + nx (y + ny z) stays in cell
  * (x, y, z): every vertex of it, turned and placed as render_object places it, in every frame of
- * its animation. The cubes' and the landscape's grids are on (FW_SCENE_ORDER), and hold. */
+ * its animation; and its cells' sizes are positive, or 0 on an axis of one cell. The cubes' and
+ * the landscape's grids are on (FW_SCENE_ORDER), and hold. */
 void test_scene_grid_cells(void)
 {
     uint32_t grids = 0;
@@ -606,6 +607,9 @@ void test_scene_grid_cells(void)
             continue;
         }
         grids++;
+        for (int a = 0; a < 3; a++) {
+            CHECK(rd(g->cell[a]) > 0.0 || (rd(g->cell[a]) == 0.0 && g->count[a] == 1u));
+        }
         for (uint32_t fr = 0; fr < 120u; fr++) {
             struct input_counts c;
             struct scene_event ev;
