@@ -8,11 +8,10 @@
 #include <stdint.h>
 
 #include "bsp.h"
-
-#include "config/hot_path.h"
 #include "gpu/gpu.h"
 
 #include "config/build_options.h"
+#include "config/hot_path.h"
 
 /* The contract's register names, through the platform's one accessor pair (bsp.h). */
 static inline void gpu_write(uint32_t offset, uint32_t value)

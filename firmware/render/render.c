@@ -1352,20 +1352,6 @@ render_lattice_face(struct render_frame *f, const struct render_faces_job *job,
  * no depth key; render_sort then leaves the frame as it is (render_frame.painter_ordered).
  */
 
-/* The quad (column or row) the eye is over, floored (any int32; far outside the lattice too). */
-static int32_t render_lattice_eye_index(real_t eye, real_t origin, real_t step)
-{
-    const real_t d = real_sub(eye, origin);
-#if REAL_IS_FIXED
-    /* Raw quotient of two q16_16 values, truncated, then floored: step > 0. */
-    const int32_t q = d / step;
-
-    return (q * step > d) ? q - 1 : q;
-#else
-    return real_floor_int(d / step);
-#endif
-}
-
 /* Draw order of the items [first, end) reversed. */
 static void render_reverse_items(sort_item_t *first, sort_item_t *end)
 {
@@ -1418,11 +1404,8 @@ static void render_lattice_faces(struct render_frame *f, const struct render_fac
     if (f->painter_ordered) {
         const vec3 eye = xf_eye(job->mv);  /* model space */
         const vec3 *p = mesh->verts;
-        const int32_t er = render_lattice_eye_index(eye.z, p[0].z, real_sub(p[w_verts].z, p[0].z));
-        const int32_t ec = render_lattice_eye_index(eye.x, p[0].x, real_sub(p[1].x, p[0].x));
-
-        split_r = (er < 0) ? 0u : (((uint32_t)er > rows) ? rows : (uint32_t)er);
-        split_c = (ec < 0) ? 0u : (((uint32_t)ec > cols) ? cols : (uint32_t)ec);
+        split_r = render_walk_split(eye.z, p[0].z, real_sub(p[w_verts].z, p[0].z), rows);
+        split_c = render_walk_split(eye.x, p[0].x, real_sub(p[1].x, p[0].x), cols);
     }
     w.prim = f->prim;
     w.p_end = f->prim + f->prim_cap;
@@ -1430,7 +1413,7 @@ static void render_lattice_faces(struct render_frame *f, const struct render_fac
     w.n_back = 0;
     render_emit_at(&w, f->sort_item, np_start);
     for (uint32_t k = 0; k < rows; k++) {
-        const uint32_t r = (k < split_r) ? k : rows - 1u + split_r - k;
+        const uint32_t r = render_walk_at(k, rows, split_r);
 
         /* Row r: corner a of its quad c at vertex (r, c), faces 2 (r cols + c) and the next. */
         const struct proj_vertex *v = &f->vert[job->base + r * w_verts];

@@ -294,6 +294,30 @@ static inline bool render_sphere_visible(const struct proj_setup *ps, vec3 cente
 }
 
 /* Order the primitives emitted so far from far to near. */
+/* The painter's walks far to near (render.c's over a regular lattice's rows and quads, scene.c's
+ * over a grid's cells, each axis on its own): over 0 .. n-1 from `split`, the cells wholly before
+ * the eye (render_walk_split), place k holds cell k for k < split, then n-1 down to split. */
+static inline uint32_t render_walk_at(uint32_t k, uint32_t n, uint32_t split)
+{
+    return (k < split) ? k : n - 1u + split - k;
+}
+
+/* The cells of size step (> 0) from origin wholly before an eye at `eye`: floor((eye - origin) /
+ * step), clamped to 0 .. n (an eye outside the cells orders them as one just outside would). */
+static inline uint32_t render_walk_split(real_t eye, real_t origin, real_t step, uint32_t n)
+{
+    const real_t d = real_sub(eye, origin);
+#if REAL_IS_FIXED
+    /* The raw quotient of two q16_16 values, truncated, then floored (step > 0). */
+    int32_t q = d / step;
+
+    q = (q * step > d) ? q - 1 : q;
+#else
+    const int32_t q = real_floor_int(d / step);
+#endif
+    return (q < 0) ? 0u : (((uint32_t)q > n) ? n : (uint32_t)q);
+}
+
 void render_sort(struct render_frame *f);
 
 /* Append a crosshair at the screen centre (arms of half_px pixels), drawn after everything. */

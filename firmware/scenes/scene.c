@@ -175,7 +175,7 @@ FW_BUILD_ONCE bool scene_start(struct scene *s, const struct scene_desc *desc)
     s->light = vec3_direction(vec3_make(REAL_C(-0.45), REAL_C(0.8), REAL_C(-0.4)));
     s->ambient = 4;
     s->eye_separation = REAL_C(0.15);
-    s->grid.on = false;
+    s->grid = NULL;
     desc->init(s);
     proj_setup_init(&s->proj, s->focal_px, s->far, s->frame_width, s->frame_height);
     for (uint32_t i = 0; i < s->object_count; i++) {
@@ -217,19 +217,10 @@ void scene_spin_first(struct scene *s, const mat3 *spin)
 
 FW_BUILD_ONCE bool scene_set_grid(struct scene *s, const struct scene_grid_layout *layout)
 {
-    struct scene_grid *g = &s->grid;
     const uint8_t *n = layout->count;
 
-    g->layout = *layout;
-    g->on = FW_SCENE_ORDER && s->object_count == (uint32_t)n[0] * n[1] * n[2];
-    return g->on;
-}
-
-/* Place k of the walk over 0 .. n-1 far to near from `split` (the eye's place, clamped to 0 .. n):
- * 0 .. split-1 up, then n-1 down to split. */
-static inline uint32_t scene_walk(uint32_t k, uint32_t n, uint32_t split)
-{
-    return (k < split) ? k : n - 1u + split - k;
+    s->grid = (FW_SCENE_ORDER && s->object_count == (uint32_t)n[0] * n[1] * n[2]) ? layout : NULL;
+    return s->grid != NULL;
 }
 
 /* The objects of a grid far to near (scene_set_grid): a few instructions an object, so built for
@@ -237,32 +228,25 @@ static inline uint32_t scene_walk(uint32_t k, uint32_t n, uint32_t split)
 static FW_ONCE_A_FRAME __attribute__((noinline)) void
 scene_draw_grid(const struct scene *s, struct render_frame *f, const struct render_pass *pass)
 {
-    const struct scene_grid_layout *g = &s->grid.layout;
+    const struct scene_grid_layout *g = s->grid;
     /* The eye in the scene's frame: the point the pass's transform takes to the view's origin. */
     const vec3 eye = vec3_add(pass->focus, xf_eye(&pass->focus_to_view));
     const real_t e[3] = {eye.x, eye.y, eye.z};
     uint32_t split[3];
 
-    /* The eye's cell on each axis, clamped to 0 .. count: the cells wholly below the eye (an axis
-     * not divided has one cell, walked the same from 0 or 1). */
+    /* The eye's cell on each axis (an axis not divided has one cell, walked the same from 0). */
     for (int k = 0; k < 3; k++) {
-        real_t top = real_add(g->origin[k], g->cell[k]);
-        uint32_t n = 0;
-
-        while (n < g->count[k] && top <= e[k]) {
-            n++;
-            top = real_add(top, g->cell[k]);
-        }
-        split[k] = n;
+        split[k] = (g->cell[k] == 0) ? 0u : render_walk_split(e[k], g->origin[k], g->cell[k],
+                                                               g->count[k]);
     }
     f->painter_ordered = true;  /* the face loops keep it or drop it */
     for (uint32_t z = 0; z < g->count[2]; z++) {
         for (uint32_t y = 0; y < g->count[1]; y++) {
-            const uint32_t row = (scene_walk(z, g->count[2], split[2]) * g->count[1] +
-                                  scene_walk(y, g->count[1], split[1])) * g->count[0];
+            const uint32_t row = (render_walk_at(z, g->count[2], split[2]) * g->count[1] +
+                                  render_walk_at(y, g->count[1], split[1])) * g->count[0];
 
             for (uint32_t x = 0; x < g->count[0]; x++) {
-                render_object(f, pass, &s->object[row + scene_walk(x, g->count[0], split[0])]);
+                render_object(f, pass, &s->object[row + render_walk_at(x, g->count[0], split[0])]);
             }
         }
     }
@@ -270,7 +254,7 @@ scene_draw_grid(const struct scene *s, struct render_frame *f, const struct rend
 
 void scene_draw(const struct scene *s, struct render_frame *f, const struct render_pass *pass)
 {
-    if (s->grid.on) {
+    if (s->grid != NULL) {
         scene_draw_grid(s, f, pass);
         return;
     }

@@ -119,11 +119,6 @@ struct scene_grid_layout {
     uint8_t count[3];  /* cells per axis, x, y, z */
 };
 
-struct scene_grid {
-    bool on;
-    struct scene_grid_layout layout;
-};
-
 struct scene {
     const struct scene_desc *desc;
     struct camera cam;
@@ -151,7 +146,8 @@ struct scene {
     uint32_t frame_width;          /* the GPU's frame (scene_set_frame; the contract's default */
     uint32_t frame_height;         /* frame until then) */
     struct proj_setup proj;  /* the projection of focal_px and far, set by scene_start */
-    struct scene_grid grid;  /* scene_set_grid's; off after scene_start until the init sets it */
+    /* scene_set_grid's layout (the scene's own constant), or NULL: no grid (scene_start's) */
+    const struct scene_grid_layout *grid;
 };
 
 struct scene_desc {

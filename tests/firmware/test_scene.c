@@ -600,12 +600,13 @@ void test_scene_grid_cells(void)
     uint32_t grids = 0;
 
     for (uint32_t k = 0; k < SCENE_COUNT; k++) {
-        const struct scene_grid_layout *g = &scene.grid.layout;
+        const struct scene_grid_layout *g;
 
         CHECK(scene_start(&scene, scene_at(k)));
-        if (!scene.grid.on) {
+        if (scene.grid == NULL) {
             continue;
         }
+        g = scene.grid;
         grids++;
         for (int a = 0; a < 3; a++) {
             CHECK(rd(g->cell[a]) > 0.0 || (rd(g->cell[a]) == 0.0 && g->count[a] == 1u));
